@@ -1,0 +1,33 @@
+#pragma once
+// A palette of at most 256 colours for a model: exact when the voxels have that few distinct
+// colours; otherwise median cut (Heckbert 1982) over the voxels' colours, weighted by how many
+// voxels have each colour, refined by a few Lloyd (k-means) passes.
+
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include "codegen/prepared_model.h"
+
+namespace octopoint::prepare {
+
+inline constexpr int kMaxPaletteColours = 256;
+
+class Palette {
+ public:
+  // `colours` may repeat; each occurrence counts once in the weighting.
+  static Palette build(std::span<const Rgb8> colours, int max_colours = kMaxPaletteColours);
+
+  const std::vector<Rgb8>& colours() const { return colours_; }
+  // The index of the palette colour nearest to `colour` (squared RGB distance).
+  std::uint8_t indexOf(const Rgb8& colour) const;
+
+ private:
+  std::vector<Rgb8> colours_;
+  // Every distinct colour seen by build, packed 0xRRGGBB and sorted, with its palette index:
+  // looking a voxel's colour up is then a binary search, not a 256-way scan.
+  std::vector<std::uint32_t> known_colours_;
+  std::vector<std::uint8_t> known_index_;
+};
+
+}  // namespace octopoint::prepare

@@ -1,0 +1,48 @@
+#pragma once
+// The preparer's pipeline, from a loaded scan to a model: fit the cube, voxelize at every requested
+// depth, build one palette from the finest depth's voxel colours, encode each depth's stream.
+
+#include <array>
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "codegen/prepared_model.h"
+#include "codegen/scan_loader.h"
+
+namespace octopoint::prepare {
+
+// An axis-aligned box in scan units; points outside it are dropped before fitting the cube, which
+// removes the far-away junk and the background a range scan sees around its subject.
+struct CropBox {
+  std::array<float, 3> low{};
+  std::array<float, 3> high{};
+};
+
+// How the scan's axes are laid out. The model is always stored in the sensor frame: x right, y down,
+// z away from the sensor (what PCL's OpenNI grabber and OpenCV use), so that the identity camera
+// shows the scan as it was taken.
+enum class ScanAxes {
+  kYDown,  // x right, y down, z away from the viewer: kept as it is
+  kYUp,    // x right, y up, z toward the viewer (OpenGL): turned 180 degrees about x
+};
+
+struct PrepareOptions {
+  std::string name;                  // the model's C++ identifier
+  std::string source_description;    // for the generated comments
+  std::vector<int> depths = {7, 8};  // strictly ascending, each 1..format::kMaxDepth
+  double metres_per_scan_unit = 1.0;  // to record the cube's metric size
+  int palette_colours = 256;
+  std::optional<CropBox> crop;  // in the scan's own axes, before they are turned
+  ScanAxes axes = ScanAxes::kYDown;
+};
+
+// The points of `scan` inside `box` (inclusive), with their colours. Throws PrepareError naming
+// `scan_path` when none is left.
+Scan cropScan(const Scan& scan, const CropBox& box, const std::string& scan_path);
+
+// Throws PrepareError (naming `scan_path`) when the scan cannot be made into a model.
+PreparedModel prepareModel(const Scan& scan, const std::string& scan_path, const PrepareOptions& options);
+
+}  // namespace octopoint::prepare

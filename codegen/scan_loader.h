@@ -1,0 +1,45 @@
+#pragma once
+// Loading a range scan (.pcd or .ply) into plain arrays: the first step of the preparer.
+//
+// The header deliberately includes no PCL header: PCL compiles slowly and its flags must not leak
+// into the code that uses the loader. PCL is an implementation detail of scan_loader.cpp.
+
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <filesystem>
+#include <vector>
+
+namespace octopoint::prepare {
+
+// What the per-point colours come from.
+enum class ScanShading { kColour, kIntensity, kNone };
+
+struct Scan {
+  std::vector<std::array<float, 3>> positions;  // finite points only, in the scan's own units
+  std::vector<std::array<uint8_t, 3>> colours;  // RGB per position; empty when shading == kNone
+  ScanShading shading = ScanShading::kNone;
+  std::size_t points_in_file = 0;  // including the dropped ones
+  std::size_t dropped_non_finite = 0;
+  bool organized = false;  // height > 1 in the file
+};
+
+// A finite coordinate with a larger magnitude is refused as absurd: no range scanner measures a
+// million units in any unit, and such values would wreck the later fit into the cube.
+inline constexpr float kMaxAbsCoordinate = 1.0e6f;
+
+// Loads a .pcd or .ply scan (chosen by extension, case-insensitive).
+// Accepts float32 x/y/z plus optionally a colour field (packed float "rgb", or uint32 "rgb"/"rgba";
+// R is bits 16..23, G 8..15, B 0..7) or else a float32 "intensity" field. PLY red/green/blue(/alpha)
+// properties arrive through PCL as such a colour field.
+// Drops points with any non-finite coordinate (NaN or infinity) and counts them.
+// Intensity becomes grey: the 1st..99th percentile of intensity over the kept points maps linearly
+// to 0..255, clamped, so that a few hot returns do not turn everything else black.
+// Throws PrepareError with one line "PATH: what (where)" for every failure: missing file,
+// directory, unknown extension, garbage or truncated file, a header declaring more data than the
+// file holds (checked before anything is allocated), missing or wrongly typed x/y/z, no points,
+// no finite points, or a finite |coordinate| > kMaxAbsCoordinate (naming point index and value).
+// Identical points are not an error here (the fitting step deals with them).
+Scan loadScan(const std::filesystem::path& path);
+
+}  // namespace octopoint::prepare

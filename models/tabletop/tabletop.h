@@ -1,0 +1,13 @@
+// Generated from milk_cartoon_all_small_clorox.pcd by: octopoint-prepare milk_cartoon_all_small_clorox.pcd -o ../../build/regenerated-models --name tabletop --axes y-up --crop -0.35,-0.25,-1.1,0.35,0.45,-0.45 --depths 7,8
+// Do not edit: regenerate it.
+#pragma once
+
+#include "renderer/embedded_model.h"
+
+namespace octopoint::models {
+
+// depth 7: 19747 voxels, 7443 node bytes (3.01 bits per point of geometry) + 19747 colour bytes
+// depth 8: 62502 voxels, 27190 node bytes (3.48 bits per point of geometry) + 62502 colour bytes
+extern const octopoint::EmbeddedModel tabletop;
+
+}  // namespace octopoint::models

@@ -1,0 +1,85 @@
+#include "renderer/camera.h"
+
+#include <algorithm>
+#include <cstdlib>
+#include <limits>
+#include <optional>
+
+#include "fixedpoint/rotation.h"
+#include "fixedpoint/wide_math.h"
+
+namespace octopoint {
+
+const char* describe(CameraError error) {
+  switch (error) {
+    case CameraError::kNone: return "no error";
+    case CameraError::kBadViewport: return "framebuffer size outside 1..8192";
+    case CameraError::kBadZoom: return "zoom must be greater than 0";
+    case CameraError::kBadFractionBits: return "fraction bits outside the supported range";
+    case CameraError::kBadDepth: return "depth outside the supported range";
+    case CameraError::kOverflow: return "zoom or pan too large: coordinates would overflow 32 bits";
+  }
+  return "unknown error";
+}
+
+CameraError buildFrameSetup(const Camera& camera, int depth, int fraction_bits, FrameSetup* setup) {
+  if (camera.width < 1 || camera.width > kMaxViewportSide || camera.height < 1 ||
+      camera.height > kMaxViewportSide) {
+    return CameraError::kBadViewport;
+  }
+  if (camera.zoom.raw() <= 0) return CameraError::kBadZoom;
+  if (fraction_bits < kMinFractionBits || fraction_bits > kMaxFractionBits) {
+    return CameraError::kBadFractionBits;
+  }
+  if (depth < 1 || depth > format::kMaxDepth) return CameraError::kBadDepth;
+
+  const Rotation rotation = rotationFromYawPitchRoll(camera.yaw, camera.pitch, camera.roll);
+  // Pixels per cube edge: zoom (Q16.16) * min(width, height), exact in Q16 (< 2^31 * 2^13).
+  const std::int64_t edge_px_q16 =
+      static_cast<std::int64_t>(camera.zoom.raw()) * std::min(camera.width, camera.height);
+
+  constexpr std::int64_t kLimit = std::numeric_limits<std::int32_t>::max();
+  const std::int64_t root[3] = {
+      (static_cast<std::int64_t>(camera.width) << fraction_bits) / 2 +
+          (static_cast<std::int64_t>(camera.pan_x_px) << fraction_bits),
+      (static_cast<std::int64_t>(camera.height) << fraction_bits) / 2 +
+          (static_cast<std::int64_t>(camera.pan_y_px) << fraction_bits),
+      0};
+  std::int64_t worst[3] = {std::llabs(root[0]), std::llabs(root[1]), 0};
+
+  FrameSetup result;
+  result.depth = depth;
+  result.fraction_bits = fraction_bits;
+  result.width = camera.width;
+  result.height = camera.height;
+  for (int level = 0; level < depth; ++level) {
+    std::int64_t largest[3] = {0, 0, 0};
+    for (int k = 0; k < 8; ++k) {
+      const int sign[3] = {(k & 4) ? 1 : -1, (k & 2) ? 1 : -1, (k & 1) ? 1 : -1};
+      std::int32_t offset[3];
+      for (int axis = 0; axis < 3; ++axis) {
+        // Row of R (Q1.30) dotted with the child's sign vector: Q2.30, |.| < 2^32.
+        std::int64_t row_dot_sign = 0;
+        for (int j = 0; j < 3; ++j) row_dot_sign += std::int64_t{sign[j]} * rotation.m_q30[axis][j];
+        // pixels = row_dot_sign / 2^30 * edge_px_q16 / 2^16 / 2^(level + 2), wanted in Q.F.
+        const std::optional<std::int64_t> value =
+            mulShiftRound(row_dot_sign, edge_px_q16, 30 + 16 + level + 2 - fraction_bits);
+        if (!value || std::llabs(*value) > kLimit) return CameraError::kOverflow;
+        offset[axis] = static_cast<std::int32_t>(*value);
+        largest[axis] = std::max<std::int64_t>(largest[axis], std::llabs(*value));
+      }
+      result.child_offset[static_cast<std::size_t>(level)][static_cast<std::size_t>(k)] =
+          Vec3{offset[0], offset[1], offset[2]};
+    }
+    for (int axis = 0; axis < 3; ++axis) worst[axis] += largest[axis];
+  }
+  // The z-buffer reserves INT32_MAX for "empty", hence the strict bound.
+  for (int axis = 0; axis < 3; ++axis) {
+    if (worst[axis] >= kLimit) return CameraError::kOverflow;
+  }
+  result.root = Vec3{static_cast<std::int32_t>(root[0]), static_cast<std::int32_t>(root[1]), 0};
+  *setup = result;
+  return CameraError::kNone;
+}
+
+}  // namespace octopoint

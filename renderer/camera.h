@@ -1,0 +1,73 @@
+#pragma once
+// The camera and the per-frame displacement vectors of the recursive decoder (DESIGN.md 3).
+//
+// Frames: the model cube is centred on the origin in the scan's own camera frame (x right, y
+// down, z away from the viewer, as PCL and OpenCV use it), so the identity camera shows a range
+// scan as its sensor saw it. Projection is orthographic: screen x, y are the rotated, scaled
+// coordinates plus the screen centre and the pan; z goes to the z-buffer (smaller is nearer).
+// At zoom 1 the cube's edge spans the shorter side of the framebuffer.
+//
+// A child k = (x << 2) | (y << 1) | z of a node at tree level l (the root is level 0) sits half a
+// child edge from its parent's centre on each axis, that is +-2^(depth - l - 2) voxels, or
+// +-zoom * min(width, height) / 2^(l + 2) pixels. The camera turns these into rotated screen
+// vectors once per frame; the decoder then only adds. Every vector is rounded to nearest once, so
+// a leaf (depth additions) is within depth / 2 units in the last place of the exact position.
+
+#include <array>
+#include <cstdint>
+
+#include "fixedpoint/angle.h"
+#include "fixedpoint/fixed.h"
+#include "renderer/model_format.h"
+
+namespace octopoint {
+
+inline constexpr int kDefaultFractionBits = 15;  // Q17.15 screen positions (DESIGN.md 3)
+inline constexpr int kMinFractionBits = 1;
+inline constexpr int kMaxFractionBits = 24;      // leaves 7 integer bits: 64 pixels of room
+inline constexpr int kMaxViewportSide = 8192;
+
+struct Camera {
+  Angle yaw;
+  Angle pitch;
+  Angle roll;
+  Q16 zoom = Q16::fromRaw(Q16::kOneRaw);  // Q16.16, must be > 0
+  std::int32_t pan_x_px = 0;              // moves the image right
+  std::int32_t pan_y_px = 0;              // moves the image down
+  std::int32_t width = 320;
+  std::int32_t height = 240;
+};
+
+enum class CameraError : std::uint8_t {
+  kNone,
+  kBadViewport,      // width or height outside 1..kMaxViewportSide
+  kBadZoom,          // zoom <= 0
+  kBadFractionBits,  // outside kMinFractionBits..kMaxFractionBits
+  kBadDepth,         // outside 1..format::kMaxDepth
+  kOverflow,         // some leaf coordinate would not fit 32 bits: zoom or pan too large
+};
+
+const char* describe(CameraError error);
+
+struct Vec3 {
+  std::int32_t x, y, z;
+};
+
+// Everything a decoder needs for one frame at one depth. Positions are in screen pixels with
+// `fraction_bits` fraction bits (Q(32-F).F): a leaf at position p lands on pixel p >> F.
+struct FrameSetup {
+  int depth = 0;
+  int fraction_bits = kDefaultFractionBits;
+  std::int32_t width = 0;
+  std::int32_t height = 0;
+  Vec3 root{};  // screen position of the cube centre
+  // child_offset[l][k]: from a node at tree level l to the centre of its child k.
+  std::array<std::array<Vec3, 8>, format::kMaxDepth> child_offset{};
+};
+
+// Builds the frame set-up, or refuses the camera (returns the reason) when a coordinate could
+// overflow: the worst case |root| + sum over levels of the largest child offset is checked per
+// axis, so the decoder's additions can never wrap.
+CameraError buildFrameSetup(const Camera& camera, int depth, int fraction_bits, FrameSetup* setup);
+
+}  // namespace octopoint

@@ -1,0 +1,218 @@
+#include "renderer/model.h"
+
+#include <bit>
+#include <cstring>
+
+namespace octopoint {
+namespace {
+
+std::uint32_t readU32(const std::uint8_t* p) {
+  return static_cast<std::uint32_t>(p[0]) | static_cast<std::uint32_t>(p[1]) << 8 |
+         static_cast<std::uint32_t>(p[2]) << 16 | static_cast<std::uint32_t>(p[3]) << 24;
+}
+
+std::uint16_t readU16(const std::uint8_t* p) {
+  return static_cast<std::uint16_t>(p[0] | p[1] << 8);
+}
+
+bool fail(ModelIssue* issue, ModelError error, std::size_t offset, int depth = 0) {
+  if (issue != nullptr) *issue = ModelIssue{error, offset, depth};
+  return false;
+}
+
+}  // namespace
+
+const char* describe(ModelError error) {
+  switch (error) {
+    case ModelError::kNone: return "no error";
+    case ModelError::kTruncatedHeader: return "truncated header";
+    case ModelError::kBadMagic: return "not an octopoint model (bad magic)";
+    case ModelError::kUnsupportedVersion: return "unsupported format version";
+    case ModelError::kBadLevelCount: return "bad level count";
+    case ModelError::kBadReservedField: return "reserved field is not zero";
+    case ModelError::kBadPaletteCount: return "bad palette colour count";
+    case ModelError::kBadDepth: return "depth outside the supported range";
+    case ModelError::kDepthsNotAscending: return "level depths are not strictly ascending";
+    case ModelError::kSizeMismatch: return "declared sizes do not match the data length";
+    case ModelError::kEmptyLevel: return "level has no nodes or no leaves";
+    case ModelError::kEmptyNode: return "inner node without children (zero mask byte)";
+    case ModelError::kStreamTruncated: return "node stream truncated";
+    case ModelError::kTrailingNodeBytes: return "trailing bytes after the node stream";
+    case ModelError::kLeafCountMismatch: return "leaf count does not match the tree";
+    case ModelError::kLeafOutsidePalette: return "leaf colour index outside the palette";
+  }
+  return "unknown error";
+}
+
+ModelIssue validateLevelStream(const LevelView& level, int palette_count) {
+  const int depth = level.depth;
+  if (depth < 1 || depth > format::kMaxDepth) return {ModelError::kBadDepth, 0, depth};
+  if (level.nodes.empty() || level.leaves.empty()) return {ModelError::kEmptyLevel, 0, depth};
+
+  // Depth-first walk with an explicit stack of "children still to visit" per tree level, so a
+  // hostile stream cannot drive the recursion; the stack is bounded by the depth.
+  std::array<int, format::kMaxDepth> pending{};
+  int top = 0;  // tree level of the next node byte
+  pending[0] = 1;
+  std::size_t node_at = 0;
+  std::size_t leaf_total = 0;
+  while (top >= 0) {
+    if (pending[static_cast<std::size_t>(top)] == 0) {
+      --top;
+      continue;
+    }
+    --pending[static_cast<std::size_t>(top)];
+    if (node_at == level.nodes.size()) return {ModelError::kStreamTruncated, node_at, depth};
+    const std::uint8_t mask = level.nodes[node_at];
+    if (mask == 0) return {ModelError::kEmptyNode, node_at, depth};
+    ++node_at;
+    const int children = std::popcount(mask);
+    if (top + 1 == depth) {
+      leaf_total += static_cast<std::size_t>(children);  // leaf parent: its children are leaves
+    } else {
+      ++top;
+      pending[static_cast<std::size_t>(top)] = children;
+    }
+  }
+  if (node_at != level.nodes.size()) return {ModelError::kTrailingNodeBytes, node_at, depth};
+  if (leaf_total != level.leaves.size()) {
+    return {ModelError::kLeafCountMismatch, level.leaves.size(), depth};
+  }
+  for (std::size_t i = 0; i < level.leaves.size(); ++i) {
+    if (level.leaves[i] >= palette_count) return {ModelError::kLeafOutsidePalette, i, depth};
+  }
+  return {};
+}
+
+bool ModelView::validateLevels(ModelView& view, ModelIssue* issue) {
+  int previous_depth = 0;
+  for (int i = 0; i < view.level_count_; ++i) {
+    const LevelView& level = view.level(i);
+    if (level.depth < 1 || level.depth > format::kMaxDepth) {
+      return fail(issue, ModelError::kBadDepth, 0, level.depth);
+    }
+    if (level.depth <= previous_depth) {
+      return fail(issue, ModelError::kDepthsNotAscending, 0, level.depth);
+    }
+    previous_depth = level.depth;
+    const ModelIssue stream_issue = validateLevelStream(level, view.palette_count_);
+    if (stream_issue.error != ModelError::kNone) {
+      if (issue != nullptr) *issue = stream_issue;
+      return false;
+    }
+  }
+  return true;
+}
+
+std::optional<ModelView> ModelView::fromBytes(std::span<const std::uint8_t> bytes,
+                                              ModelIssue* issue) {
+  if (bytes.size() < format::kHeaderBytes) {
+    fail(issue, ModelError::kTruncatedHeader, bytes.size());
+    return std::nullopt;
+  }
+  const std::uint8_t* p = bytes.data();
+  if (std::memcmp(p, format::kMagic, sizeof format::kMagic) != 0) {
+    fail(issue, ModelError::kBadMagic, 0);
+    return std::nullopt;
+  }
+  if (readU16(p + 4) != format::kFormatVersion) {
+    fail(issue, ModelError::kUnsupportedVersion, 4);
+    return std::nullopt;
+  }
+  ModelView view;
+  view.level_count_ = p[6];
+  if (view.level_count_ < 1 || view.level_count_ > format::kMaxLevels) {
+    fail(issue, ModelError::kBadLevelCount, 6);
+    return std::nullopt;
+  }
+  if (p[7] != 0 || readU16(p + 14) != 0) {
+    fail(issue, ModelError::kBadReservedField, p[7] != 0 ? 7 : 14);
+    return std::nullopt;
+  }
+  view.cube_edge_um_ = readU32(p + 8);
+  view.palette_count_ = readU16(p + 12);
+  if (view.palette_count_ < 1 || view.palette_count_ > format::kPaletteEntries) {
+    fail(issue, ModelError::kBadPaletteCount, 12);
+    return std::nullopt;
+  }
+  view.palette_rgb_ = p + format::kPaletteOffset;
+
+  const std::size_t table_end =
+      format::kHeaderBytes + format::kLevelRowBytes * static_cast<std::size_t>(view.level_count_);
+  if (bytes.size() < table_end) {
+    fail(issue, ModelError::kTruncatedHeader, bytes.size());
+    return std::nullopt;
+  }
+  // Sizes are added in 64 bits: two u32 counts per level cannot overflow it, so a hostile
+  // header cannot wrap the sum around to the real length.
+  std::uint64_t data_at = table_end;
+  for (int i = 0; i < view.level_count_; ++i) {
+    const std::uint8_t* row = p + format::kHeaderBytes + format::kLevelRowBytes * static_cast<std::size_t>(i);
+    if (row[1] != 0 || row[2] != 0 || row[3] != 0) {
+      fail(issue, ModelError::kBadReservedField, static_cast<std::size_t>(row - p) + 1);
+      return std::nullopt;
+    }
+    const std::uint64_t node_bytes = readU32(row + 4);
+    const std::uint64_t leaf_count = readU32(row + 8);
+    if (data_at + node_bytes + leaf_count > bytes.size()) {
+      fail(issue, ModelError::kSizeMismatch, bytes.size(), row[0]);
+      return std::nullopt;
+    }
+    LevelView& level = view.levels_[static_cast<std::size_t>(i)];
+    level.depth = row[0];
+    level.nodes = bytes.subspan(static_cast<std::size_t>(data_at), static_cast<std::size_t>(node_bytes));
+    level.leaves = bytes.subspan(static_cast<std::size_t>(data_at + node_bytes),
+                                 static_cast<std::size_t>(leaf_count));
+    data_at += node_bytes + leaf_count;
+  }
+  if (data_at != bytes.size()) {
+    fail(issue, ModelError::kSizeMismatch, static_cast<std::size_t>(data_at));
+    return std::nullopt;
+  }
+  if (!validateLevels(view, issue)) return std::nullopt;
+  if (issue != nullptr) *issue = {};
+  return view;
+}
+
+std::optional<ModelView> ModelView::fromEmbedded(const EmbeddedModel& model, ModelIssue* issue) {
+  if (model.level_count < 1 || model.level_count > format::kMaxLevels || model.levels == nullptr) {
+    fail(issue, ModelError::kBadLevelCount, 0);
+    return std::nullopt;
+  }
+  if (model.palette_count < 1 || model.palette_count > format::kPaletteEntries ||
+      model.palette_rgb == nullptr) {
+    fail(issue, ModelError::kBadPaletteCount, 0);
+    return std::nullopt;
+  }
+  ModelView view;
+  view.cube_edge_um_ = model.cube_edge_um;
+  view.palette_count_ = model.palette_count;
+  view.palette_rgb_ = model.palette_rgb;
+  view.level_count_ = model.level_count;
+  for (int i = 0; i < view.level_count_; ++i) {
+    const EmbeddedLevel& source = model.levels[i];
+    if (source.nodes == nullptr || source.leaves == nullptr) {
+      fail(issue, ModelError::kEmptyLevel, 0, source.depth);
+      return std::nullopt;
+    }
+    view.levels_[static_cast<std::size_t>(i)] = LevelView{
+        source.depth, {source.nodes, source.node_bytes}, {source.leaves, source.leaf_count}};
+  }
+  if (!validateLevels(view, issue)) return std::nullopt;
+  if (issue != nullptr) *issue = {};
+  return view;
+}
+
+Rgb ModelView::paletteColour(int index) const {
+  const std::uint8_t* entry = palette_rgb_ + 3 * static_cast<std::size_t>(index);
+  return {entry[0], entry[1], entry[2]};
+}
+
+const LevelView* ModelView::levelOfDepth(int depth) const {
+  for (int i = 0; i < level_count_; ++i) {
+    if (levels_[static_cast<std::size_t>(i)].depth == depth) return &levels_[static_cast<std::size_t>(i)];
+  }
+  return nullptr;
+}
+
+}  // namespace octopoint

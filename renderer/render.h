@@ -1,0 +1,34 @@
+#pragma once
+// Drawing a model level into a framebuffer, by named variant (DESIGN.md 4). All fixed variants
+// draw bit-identical frames.
+
+#include <optional>
+#include <span>
+#include <string_view>
+
+#include "renderer/camera.h"
+#include "renderer/framebuffer.h"
+#include "renderer/model.h"
+
+namespace octopoint {
+
+enum class Variant {
+  kFixedBaseline,  // Algorithm 1: recursion down to the leaf, the leaf sets the pixel
+};
+
+struct VariantInfo {
+  Variant variant;
+  std::string_view name;  // the name users pass to `octopoint-render --variant`
+  std::string_view summary;
+};
+
+std::span<const VariantInfo> allVariants();
+std::optional<Variant> variantFromName(std::string_view name);
+
+// Draws `level` with the set-up of one frame into `frame` (which it does not clear, so several
+// models can share a frame). The frame must have the set-up's width and height.
+void renderLevel(Variant variant, const LevelView& level, const FrameSetup& setup, Framebuffer& frame);
+
+void renderFixedBaseline(const LevelView& level, const FrameSetup& setup, Framebuffer& frame);
+
+}  // namespace octopoint
