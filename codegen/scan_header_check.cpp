@@ -1,0 +1,446 @@
+// Checks a .pcd or .ply header against the file before PCL reads it (see scan_loader.cpp for why):
+// every size the header declares must fit in the file. No PCL here: plain parsing of the text
+// header and, for binary_compressed PCD, of its two size words.
+
+#include "codegen/scan_header_check.h"
+
+#include <algorithm>
+#include <charconv>
+#include <cstring>
+#include <fstream>
+#include <limits>
+#include <map>
+#include <optional>
+#include <sstream>
+#include <string>
+#include <string_view>
+#include <system_error>
+#include <vector>
+
+#include "codegen/prepare_error.h"
+
+namespace octopoint::prepare {
+namespace {
+
+namespace fs = std::filesystem;
+
+// A header longer than this is not a header: stops us scanning a huge garbage file for "DATA".
+constexpr std::size_t kMaxHeaderBytes = 1 << 20;
+// Generous limits that keep every size product below 2^64 and far from anything real.
+constexpr std::uint64_t kMaxFieldCount = 1 << 16;
+constexpr std::uint64_t kMaxPointBytes = 1 << 20;
+constexpr std::uint64_t kMaxPoints = std::numeric_limits<std::uint32_t>::max();  // PCL's width
+
+}  // namespace
+
+// File content quoted in a message: printable, short, and never a second line.
+std::string printable(std::string_view text) {
+  constexpr std::size_t kMaxQuoted = 40;
+  std::string out;
+  for (char c : text.substr(0, kMaxQuoted)) {
+    out += (c >= 0x20 && c < 0x7f) ? c : '?';
+  }
+  if (text.size() > kMaxQuoted) out += "...";
+  return out;
+}
+
+
+std::uint64_t saturatingMul(std::uint64_t a, std::uint64_t b) {
+  std::uint64_t product = 0;
+  return __builtin_mul_overflow(a, b, &product) ? std::numeric_limits<std::uint64_t>::max()
+                                                : product;
+}
+
+[[noreturn]] void fail(const fs::path& path, const std::string& what, const std::string& where) {
+  throw PrepareError(path.string() + ": " + what + " (" + where + ")");
+}
+
+namespace {
+
+
+std::uint64_t saturatingAdd(std::uint64_t a, std::uint64_t b) {
+  std::uint64_t sum = 0;
+  return __builtin_add_overflow(a, b, &sum) ? std::numeric_limits<std::uint64_t>::max() : sum;
+}
+
+std::optional<std::uint64_t> parseUnsigned(std::string_view token) {
+  std::uint64_t value = 0;
+  const auto [end, error] = std::from_chars(token.data(), token.data() + token.size(), value);
+  if (error != std::errc() || end != token.data() + token.size()) return std::nullopt;
+  return value;
+}
+
+std::vector<std::string_view> splitWords(std::string_view line) {
+  std::vector<std::string_view> words;
+  std::size_t at = 0;
+  while (at < line.size()) {
+    const std::size_t begin = line.find_first_not_of(" \t\r", at);
+    if (begin == std::string_view::npos) break;
+    const std::size_t end = std::min(line.find_first_of(" \t\r", begin), line.size());
+    words.push_back(line.substr(begin, end - begin));
+    at = end;
+  }
+  return words;
+}
+
+// The file's first bytes (at most kMaxHeaderBytes), where the header must lie.
+std::string readHead(const fs::path& path, std::uint64_t file_size) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) fail(path, "cannot open the file for reading", "opening the scan");
+  std::string head(std::min<std::uint64_t>(file_size, kMaxHeaderBytes), '\0');
+  in.read(head.data(), static_cast<std::streamsize>(head.size()));
+  head.resize(static_cast<std::size_t>(in.gcount()));
+  return head;
+}
+
+// One header line, split into words, with its 1-based line number for messages.
+struct HeaderLine {
+  std::size_t number = 0;
+  std::vector<std::string_view> words;
+};
+
+// Counts what follows `offset` in the file: whitespace-separated tokens and non-blank lines.
+struct BodyCounts {
+  std::uint64_t tokens = 0;
+  std::uint64_t lines = 0;
+};
+
+BodyCounts countAsciiBody(const fs::path& path, std::uint64_t offset) {
+  std::ifstream in(path, std::ios::binary);
+  in.seekg(static_cast<std::streamoff>(offset));
+  BodyCounts counts;
+  bool in_token = false;
+  bool line_has_token = false;
+  std::vector<char> buffer(1 << 16);
+  while (in) {
+    in.read(buffer.data(), static_cast<std::streamsize>(buffer.size()));
+    const auto got = static_cast<std::size_t>(in.gcount());
+    for (std::size_t i = 0; i < got; ++i) {
+      const char c = buffer[i];
+      const bool space = c == ' ' || c == '\t' || c == '\r' || c == '\n';
+      if (!space && !in_token) {
+        ++counts.tokens;
+        line_has_token = true;
+      }
+      in_token = !space;
+      if (c == '\n') {
+        counts.lines += line_has_token ? 1 : 0;
+        line_has_token = false;
+      }
+    }
+  }
+  counts.lines += line_has_token ? 1 : 0;
+  return counts;
+}
+
+std::uint64_t readLittleEndianU32(const fs::path& path, std::uint64_t offset) {
+  std::ifstream in(path, std::ios::binary);
+  in.seekg(static_cast<std::streamoff>(offset));
+  unsigned char bytes[4] = {};
+  in.read(reinterpret_cast<char*>(bytes), 4);
+  return std::uint64_t{bytes[0]} | std::uint64_t{bytes[1]} << 8 | std::uint64_t{bytes[2]} << 16 |
+         std::uint64_t{bytes[3]} << 24;
+}
+
+// Splits `head` into lines up to and including the one whose first word is `last_keyword`.
+// Returns the lines and the byte offset after that line; fails if the header never ends.
+std::vector<HeaderLine> headerLines(const fs::path& path, const std::string& head,
+                                    std::string_view last_keyword, std::uint64_t& body_offset) {
+  std::vector<HeaderLine> lines;
+  std::size_t at = 0;
+  for (std::size_t number = 1; at < head.size(); ++number) {
+    const std::size_t newline = head.find('\n', at);
+    if (newline == std::string::npos) break;  // a header line always ends with '\n'
+    HeaderLine line{number, splitWords(std::string_view(head).substr(at, newline - at))};
+    at = newline + 1;
+    const bool last = !line.words.empty() && line.words[0] == last_keyword;
+    lines.push_back(std::move(line));
+    if (last) {
+      body_offset = at;
+      return lines;
+    }
+  }
+  fail(path,
+       "header ends before its '" + std::string(last_keyword) + "' line: empty, truncated or not a " +
+           (last_keyword == "DATA" ? "PCD" : "PLY") + " file",
+       "header, first " + std::to_string(head.size()) + " bytes");
+}
+
+}  // namespace
+
+// PCD: https://pointclouds.org/documentation/tutorials/pcd_file_format.html
+// Returns the declared number of points after checking the file can hold them.
+std::uint64_t checkPcdHeader(const fs::path& path, std::uint64_t file_size) {
+  const std::string head = readHead(path, file_size);
+  std::uint64_t body_offset = 0;
+  const std::vector<HeaderLine> lines = headerLines(path, head, "DATA", body_offset);
+
+  std::map<std::string, HeaderLine, std::less<>> by_keyword;
+  for (const HeaderLine& line : lines) {
+    if (line.words.empty() || line.words[0].front() == '#') continue;
+    static constexpr std::string_view kKeywords[] = {"VERSION", "FIELDS", "SIZE",      "TYPE",
+                                                     "COUNT",   "WIDTH",  "HEIGHT",    "VIEWPOINT",
+                                                     "POINTS",  "DATA"};
+    if (std::find(std::begin(kKeywords), std::end(kKeywords), line.words[0]) ==
+        std::end(kKeywords)) {
+      fail(path, "not a PCD header: unknown keyword '" + printable(line.words[0]) + "'",
+           "header line " + std::to_string(line.number));
+    }
+    by_keyword[std::string(line.words[0])] = line;
+  }
+  const auto required = [&](std::string_view keyword) -> const HeaderLine& {
+    const auto found = by_keyword.find(keyword);
+    if (found == by_keyword.end()) {
+      fail(path, "PCD header has no " + std::string(keyword) + " line", "header");
+    }
+    return found->second;
+  };
+  const auto number = [&](std::string_view keyword) {
+    const HeaderLine& line = required(keyword);
+    const auto value = line.words.size() == 2 ? parseUnsigned(line.words[1]) : std::nullopt;
+    if (!value) {
+      fail(path, "PCD " + std::string(keyword) + " is not a non-negative integer",
+           "header line " + std::to_string(line.number));
+    }
+    return *value;
+  };
+
+  const HeaderLine& fields = required("FIELDS");
+  const HeaderLine& sizes = required("SIZE");
+  const HeaderLine& types = required("TYPE");
+  const std::size_t field_count = fields.words.size() - 1;
+  if (field_count == 0) fail(path, "PCD FIELDS line names no field", "header line " + std::to_string(fields.number));
+  const auto counts_line = by_keyword.find(std::string_view("COUNT"));
+  for (const HeaderLine* line : {&sizes, &types}) {
+    if (line->words.size() - 1 != field_count) {
+      fail(path, "PCD " + std::string(line->words[0]) + " has " + std::to_string(line->words.size() - 1) +
+                     " entries for " + std::to_string(field_count) + " fields",
+           "header line " + std::to_string(line->number));
+    }
+  }
+  if (counts_line != by_keyword.end() && counts_line->second.words.size() - 1 != field_count) {
+    fail(path, "PCD COUNT has " + std::to_string(counts_line->second.words.size() - 1) +
+                   " entries for " + std::to_string(field_count) + " fields",
+         "header line " + std::to_string(counts_line->second.number));
+  }
+
+  std::uint64_t point_bytes = 0;
+  std::uint64_t values_per_point = 0;
+  for (std::size_t f = 1; f <= field_count; ++f) {
+    const auto size = parseUnsigned(sizes.words[f]);
+    const std::string_view type = types.words[f];
+    const bool valid_size =
+        size && ((type == "F" && (*size == 4 || *size == 8)) ||
+                 ((type == "I" || type == "U") && (*size == 1 || *size == 2 || *size == 4 || *size == 8)));
+    if (!valid_size) {
+      fail(path,
+           "PCD field '" + printable(fields.words[f]) + "' has invalid SIZE/TYPE " +
+               printable(sizes.words[f]) + "/" + printable(type),
+           "header line " + std::to_string(sizes.number));
+    }
+    std::uint64_t count = 1;
+    if (counts_line != by_keyword.end()) {
+      const auto parsed = parseUnsigned(counts_line->second.words[f]);
+      if (!parsed || *parsed == 0 || *parsed > kMaxFieldCount) {
+        fail(path,
+             "PCD field '" + printable(fields.words[f]) + "' has invalid COUNT " +
+                 printable(counts_line->second.words[f]),
+             "header line " + std::to_string(counts_line->second.number));
+      }
+      count = *parsed;
+    }
+    point_bytes += *size * count;
+    values_per_point += count;
+  }
+  if (point_bytes > kMaxPointBytes) {
+    fail(path, "PCD point size of " + std::to_string(point_bytes) + " bytes is absurd", "header");
+  }
+
+  const std::uint64_t width = number("WIDTH");
+  const std::uint64_t height = number("HEIGHT");
+  const std::uint64_t points = number("POINTS");
+  if (saturatingMul(width, height) != points) {
+    fail(path,
+         "PCD WIDTH x HEIGHT (" + std::to_string(width) + " x " + std::to_string(height) +
+             ") differs from POINTS " + std::to_string(points),
+         "header line " + std::to_string(required("POINTS").number));
+  }
+  if (points == 0) fail(path, "empty cloud (0 points)", "PCD header POINTS");
+  if (points > kMaxPoints) {
+    fail(path, "PCD declares " + std::to_string(points) + " points, more than PCL can hold",
+         "header line " + std::to_string(required("POINTS").number));
+  }
+
+  const HeaderLine& data = required("DATA");
+  const std::string_view encoding = data.words.size() == 2 ? data.words[1] : "";
+  const std::uint64_t body_bytes = file_size - body_offset;
+  const std::string data_where = "data at byte " + std::to_string(body_offset);
+  const std::uint64_t needed = saturatingMul(points, point_bytes);
+  if (encoding == "ascii") {
+    // PCL reads one point per line and, we found, accepts a short last line (the missing values
+    // become garbage), so check both lines and values. A cut inside the very last number stays
+    // undetectable in ascii.
+    const BodyCounts counts = countAsciiBody(path, body_offset);
+    if (counts.lines < points) {
+      fail(path,
+           "truncated: header declares " + std::to_string(points) + " points but the ascii data has " +
+               std::to_string(counts.lines) + " lines",
+           data_where);
+    }
+    if (counts.tokens < saturatingMul(points, values_per_point)) {
+      fail(path,
+           "truncated: header declares " + std::to_string(points) + " points of " +
+               std::to_string(values_per_point) + " values but the ascii data has " +
+               std::to_string(counts.tokens) + " values",
+           data_where);
+    }
+  } else if (encoding == "binary") {
+    if (body_bytes < needed) {
+      fail(path,
+           "truncated: header declares " + std::to_string(points) + " points needing " +
+               std::to_string(needed) + " bytes of binary data, but " + std::to_string(body_bytes) +
+               " bytes follow",
+           data_where);
+    }
+  } else if (encoding == "binary_compressed") {
+    // Body: uint32 compressed size, uint32 uncompressed size, then the LZF bytes.
+    if (body_bytes < 8) {
+      fail(path,
+           "truncated: binary_compressed data needs an 8-byte size prefix, " +
+               std::to_string(body_bytes) + " bytes follow",
+           data_where);
+    }
+    const std::uint64_t compressed = readLittleEndianU32(path, body_offset);
+    const std::uint64_t uncompressed = readLittleEndianU32(path, body_offset + 4);
+    if (uncompressed != needed) {
+      fail(path,
+           "corrupt: binary_compressed data says " + std::to_string(uncompressed) +
+               " uncompressed bytes, header declares " + std::to_string(points) + " points needing " +
+               std::to_string(needed),
+           data_where);
+    }
+    if (body_bytes - 8 < compressed) {
+      fail(path,
+           "truncated: header declares " + std::to_string(compressed) +
+               " bytes of compressed data, but " + std::to_string(body_bytes - 8) + " bytes follow",
+           data_where);
+    }
+  } else {
+    fail(path, "PCD DATA is '" + printable(encoding) + "', expected ascii, binary or binary_compressed",
+         "header line " + std::to_string(data.number));
+  }
+  return points;
+}
+
+namespace {
+
+std::uint64_t plyTypeBytes(std::string_view type) {
+  static const std::map<std::string_view, std::uint64_t> kBytes = {
+      {"char", 1},   {"uchar", 1},  {"int8", 1},  {"uint8", 1},   {"short", 2},   {"ushort", 2},
+      {"int16", 2},  {"uint16", 2}, {"int", 4},   {"uint", 4},    {"int32", 4},   {"uint32", 4},
+      {"float", 4},  {"float32", 4}, {"double", 8}, {"float64", 8}};
+  const auto found = kBytes.find(type);
+  return found == kBytes.end() ? 0 : found->second;
+}
+
+}  // namespace
+
+// PLY: http://paulbourke.net/dataformats/ply/
+// Returns the declared vertex count after checking the body can hold every declared element
+// (lists counted at their smallest, zero items, which still bounds what PCL may allocate).
+std::uint64_t checkPlyHeader(const fs::path& path, std::uint64_t file_size) {
+  const std::string head = readHead(path, file_size);
+  if (head.rfind("ply\n", 0) != 0 && head.rfind("ply\r\n", 0) != 0) {
+    fail(path, "not a PLY file: it does not start with the line 'ply'", "byte 0");
+  }
+  std::uint64_t body_offset = 0;
+  const std::vector<HeaderLine> lines = headerLines(path, head, "end_header", body_offset);
+
+  struct Element {
+    std::string name;
+    std::uint64_t count = 0;
+    std::uint64_t min_bytes = 0;   // binary size of one element with empty lists
+    std::uint64_t min_tokens = 0;  // ascii words of one element with empty lists
+  };
+  std::vector<Element> elements;
+  std::string format;
+  for (const HeaderLine& line : lines) {
+    const std::string where = "header line " + std::to_string(line.number);
+    if (line.words.empty()) continue;
+    const std::string_view keyword = line.words[0];
+    if (keyword == "ply" || keyword == "comment" || keyword == "obj_info" ||
+        keyword == "end_header") {
+      continue;
+    }
+    if (keyword == "format") {
+      if (line.words.size() != 3 ||
+          (line.words[1] != "ascii" && line.words[1] != "binary_little_endian" &&
+           line.words[1] != "binary_big_endian")) {
+        fail(path, "PLY format line is not ascii/binary_little_endian/binary_big_endian", where);
+      }
+      format = line.words[1];
+    } else if (keyword == "element") {
+      const auto count = line.words.size() == 3 ? parseUnsigned(line.words[2]) : std::nullopt;
+      if (!count) fail(path, "PLY element line without a non-negative count", where);
+      elements.push_back({std::string(line.words[1]), *count, 0, 0});
+    } else if (keyword == "property") {
+      if (elements.empty()) fail(path, "PLY property before any element", where);
+      const bool list = line.words.size() == 5 && line.words[1] == "list";
+      const std::uint64_t bytes =
+          list ? (plyTypeBytes(line.words[3]) ? plyTypeBytes(line.words[2]) : 0)
+               : (line.words.size() == 3 ? plyTypeBytes(line.words[1]) : 0);
+      if (bytes == 0) fail(path, "PLY property line with an unknown type or shape", where);
+      elements.back().min_bytes += bytes;
+      elements.back().min_tokens += 1;
+    } else {
+      fail(path, "not a PLY header: unknown keyword '" + printable(keyword) + "'", where);
+    }
+  }
+  if (format.empty()) fail(path, "PLY header has no format line", "header");
+  for (const Element& element : elements) {
+    // Items without properties take no bytes, so nothing would bound their count: PCL spent 6 s
+    // iterating over "element face 4000000000" without properties.
+    if (element.count > 0 && element.min_tokens == 0) {
+      fail(path,
+           "PLY element '" + printable(element.name) + "' has " + std::to_string(element.count) +
+               " items but no properties",
+           "header");
+    }
+  }
+  const auto vertex = std::find_if(elements.begin(), elements.end(),
+                                   [](const Element& e) { return e.name == "vertex"; });
+  if (vertex == elements.end()) fail(path, "PLY header declares no vertex element", "header");
+  if (vertex->count == 0) fail(path, "empty cloud (0 points)", "PLY header element vertex");
+  if (vertex->count > kMaxPoints) {
+    fail(path, "PLY declares " + std::to_string(vertex->count) + " vertices, more than PCL can hold",
+         "header element vertex");
+  }
+
+  const std::string data_where = "data at byte " + std::to_string(body_offset);
+  const std::uint64_t body_bytes = file_size - body_offset;
+  std::uint64_t needed = 0;
+  for (const Element& element : elements) {
+    needed = saturatingAdd(needed, saturatingMul(element.count, format == "ascii"
+                                                                    ? element.min_tokens
+                                                                    : element.min_bytes));
+  }
+  if (format == "ascii") {
+    const std::uint64_t tokens = countAsciiBody(path, body_offset).tokens;
+    if (tokens < needed) {
+      fail(path,
+           "truncated: header declares " + std::to_string(vertex->count) +
+               " vertices and other elements needing at least " + std::to_string(needed) +
+               " ascii values, but the data has " + std::to_string(tokens),
+           data_where);
+    }
+  } else if (body_bytes < needed) {
+    fail(path,
+         "truncated: header declares " + std::to_string(vertex->count) +
+             " vertices and other elements needing at least " + std::to_string(needed) +
+             " bytes of binary data, but " + std::to_string(body_bytes) + " bytes follow",
+         data_where);
+  }
+  return vertex->count;
+}
+
+}  // namespace octopoint::prepare

@@ -1,0 +1,27 @@
+#pragma once
+// Checking a scan file's header before PCL reads it: PCL 1.13's readers crash or allocate
+// gigabytes on some headers (scan_loader.cpp lists what was found), so every size a header
+// declares is checked against the real file length first.
+
+#include <cstdint>
+#include <filesystem>
+#include <string>
+#include <string_view>
+
+namespace octopoint::prepare {
+
+// Throws PrepareError with the one-line message "PATH: what (where)".
+[[noreturn]] void fail(const std::filesystem::path& path, const std::string& what, const std::string& where);
+
+// a * b, or UINT64_MAX when that overflows: header sizes are untrusted.
+std::uint64_t saturatingMul(std::uint64_t a, std::uint64_t b);
+
+// File content quoted in a message: printable, short, and never a second line.
+std::string printable(std::string_view text);
+
+// Each returns the number of points the header declares, or throws PrepareError when the header is
+// malformed or declares more data than the file of `file_size` bytes can hold.
+std::uint64_t checkPcdHeader(const std::filesystem::path& path, std::uint64_t file_size);
+std::uint64_t checkPlyHeader(const std::filesystem::path& path, std::uint64_t file_size);
+
+}  // namespace octopoint::prepare
