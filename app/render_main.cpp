@@ -181,8 +181,11 @@ std::string issueText(const ModelIssue& issue) {
 void writePng(const std::string& path, const cv::Mat& image) {
   // Written to a temporary beside the target and renamed, so a failure leaves no partial PNG.
   const fs::path target(path);
-  const fs::path temporary =
-      target.parent_path() / ("." + target.filename().string() + ".tmp-" + std::to_string(::getpid()) + ".png");
+  // Built by appending: GCC 12 warns falsely (-Wrestrict) on a chain of string + here.
+  std::string temporary_name = ".";
+  temporary_name += target.filename().string();
+  temporary_name += ".tmp-" + std::to_string(::getpid()) + ".png";
+  const fs::path temporary = target.parent_path() / temporary_name;
   bool written = false;
   try {
     written = cv::imwrite(temporary.string(), image);

@@ -21,11 +21,12 @@ std::optional<Variant> variantFromName(std::string_view name) {
   return std::nullopt;
 }
 
-void renderLevel(Variant variant, const LevelView& level, const FrameSetup& setup,
-                 Framebuffer& frame) {
+bool renderLevel(Variant variant, const LevelView& level, const FrameSetup& setup,
+                 Framebuffer& frame, const std::atomic<bool>* abort) {
   switch (variant) {
-    case Variant::kFixedBaseline: renderFixedBaseline(level, setup, frame); return;
+    case Variant::kFixedBaseline: return renderFixedBaseline(level, setup, frame, abort);
   }
+  return false;
 }
 
 }  // namespace octopoint

@@ -2,10 +2,12 @@
 // Drawing a model level into a framebuffer, by named variant (DESIGN.md 4). All fixed variants
 // draw bit-identical frames.
 
+#include <atomic>
 #include <optional>
 #include <span>
 #include <string_view>
 
+#include "renderer/abort_flag.h"
 #include "renderer/camera.h"
 #include "renderer/framebuffer.h"
 #include "renderer/model.h"
@@ -26,9 +28,13 @@ std::span<const VariantInfo> allVariants();
 std::optional<Variant> variantFromName(std::string_view name);
 
 // Draws `level` with the set-up of one frame into `frame` (which it does not clear, so several
-// models can share a frame). The frame must have the set-up's width and height.
-void renderLevel(Variant variant, const LevelView& level, const FrameSetup& setup, Framebuffer& frame);
+// models can share a frame). The frame must have the set-up's width and height. When `abort` is
+// given and becomes true while drawing, the decoder stops at its next poll and returns false: the
+// frame is then incomplete and must not be shown. Returns true for a complete frame.
+bool renderLevel(Variant variant, const LevelView& level, const FrameSetup& setup, Framebuffer& frame,
+                 const std::atomic<bool>* abort = nullptr);
 
-void renderFixedBaseline(const LevelView& level, const FrameSetup& setup, Framebuffer& frame);
+bool renderFixedBaseline(const LevelView& level, const FrameSetup& setup, Framebuffer& frame,
+                         const std::atomic<bool>* abort);
 
 }  // namespace octopoint

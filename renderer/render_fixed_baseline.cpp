@@ -17,11 +17,12 @@ struct ZBufferSink {
 
 }  // namespace
 
-void renderFixedBaseline(const LevelView& level, const FrameSetup& setup, Framebuffer& frame) {
+bool renderFixedBaseline(const LevelView& level, const FrameSetup& setup, Framebuffer& frame,
+                         const std::atomic<bool>* abort) {
   assert(level.depth == setup.depth);
   assert(frame.width() == setup.width && frame.height() == setup.height);
   ZBufferSink sink{frame, setup.fraction_bits};
-  BaselineWalk<ZBufferSink>(level, setup, sink).run();
+  return BaselineWalk<ZBufferSink>(level, setup, sink, abort).run();
 }
 
 }  // namespace octopoint
