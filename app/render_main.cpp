@@ -181,11 +181,8 @@ std::string issueText(const ModelIssue& issue) {
 void writePng(const std::string& path, const cv::Mat& image) {
   // Written to a temporary beside the target and renamed, so a failure leaves no partial PNG.
   const fs::path target(path);
-  // Built by appending: GCC 12 warns falsely (-Wrestrict) on a chain of string + here.
-  std::string temporary_name = ".";
-  temporary_name += target.filename().string();
-  temporary_name += ".tmp-" + std::to_string(::getpid()) + ".png";
-  const fs::path temporary = target.parent_path() / temporary_name;
+  const fs::path temporary =
+      target.parent_path() / ("." + target.filename().string() + ".tmp-" + std::to_string(::getpid()) + ".png");
   bool written = false;
   try {
     written = cv::imwrite(temporary.string(), image);
@@ -226,7 +223,10 @@ int run(int argc, char** argv) {
   const LevelView* level = options.depth ? model->levelOfDepth(*options.depth) : &model->finestLevel();
   if (level == nullptr) {
     std::string depths;
-    for (int i = 0; i < model->levelCount(); ++i) depths += " " + std::to_string(model->level(i).depth);
+    for (int i = 0; i < model->levelCount(); ++i) {
+      depths += ' ';  // appended char by char: GCC 12 warns falsely (-Wrestrict) on " " + string
+      depths += std::to_string(model->level(i).depth);
+    }
     throw UsageError("--depth: " + model_label + " has no depth " + std::to_string(*options.depth) +
                      " (it has" + depths + ")");
   }
