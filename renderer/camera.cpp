@@ -48,6 +48,7 @@ CameraError buildFrameSetup(const Camera& camera, int depth, int fraction_bits, 
   std::int64_t worst[3] = {std::llabs(root[0]), std::llabs(root[1]), 0};
 
   FrameSetup result;
+  result.camera = camera;
   result.depth = depth;
   result.fraction_bits = fraction_bits;
   result.width = camera.width;

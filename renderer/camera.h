@@ -49,13 +49,16 @@ enum class CameraError : std::uint8_t {
 
 const char* describe(CameraError error);
 
-struct Vec3 {
-  std::int32_t x, y, z;
+template <typename T>
+struct Point3 {
+  T x, y, z;
 };
+using Vec3 = Point3<std::int32_t>;
 
 // Everything a decoder needs for one frame at one depth. Positions are in screen pixels with
 // `fraction_bits` fraction bits (Q(32-F).F): a leaf at position p lands on pixel p >> F.
 struct FrameSetup {
+  Camera camera;  // what it was built from (the floating point reference variants rebuild from it)
   int depth = 0;
   int fraction_bits = kDefaultFractionBits;
   std::int32_t width = 0;

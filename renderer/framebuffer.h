@@ -41,6 +41,9 @@ class Framebuffer {
     return colour_index_[indexOf(x, y)];
   }
   std::span<const std::uint8_t> colourIndices() const { return colour_index_; }
+  // Raw access for the decoders' plotters (renderer/framebuffer_plot.h).
+  std::uint8_t* colourIndexData() { return colour_index_.data(); }
+  std::int32_t* depthData() { return depth_.data(); }
   std::span<const std::int32_t> depths() const { return depth_; }
 
  private:

@@ -6,8 +6,16 @@ namespace octopoint {
 namespace {
 
 constexpr std::array kVariants = {
-    VariantInfo{Variant::kFixedBaseline, "fixed_baseline",
-                "Algorithm 1: integer recursion down to each leaf"},
+    VariantInfo{Variant::kFixedBaseline, "fixed_baseline", "Algorithm 1: integer recursion down to each leaf"},
+    VariantInfo{Variant::kFixedLeafCall, "fixed_leafcall", "Algorithm 2: leaf parents set their children's pixels"},
+    VariantInfo{Variant::kFixedUnrolled, "fixed_unrolled", "Algorithm 2 with the 8-way child loop unrolled"},
+    VariantInfo{Variant::kFixedSetBits, "fixed_setbits", "Algorithm 2 visiting only the set bits of each mask"},
+    VariantInfo{Variant::kFixedClipped, "fixed_clipped",
+                "set bits + hierarchical clipping (no bounds checks for subtrees on screen)"},
+    VariantInfo{Variant::kFixedFast, "fixed_fast", "clipped, state in registers, no call per leaf parent: the fastest"},
+    VariantInfo{Variant::kFloatBaseline, "float_baseline", "Algorithm 1 in floating point (reference)"},
+    VariantInfo{Variant::kFloatLeafCall, "float_leafcall", "Algorithm 2 in floating point (reference)"},
+    VariantInfo{Variant::kFloatUnrolled, "float_unrolled", "Algorithm 2 unrolled, floating point (reference)"},
 };
 
 }  // namespace
@@ -25,8 +33,25 @@ bool renderLevel(Variant variant, const LevelView& level, const FrameSetup& setu
                  Framebuffer& frame, const std::atomic<bool>* abort) {
   switch (variant) {
     case Variant::kFixedBaseline: return renderFixedBaseline(level, setup, frame, abort);
+    case Variant::kFixedLeafCall: return renderFixedLeafCall(level, setup, frame, abort);
+    case Variant::kFixedUnrolled: return renderFixedUnrolled(level, setup, frame, abort);
+    case Variant::kFixedSetBits: return renderFixedSetBits(level, setup, frame, abort);
+    case Variant::kFixedClipped: return renderFixedClipped(level, setup, frame, abort);
+    case Variant::kFixedFast: return renderFixedFast(level, setup, frame, abort);
+    case Variant::kFloatBaseline: return renderFloatBaseline(level, setup, frame, abort);
+    case Variant::kFloatLeafCall: return renderFloatLeafCall(level, setup, frame, abort);
+    case Variant::kFloatUnrolled: return renderFloatUnrolled(level, setup, frame, abort);
   }
   return false;
+}
+
+bool isFixedPoint(Variant variant) {
+  switch (variant) {
+    case Variant::kFloatBaseline:
+    case Variant::kFloatLeafCall:
+    case Variant::kFloatUnrolled: return false;
+    default: return true;
+  }
 }
 
 }  // namespace octopoint

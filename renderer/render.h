@@ -16,6 +16,14 @@ namespace octopoint {
 
 enum class Variant {
   kFixedBaseline,  // Algorithm 1: recursion down to the leaf, the leaf sets the pixel
+  kFixedLeafCall,  // Algorithm 2: the leaf parent sets its children's pixels
+  kFixedUnrolled,  // Algorithm 2 with the 8-way child loop unrolled
+  kFixedSetBits,   // Algorithm 2 visiting only the set bits of each mask
+  kFixedClipped,   // set bits + hierarchical clipping: no bounds checks for subtrees on screen
+  kFixedFast,      // clipped, state in registers, no call per leaf parent: the fastest
+  kFloatBaseline,  // floating point reference of Algorithm 1
+  kFloatLeafCall,  // floating point reference of Algorithm 2
+  kFloatUnrolled,  // floating point reference of Algorithm 2, unrolled
 };
 
 struct VariantInfo {
@@ -34,7 +42,18 @@ std::optional<Variant> variantFromName(std::string_view name);
 bool renderLevel(Variant variant, const LevelView& level, const FrameSetup& setup, Framebuffer& frame,
                  const std::atomic<bool>* abort = nullptr);
 
-bool renderFixedBaseline(const LevelView& level, const FrameSetup& setup, Framebuffer& frame,
-                         const std::atomic<bool>* abort);
+// Whether a variant uses integer arithmetic only (the float_* ones are references).
+bool isFixedPoint(Variant variant);
+
+// The variants one by one (renderLevel dispatches to them).
+bool renderFixedBaseline(const LevelView&, const FrameSetup&, Framebuffer&, const std::atomic<bool>* abort);
+bool renderFixedLeafCall(const LevelView&, const FrameSetup&, Framebuffer&, const std::atomic<bool>* abort);
+bool renderFixedUnrolled(const LevelView&, const FrameSetup&, Framebuffer&, const std::atomic<bool>* abort);
+bool renderFixedSetBits(const LevelView&, const FrameSetup&, Framebuffer&, const std::atomic<bool>* abort);
+bool renderFixedClipped(const LevelView&, const FrameSetup&, Framebuffer&, const std::atomic<bool>* abort);
+bool renderFixedFast(const LevelView&, const FrameSetup&, Framebuffer&, const std::atomic<bool>* abort);
+bool renderFloatBaseline(const LevelView&, const FrameSetup&, Framebuffer&, const std::atomic<bool>* abort);
+bool renderFloatLeafCall(const LevelView&, const FrameSetup&, Framebuffer&, const std::atomic<bool>* abort);
+bool renderFloatUnrolled(const LevelView&, const FrameSetup&, Framebuffer&, const std::atomic<bool>* abort);
 
 }  // namespace octopoint

@@ -3,6 +3,7 @@
 
 #include <cmath>
 
+#include "app/reference_rotation.h"
 #include "renderer/camera.h"
 
 namespace octopoint {
@@ -35,20 +36,7 @@ TEST(Camera, VectorsMatchTheExactRotationWithinHalfAnUlp) {
   camera.roll = Angle::fromDegrees(10);
   camera.zoom = Q16::fromRaw(3 * Q16::kOneRaw / 2);
   const FrameSetup setup = setupFor(camera, 8);
-  const double pi = std::acos(-1.0);
-  const double yaw = camera.yaw.turns16() * 2 * pi / 65536, pitch = camera.pitch.turns16() * 2 * pi / 65536,
-               roll = camera.roll.turns16() * 2 * pi / 65536;
-  // R = Rz(roll) Rx(pitch) Ry(yaw), in double, for comparison.
-  const double ry[3][3] = {{std::cos(yaw), 0, std::sin(yaw)}, {0, 1, 0}, {-std::sin(yaw), 0, std::cos(yaw)}};
-  const double rx[3][3] = {{1, 0, 0}, {0, std::cos(pitch), -std::sin(pitch)}, {0, std::sin(pitch), std::cos(pitch)}};
-  const double rz[3][3] = {{std::cos(roll), -std::sin(roll), 0}, {std::sin(roll), std::cos(roll), 0}, {0, 0, 1}};
-  double rxy[3][3] = {}, r[3][3] = {};
-  for (int i = 0; i < 3; ++i)
-    for (int j = 0; j < 3; ++j)
-      for (int k = 0; k < 3; ++k) rxy[i][j] += rx[i][k] * ry[k][j];
-  for (int i = 0; i < 3; ++i)
-    for (int j = 0; j < 3; ++j)
-      for (int k = 0; k < 3; ++k) r[i][j] += rz[i][k] * rxy[k][j];
+  const Matrix3d r = referenceRotation(camera.yaw, camera.pitch, camera.roll);
   for (int level = 0; level < 8; ++level) {
     for (int k = 0; k < 8; ++k) {
       const double sign[3] = {k & 4 ? 1.0 : -1.0, k & 2 ? 1.0 : -1.0, k & 1 ? 1.0 : -1.0};

@@ -1,0 +1,297 @@
+// octopoint-tradeoff: sweeps the speed/accuracy trade for one scan (docs/tradeoff.md): depth,
+// decoder variant, fraction bits and hole filling; writes a CSV row per configuration and a plot of
+// time against quality.
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <string>
+#include <vector>
+
+#include <opencv2/imgcodecs.hpp>
+#include <opencv2/imgproc.hpp>
+
+#include "app/image_quality.h"
+#include "app/reference_render.h"
+#include "codegen/cube_fit.h"
+#include "codegen/model_writer.h"
+#include "codegen/prepare.h"
+#include "codegen/prepare_error.h"
+#include "renderer/hole_fill.h"
+#include "renderer/render.h"
+
+namespace {
+
+namespace fs = std::filesystem;
+using namespace octopoint;
+
+constexpr const char* kUsage = R"(usage: octopoint-tradeoff SCAN [options]
+
+Measures the speed/accuracy trade of octopoint on one scan: for every depth, decoder variant,
+fraction bits and hole filling on/off it renders one view and records the time per frame, the
+model size and the quality against a dense double precision render of the scan's own points
+(docs/tradeoff.md defines it). Writes OUTDIR/tradeoff.csv and OUTDIR/tradeoff.png.
+
+  --axes y-down|y-up     the scan's axes (as octopoint-prepare; default y-down)
+  --crop X0,Y0,Z0,X1,Y1,Z1  keep the points inside this box (as octopoint-prepare)
+  --yaw DEG, --pitch DEG the view (default 0, 0)
+  --size WxH             framebuffer size (default 320x240)
+  --depths LIST          octree depths (default 6,7,8,9,10)
+  --fraction-bits LIST   fixed-point fraction bits of the positions (default 8,12,15,20)
+  -o, --output OUTDIR    where to write (default out)
+  -h, --help             show this help
+)";
+
+constexpr Rgb kBackground{236, 236, 240};
+constexpr double kMinSecondsPerConfiguration = 0.05;
+constexpr int kMaxFramesPerConfiguration = 200;
+
+struct Options {
+  std::string scan;
+  prepare::PrepareOptions prepare;
+  Camera camera;
+  std::vector<int> depths = {6, 7, 8, 9, 10};
+  std::vector<int> fraction_bits = {8, 12, 15, 20};
+  fs::path output = "out";
+};
+
+struct Row {
+  int depth;
+  std::string variant;
+  int fraction_bits;
+  bool fill;
+  double ms_per_frame;
+  std::size_t model_bytes;
+  double bits_per_point;
+  double psnr;
+  double ssim;
+  double empty_inside;  // share of the reference's object pixels left empty
+};
+
+std::vector<int> parseList(const std::string& flag, const std::string& text) {
+  std::vector<int> values;
+  std::size_t at = 0;
+  while (at <= text.size()) {
+    const std::size_t comma = std::min(text.find(',', at), text.size());
+    char* end = nullptr;
+    const std::string item = text.substr(at, comma - at);
+    const long value = std::strtol(item.c_str(), &end, 10);
+    if (item.empty() || *end != '\0') throw prepare::PrepareError(flag + ": '" + text + "' is not a list of integers");
+    values.push_back(static_cast<int>(value));
+    at = comma + 1;
+  }
+  return values;
+}
+
+Options parseOptions(int argc, char** argv) {
+  Options options;
+  for (int i = 1; i < argc; ++i) {
+    const std::string arg = argv[i];
+    auto value = [&]() -> std::string {
+      if (i + 1 >= argc) throw prepare::PrepareError(arg + ": missing value (see --help)");
+      return argv[++i];
+    };
+    if (arg == "-h" || arg == "--help") {
+      std::cout << kUsage;
+      std::exit(0);
+    } else if (arg == "--axes") {
+      const std::string axes = value();
+      if (axes != "y-down" && axes != "y-up") throw prepare::PrepareError("--axes: '" + axes + "' is not y-down or y-up");
+      options.prepare.axes = axes == "y-up" ? prepare::ScanAxes::kYUp : prepare::ScanAxes::kYDown;
+    } else if (arg == "--crop") {
+      float v[6];
+      const std::string text = value();
+      if (std::sscanf(text.c_str(), "%f,%f,%f,%f,%f,%f", &v[0], &v[1], &v[2], &v[3], &v[4], &v[5]) != 6) {
+        throw prepare::PrepareError("--crop: '" + text + "' is not X0,Y0,Z0,X1,Y1,Z1");
+      }
+      options.prepare.crop = prepare::CropBox{{v[0], v[1], v[2]}, {v[3], v[4], v[5]}};
+    } else if (arg == "--yaw") {
+      options.camera.yaw = Angle::fromDegrees(parseList(arg, value()).at(0));
+    } else if (arg == "--pitch") {
+      options.camera.pitch = Angle::fromDegrees(parseList(arg, value()).at(0));
+    } else if (arg == "--size") {
+      const std::string text = value();
+      if (std::sscanf(text.c_str(), "%dx%d", &options.camera.width, &options.camera.height) != 2) {
+        throw prepare::PrepareError("--size: '" + text + "' is not WxH");
+      }
+    } else if (arg == "--depths") {
+      options.depths = parseList(arg, value());
+    } else if (arg == "--fraction-bits") {
+      options.fraction_bits = parseList(arg, value());
+    } else if (arg == "-o" || arg == "--output") {
+      options.output = value();
+    } else if (!arg.empty() && arg[0] == '-') {
+      throw prepare::PrepareError("unknown option '" + arg + "' (see --help)");
+    } else {
+      options.scan = arg;
+    }
+  }
+  if (options.scan.empty()) throw prepare::PrepareError("no SCAN given (see --help)");
+  return options;
+}
+
+// The scan's points as the model sees them: cropped, then turned into the model's axes.
+prepare::Scan modelPoints(const prepare::Scan& scan, const Options& options) {
+  prepare::Scan points = options.prepare.crop ? prepare::cropScan(scan, *options.prepare.crop, options.scan) : scan;
+  if (options.prepare.axes == prepare::ScanAxes::kYUp) {
+    for (auto& p : points.positions) p = {p[0], -p[1], -p[2]};
+  }
+  return points;
+}
+
+cv::Mat toImage(const Framebuffer& frame, const ModelView& model) {
+  cv::Mat rgb(frame.height(), frame.width(), CV_8UC3);
+  resolveToRgb(frame, model, kBackground, {rgb.data, rgb.total() * 3});
+  cv::Mat bgr;
+  cv::cvtColor(rgb, bgr, cv::COLOR_RGB2BGR);
+  return bgr;
+}
+
+// Median milliseconds per frame over repeated frames (at least kMinSecondsPerConfiguration).
+template <typename DrawFrame>
+double medianMilliseconds(DrawFrame draw) {
+  std::vector<double> times;
+  const auto start = std::chrono::steady_clock::now();
+  do {
+    const auto before = std::chrono::steady_clock::now();
+    draw();
+    times.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - before).count());
+  } while (static_cast<int>(times.size()) < kMaxFramesPerConfiguration &&
+           std::chrono::steady_clock::now() - start < std::chrono::duration<double>(kMinSecondsPerConfiguration));
+  std::nth_element(times.begin(), times.begin() + static_cast<std::ptrdiff_t>(times.size() / 2), times.end());
+  return times[times.size() / 2];
+}
+
+// Time (log scale) against PSNR, one point per variant, depth and hole filling, at the default
+// fraction bits (the CSV has every fraction bits setting).
+void writePlot(const std::vector<Row>& rows, const fs::path& path) {
+  constexpr int kWidth = 900, kHeight = 600, kMargin = 70;
+  cv::Mat plot(kHeight, kWidth, CV_8UC3, cv::Scalar(255, 255, 255));
+  std::vector<const Row*> shown;
+  for (const Row& r : rows) {
+    if (r.fraction_bits == kDefaultFractionBits) shown.push_back(&r);
+  }
+  double min_ms = 1e9, max_ms = 0, min_psnr = 1e9, max_psnr = 0;
+  for (const Row* r : shown) {
+    min_ms = std::min(min_ms, r->ms_per_frame);
+    max_ms = std::max(max_ms, r->ms_per_frame);
+    min_psnr = std::min(min_psnr, r->psnr);
+    max_psnr = std::max(max_psnr, r->psnr);
+  }
+  const double log_low = std::floor(std::log10(min_ms)), log_high = std::ceil(std::log10(max_ms));
+  const double psnr_low = std::floor(min_psnr) - 1, psnr_high = std::ceil(max_psnr) + 1;
+  auto at = [&](double ms, double psnr) {
+    const double u = (std::log10(ms) - log_low) / (log_high - log_low);
+    const double v = (psnr - psnr_low) / (psnr_high - psnr_low);
+    return cv::Point(kMargin + static_cast<int>(u * (kWidth - 2 * kMargin)),
+                     kHeight - kMargin - static_cast<int>(v * (kHeight - 2 * kMargin)));
+  };
+  const cv::Scalar black(0, 0, 0), grey(210, 210, 210);
+  for (double decade = log_low; decade <= log_high; ++decade) {
+    const cv::Point p = at(std::pow(10.0, decade), psnr_low);
+    cv::line(plot, p, {p.x, kMargin}, grey);
+    char label[32];
+    std::snprintf(label, sizeof label, "%g ms", std::pow(10.0, decade));
+    cv::putText(plot, label, {p.x - 20, kHeight - kMargin + 20}, cv::FONT_HERSHEY_SIMPLEX, 0.45, black);
+  }
+  for (double db = psnr_low; db <= psnr_high; db += 5) {
+    const cv::Point p = at(std::pow(10.0, log_low), db);
+    cv::line(plot, p, {kWidth - kMargin, p.y}, grey);
+    cv::putText(plot, std::to_string(static_cast<int>(db)) + " dB", {10, p.y + 5}, cv::FONT_HERSHEY_SIMPLEX, 0.45, black);
+  }
+  cv::putText(plot, "time per frame (log scale)", {kWidth / 2 - 110, kHeight - 20}, cv::FONT_HERSHEY_SIMPLEX, 0.6, black);
+  cv::putText(plot, "PSNR against the dense reference; dot: hole filling on, ring: off, x: floating point",
+              {kMargin, 30}, cv::FONT_HERSHEY_SIMPLEX, 0.5, black);
+  const cv::Scalar depth_colour[] = {{180, 119, 31}, {14, 127, 255}, {44, 160, 44}, {40, 39, 214}, {189, 103, 148}, {75, 86, 140}};
+  for (const Row* r : shown) {
+    const cv::Scalar colour = depth_colour[static_cast<std::size_t>(std::clamp(r->depth - 6, 0, 5))];
+    if (r->variant.rfind("float_", 0) == 0) cv::drawMarker(plot, at(r->ms_per_frame, r->psnr), colour, cv::MARKER_TILTED_CROSS, 9);
+    else cv::circle(plot, at(r->ms_per_frame, r->psnr), r->fill ? 5 : 4, colour, r->fill ? cv::FILLED : 1);
+  }
+  for (int d = 0; d < 5; ++d) {
+    cv::circle(plot, {kWidth - 150, kHeight - kMargin - 120 + 22 * d}, 5, depth_colour[d], cv::FILLED);
+    cv::putText(plot, "depth " + std::to_string(d + 6), {kWidth - 135, kHeight - kMargin - 115 + 22 * d},
+                cv::FONT_HERSHEY_SIMPLEX, 0.5, black);
+  }
+  cv::imwrite(path.string(), plot);
+}
+
+int run(int argc, char** argv) {
+  const Options options = parseOptions(argc, argv);
+  const prepare::Scan points = modelPoints(prepare::loadScan(options.scan), options);
+  const prepare::CubeFit fit = prepare::fitCube(points.positions, options.scan);
+  cv::Mat object_mask;
+  const cv::Mat reference = tradeoff::renderReference(points, fit, options.camera, kBackground, &object_mask);
+  const double object_pixels = std::max(1, cv::countNonZero(object_mask));
+  fs::create_directories(options.output);
+  cv::imwrite((options.output / "tradeoff_reference.png").string(), reference);
+
+  std::vector<Row> rows;
+  for (int depth : options.depths) {
+    prepare::PrepareOptions prepare_options;
+    prepare_options.name = "tradeoff";
+    prepare_options.depths = {depth};
+    const std::vector<std::uint8_t> image =
+        prepare::serializeModel(prepare::prepareModel(points, options.scan, prepare_options));
+    ModelIssue issue;
+    const std::optional<ModelView> model = ModelView::fromBytes(image, &issue);
+    if (!model) throw prepare::PrepareError(std::string("model at depth ") + std::to_string(depth) + ": " + describe(issue.error));
+    const LevelView& level = model->finestLevel();
+    const std::size_t model_bytes = level.nodes.size() + level.leaves.size();
+    Framebuffer frame(options.camera.width, options.camera.height);
+    HoleFiller filler(options.camera.width);
+    for (const VariantInfo& info : allVariants()) {
+      // Fraction bits change nothing in a floating point variant: one run of those.
+      const std::vector<int> fractions = isFixedPoint(info.variant) ? options.fraction_bits : std::vector<int>{kDefaultFractionBits};
+      for (int bits : fractions) {
+        FrameSetup setup;
+        if (buildFrameSetup(options.camera, depth, bits, &setup) != CameraError::kNone) continue;
+        for (bool fill : {false, true}) {
+          const double ms = medianMilliseconds([&] {
+            frame.clear();
+            renderLevel(info.variant, level, setup, frame);
+            if (fill) filler.fill(frame, bridgeDepthLimit(setup));
+          });
+          const cv::Mat drawn = toImage(frame, *model);
+          int empty_inside = 0;
+          for (int y = 0; y < frame.height(); ++y)
+            for (int x = 0; x < frame.width(); ++x)
+              empty_inside += object_mask.at<std::uint8_t>(y, x) != 0 && !frame.covered(x, y);
+          rows.push_back({depth, std::string(info.name), bits, fill, ms, model_bytes,
+                          8.0 * static_cast<double>(model_bytes) / static_cast<double>(level.leaves.size()),
+                          tradeoff::psnr(reference, drawn), tradeoff::ssim(reference, drawn),
+                          empty_inside / object_pixels});
+        }
+      }
+    }
+    std::fprintf(stderr, "octopoint-tradeoff: depth %d done (%zu voxels)\n", depth, level.leaves.size());
+  }
+
+  std::ofstream csv(options.output / "tradeoff.csv");
+  csv << "depth,variant,fraction_bits,hole_fill,ms_per_frame,model_bytes,bits_per_point,psnr_db,ssim,empty_inside_share\n";
+  for (const Row& r : rows) {
+    char line[256];
+    std::snprintf(line, sizeof line, "%d,%s,%d,%s,%.4f,%zu,%.3f,%.3f,%.4f,%.4f\n", r.depth, r.variant.c_str(),
+                  r.fraction_bits, r.fill ? "on" : "off", r.ms_per_frame, r.model_bytes, r.bits_per_point, r.psnr,
+                  r.ssim, r.empty_inside);
+    csv << line;
+  }
+  writePlot(rows, options.output / "tradeoff.png");
+  std::printf("wrote %s and %s (%zu configurations)\n", (options.output / "tradeoff.csv").c_str(),
+              (options.output / "tradeoff.png").c_str(), rows.size());
+  return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  try {
+    return run(argc, argv);
+  } catch (const std::exception& error) {
+    std::fprintf(stderr, "octopoint-tradeoff: %s\n", error.what());
+  }
+  return 1;
+}

@@ -1,0 +1,125 @@
+#pragma once
+// The recursive octree decoders of DESIGN.md 4, written once for any position type: instantiated
+// with int32_t positions (Q(32-F).F screen pixels) they are the fixed variants, with a floating
+// point type (only in render_float_*.cpp) the reference variants the paper compares against.
+// Every algorithm walks the same depth-first stream: a node's child-mask byte, then its occupied
+// children's subtrees in order k = 0..7; a leaf takes the next palette index.
+//
+// Each algorithm polls the abort flag at tree level kAbortCheckLevel (and, once it was seen,
+// returns at every level above it), so a frame can be stopped within one level-3 subtree.
+
+#include <array>
+#include <atomic>
+#include <bit>
+#include <cstdint>
+#include <utility>
+
+#include "renderer/abort_flag.h"
+#include "renderer/camera.h"
+
+namespace octopoint {
+
+template <typename T>
+using OffsetTable = std::array<std::array<Point3<T>, 8>, format::kMaxDepth>;
+
+template <typename T>
+constexpr Point3<T> operator+(const Point3<T>& a, const Point3<T>& b) {
+  return {static_cast<T>(a.x + b.x), static_cast<T>(a.y + b.y), static_cast<T>(a.z + b.z)};
+}
+
+// What one walk reads and writes. `Plot` is called as plot(position, palette_index).
+template <typename T, typename Plot>
+struct DecodeState {
+  const std::uint8_t* node;
+  const std::uint8_t* leaf;
+  const OffsetTable<T>& offsets;  // offsets[l][k]: from a level-l node's centre to child k's
+  int depth;
+  Plot plot;
+  const std::atomic<bool>* abort;
+  bool aborted = false;
+
+  // True when the walk must stop at this node (see the header comment).
+  bool stopsAt(int level) {
+    if (level > kAbortCheckLevel || abort == nullptr) return false;
+    if (!aborted && level == kAbortCheckLevel) aborted = abort->load(std::memory_order_relaxed);
+    return aborted;
+  }
+};
+
+// Algorithm 1: recursion down to the leaf; the leaf itself plots.
+template <typename T, typename Plot>
+void visitBaseline(DecodeState<T, Plot>& s, int level, Point3<T> centre) {
+  if (s.stopsAt(level)) return;
+  if (level == s.depth) {
+    s.plot(centre, *s.leaf++);
+    return;
+  }
+  const std::uint8_t mask = *s.node++;
+  const auto& offsets = s.offsets[static_cast<std::size_t>(level)];
+  for (unsigned k = 0; k < 8; ++k) {
+    if (mask & (1u << k)) visitBaseline(s, level + 1, centre + offsets[k]);
+  }
+}
+
+// Algorithm 2: the last recursion level is eliminated; a leaf parent plots its children.
+template <typename T, typename Plot>
+void visitLeafCall(DecodeState<T, Plot>& s, int level, Point3<T> centre) {
+  if (s.stopsAt(level)) return;
+  const std::uint8_t mask = *s.node++;
+  const auto& offsets = s.offsets[static_cast<std::size_t>(level)];
+  if (level + 1 == s.depth) {
+    for (unsigned k = 0; k < 8; ++k) {
+      if (mask & (1u << k)) s.plot(centre + offsets[k], *s.leaf++);
+    }
+    return;
+  }
+  for (unsigned k = 0; k < 8; ++k) {
+    if (mask & (1u << k)) visitLeafCall(s, level + 1, centre + offsets[k]);
+  }
+}
+
+// Algorithm 2 with the 8-way child loop unrolled: eight straight tests, constant bit masks.
+template <typename T, typename Plot>
+void visitUnrolled(DecodeState<T, Plot>& s, int level, Point3<T> centre) {
+  if (s.stopsAt(level)) return;
+  const std::uint8_t mask = *s.node++;
+  const auto& offsets = s.offsets[static_cast<std::size_t>(level)];
+  if (level + 1 == s.depth) {
+    [&]<std::size_t... k>(std::index_sequence<k...>) {
+      ((mask & (1u << k) ? s.plot(centre + offsets[k], *s.leaf++) : void()), ...);
+    }(std::make_index_sequence<8>{});
+    return;
+  }
+  [&]<std::size_t... k>(std::index_sequence<k...>) {
+    ((mask & (1u << k) ? visitUnrolled(s, level + 1, centre + offsets[k]) : void()), ...);
+  }(std::make_index_sequence<8>{});
+}
+
+// Algorithm 2 visiting only the set bits (count-trailing-zeros), so a sparse node costs its
+// children, not eight tests.
+template <typename T, typename Plot>
+void visitSetBits(DecodeState<T, Plot>& s, int level, Point3<T> centre) {
+  if (s.stopsAt(level)) return;
+  unsigned mask = *s.node++;
+  const auto& offsets = s.offsets[static_cast<std::size_t>(level)];
+  if (level + 1 == s.depth) {
+    for (; mask != 0; mask &= mask - 1) s.plot(centre + offsets[std::countr_zero(mask)], *s.leaf++);
+    return;
+  }
+  for (; mask != 0; mask &= mask - 1) {
+    visitSetBits(s, level + 1, centre + offsets[std::countr_zero(mask)]);
+  }
+}
+
+// Advances the stream past a subtree without computing a single position: what a clipped-away
+// subtree still costs in a depth-first stream without an index.
+inline void skipSubtree(const std::uint8_t*& node, const std::uint8_t*& leaf, int level, int depth) {
+  const unsigned mask = *node++;
+  if (level + 1 == depth) {
+    leaf += std::popcount(mask);
+    return;
+  }
+  for (int child = std::popcount(mask); child > 0; --child) skipSubtree(node, leaf, level + 1, depth);
+}
+
+}  // namespace octopoint

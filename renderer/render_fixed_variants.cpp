@@ -1,0 +1,126 @@
+// The integer decoders: each draws bit-identical frames (tests/render_variants_test.cpp).
+#include <algorithm>
+#include <cassert>
+#include <cstdlib>
+
+#include "renderer/decode_algorithms.h"
+#include "renderer/framebuffer_plot.h"
+#include "renderer/render.h"
+
+namespace octopoint {
+namespace {
+
+using CheckedPlot = FixedPlot<true>;
+using InsidePlot = FixedPlot<false>;
+
+template <typename Visit>
+bool renderWith(Visit visit, const LevelView& level, const FrameSetup& setup, Framebuffer& frame,
+                const std::atomic<bool>* abort) {
+  assert(level.depth == setup.depth);
+  assert(frame.width() == setup.width && frame.height() == setup.height);
+  DecodeState<std::int32_t, CheckedPlot> state{level.nodes.data(), level.leaves.data(),
+                                               setup.child_offset, setup.depth,
+                                               CheckedPlot(frame, setup), abort};
+  visit(state, 0, setup.root);
+  return !state.aborted;
+}
+
+// Hierarchical clipping: a subtree whose leaves all lie on screen is drawn without per-pixel bounds
+// checks; one whose leaves all lie off screen is skipped (its bytes still have to be stepped over);
+// only subtrees straddling an edge test each leaf. Leaves of a level-l node lie within
+// reach[l] = sum over l' >= l of max_k |offset[l'][k]| of its centre, per axis (Q(32-F).F).
+class ClippedWalk {
+ public:
+  ClippedWalk(const LevelView& level, const FrameSetup& setup, Framebuffer& frame,
+              const std::atomic<bool>* abort)
+      : checked_{level.nodes.data(), level.leaves.data(), setup.child_offset, setup.depth,
+                 CheckedPlot(frame, setup), abort},
+        inside_plot_(frame, setup),
+        x_end_(std::int64_t{setup.width} << setup.fraction_bits),
+        y_end_(std::int64_t{setup.height} << setup.fraction_bits) {
+    std::int64_t x = 0, y = 0;
+    for (int l = setup.depth - 1; l >= 0; --l) {
+      for (const Vec3& d : setup.child_offset[static_cast<std::size_t>(l)]) {
+        reach_x_[static_cast<std::size_t>(l)] = std::max<std::int64_t>(reach_x_[static_cast<std::size_t>(l)], std::llabs(d.x));
+        reach_y_[static_cast<std::size_t>(l)] = std::max<std::int64_t>(reach_y_[static_cast<std::size_t>(l)], std::llabs(d.y));
+      }
+      x += reach_x_[static_cast<std::size_t>(l)];
+      y += reach_y_[static_cast<std::size_t>(l)];
+      reach_x_[static_cast<std::size_t>(l)] = x;
+      reach_y_[static_cast<std::size_t>(l)] = y;
+    }
+  }
+
+  bool run(const Vec3& root) {
+    visit(0, root);
+    return !checked_.aborted;
+  }
+
+ private:
+  void visit(int level, const Vec3& centre) {
+    if (checked_.stopsAt(level)) return;
+    const std::int64_t rx = reach_x_[static_cast<std::size_t>(level)];
+    const std::int64_t ry = reach_y_[static_cast<std::size_t>(level)];
+    if (centre.x + rx < 0 || centre.x - rx >= x_end_ || centre.y + ry < 0 || centre.y - ry >= y_end_) {
+      skipSubtree(checked_.node, checked_.leaf, level, checked_.depth);
+      return;
+    }
+    if (centre.x - rx >= 0 && centre.x + rx < x_end_ && centre.y - ry >= 0 && centre.y + ry < y_end_) {
+      DecodeState<std::int32_t, InsidePlot> inside{checked_.node, checked_.leaf, checked_.offsets,
+                                                   checked_.depth, inside_plot_, checked_.abort,
+                                                   checked_.aborted};
+      visitSetBits(inside, level, centre);
+      checked_.node = inside.node;
+      checked_.leaf = inside.leaf;
+      checked_.aborted = inside.aborted;
+      return;
+    }
+    unsigned mask = *checked_.node++;
+    const auto& offsets = checked_.offsets[static_cast<std::size_t>(level)];
+    if (level + 1 == checked_.depth) {
+      for (; mask != 0; mask &= mask - 1) {
+        checked_.plot(centre + offsets[std::countr_zero(mask)], *checked_.leaf++);
+      }
+      return;
+    }
+    for (; mask != 0; mask &= mask - 1) visit(level + 1, centre + offsets[std::countr_zero(mask)]);
+  }
+
+  DecodeState<std::int32_t, CheckedPlot> checked_;
+  InsidePlot inside_plot_;
+  std::int64_t x_end_;  // the screen's right edge, Q(32-F).F: width << F does not fit 32 bits at F = 24
+  std::int64_t y_end_;
+  std::array<std::int64_t, format::kMaxDepth> reach_x_{};
+  std::array<std::int64_t, format::kMaxDepth> reach_y_{};
+};
+
+}  // namespace
+
+bool renderFixedBaseline(const LevelView& level, const FrameSetup& setup, Framebuffer& frame,
+                         const std::atomic<bool>* abort) {
+  return renderWith([](auto& s, int l, Vec3 p) { visitBaseline(s, l, p); }, level, setup, frame, abort);
+}
+
+bool renderFixedLeafCall(const LevelView& level, const FrameSetup& setup, Framebuffer& frame,
+                         const std::atomic<bool>* abort) {
+  return renderWith([](auto& s, int l, Vec3 p) { visitLeafCall(s, l, p); }, level, setup, frame, abort);
+}
+
+bool renderFixedUnrolled(const LevelView& level, const FrameSetup& setup, Framebuffer& frame,
+                         const std::atomic<bool>* abort) {
+  return renderWith([](auto& s, int l, Vec3 p) { visitUnrolled(s, l, p); }, level, setup, frame, abort);
+}
+
+bool renderFixedSetBits(const LevelView& level, const FrameSetup& setup, Framebuffer& frame,
+                        const std::atomic<bool>* abort) {
+  return renderWith([](auto& s, int l, Vec3 p) { visitSetBits(s, l, p); }, level, setup, frame, abort);
+}
+
+bool renderFixedClipped(const LevelView& level, const FrameSetup& setup, Framebuffer& frame,
+                        const std::atomic<bool>* abort) {
+  assert(level.depth == setup.depth);
+  assert(frame.width() == setup.width && frame.height() == setup.height);
+  return ClippedWalk(level, setup, frame, abort).run(setup.root);
+}
+
+}  // namespace octopoint
