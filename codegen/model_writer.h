@@ -1,8 +1,9 @@
 #pragma once
 // Writing a prepared model out: the `.oct` binary (renderer/model_format.h) and the C++ sources an
 // app compiles in (NAME.h, NAME.cpp with the palette and descriptor, NAME_depthD.cpp per level).
-// Files appear all together or not at all: each is written to a temporary beside its final name
-// and renamed only once every one of them has been written.
+// Files appear all together or not at all: all are written into a staging directory inside the
+// output directory and renamed into place only once every one has been written; a failed rename
+// undoes the earlier ones (codegen/atomic_output.cpp).
 
 #include <cstdint>
 #include <filesystem>
@@ -18,8 +19,24 @@ struct OutputFile {
   std::string contents;
 };
 
+// How the generated sources spell the bytes (docs/embedding.md has the compile-time figures).
+enum class EmitStyle {
+  kBytes,    // brace-initialised decimal bytes: {12,0,255,...}
+  kStrings,  // string literals of octal escapes and plain characters, in pieces of at most
+             // kMaxLiteralPiece characters (MSVC refuses longer pieces before concatenation)
+};
+inline constexpr std::size_t kMaxLiteralPiece = 16380;
+
+struct EmitOptions {
+  // Strings compile about 10x faster in a quarter of the memory (docs/embedding.md).
+  EmitStyle style = EmitStyle::kStrings;
+  // Everything in NAME.h + NAME.cpp, instead of one NAME_depthD.cpp per level as well: file names
+  // that do not depend on the depths, for build rules that must name their outputs in advance.
+  bool single_source = false;
+};
+
 std::vector<std::uint8_t> serializeModel(const PreparedModel& model);
-std::vector<OutputFile> emitSources(const PreparedModel& model);
+std::vector<OutputFile> emitSources(const PreparedModel& model, const EmitOptions& options = {});
 
 // Creates `directory` if needed and writes every file; throws PrepareError (and leaves nothing
 // behind: no temporaries, no partial set of files) when any step fails.

@@ -10,6 +10,7 @@
 
 #include "codegen/prepared_model.h"
 #include "codegen/scan_loader.h"
+#include "renderer/camera.h"
 
 namespace octopoint::prepare {
 
@@ -28,6 +29,14 @@ enum class ScanAxes {
   kYUp,    // x right, y up, z toward the viewer (OpenGL): turned 180 degrees about x
 };
 
+// Statistical outlier removal: a point is dropped when the mean distance to its k nearest
+// neighbours exceeds the mean of that distance over all points plus `stddev_factor` standard
+// deviations of it (the rule of PCL's StatisticalOutlierRemoval).
+struct OutlierRemoval {
+  int neighbours = 8;
+  double stddev_factor = 2.0;
+};
+
 struct PrepareOptions {
   std::string name;                  // the model's C++ identifier
   std::string source_description;    // for the generated comments
@@ -36,6 +45,11 @@ struct PrepareOptions {
   int palette_colours = 256;
   std::optional<CropBox> crop;  // in the scan's own axes, before they are turned
   ScanAxes axes = ScanAxes::kYDown;
+  std::optional<OutlierRemoval> outliers;  // after cropping
+  bool greyscale = false;                  // palette of greys (luma) instead of colours
+  // Visibility pruning: when not empty, a voxel is kept only if it wins the z-test at some pixel
+  // for at least one of these cameras (codegen/visibility.h). Each camera's size is its frame's.
+  std::vector<Camera> visibility_cameras;
 };
 
 // The points of `scan` inside `box` (inclusive), with their colours. Throws PrepareError naming

@@ -2,6 +2,7 @@
 // What the preparer has made of a scan, before it is written out as a `.oct` file or C++ sources.
 
 #include <array>
+#include <cstddef>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -14,6 +15,10 @@ struct PreparedLevel {
   int depth = 0;
   std::vector<std::uint8_t> nodes;   // depth-first child mask bytes (renderer/model_format.h)
   std::vector<std::uint8_t> leaves;  // one palette index per leaf, depth-first
+  // What visibility pruning did (when it ran): the level before it, and the time it took.
+  std::size_t voxels_before_pruning = 0;
+  std::size_t bytes_before_pruning = 0;  // node bytes + colour bytes
+  double pruning_seconds = 0;
 };
 
 struct PreparedModel {

@@ -1,5 +1,6 @@
 // The C++ sources of a prepared model: const arrays that an app compiles in, so drawing the model
-// needs no file I/O. Bytes are written as decimal initialiser lists (denser than hex).
+// needs no file I/O. Bytes are written either as decimal initialiser lists or as string literals
+// (EmitStyle; docs/embedding.md compares their compile time and memory).
 #include <sstream>
 
 #include "codegen/model_writer.h"
@@ -23,6 +24,56 @@ void appendByteList(std::ostringstream& out, const std::vector<std::uint8_t>& by
     column += item.size();
   }
   out << "\n";
+}
+
+// One literal piece per line, each far below kMaxLiteralPiece. Printable characters stand for
+// themselves; the rest are three-digit octal escapes (a fixed length, so a following digit is never
+// read as part of the escape). '?' is escaped too, so no trigraph can form for older compilers.
+void appendStringPieces(std::ostringstream& out, const std::vector<std::uint8_t>& bytes) {
+  static_assert(kLineWidth < kMaxLiteralPiece);
+  std::size_t column = 0;
+  out << "    \"";
+  for (std::uint8_t byte : bytes) {
+    char item[5];
+    const bool plain = byte >= 0x20 && byte < 0x7f && byte != '"' && byte != '\\' && byte != '?';
+    if (plain) {
+      item[0] = static_cast<char>(byte);
+      item[1] = '\0';
+    } else {
+      item[0] = '\\';
+      item[1] = static_cast<char>('0' + (byte >> 6));
+      item[2] = static_cast<char>('0' + ((byte >> 3) & 7));
+      item[3] = static_cast<char>('0' + (byte & 7));
+      item[4] = '\0';
+    }
+    const std::size_t size = plain ? 1 : 4;
+    if (column + size > kLineWidth) {
+      out << "\"\n    \"";
+      column = 0;
+    }
+    out << item;
+    column += size;
+  }
+  out << "\"\n";
+}
+
+// A string literal carries a terminating NUL, so its array is one byte longer than the data.
+std::size_t storedSize(std::size_t bytes, const EmitOptions& options) {
+  return options.style == EmitStyle::kStrings ? bytes + 1 : bytes;
+}
+
+void appendArray(std::ostringstream& out, const std::string& name, const std::vector<std::uint8_t>& bytes,
+                 const EmitOptions& options) {
+  out << "extern const std::uint8_t " << name << "[" << storedSize(bytes.size(), options) << "] =";
+  if (options.style == EmitStyle::kStrings) {
+    out << "\n";
+    appendStringPieces(out, bytes);
+    out << "    ;\n";
+  } else {
+    out << " {\n";
+    appendByteList(out, bytes);
+    out << "};\n";
+  }
 }
 
 std::string arrayName(const PreparedModel& model, const PreparedLevel& level, const char* part) {
@@ -49,15 +100,27 @@ std::string header(const PreparedModel& model) {
   return out.str();
 }
 
-std::string descriptorSource(const PreparedModel& model) {
+void appendLevelArrays(std::ostringstream& out, const PreparedModel& model, const PreparedLevel& level,
+                       const EmitOptions& options) {
+  appendArray(out, arrayName(model, level, "nodes"), level.nodes, options);
+  out << "\n";
+  appendArray(out, arrayName(model, level, "leaves"), level.leaves, options);
+}
+
+std::string descriptorSource(const PreparedModel& model, const EmitOptions& options) {
   std::ostringstream out;
   out << banner(model) << "#include \"" << model.name << ".h\"\n\n#include <cstdint>\n\n"
       << "namespace octopoint::models {\n\n";
   for (const PreparedLevel& level : model.levels) {
+    if (options.single_source) {
+      appendLevelArrays(out, model, level, options);
+      out << "\n";
+      continue;
+    }
     out << "extern const std::uint8_t " << arrayName(model, level, "nodes") << "["
-        << level.nodes.size() << "];\n"
+        << storedSize(level.nodes.size(), options) << "];\n"
         << "extern const std::uint8_t " << arrayName(model, level, "leaves") << "["
-        << level.leaves.size() << "];\n";
+        << storedSize(level.leaves.size(), options) << "];\n";
   }
   std::vector<std::uint8_t> palette_bytes(3 * format::kPaletteEntries, 0);
   for (std::size_t i = 0; i < model.palette.size(); ++i) {
@@ -79,27 +142,23 @@ std::string descriptorSource(const PreparedModel& model) {
   return out.str();
 }
 
-std::string levelSource(const PreparedModel& model, const PreparedLevel& level) {
+std::string levelSource(const PreparedModel& model, const PreparedLevel& level, const EmitOptions& options) {
   std::ostringstream out;
-  out << banner(model) << "#include <cstdint>\n\nnamespace octopoint::models {\n\n"
-      << "extern const std::uint8_t " << arrayName(model, level, "nodes") << "["
-      << level.nodes.size() << "] = {\n";
-  appendByteList(out, level.nodes);
-  out << "};\n\nextern const std::uint8_t " << arrayName(model, level, "leaves") << "["
-      << level.leaves.size() << "] = {\n";
-  appendByteList(out, level.leaves);
-  out << "};\n\n}  // namespace octopoint::models\n";
+  out << banner(model) << "#include <cstdint>\n\nnamespace octopoint::models {\n\n";
+  appendLevelArrays(out, model, level, options);
+  out << "\n}  // namespace octopoint::models\n";
   return out.str();
 }
 
 }  // namespace
 
-std::vector<OutputFile> emitSources(const PreparedModel& model) {
+std::vector<OutputFile> emitSources(const PreparedModel& model, const EmitOptions& options) {
   std::vector<OutputFile> files = {{model.name + ".h", header(model)},
-                                   {model.name + ".cpp", descriptorSource(model)}};
+                                   {model.name + ".cpp", descriptorSource(model, options)}};
+  if (options.single_source) return files;
   for (const PreparedLevel& level : model.levels) {
     files.push_back({model.name + "_depth" + std::to_string(level.depth) + ".cpp",
-                     levelSource(model, level)});
+                     levelSource(model, level, options)});
   }
   return files;
 }

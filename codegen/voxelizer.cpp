@@ -6,9 +6,10 @@
 namespace octopoint::prepare {
 namespace {
 
-// Grey levels of the depth shade: the nearest voxel gets kNearShade, the farthest kFarShade.
-constexpr int kNearShade = 235;
-constexpr int kFarShade = 60;
+// Grey levels of the depth shade: the nearest voxel gets kNearShade, the farthest kFarShade; the
+// nearest stays well darker than the light background octopoint-render draws on (236).
+constexpr int kNearShade = 190;
+constexpr int kFarShade = 40;
 
 void applyDepthShade(VoxelSet& voxels) {
   std::uint32_t near = UINT32_MAX;

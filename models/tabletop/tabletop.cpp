@@ -6,10 +6,10 @@
 
 namespace octopoint::models {
 
-extern const std::uint8_t tabletop_depth7_nodes[7443];
-extern const std::uint8_t tabletop_depth7_leaves[19747];
-extern const std::uint8_t tabletop_depth8_nodes[27190];
-extern const std::uint8_t tabletop_depth8_leaves[62502];
+extern const std::uint8_t tabletop_depth7_nodes[7444];
+extern const std::uint8_t tabletop_depth7_leaves[19748];
+extern const std::uint8_t tabletop_depth8_nodes[27191];
+extern const std::uint8_t tabletop_depth8_leaves[62503];
 
 namespace {
 

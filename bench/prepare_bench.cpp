@@ -1,0 +1,93 @@
+// The whole preparer, timed: a real 300k-point Kinect scan from its file (load, prepare at depths 7
+// and 8, palette, encode, emit the sources and the .oct image), and synthetic scans of 1M, 3M and
+// 10M points from memory (the same steps after loading) to show that time grows linearly.
+//   prepare_bench --benchmark_repetitions=3
+// The real scan defaults to data/scans/milk_cartoon_all_small_clorox.pcd (scripts/fetch-scans);
+// OCTOPOINT_BENCH_SCAN names another.
+#include <benchmark/benchmark.h>
+
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <map>
+#include <random>
+
+#include "codegen/model_writer.h"
+#include "codegen/prepare.h"
+#include "codegen/scan_loader.h"
+
+namespace {
+
+using namespace octopoint::prepare;
+
+std::size_t prepareAndEmit(const Scan& scan, const char* path) {
+  PrepareOptions options;
+  options.name = "bench";
+  const PreparedModel model = prepareModel(scan, path, options);
+  std::size_t bytes = serializeModel(model).size();
+  for (const OutputFile& file : emitSources(model)) bytes += file.contents.size();
+  return bytes;
+}
+
+void BM_PrepareRealScan(benchmark::State& state) {
+  const char* from_env = std::getenv("OCTOPOINT_BENCH_SCAN");
+  const std::string path = from_env ? from_env : OCTOPOINT_DEFAULT_BENCH_SCAN;
+  if (!std::filesystem::exists(path)) {
+    state.SkipWithError(("no scan at " + path + ": run scripts/fetch-scans").c_str());
+    return;
+  }
+  std::size_t points = 0;
+  for (auto _ : state) {
+    const Scan scan = loadScan(path);
+    points = scan.points_in_file;
+    benchmark::DoNotOptimize(prepareAndEmit(scan, path.c_str()));
+  }
+  state.counters["points"] = static_cast<double>(points);
+  state.counters["ns_per_point"] = benchmark::Counter(
+      static_cast<double>(points) * static_cast<double>(state.iterations()),
+      benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
+}
+BENCHMARK(BM_PrepareRealScan)->Unit(benchmark::kMillisecond)->MeasureProcessCPUTime()->UseRealTime();
+
+// A scanned head-sized blob: points on a bumpy sphere with range noise, coloured by position, like
+// an all-around scan of an object (every voxel of its shell is hit by many points).
+const Scan& syntheticScan(std::size_t count) {
+  static std::map<std::size_t, Scan> made;
+  Scan& scan = made[count];
+  if (!scan.positions.empty()) return scan;
+  std::mt19937 random(7);
+  std::normal_distribution<float> normal(0.0f, 1.0f);
+  scan.shading = ScanShading::kColour;
+  scan.positions.reserve(count);
+  scan.colours.reserve(count);
+  while (scan.positions.size() < count) {
+    const float x = normal(random), y = normal(random), z = normal(random);
+    const float length = std::sqrt(x * x + y * y + z * z);
+    if (length < 1e-6f) continue;
+    const float radius = 0.12f * (1.0f + 0.1f * std::sin(9 * x / length) * std::cos(7 * y / length)) +
+                         0.0005f * normal(random);
+    scan.positions.push_back({radius * x / length, radius * y / length, radius * z / length});
+    scan.colours.push_back({static_cast<std::uint8_t>(128 + 120 * x / length),
+                            static_cast<std::uint8_t>(128 + 120 * y / length),
+                            static_cast<std::uint8_t>(128 + 120 * z / length)});
+  }
+  scan.points_in_file = count;
+  return scan;
+}
+
+void BM_PrepareSyntheticScan(benchmark::State& state) {
+  const Scan& scan = syntheticScan(static_cast<std::size_t>(state.range(0)));
+  for (auto _ : state) benchmark::DoNotOptimize(prepareAndEmit(scan, "synthetic.pcd"));
+  state.SetComplexityN(state.range(0));
+  state.counters["ns_per_point"] = benchmark::Counter(
+      static_cast<double>(state.range(0)) * static_cast<double>(state.iterations()),
+      benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
+}
+BENCHMARK(BM_PrepareSyntheticScan)
+    ->Arg(1'000'000)->Arg(3'000'000)->Arg(10'000'000)
+    ->Unit(benchmark::kMillisecond)->MeasureProcessCPUTime()->UseRealTime()->Iterations(2)
+    ->Complexity(benchmark::oN);
+
+}  // namespace
+
+BENCHMARK_MAIN();

@@ -1,0 +1,222 @@
+#include "codegen/scene.h"
+
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <set>
+#include <sstream>
+
+#include "codegen/prepare_error.h"
+#include "renderer/camera.h"
+#include "renderer/model_format.h"
+
+namespace octopoint::prepare {
+namespace {
+
+using nlohmann::json;
+
+// The largest zoom the camera takes: Q16.16 with a 32-bit signed raw value.
+constexpr double kMaxZoom = 32767;
+constexpr int kMaxNeighbours = 100;
+
+class SceneReader {
+ public:
+  explicit SceneReader(std::string path) : path_(std::move(path)) {}
+
+  [[noreturn]] void fail(const std::string& key, const std::string& what) const {
+    throw PrepareError(path_ + ": key '" + key + "': " + what);
+  }
+
+  double number(const json& value, const std::string& key, double low, double high) const {
+    if (!value.is_number()) fail(key, "expected a number");
+    const double x = value.get<double>();
+    if (!(x >= low && x <= high)) {
+      fail(key, format("%g is outside %g..%g", x, low, high));
+    }
+    return x;
+  }
+
+  int integer(const json& value, const std::string& key, int low, int high) const {
+    if (!value.is_number_integer()) fail(key, "expected a whole number");
+    const auto x = value.get<long long>();
+    if (x < low || x > high) fail(key, format("%lld is outside %d..%d", x, low, high));
+    return static_cast<int>(x);
+  }
+
+  // [low, high] with low <= high, both inside [min, max].
+  Range range(const json& value, const std::string& key, double min, double max) const {
+    if (!value.is_array() || value.size() != 2) fail(key, "expected [low, high]");
+    Range r{number(value[0], key, min, max), number(value[1], key, min, max)};
+    if (r.low > r.high) fail(key, format("empty range: %g > %g", r.low, r.high));
+    return r;
+  }
+
+  // Fails when `object` has a key outside `known`.
+  void onlyKeys(const json& object, const std::string& where, std::initializer_list<const char*> known) const {
+    if (!object.is_object()) fail(where, "expected an object");
+    const std::set<std::string> allowed(known.begin(), known.end());
+    for (const auto& item : object.items()) {
+      if (!allowed.count(item.key())) {
+        fail(where.empty() ? item.key() : where + "." + item.key(), "unknown key");
+      }
+    }
+  }
+
+  template <typename... Args>
+  static std::string format(const char* pattern, Args... args) {
+    char text[160];
+    std::snprintf(text, sizeof text, pattern, args...);
+    return text;
+  }
+
+ private:
+  std::string path_;
+};
+
+std::array<float, 3> point(const SceneReader& reader, const json& value, const std::string& key) {
+  if (!value.is_array() || value.size() != 3) reader.fail(key, "expected [x, y, z]");
+  std::array<float, 3> p{};
+  for (std::size_t i = 0; i < 3; ++i) {
+    p[i] = static_cast<float>(reader.number(value[i], key, -kMaxAbsCoordinate, kMaxAbsCoordinate));
+  }
+  return p;
+}
+
+void readDepths(const SceneReader& reader, const json& value, Scene& scene) {
+  if (value.is_string()) {
+    if (value.get<std::string>() != "auto") reader.fail("depths", "expected \"auto\" or a list of depths");
+    scene.auto_depths = true;
+    return;
+  }
+  if (!value.is_array() || value.empty() || value.size() > static_cast<std::size_t>(format::kMaxLevels)) {
+    reader.fail("depths", "expected \"auto\" or a list of 1.." + std::to_string(format::kMaxLevels) + " depths");
+  }
+  scene.auto_depths = false;
+  for (const json& item : value) {
+    const int depth = reader.integer(item, "depths", 1, format::kMaxDepth);
+    if (!scene.depths.empty() && depth <= scene.depths.back()) reader.fail("depths", "depths must be strictly ascending");
+    scene.depths.push_back(depth);
+  }
+}
+
+void readViewpoints(const SceneReader& reader, const json& value, Scene& scene) {
+  if (!value.is_array() || value.empty()) reader.fail("viewpoints", "expected a non-empty list of {yaw, pitch[, roll]}");
+  for (const json& item : value) {
+    reader.onlyKeys(item, "viewpoints", {"yaw", "pitch", "roll"});
+    if (!item.contains("yaw") || !item.contains("pitch")) reader.fail("viewpoints", "each viewpoint needs yaw and pitch");
+    ViewAngles view;
+    view.yaw_deg = reader.number(item["yaw"], "viewpoints.yaw", -180, 180);
+    view.pitch_deg = reader.number(item["pitch"], "viewpoints.pitch", -90, 90);
+    if (item.contains("roll")) view.roll_deg = reader.number(item["roll"], "viewpoints.roll", -180, 180);
+    scene.viewpoints.push_back(view);
+  }
+}
+
+}  // namespace
+
+Scene parseScene(const std::string& text, const std::string& path) {
+  const SceneReader reader(path);
+  json root;
+  try {
+    root = json::parse(text);
+  } catch (const json::parse_error& error) {
+    // nlohmann's message reads "[json.exception.parse_error.101] parse error at line L, column C: ...".
+    std::string message = error.what();
+    const std::size_t cut = message.find("] ");
+    if (cut != std::string::npos) message = message.substr(cut + 2);
+    for (char& c : message) {
+      if (c == '\n' || c == '\r') c = ' ';
+    }
+    throw PrepareError(path + ": not valid JSON: " + message);
+  }
+  if (!root.is_object()) throw PrepareError(path + ": expected a JSON object at the top level");
+  reader.onlyKeys(root, "", {"yaw", "pitch", "roll", "viewpoints", "zoom", "framebuffer", "depths", "palette",
+                             "crop", "outliers", "axes", "scan_unit", "prune", "angle_step", "zoom_step"});
+
+  Scene scene;
+  if (root.contains("viewpoints")) {
+    if (root.contains("yaw") || root.contains("pitch")) {
+      reader.fail("viewpoints", "give either viewpoints or yaw and pitch ranges, not both");
+    }
+    readViewpoints(reader, root["viewpoints"], scene);
+  } else {
+    scene.yaw_deg = root.contains("yaw") ? reader.range(root["yaw"], "yaw", -180, 180) : Range{0, 0};
+    scene.pitch_deg = root.contains("pitch") ? reader.range(root["pitch"], "pitch", -90, 90) : Range{0, 0};
+  }
+  if (root.contains("roll")) scene.roll_deg = reader.number(root["roll"], "roll", -180, 180);
+  if (root.contains("zoom")) {
+    const json& zoom = root["zoom"];
+    scene.zoom = zoom.is_number() ? Range{zoom.get<double>(), zoom.get<double>()}
+                                  : reader.range(zoom, "zoom", -kMaxZoom, kMaxZoom);
+    if (!(scene.zoom.low > 0)) reader.fail("zoom", "zoom must be greater than 0");
+    if (!(scene.zoom.high <= kMaxZoom)) reader.fail("zoom", "zoom must be at most 32767");
+  }
+  if (root.contains("framebuffer")) {
+    const json& size = root["framebuffer"];
+    if (!size.is_array() || size.size() != 2) reader.fail("framebuffer", "expected [width, height]");
+    scene.width = reader.integer(size[0], "framebuffer", 1, kMaxViewportSide);
+    scene.height = reader.integer(size[1], "framebuffer", 1, kMaxViewportSide);
+  }
+  if (root.contains("depths")) readDepths(reader, root["depths"], scene);
+  if (root.contains("palette")) {
+    const json& palette = root["palette"];
+    reader.onlyKeys(palette, "palette", {"mode", "colours"});
+    if (palette.contains("mode")) {
+      const json& mode = palette["mode"];
+      if (mode == "greyscale") scene.greyscale = true;
+      else if (mode == "colour") scene.greyscale = false;
+      else reader.fail("palette.mode", "expected \"colour\" or \"greyscale\"");
+    }
+    if (palette.contains("colours")) scene.palette_colours = reader.integer(palette["colours"], "palette.colours", 1, 256);
+  }
+  if (root.contains("crop")) {
+    const json& crop = root["crop"];
+    reader.onlyKeys(crop, "crop", {"min", "max"});
+    if (!crop.contains("min") || !crop.contains("max")) reader.fail("crop", "expected {\"min\": [x, y, z], \"max\": [x, y, z]}");
+    CropBox box{point(reader, crop["min"], "crop.min"), point(reader, crop["max"], "crop.max")};
+    for (std::size_t axis = 0; axis < 3; ++axis) {
+      if (!(box.low[axis] < box.high[axis])) reader.fail("crop", "empty box: each min must be below its max");
+    }
+    scene.crop = box;
+  }
+  if (root.contains("outliers")) {
+    const json& outliers = root["outliers"];
+    reader.onlyKeys(outliers, "outliers", {"method", "neighbours", "stddev"});
+    if (!outliers.contains("method") || outliers["method"] != "statistical") {
+      reader.fail("outliers.method", "expected \"statistical\"");
+    }
+    OutlierRemoval removal;
+    if (outliers.contains("neighbours")) removal.neighbours = reader.integer(outliers["neighbours"], "outliers.neighbours", 1, kMaxNeighbours);
+    if (outliers.contains("stddev")) removal.stddev_factor = reader.number(outliers["stddev"], "outliers.stddev", 0, 100);
+    scene.outliers = removal;
+  }
+  if (root.contains("axes")) {
+    const json& axes = root["axes"];
+    if (axes == "y-down") scene.axes = ScanAxes::kYDown;
+    else if (axes == "y-up") scene.axes = ScanAxes::kYUp;
+    else reader.fail("axes", "expected \"y-down\" or \"y-up\"");
+  }
+  if (root.contains("scan_unit")) {
+    const json& unit = root["scan_unit"];
+    if (unit == "m") scene.metres_per_scan_unit = 1.0;
+    else if (unit == "cm") scene.metres_per_scan_unit = 0.01;
+    else if (unit == "mm") scene.metres_per_scan_unit = 0.001;
+    else reader.fail("scan_unit", "expected \"m\", \"cm\" or \"mm\"");
+  }
+  if (root.contains("prune")) {
+    if (!root["prune"].is_boolean()) reader.fail("prune", "expected true or false");
+    scene.prune = root["prune"].get<bool>();
+  }
+  if (root.contains("angle_step")) scene.angle_step_deg = reader.number(root["angle_step"], "angle_step", 0.01, 90);
+  if (root.contains("zoom_step")) scene.zoom_step = reader.number(root["zoom_step"], "zoom_step", 1.01, 16);
+  return scene;
+}
+
+Scene loadScene(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw PrepareError(path + ": cannot read the scene file");
+  std::ostringstream text;
+  text << in.rdbuf();
+  return parseScene(text.str(), path);
+}
+
+}  // namespace octopoint::prepare

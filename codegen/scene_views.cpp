@@ -1,0 +1,79 @@
+#include "codegen/scene_views.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+#include "renderer/model_format.h"
+
+namespace octopoint::prepare {
+namespace {
+
+// Evenly spaced values from low to high, both included, at most `max_step` apart.
+std::vector<double> evenSamples(double low, double high, double max_step) {
+  if (high <= low) return {low};
+  const int steps = std::max(1, static_cast<int>(std::ceil((high - low) / max_step - 1e-9)));
+  std::vector<double> values;
+  for (int i = 0; i <= steps; ++i) values.push_back(low + (high - low) * i / steps);
+  return values;
+}
+
+// Geometrically spaced values from low to high, both included, at most a factor `max_ratio` apart.
+std::vector<double> geometricSamples(double low, double high, double max_ratio) {
+  if (high <= low) return {low};
+  const int steps = std::max(1, static_cast<int>(std::ceil(std::log(high / low) / std::log(max_ratio) - 1e-9)));
+  std::vector<double> values;
+  for (int i = 0; i < steps; ++i) values.push_back(low * std::pow(high / low, static_cast<double>(i) / steps));
+  values.push_back(high);  // exactly the end of the range, whatever pow would round to
+  return values;
+}
+
+}  // namespace
+
+Camera cameraFor(double yaw_deg, double pitch_deg, double roll_deg, double zoom, int width, int height) {
+  Camera camera;
+  camera.yaw = Angle::fromMilliDegrees(std::llround(yaw_deg * 1000));
+  camera.pitch = Angle::fromMilliDegrees(std::llround(pitch_deg * 1000));
+  camera.roll = Angle::fromMilliDegrees(std::llround(roll_deg * 1000));
+  camera.zoom = Q16::fromRaw(static_cast<std::int32_t>(std::llround(zoom * Q16::kOneRaw)));
+  camera.width = width;
+  camera.height = height;
+  return camera;
+}
+
+std::vector<Camera> sceneCameras(const Scene& scene) {
+  std::vector<ViewAngles> angles = scene.viewpoints;
+  if (angles.empty()) {
+    for (double yaw : evenSamples(scene.yaw_deg->low, scene.yaw_deg->high, scene.angle_step_deg)) {
+      for (double pitch : evenSamples(scene.pitch_deg->low, scene.pitch_deg->high, scene.angle_step_deg)) {
+        angles.push_back({yaw, pitch, scene.roll_deg});
+      }
+    }
+  }
+  std::vector<Camera> cameras;
+  for (double zoom : geometricSamples(scene.zoom.low, scene.zoom.high, scene.zoom_step)) {
+    for (const ViewAngles& view : angles) {
+      cameras.push_back(cameraFor(view.yaw_deg, view.pitch_deg, view.roll_deg, zoom, scene.width, scene.height));
+    }
+  }
+  return cameras;
+}
+
+DepthChoice chooseDepths(const Scene& scene) {
+  const double cube_px = scene.zoom.high * std::min(scene.width, scene.height);
+  int depth = 1;
+  while (depth < format::kMaxDepth && cube_px > std::ldexp(1.0, depth)) ++depth;
+  DepthChoice choice;
+  if (depth > 1) choice.depths.push_back(depth - 1);
+  choice.depths.push_back(depth);
+  char reason[256];
+  std::snprintf(reason, sizeof reason,
+                "depths auto: %d, the coarsest where a voxel covers at most one pixel (the cube spans %.0f px at "
+                "zoom %g on %dx%d, a voxel %.2f px), and %d for moving views",
+                depth, cube_px, scene.zoom.high, scene.width, scene.height, cube_px / std::ldexp(1.0, depth),
+                depth - 1);
+  choice.reason = reason;
+  return choice;
+}
+
+}  // namespace octopoint::prepare
