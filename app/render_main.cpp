@@ -15,9 +15,11 @@
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 
+#include "app/contact_sheet.h"
 #include "models/registry.h"
 #include "renderer/camera.h"
 #include "renderer/framebuffer.h"
+#include "renderer/hole_fill.h"
 #include "renderer/model.h"
 #include "renderer/render.h"
 
@@ -41,6 +43,10 @@ nor --file it draws the default model embedded in this binary.
   --size WxH         framebuffer size in pixels, each 1..8192 (default 320x240)
   --depth N          which of the model's depths to draw (default: the finest)
   --variant NAME     decoder variant (default fixed_baseline; see --list)
+  --fill, --no-fill  scanline hole filling after decoding, as the paper does (default --fill;
+                     docs/holefill.md)
+  --sheet N          a contact sheet instead: N yaw angles (1..36) in columns, each depth of
+                     the model unfilled and filled in rows
   -o, --output FILE  the PNG to write (written whole or not at all)
   --list             list the embedded models and the decoder variants
   -h, --help         show this help
@@ -63,6 +69,8 @@ struct Options {
   std::optional<int> depth;
   Variant variant = Variant::kFixedBaseline;
   bool list = false;
+  bool fill = true;
+  int sheet = 0;  // yaw angles of the contact sheet; 0: a single view
 };
 
 double parseNumber(const std::string& flag, const std::string& text) {
@@ -130,6 +138,15 @@ Options parseOptions(int argc, char** argv) {
       const std::optional<Variant> variant = variantFromName(name);
       if (!variant) throw UsageError("--variant: unknown variant '" + name + "' (see --list)");
       options.variant = *variant;
+    } else if (arg == "--fill" || arg == "--no-fill") {
+      options.fill = arg == "--fill";
+    } else if (arg == "--sheet") {
+      const std::string text = value();
+      const double count = parseNumber(arg, text);
+      if (count < 1 || count > 36 || count != std::floor(count)) {
+        throw UsageError("--sheet: '" + text + "' is not a whole number in 1..36");
+      }
+      options.sheet = static_cast<int>(count);
     } else if (arg == "-o" || arg == "--output") {
       options.output = value();
     } else {
@@ -230,6 +247,19 @@ int run(int argc, char** argv) {
     throw UsageError("--depth: " + model_label + " has no depth " + std::to_string(*options.depth) +
                      " (it has" + depths + ")");
   }
+  if (options.sheet > 0) {
+    try {
+      writePng(options.output,
+               renderContactSheet(*model, options.camera, options.sheet, options.variant, kBackground));
+    } catch (const cv::Exception& error) {
+      throw UsageError(std::string("contact sheet: ") + error.what());
+    } catch (const std::runtime_error& error) {
+      throw UsageError(error.what());
+    }
+    std::printf("%s: contact sheet of %d views -> %s\n", model_label.c_str(), options.sheet,
+                options.output.c_str());
+    return 0;
+  }
   FrameSetup setup;
   const CameraError camera_error =
       buildFrameSetup(options.camera, level->depth, kDefaultFractionBits, &setup);
@@ -238,6 +268,7 @@ int run(int argc, char** argv) {
   Framebuffer frame(options.camera.width, options.camera.height);
   frame.clear();
   renderLevel(options.variant, *level, setup, frame);
+  if (options.fill) HoleFiller(frame.width()).fill(frame, bridgeDepthLimit(setup));
 
   cv::Mat rgb(options.camera.height, options.camera.width, CV_8UC3);
   resolveToRgb(frame, *model, kBackground, {rgb.data, rgb.total() * 3});

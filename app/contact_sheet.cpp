@@ -1,0 +1,58 @@
+#include "app/contact_sheet.h"
+
+#include <opencv2/imgproc.hpp>
+#include <stdexcept>
+#include <string>
+
+#include "renderer/framebuffer.h"
+#include "renderer/hole_fill.h"
+
+namespace octopoint {
+namespace {
+
+constexpr int kLabelHeight = 18;  // pixels above each row for its label
+
+void putLabel(cv::Mat& image, const std::string& text, cv::Point at) {
+  cv::putText(image, text, at, cv::FONT_HERSHEY_SIMPLEX, 0.45, {40, 40, 40}, 1, cv::LINE_AA);
+}
+
+}  // namespace
+
+cv::Mat renderContactSheet(const ModelView& model, const Camera& camera, int yaw_count,
+                           Variant variant, Rgb background) {
+  const int rows = model.levelCount() * 2;
+  const int row_height = camera.height + kLabelHeight;
+  cv::Mat sheet(rows * row_height, yaw_count * camera.width, CV_8UC3,
+                cv::Scalar(background.b, background.g, background.r));
+  Framebuffer frame(camera.width, camera.height);
+  HoleFiller filler(camera.width);
+  cv::Mat rgb(camera.height, camera.width, CV_8UC3), bgr;
+  for (int level_index = 0; level_index < model.levelCount(); ++level_index) {
+    const LevelView& level = model.level(level_index);
+    for (const bool fill : {false, true}) {
+      const int row = level_index * 2 + (fill ? 1 : 0);
+      putLabel(sheet,
+               "depth " + std::to_string(level.depth) + (fill ? ", hole filling" : ", no filling"),
+               {4, row * row_height + kLabelHeight - 5});
+      for (int column = 0; column < yaw_count; ++column) {
+        Camera view = camera;
+        view.yaw = camera.yaw +
+                   Angle::fromTurns16(std::int64_t{column} * Angle::kUnitsPerTurn / yaw_count);
+        FrameSetup setup;
+        const CameraError error = buildFrameSetup(view, level.depth, kDefaultFractionBits, &setup);
+        if (error != CameraError::kNone)
+          throw std::runtime_error(std::string("camera refused: ") + describe(error));
+        frame.clear();
+        renderLevel(variant, level, setup, frame);
+        if (fill) filler.fill(frame, bridgeDepthLimit(setup));
+        resolveToRgb(frame, model, background, {rgb.data, rgb.total() * 3});
+        cv::cvtColor(rgb, bgr, cv::COLOR_RGB2BGR);
+        bgr.copyTo(sheet(cv::Rect(column * camera.width, row * row_height + kLabelHeight,
+                                  camera.width, camera.height)));
+      }
+    }
+  }
+  return sheet;
+}
+
+}  // namespace octopoint

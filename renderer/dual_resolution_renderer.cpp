@@ -1,0 +1,300 @@
+#include "renderer/dual_resolution_renderer.h"
+
+#include <algorithm>
+#include <cassert>
+
+#include "renderer/camera.h"
+
+namespace octopoint {
+namespace {
+
+// Zoom steps of 5/4 (Q16.16), kept within what a 320..8192 pixel frame can address.
+constexpr std::int64_t kZoomStepNumerator = 5;
+constexpr std::int64_t kZoomStepDenominator = 4;
+constexpr std::int32_t kMinZoomRaw = Q16::kOneRaw / 8;
+constexpr std::int32_t kMaxZoomRaw = Q16::kOneRaw * 16;
+
+Q16 zoomStep(Q16 zoom, bool in) {
+  const std::int64_t raw =
+      in ? std::int64_t{zoom.raw()} * kZoomStepNumerator / kZoomStepDenominator
+         : std::int64_t{zoom.raw()} * kZoomStepDenominator / kZoomStepNumerator;
+  return Q16::fromRaw(
+      static_cast<std::int32_t>(std::clamp<std::int64_t>(raw, kMinZoomRaw, kMaxZoomRaw)));
+}
+
+// The turn of a key held for `held_us` at `degrees_per_second`, in 1/65536 turn (int64: a key held
+// for days at 360 degrees per second stays far below 2^63).
+Angle turnFor(std::int64_t held_us, std::int32_t degrees_per_second) {
+  const std::int64_t units =
+      held_us * degrees_per_second * Angle::kUnitsPerTurn / (360 * 1'000'000);
+  return Angle::fromTurns16(units);
+}
+
+ViewParameters moved(ViewParameters view, NavigationKey key, std::int64_t held_us,
+                     std::int32_t degrees_per_second) {
+  const Angle turn = turnFor(held_us, degrees_per_second);
+  switch (key) {
+    case NavigationKey::kYawLeft:
+      view.yaw = view.yaw - turn;
+      break;
+    case NavigationKey::kYawRight:
+      view.yaw = view.yaw + turn;
+      break;
+    case NavigationKey::kPitchUp:
+      view.pitch = view.pitch - turn;
+      break;
+    case NavigationKey::kPitchDown:
+      view.pitch = view.pitch + turn;
+      break;
+  }
+  return view;
+}
+
+std::int64_t steadyMicroseconds() { return SteadyClock().nowMicroseconds(); }
+
+}  // namespace
+
+std::uint32_t frameChecksum(const Framebuffer& frame) {
+  // Sum of position-weighted words: any changed, moved or swapped pixel changes it (mod 2^32).
+  const std::span<const std::int32_t> depths = frame.depths();
+  const std::span<const std::uint8_t> colours = frame.colourIndices();
+  std::uint32_t sum = 0;
+  for (std::size_t i = 0; i < depths.size(); ++i) {
+    const std::uint32_t word =
+        static_cast<std::uint32_t>(depths[i]) ^ (std::uint32_t{colours[i]} << 24);
+    sum += word * (2 * static_cast<std::uint32_t>(i) + 1);
+  }
+  return sum;
+}
+
+DualResolutionRenderer::DualResolutionRenderer(const LevelView& coarse, const LevelView& fine,
+                                               const Clock& clock, const InteractiveConfig& config,
+                                               RenderFunction render)
+    : coarse_level_(coarse),
+      fine_level_(fine),
+      clock_(clock),
+      config_(config),
+      render_(std::move(render)),
+      coarse_filler_(config.width),
+      fine_filler_(config.width),
+      base_view_(config.initial_view) {
+  status_.view_version = view_version_;
+  if (!render_) {
+    const Variant variant = config.variant;
+    render_ = [variant](const LevelView& level, const FrameSetup& setup, Framebuffer& frame,
+                        const std::atomic<bool>* abort) {
+      return renderLevel(variant, level, setup, frame, abort);
+    };
+  }
+  for (std::unique_ptr<Slot>* slot : {&coarse_back_, &fine_back_, &handed_over_, &front_}) {
+    *slot = std::make_unique<Slot>(Slot{Framebuffer(config.width, config.height), FrameInfo{}});
+  }
+  coarse_thread_ = std::thread([this] { coarseLoop(); });
+  fine_thread_ = std::thread([this] { fineLoop(); });
+}
+
+DualResolutionRenderer::~DualResolutionRenderer() {
+  {
+    const std::lock_guard lock(mutex_);
+    stopping_ = true;
+    fine_abort_.store(true, std::memory_order_relaxed);
+  }
+  coarse_wake_.notify_all();
+  fine_wake_.notify_all();
+  coarse_thread_.join();
+  fine_thread_.join();
+}
+
+bool DualResolutionRenderer::anyKeyHeld() const {
+  return std::any_of(held_.begin(), held_.end(), [](const HeldKey& key) { return key.held; });
+}
+
+ViewParameters DualResolutionRenderer::viewAt(std::int64_t time_us) const {
+  ViewParameters view = base_view_;
+  for (int k = 0; k < kNavigationKeyCount; ++k) {
+    const HeldKey& key = held_[static_cast<std::size_t>(k)];
+    if (key.held) {
+      view = moved(view, static_cast<NavigationKey>(k),
+                   std::max<std::int64_t>(0, time_us - key.since_us), config_.degrees_per_second);
+    }
+  }
+  return view;
+}
+
+void DualResolutionRenderer::changeView() {
+  status_.view_version = ++view_version_;
+  fine_due_ = true;
+  fine_requested_ = false;
+  fine_abort_.store(true, std::memory_order_relaxed);
+  status_changed_.notify_all();
+}
+
+void DualResolutionRenderer::handle(const ViewEvent& event) {
+  {
+    const std::lock_guard lock(mutex_);
+    switch (event.kind) {
+      case ViewEventKind::kPress: {
+        HeldKey& key = held_[static_cast<std::size_t>(event.key)];
+        if (key.held) return;  // keyboard auto-repeat
+        key = {true, event.time_us};
+        changeView();
+        break;
+      }
+      case ViewEventKind::kRelease: {
+        HeldKey& key = held_[static_cast<std::size_t>(event.key)];
+        if (!key.held) return;
+        base_view_ =
+            moved(base_view_, event.key, std::max<std::int64_t>(0, event.time_us - key.since_us),
+                  config_.degrees_per_second);
+        key.held = false;
+        changeView();
+        break;
+      }
+      case ViewEventKind::kTick:
+        if (!anyKeyHeld() && fine_due_ && fine_busy_version_ != view_version_) {
+          fine_requested_ = true;
+          fine_wake_.notify_one();
+        }
+        return;
+      case ViewEventKind::kZoomIn:
+      case ViewEventKind::kZoomOut:
+        base_view_.zoom = zoomStep(base_view_.zoom, event.kind == ViewEventKind::kZoomIn);
+        coarse_once_ = true;
+        changeView();
+        break;
+      case ViewEventKind::kToggleFill:
+        base_view_.fill = !base_view_.fill;
+        coarse_once_ = true;
+        changeView();
+        break;
+      case ViewEventKind::kReset:
+        base_view_ = config_.initial_view;
+        for (HeldKey& key : held_) key.since_us = event.time_us;  // held keys turn on from here
+        coarse_once_ = true;
+        changeView();
+        break;
+      case ViewEventKind::kQuit:
+        return;
+    }
+  }
+  coarse_wake_.notify_one();
+}
+
+bool DualResolutionRenderer::draw(Slot& slot, const LevelView& level, HoleFiller& filler,
+                                  const std::atomic<bool>* abort) {
+  const std::int64_t start_us = steadyMicroseconds();
+  Camera camera;
+  camera.yaw = slot.info.view.yaw;
+  camera.pitch = slot.info.view.pitch;
+  camera.zoom = slot.info.view.zoom;
+  camera.width = config_.width;
+  camera.height = config_.height;
+  FrameSetup setup;
+  slot.frame.clear();
+  // The zoom is clamped, so the camera always fits; a refused camera would leave the frame empty.
+  if (buildFrameSetup(camera, level.depth, kDefaultFractionBits, &setup) == CameraError::kNone) {
+    if (!render_(level, setup, slot.frame, abort)) return false;
+    if (slot.info.view.fill) filler.fill(slot.frame, bridgeDepthLimit(setup));
+  }
+  slot.info.checksum = frameChecksum(slot.frame);
+  slot.info.render_us = steadyMicroseconds() - start_us;
+  return true;
+}
+
+void DualResolutionRenderer::handOver(std::unique_ptr<Slot>& slot) {
+  const FrameInfo& latest = status_.latest;
+  const FrameInfo& info = slot->info;
+  const bool newer =
+      latest.generation == 0 || info.view_version > latest.view_version ||
+      (info.view_version == latest.view_version &&
+       !(latest.source == FrameSource::kFine && info.source == FrameSource::kCoarse));
+  if (!newer) {
+    ++status_.stale_dropped;
+    return;
+  }
+  slot->info.generation = ++generation_;
+  status_.latest = slot->info;
+  ++(info.source == FrameSource::kFine ? status_.fine_shown : status_.coarse_shown);
+  std::swap(slot, handed_over_);
+  handed_over_is_new_ = true;
+}
+
+void DualResolutionRenderer::coarseLoop() {
+  std::unique_lock lock(mutex_);
+  while (true) {
+    coarse_wake_.wait(lock, [this] { return stopping_ || anyKeyHeld() || coarse_once_; });
+    if (stopping_) return;
+    coarse_once_ = false;
+    Slot& slot = *coarse_back_;
+    slot.info = FrameInfo{};
+    slot.info.source = FrameSource::kCoarse;
+    slot.info.view_time_us = clock_.nowMicroseconds();
+    slot.info.view = viewAt(slot.info.view_time_us);
+    slot.info.view_version = view_version_;
+    status_.coarse_busy = true;
+    lock.unlock();
+    draw(slot, coarse_level_, coarse_filler_, nullptr);  // L is never aborted: its frames are short
+    lock.lock();
+    status_.coarse_busy = false;
+    handOver(coarse_back_);
+    status_changed_.notify_all();
+  }
+}
+
+void DualResolutionRenderer::fineLoop() {
+  std::unique_lock lock(mutex_);
+  while (true) {
+    fine_wake_.wait(lock, [this] { return stopping_ || fine_requested_; });
+    if (stopping_) return;
+    fine_requested_ = false;
+    fine_abort_.store(false, std::memory_order_relaxed);  // under the mutex: a press sets it again
+    Slot& slot = *fine_back_;
+    slot.info = FrameInfo{};
+    slot.info.source = FrameSource::kFine;
+    slot.info.view_time_us = clock_.nowMicroseconds();
+    slot.info.view = viewAt(slot.info.view_time_us);
+    slot.info.view_version = view_version_;
+    fine_busy_version_ = view_version_;
+    ++status_.fine_started;
+    status_.fine_busy = true;
+    status_changed_.notify_all();
+    lock.unlock();
+    const bool complete = draw(slot, fine_level_, fine_filler_, &fine_abort_);
+    lock.lock();
+    status_.fine_busy = false;
+    fine_busy_version_ = 0;
+    if (!complete) {
+      ++status_.fine_aborted;
+    } else if (slot.info.view_version != view_version_) {
+      ++status_.stale_dropped;  // finished just as the view changed
+    } else {
+      fine_due_ = false;
+      handOver(fine_back_);
+    }
+    status_changed_.notify_all();
+  }
+}
+
+const Framebuffer* DualResolutionRenderer::acquireLatest(FrameInfo* info) {
+  const std::lock_guard lock(mutex_);
+  if (handed_over_is_new_) {
+    std::swap(handed_over_, front_);
+    handed_over_is_new_ = false;
+  }
+  if (front_->info.generation == 0) return nullptr;
+  if (info != nullptr) *info = front_->info;
+  return &front_->frame;
+}
+
+RendererStatus DualResolutionRenderer::status() const {
+  const std::lock_guard lock(mutex_);
+  return status_;
+}
+
+bool DualResolutionRenderer::waitUntil(const std::function<bool(const RendererStatus&)>& predicate,
+                                       std::chrono::milliseconds timeout) const {
+  std::unique_lock lock(mutex_);
+  return status_changed_.wait_for(lock, timeout, [&] { return predicate(status_); });
+}
+
+}  // namespace octopoint

@@ -1,0 +1,170 @@
+#pragma once
+// Dual-resolution interactive rendering (DESIGN.md 5): two render threads behind one view.
+//
+// - L (coarse) renders the coarse level continuously while a navigation key is held, and once
+//   after a step change (zoom, reset, fill toggle). The view at a frame is a function of time
+//   (held keys turn it at `degrees_per_second` since their press), so the rotation does not
+//   depend on the frame rate.
+// - H (fine) renders the fine level at the first tick (ViewEvent kTick, every 100 ms) at which no
+//   key is held and the fine frame of the current view is not yet on screen. A key press aborts
+//   it through the render API's abort flag (polled by the decoder at tree level 3).
+// - Only complete frames are shown: each thread draws into its own back buffer and hands it over
+//   by swapping pointers under the mutex; the display swaps the newest hand-over into its front
+//   buffer. Four buffers, allocated at construction; no thread ever writes the front buffer.
+//   An aborted frame is never handed over, nor a frame older than the one on screen (a fine
+//   frame of a view that has changed since H started, or a coarse frame that ends after the fine
+//   frame of the same view).
+// - Idle threads sleep on condition variables; nothing polls.
+//
+// Threads: std::thread with a `stopping_` flag under the same mutex as the rest of the state,
+// not std::jthread/std::stop_token. The waits are condition-variable waits on that mutex anyway,
+// so the flag costs nothing, and std::stop_token's shared state relies on atomic read-modify-
+// write operations, which the device (ARMv5) does not have lock-free. The per-frame abort is a
+// std::atomic<bool> (the render API polls it without a lock) used with plain loads and stores
+// only, which are lock-free everywhere; it is reset by H itself under the mutex, so a stop_token
+// (which can be requested only once) would not fit it either.
+
+#include <array>
+#include <atomic>
+#include <chrono>
+#include <condition_variable>
+#include <cstdint>
+#include <functional>
+#include <memory>
+#include <mutex>
+#include <thread>
+
+#include "fixedpoint/angle.h"
+#include "fixedpoint/fixed.h"
+#include "renderer/clock.h"
+#include "renderer/framebuffer.h"
+#include "renderer/hole_fill.h"
+#include "renderer/model.h"
+#include "renderer/render.h"
+#include "renderer/view_events.h"
+
+namespace octopoint {
+
+struct ViewParameters {
+  Angle yaw;
+  Angle pitch;
+  Q16 zoom = Q16::fromRaw(Q16::kOneRaw);  // Q16.16
+  bool fill = true;
+  bool operator==(const ViewParameters&) const = default;
+};
+
+struct InteractiveConfig {
+  std::int32_t width = 320;
+  std::int32_t height = 240;
+  std::int32_t degrees_per_second = 90;
+  Variant variant = Variant::kFixedBaseline;
+  ViewParameters initial_view;
+};
+
+enum class FrameSource : std::uint8_t { kCoarse, kFine };  // drawn by L or by H
+
+struct FrameInfo {
+  FrameSource source = FrameSource::kCoarse;
+  std::uint64_t generation = 0;    // 1, 2, ... in the order frames were handed over
+  std::uint64_t view_version = 0;  // bumped by every event that changes the view
+  std::int64_t view_time_us = 0;   // the clock time the view was taken at
+  ViewParameters view;
+  std::int64_t render_us = 0;  // real time spent drawing (decode + fill), for the overlay
+  std::uint32_t checksum = 0;  // frameChecksum of the finished frame
+};
+
+struct RendererStatus {
+  std::uint64_t coarse_shown = 0;  // frames handed over, per thread
+  std::uint64_t fine_shown = 0;
+  std::uint64_t fine_started = 0;
+  std::uint64_t fine_aborted = 0;
+  std::uint64_t stale_dropped = 0;  // complete frames not handed over: a newer one was out
+  std::uint64_t view_version = 0;   // of the current view (the one the next fine frame shows)
+  bool coarse_busy = false;
+  bool fine_busy = false;
+  FrameInfo latest;  // the newest frame handed over (generation 0: none yet)
+};
+
+// Draws `level` with `setup` into a cleared frame; the default is renderLevel with the configured
+// variant. Tests inject a slower one.
+using RenderFunction = std::function<bool(const LevelView& level, const FrameSetup& setup,
+                                          Framebuffer& frame, const std::atomic<bool>* abort)>;
+
+// A cheap integrity stamp of a frame's colours and depths.
+std::uint32_t frameChecksum(const Framebuffer& frame);
+
+class DualResolutionRenderer {
+ public:
+  // The levels (of one validated model) and `clock` must outlive the renderer. Starts both
+  // threads; H draws the initial view at once.
+  DualResolutionRenderer(const LevelView& coarse, const LevelView& fine, const Clock& clock,
+                         const InteractiveConfig& config, RenderFunction render = {});
+  ~DualResolutionRenderer();  // stops both threads (aborting H) and joins them
+  DualResolutionRenderer(const DualResolutionRenderer&) = delete;
+  DualResolutionRenderer& operator=(const DualResolutionRenderer&) = delete;
+
+  // Applies one event from the event source (kQuit is the caller's business).
+  void handle(const ViewEvent& event);
+
+  // For the display, from one thread only: makes the newest complete frame the front buffer and
+  // returns it (nullptr before the first frame). The front buffer is not touched by anyone until
+  // the next call.
+  const Framebuffer* acquireLatest(FrameInfo* info);
+
+  RendererStatus status() const;
+  // Waits (sleeping) until `predicate(status())` holds or `timeout` passes; returns whether it
+  // held.
+  bool waitUntil(const std::function<bool(const RendererStatus&)>& predicate,
+                 std::chrono::milliseconds timeout) const;
+
+ private:
+  struct Slot {
+    Framebuffer frame;
+    FrameInfo info;
+  };
+  struct HeldKey {
+    bool held = false;
+    std::int64_t since_us = 0;
+  };
+
+  void coarseLoop();
+  void fineLoop();
+  bool anyKeyHeld() const;
+  ViewParameters viewAt(std::int64_t time_us) const;  // base view plus the held keys' motion
+  void changeView();  // a new view: aborts H, the fine frame is due again
+  // Draws a frame into `slot` (unlocked: the slot belongs to the calling thread).
+  bool draw(Slot& slot, const LevelView& level, HoleFiller& filler, const std::atomic<bool>* abort);
+  // Hands `slot` over unless a newer frame is out (locked).
+  void handOver(std::unique_ptr<Slot>& slot);
+
+  const LevelView& coarse_level_;
+  const LevelView& fine_level_;
+  const Clock& clock_;
+  const InteractiveConfig config_;
+  RenderFunction render_;
+  HoleFiller coarse_filler_;
+  HoleFiller fine_filler_;
+
+  mutable std::mutex mutex_;
+  std::condition_variable coarse_wake_;
+  std::condition_variable fine_wake_;
+  mutable std::condition_variable status_changed_;
+  bool stopping_ = false;
+  std::array<HeldKey, kNavigationKeyCount> held_{};
+  ViewParameters base_view_;
+  std::uint64_t view_version_ = 1;
+  bool coarse_once_ = false;    // one coarse frame after a step change
+  bool fine_due_ = true;        // the fine frame of the current view is not on screen yet
+  bool fine_requested_ = true;  // H should start (set by a tick)
+  std::uint64_t fine_busy_version_ = 0;
+  std::atomic<bool> fine_abort_{false};
+  std::unique_ptr<Slot> coarse_back_, fine_back_, handed_over_, front_;
+  bool handed_over_is_new_ = false;
+  std::uint64_t generation_ = 0;
+  RendererStatus status_;
+
+  std::thread coarse_thread_;
+  std::thread fine_thread_;
+};
+
+}  // namespace octopoint

@@ -1,0 +1,74 @@
+#pragma once
+// Scanline hole filling (DESIGN.md 6; pictures and exact definitions in docs/holefill.md).
+//
+// A point-based frame has background pixels between the projected voxel centres wherever a voxel
+// covers more than one pixel (zoom) or the grid is seen at an angle. After decoding, one top-to-
+// bottom scanline pass fills an empty pixel P = (x, y) when covered pixels bound it on both sides
+// (C = covered, . = empty, P = the pixel filled):
+//   type 1, horizontal single gap:  C P C in the row
+//   type 2, vertical single gap:    C above P and C below P
+//   type 3, diagonal single gap:    all four diagonal neighbours of P covered (an X around P)
+//   type 4, two-pixel gap:          C P . C or C . P C, in the row or in the column
+// The first type that matches, in the order 1, 2, 3, 4, fills P; for types 1 to 3 P takes the
+// colour and depth of the nearest bounding pixel (the front surface wins; ties: left, then up),
+// for type 4 those of the bounding pixel next to it. A pair bounds a gap only when its depths
+// differ by at most `max_bridge_depth` (a silhouette in front of a farther surface is never
+// bridged). Everything else, in particular the object's outer border (type 5: gaps open to the
+// background on one side, wider gaps, inner corners of the outline), stays empty.
+//
+// Every decision reads the frame as the decoder left it: a filled pixel never bounds another
+// gap, so one pass cannot creep across the background. The filler keeps the original depths of
+// the five rows around the current one in a padded ring; it allocates them once, at set-up.
+
+#include <cstdint>
+#include <vector>
+
+#include "renderer/camera.h"
+#include "renderer/framebuffer.h"
+
+namespace octopoint {
+
+// Neighbours across a gap may differ in depth by this many voxel edges (see bridgeDepthLimit).
+// Measured on the default model (yaw 30, zoom 2, depth 8; docs/holefill.md): the table, seen at a
+// grazing angle, recedes by up to about 3 voxel edges per pixel row, so a limit of 2 leaves 35% of
+// the holes inside the object open and 4 leaves 14%; the objects stand centimetres (tens of
+// voxels) in front of what lies behind them, far beyond 4.
+inline constexpr std::int32_t kBridgeDepthVoxelEdges = 4;
+
+// The depth limit for a frame set-up, in the z-buffer's Q(32-F).F screen-pixel units, F =
+// setup.fraction_bits: kBridgeDepthVoxelEdges times the edge of one voxel on screen, which is the
+// length of the rotated displacement between a leaf-parent's children 0 and 4 (exact integer
+// square root; the length does not depend on the rotation).
+std::int32_t bridgeDepthLimit(const FrameSetup& setup);
+
+struct HoleFillCounts {
+  std::int32_t type1 = 0, type2 = 0, type3 = 0, type4 = 0;
+  std::int32_t total() const { return type1 + type2 + type3 + type4; }
+};
+
+class HoleFiller {
+ public:
+  // Allocates the row history for frames `width` pixels wide.
+  explicit HoleFiller(std::int32_t width);
+
+  // Fills the gaps of types 1 to 4 in `frame` (which must be as wide as the filler) in place.
+  // `max_bridge_depth` is in the frame's z units (Q(32-F).F), >= 0. Never allocates.
+  HoleFillCounts fill(Framebuffer& frame, std::int32_t max_bridge_depth);
+
+ private:
+  static constexpr std::int32_t kRows = 5;  // rows y - 2 .. y + 2
+  static constexpr std::int32_t kPad =
+      2;  // empty columns either side: x - 2 .. x + 2 need no check
+  std::int32_t width_;
+  std::vector<std::int32_t> history_;  // kRows rows of width_ + 2 * kPad original depths
+};
+
+// For measuring (docs/holefill.md): the empty pixels of `frame` that lie inside the object as
+// `outline` shows it, where a pixel is inside when `outline` has covered pixels at most `window`
+// pixels from it on both sides in its row (left and right) or on both sides in its column (above
+// and below). With the unfilled frame as both arguments this counts the holes before filling;
+// with the unfilled frame as `outline` and the filled one as `frame`, the holes left after it.
+std::int32_t countEnclosedEmptyPixels(const Framebuffer& outline, const Framebuffer& frame,
+                                      std::int32_t window);
+
+}  // namespace octopoint

@@ -1,0 +1,266 @@
+// The dual-resolution render threads, driven headless by scripted timelines on a manual clock.
+// Real threads and the real decoder; "slow" renderers are the real one repeated or delayed.
+#include <gtest/gtest.h>
+#include <time.h>
+
+#include <chrono>
+#include <random>
+#include <thread>
+
+#include "models/registry.h"
+#include "renderer/dual_resolution_renderer.h"
+
+namespace octopoint {
+namespace {
+
+using std::chrono::milliseconds;
+constexpr milliseconds kPatience{20000};  // generous: ThreadSanitizer slows everything down
+
+std::int64_t processCpuMicroseconds() {
+  timespec now{};
+  clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &now);
+  return std::int64_t{now.tv_sec} * 1'000'000 + now.tv_nsec / 1000;
+}
+
+std::int64_t realMicroseconds() { return SteadyClock().nowMicroseconds(); }
+
+ViewEvent at(std::int64_t time_ms, ViewEventKind kind,
+             NavigationKey key = NavigationKey::kYawRight) {
+  return {time_ms * 1000, kind, key};
+}
+
+class DualResolution : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    ModelIssue issue;
+    model_ = ModelView::fromEmbedded(*models::defaultModel(), &issue);
+    ASSERT_TRUE(model_.has_value());
+    ASSERT_GE(model_->levelCount(), 2);
+    coarse_ = &model_->level(0);
+    fine_ = &model_->finestLevel();
+  }
+
+  // The real decoder, repeated until `budget` of real time has passed (each pass polls `abort`).
+  RenderFunction slowFine(milliseconds budget) const {
+    const LevelView* fine = fine_;
+    return [fine, budget](const LevelView& level, const FrameSetup& setup, Framebuffer& frame,
+                          const std::atomic<bool>* abort) {
+      const std::int64_t end_us = realMicroseconds() + budget.count() * 1000;
+      do {
+        if (!renderLevel(Variant::kFixedBaseline, level, setup, frame, abort)) return false;
+      } while (&level == fine && realMicroseconds() < end_us);
+      return true;
+    };
+  }
+
+  // Plays `timeline` up to (and including) the next event of `kind`.
+  static ViewEvent playThrough(ScriptedTimeline& timeline, DualResolutionRenderer& renderer,
+                               ViewEventKind kind) {
+    while (true) {
+      const ViewEvent event = *timeline.next(0);
+      renderer.handle(event);
+      if (event.kind == kind || event.kind == ViewEventKind::kQuit) return event;
+    }
+  }
+
+  Framebuffer directRender(const LevelView& level, const ViewParameters& view) const {
+    Camera camera;
+    camera.yaw = view.yaw;
+    camera.pitch = view.pitch;
+    camera.zoom = view.zoom;
+    FrameSetup setup;
+    EXPECT_EQ(buildFrameSetup(camera, level.depth, kDefaultFractionBits, &setup),
+              CameraError::kNone);
+    Framebuffer frame(camera.width, camera.height);
+    frame.clear();
+    renderLevel(Variant::kFixedBaseline, level, setup, frame);
+    if (view.fill) HoleFiller(frame.width()).fill(frame, bridgeDepthLimit(setup));
+    return frame;
+  }
+
+  std::optional<ModelView> model_;
+  const LevelView* coarse_ = nullptr;
+  const LevelView* fine_ = nullptr;
+  ManualClock clock_;
+};
+
+TEST_F(DualResolution, PressReleasePressWithin300MsAbortsTheFineFrameAndShowsACoarseOne) {
+  DualResolutionRenderer renderer(*coarse_, *fine_, clock_, InteractiveConfig{},
+                                  slowFine(milliseconds(250)));
+  ASSERT_TRUE(renderer.waitUntil(
+      [](const RendererStatus& s) { return s.fine_shown == 1 && !s.fine_busy; }, kPatience))
+      << "the initial fine frame";
+  ScriptedTimeline timeline({at(0, ViewEventKind::kPress), at(50, ViewEventKind::kRelease),
+                             at(150, ViewEventKind::kPress), at(200, ViewEventKind::kRelease)},
+                            400'000, clock_);
+  playThrough(timeline, renderer, ViewEventKind::kRelease);  // t = 50
+  playThrough(timeline, renderer, ViewEventKind::kTick);     // t = 100: H starts
+  ASSERT_TRUE(renderer.waitUntil(
+      [](const RendererStatus& s) { return s.fine_started == 2 && s.fine_busy; }, kPatience));
+  const ViewEvent press = playThrough(timeline, renderer, ViewEventKind::kPress);  // t = 150
+  ASSERT_EQ(press.time_us, 150'000);
+  const std::uint64_t pressed_version = renderer.status().view_version;
+  ASSERT_TRUE(renderer.waitUntil(
+      [&](const RendererStatus& s) {
+        return s.fine_aborted == 1 && s.latest.source == FrameSource::kCoarse &&
+               s.latest.view_version == pressed_version;
+      },
+      kPatience));
+  EXPECT_EQ(renderer.status().fine_shown, 1u) << "the aborted fine frame must never be shown";
+
+  // After the last release, the next tick brings the fine frame: complete, the same as drawn
+  // directly.
+  playThrough(timeline, renderer, ViewEventKind::kRelease);  // t = 200
+  playThrough(timeline, renderer, ViewEventKind::kTick);     // t = 200, after the release
+  ASSERT_TRUE(
+      renderer.waitUntil([](const RendererStatus& s) { return s.fine_shown == 2; }, kPatience));
+  FrameInfo info;
+  const Framebuffer* shown = renderer.acquireLatest(&info);
+  ASSERT_NE(shown, nullptr);
+  EXPECT_EQ(info.source, FrameSource::kFine);
+  // Held twice for 50 ms at 90 degrees per second; each hold rounds down to whole 1/65536 turns.
+  EXPECT_EQ(info.view.yaw,
+            Angle::fromTurns16(2 * (std::int64_t{50'000} * 90 * 65536 / 360'000'000)));
+  EXPECT_EQ(frameChecksum(*shown), frameChecksum(directRender(*fine_, info.view)));
+}
+
+TEST_F(DualResolution, AHeldKeyTurnsBySpeedTimesTimeWhateverTheFrameRate) {
+  constexpr int kSlowFrameMs = 50;
+  for (const int coarse_delay_ms : {0, kSlowFrameMs}) {
+    const RenderFunction delayed = [coarse_delay_ms](const LevelView& level,
+                                                     const FrameSetup& setup, Framebuffer& frame,
+                                                     const std::atomic<bool>* abort) {
+      std::this_thread::sleep_for(milliseconds(coarse_delay_ms));
+      return renderLevel(Variant::kFixedBaseline, level, setup, frame, abort);
+    };
+    InteractiveConfig config;
+    config.degrees_per_second = 90;
+    DualResolutionRenderer renderer(*coarse_, *fine_, clock_, config, delayed);
+    clock_.set(0);
+    renderer.handle(at(0, ViewEventKind::kPress));
+    // Advance the clock by 10 ms of script time per 3 ms of real time and watch the coarse frames.
+    const std::int64_t hold_start_us = realMicroseconds();
+    std::uint64_t last_generation = 0;
+    for (std::int64_t t_ms = 10; t_ms < 1000; t_ms += 10) {
+      clock_.set(t_ms * 1000);
+      std::this_thread::sleep_for(milliseconds(3));
+      FrameInfo info;
+      if (renderer.acquireLatest(&info) != nullptr && info.generation != last_generation &&
+          info.source == FrameSource::kCoarse) {
+        last_generation = info.generation;
+        EXPECT_EQ(info.view.yaw, Angle::fromTurns16(info.view_time_us * 90 * 65536 / 360'000'000))
+            << "a coarse frame shows the view of its own time";
+      }
+    }
+    const std::int64_t held_real_ms = (realMicroseconds() - hold_start_us) / 1000;
+    const std::uint64_t coarse_frames = renderer.status().coarse_shown;
+    clock_.set(1'000'000);
+    renderer.handle(at(1000, ViewEventKind::kRelease));
+    renderer.handle(at(1000, ViewEventKind::kTick));
+    const std::uint64_t version = renderer.status().view_version;
+    ASSERT_TRUE(renderer.waitUntil(
+        [&](const RendererStatus& s) {
+          return s.latest.source == FrameSource::kFine && s.latest.view_version == version;
+        },
+        kPatience));
+    EXPECT_EQ(renderer.status().latest.view.yaw, Angle::fromDegrees(90))
+        << "1 s at 90 degrees per second, with " << coarse_frames << " coarse frames in "
+        << held_real_ms << " ms of real time";
+    EXPECT_GE(coarse_frames, 1u);
+    if (coarse_delay_ms == kSlowFrameMs) {
+      EXPECT_LE(coarse_frames, static_cast<std::uint64_t>(held_real_ms / kSlowFrameMs + 2))
+          << "the slow renderer really was slow";
+    }
+  }
+}
+
+TEST_F(DualResolution, AfterReleaseTheFineFrameIsShownAndBothThreadsSleep) {
+  DualResolutionRenderer renderer(*coarse_, *fine_, clock_, InteractiveConfig{});
+  ScriptedTimeline timeline({at(0, ViewEventKind::kPress), at(120, ViewEventKind::kRelease)},
+                            300'000, clock_);
+  playThrough(timeline, renderer, ViewEventKind::kRelease);
+  playThrough(timeline, renderer, ViewEventKind::kTick);  // t = 200
+  const std::uint64_t version = renderer.status().view_version;
+  ASSERT_TRUE(renderer.waitUntil(
+      [&](const RendererStatus& s) {
+        return s.latest.source == FrameSource::kFine && s.latest.view_version == version &&
+               !s.fine_busy && !s.coarse_busy;
+      },
+      kPatience));
+  const std::uint64_t generation = renderer.status().latest.generation;
+  const std::int64_t cpu_before_us = processCpuMicroseconds();
+  std::this_thread::sleep_for(milliseconds(300));
+  const std::int64_t cpu_used_us = processCpuMicroseconds() - cpu_before_us;
+  EXPECT_LT(cpu_used_us, 30'000) << "idle threads must sleep, not spin";
+  EXPECT_EQ(renderer.status().latest.generation, generation) << "nothing was drawn while idle";
+}
+
+TEST_F(DualResolution, ThousandsOfRandomEventsLeaveNoDeadlockNoLostAndNoTornFrame) {
+  // Fine frames of at least 3 ms, so that presses often land while H is drawing.
+  DualResolutionRenderer renderer(*coarse_, *fine_, clock_, InteractiveConfig{},
+                                  slowFine(milliseconds(3)));
+  std::mt19937 random(12345);
+  constexpr ViewEventKind kKinds[] = {ViewEventKind::kPress,      ViewEventKind::kPress,
+                                      ViewEventKind::kRelease,    ViewEventKind::kRelease,
+                                      ViewEventKind::kTick,       ViewEventKind::kTick,
+                                      ViewEventKind::kZoomIn,     ViewEventKind::kZoomOut,
+                                      ViewEventKind::kToggleFill, ViewEventKind::kReset};
+  std::int64_t now_us = 0;
+  const Framebuffer* shown = nullptr;
+  FrameInfo shown_info;
+  std::uint64_t frames_checked = 0;
+  const auto checkFront = [&] {
+    if (renderer.status().latest.generation == shown_info.generation) return;  // nothing new
+    // The frame on screen is still exactly what its thread finished: nobody wrote into it. (It
+    // is ours only until the next acquireLatest, hence checked first.)
+    if (shown != nullptr) {
+      ASSERT_EQ(frameChecksum(*shown), shown_info.checksum) << "torn frame";
+    }
+    FrameInfo info;
+    const Framebuffer* latest = renderer.acquireLatest(&info);
+    ASSERT_NE(latest, nullptr);
+    // The new one is complete and newer.
+    ASSERT_EQ(frameChecksum(*latest), info.checksum) << "torn frame";
+    ASSERT_GT(info.generation, shown_info.generation);
+    ++frames_checked;
+    shown = latest;
+    shown_info = info;
+  };
+  for (int i = 0; i < 2000; ++i) {
+    now_us += std::uniform_int_distribution<std::int64_t>(0, 20'000)(random);
+    clock_.set(now_us);
+    ViewEvent event;
+    event.time_us = now_us;
+    event.kind =
+        kKinds[std::uniform_int_distribution<std::size_t>(0, std::size(kKinds) - 1)(random)];
+    event.key = static_cast<NavigationKey>(
+        std::uniform_int_distribution<int>(0, kNavigationKeyCount - 1)(random));
+    renderer.handle(event);
+    checkFront();
+    if (i % 16 == 0) std::this_thread::sleep_for(milliseconds(1));
+  }
+  for (int key = 0; key < kNavigationKeyCount; ++key) {
+    renderer.handle({now_us, ViewEventKind::kRelease, static_cast<NavigationKey>(key)});
+  }
+  renderer.handle({now_us + kTickPeriodMicroseconds, ViewEventKind::kTick});
+  const std::uint64_t version = renderer.status().view_version;
+  ASSERT_TRUE(renderer.waitUntil(
+      [&](const RendererStatus& s) {
+        return s.latest.source == FrameSource::kFine && s.latest.view_version == version &&
+               !s.fine_busy;
+      },
+      kPatience))
+      << "deadlock, or the final fine frame was lost";
+  checkFront();
+  ASSERT_NE(shown, nullptr);
+  EXPECT_EQ(frameChecksum(*shown), shown_info.checksum);
+  EXPECT_EQ(shown_info.source, FrameSource::kFine);
+  EXPECT_EQ(shown_info.view_version, version);
+  const RendererStatus status = renderer.status();
+  EXPECT_GE(status.fine_started, status.fine_shown + status.fine_aborted);
+  EXPECT_GT(status.fine_aborted, 0u);
+  EXPECT_GT(frames_checked, 2u);
+}
+
+}  // namespace
+}  // namespace octopoint
