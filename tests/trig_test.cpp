@@ -10,10 +10,11 @@
 #include <numbers>
 
 #include "fixedpoint/angle.h"
+#include "tests/exact_int128.h"
 
 namespace {
 
-__extension__ typedef __int128 Int128;  // tests only: x86-64 reference arithmetic
+using octopoint::test::Int128;  // exact reference arithmetic (tests/exact_int128.h)
 
 using octopoint::Angle;
 using octopoint::cosQ30;
@@ -40,7 +41,7 @@ long double exactCosineQ30(int64_t units) {
   return std::cos(radians) * kTwoTo30;
 }
 
-// round(value * 65536 / units_per_turn) with ties up, reduced to [0, 65535], via __int128.
+// round(value * 65536 / units_per_turn) with ties up, reduced to [0, 65535], via exact 128-bit arithmetic.
 int32_t referenceUnits(int64_t value, int64_t units_per_turn) {
   const Int128 scaled = Int128{value} * 65536 * 2 + units_per_turn;
   const Int128 divisor = 2 * Int128{units_per_turn};

@@ -1,0 +1,87 @@
+// A frame allocates nothing: once the model view, the framebuffer and the RGB buffer exist, a frame
+// (camera set-up, clear, decode with any variant, palette to RGB) makes no heap allocation. The
+// global operator new of this binary counts every allocation, so the test also sees allocations
+// hidden in the standard library. Runs on the host and on the device (qemu-arm).
+#include <gtest/gtest.h>
+
+#include <atomic>
+#include <cstdlib>
+#include <new>
+#include <vector>
+
+#include "models/registry.h"
+#include "renderer/render.h"
+
+namespace {
+
+std::atomic<long> g_allocation_count{0};
+
+void* countedAllocation(std::size_t size, std::size_t alignment) {
+  g_allocation_count.fetch_add(1, std::memory_order_relaxed);
+  if (size == 0) size = 1;
+  // aligned_alloc wants a multiple of the alignment; the default alignment suits malloc.
+  void* memory = alignment <= alignof(std::max_align_t)
+                     ? std::malloc(size)
+                     : std::aligned_alloc(alignment, (size + alignment - 1) / alignment * alignment);
+  if (memory == nullptr) throw std::bad_alloc();
+  return memory;
+}
+
+}  // namespace
+
+// The array and nothrow forms of libstdc++ forward to these two; every delete ends in free().
+void* operator new(std::size_t size) { return countedAllocation(size, alignof(std::max_align_t)); }
+void* operator new(std::size_t size, std::align_val_t alignment) {
+  return countedAllocation(size, static_cast<std::size_t>(alignment));
+}
+void operator delete(void* memory) noexcept { std::free(memory); }
+void operator delete(void* memory, std::size_t) noexcept { std::free(memory); }
+void operator delete(void* memory, std::align_val_t) noexcept { std::free(memory); }
+void operator delete(void* memory, std::size_t, std::align_val_t) noexcept { std::free(memory); }
+
+namespace octopoint {
+namespace {
+
+// Proves the counter is live in this binary (static linking included): a vector allocates.
+TEST(FrameAllocation, TheCounterSeesAnAllocation) {
+  const long before = g_allocation_count.load();
+  std::vector<int> values(1000, 7);
+  asm volatile("" : : "r"(values.data()) : "memory");  // the vector escapes: GCC may not elide it
+  const long after = g_allocation_count.load();
+  EXPECT_EQ(after - before, 1);
+}
+
+TEST(FrameAllocation, NoVariantAllocatesDuringAFrame) {
+  // Set-up: allowed to allocate.
+  ModelIssue issue;
+  const auto model = ModelView::fromEmbedded(*models::defaultModel(), &issue);
+  ASSERT_TRUE(model.has_value()) << describe(issue.error);
+  Camera camera;
+  Framebuffer frame(camera.width, camera.height);
+  std::vector<std::uint8_t> rgb(static_cast<std::size_t>(camera.width * camera.height) * 3);
+  FrameSetup setup;
+
+  for (const VariantInfo& info : allVariants()) {
+    for (int level_index = 0; level_index < model->levelCount(); ++level_index) {
+      const LevelView& level = model->level(level_index);
+      for (int yaw_degrees : {0, 30}) {
+        camera.yaw = Angle::fromDegrees(yaw_degrees);
+        // The frame: from the camera to the RGB image.
+        const long before = g_allocation_count.load();
+        const CameraError camera_error = buildFrameSetup(camera, level.depth, kDefaultFractionBits, &setup);
+        frame.clear();
+        const bool complete = renderLevel(info.variant, level, setup, frame);
+        resolveToRgb(frame, *model, Rgb{}, rgb);
+        const long allocations = g_allocation_count.load() - before;
+
+        ASSERT_EQ(camera_error, CameraError::kNone);
+        EXPECT_TRUE(complete) << info.name;
+        EXPECT_EQ(allocations, 0) << info.name << " at depth " << level.depth << ", yaw "
+                                  << yaw_degrees << " degrees";
+      }
+    }
+  }
+}
+
+}  // namespace
+}  // namespace octopoint
