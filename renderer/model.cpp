@@ -20,6 +20,21 @@ bool fail(ModelIssue* issue, ModelError error, std::size_t offset, int depth = 0
   return false;
 }
 
+// Bounds any tree of `depth` levels obeys, checked before walking so that a hostile size is
+// refused in constant time: every inner node (one byte) has at least one leaf below it and every
+// leaf has exactly `depth` inner ancestors, so depth <= nodes <= depth * leaves; a leaf parent
+// has at most 8 leaves, so leaves <= 8 * nodes; and a full tree caps both, (8^depth - 1) / 7
+// nodes and 8^depth leaves, which only bites below depth 11 (8^11 > 2^32).
+bool plausibleLevelSize(int depth, std::uint64_t nodes, std::uint64_t leaves) {
+  const auto levels = static_cast<std::uint64_t>(depth);
+  if (nodes < levels || nodes > levels * leaves || leaves > 8 * nodes) return false;
+  if (depth <= 10) {
+    const std::uint64_t full_leaves = std::uint64_t{1} << (3 * depth);
+    if (leaves > full_leaves || nodes > (full_leaves - 1) / 7) return false;
+  }
+  return true;
+}
+
 }  // namespace
 
 const char* describe(ModelError error) {
@@ -40,6 +55,7 @@ const char* describe(ModelError error) {
     case ModelError::kTrailingNodeBytes: return "trailing bytes after the node stream";
     case ModelError::kLeafCountMismatch: return "leaf count does not match the tree";
     case ModelError::kLeafOutsidePalette: return "leaf colour index outside the palette";
+    case ModelError::kImplausibleLevelSize: return "node bytes and leaf count impossible for the depth";
   }
   return "unknown error";
 }
@@ -48,6 +64,9 @@ ModelIssue validateLevelStream(const LevelView& level, int palette_count) {
   const int depth = level.depth;
   if (depth < 1 || depth > format::kMaxDepth) return {ModelError::kBadDepth, 0, depth};
   if (level.nodes.empty() || level.leaves.empty()) return {ModelError::kEmptyLevel, 0, depth};
+  if (!plausibleLevelSize(depth, level.nodes.size(), level.leaves.size())) {
+    return {ModelError::kImplausibleLevelSize, 0, depth};
+  }
 
   // Depth-first walk with an explicit stack of "children still to visit" per tree level, so a
   // hostile stream cannot drive the recursion; the stack is bounded by the depth.
@@ -136,6 +155,14 @@ std::optional<ModelView> ModelView::fromBytes(std::span<const std::uint8_t> byte
     return std::nullopt;
   }
   view.palette_rgb_ = p + format::kPaletteOffset;
+  // Entries past the count are reserved: zero, so that a later version may give them a meaning.
+  for (std::size_t at = format::kPaletteOffset + 3 * static_cast<std::size_t>(view.palette_count_);
+       at < format::kHeaderBytes; ++at) {
+    if (p[at] != 0) {
+      fail(issue, ModelError::kBadReservedField, at);
+      return std::nullopt;
+    }
+  }
 
   const std::size_t table_end =
       format::kHeaderBytes + format::kLevelRowBytes * static_cast<std::size_t>(view.level_count_);

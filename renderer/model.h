@@ -32,6 +32,7 @@ enum class ModelError : std::uint8_t {
   kTrailingNodeBytes,    // the tree ends before the declared node bytes do
   kLeafCountMismatch,    // the tree has a different number of leaves than declared
   kLeafOutsidePalette,   // a leaf names a colour past the palette count
+  kImplausibleLevelSize, // node bytes and leaf count no tree of that depth can have
 };
 
 // A short, stable English description of an error, for one-line messages.
@@ -83,6 +84,7 @@ class ModelView {
 };
 
 // Walks one level's stream without drawing and checks that it is exactly as long as declared:
+// first, in constant time, that the declared sizes are possible for the depth at all; then
 // no zero mask byte, no truncation, no trailing bytes, the leaf count as declared, every leaf
 // inside the palette. Exposed for tests and tools; ModelView runs it on every level.
 ModelIssue validateLevelStream(const LevelView& level, int palette_count);

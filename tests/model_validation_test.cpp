@@ -1,6 +1,8 @@
 // A model from a file is untrusted: every malformation gets its own error, found before drawing.
 #include <gtest/gtest.h>
 
+#include <set>
+#include <string>
 #include <vector>
 
 #include "renderer/model.h"
@@ -24,7 +26,9 @@ std::vector<std::uint8_t> modelImage(const std::vector<TestLevel>& levels, std::
   out.push_back(static_cast<std::uint8_t>(palette_count >> 8));
   out.push_back(0);
   out.push_back(0);
-  for (int i = 0; i < format::kPaletteEntries * 3; ++i) out.push_back(static_cast<std::uint8_t>(i));
+  for (int i = 0; i < format::kPaletteEntries * 3; ++i) {
+    out.push_back(i < 3 * palette_count ? static_cast<std::uint8_t>(i) : std::uint8_t{0});  // unused: 0
+  }
   auto put32 = [&](std::size_t value) {
     for (int shift = 0; shift < 32; shift += 8) out.push_back(static_cast<std::uint8_t>(value >> shift));
   };
@@ -98,6 +102,14 @@ TEST(ModelValidation, RejectsANonZeroReservedField) {
   EXPECT_EQ(errorOf(image), ModelError::kBadReservedField);
 }
 
+TEST(ModelValidation, RejectsAColourPastThePaletteCount) {
+  for (const std::size_t at : {format::kPaletteOffset + 6, format::kHeaderBytes - 1}) {
+    auto image = modelImage({kDepthOne}, 2);
+    image[at] = 1;
+    EXPECT_EQ(errorOf(image), ModelError::kBadReservedField) << "byte " << at;
+  }
+}
+
 TEST(ModelValidation, RejectsAnEmptyOrOversizedPalette) {
   EXPECT_EQ(errorOf(modelImage({kDepthOne}, 0)), ModelError::kBadPaletteCount);
   EXPECT_EQ(errorOf(modelImage({kDepthOne}, 257)), ModelError::kBadPaletteCount);
@@ -139,7 +151,30 @@ TEST(ModelValidation, RejectsAStreamThatNeedsMoreNodeBytesThanDeclared) {
 }
 
 TEST(ModelValidation, RejectsNodeBytesLeftOverWhenTheTreeIsComplete) {
-  EXPECT_EQ(errorOf(modelImage({{1, {0x81, 0x01}, {0, 1}}})), ModelError::kTrailingNodeBytes);
+  EXPECT_EQ(errorOf(modelImage({{2, {0x01, 0x81, 0x01}, {0, 1}}})), ModelError::kTrailingNodeBytes);
+}
+
+TEST(ModelValidation, RejectsSizesNoTreeOfThatDepthCanHave) {
+  // Depth 1 has exactly one node byte and at most 8 leaves.
+  EXPECT_EQ(errorOf(modelImage({{1, {0x81, 0x01}, {0, 1}}})), ModelError::kImplausibleLevelSize);
+  EXPECT_EQ(errorOf(modelImage({{1, {0xff}, std::vector<std::uint8_t>(9, 0)}})),
+            ModelError::kImplausibleLevelSize);
+  // Fewer node bytes than the depth: no path from the root down to a leaf.
+  EXPECT_EQ(errorOf(modelImage({{3, {0x01, 0x01}, {0}}})), ModelError::kImplausibleLevelSize);
+  // More node bytes than depth x leaves: some inner node would have no leaf below it.
+  EXPECT_EQ(errorOf(modelImage({{2, {0x01, 0x01, 0x01}, {0}}})), ModelError::kImplausibleLevelSize);
+  // More than 8 leaves per node byte.
+  EXPECT_EQ(errorOf(modelImage({{3, {0x01, 0x01, 0xff}, std::vector<std::uint8_t>(25, 0)}})),
+            ModelError::kImplausibleLevelSize);
+}
+
+TEST(ModelValidation, DescribesEveryErrorDifferently) {
+  std::set<std::string> seen;
+  for (int code = 0; code <= static_cast<int>(ModelError::kImplausibleLevelSize); ++code) {
+    const std::string text = describe(static_cast<ModelError>(code));
+    EXPECT_NE(text, "unknown error") << "code " << code;
+    EXPECT_TRUE(seen.insert(text).second) << "code " << code << " repeats '" << text << "'";
+  }
 }
 
 TEST(ModelValidation, RejectsALeafCountThatDisagreesWithTheTree) {
@@ -162,9 +197,9 @@ TEST(ModelValidation, ReportsWhereTheStreamWentWrong) {
 
 TEST(ModelValidation, ValidatesEmbeddedModelsTheSameWay) {
   const std::uint8_t palette[format::kPaletteEntries * 3] = {};
-  const std::uint8_t nodes[] = {0x81, 0x01};
+  const std::uint8_t nodes[] = {0x01, 0x81, 0x01};
   const std::uint8_t leaves[] = {0, 0};
-  const EmbeddedLevel level{1, nodes, 2, leaves, 2};
+  const EmbeddedLevel level{2, nodes, 3, leaves, 2};
   const EmbeddedModel model{"broken", 1000, 1, palette, 1, &level};
   ModelIssue issue;
   EXPECT_FALSE(ModelView::fromEmbedded(model, &issue).has_value());

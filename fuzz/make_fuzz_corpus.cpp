@@ -1,0 +1,97 @@
+// Writes the fuzzers' seed corpus into OUTDIR/model and OUTDIR/scan_header:
+//  - model: the default embedded model (a real Kinect scan, as octopoint-prepare wrote it) as a
+//    `.oct` file, and the same scan coarsened to every smaller depth, so the fuzzer starts from
+//    real trees of every size;
+//  - scan_header: one small, valid scan per PCD/PLY encoding the checker knows.
+// usage: make_fuzz_corpus OUTDIR
+#include <cstdio>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <vector>
+
+#include "fuzz/model_images.h"
+#include "models/registry.h"
+
+namespace {
+
+namespace fs = std::filesystem;
+
+void write(const fs::path& path, const void* data, std::size_t size) {
+  std::ofstream out(path, std::ios::binary | std::ios::trunc);
+  out.write(static_cast<const char*>(data), static_cast<std::streamsize>(size));
+  if (!out) throw std::runtime_error(path.string() + ": cannot write");
+}
+
+void write(const fs::path& path, const std::vector<std::uint8_t>& bytes) { write(path, bytes.data(), bytes.size()); }
+void write(const fs::path& path, const std::string& text) { write(path, text.data(), text.size()); }
+
+std::string binaryPoints(int count) {
+  std::string body;
+  for (int i = 0; i < count; ++i) {
+    const float xyz[3] = {0.1f * static_cast<float>(i), 0.5f, 1.0f + 0.01f * static_cast<float>(i)};
+    body.append(reinterpret_cast<const char*>(xyz), sizeof xyz);
+  }
+  return body;
+}
+
+void writeScanHeaders(const fs::path& dir) {
+  const std::string pcd_head =
+      "# .PCD v0.7 - Point Cloud Data file format\nVERSION 0.7\nFIELDS x y z rgb\nSIZE 4 4 4 4\n"
+      "TYPE F F F U\nCOUNT 1 1 1 1\nWIDTH 3\nHEIGHT 1\nVIEWPOINT 0 0 0 1 0 0 0\nPOINTS 3\n";
+  write(dir / "ascii.pcd", pcd_head + "DATA ascii\n0 0 1 4278190335\n0.5 0.25 1.5 4278255360\n1 1 2 4294901760\n");
+  const std::string xyz_head =
+      "VERSION 0.7\nFIELDS x y z\nSIZE 4 4 4\nTYPE F F F\nCOUNT 1 1 1\nWIDTH 4\nHEIGHT 1\n"
+      "VIEWPOINT 0 0 0 1 0 0 0\nPOINTS 4\n";
+  write(dir / "binary.pcd", xyz_head + "DATA binary\n" + binaryPoints(4));
+  // binary_compressed: u32 compressed size, u32 uncompressed size, then LZF data (here a single
+  // literal run: control byte = length - 1, up to 32 bytes per run).
+  std::string raw = binaryPoints(2);
+  std::string lzf;
+  for (std::size_t at = 0; at < raw.size(); at += 32) {
+    const std::string run = raw.substr(at, 32);
+    lzf += static_cast<char>(run.size() - 1);
+    lzf += run;
+  }
+  const std::uint32_t sizes[2] = {static_cast<std::uint32_t>(lzf.size()), static_cast<std::uint32_t>(raw.size())};
+  std::string compressed_head = xyz_head;
+  compressed_head.replace(compressed_head.find("WIDTH 4"), 7, "WIDTH 2");
+  compressed_head.replace(compressed_head.find("POINTS 4"), 8, "POINTS 2");
+  write(dir / "compressed.pcd",
+        compressed_head + "DATA binary_compressed\n" + std::string(reinterpret_cast<const char*>(sizes), 8) + lzf);
+  const std::string ply_head =
+      "ply\nformat ascii 1.0\ncomment made by make_fuzz_corpus\nelement vertex 3\nproperty float x\n"
+      "property float y\nproperty float z\nproperty uchar red\nproperty uchar green\nproperty uchar blue\n"
+      "element face 1\nproperty list uchar int vertex_indices\nend_header\n";
+  write(dir / "ascii.ply", ply_head + "0 0 1 255 0 0\n1 0 1 0 255 0\n0 1 1 0 0 255\n3 0 1 2\n");
+  write(dir / "binary.ply",
+        "ply\nformat binary_little_endian 1.0\nelement vertex 4\nproperty float x\nproperty float y\n"
+        "property float z\nend_header\n" + binaryPoints(4));
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  if (argc != 2) {
+    std::fprintf(stderr, "usage: make_fuzz_corpus OUTDIR\n");
+    return 1;
+  }
+  try {
+    const fs::path out = argv[1];
+    fs::create_directories(out / "model");
+    fs::create_directories(out / "scan_header");
+    const octopoint::EmbeddedModel& model = *octopoint::models::defaultModel();
+    write(out / "model" / (std::string(model.name) + ".oct"), octopoint::fuzzing::octImage(model));
+    const int finest = model.levels[model.level_count - 1].depth;
+    for (int depth = 1; depth < finest; ++depth) {
+      write(out / "model" / (std::string(model.name) + "_depth" + std::to_string(depth) + ".oct"),
+            octopoint::fuzzing::coarsenedOctImage(model, depth));
+    }
+    writeScanHeaders(out / "scan_header");
+  } catch (const std::exception& error) {
+    std::fprintf(stderr, "make_fuzz_corpus: %s\n", error.what());
+    return 1;
+  }
+  return 0;
+}

@@ -1,0 +1,75 @@
+#include "fuzz/model_images.h"
+
+#include <cassert>
+#include <cstddef>
+#include <span>
+
+#include "codegen/model_writer.h"
+#include "codegen/octree_encoder.h"
+
+namespace octopoint::fuzzing {
+namespace {
+
+prepare::PreparedModel preparedShell(const EmbeddedModel& model) {
+  prepare::PreparedModel prepared;
+  prepared.name = model.name;
+  prepared.cube_edge_um = model.cube_edge_um;
+  for (int i = 0; i < model.palette_count; ++i) {
+    const std::uint8_t* entry = model.palette_rgb + 3 * static_cast<std::size_t>(i);
+    prepared.palette.push_back({entry[0], entry[1], entry[2]});
+  }
+  return prepared;
+}
+
+// Lists the Morton key (the child indices from the root down, 3 bits a level) of every leaf of a
+// valid stream, in stream order, which is ascending key order.
+struct KeyLister {
+  const EmbeddedLevel& level;
+  std::size_t node_at = 0;
+  std::vector<std::uint64_t> keys;
+
+  void visit(int tree_level, std::uint64_t key) {
+    if (tree_level == level.depth) {
+      keys.push_back(key);
+      return;
+    }
+    const std::uint8_t mask = level.nodes[node_at++];
+    for (int k = 0; k < 8; ++k) {
+      if (mask & (1u << k)) visit(tree_level + 1, key << 3 | static_cast<std::uint64_t>(k));
+    }
+  }
+};
+
+}  // namespace
+
+std::vector<std::uint8_t> octImage(const EmbeddedModel& model) {
+  prepare::PreparedModel prepared = preparedShell(model);
+  for (int i = 0; i < model.level_count; ++i) {
+    const EmbeddedLevel& level = model.levels[i];
+    prepared.levels.push_back({level.depth, {level.nodes, level.nodes + level.node_bytes},
+                               {level.leaves, level.leaves + level.leaf_count}});
+  }
+  return prepare::serializeModel(prepared);
+}
+
+std::vector<std::uint8_t> coarsenedOctImage(const EmbeddedModel& model, int depth) {
+  const EmbeddedLevel& finest = model.levels[model.level_count - 1];
+  assert(depth >= 1 && depth <= finest.depth);
+  KeyLister lister{finest, 0, {}};
+  lister.visit(0, 0);
+  const int shift = 3 * (finest.depth - depth);
+  prepare::PreparedLevel coarse{depth, {}, {}};
+  std::vector<std::uint64_t> coarse_keys;
+  for (std::size_t i = 0; i < lister.keys.size(); ++i) {
+    const std::uint64_t key = lister.keys[i] >> shift;
+    if (!coarse_keys.empty() && coarse_keys.back() == key) continue;
+    coarse_keys.push_back(key);
+    coarse.leaves.push_back(finest.leaves[i]);
+  }
+  coarse.nodes = prepare::encodeOctree(coarse_keys, depth);
+  prepare::PreparedModel prepared = preparedShell(model);
+  prepared.levels.push_back(std::move(coarse));
+  return prepare::serializeModel(prepared);
+}
+
+}  // namespace octopoint::fuzzing
