@@ -16,6 +16,7 @@
 #include <opencv2/imgproc.hpp>
 
 #include "app/contact_sheet.h"
+#include "app/model_source.h"
 #include "models/registry.h"
 #include "renderer/camera.h"
 #include "renderer/framebuffer.h"
@@ -55,7 +56,6 @@ On any error prints one line on stderr and exits with status 1, writing nothing.
 )";
 
 constexpr Rgb kBackground{236, 236, 240};  // light grey: range scans are often dark
-constexpr std::uintmax_t kMaxModelFileBytes = std::uintmax_t{1} << 30;
 
 struct UsageError : std::runtime_error {
   using std::runtime_error::runtime_error;
@@ -176,25 +176,6 @@ void listModels() {
   }
 }
 
-std::vector<std::uint8_t> readModelFile(const std::string& path) {
-  std::error_code error;
-  if (!fs::is_regular_file(path, error)) throw UsageError(path + ": no such model file");
-  const std::uintmax_t size = fs::file_size(path, error);
-  if (error || size > kMaxModelFileBytes) throw UsageError(path + ": unreadable or larger than 1 GiB");
-  std::vector<std::uint8_t> bytes(static_cast<std::size_t>(size));
-  std::ifstream in(path, std::ios::binary);
-  in.read(reinterpret_cast<char*>(bytes.data()), static_cast<std::streamsize>(bytes.size()));
-  if (!in) throw UsageError(path + ": read failed");
-  return bytes;
-}
-
-std::string issueText(const ModelIssue& issue) {
-  std::string text = describe(issue.error);
-  if (issue.depth != 0) text += " (depth " + std::to_string(issue.depth) + " stream";
-  else text += " (file";
-  return text + ", byte " + std::to_string(issue.offset) + ")";
-}
-
 void writePng(const std::string& path, const cv::Mat& image) {
   // Written to a temporary beside the target and renamed, so a failure leaves no partial PNG.
   const fs::path target(path);
@@ -220,23 +201,9 @@ int run(int argc, char** argv) {
     listModels();
     return 0;
   }
-  std::vector<std::uint8_t> file_bytes;
-  std::optional<ModelView> model;
-  ModelIssue issue;
-  std::string model_label;
-  if (!options.model_file.empty()) {
-    file_bytes = readModelFile(options.model_file);
-    model = ModelView::fromBytes(file_bytes, &issue);
-    if (!model) throw UsageError(options.model_file + ": " + issueText(issue));
-    model_label = options.model_file;
-  } else {
-    const EmbeddedModel* embedded = options.model_name.empty() ? models::defaultModel()
-                                                               : models::findModel(options.model_name);
-    if (embedded == nullptr) throw UsageError("--model: no embedded model '" + options.model_name + "' (see --list)");
-    model = ModelView::fromEmbedded(*embedded, &issue);
-    if (!model) throw UsageError(std::string(embedded->name) + ": " + issueText(issue));
-    model_label = embedded->name;
-  }
+  const std::unique_ptr<LoadedModel> loaded = loadModel(options.model_name, options.model_file);
+  const ModelView* model = &*loaded->view;
+  const std::string& model_label = loaded->label;
   const LevelView* level = options.depth ? model->levelOfDepth(*options.depth) : &model->finestLevel();
   if (level == nullptr) {
     std::string depths;
@@ -286,6 +253,8 @@ int main(int argc, char** argv) {
   try {
     return run(argc, argv);
   } catch (const UsageError& error) {
+    std::fprintf(stderr, "octopoint-render: %s\n", error.what());
+  } catch (const ModelLoadError& error) {
     std::fprintf(stderr, "octopoint-render: %s\n", error.what());
   } catch (const std::exception& error) {
     std::fprintf(stderr, "octopoint-render: unexpected error: %s\n", error.what());

@@ -17,7 +17,7 @@
 #include <utility>
 #include <vector>
 
-#include "models/registry.h"
+#include "app/model_source.h"
 #include "renderer/dual_resolution_renderer.h"
 #include "renderer/model.h"
 
@@ -49,7 +49,6 @@ released 250 ms after its last repeat (so a tap turns the view by about 22 degre
 constexpr const char* kWindow = "octopoint-view";
 constexpr Rgb kBackground{236, 236, 240};
 constexpr std::int64_t kReleaseAfterUs = 250'000;
-constexpr std::uintmax_t kMaxModelFileBytes = std::uintmax_t{1} << 30;
 
 struct UsageError : std::runtime_error {
   using std::runtime_error::runtime_error;
@@ -101,19 +100,6 @@ Options parseOptions(int argc, char** argv) {
     throw UsageError("give --model or --file, not both");
   }
   return options;
-}
-
-std::vector<std::uint8_t> readModelFile(const std::string& path) {
-  std::error_code error;
-  if (!fs::is_regular_file(path, error)) throw UsageError(path + ": no such model file");
-  const std::uintmax_t size = fs::file_size(path, error);
-  if (error || size > kMaxModelFileBytes)
-    throw UsageError(path + ": unreadable or larger than 1 GiB");
-  std::vector<std::uint8_t> bytes(static_cast<std::size_t>(size));
-  std::ifstream in(path, std::ios::binary);
-  in.read(reinterpret_cast<char*>(bytes.data()), static_cast<std::streamsize>(bytes.size()));
-  if (!in) throw UsageError(path + ": read failed");
-  return bytes;
 }
 
 // The window's keyboard as an event source: arrow keys are navigation keys (held while their
@@ -242,22 +228,8 @@ void savePng(const cv::Mat& bgr, int number) {
 
 int run(int argc, char** argv) {
   const Options options = parseOptions(argc, argv);
-  std::vector<std::uint8_t> file_bytes;
-  std::optional<ModelView> model;
-  ModelIssue issue;
-  if (!options.model_file.empty()) {
-    file_bytes = readModelFile(options.model_file);
-    model = ModelView::fromBytes(file_bytes, &issue);
-    if (!model)
-      throw UsageError(options.model_file + ": not a valid model (" + describe(issue.error) + ")");
-  } else {
-    const EmbeddedModel* embedded =
-        options.model_name.empty() ? models::defaultModel() : models::findModel(options.model_name);
-    if (embedded == nullptr)
-      throw UsageError("--model: no embedded model '" + options.model_name + "'");
-    model = ModelView::fromEmbedded(*embedded, &issue);
-    if (!model) throw UsageError(std::string(embedded->name) + ": " + describe(issue.error));
-  }
+  const std::unique_ptr<LoadedModel> loaded = loadModel(options.model_name, options.model_file);
+  const ModelView* model = &*loaded->view;
 
   InteractiveConfig config;
   config.width = options.width;
@@ -307,6 +279,8 @@ int main(int argc, char** argv) {
   try {
     return run(argc, argv);
   } catch (const UsageError& error) {
+    std::fprintf(stderr, "octopoint-view: %s\n", error.what());
+  } catch (const ModelLoadError& error) {
     std::fprintf(stderr, "octopoint-view: %s\n", error.what());
   } catch (const std::exception& error) {
     std::fprintf(stderr, "octopoint-view: unexpected error: %s\n", error.what());
