@@ -10,13 +10,12 @@
 //   there is no call per leaf parent: calls were a third of the instructions per point.
 // - Hierarchical clipping as in fixed_clipped: subtrees proven on screen plot without bounds
 //   checks, subtrees proven off screen are stepped over without computing positions.
-#include <algorithm>
 #include <bit>
 #include <cassert>
-#include <cstdlib>
 
 #include "renderer/decode_algorithms.h"
 #include "renderer/render.h"
+#include "renderer/subtree_clip.h"
 
 namespace octopoint {
 namespace {
@@ -30,24 +29,14 @@ struct FastFrame {
   std::uint8_t* colour;
   std::int32_t* depth;
   std::int32_t width;
+  std::int32_t height;
   int fraction_bits;
   int levels;  // the model depth
   const OffsetTable<std::int32_t>* offsets;
-  std::int64_t x_end, y_end;  // screen edges in Q(32-F).F (64 bits: width << 24 overflows 32)
-  std::array<std::int64_t, format::kMaxDepth> reach_x, reach_y;  // see ClippedWalk
+  SubtreeClip clip;
   const std::atomic<bool>* abort;
   mutable bool aborted;
 };
-
-enum class Clip { kOutside, kInside, kStraddling };
-
-Clip classify(const FastFrame& f, int level, const Vec3& c) {
-  const std::int64_t rx = f.reach_x[static_cast<std::size_t>(level)];
-  const std::int64_t ry = f.reach_y[static_cast<std::size_t>(level)];
-  if (c.x + rx < 0 || c.x - rx >= f.x_end || c.y + ry < 0 || c.y - ry >= f.y_end) return Clip::kOutside;
-  if (c.x - rx >= 0 && c.x + rx < f.x_end && c.y - ry >= 0 && c.y + ry < f.y_end) return Clip::kInside;
-  return Clip::kStraddling;
-}
 
 // A leaf parent at tree level `level` centred at `c` plots its children.
 template <bool kChecked>
@@ -55,7 +44,7 @@ Cursor plotChildren(const FastFrame& f, int level, Vec3 c, Cursor at) {
   std::uint8_t* const colour = f.colour;
   std::int32_t* const depth = f.depth;
   const std::int32_t width = f.width;
-  const std::int32_t height = static_cast<std::int32_t>(f.y_end >> f.fraction_bits);
+  const std::int32_t height = f.height;
   const int shift = f.fraction_bits;
   const auto& offsets = (*f.offsets)[static_cast<std::size_t>(level)];
   const std::uint8_t* leaf = at.leaf;
@@ -87,7 +76,7 @@ Cursor visit(const FastFrame& f, int level, Vec3 c, Cursor at) {
     if (f.aborted) return at;
   }
   if constexpr (kChecked) {
-    switch (classify(f, level, c)) {
+    switch (f.clip.classify(level, c)) {
       case Clip::kOutside:
         skipSubtree(at.node, at.leaf, level, f.levels);
         return at;
@@ -116,20 +105,8 @@ bool renderFixedFast(const LevelView& level, const FrameSetup& setup, Framebuffe
                      const std::atomic<bool>* abort) {
   assert(level.depth == setup.depth);
   assert(frame.width() == setup.width && frame.height() == setup.height);
-  FastFrame f{frame.colourIndexData(), frame.depthData(), frame.width(), setup.fraction_bits,
-              setup.depth, &setup.child_offset, std::int64_t{setup.width} << setup.fraction_bits,
-              std::int64_t{setup.height} << setup.fraction_bits, {}, {}, abort, false};
-  std::int64_t x = 0, y = 0;
-  for (int l = setup.depth - 1; l >= 0; --l) {
-    for (const Vec3& d : setup.child_offset[static_cast<std::size_t>(l)]) {
-      f.reach_x[static_cast<std::size_t>(l)] = std::max<std::int64_t>(f.reach_x[static_cast<std::size_t>(l)], std::llabs(d.x));
-      f.reach_y[static_cast<std::size_t>(l)] = std::max<std::int64_t>(f.reach_y[static_cast<std::size_t>(l)], std::llabs(d.y));
-    }
-    x += f.reach_x[static_cast<std::size_t>(l)];
-    y += f.reach_y[static_cast<std::size_t>(l)];
-    f.reach_x[static_cast<std::size_t>(l)] = x;
-    f.reach_y[static_cast<std::size_t>(l)] = y;
-  }
+  FastFrame f{frame.colourIndexData(), frame.depthData(), frame.width(), frame.height(),
+              setup.fraction_bits, setup.depth, &setup.child_offset, SubtreeClip(setup), abort, false};
   visit<true>(f, 0, setup.root, {level.nodes.data(), level.leaves.data()});
   return !f.aborted;
 }

@@ -1,11 +1,10 @@
 // The integer decoders: each draws bit-identical frames (tests/render_variants_test.cpp).
-#include <algorithm>
 #include <cassert>
-#include <cstdlib>
 
 #include "renderer/decode_algorithms.h"
 #include "renderer/framebuffer_plot.h"
 #include "renderer/render.h"
+#include "renderer/subtree_clip.h"
 
 namespace octopoint {
 namespace {
@@ -25,10 +24,9 @@ bool renderWith(Visit visit, const LevelView& level, const FrameSetup& setup, Fr
   return !state.aborted;
 }
 
-// Hierarchical clipping: a subtree whose leaves all lie on screen is drawn without per-pixel bounds
-// checks; one whose leaves all lie off screen is skipped (its bytes still have to be stepped over);
-// only subtrees straddling an edge test each leaf. Leaves of a level-l node lie within
-// reach[l] = sum over l' >= l of max_k |offset[l'][k]| of its centre, per axis (Q(32-F).F).
+// Hierarchical clipping (renderer/subtree_clip.h): a subtree whose leaves all lie on screen is
+// drawn without per-pixel bounds checks; one whose leaves all lie off screen is skipped (its bytes
+// still have to be stepped over); only subtrees straddling an edge test each leaf.
 class ClippedWalk {
  public:
   ClippedWalk(const LevelView& level, const FrameSetup& setup, Framebuffer& frame,
@@ -36,20 +34,7 @@ class ClippedWalk {
       : checked_{level.nodes.data(), level.leaves.data(), setup.child_offset, setup.depth,
                  CheckedPlot(frame, setup), abort},
         inside_plot_(frame, setup),
-        x_end_(std::int64_t{setup.width} << setup.fraction_bits),
-        y_end_(std::int64_t{setup.height} << setup.fraction_bits) {
-    std::int64_t x = 0, y = 0;
-    for (int l = setup.depth - 1; l >= 0; --l) {
-      for (const Vec3& d : setup.child_offset[static_cast<std::size_t>(l)]) {
-        reach_x_[static_cast<std::size_t>(l)] = std::max<std::int64_t>(reach_x_[static_cast<std::size_t>(l)], std::llabs(d.x));
-        reach_y_[static_cast<std::size_t>(l)] = std::max<std::int64_t>(reach_y_[static_cast<std::size_t>(l)], std::llabs(d.y));
-      }
-      x += reach_x_[static_cast<std::size_t>(l)];
-      y += reach_y_[static_cast<std::size_t>(l)];
-      reach_x_[static_cast<std::size_t>(l)] = x;
-      reach_y_[static_cast<std::size_t>(l)] = y;
-    }
-  }
+        clip_(setup) {}
 
   bool run(const Vec3& root) {
     visit(0, root);
@@ -59,13 +44,12 @@ class ClippedWalk {
  private:
   void visit(int level, const Vec3& centre) {
     if (checked_.stopsAt(level)) return;
-    const std::int64_t rx = reach_x_[static_cast<std::size_t>(level)];
-    const std::int64_t ry = reach_y_[static_cast<std::size_t>(level)];
-    if (centre.x + rx < 0 || centre.x - rx >= x_end_ || centre.y + ry < 0 || centre.y - ry >= y_end_) {
+    const Clip clip = clip_.classify(level, centre);
+    if (clip == Clip::kOutside) {
       skipSubtree(checked_.node, checked_.leaf, level, checked_.depth);
       return;
     }
-    if (centre.x - rx >= 0 && centre.x + rx < x_end_ && centre.y - ry >= 0 && centre.y + ry < y_end_) {
+    if (clip == Clip::kInside) {
       DecodeState<std::int32_t, InsidePlot> inside{checked_.node, checked_.leaf, checked_.offsets,
                                                    checked_.depth, inside_plot_, checked_.abort,
                                                    checked_.aborted};
@@ -88,10 +72,7 @@ class ClippedWalk {
 
   DecodeState<std::int32_t, CheckedPlot> checked_;
   InsidePlot inside_plot_;
-  std::int64_t x_end_;  // the screen's right edge, Q(32-F).F: width << F does not fit 32 bits at F = 24
-  std::int64_t y_end_;
-  std::array<std::int64_t, format::kMaxDepth> reach_x_{};
-  std::array<std::int64_t, format::kMaxDepth> reach_y_{};
+  SubtreeClip clip_;
 };
 
 }  // namespace
