@@ -86,6 +86,12 @@ std::vector<int> parseList(const std::string& flag, const std::string& text) {
   return values;
 }
 
+int parseWholeDegrees(const std::string& flag, const std::string& text) {
+  const std::vector<int> values = parseList(flag, text);
+  if (values.size() != 1) throw prepare::PrepareError(flag + ": '" + text + "' is not one whole number of degrees");
+  return values.front();
+}
+
 Options parseOptions(int argc, char** argv) {
   Options options;
   for (int i = 1; i < argc; ++i) {
@@ -102,16 +108,11 @@ Options parseOptions(int argc, char** argv) {
       if (axes != "y-down" && axes != "y-up") throw prepare::PrepareError("--axes: '" + axes + "' is not y-down or y-up");
       options.prepare.axes = axes == "y-up" ? prepare::ScanAxes::kYUp : prepare::ScanAxes::kYDown;
     } else if (arg == "--crop") {
-      float v[6];
-      const std::string text = value();
-      if (std::sscanf(text.c_str(), "%f,%f,%f,%f,%f,%f", &v[0], &v[1], &v[2], &v[3], &v[4], &v[5]) != 6) {
-        throw prepare::PrepareError("--crop: '" + text + "' is not X0,Y0,Z0,X1,Y1,Z1");
-      }
-      options.prepare.crop = prepare::CropBox{{v[0], v[1], v[2]}, {v[3], v[4], v[5]}};
+      options.prepare.crop = prepare::parseCropBox(arg, value());
     } else if (arg == "--yaw") {
-      options.camera.yaw = Angle::fromDegrees(parseList(arg, value()).at(0));
+      options.camera.yaw = Angle::fromDegrees(parseWholeDegrees(arg, value()));
     } else if (arg == "--pitch") {
-      options.camera.pitch = Angle::fromDegrees(parseList(arg, value()).at(0));
+      options.camera.pitch = Angle::fromDegrees(parseWholeDegrees(arg, value()));
     } else if (arg == "--size") {
       const std::string text = value();
       if (std::sscanf(text.c_str(), "%dx%d", &options.camera.width, &options.camera.height) != 2) {
@@ -131,15 +132,6 @@ Options parseOptions(int argc, char** argv) {
   }
   if (options.scan.empty()) throw prepare::PrepareError("no SCAN given (see --help)");
   return options;
-}
-
-// The scan's points as the model sees them: cropped, then turned into the model's axes.
-prepare::Scan modelPoints(const prepare::Scan& scan, const Options& options) {
-  prepare::Scan points = options.prepare.crop ? prepare::cropScan(scan, *options.prepare.crop, options.scan) : scan;
-  if (options.prepare.axes == prepare::ScanAxes::kYUp) {
-    for (auto& p : points.positions) p = {p[0], -p[1], -p[2]};
-  }
-  return points;
 }
 
 cv::Mat toImage(const Framebuffer& frame, const ModelView& model) {
@@ -221,7 +213,8 @@ void writePlot(const std::vector<Row>& rows, const fs::path& path) {
 
 int run(int argc, char** argv) {
   const Options options = parseOptions(argc, argv);
-  const prepare::Scan points = modelPoints(prepare::loadScan(options.scan), options);
+  const prepare::Scan scan = prepare::loadScan(options.scan);
+  const prepare::Scan points = prepare::modelPoints(scan, options.scan, options.prepare);
   const prepare::CubeFit fit = prepare::fitCube(points.positions, options.scan);
   cv::Mat object_mask;
   const cv::Mat reference = tradeoff::renderReference(points, fit, options.camera, kBackground, &object_mask);
@@ -231,11 +224,11 @@ int run(int argc, char** argv) {
 
   std::vector<Row> rows;
   for (int depth : options.depths) {
-    prepare::PrepareOptions prepare_options;
+    prepare::PrepareOptions prepare_options = options.prepare;
     prepare_options.name = "tradeoff";
     prepare_options.depths = {depth};
     const std::vector<std::uint8_t> image =
-        prepare::serializeModel(prepare::prepareModel(points, options.scan, prepare_options));
+        prepare::serializeModel(prepare::prepareModel(scan, options.scan, prepare_options));
     ModelIssue issue;
     const std::optional<ModelView> model = ModelView::fromBytes(image, &issue);
     if (!model) throw prepare::PrepareError(std::string("model at depth ") + std::to_string(depth) + ": " + describe(issue.error));

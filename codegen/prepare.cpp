@@ -2,6 +2,7 @@
 
 #include <chrono>
 #include <cmath>
+#include <cstdio>
 #include <limits>
 
 #include "codegen/cube_fit.h"
@@ -59,13 +60,33 @@ Scan cropScan(const Scan& scan, const CropBox& box, const std::string& scan_path
   return cropped;
 }
 
-PreparedModel prepareModel(const Scan& full_scan, const std::string& scan_path, const PrepareOptions& options) {
+CropBox parseCropBox(const std::string& flag, const std::string& text) {
+  float v[6];
+  char tail = 0;
+  if (std::sscanf(text.c_str(), "%f,%f,%f,%f,%f,%f%c", &v[0], &v[1], &v[2], &v[3], &v[4], &v[5], &tail) != 6) {
+    throw PrepareError(flag + ": '" + text + "' is not six comma-separated numbers X0,Y0,Z0,X1,Y1,Z1");
+  }
+  const CropBox box{{v[0], v[1], v[2]}, {v[3], v[4], v[5]}};
+  for (std::size_t axis = 0; axis < 3; ++axis) {
+    if (!(box.low[axis] < box.high[axis])) {
+      throw PrepareError(flag + ": '" + text + "' is empty: each lower bound must be below its upper bound");
+    }
+  }
+  return box;
+}
+
+Scan modelPoints(const Scan& full_scan, const std::string& scan_path, const PrepareOptions& options) {
   if (full_scan.positions.empty()) throw PrepareError(scan_path + ": the scan has no usable points");
   Scan scan = options.crop ? cropScan(full_scan, *options.crop, scan_path) : full_scan;
   if (options.outliers) scan = removeOutliers(scan, *options.outliers, scan_path);
   if (options.axes == ScanAxes::kYUp) {
     for (auto& p : scan.positions) p = {p[0], -p[1], -p[2]};  // a rotation: no mirror image
   }
+  return scan;
+}
+
+PreparedModel prepareModel(const Scan& full_scan, const std::string& scan_path, const PrepareOptions& options) {
+  const Scan scan = modelPoints(full_scan, scan_path, options);
   const CubeFit fit = fitCube(scan.positions, scan_path);
 
   std::vector<VoxelSet> voxel_sets;

@@ -56,6 +56,14 @@ struct PrepareOptions {
 // `scan_path` when none is left.
 Scan cropScan(const Scan& scan, const CropBox& box, const std::string& scan_path);
 
+// Parses "X0,Y0,Z0,X1,Y1,Z1" (scan units); throws PrepareError naming `flag` when it is not six
+// numbers or the box is empty.
+CropBox parseCropBox(const std::string& flag, const std::string& text);
+
+// The points a model is made of: the scan cropped, cleaned of outliers and turned into the model's
+// axes, as `options` asks. prepareModel voxelizes exactly these; a reference render draws them.
+Scan modelPoints(const Scan& scan, const std::string& scan_path, const PrepareOptions& options);
+
 // Throws PrepareError (naming `scan_path`) when the scan cannot be made into a model.
 PreparedModel prepareModel(const Scan& scan, const std::string& scan_path, const PrepareOptions& options);
 

@@ -100,21 +100,6 @@ std::vector<int> parseDepths(const std::string& text) {
   return depths;
 }
 
-octopoint::prepare::CropBox parseCrop(const std::string& text) {
-  float v[6];
-  char tail = 0;
-  if (std::sscanf(text.c_str(), "%f,%f,%f,%f,%f,%f%c", &v[0], &v[1], &v[2], &v[3], &v[4], &v[5], &tail) != 6) {
-    throw PrepareError("--crop: '" + text + "' is not six comma-separated numbers X0,Y0,Z0,X1,Y1,Z1");
-  }
-  octopoint::prepare::CropBox box{{v[0], v[1], v[2]}, {v[3], v[4], v[5]}};
-  for (std::size_t axis = 0; axis < 3; ++axis) {
-    if (!(box.low[axis] < box.high[axis])) {
-      throw PrepareError("--crop: '" + text + "' is empty: each lower bound must be below its upper bound");
-    }
-  }
-  return box;
-}
-
 // Returns nullopt when --help was asked for.
 std::optional<Arguments> parseArguments(int argc, char** argv) {
   Arguments args;
@@ -154,7 +139,7 @@ std::optional<Arguments> parseArguments(int argc, char** argv) {
       args.options.palette_colours = static_cast<int>(colours);
     } else if (arg == "--crop") {
       args.model_flags.push_back(arg);
-      args.options.crop = parseCrop(value());
+      args.options.crop = octopoint::prepare::parseCropBox("--crop", value());
     } else if (arg == "--axes") {
       args.model_flags.push_back(arg);
       const std::string axes = value();
