@@ -179,8 +179,13 @@ void listModels() {
 void writePng(const std::string& path, const cv::Mat& image) {
   // Written to a temporary beside the target and renamed, so a failure leaves no partial PNG.
   const fs::path target(path);
-  const fs::path temporary =
-      target.parent_path() / ("." + target.filename().string() + ".tmp-" + std::to_string(::getpid()) + ".png");
+  // Built by appending: GCC 12 warns falsely (-Wrestrict) on a chain of string + here.
+  std::string temporary_name = ".";
+  temporary_name += target.filename().string();
+  temporary_name += ".tmp-";
+  temporary_name += std::to_string(::getpid());
+  temporary_name += ".png";
+  const fs::path temporary = target.parent_path() / temporary_name;
   bool written = false;
   try {
     written = cv::imwrite(temporary.string(), image);

@@ -40,7 +40,7 @@ void fillDefaultModel(benchmark::State& state, int depth, int yaw_degrees, int z
     frame = unfilled;  // same size: copies, no allocation
     state.ResumeTiming();
     counts = filler.fill(frame, limit);
-    benchmark::DoNotOptimize(frame.colourIndices().data());
+    benchmark::DoNotOptimize(frame.pixels().data());
     benchmark::ClobberMemory();
   }
   state.counters["holes_before"] = countEnclosedEmptyPixels(unfilled, unfilled, kInsideWindow);

@@ -72,7 +72,7 @@ void renderScan(benchmark::State& state, const Scan* scan, Variant variant, int 
   for (auto _ : state) {
     frame.clear();
     renderLevel(variant, *level, setup, frame);
-    benchmark::DoNotOptimize(frame.colourIndices().data());
+    benchmark::DoNotOptimize(frame.pixels().data());
     benchmark::ClobberMemory();
   }
   setPointCounters(state, level->leaves.size());

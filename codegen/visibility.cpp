@@ -2,55 +2,72 @@
 
 #include <algorithm>
 #include <atomic>
+#include <limits>
 #include <thread>
 
 #include "codegen/octree_encoder.h"
 #include "codegen/prepare_error.h"
 #include "codegen/progress.h"
 #include "renderer/decode_baseline.h"
-#include "renderer/framebuffer.h"
 
 namespace octopoint::prepare {
 namespace {
 
 constexpr unsigned kMaxThreads = 2;
 
-// Per pixel the nearest leaf so far, by the rule of Framebuffer::plot: off-screen leaves are
-// dropped, a leaf wins only when strictly nearer, so among equals the first in stream order wins.
-struct NearestLeafSink {
-  std::vector<std::int32_t>& depth;
-  std::vector<std::uint32_t>& leaf;
+// Which leaves can show in a view, by the rule of Framebuffer::plot: off-screen leaves are
+// dropped, and a pixel shows the smallest word of depth key and palette index. Colours are not
+// known yet here (the palette comes after pruning), so every leaf at a pixel's nearest depth key
+// is kept: whichever of them the palette makes win, it is still there.
+struct LeafPixel {
   std::int32_t width;
   std::int32_t height;
-  int fraction_bits;
-  std::uint32_t next_leaf = 0;
+  const FrameSetup& setup;
 
-  void operator()(std::int32_t x, std::int32_t y, std::int32_t z, std::uint8_t) {
-    const std::uint32_t index = next_leaf++;
-    const std::int32_t px = x >> fraction_bits;
-    const std::int32_t py = y >> fraction_bits;
+  // The pixel a leaf at (x, y) (Q(32-F).F) lands on, or -1 off screen.
+  std::ptrdiff_t operator()(std::int32_t x, std::int32_t y) const {
+    const std::int32_t px = x >> setup.fraction_bits;
+    const std::int32_t py = y >> setup.fraction_bits;
     if (static_cast<std::uint32_t>(px) >= static_cast<std::uint32_t>(width) ||
         static_cast<std::uint32_t>(py) >= static_cast<std::uint32_t>(height)) {
-      return;
+      return -1;
     }
-    const std::size_t at = static_cast<std::size_t>(py) * static_cast<std::size_t>(width) + static_cast<std::size_t>(px);
-    if (z < depth[at]) {
-      depth[at] = z;
-      leaf[at] = index;
-    }
+    return static_cast<std::ptrdiff_t>(py) * width + px;
   }
 };
 
-void markWinners(const LevelView& level, const FrameSetup& setup, std::vector<std::int32_t>& depth,
-                 std::vector<std::uint32_t>& leaf, std::vector<std::uint8_t>& visible) {
-  const std::size_t pixels = static_cast<std::size_t>(setup.width) * static_cast<std::size_t>(setup.height);
-  depth.assign(pixels, Framebuffer::kEmptyDepth);
-  leaf.resize(pixels);
-  NearestLeafSink sink{depth, leaf, setup.width, setup.height, setup.fraction_bits};
-  BaselineWalk<NearestLeafSink>(level, setup, sink).run();
-  for (std::size_t i = 0; i < pixels; ++i) {
-    if (depth[i] != Framebuffer::kEmptyDepth) visible[leaf[i]] = 1;
+// First pass: the nearest depth key per pixel.
+struct NearestKeySink {
+  LeafPixel pixel_of;
+  std::vector<std::uint32_t>& nearest;
+  void operator()(std::int32_t x, std::int32_t y, std::int32_t z, std::uint8_t) {
+    const std::ptrdiff_t at = pixel_of(x, y);
+    if (at >= 0) nearest[static_cast<std::size_t>(at)] = std::min(nearest[static_cast<std::size_t>(at)], pixel_of.setup.depthKey(z));
   }
+};
+
+// Second pass: every leaf at its pixel's nearest key is visible.
+struct MarkNearestSink {
+  LeafPixel pixel_of;
+  const std::vector<std::uint32_t>& nearest;
+  std::vector<std::uint8_t>& visible;
+  std::uint32_t next_leaf = 0;
+  void operator()(std::int32_t x, std::int32_t y, std::int32_t z, std::uint8_t) {
+    const std::uint32_t index = next_leaf++;
+    const std::ptrdiff_t at = pixel_of(x, y);
+    if (at >= 0 && nearest[static_cast<std::size_t>(at)] == pixel_of.setup.depthKey(z)) visible[index] = 1;
+  }
+};
+
+void markWinners(const LevelView& level, const FrameSetup& setup, std::vector<std::uint32_t>& nearest,
+                 std::vector<std::uint8_t>& visible) {
+  const LeafPixel pixel_of{setup.width, setup.height, setup};
+  nearest.assign(static_cast<std::size_t>(setup.width) * static_cast<std::size_t>(setup.height),
+                 std::numeric_limits<std::uint32_t>::max());
+  NearestKeySink first{pixel_of, nearest};
+  BaselineWalk<NearestKeySink>(level, setup, first).run();
+  MarkNearestSink second{pixel_of, nearest, visible};
+  BaselineWalk<MarkNearestSink>(level, setup, second).run();
 }
 
 }  // namespace
@@ -74,10 +91,9 @@ std::vector<std::uint8_t> visibleVoxels(std::span<const std::uint64_t> sorted_ke
   std::atomic<std::size_t> next_view{0};
   Progress progress("pruning depth " + std::to_string(depth), setups.size());
   auto work = [&](unsigned thread) {
-    std::vector<std::int32_t> z;
-    std::vector<std::uint32_t> winner;
+    std::vector<std::uint32_t> nearest;
     for (std::size_t view; (view = next_view.fetch_add(1)) < setups.size();) {
-      markWinners(level, setups[view], z, winner, visible[thread]);
+      markWinners(level, setups[view], nearest, visible[thread]);
       if (thread == 0) progress.update(view);
     }
   };

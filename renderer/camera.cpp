@@ -7,6 +7,7 @@
 
 #include "fixedpoint/rotation.h"
 #include "fixedpoint/wide_math.h"
+#include "renderer/framebuffer.h"
 
 namespace octopoint {
 
@@ -79,6 +80,9 @@ CameraError buildFrameSetup(const Camera& camera, int depth, int fraction_bits, 
     if (worst[axis] >= kLimit) return CameraError::kOverflow;
   }
   result.root = Vec3{static_cast<std::int32_t>(root[0]), static_cast<std::int32_t>(root[1]), 0};
+  result.depth_bias = static_cast<std::uint32_t>(worst[2]);
+  const std::uint64_t depth_range = 2 * static_cast<std::uint64_t>(worst[2]);
+  while ((depth_range >> result.depth_shift) > Framebuffer::kMaxDepthKey) ++result.depth_shift;
   *setup = result;
   return CameraError::kNone;
 }

@@ -66,6 +66,16 @@ struct FrameSetup {
   Vec3 root{};  // screen position of the cube centre
   // child_offset[l][k]: from a node at tree level l to the centre of its child k.
   std::array<std::array<Vec3, 8>, format::kMaxDepth> child_offset{};
+  // The z-buffer keeps 24 bits of depth per pixel (Framebuffer): a leaf's depth key is
+  // (z + depth_bias) >> depth_shift, unsigned. Every leaf has |z| <= depth_bias, so the sum lies in
+  // [0, 2 * depth_bias]; depth_shift is the least that brings that range under 2^24 - 1. One key
+  // step is 2^(depth_shift - F) pixels of depth: at zoom 1 and F = 15, depth_shift is 0 or 1.
+  std::uint32_t depth_bias = 0;
+  int depth_shift = 0;
+
+  std::uint32_t depthKey(std::int32_t z) const {
+    return (static_cast<std::uint32_t>(z) + depth_bias) >> depth_shift;  // mod 2^32: no overflow
+  }
 };
 
 // Builds the frame set-up, or refuses the camera (returns the reason) when a coordinate could

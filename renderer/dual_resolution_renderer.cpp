@@ -56,13 +56,10 @@ std::int64_t steadyMicroseconds() { return SteadyClock().nowMicroseconds(); }
 
 std::uint32_t frameChecksum(const Framebuffer& frame) {
   // Sum of position-weighted words: any changed, moved or swapped pixel changes it (mod 2^32).
-  const std::span<const std::int32_t> depths = frame.depths();
-  const std::span<const std::uint8_t> colours = frame.colourIndices();
+  const std::span<const std::uint32_t> pixels = frame.pixels();
   std::uint32_t sum = 0;
-  for (std::size_t i = 0; i < depths.size(); ++i) {
-    const std::uint32_t word =
-        static_cast<std::uint32_t>(depths[i]) ^ (std::uint32_t{colours[i]} << 24);
-    sum += word * (2 * static_cast<std::uint32_t>(i) + 1);
+  for (std::size_t i = 0; i < pixels.size(); ++i) {
+    sum += pixels[i] * (2 * static_cast<std::uint32_t>(i) + 1);
   }
   return sum;
 }

@@ -1,9 +1,13 @@
 #pragma once
-// A frame of palette indices with its z-buffer. Memory is allocated once, at construction; a
+// A frame of palette indices with its z-buffer, packed into one 32-bit word per pixel: the depth
+// key (FrameSetup::depthKey, 24 bits, smaller is nearer) in the high bits, the palette index in the
+// low 8. Nearest-wins is then one unsigned comparison of whole words, and equal depths go to the
+// smaller palette index: the frame is the same whatever order the points arrive in, which lets
+// decoders visit, batch and reorder freely and still draw bit-identical frames. One array instead
+// of two halves the memory a plotted point touches. Memory is allocated once, at construction; a
 // frame only clears and writes it, so drawing never allocates.
 
 #include <cstdint>
-#include <limits>
 #include <span>
 #include <vector>
 
@@ -13,7 +17,17 @@ namespace octopoint {
 
 class Framebuffer {
  public:
-  static constexpr std::int32_t kEmptyDepth = std::numeric_limits<std::int32_t>::max();
+  static constexpr std::uint32_t kEmpty = 0xFFFF'FFFF;  // no point: farther than any real word
+  // Key 2^24 - 1 is left to kEmpty, so that a real point's word is always below it.
+  static constexpr std::uint32_t kMaxDepthKey = (std::uint32_t{1} << 24) - 2;
+
+  static constexpr std::uint32_t pack(std::uint32_t depth_key, std::uint8_t colour_index) {
+    return depth_key << 8 | colour_index;
+  }
+  static constexpr std::uint32_t depthKeyOf(std::uint32_t word) { return word >> 8; }
+  static constexpr std::uint8_t colourIndexOf(std::uint32_t word) {
+    return static_cast<std::uint8_t>(word & 0xFF);
+  }
 
   Framebuffer(std::int32_t width, std::int32_t height);
 
@@ -21,30 +35,27 @@ class Framebuffer {
   std::int32_t height() const { return height_; }
   void clear();
 
-  // Keeps the nearest point per pixel (smaller z is nearer); off-screen points are dropped.
-  void plot(std::int32_t x, std::int32_t y, std::int32_t z, std::uint8_t colour_index) {
+  // Keeps the nearest point per pixel; off-screen points are dropped. `depth_key` <= kMaxDepthKey.
+  void plot(std::int32_t x, std::int32_t y, std::uint32_t depth_key, std::uint8_t colour_index) {
     if (static_cast<std::uint32_t>(x) >= static_cast<std::uint32_t>(width_) ||
         static_cast<std::uint32_t>(y) >= static_cast<std::uint32_t>(height_)) {
       return;
     }
-    const std::size_t at = static_cast<std::size_t>(y) * static_cast<std::size_t>(width_) +
-                           static_cast<std::size_t>(x);
-    if (z < depth_[at]) {
-      depth_[at] = z;
-      colour_index_[at] = colour_index;
-    }
+    std::uint32_t& word = pixel_[indexOf(x, y)];
+    const std::uint32_t candidate = pack(depth_key, colour_index);
+    if (candidate < word) word = candidate;
   }
 
-  bool covered(std::int32_t x, std::int32_t y) const { return depthAt(x, y) != kEmptyDepth; }
-  std::int32_t depthAt(std::int32_t x, std::int32_t y) const { return depth_[indexOf(x, y)]; }
+  bool covered(std::int32_t x, std::int32_t y) const { return pixelAt(x, y) != kEmpty; }
+  std::uint32_t pixelAt(std::int32_t x, std::int32_t y) const { return pixel_[indexOf(x, y)]; }
+  std::uint32_t depthKeyAt(std::int32_t x, std::int32_t y) const { return depthKeyOf(pixelAt(x, y)); }
   std::uint8_t colourIndexAt(std::int32_t x, std::int32_t y) const {
-    return colour_index_[indexOf(x, y)];
+    return colourIndexOf(pixelAt(x, y));
   }
-  std::span<const std::uint8_t> colourIndices() const { return colour_index_; }
-  // Raw access for the decoders' plotters (renderer/framebuffer_plot.h).
-  std::uint8_t* colourIndexData() { return colour_index_.data(); }
-  std::int32_t* depthData() { return depth_.data(); }
-  std::span<const std::int32_t> depths() const { return depth_; }
+  // Row-major packed words, kEmpty where nothing was drawn.
+  std::span<const std::uint32_t> pixels() const { return pixel_; }
+  // Raw access for the decoders' plotters (renderer/framebuffer_plot.h) and the hole filler.
+  std::uint32_t* pixelData() { return pixel_.data(); }
 
  private:
   std::size_t indexOf(std::int32_t x, std::int32_t y) const {
@@ -53,8 +64,7 @@ class Framebuffer {
 
   std::int32_t width_;
   std::int32_t height_;
-  std::vector<std::uint8_t> colour_index_;
-  std::vector<std::int32_t> depth_;
+  std::vector<std::uint32_t> pixel_;
 };
 
 // Turns a frame into RGB888 (3 bytes per pixel, row-major): covered pixels get their palette

@@ -13,18 +13,20 @@ namespace octopoint {
 
 template <bool kChecked>
 struct FixedPlot {
-  std::uint8_t* colour;
-  std::int32_t* depth;
+  std::uint32_t* pixel;
   std::int32_t width;
   std::int32_t height;
   int fraction_bits;
+  std::uint32_t depth_bias;
+  int depth_shift;
 
   FixedPlot(Framebuffer& frame, const FrameSetup& setup)
-      : colour(frame.colourIndexData()),
-        depth(frame.depthData()),
+      : pixel(frame.pixelData()),
         width(frame.width()),
         height(frame.height()),
-        fraction_bits(setup.fraction_bits) {}
+        fraction_bits(setup.fraction_bits),
+        depth_bias(setup.depth_bias),
+        depth_shift(setup.depth_shift) {}
 
   // `p` in Q(32-F).F screen pixels; the pixel is p >> F (floor).
   void operator()(const Vec3& p, std::uint8_t palette_index) const {
@@ -40,10 +42,10 @@ struct FixedPlot {
     }
     const std::size_t at = static_cast<std::size_t>(y) * static_cast<std::size_t>(width) +
                            static_cast<std::size_t>(x);
-    if (p.z < depth[at]) {
-      depth[at] = p.z;
-      colour[at] = palette_index;
-    }
+    // FrameSetup::depthKey, inline: (z + bias) >> shift, mod 2^32.
+    const std::uint32_t key = (static_cast<std::uint32_t>(p.z) + depth_bias) >> depth_shift;
+    const std::uint32_t word = Framebuffer::pack(key, palette_index);
+    if (word < pixel[at]) pixel[at] = word;
   }
 };
 

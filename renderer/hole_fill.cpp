@@ -8,7 +8,7 @@
 namespace octopoint {
 namespace {
 
-constexpr std::int32_t kEmpty = Framebuffer::kEmptyDepth;
+constexpr std::uint32_t kEmpty = Framebuffer::kEmpty;
 
 // floor(sqrt(value)), bit by bit: integer only.
 std::uint64_t integerSquareRoot(std::uint64_t value) {
@@ -27,24 +27,22 @@ std::uint64_t integerSquareRoot(std::uint64_t value) {
   return root;
 }
 
-// Two covered pixels whose depths (Q(32-F).F) are at most `limit` apart: a surface, not a step.
-bool bridgeable(std::int32_t a, std::int32_t b, std::int32_t limit) {
+// Two covered pixels (packed words) whose depth keys are at most `limit` apart: a surface, not a
+// step.
+bool bridgeable(std::uint32_t a, std::uint32_t b, std::uint32_t limit) {
   if (a == kEmpty || b == kEmpty) return false;
-  const std::int64_t difference = std::int64_t{a} - std::int64_t{b};
-  return (difference < 0 ? -difference : difference) <= limit;
+  const std::uint32_t key_a = Framebuffer::depthKeyOf(a), key_b = Framebuffer::depthKeyOf(b);
+  return (key_a > key_b ? key_a - key_b : key_b - key_a) <= limit;
 }
 
-// One bounding pixel of a gap: its depth and where to read its colour.
-struct Source {
-  std::int32_t depth;
-  std::int32_t x, y;
-};
-
-Source nearer(const Source& a, const Source& b) { return b.depth < a.depth ? b : a; }
+// The nearer of two bounding pixels by depth key; on equal keys the first (left, then up).
+std::uint32_t nearer(std::uint32_t a, std::uint32_t b) {
+  return Framebuffer::depthKeyOf(b) < Framebuffer::depthKeyOf(a) ? b : a;
+}
 
 }  // namespace
 
-std::int32_t bridgeDepthLimit(const FrameSetup& setup) {
+std::uint32_t bridgeDepthLimit(const FrameSetup& setup) {
   assert(setup.depth >= 1);
   // Children 4 and 0 of a leaf-parent differ by one voxel edge along the model's x axis, rotated.
   const auto& offsets = setup.child_offset[static_cast<std::size_t>(setup.depth - 1)];
@@ -55,9 +53,9 @@ std::int32_t bridgeDepthLimit(const FrameSetup& setup) {
     squared += static_cast<std::uint64_t>(component * component);  // each < 2^62, sum < 2^64
   }
   const std::uint64_t edge = integerSquareRoot(squared);  // Q(32-F).F screen pixels
-  const std::uint64_t limit = edge * static_cast<std::uint64_t>(kBridgeDepthVoxelEdges);
-  constexpr std::uint64_t kMax = std::numeric_limits<std::int32_t>::max() - 1;
-  return static_cast<std::int32_t>(std::min(limit, kMax));
+  // In depth-key units (FrameSetup::depthKey): keys are depths shifted right by depth_shift.
+  const std::uint64_t limit = (edge * static_cast<std::uint64_t>(kBridgeDepthVoxelEdges)) >> setup.depth_shift;
+  return static_cast<std::uint32_t>(std::min<std::uint64_t>(limit, Framebuffer::kMaxDepthKey));
 }
 
 HoleFiller::HoleFiller(std::int32_t width)
@@ -65,12 +63,11 @@ HoleFiller::HoleFiller(std::int32_t width)
   assert(width > 0);
 }
 
-HoleFillCounts HoleFiller::fill(Framebuffer& frame, std::int32_t max_bridge_depth) {
-  assert(frame.width() == width_ && max_bridge_depth >= 0);
+HoleFillCounts HoleFiller::fill(Framebuffer& frame, std::uint32_t max_bridge_depth) {
+  assert(frame.width() == width_);
   const std::int32_t width = width_;
   const std::int32_t height = frame.height();
-  const std::int32_t* depths = frame.depths().data();
-  const std::uint8_t* colours = frame.colourIndices().data();  // covered pixels never change
+  std::uint32_t* const pixels = frame.pixelData();
   const std::ptrdiff_t stride = width + 2 * kPad;
   // Frame row r (-2 <= r < height + 2) lives in slot (r + kRows) % kRows, kPad columns in; rows
   // outside the frame and the padding columns are empty, so no read needs a bounds check.
@@ -78,9 +75,9 @@ HoleFillCounts HoleFiller::fill(Framebuffer& frame, std::int32_t max_bridge_dept
     return history_.data() + ((r + kRows) % kRows) * stride + kPad;
   };
   const auto load = [&](std::int32_t r) {
-    std::int32_t* row = slot(r);
+    std::uint32_t* row = slot(r);
     if (r >= 0 && r < height) {
-      std::memcpy(row, depths + static_cast<std::ptrdiff_t>(r) * width,
+      std::memcpy(row, pixels + static_cast<std::ptrdiff_t>(r) * width,
                   static_cast<std::size_t>(width) * 4);
     } else {
       std::fill(row, row + width, kEmpty);
@@ -90,11 +87,11 @@ HoleFillCounts HoleFiller::fill(Framebuffer& frame, std::int32_t max_bridge_dept
   HoleFillCounts counts;
   for (std::int32_t y = 0; y < height; ++y) {
     load(y + 2);  // into the slot of row y - 3, which no decision needs any more
-    const std::int32_t* up2 = slot(y - 2);
-    const std::int32_t* up1 = slot(y - 1);
-    const std::int32_t* row = slot(y);
-    const std::int32_t* down1 = slot(y + 1);
-    const std::int32_t* down2 = slot(y + 2);
+    const std::uint32_t* up2 = slot(y - 2);
+    const std::uint32_t* up1 = slot(y - 1);
+    const std::uint32_t* row = slot(y);
+    const std::uint32_t* down1 = slot(y + 1);
+    const std::uint32_t* down2 = slot(y + 2);
     for (std::int32_t x = 0; x < width; ++x) {
       if (row[x] != kEmpty) continue;
       // Every type needs one of these covered (the left, right, upper or lower neighbour, or the
@@ -103,39 +100,39 @@ HoleFillCounts HoleFiller::fill(Framebuffer& frame, std::int32_t max_bridge_dept
           up1[x - 1] == kEmpty) {
         continue;
       }
-      const auto fillFrom = [&](const Source& source, std::int32_t& type_count) {
-        frame.plot(x, y, source.depth,
-                   colours[static_cast<std::ptrdiff_t>(source.y) * width + source.x]);
+      // P takes the bounding pixel's word: its depth key and its colour.
+      const auto fillFrom = [&](std::uint32_t source, std::int32_t& type_count) {
+        pixels[static_cast<std::ptrdiff_t>(y) * width + x] = source;
         ++type_count;
       };
       // Type 1: C P C in the row.
       if (bridgeable(row[x - 1], row[x + 1], max_bridge_depth)) {
-        fillFrom(nearer({row[x - 1], x - 1, y}, {row[x + 1], x + 1, y}), counts.type1);
+        fillFrom(nearer(row[x - 1], row[x + 1]), counts.type1);
         continue;
       }
       // Type 2: C above P, C below P.
       if (bridgeable(up1[x], down1[x], max_bridge_depth)) {
-        fillFrom(nearer({up1[x], x, y - 1}, {down1[x], x, y + 1}), counts.type2);
+        fillFrom(nearer(up1[x], down1[x]), counts.type2);
         continue;
       }
       // Type 3: the four diagonal neighbours covered, each diagonal pair a surface.
       if (bridgeable(up1[x - 1], down1[x + 1], max_bridge_depth) &&
           bridgeable(up1[x + 1], down1[x - 1], max_bridge_depth)) {
-        const Source first = nearer({up1[x - 1], x - 1, y - 1}, {up1[x + 1], x + 1, y - 1});
-        const Source second = nearer({down1[x - 1], x - 1, y + 1}, {down1[x + 1], x + 1, y + 1});
+        const std::uint32_t first = nearer(up1[x - 1], up1[x + 1]);
+        const std::uint32_t second = nearer(down1[x - 1], down1[x + 1]);
         fillFrom(nearer(first, second), counts.type3);
         continue;
       }
       // Type 4: a two-pixel gap, P next to its bounding pixel: C P . C, C . P C, and the same in
       // the column.
       if (row[x + 1] == kEmpty && bridgeable(row[x - 1], row[x + 2], max_bridge_depth)) {
-        fillFrom({row[x - 1], x - 1, y}, counts.type4);
+        fillFrom(row[x - 1], counts.type4);
       } else if (row[x - 1] == kEmpty && bridgeable(row[x - 2], row[x + 1], max_bridge_depth)) {
-        fillFrom({row[x + 1], x + 1, y}, counts.type4);
+        fillFrom(row[x + 1], counts.type4);
       } else if (down1[x] == kEmpty && bridgeable(up1[x], down2[x], max_bridge_depth)) {
-        fillFrom({up1[x], x, y - 1}, counts.type4);
+        fillFrom(up1[x], counts.type4);
       } else if (up1[x] == kEmpty && bridgeable(up2[x], down1[x], max_bridge_depth)) {
-        fillFrom({down1[x], x, y + 1}, counts.type4);
+        fillFrom(down1[x], counts.type4);
       }
     }
   }

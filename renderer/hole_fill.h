@@ -35,11 +35,11 @@ namespace octopoint {
 // voxels) in front of what lies behind them, far beyond 4.
 inline constexpr std::int32_t kBridgeDepthVoxelEdges = 4;
 
-// The depth limit for a frame set-up, in the z-buffer's Q(32-F).F screen-pixel units, F =
-// setup.fraction_bits: kBridgeDepthVoxelEdges times the edge of one voxel on screen, which is the
-// length of the rotated displacement between a leaf-parent's children 0 and 4 (exact integer
-// square root; the length does not depend on the rotation).
-std::int32_t bridgeDepthLimit(const FrameSetup& setup);
+// The depth limit for a frame set-up, in the frame's depth-key units (FrameSetup::depthKey):
+// kBridgeDepthVoxelEdges times the edge of one voxel on screen, which is the length of the rotated
+// displacement between a leaf-parent's children 0 and 4 (exact integer square root in Q(32-F).F
+// pixels; the length does not depend on the rotation), shifted right by setup.depth_shift.
+std::uint32_t bridgeDepthLimit(const FrameSetup& setup);
 
 struct HoleFillCounts {
   std::int32_t type1 = 0, type2 = 0, type3 = 0, type4 = 0;
@@ -52,15 +52,15 @@ class HoleFiller {
   explicit HoleFiller(std::int32_t width);
 
   // Fills the gaps of types 1 to 4 in `frame` (which must be as wide as the filler) in place.
-  // `max_bridge_depth` is in the frame's z units (Q(32-F).F), >= 0. Never allocates.
-  HoleFillCounts fill(Framebuffer& frame, std::int32_t max_bridge_depth);
+  // `max_bridge_depth` is in the frame's depth-key units (bridgeDepthLimit). Never allocates.
+  HoleFillCounts fill(Framebuffer& frame, std::uint32_t max_bridge_depth);
 
  private:
   static constexpr std::int32_t kRows = 5;  // rows y - 2 .. y + 2
   static constexpr std::int32_t kPad =
       2;  // empty columns either side: x - 2 .. x + 2 need no check
   std::int32_t width_;
-  std::vector<std::int32_t> history_;  // kRows rows of width_ + 2 * kPad original depths
+  std::vector<std::uint32_t> history_;  // kRows rows of width_ + 2 * kPad original pixel words
 };
 
 // For measuring (docs/holefill.md): the empty pixels of `frame` that lie inside the object as

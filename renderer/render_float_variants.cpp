@@ -3,6 +3,7 @@
 // precision computed from the camera, as an FPU-equipped port of the paper's renderer would.
 // This file is the only place in renderer/ that uses floating point at run time; the device build
 // checks that nothing else does.
+#include <algorithm>
 #include <cassert>
 #include <cmath>
 
@@ -58,13 +59,15 @@ FloatFrame floatFrameFrom(const FrameSetup& setup) {
   return frame;
 }
 
-// Pixel = floor of the position; z is stored in the fixed z-buffer's Q(32-F).F units.
+// Pixel = floor of the position; z becomes the fixed variants' depth key (FrameSetup::depthKey),
+// clamped to the range they can produce, which rounding here may overshoot by a hair.
 struct FloatPlot {
-  std::uint8_t* colour;
-  std::int32_t* depth;
+  std::uint32_t* pixel;
   std::int32_t width;
   std::int32_t height;
   float z_scale;
+  float z_limit;
+  const FrameSetup* setup;
   void operator()(const Point3<float>& p, std::uint8_t palette_index) const {
     if (!(p.x >= 0.0f && p.y >= 0.0f)) return;
     const auto x = static_cast<std::int32_t>(p.x);
@@ -72,11 +75,9 @@ struct FloatPlot {
     if (x >= width || y >= height) return;
     const std::size_t at = static_cast<std::size_t>(y) * static_cast<std::size_t>(width) +
                            static_cast<std::size_t>(x);
-    const auto z = static_cast<std::int32_t>(p.z * z_scale);
-    if (z < depth[at]) {
-      depth[at] = z;
-      colour[at] = palette_index;
-    }
+    const auto z = static_cast<std::int32_t>(std::clamp(p.z * z_scale, -z_limit, z_limit));
+    const std::uint32_t word = Framebuffer::pack(setup->depthKey(z), palette_index);
+    if (word < pixel[at]) pixel[at] = word;
   }
 };
 
@@ -86,8 +87,10 @@ bool renderFloatWith(Visit visit, const LevelView& level, const FrameSetup& setu
   assert(level.depth == setup.depth);
   assert(frame.width() == setup.width && frame.height() == setup.height);
   const FloatFrame float_frame = floatFrameFrom(setup);
-  const FloatPlot plot{frame.colourIndexData(), frame.depthData(), frame.width(), frame.height(),
-                       std::ldexp(1.0f, setup.fraction_bits)};
+  // The largest float not above depth_bias: its conversion to int32 stays within the bias.
+  const float z_limit = std::nextafter(static_cast<float>(setup.depth_bias), 0.0f);
+  const FloatPlot plot{frame.pixelData(), frame.width(), frame.height(),
+                       std::ldexp(1.0f, setup.fraction_bits), z_limit, &setup};
   DecodeState<float, FloatPlot> state{level.nodes.data(), level.leaves.data(), float_frame.offsets,
                                       setup.depth, plot, abort};
   visit(state, 0, float_frame.root);

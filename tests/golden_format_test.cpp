@@ -175,7 +175,7 @@ TEST(GoldenFormat, TwoLevelModelDrawsTheNearerOfTwoLeavesOnOnePixel) {
   Framebuffer frame(8, 8);
   frame.clear();
   ASSERT_TRUE(renderLevel(Variant::kFixedBaseline, *model.levelOfDepth(2), identitySetup(2), frame));
-  EXPECT_EQ(frame.depthAt(1, 1), px(-3));
+  EXPECT_EQ(frame.depthKeyAt(1, 1), identitySetup(2).depthKey(px(-3)));
 }
 
 TEST(GoldenFormat, FullPaletteModelReachesTheLastColour) {

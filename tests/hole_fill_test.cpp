@@ -14,9 +14,9 @@
 namespace octopoint {
 namespace {
 
-constexpr std::int32_t kLimit = 100;  // the bridge limit used with the art frames
-constexpr std::int32_t kNear = 1000;
-constexpr std::int32_t kFar = kNear + kLimit + 1;
+constexpr std::uint32_t kLimit = 100;  // the bridge limit used with the art frames, in depth keys
+constexpr std::uint32_t kNear = 1000;
+constexpr std::uint32_t kFar = kNear + kLimit + 1;
 
 Framebuffer frameFromArt(const std::vector<std::string>& art) {
   Framebuffer frame(static_cast<std::int32_t>(art[0].size()),
@@ -25,7 +25,7 @@ Framebuffer frameFromArt(const std::vector<std::string>& art) {
   for (std::int32_t y = 0; y < frame.height(); ++y) {
     for (std::int32_t x = 0; x < frame.width(); ++x) {
       const char c = art[static_cast<std::size_t>(y)][static_cast<std::size_t>(x)];
-      if (c >= 'a' && c <= 'z') frame.plot(x, y, kNear + (c - 'a'), static_cast<std::uint8_t>(c));
+      if (c >= 'a' && c <= 'z') frame.plot(x, y, kNear + static_cast<std::uint32_t>(c - 'a'), static_cast<std::uint8_t>(c));
       if (c >= 'A' && c <= 'Z') frame.plot(x, y, kFar, static_cast<std::uint8_t>(c - 'A' + 'a'));
     }
   }

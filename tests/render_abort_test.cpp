@@ -11,8 +11,8 @@ namespace octopoint {
 namespace {
 
 std::size_t coveredPixels(const Framebuffer& frame) {
-  return static_cast<std::size_t>(std::count_if(frame.depths().begin(), frame.depths().end(),
-                                                [](std::int32_t z) { return z != Framebuffer::kEmptyDepth; }));
+  return static_cast<std::size_t>(std::count_if(frame.pixels().begin(), frame.pixels().end(),
+                                                [](std::uint32_t word) { return word != Framebuffer::kEmpty; }));
 }
 
 class RenderAbort : public ::testing::Test {

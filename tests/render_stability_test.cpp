@@ -189,6 +189,41 @@ TEST(RenderStability, TheSmallestAndLargestAcceptedZoomDrawWithinTheBoundAndOneS
   }
 }
 
+// Every leaf's depth key (the z-buffer's 24 bits, FrameSetup::depthKey) is exactly
+// floor((z + bias) / 2^shift), in range, and the shift is the least that fits: at the default
+// frame, the largest accepted zoom and the most fraction bits.
+TEST(RenderStability, DepthKeysAreExactFitTwentyFourBitsAndLoseNoMoreThanTheyMust) {
+  Camera camera;
+  camera.yaw = Angle::fromDegrees(45);
+  camera.pitch = Angle::fromDegrees(35);
+  struct Case {
+    std::int32_t zoom_raw;
+    int fraction_bits;
+  };
+  const std::int32_t largest = largestAcceptedZoomRaw(camera, 8);
+  for (const Case& c : {Case{Q16::kOneRaw, kDefaultFractionBits}, Case{largest, kDefaultFractionBits},
+                        Case{Q16::kOneRaw, 20}, Case{1, kDefaultFractionBits}}) {
+    camera.zoom = Q16::fromRaw(c.zoom_raw);
+    FrameSetup setup;
+    ASSERT_EQ(buildFrameSetup(camera, 8, c.fraction_bits, &setup), CameraError::kNone);
+    const std::uint64_t range = 2 * std::uint64_t{setup.depth_bias};
+    EXPECT_LE(range >> setup.depth_shift, Framebuffer::kMaxDepthKey);
+    if (setup.depth_shift > 0) {
+      EXPECT_GT(range >> (setup.depth_shift - 1), Framebuffer::kMaxDepthKey);
+    }
+    std::size_t wrong = 0;
+    auto check = [&](std::int32_t, std::int32_t, std::int32_t z, std::uint8_t) {
+      const std::int64_t exact = (std::int64_t{z} + setup.depth_bias) >> setup.depth_shift;
+      wrong += exact < 0 || exact > Framebuffer::kMaxDepthKey || setup.depthKey(z) != exact;
+    };
+    ASSERT_TRUE(BaselineWalk(defaultLevel(8), setup, check).run());
+    EXPECT_EQ(wrong, 0u) << "zoom raw " << c.zoom_raw << " fraction bits " << c.fraction_bits;
+    if (c.zoom_raw == Q16::kOneRaw && c.fraction_bits == kDefaultFractionBits) {
+      EXPECT_LE(setup.depth_shift, 1) << "at zoom 1 a key step is at most 2^-14 pixels";
+    }
+  }
+}
+
 // A model of one level built by hand, for the depths no scan gives us.
 struct HandModel {
   std::vector<std::uint8_t> nodes;
@@ -279,13 +314,13 @@ TEST(RenderStability, OneByOneAndLargestCommonFramebuffersDrawTheSameWithEveryFi
     Framebuffer reference(width, height), frame(width, height);
     reference.clear();
     ASSERT_TRUE(renderLevel(Variant::kFixedBaseline, defaultLevel(8), setup, reference));
-    EXPECT_GT(std::ranges::count_if(reference.depths(), [](std::int32_t z) { return z != Framebuffer::kEmptyDepth; }),
+    EXPECT_GT(std::ranges::count_if(reference.pixels(), [](std::uint32_t word) { return word != Framebuffer::kEmpty; }),
               0);  // the model is there
     for (const VariantInfo& info : allVariants()) {
       if (!isFixedPoint(info.variant)) continue;
       frame.clear();
       ASSERT_TRUE(renderLevel(info.variant, defaultLevel(8), setup, frame));
-      EXPECT_TRUE(std::ranges::equal(frame.depths(), reference.depths())) << info.name << " " << width;
+      EXPECT_TRUE(std::ranges::equal(frame.pixels(), reference.pixels())) << info.name << " " << width;
     }
   }
 }

@@ -73,16 +73,15 @@ Comparison compare(const ModelPair& pair, const Camera& camera) {
   const Framebuffer expected = draw(pair.unpruned(), camera);
   const Framebuffer actual = draw(pair.pruned(), camera);
   Comparison result;
-  for (std::size_t i = 0; i < expected.depths().size(); ++i) {
-    const bool covered = expected.depths()[i] != Framebuffer::kEmptyDepth;
-    const bool pruned_covered = actual.depths()[i] != Framebuffer::kEmptyDepth;
+  for (std::size_t i = 0; i < expected.pixels().size(); ++i) {
+    const bool covered = expected.pixels()[i] != Framebuffer::kEmpty;
+    const bool pruned_covered = actual.pixels()[i] != Framebuffer::kEmpty;
     if (!covered) {
       result.extra += pruned_covered;
       continue;
     }
     ++result.object_pixels;
-    result.differing += !pruned_covered || expected.depths()[i] != actual.depths()[i] ||
-                        expected.colourIndices()[i] != actual.colourIndices()[i];
+    result.differing += expected.pixels()[i] != actual.pixels()[i];  // depth key and colour
   }
   return result;
 }

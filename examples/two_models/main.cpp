@@ -35,7 +35,7 @@ int draw(const octopoint::EmbeddedModel& embedded, std::vector<std::uint8_t>& rg
   renderLevel(Variant::kFixedBaseline, level, setup, frame);
   resolveToRgb(frame, *model, Rgb{0, 0, 0}, rgb);
   int covered = 0;
-  for (std::int32_t depth : frame.depths()) covered += depth != Framebuffer::kEmptyDepth;
+  for (const std::uint32_t word : frame.pixels()) covered += word != Framebuffer::kEmpty;
   return covered;
 }
 
