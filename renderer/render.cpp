@@ -1,6 +1,7 @@
 #include "renderer/render.h"
 
 #include <array>
+#include <vector>
 
 namespace octopoint {
 namespace {
@@ -12,7 +13,10 @@ constexpr std::array kVariants = {
     VariantInfo{Variant::kFixedSetBits, "fixed_setbits", "Algorithm 2 visiting only the set bits of each mask"},
     VariantInfo{Variant::kFixedClipped, "fixed_clipped",
                 "set bits + hierarchical clipping (no bounds checks for subtrees on screen)"},
-    VariantInfo{Variant::kFixedFast, "fixed_fast", "clipped, state in registers, no call per leaf parent: the fastest"},
+    VariantInfo{Variant::kFixedFast, "fixed_fast",
+                "clipped, state in registers, no call per leaf parent: the fastest portable one"},
+    VariantInfo{Variant::kFixedSimd, "fixed_simd",
+                "fixed_fast's walk, eight children at once in AVX2 lanes, batched branch-free plot (x86-64)"},
     VariantInfo{Variant::kFloatBaseline, "float_baseline", "Algorithm 1 in floating point (reference)"},
     VariantInfo{Variant::kFloatLeafCall, "float_leafcall", "Algorithm 2 in floating point (reference)"},
     VariantInfo{Variant::kFloatUnrolled, "float_unrolled", "Algorithm 2 unrolled, floating point (reference)"},
@@ -20,10 +24,19 @@ constexpr std::array kVariants = {
 
 }  // namespace
 
-std::span<const VariantInfo> allVariants() { return kVariants; }
+std::span<const VariantInfo> allVariants() {
+  static const std::vector<VariantInfo> available = [] {
+    std::vector<VariantInfo> list;
+    for (const VariantInfo& info : kVariants) {
+      if (info.variant != Variant::kFixedSimd || simdDecoderAvailable()) list.push_back(info);
+    }
+    return list;
+  }();
+  return available;
+}
 
 std::optional<Variant> variantFromName(std::string_view name) {
-  for (const VariantInfo& info : kVariants) {
+  for (const VariantInfo& info : allVariants()) {
     if (info.name == name) return info.variant;
   }
   return std::nullopt;
@@ -38,6 +51,7 @@ bool renderLevel(Variant variant, const LevelView& level, const FrameSetup& setu
     case Variant::kFixedSetBits: return renderFixedSetBits(level, setup, frame, abort);
     case Variant::kFixedClipped: return renderFixedClipped(level, setup, frame, abort);
     case Variant::kFixedFast: return renderFixedFast(level, setup, frame, abort);
+    case Variant::kFixedSimd: return renderFixedSimd(level, setup, frame, abort);
     case Variant::kFloatBaseline: return renderFloatBaseline(level, setup, frame, abort);
     case Variant::kFloatLeafCall: return renderFloatLeafCall(level, setup, frame, abort);
     case Variant::kFloatUnrolled: return renderFloatUnrolled(level, setup, frame, abort);
