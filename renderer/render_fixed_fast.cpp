@@ -1,11 +1,13 @@
-// fixed_fast: the fastest integer decoder here. Same frame as fixed_baseline, bit for bit.
+// fixed_fast: the fastest portable integer decoder (fixed_simd, AVX2 only, is faster). Same frame as
+// fixed_baseline, bit for bit.
 //
 // What makes it fast, each measured in bench/render_bench.cpp against the plainer variants:
 // - Algorithm 2 with set-bit iteration: a leaf parent plots its children in a loop over the set
 //   bits of its mask (count trailing zeros), no call per leaf.
+// - A branch-free z-test: the pixel gets the min of its word and the leaf's (Framebuffer).
 // - Stream cursors and frame pointers live in locals and travel by value (in and out of each call),
-//   not in a struct in memory: a colour store is a byte store, which may alias any object in memory,
-//   so state kept in memory would be reloaded after every plotted leaf.
+//   not in a struct in memory: a pixel store may alias any 32-bit field of such a struct, so state
+//   kept in memory would be reloaded after every plotted leaf.
 // - The level above the leaf parents plots its grandchildren itself (in the on-screen case), so
 //   there is no call per leaf parent: calls were a third of the instructions per point.
 // - Hierarchical clipping as in fixed_clipped: subtrees proven on screen plot without bounds

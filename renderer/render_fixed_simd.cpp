@@ -111,30 +111,43 @@ void plotChildrenChecked(SimdFrame& f, int level, Vec3 c, unsigned mask, const s
   }
 }
 
-// A leaf parent whose children all land on screen appends them to the batch.
-__attribute__((target("avx2"))) inline void emitChildren(SimdFrame& f, int level, Vec3 c, unsigned mask,
-                                                          const std::uint8_t*& leaf) {
+// The leaf parents' level as vectors, loaded into registers once per grandparent.
+struct LeafLanes {
+  __m256i dx, dy, dz;  // the eight children's offsets per axis (Q(32-F).F)
+  __m256i width, depth_bias;
+  __m128i fraction_bits, depth_shift;
+};
+
+__attribute__((target("avx2"))) inline LeafLanes leafLanes(const SimdFrame& f, int level) {
   const auto l = static_cast<std::size_t>(level);
-  const __m128i fraction_bits = _mm_cvtsi32_si128(f.fraction_bits);
-  const __m128i depth_shift = _mm_cvtsi32_si128(f.depth_shift);
+  return {f.dx[l],
+          f.dy[l],
+          f.dz[l],
+          _mm256_set1_epi32(f.width),
+          _mm256_set1_epi32(static_cast<int>(f.depth_bias)),
+          _mm_cvtsi32_si128(f.fraction_bits),
+          _mm_cvtsi32_si128(f.depth_shift)};
+}
+
+// A leaf parent centred at `c` whose children all land on screen writes their pixel indices and
+// packed words to `index_out` and `word_out` (8 slots each) and returns how many it wrote. Its
+// set children's colours are the next popcount(mask) bytes at `colours`, already in kept order.
+__attribute__((target("avx2"))) inline int emitChildren(const LeafLanes& lanes, Vec3 c, unsigned mask,
+                                                         const std::uint8_t* colours,
+                                                         std::uint32_t* index_out, std::uint32_t* word_out) {
   // Pixel column and row: floor((c + d) / 2^F); index = row * width + column (< 2^26).
-  const __m256i x = _mm256_sra_epi32(_mm256_add_epi32(_mm256_set1_epi32(c.x), f.dx[l]), fraction_bits);
-  const __m256i y = _mm256_sra_epi32(_mm256_add_epi32(_mm256_set1_epi32(c.y), f.dy[l]), fraction_bits);
-  const __m256i index = _mm256_add_epi32(_mm256_mullo_epi32(y, _mm256_set1_epi32(f.width)), x);
+  const __m256i x = _mm256_sra_epi32(_mm256_add_epi32(_mm256_set1_epi32(c.x), lanes.dx), lanes.fraction_bits);
+  const __m256i y = _mm256_sra_epi32(_mm256_add_epi32(_mm256_set1_epi32(c.y), lanes.dy), lanes.fraction_bits);
+  const __m256i index = _mm256_add_epi32(_mm256_mullo_epi32(y, lanes.width), x);
   // Depth key (FrameSetup::depthKey): (z + bias) >> shift, unsigned, mod 2^32.
-  const __m256i z = _mm256_add_epi32(_mm256_set1_epi32(c.z), f.dz[l]);
-  const __m256i key = _mm256_srl_epi32(_mm256_add_epi32(z, _mm256_set1_epi32(static_cast<int>(f.depth_bias))),
-                                       depth_shift);
+  const __m256i z = _mm256_add_epi32(_mm256_set1_epi32(c.z), lanes.dz);
+  const __m256i key = _mm256_srl_epi32(_mm256_add_epi32(z, lanes.depth_bias), lanes.depth_shift);
   const __m256i keep = _mm256_cvtepu8_epi32(_mm_loadl_epi64(reinterpret_cast<const __m128i*>(&kKeep[mask])));
-  // The set children's colours are the next popcount(mask) stream bytes, already in kept order.
-  const __m256i colour = _mm256_cvtepu8_epi32(_mm_loadl_epi64(reinterpret_cast<const __m128i*>(leaf)));
+  const __m256i colour = _mm256_cvtepu8_epi32(_mm_loadl_epi64(reinterpret_cast<const __m128i*>(colours)));
   const __m256i word = _mm256_or_si256(_mm256_slli_epi32(_mm256_permutevar8x32_epi32(key, keep), 8), colour);
-  _mm256_storeu_si256(reinterpret_cast<__m256i*>(f.batch_index + f.batched),
-                      _mm256_permutevar8x32_epi32(index, keep));
-  _mm256_storeu_si256(reinterpret_cast<__m256i*>(f.batch_word + f.batched), word);
-  const int children = std::popcount(mask);
-  f.batched += children;
-  leaf += children;
+  _mm256_storeu_si256(reinterpret_cast<__m256i*>(index_out), _mm256_permutevar8x32_epi32(index, keep));
+  _mm256_storeu_si256(reinterpret_cast<__m256i*>(word_out), word);
+  return std::popcount(mask);
 }
 
 template <bool kChecked>
@@ -159,7 +172,10 @@ __attribute__((target("avx2"))) const std::uint8_t* visit(SimdFrame& f, int leve
       plotChildrenChecked(f, level, c, mask, leaf);
     } else {
       if (f.batched > kBatch - 8) plotBatch(f);
-      emitChildren(f, level, c, mask, leaf);
+      const int children = emitChildren(leafLanes(f, level), c, mask, leaf, f.batch_index + f.batched,
+                                        f.batch_word + f.batched);
+      f.batched += children;
+      leaf += children;
     }
     return node;
   }
@@ -168,12 +184,20 @@ __attribute__((target("avx2"))) const std::uint8_t* visit(SimdFrame& f, int leve
     // Leaf parents below, all on screen, with their at most 64 colours inside the stream: emit
     // them here, no call each (calls were half the time).
     if (f.batched > kBatch - 64) plotBatch(f);
-    const std::uint8_t* local_leaf = leaf;
+    const LeafLanes lanes = leafLanes(f, level + 1);
+    // Cursors in locals: a store to the batch may alias any 32-bit field of `f`.
+    std::uint32_t* index_out = f.batch_index + f.batched;
+    std::uint32_t* word_out = f.batch_word + f.batched;
+    const std::uint8_t* colours = leaf;
     for (; mask != 0; mask &= mask - 1) {
-      emitChildren(f, level + 1, c + offsets[static_cast<std::size_t>(std::countr_zero(mask))], *node++,
-                   local_leaf);
+      const Vec3 centre = c + offsets[static_cast<std::size_t>(std::countr_zero(mask))];
+      const int children = emitChildren(lanes, centre, *node++, colours, index_out, word_out);
+      index_out += children;
+      word_out += children;
+      colours += children;
     }
-    leaf = local_leaf;
+    f.batched = static_cast<int>(index_out - f.batch_index);
+    leaf = colours;
     return node;
   }
   for (; mask != 0; mask &= mask - 1) {

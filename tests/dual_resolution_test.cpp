@@ -43,15 +43,16 @@ class DualResolution : public ::testing::Test {
 
   // The real decoder, repeated until `budget` of real time has passed (each pass polls `abort`).
   RenderFunction slowFine(milliseconds budget) const {
-    return slowFine(std::make_shared<std::atomic<std::int64_t>>(budget.count()));
+    return slowFine(std::make_shared<std::atomic<int>>(static_cast<int>(budget.count())));
   }
 
-  // The same with a budget the test may change while the renderer runs.
-  RenderFunction slowFine(std::shared_ptr<const std::atomic<std::int64_t>> budget_ms) const {
+  // The same with a budget the test may change while the renderer runs (32 bits: ARMv5 has no
+  // lock-free 64-bit atomics).
+  RenderFunction slowFine(std::shared_ptr<const std::atomic<int>> budget_ms) const {
     const LevelView* fine = fine_;
     return [fine, budget_ms](const LevelView& level, const FrameSetup& setup, Framebuffer& frame,
                              const std::atomic<bool>* abort) {
-      const std::int64_t end_us = realMicroseconds() + budget_ms->load() * 1000;
+      const std::int64_t end_us = realMicroseconds() + std::int64_t{budget_ms->load()} * 1000;
       do {
         if (!renderLevel(Variant::kFixedBaseline, level, setup, frame, abort)) return false;
       } while (&level == fine && realMicroseconds() < end_us);
@@ -205,8 +206,8 @@ TEST_F(DualResolution, ThousandsOfRandomEventsLeaveNoDeadlockNoLostAndNoTornFram
   // Fine frames of at least 3 ms, so that presses often land while H is drawing. How often
   // depends on the scheduler (on a loaded machine H may never start before the next event), so
   // every few hundred events one abort is forced: H draws until a press stops it.
-  constexpr std::int64_t kFineMs = 3;
-  const auto fine_budget_ms = std::make_shared<std::atomic<std::int64_t>>(kFineMs);
+  constexpr int kFineMs = 3;
+  const auto fine_budget_ms = std::make_shared<std::atomic<int>>(kFineMs);
   DualResolutionRenderer renderer(*coarse_, *fine_, clock_, InteractiveConfig{},
                                   slowFine(fine_budget_ms));
   std::mt19937 random(12345);
@@ -245,7 +246,7 @@ TEST_F(DualResolution, ThousandsOfRandomEventsLeaveNoDeadlockNoLostAndNoTornFram
     releaseAll();
     renderer.handle({now_us, ViewEventKind::kToggleFill});  // a new view, so a fine frame is due
     const RendererStatus before = renderer.status();
-    fine_budget_ms->store(kPatience.count());
+    fine_budget_ms->store(static_cast<int>(kPatience.count()));
     renderer.handle({now_us, ViewEventKind::kTick});
     ASSERT_TRUE(renderer.waitUntil(
         [&](const RendererStatus& s) { return s.fine_started > before.fine_started && s.fine_busy; },
