@@ -11,22 +11,28 @@
 
 namespace octopoint {
 
-template <bool kChecked>
-struct FixedPlot {
-  std::uint32_t* pixel;
-  std::int32_t width;
-  std::int32_t height;
-  int fraction_bits;
-  std::uint32_t depth_bias;
-  int depth_shift;
-
-  FixedPlot(Framebuffer& frame, const FrameSetup& setup)
+// What every integer decoder needs to write pixels: the frame's words and size, and the set-up's
+// screen (Q(32-F).F) and depth-key formats.
+struct PlotTarget {
+  PlotTarget(Framebuffer& frame, const FrameSetup& setup)
       : pixel(frame.pixelData()),
         width(frame.width()),
         height(frame.height()),
         fraction_bits(setup.fraction_bits),
         depth_bias(setup.depth_bias),
         depth_shift(setup.depth_shift) {}
+
+  std::uint32_t* pixel;
+  std::int32_t width;
+  std::int32_t height;
+  int fraction_bits;
+  std::uint32_t depth_bias;
+  int depth_shift;
+};
+
+template <bool kChecked>
+struct FixedPlot : PlotTarget {
+  using PlotTarget::PlotTarget;
 
   // `p` in Q(32-F).F screen pixels; the pixel is p >> F (floor).
   void operator()(const Vec3& p, std::uint8_t palette_index) const {

@@ -17,6 +17,7 @@
 #include <cassert>
 
 #include "renderer/decode_algorithms.h"
+#include "renderer/framebuffer_plot.h"
 #include "renderer/render.h"
 #include "renderer/subtree_clip.h"
 
@@ -29,12 +30,7 @@ struct Cursor {
 };
 
 struct FastFrame {
-  std::uint32_t* pixel;
-  std::int32_t width;
-  std::int32_t height;
-  int fraction_bits;
-  std::uint32_t depth_bias;
-  int depth_shift;
+  PlotTarget target;
   int levels;  // the model depth
   const OffsetTable<std::int32_t>* offsets;
   SubtreeClip clip;
@@ -45,12 +41,12 @@ struct FastFrame {
 // A leaf parent at tree level `level` centred at `c` plots its children.
 template <bool kChecked>
 Cursor plotChildren(const FastFrame& f, int level, Vec3 c, Cursor at) {
-  std::uint32_t* const pixel = f.pixel;
-  const std::int32_t width = f.width;
-  const std::int32_t height = f.height;
-  const int shift = f.fraction_bits;
-  const std::uint32_t depth_bias = f.depth_bias;
-  const int depth_shift = f.depth_shift;
+  std::uint32_t* const pixel = f.target.pixel;
+  const std::int32_t width = f.target.width;
+  const std::int32_t height = f.target.height;
+  const int shift = f.target.fraction_bits;
+  const std::uint32_t depth_bias = f.target.depth_bias;
+  const int depth_shift = f.target.depth_shift;
   const auto& offsets = (*f.offsets)[static_cast<std::size_t>(level)];
   const std::uint8_t* leaf = at.leaf;
   for (unsigned mask = *at.node; mask != 0; mask &= mask - 1, ++leaf) {
@@ -110,9 +106,7 @@ bool renderFixedFast(const LevelView& level, const FrameSetup& setup, Framebuffe
                      const std::atomic<bool>* abort) {
   assert(level.depth == setup.depth);
   assert(frame.width() == setup.width && frame.height() == setup.height);
-  FastFrame f{frame.pixelData(), frame.width(), frame.height(), setup.fraction_bits,
-              setup.depth_bias, setup.depth_shift, setup.depth, &setup.child_offset,
-              SubtreeClip(setup), abort, false};
+  FastFrame f{PlotTarget(frame, setup), setup.depth, &setup.child_offset, SubtreeClip(setup), abort, false};
   visit<true>(f, 0, setup.root, {level.nodes.data(), level.leaves.data()});
   return !f.aborted;
 }

@@ -19,6 +19,7 @@
 #include <cassert>
 
 #include "renderer/decode_algorithms.h"
+#include "renderer/framebuffer_plot.h"
 #include "renderer/render.h"
 #include "renderer/subtree_clip.h"
 
@@ -50,24 +51,14 @@ constexpr int kBatch = 1024;  // points per batch: 8 KiB of indices and words, i
 struct SimdFrame {
   SimdFrame(const LevelView& level, const FrameSetup& setup, Framebuffer& frame,
             const std::atomic<bool>* abort_flag)
-      : pixel(frame.pixelData()),
-        width(frame.width()),
-        height(frame.height()),
-        fraction_bits(setup.fraction_bits),
-        depth_bias(setup.depth_bias),
-        depth_shift(setup.depth_shift),
+      : target(frame, setup),
         levels(setup.depth),
         offsets(&setup.child_offset),
         clip(setup),
         abort(abort_flag),
         leaf_end(level.leaves.data() + level.leaves.size()) {}
 
-  std::uint32_t* pixel;
-  std::int32_t width;
-  std::int32_t height;
-  int fraction_bits;
-  std::uint32_t depth_bias;
-  int depth_shift;
+  FixedPlot<true> target;  // also the checked plot of leaf parents on the frame's edge
   int levels;  // the model depth
   const OffsetTable<std::int32_t>* offsets;
   SubtreeClip clip;
@@ -82,7 +73,7 @@ struct SimdFrame {
 };
 
 __attribute__((target("avx2"))) void plotBatch(SimdFrame& f) {
-  std::uint32_t* const pixel = f.pixel;
+  std::uint32_t* const pixel = f.target.pixel;
   const std::uint32_t* const index = f.batch_index;
   const std::uint32_t* const word = f.batch_word;
   const int count = f.batched;
@@ -93,21 +84,11 @@ __attribute__((target("avx2"))) void plotBatch(SimdFrame& f) {
   f.batched = 0;
 }
 
-// The scalar plot with bounds checks (fixed_fast's loop): for leaf parents on the frame's edge.
-void plotChildrenChecked(SimdFrame& f, int level, Vec3 c, unsigned mask, const std::uint8_t*& leaf) {
+// The scalar plot with bounds checks: for leaf parents on the frame's edge.
+void plotChildrenChecked(const SimdFrame& f, int level, Vec3 c, unsigned mask, const std::uint8_t*& leaf) {
   const auto& offsets = (*f.offsets)[static_cast<std::size_t>(level)];
-  for (; mask != 0; mask &= mask - 1, ++leaf) {
-    const Vec3& d = offsets[static_cast<std::size_t>(std::countr_zero(mask))];
-    const std::int32_t x = (c.x + d.x) >> f.fraction_bits;  // Q(32-F).F -> pixel (floor)
-    const std::int32_t y = (c.y + d.y) >> f.fraction_bits;
-    if (static_cast<std::uint32_t>(x) >= static_cast<std::uint32_t>(f.width) ||
-        static_cast<std::uint32_t>(y) >= static_cast<std::uint32_t>(f.height)) {
-      continue;
-    }
-    std::uint32_t& word = f.pixel[static_cast<std::size_t>(y) * static_cast<std::size_t>(f.width) +
-                                  static_cast<std::size_t>(x)];
-    const std::uint32_t key = (static_cast<std::uint32_t>(c.z + d.z) + f.depth_bias) >> f.depth_shift;
-    word = std::min(word, Framebuffer::pack(key, *leaf));
+  for (; mask != 0; mask &= mask - 1) {
+    f.target(c + offsets[static_cast<std::size_t>(std::countr_zero(mask))], *leaf++);
   }
 }
 
@@ -123,10 +104,10 @@ __attribute__((target("avx2"))) inline LeafLanes leafLanes(const SimdFrame& f, i
   return {f.dx[l],
           f.dy[l],
           f.dz[l],
-          _mm256_set1_epi32(f.width),
-          _mm256_set1_epi32(static_cast<int>(f.depth_bias)),
-          _mm_cvtsi32_si128(f.fraction_bits),
-          _mm_cvtsi32_si128(f.depth_shift)};
+          _mm256_set1_epi32(f.target.width),
+          _mm256_set1_epi32(static_cast<int>(f.target.depth_bias)),
+          _mm_cvtsi32_si128(f.target.fraction_bits),
+          _mm_cvtsi32_si128(f.target.depth_shift)};
 }
 
 // A leaf parent centred at `c` whose children all land on screen writes their pixel indices and
