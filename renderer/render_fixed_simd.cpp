@@ -1,13 +1,17 @@
 // fixed_simd: the fastest integer decoder on x86-64 CPUs with AVX2 (listed only where the CPU has
 // it). Same frame as fixed_baseline, bit for bit: still integer only, eight lanes at a time.
 //
-// At depth 8 a frame is bound by two unpredictable decisions per leaf parent, not by arithmetic:
-// how many children it has (the exit of a set-bit loop) and, per child, whether it is nearer than
-// the pixel's point (about half are). This decoder removes both from the inner loop:
+// At depth 8 a frame is bound by unpredictable decisions, not by arithmetic: how many children a
+// node has (the exit of each set-bit loop) and, per leaf, whether it is nearer than the pixel's
+// point (about half are). This decoder removes them from the inner loops, or makes them rarer:
 // - Emit: a leaf parent computes all eight children's pixel indices and depth keys at once in
-//   32-bit lanes (add the level's offsets, shift by F, row * width + column), packs its colours in,
-//   and keeps the lanes of its set children by a per-mask permutation, appended to a batch with a
+//   32-bit lanes (add the offsets, shift by F, row * width + column), packs its colours in, and
+//   keeps the lanes of its set children by a per-mask permutation, appended to a batch with a
 //   store of fixed width: no loop over the children, no branch on the mask.
+// - Walk: the lowest three levels of a subtree on screen are two nested set-bit loops in one call,
+//   not a call per node. A grandparent's eight possible children's offsets are precomputed per
+//   axis as vectors (its own offset plus its child's eight), so a leaf parent's lanes are one add
+//   per axis from the grandparent's centre.
 // - Plot: the batch is written with an unsigned min per point (Framebuffer's packed word makes the
 //   z-test a min, and makes the result independent of the order points are drawn in).
 // Subtrees straddling the frame's edge, and a model's last leaves (the eight-byte colour load
@@ -48,6 +52,11 @@ constexpr std::array<LaneOrder, 256> kKeep = makeKeepTable();
 
 constexpr int kBatch = 1024;  // points per batch: 8 KiB of indices and words, in L1
 
+// The most leaves below one node whose subtree the unchecked walk emits in one call: a node three
+// levels above the leaves (8^3). A batch with less room left is plotted first.
+constexpr int kMostLeavesPerCall = 512;
+static_assert(kBatch >= kMostLeavesPerCall);
+
 struct SimdFrame {
   SimdFrame(const LevelView& level, const FrameSetup& setup, Framebuffer& frame,
             const std::atomic<bool>* abort_flag)
@@ -65,8 +74,12 @@ struct SimdFrame {
   const std::atomic<bool>* abort;
   bool aborted = false;
   const std::uint8_t* leaf_end;
-  // The offsets of each level's eight children, one axis per vector (Q(32-F).F); set by renderAvx2.
-  __m256i dx[format::kMaxDepth], dy[format::kMaxDepth], dz[format::kMaxDepth];
+  // Set by renderAvx2, per axis, in Q(32-F).F:
+  // child_lanes[a][l]: the offsets of a level-l node's eight children, one per lane;
+  // grandchild_lanes[a][l][k]: offset[l][k] plus child_lanes[a][l + 1], so that the eight children
+  // of a level-l node's child k are one add from the level-l centre.
+  __m256i child_lanes[3][format::kMaxDepth];
+  __m256i grandchild_lanes[3][format::kMaxDepth][8];
   int batched = 0;
   alignas(32) std::uint32_t batch_index[kBatch + 8];
   alignas(32) std::uint32_t batch_word[kBatch + 8];
@@ -77,10 +90,17 @@ __attribute__((target("avx2"))) void plotBatch(SimdFrame& f) {
   const std::uint32_t* const index = f.batch_index;
   const std::uint32_t* const word = f.batch_word;
   const int count = f.batched;
-  for (int i = 0; i < count; ++i) {
-    // Unconditional store of the min: the branch "is it nearer" would be a coin toss.
-    pixel[index[i]] = std::min(pixel[index[i]], word[i]);
+  // Unconditional store of the min: the branch "is it nearer" would be a coin toss. Neighbouring
+  // points often share a pixel, and each min then waits for the store before it; the batch's two
+  // halves, interleaved, are two independent chains (measured: 4% of the frame at depth 8).
+  const int half = count / 2;
+  for (int i = 0; i < half; ++i) {
+    const std::uint32_t first = index[i];
+    const std::uint32_t second = index[half + i];
+    pixel[first] = std::min(pixel[first], word[i]);
+    pixel[second] = std::min(pixel[second], word[half + i]);
   }
+  if (count % 2 != 0) pixel[index[count - 1]] = std::min(pixel[index[count - 1]], word[count - 1]);
   f.batched = 0;
 }
 
@@ -92,43 +112,62 @@ void plotChildrenChecked(const SimdFrame& f, int level, Vec3 c, unsigned mask, c
   }
 }
 
-// The leaf parents' level as vectors, loaded into registers once per grandparent.
+// Where the unchecked walk appends: the batch's two cursors and the next leaf's colour. Locals of
+// the caller, kept in registers: a store to the batch may alias any 32-bit field of SimdFrame.
+struct Emitter {
+  std::uint32_t* index;
+  std::uint32_t* word;
+  const std::uint8_t* colours;
+};
+
+// The frame's formats as vectors, loaded into registers once per call.
 struct LeafLanes {
-  __m256i dx, dy, dz;  // the eight children's offsets per axis (Q(32-F).F)
-  __m256i width, depth_bias;
+  __m256i width;
   __m128i fraction_bits, depth_shift;
 };
 
-__attribute__((target("avx2"))) inline LeafLanes leafLanes(const SimdFrame& f, int level) {
-  const auto l = static_cast<std::size_t>(level);
-  return {f.dx[l],
-          f.dy[l],
-          f.dz[l],
-          _mm256_set1_epi32(f.target.width),
-          _mm256_set1_epi32(static_cast<int>(f.target.depth_bias)),
-          _mm_cvtsi32_si128(f.target.fraction_bits),
+__attribute__((target("avx2"))) inline LeafLanes leafLanes(const SimdFrame& f) {
+  return {_mm256_set1_epi32(f.target.width), _mm_cvtsi32_si128(f.target.fraction_bits),
           _mm_cvtsi32_si128(f.target.depth_shift)};
 }
 
-// A leaf parent centred at `c` whose children all land on screen writes their pixel indices and
-// packed words to `index_out` and `word_out` (8 slots each) and returns how many it wrote. Its
-// set children's colours are the next popcount(mask) bytes at `colours`, already in kept order.
-__attribute__((target("avx2"))) inline int emitChildren(const LeafLanes& lanes, Vec3 c, unsigned mask,
-                                                         const std::uint8_t* colours,
-                                                         std::uint32_t* index_out, std::uint32_t* word_out) {
-  // Pixel column and row: floor((c + d) / 2^F); index = row * width + column (< 2^26).
-  const __m256i x = _mm256_sra_epi32(_mm256_add_epi32(_mm256_set1_epi32(c.x), lanes.dx), lanes.fraction_bits);
-  const __m256i y = _mm256_sra_epi32(_mm256_add_epi32(_mm256_set1_epi32(c.y), lanes.dy), lanes.fraction_bits);
-  const __m256i index = _mm256_add_epi32(_mm256_mullo_epi32(y, lanes.width), x);
+// A leaf parent whose children all land on screen, given its eight children's positions per axis
+// (x, y in Q(32-F).F; z in Q(32-F).F plus the depth bias), appends its set children (`mask`) to
+// the batch, their colours being the next popcount(mask) bytes at out.colours.
+__attribute__((target("avx2"), always_inline)) inline void emitChildren(const LeafLanes& lanes, __m256i x, __m256i y,
+                                                          __m256i biased_z, unsigned mask, Emitter& out) {
+  // Pixel column and row: floor(x / 2^F); index = row * width + column (< 2^26).
+  const __m256i column = _mm256_sra_epi32(x, lanes.fraction_bits);
+  const __m256i row = _mm256_sra_epi32(y, lanes.fraction_bits);
+  const __m256i index = _mm256_add_epi32(_mm256_mullo_epi32(row, lanes.width), column);
   // Depth key (FrameSetup::depthKey): (z + bias) >> shift, unsigned, mod 2^32.
-  const __m256i z = _mm256_add_epi32(_mm256_set1_epi32(c.z), lanes.dz);
-  const __m256i key = _mm256_srl_epi32(_mm256_add_epi32(z, lanes.depth_bias), lanes.depth_shift);
+  const __m256i key = _mm256_srl_epi32(biased_z, lanes.depth_shift);
   const __m256i keep = _mm256_cvtepu8_epi32(_mm_loadl_epi64(reinterpret_cast<const __m128i*>(&kKeep[mask])));
-  const __m256i colour = _mm256_cvtepu8_epi32(_mm_loadl_epi64(reinterpret_cast<const __m128i*>(colours)));
+  const __m256i colour = _mm256_cvtepu8_epi32(_mm_loadl_epi64(reinterpret_cast<const __m128i*>(out.colours)));
   const __m256i word = _mm256_or_si256(_mm256_slli_epi32(_mm256_permutevar8x32_epi32(key, keep), 8), colour);
-  _mm256_storeu_si256(reinterpret_cast<__m256i*>(index_out), _mm256_permutevar8x32_epi32(index, keep));
-  _mm256_storeu_si256(reinterpret_cast<__m256i*>(word_out), word);
-  return std::popcount(mask);
+  _mm256_storeu_si256(reinterpret_cast<__m256i*>(out.index), _mm256_permutevar8x32_epi32(index, keep));
+  _mm256_storeu_si256(reinterpret_cast<__m256i*>(out.word), word);
+  const int children = std::popcount(mask);
+  out.index += children;
+  out.word += children;
+  out.colours += children;
+}
+
+// The leaf parents below a grandparent at `level`, centred at `c`, with child mask `mask` (already
+// read), whose subtree is on screen: reads their masks from `node` on, returns the node after.
+__attribute__((target("avx2"), always_inline)) inline const std::uint8_t* emitGrandparent(const SimdFrame& f, const LeafLanes& lanes,
+                                                                             int level, Vec3 c, unsigned mask,
+                                                                             const std::uint8_t* node, Emitter& out) {
+  const auto l = static_cast<std::size_t>(level);
+  const __m256i cx = _mm256_set1_epi32(c.x);
+  const __m256i cy = _mm256_set1_epi32(c.y);
+  const __m256i biased_cz = _mm256_set1_epi32(static_cast<std::int32_t>(static_cast<std::uint32_t>(c.z) + f.target.depth_bias));
+  for (; mask != 0; mask &= mask - 1) {
+    const auto k = static_cast<std::size_t>(std::countr_zero(mask));
+    emitChildren(lanes, _mm256_add_epi32(cx, f.grandchild_lanes[0][l][k]), _mm256_add_epi32(cy, f.grandchild_lanes[1][l][k]),
+                 _mm256_add_epi32(biased_cz, f.grandchild_lanes[2][l][k]), *node++, out);
+  }
+  return node;
 }
 
 template <bool kChecked>
@@ -147,40 +186,42 @@ __attribute__((target("avx2"))) const std::uint8_t* visit(SimdFrame& f, int leve
     }
   }
   unsigned mask = *node++;
-  if (level + 1 == f.levels) {
-    // The eight-byte colour load must stay inside the stream.
-    if (kChecked || f.leaf_end - leaf < 8) {
-      plotChildrenChecked(f, level, c, mask, leaf);
+  const int levels_below = f.levels - level;  // 1: a leaf parent, 2: a grandparent, 3: above that
+  // Emitting several levels in one call skips the polls of the levels below: only from the poll's
+  // level on, or when nobody can abort.
+  const bool may_inline = level >= kAbortCheckLevel || f.abort == nullptr;
+  // The unchecked emit loads eight colour bytes per leaf parent: at most the subtree's last leaf
+  // plus 7 of its siblings' slots, so up to 8^(levels below) bytes from `leaf` must be in the stream.
+  if (!kChecked && may_inline && levels_below <= 3 && f.leaf_end - leaf >= (std::ptrdiff_t{1} << (3 * levels_below))) {
+    if (f.batched > kBatch - kMostLeavesPerCall) plotBatch(f);
+    const LeafLanes lanes = leafLanes(f);
+    Emitter out{f.batch_index + f.batched, f.batch_word + f.batched, leaf};
+    if (levels_below == 1) {
+      const auto l = static_cast<std::size_t>(level);
+      emitChildren(lanes, _mm256_add_epi32(_mm256_set1_epi32(c.x), f.child_lanes[0][l]),
+                   _mm256_add_epi32(_mm256_set1_epi32(c.y), f.child_lanes[1][l]),
+                   _mm256_add_epi32(_mm256_set1_epi32(static_cast<std::int32_t>(static_cast<std::uint32_t>(c.z) + f.target.depth_bias)),
+                                    f.child_lanes[2][l]),
+                   mask, out);
+    } else if (levels_below == 2) {
+      node = emitGrandparent(f, lanes, level, c, mask, node, out);
     } else {
-      if (f.batched > kBatch - 8) plotBatch(f);
-      const int children = emitChildren(leafLanes(f, level), c, mask, leaf, f.batch_index + f.batched,
-                                        f.batch_word + f.batched);
-      f.batched += children;
-      leaf += children;
+      const auto& offsets = (*f.offsets)[static_cast<std::size_t>(level)];
+      for (; mask != 0; mask &= mask - 1) {
+        const unsigned grandparent_mask = *node++;
+        node = emitGrandparent(f, lanes, level + 1, c + offsets[static_cast<std::size_t>(std::countr_zero(mask))],
+                               grandparent_mask, node, out);
+      }
     }
+    f.batched = static_cast<int>(out.index - f.batch_index);
+    leaf = out.colours;
+    return node;
+  }
+  if (levels_below == 1) {
+    plotChildrenChecked(f, level, c, mask, leaf);
     return node;
   }
   const auto& offsets = (*f.offsets)[static_cast<std::size_t>(level)];
-  if (!kChecked && level + 2 == f.levels && f.leaf_end - leaf >= 64) {
-    // Leaf parents below, all on screen, with their at most 64 colours inside the stream: emit
-    // them here, no call each (calls were half the time).
-    if (f.batched > kBatch - 64) plotBatch(f);
-    const LeafLanes lanes = leafLanes(f, level + 1);
-    // Cursors in locals: a store to the batch may alias any 32-bit field of `f`.
-    std::uint32_t* index_out = f.batch_index + f.batched;
-    std::uint32_t* word_out = f.batch_word + f.batched;
-    const std::uint8_t* colours = leaf;
-    for (; mask != 0; mask &= mask - 1) {
-      const Vec3 centre = c + offsets[static_cast<std::size_t>(std::countr_zero(mask))];
-      const int children = emitChildren(lanes, centre, *node++, colours, index_out, word_out);
-      index_out += children;
-      word_out += children;
-      colours += children;
-    }
-    f.batched = static_cast<int>(index_out - f.batch_index);
-    leaf = colours;
-    return node;
-  }
   for (; mask != 0; mask &= mask - 1) {
     node = visit<kChecked>(f, level + 1, c + offsets[static_cast<std::size_t>(std::countr_zero(mask))], node, leaf);
   }
@@ -189,18 +230,26 @@ __attribute__((target("avx2"))) const std::uint8_t* visit(SimdFrame& f, int leve
 
 __attribute__((target("avx2"))) bool renderAvx2(const LevelView& level, const FrameSetup& setup,
                                                 Framebuffer& frame, const std::atomic<bool>* abort) {
-  SimdFrame state(level, setup, frame, abort);  // about 10 KiB with the batch; drawing never allocates
+  SimdFrame state(level, setup, frame, abort);  // about 21 KiB with the batch; drawing never allocates
   SimdFrame* const f = &state;
-  for (std::size_t l = 0; l < static_cast<std::size_t>(setup.depth); ++l) {
+  const auto depth = static_cast<std::size_t>(setup.depth);
+  for (std::size_t l = 0; l < depth; ++l) {
     alignas(32) std::int32_t axis[3][8];
     for (std::size_t k = 0; k < 8; ++k) {
       axis[0][k] = setup.child_offset[l][k].x;
       axis[1][k] = setup.child_offset[l][k].y;
       axis[2][k] = setup.child_offset[l][k].z;
     }
-    f->dx[l] = _mm256_load_si256(reinterpret_cast<const __m256i*>(axis[0]));
-    f->dy[l] = _mm256_load_si256(reinterpret_cast<const __m256i*>(axis[1]));
-    f->dz[l] = _mm256_load_si256(reinterpret_cast<const __m256i*>(axis[2]));
+    for (std::size_t a = 0; a < 3; ++a) f->child_lanes[a][l] = _mm256_load_si256(reinterpret_cast<const __m256i*>(axis[a]));
+  }
+  for (std::size_t l = 0; l + 1 < depth; ++l) {
+    for (std::size_t k = 0; k < 8; ++k) {
+      const Vec3& d = setup.child_offset[l][k];
+      // Modular int32 adds, as the scalar walk's: (c + d) + e == c + (d + e) bit for bit.
+      f->grandchild_lanes[0][l][k] = _mm256_add_epi32(_mm256_set1_epi32(d.x), f->child_lanes[0][l + 1]);
+      f->grandchild_lanes[1][l][k] = _mm256_add_epi32(_mm256_set1_epi32(d.y), f->child_lanes[1][l + 1]);
+      f->grandchild_lanes[2][l][k] = _mm256_add_epi32(_mm256_set1_epi32(d.z), f->child_lanes[2][l + 1]);
+    }
   }
   const std::uint8_t* leaf = level.leaves.data();
   visit<true>(*f, 0, setup.root, level.nodes.data(), leaf);
