@@ -16,7 +16,7 @@ constexpr std::array kVariants = {
     VariantInfo{Variant::kFixedFast, "fixed_fast",
                 "clipped, state in registers, no call per leaf parent: the fastest portable one"},
     VariantInfo{Variant::kFixedSimd, "fixed_simd",
-                "fixed_fast's walk, eight children at once in AVX2 lanes, batched branch-free plot (x86-64)"},
+                "clipped walk, three levels per call, eight children at once in AVX2 lanes, branch-free batched plot (x86-64)"},
     VariantInfo{Variant::kFloatBaseline, "float_baseline", "Algorithm 1 in floating point (reference)"},
     VariantInfo{Variant::kFloatLeafCall, "float_leafcall", "Algorithm 2 in floating point (reference)"},
     VariantInfo{Variant::kFloatUnrolled, "float_unrolled", "Algorithm 2 unrolled, floating point (reference)"},

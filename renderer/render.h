@@ -21,7 +21,7 @@ enum class Variant {
   kFixedSetBits,   // Algorithm 2 visiting only the set bits of each mask
   kFixedClipped,   // set bits + hierarchical clipping: no bounds checks for subtrees on screen
   kFixedFast,      // clipped, state in registers, no call per leaf parent: the fastest portable one
-  kFixedSimd,      // fixed_fast's walk, eight children at once in AVX2 lanes, batched branch-free plot
+  kFixedSimd,      // clipped walk, three levels per call, eight children at once in AVX2 lanes, batched min plot
   kFloatBaseline,  // floating point reference of Algorithm 1
   kFloatLeafCall,  // floating point reference of Algorithm 2
   kFloatUnrolled,  // floating point reference of Algorithm 2, unrolled
