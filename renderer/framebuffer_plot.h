@@ -22,6 +22,10 @@ struct PlotTarget {
         depth_bias(setup.depth_bias),
         depth_shift(setup.depth_shift) {}
 
+  // FrameSetup::depthKey in two steps: z (Q(32-F).F) plus the bias, mod 2^32, then the shift.
+  std::uint32_t biasedDepth(std::int32_t z) const { return static_cast<std::uint32_t>(z) + depth_bias; }
+  std::uint32_t depthKey(std::int32_t z) const { return biasedDepth(z) >> depth_shift; }
+
   std::uint32_t* pixel;
   std::int32_t width;
   std::int32_t height;
@@ -48,9 +52,7 @@ struct FixedPlot : PlotTarget {
     }
     const std::size_t at = static_cast<std::size_t>(y) * static_cast<std::size_t>(width) +
                            static_cast<std::size_t>(x);
-    // FrameSetup::depthKey, inline: (z + bias) >> shift, mod 2^32.
-    const std::uint32_t key = (static_cast<std::uint32_t>(p.z) + depth_bias) >> depth_shift;
-    const std::uint32_t word = Framebuffer::pack(key, palette_index);
+    const std::uint32_t word = Framebuffer::pack(depthKey(p.z), palette_index);
     if (word < pixel[at]) pixel[at] = word;
   }
 };

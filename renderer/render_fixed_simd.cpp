@@ -68,7 +68,7 @@ struct SimdFrame {
         leaf_end(level.leaves.data() + level.leaves.size()) {}
 
   FixedPlot<true> target;  // also the checked plot of leaf parents on the frame's edge
-  int levels;  // the model depth
+  int levels;              // the model depth
   const OffsetTable<std::int32_t>* offsets;
   SubtreeClip clip;
   const std::atomic<bool>* abort;
@@ -105,7 +105,8 @@ __attribute__((target("avx2"))) void plotBatch(SimdFrame& f) {
 }
 
 // The scalar plot with bounds checks: for leaf parents on the frame's edge.
-void plotChildrenChecked(const SimdFrame& f, int level, Vec3 c, unsigned mask, const std::uint8_t*& leaf) {
+void plotChildrenChecked(const SimdFrame& f, int level, Vec3 c, unsigned mask,
+                         const std::uint8_t*& leaf) {
   const auto& offsets = (*f.offsets)[static_cast<std::size_t>(level)];
   for (; mask != 0; mask &= mask - 1) {
     f.target(c + offsets[static_cast<std::size_t>(std::countr_zero(mask))], *leaf++);
@@ -131,21 +132,31 @@ __attribute__((target("avx2"))) inline LeafLanes leafLanes(const SimdFrame& f) {
           _mm_cvtsi32_si128(f.target.depth_shift)};
 }
 
+// The centre's z plus the depth bias (PlotTarget::biasedDepth) in every lane: adding a child's
+// offset wraps mod 2^32 as the scalar key does, and the key is one shift away.
+__attribute__((target("avx2"))) inline __m256i biasedDepthLanes(const SimdFrame& f, Vec3 c) {
+  return _mm256_set1_epi32(static_cast<std::int32_t>(f.target.biasedDepth(c.z)));
+}
+
 // A leaf parent whose children all land on screen, given its eight children's positions per axis
 // (x, y in Q(32-F).F; z in Q(32-F).F plus the depth bias), appends its set children (`mask`) to
 // the batch, their colours being the next popcount(mask) bytes at out.colours.
-__attribute__((target("avx2"), always_inline)) inline void emitChildren(const LeafLanes& lanes, __m256i x, __m256i y,
-                                                          __m256i biased_z, unsigned mask, Emitter& out) {
+__attribute__((target("avx2"), always_inline)) inline void emitChildren(
+    const LeafLanes& lanes, __m256i x, __m256i y, __m256i biased_z, unsigned mask, Emitter& out) {
   // Pixel column and row: floor(x / 2^F); index = row * width + column (< 2^26).
   const __m256i column = _mm256_sra_epi32(x, lanes.fraction_bits);
   const __m256i row = _mm256_sra_epi32(y, lanes.fraction_bits);
   const __m256i index = _mm256_add_epi32(_mm256_mullo_epi32(row, lanes.width), column);
   // Depth key (FrameSetup::depthKey): (z + bias) >> shift, unsigned, mod 2^32.
   const __m256i key = _mm256_srl_epi32(biased_z, lanes.depth_shift);
-  const __m256i keep = _mm256_cvtepu8_epi32(_mm_loadl_epi64(reinterpret_cast<const __m128i*>(&kKeep[mask])));
-  const __m256i colour = _mm256_cvtepu8_epi32(_mm_loadl_epi64(reinterpret_cast<const __m128i*>(out.colours)));
-  const __m256i word = _mm256_or_si256(_mm256_slli_epi32(_mm256_permutevar8x32_epi32(key, keep), 8), colour);
-  _mm256_storeu_si256(reinterpret_cast<__m256i*>(out.index), _mm256_permutevar8x32_epi32(index, keep));
+  const __m256i keep =
+      _mm256_cvtepu8_epi32(_mm_loadl_epi64(reinterpret_cast<const __m128i*>(&kKeep[mask])));
+  const __m256i colour =
+      _mm256_cvtepu8_epi32(_mm_loadl_epi64(reinterpret_cast<const __m128i*>(out.colours)));
+  const __m256i word =
+      _mm256_or_si256(_mm256_slli_epi32(_mm256_permutevar8x32_epi32(key, keep), 8), colour);
+  _mm256_storeu_si256(reinterpret_cast<__m256i*>(out.index),
+                      _mm256_permutevar8x32_epi32(index, keep));
   _mm256_storeu_si256(reinterpret_cast<__m256i*>(out.word), word);
   const int children = std::popcount(mask);
   out.index += children;
@@ -155,16 +166,17 @@ __attribute__((target("avx2"), always_inline)) inline void emitChildren(const Le
 
 // The leaf parents below a grandparent at `level`, centred at `c`, with child mask `mask` (already
 // read), whose subtree is on screen: reads their masks from `node` on, returns the node after.
-__attribute__((target("avx2"), always_inline)) inline const std::uint8_t* emitGrandparent(const SimdFrame& f, const LeafLanes& lanes,
-                                                                             int level, Vec3 c, unsigned mask,
-                                                                             const std::uint8_t* node, Emitter& out) {
+__attribute__((target("avx2"), always_inline)) inline const std::uint8_t* emitGrandparent(
+    const SimdFrame& f, const LeafLanes& lanes, int level, Vec3 c, unsigned mask,
+    const std::uint8_t* node, Emitter& out) {
   const auto l = static_cast<std::size_t>(level);
   const __m256i cx = _mm256_set1_epi32(c.x);
   const __m256i cy = _mm256_set1_epi32(c.y);
-  const __m256i biased_cz = _mm256_set1_epi32(static_cast<std::int32_t>(static_cast<std::uint32_t>(c.z) + f.target.depth_bias));
+  const __m256i biased_cz = biasedDepthLanes(f, c);
   for (; mask != 0; mask &= mask - 1) {
     const auto k = static_cast<std::size_t>(std::countr_zero(mask));
-    emitChildren(lanes, _mm256_add_epi32(cx, f.grandchild_lanes[0][l][k]), _mm256_add_epi32(cy, f.grandchild_lanes[1][l][k]),
+    emitChildren(lanes, _mm256_add_epi32(cx, f.grandchild_lanes[0][l][k]),
+                 _mm256_add_epi32(cy, f.grandchild_lanes[1][l][k]),
                  _mm256_add_epi32(biased_cz, f.grandchild_lanes[2][l][k]), *node++, out);
   }
   return node;
@@ -172,17 +184,22 @@ __attribute__((target("avx2"), always_inline)) inline const std::uint8_t* emitGr
 
 template <bool kChecked>
 __attribute__((target("avx2"))) const std::uint8_t* visit(SimdFrame& f, int level, Vec3 c,
-                                                           const std::uint8_t* node,
-                                                           const std::uint8_t*& leaf) {
+                                                          const std::uint8_t* node,
+                                                          const std::uint8_t*& leaf) {
   if (level <= kAbortCheckLevel && f.abort != nullptr) {
-    if (!f.aborted && level == kAbortCheckLevel) f.aborted = f.abort->load(std::memory_order_relaxed);
+    if (!f.aborted && level == kAbortCheckLevel)
+      f.aborted = f.abort->load(std::memory_order_relaxed);
     if (f.aborted) return node;
   }
   if constexpr (kChecked) {
     switch (f.clip.classify(level, c)) {
-      case Clip::kOutside: skipSubtree(node, leaf, level, f.levels); return node;
-      case Clip::kInside: return visit<false>(f, level, c, node, leaf);
-      case Clip::kStraddling: break;
+      case Clip::kOutside:
+        skipSubtree(node, leaf, level, f.levels);
+        return node;
+      case Clip::kInside:
+        return visit<false>(f, level, c, node, leaf);
+      case Clip::kStraddling:
+        break;
     }
   }
   unsigned mask = *node++;
@@ -190,9 +207,11 @@ __attribute__((target("avx2"))) const std::uint8_t* visit(SimdFrame& f, int leve
   // Emitting several levels in one call skips the polls of the levels below: only from the poll's
   // level on, or when nobody can abort.
   const bool may_inline = level >= kAbortCheckLevel || f.abort == nullptr;
-  // The unchecked emit loads eight colour bytes per leaf parent: at most the subtree's last leaf
-  // plus 7 of its siblings' slots, so up to 8^(levels below) bytes from `leaf` must be in the stream.
-  if (!kChecked && may_inline && levels_below <= 3 && f.leaf_end - leaf >= (std::ptrdiff_t{1} << (3 * levels_below))) {
+  // The unchecked emit loads eight colour bytes per leaf parent, from its first leaf on: for the
+  // subtree's last leaf parent that ends at most 8^(levels below) bytes from `leaf`, which must
+  // still be in the stream.
+  if (!kChecked && may_inline && levels_below <= 3 &&
+      f.leaf_end - leaf >= (std::ptrdiff_t{1} << (3 * levels_below))) {
     if (f.batched > kBatch - kMostLeavesPerCall) plotBatch(f);
     const LeafLanes lanes = leafLanes(f);
     Emitter out{f.batch_index + f.batched, f.batch_word + f.batched, leaf};
@@ -200,16 +219,15 @@ __attribute__((target("avx2"))) const std::uint8_t* visit(SimdFrame& f, int leve
       const auto l = static_cast<std::size_t>(level);
       emitChildren(lanes, _mm256_add_epi32(_mm256_set1_epi32(c.x), f.child_lanes[0][l]),
                    _mm256_add_epi32(_mm256_set1_epi32(c.y), f.child_lanes[1][l]),
-                   _mm256_add_epi32(_mm256_set1_epi32(static_cast<std::int32_t>(static_cast<std::uint32_t>(c.z) + f.target.depth_bias)),
-                                    f.child_lanes[2][l]),
-                   mask, out);
+                   _mm256_add_epi32(biasedDepthLanes(f, c), f.child_lanes[2][l]), mask, out);
     } else if (levels_below == 2) {
       node = emitGrandparent(f, lanes, level, c, mask, node, out);
     } else {
       const auto& offsets = (*f.offsets)[static_cast<std::size_t>(level)];
       for (; mask != 0; mask &= mask - 1) {
         const unsigned grandparent_mask = *node++;
-        node = emitGrandparent(f, lanes, level + 1, c + offsets[static_cast<std::size_t>(std::countr_zero(mask))],
+        node = emitGrandparent(f, lanes, level + 1,
+                               c + offsets[static_cast<std::size_t>(std::countr_zero(mask))],
                                grandparent_mask, node, out);
       }
     }
@@ -223,14 +241,17 @@ __attribute__((target("avx2"))) const std::uint8_t* visit(SimdFrame& f, int leve
   }
   const auto& offsets = (*f.offsets)[static_cast<std::size_t>(level)];
   for (; mask != 0; mask &= mask - 1) {
-    node = visit<kChecked>(f, level + 1, c + offsets[static_cast<std::size_t>(std::countr_zero(mask))], node, leaf);
+    node = visit<kChecked>(
+        f, level + 1, c + offsets[static_cast<std::size_t>(std::countr_zero(mask))], node, leaf);
   }
   return node;
 }
 
 __attribute__((target("avx2"))) bool renderAvx2(const LevelView& level, const FrameSetup& setup,
-                                                Framebuffer& frame, const std::atomic<bool>* abort) {
-  SimdFrame state(level, setup, frame, abort);  // about 21 KiB with the batch; drawing never allocates
+                                                Framebuffer& frame,
+                                                const std::atomic<bool>* abort) {
+  SimdFrame state(level, setup, frame,
+                  abort);  // about 21 KiB with the batch; drawing never allocates
   SimdFrame* const f = &state;
   const auto depth = static_cast<std::size_t>(setup.depth);
   for (std::size_t l = 0; l < depth; ++l) {
@@ -240,15 +261,19 @@ __attribute__((target("avx2"))) bool renderAvx2(const LevelView& level, const Fr
       axis[1][k] = setup.child_offset[l][k].y;
       axis[2][k] = setup.child_offset[l][k].z;
     }
-    for (std::size_t a = 0; a < 3; ++a) f->child_lanes[a][l] = _mm256_load_si256(reinterpret_cast<const __m256i*>(axis[a]));
+    for (std::size_t a = 0; a < 3; ++a)
+      f->child_lanes[a][l] = _mm256_load_si256(reinterpret_cast<const __m256i*>(axis[a]));
   }
   for (std::size_t l = 0; l + 1 < depth; ++l) {
     for (std::size_t k = 0; k < 8; ++k) {
       const Vec3& d = setup.child_offset[l][k];
-      // Modular int32 adds, as the scalar walk's: (c + d) + e == c + (d + e) bit for bit.
-      f->grandchild_lanes[0][l][k] = _mm256_add_epi32(_mm256_set1_epi32(d.x), f->child_lanes[0][l + 1]);
-      f->grandchild_lanes[1][l][k] = _mm256_add_epi32(_mm256_set1_epi32(d.y), f->child_lanes[1][l + 1]);
-      f->grandchild_lanes[2][l][k] = _mm256_add_epi32(_mm256_set1_epi32(d.z), f->child_lanes[2][l + 1]);
+      // Lanes add mod 2^32, so c + (d + e) is the scalar walk's (c + d) + e, bit for bit.
+      f->grandchild_lanes[0][l][k] =
+          _mm256_add_epi32(_mm256_set1_epi32(d.x), f->child_lanes[0][l + 1]);
+      f->grandchild_lanes[1][l][k] =
+          _mm256_add_epi32(_mm256_set1_epi32(d.y), f->child_lanes[1][l + 1]);
+      f->grandchild_lanes[2][l][k] =
+          _mm256_add_epi32(_mm256_set1_epi32(d.z), f->child_lanes[2][l + 1]);
     }
   }
   const std::uint8_t* leaf = level.leaves.data();
