@@ -18,6 +18,11 @@ void putLabel(cv::Mat& image, const std::string& text, cv::Point at) {
 
 }  // namespace
 
+std::int64_t contactSheetPixels(const ModelView& model, const Camera& camera, int yaw_count) {
+  const std::int64_t rows = std::int64_t{model.levelCount()} * 2;
+  return rows * (camera.height + kLabelHeight) * yaw_count * std::int64_t{camera.width};
+}
+
 cv::Mat renderContactSheet(const ModelView& model, const Camera& camera, int yaw_count,
                            Variant variant, Rgb background) {
   const int rows = model.levelCount() * 2;

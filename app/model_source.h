@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "cli/input_file.h"
 #include "renderer/model.h"
 
 namespace octopoint {
@@ -17,6 +18,9 @@ namespace octopoint {
 struct ModelLoadError : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
+
+// A model file: a regular file of at most 1 GiB (cli/input_file.h), stated in the tools' --help.
+inline constexpr cli::InputKind kModelFileInput{"model file", cli::kGiB};
 
 struct LoadedModel {
   std::vector<std::uint8_t> file_bytes;  // the .oct image the view points into (empty if embedded)

@@ -1,15 +1,11 @@
 // octopoint-render: draws a model (embedded in this binary, or a `.oct` file) to a PNG.
-#include <cerrno>
-#include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
-#include <fstream>
 #include <iostream>
 #include <optional>
-#include <stdexcept>
 #include <string>
-#include <unistd.h>
 #include <vector>
 
 #include <opencv2/imgcodecs.hpp>
@@ -17,6 +13,13 @@
 
 #include "app/contact_sheet.h"
 #include "app/model_source.h"
+#include "cli/arguments.h"
+#include "cli/error.h"
+#include "cli/numbers.h"
+#include "cli/output_file.h"
+#include "cli/real_numbers.h"
+#include "cli/run_tool.h"
+#include "cli/text.h"
 #include "models/registry.h"
 #include "renderer/camera.h"
 #include "renderer/framebuffer.h"
@@ -36,30 +39,33 @@ Draws an octopoint model with the integer renderer and writes it as a PNG. With 
 nor --file it draws the default model embedded in this binary.
 
   --model NAME       an embedded model (see --list)
-  --file M.oct       a model file written by octopoint-prepare; it is validated before drawing
-  --yaw DEG          turn about the vertical axis (default 0; the scan as its sensor saw it)
+  --file M.oct       a model file written by octopoint-prepare (a regular file of at most 1 GiB);
+                     it is validated before drawing
+  --yaw DEG          turn about the vertical axis, |DEG| <= 1e6 (default 0; the scan as its
+                     sensor saw it)
   --pitch DEG        turn about the horizontal axis (default 0)
   --roll DEG         turn about the viewing axis (default 0)
-  --zoom X           magnification, > 0 (default 1: the model cube spans the shorter side)
-  --size WxH         framebuffer size in pixels, each 1..8192 (default 320x240)
-  --depth N          which of the model's depths to draw (default: the finest)
+  --zoom X           magnification, 1/65536..32767 (default 1: the model cube spans the shorter
+                     side)
+  --size WxH         framebuffer size in pixels, each side 1..8192 and at most 16777216 pixels
+                     (4096x4096) in all (default 320x240)
+  --depth N          which of the model's depths to draw, 1..16 (default: the finest)
   --variant NAME     decoder variant (default fixed_baseline; see --list)
   --fill, --no-fill  scanline hole filling after decoding, as the paper does (default --fill;
                      docs/holefill.md)
   --sheet N          a contact sheet instead: N yaw angles (1..36) in columns, each depth of
-                     the model unfilled and filled in rows
-  -o, --output FILE  the PNG to write (written whole or not at all)
+                     the model unfilled and filled in rows; the whole sheet may have at most
+                     16777216 pixels (e.g. --sheet 6 at 640x480 for two depths)
+  -o, --output FILE  the PNG to write (written whole or not at all); if it exists it must be a
+                     regular file (a device or FIFO is refused)
   --list             list the embedded models and the decoder variants
   -h, --help         show this help
 
-On any error prints one line on stderr and exits with status 1, writing nothing.
+Numbers are parsed whole and range-checked. On any error prints one line on stderr and exits
+with status 1, writing nothing.
 )";
 
 constexpr Rgb kBackground{236, 236, 240};  // light grey: range scans are often dark
-
-struct UsageError : std::runtime_error {
-  using std::runtime_error::runtime_error;
-};
 
 struct Options {
   std::string model_name;
@@ -73,90 +79,59 @@ struct Options {
   int sheet = 0;  // yaw angles of the contact sheet; 0: a single view
 };
 
-double parseNumber(const std::string& flag, const std::string& text) {
-  errno = 0;
-  char* end = nullptr;
-  const double value = std::strtod(text.c_str(), &end);
-  if (text.empty() || *end != '\0' || errno != 0 || !std::isfinite(value)) {
-    throw UsageError(flag + ": '" + text + "' is not a number");
-  }
-  return value;
-}
-
-Angle parseDegrees(const std::string& flag, const std::string& text) {
-  const double degrees = parseNumber(flag, text);
-  if (std::fabs(degrees) > 1e9) throw UsageError(flag + ": '" + text + "' is out of range");
-  // Host-side parsing only: the renderer sees the integer angle (1/65536 turn).
-  return Angle::fromMilliDegrees(std::llround(degrees * 1000));
-}
+// Every image this tool writes has at most this many pixels (a frame: 64 MiB of framebuffer,
+// 48 MiB of RGB), whatever its shape; a contact sheet's cells and labels count together.
+constexpr std::int64_t kMaxOutputPixels = std::int64_t{4096} * 4096;
 
 Options parseOptions(int argc, char** argv) {
   Options options;
-  for (int i = 1; i < argc; ++i) {
-    const std::string arg = argv[i];
-    auto value = [&]() -> std::string {
-      if (i + 1 >= argc) throw UsageError(arg + ": missing value (see --help)");
-      return argv[++i];
-    };
-    if (arg == "-h" || arg == "--help") {
+  cli::ArgumentReader args(argc, argv);
+  while (args.next()) {
+    if (args.is("-h") || args.is("--help")) {
       std::cout << kUsage;
       std::exit(0);
-    } else if (arg == "--list") {
+    } else if (args.is("--list")) {
+      args.noValue();
       options.list = true;
-    } else if (arg == "--model") {
-      options.model_name = value();
-    } else if (arg == "--file") {
-      options.model_file = value();
-    } else if (arg == "--yaw") {
-      options.camera.yaw = parseDegrees(arg, value());
-    } else if (arg == "--pitch") {
-      options.camera.pitch = parseDegrees(arg, value());
-    } else if (arg == "--roll") {
-      options.camera.roll = parseDegrees(arg, value());
-    } else if (arg == "--zoom") {
-      const std::string text = value();
-      const double zoom = parseNumber(arg, text);
-      const double raw = std::round(zoom * Q16::kOneRaw);
-      if (!(raw >= 1) || raw > 2147483647.0) {
-        throw UsageError("--zoom: '" + text + "' is outside the supported range (2^-16 .. 32767)");
-      }
-      options.camera.zoom = Q16::fromRaw(static_cast<std::int32_t>(raw));
-    } else if (arg == "--size") {
-      const std::string text = value();
-      int width = 0, height = 0;
-      char tail = 0;
-      if (std::sscanf(text.c_str(), "%dx%d%c", &width, &height, &tail) != 2 || width < 1 ||
-          height < 1 || width > kMaxViewportSide || height > kMaxViewportSide) {
-        throw UsageError("--size: '" + text + "' is not WxH with each side in 1..8192");
-      }
-      options.camera.width = width;
-      options.camera.height = height;
-    } else if (arg == "--depth") {
-      options.depth = static_cast<int>(parseNumber(arg, value()));
-    } else if (arg == "--variant") {
-      const std::string name = value();
+    } else if (args.is("--model")) {
+      options.model_name = args.value();
+    } else if (args.is("--file")) {
+      options.model_file = args.value();
+    } else if (args.is("--yaw")) {
+      options.camera.yaw = cli::parseDegrees(args.name(), args.value());
+    } else if (args.is("--pitch")) {
+      options.camera.pitch = cli::parseDegrees(args.name(), args.value());
+    } else if (args.is("--roll")) {
+      options.camera.roll = cli::parseDegrees(args.name(), args.value());
+    } else if (args.is("--zoom")) {
+      options.camera.zoom = cli::parseZoom(args.name(), args.value());
+    } else if (args.is("--size")) {
+      const cli::FrameSize size =
+          cli::parseFrameSize(args.name(), args.value(), 1, kMaxViewportSide, kMaxOutputPixels);
+      options.camera.width = size.width;
+      options.camera.height = size.height;
+    } else if (args.is("--depth")) {
+      options.depth = cli::parseInt(args.name(), args.value(), 1, format::kMaxDepth);
+    } else if (args.is("--variant")) {
+      const std::string name = args.value();
       const std::optional<Variant> variant = variantFromName(name);
-      if (!variant) throw UsageError("--variant: unknown variant '" + name + "' (see --list)");
+      if (!variant) throw cli::Error("--variant: unknown variant " + cli::inQuotes(name) + " (see --list)");
       options.variant = *variant;
-    } else if (arg == "--fill" || arg == "--no-fill") {
-      options.fill = arg == "--fill";
-    } else if (arg == "--sheet") {
-      const std::string text = value();
-      const double count = parseNumber(arg, text);
-      if (count < 1 || count > 36 || count != std::floor(count)) {
-        throw UsageError("--sheet: '" + text + "' is not a whole number in 1..36");
-      }
-      options.sheet = static_cast<int>(count);
-    } else if (arg == "-o" || arg == "--output") {
-      options.output = value();
+    } else if (args.is("--fill") || args.is("--no-fill")) {
+      args.noValue();
+      options.fill = args.is("--fill");
+    } else if (args.is("--sheet")) {
+      options.sheet = cli::parseInt(args.name(), args.value(), 1, 36);
+    } else if (args.is("-o") || args.is("--output")) {
+      options.output = args.value();
     } else {
-      throw UsageError("unknown argument '" + arg + "' (see --help)");
+      args.refuseUnknown();
     }
   }
   if (!options.model_name.empty() && !options.model_file.empty()) {
-    throw UsageError("give --model or --file, not both");
+    throw cli::Error("give --model or --file, not both");
   }
-  if (!options.list && options.output.empty()) throw UsageError("no output given: use -o OUT.png");
+  if (!options.list && options.output.empty()) throw cli::Error("no output given: use -o OUT.png");
   return options;
 }
 
@@ -176,28 +151,17 @@ void listModels() {
   }
 }
 
+// Encoded in memory, then written whole or not at all (cli/output_file.h).
 void writePng(const std::string& path, const cv::Mat& image) {
-  // Written to a temporary beside the target and renamed, so a failure leaves no partial PNG.
-  const fs::path target(path);
-  // Built by appending: GCC 12 warns falsely (-Wrestrict) on a chain of string + here.
-  std::string temporary_name = ".";
-  temporary_name += target.filename().string();
-  temporary_name += ".tmp-";
-  temporary_name += std::to_string(::getpid());
-  temporary_name += ".png";
-  const fs::path temporary = target.parent_path() / temporary_name;
-  bool written = false;
+  std::vector<std::uint8_t> png;
+  bool encoded = false;
   try {
-    written = cv::imwrite(temporary.string(), image);
+    encoded = cv::imencode(".png", image, png);
   } catch (const cv::Exception&) {
-    written = false;
+    encoded = false;
   }
-  std::error_code error;
-  if (written) fs::rename(temporary, target, error);
-  if (!written || error) {
-    fs::remove(temporary, error);
-    throw UsageError(path + ": cannot write the PNG here");
-  }
+  if (!encoded) throw cli::Error(cli::displayPath(path) + ": cannot encode the PNG");
+  cli::writeFileAtomically(path, {reinterpret_cast<const char*>(png.data()), png.size()});
 }
 
 int run(int argc, char** argv) {
@@ -216,17 +180,23 @@ int run(int argc, char** argv) {
       depths += ' ';  // appended char by char: GCC 12 warns falsely (-Wrestrict) on " " + string
       depths += std::to_string(model->level(i).depth);
     }
-    throw UsageError("--depth: " + model_label + " has no depth " + std::to_string(*options.depth) +
+    throw cli::Error("--depth: " + model_label + " has no depth " + std::to_string(*options.depth) +
                      " (it has" + depths + ")");
   }
+  cli::checkOutputFile(options.output);  // before drawing: a FIFO, a device or a directory is refused
   if (options.sheet > 0) {
+    const std::int64_t sheet_pixels = contactSheetPixels(*model, options.camera, options.sheet);
+    if (sheet_pixels > kMaxOutputPixels) {
+      throw cli::Error("--sheet " + std::to_string(options.sheet) + " at --size " +
+                       std::to_string(options.camera.width) + "x" + std::to_string(options.camera.height) +
+                       " makes a " + std::to_string(sheet_pixels) + "-pixel image, at most " +
+                       std::to_string(kMaxOutputPixels) + ": give fewer views or a smaller --size");
+    }
     try {
       writePng(options.output,
                renderContactSheet(*model, options.camera, options.sheet, options.variant, kBackground));
     } catch (const cv::Exception& error) {
-      throw UsageError(std::string("contact sheet: ") + error.what());
-    } catch (const std::runtime_error& error) {
-      throw UsageError(error.what());
+      throw cli::Error(std::string("contact sheet: ") + error.what());
     }
     std::printf("%s: contact sheet of %d views -> %s\n", model_label.c_str(), options.sheet,
                 options.output.c_str());
@@ -235,7 +205,7 @@ int run(int argc, char** argv) {
   FrameSetup setup;
   const CameraError camera_error =
       buildFrameSetup(options.camera, level->depth, kDefaultFractionBits, &setup);
-  if (camera_error != CameraError::kNone) throw UsageError(std::string("camera refused: ") + describe(camera_error));
+  if (camera_error != CameraError::kNone) throw cli::Error(std::string("camera refused: ") + describe(camera_error));
 
   Framebuffer frame(options.camera.width, options.camera.height);
   frame.clear();
@@ -254,15 +224,4 @@ int run(int argc, char** argv) {
 
 }  // namespace
 
-int main(int argc, char** argv) {
-  try {
-    return run(argc, argv);
-  } catch (const UsageError& error) {
-    std::fprintf(stderr, "octopoint-render: %s\n", error.what());
-  } catch (const ModelLoadError& error) {
-    std::fprintf(stderr, "octopoint-render: %s\n", error.what());
-  } catch (const std::exception& error) {
-    std::fprintf(stderr, "octopoint-render: unexpected error: %s\n", error.what());
-  }
-  return 1;
-}
+int main(int argc, char** argv) { return octopoint::cli::runTool("octopoint-render", argc, argv, run); }

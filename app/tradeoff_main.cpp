@@ -6,7 +6,6 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
-#include <fstream>
 #include <iostream>
 #include <string>
 #include <vector>
@@ -16,6 +15,13 @@
 
 #include "app/image_quality.h"
 #include "app/reference_render.h"
+#include "cli/arguments.h"
+#include "cli/error.h"
+#include "cli/numbers.h"
+#include "cli/output_file.h"
+#include "cli/real_numbers.h"
+#include "cli/run_tool.h"
+#include "cli/text.h"
 #include "codegen/cube_fit.h"
 #include "codegen/model_writer.h"
 #include "codegen/prepare.h"
@@ -37,15 +43,24 @@ model size and the quality against a dense double precision render of the scan's
 
   --axes y-down|y-up     the scan's axes (as octopoint-prepare; default y-down)
   --crop X0,Y0,Z0,X1,Y1,Z1  keep the points inside this box (as octopoint-prepare)
-  --yaw DEG, --pitch DEG the view (default 0, 0)
-  --size WxH             framebuffer size (default 320x240)
-  --depths LIST          octree depths (default 6,7,8,9,10)
-  --fraction-bits LIST   fixed-point fraction bits of the positions (default 8,12,15,20)
-  -o, --output OUTDIR    where to write (default out)
+  --yaw DEG, --pitch DEG the view, |DEG| <= 1e6 (default 0, 0)
+  --size WxH             framebuffer size, each side 1..8192, at most 16777216 pixels
+                         (default 320x240)
+  --depths LIST          octree depths, strictly ascending, each 1..16 (default 6,7,8,9,10)
+  --fraction-bits LIST   fixed-point fraction bits of the positions, strictly ascending, each
+                         1..24 (default 8,12,15,20); a setting the camera refuses for this view
+                         (too few integer bits for the frame) is an error
+  -o, --output OUTDIR    where to write (default out); the three files appear together at the
+                         end or not at all, and existing ones must be regular files
   -h, --help             show this help
+
+SCAN is a regular file of at most 1 GiB. On any error prints one line on stderr and exits with
+status 1, writing nothing.
 )";
 
 constexpr Rgb kBackground{236, 236, 240};
+// What the sweep writes into OUTDIR, all together at the end or nothing.
+constexpr const char* kOutputNames[] = {"tradeoff.csv", "tradeoff.png", "tradeoff_reference.png"};
 constexpr double kMinSecondsPerConfiguration = 0.05;
 constexpr int kMaxFramesPerConfiguration = 200;
 
@@ -71,66 +86,51 @@ struct Row {
   double empty_inside;  // share of the reference's object pixels left empty
 };
 
-std::vector<int> parseList(const std::string& flag, const std::string& text) {
-  std::vector<int> values;
-  std::size_t at = 0;
-  while (at <= text.size()) {
-    const std::size_t comma = std::min(text.find(',', at), text.size());
-    char* end = nullptr;
-    const std::string item = text.substr(at, comma - at);
-    const long value = std::strtol(item.c_str(), &end, 10);
-    if (item.empty() || *end != '\0') throw prepare::PrepareError(flag + ": '" + text + "' is not a list of integers");
-    values.push_back(static_cast<int>(value));
-    at = comma + 1;
-  }
-  return values;
-}
-
-int parseWholeDegrees(const std::string& flag, const std::string& text) {
-  const std::vector<int> values = parseList(flag, text);
-  if (values.size() != 1) throw prepare::PrepareError(flag + ": '" + text + "' is not one whole number of degrees");
-  return values.front();
-}
+// The largest frame the sweep draws: the same cap as octopoint-render's images.
+constexpr std::int64_t kMaxFramePixels = std::int64_t{4096} * 4096;
 
 Options parseOptions(int argc, char** argv) {
   Options options;
-  for (int i = 1; i < argc; ++i) {
-    const std::string arg = argv[i];
-    auto value = [&]() -> std::string {
-      if (i + 1 >= argc) throw prepare::PrepareError(arg + ": missing value (see --help)");
-      return argv[++i];
-    };
-    if (arg == "-h" || arg == "--help") {
+  cli::ArgumentReader args(argc, argv);
+  while (args.next()) {
+    if (args.is("-h") || args.is("--help")) {
       std::cout << kUsage;
       std::exit(0);
-    } else if (arg == "--axes") {
-      const std::string axes = value();
-      if (axes != "y-down" && axes != "y-up") throw prepare::PrepareError("--axes: '" + axes + "' is not y-down or y-up");
-      options.prepare.axes = axes == "y-up" ? prepare::ScanAxes::kYUp : prepare::ScanAxes::kYDown;
-    } else if (arg == "--crop") {
-      options.prepare.crop = prepare::parseCropBox(arg, value());
-    } else if (arg == "--yaw") {
-      options.camera.yaw = Angle::fromDegrees(parseWholeDegrees(arg, value()));
-    } else if (arg == "--pitch") {
-      options.camera.pitch = Angle::fromDegrees(parseWholeDegrees(arg, value()));
-    } else if (arg == "--size") {
-      const std::string text = value();
-      if (std::sscanf(text.c_str(), "%dx%d", &options.camera.width, &options.camera.height) != 2) {
-        throw prepare::PrepareError("--size: '" + text + "' is not WxH");
-      }
-    } else if (arg == "--depths") {
-      options.depths = parseList(arg, value());
-    } else if (arg == "--fraction-bits") {
-      options.fraction_bits = parseList(arg, value());
-    } else if (arg == "-o" || arg == "--output") {
-      options.output = value();
-    } else if (!arg.empty() && arg[0] == '-') {
-      throw prepare::PrepareError("unknown option '" + arg + "' (see --help)");
+    } else if (args.is("--axes")) {
+      options.prepare.axes = cli::parseChoice(args.name(), args.value(), {"y-down", "y-up"}) == 0
+                                 ? prepare::ScanAxes::kYDown
+                                 : prepare::ScanAxes::kYUp;
+    } else if (args.is("--crop")) {
+      options.prepare.crop = prepare::parseCropBox(args.name(), args.value());
+    } else if (args.is("--yaw")) {
+      options.camera.yaw = cli::parseDegrees(args.name(), args.value());
+    } else if (args.is("--pitch")) {
+      options.camera.pitch = cli::parseDegrees(args.name(), args.value());
+    } else if (args.is("--size")) {
+      const cli::FrameSize size =
+          cli::parseFrameSize(args.name(), args.value(), 1, kMaxViewportSide, kMaxFramePixels);
+      options.camera.width = size.width;
+      options.camera.height = size.height;
+    } else if (args.is("--depths")) {
+      options.depths = cli::parseIntList(args.name(), args.value(), 1, format::kMaxDepth, format::kMaxDepth,
+                                         cli::ListOrder::kStrictlyAscending);
+    } else if (args.is("--fraction-bits")) {
+      options.fraction_bits = cli::parseIntList(args.name(), args.value(), kMinFractionBits, kMaxFractionBits,
+                                                kMaxFractionBits, cli::ListOrder::kStrictlyAscending);
+    } else if (args.is("-o") || args.is("--output")) {
+      options.output = args.value();
+    } else if (args.isPlain() && options.scan.empty()) {
+      options.scan = args.current();
     } else {
-      options.scan = arg;
+      args.refuseUnknown();
     }
   }
-  if (options.scan.empty()) throw prepare::PrepareError("no SCAN given (see --help)");
+  if (options.scan.empty()) throw cli::Error("no SCAN given (see --help)");
+  std::error_code error;
+  if (fs::exists(options.output, error) && !fs::is_directory(options.output, error)) {
+    throw cli::Error(cli::displayPath(options.output) + ": the output path exists and is not a directory");
+  }
+  for (const char* name : kOutputNames) cli::checkOutputFile(options.output / name);
   return options;
 }
 
@@ -159,7 +159,7 @@ double medianMilliseconds(DrawFrame draw) {
 
 // Time (log scale) against PSNR, one point per variant, depth and hole filling, at the default
 // fraction bits (the CSV has every fraction bits setting).
-void writePlot(const std::vector<Row>& rows, const fs::path& path) {
+cv::Mat drawPlot(const std::vector<Row>& rows) {
   constexpr int kWidth = 900, kHeight = 600, kMargin = 70;
   cv::Mat plot(kHeight, kWidth, CV_8UC3, cv::Scalar(255, 255, 255));
   std::vector<const Row*> shown;
@@ -208,7 +208,13 @@ void writePlot(const std::vector<Row>& rows, const fs::path& path) {
     cv::putText(plot, "depth " + std::to_string(d + 6), {kWidth - 135, kHeight - kMargin - 115 + 22 * d},
                 cv::FONT_HERSHEY_SIMPLEX, 0.5, black);
   }
-  cv::imwrite(path.string(), plot);
+  return plot;
+}
+
+std::string encodePng(const cv::Mat& image) {
+  std::vector<std::uint8_t> png;
+  if (!cv::imencode(".png", image, png)) throw cli::Error("cannot encode a PNG");
+  return {png.begin(), png.end()};
 }
 
 int run(int argc, char** argv) {
@@ -219,8 +225,6 @@ int run(int argc, char** argv) {
   cv::Mat object_mask;
   const cv::Mat reference = tradeoff::renderReference(points, fit, options.camera, kBackground, &object_mask);
   const double object_pixels = std::max(1, cv::countNonZero(object_mask));
-  fs::create_directories(options.output);
-  cv::imwrite((options.output / "tradeoff_reference.png").string(), reference);
 
   std::vector<Row> rows;
   for (int depth : options.depths) {
@@ -241,7 +245,11 @@ int run(int argc, char** argv) {
       const std::vector<int> fractions = isFixedPoint(info.variant) ? options.fraction_bits : std::vector<int>{kDefaultFractionBits};
       for (int bits : fractions) {
         FrameSetup setup;
-        if (buildFrameSetup(options.camera, depth, bits, &setup) != CameraError::kNone) continue;
+        const CameraError camera_error = buildFrameSetup(options.camera, depth, bits, &setup);
+        if (camera_error != CameraError::kNone) {
+          throw cli::Error("--fraction-bits " + std::to_string(bits) + ": the camera refuses this view at depth " +
+                           std::to_string(depth) + ": " + describe(camera_error));
+        }
         for (bool fill : {false, true}) {
           const double ms = medianMilliseconds([&] {
             frame.clear();
@@ -263,16 +271,18 @@ int run(int argc, char** argv) {
     std::fprintf(stderr, "octopoint-tradeoff: depth %d done (%zu voxels)\n", depth, level.leaves.size());
   }
 
-  std::ofstream csv(options.output / "tradeoff.csv");
-  csv << "depth,variant,fraction_bits,hole_fill,ms_per_frame,model_bytes,bits_per_point,psnr_db,ssim,empty_inside_share\n";
+  std::string csv =
+      "depth,variant,fraction_bits,hole_fill,ms_per_frame,model_bytes,bits_per_point,psnr_db,ssim,empty_inside_share\n";
   for (const Row& r : rows) {
     char line[256];
     std::snprintf(line, sizeof line, "%d,%s,%d,%s,%.4f,%zu,%.3f,%.3f,%.4f,%.4f\n", r.depth, r.variant.c_str(),
                   r.fraction_bits, r.fill ? "on" : "off", r.ms_per_frame, r.model_bytes, r.bits_per_point, r.psnr,
                   r.ssim, r.empty_inside);
-    csv << line;
+    csv += line;
   }
-  writePlot(rows, options.output / "tradeoff.png");
+  cli::writeFilesAtomically(options.output, {{kOutputNames[0], csv},
+                                             {kOutputNames[1], encodePng(drawPlot(rows))},
+                                             {kOutputNames[2], encodePng(reference)}});
   std::printf("wrote %s and %s (%zu configurations)\n", (options.output / "tradeoff.csv").c_str(),
               (options.output / "tradeoff.png").c_str(), rows.size());
   return 0;
@@ -280,11 +290,4 @@ int run(int argc, char** argv) {
 
 }  // namespace
 
-int main(int argc, char** argv) {
-  try {
-    return run(argc, argv);
-  } catch (const std::exception& error) {
-    std::fprintf(stderr, "octopoint-tradeoff: %s\n", error.what());
-  }
-  return 1;
-}
+int main(int argc, char** argv) { return octopoint::cli::runTool("octopoint-tradeoff", argc, argv, run); }

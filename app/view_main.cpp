@@ -18,6 +18,11 @@
 #include <vector>
 
 #include "app/model_source.h"
+#include "cli/arguments.h"
+#include "cli/error.h"
+#include "cli/numbers.h"
+#include "cli/output_file.h"
+#include "cli/run_tool.h"
 #include "renderer/dual_resolution_renderer.h"
 #include "renderer/model.h"
 
@@ -50,10 +55,6 @@ constexpr const char* kWindow = "octopoint-view";
 constexpr Rgb kBackground{236, 236, 240};
 constexpr std::int64_t kReleaseAfterUs = 250'000;
 
-struct UsageError : std::runtime_error {
-  using std::runtime_error::runtime_error;
-};
-
 struct Options {
   std::string model_name;
   std::string model_file;
@@ -64,40 +65,27 @@ struct Options {
 
 Options parseOptions(int argc, char** argv) {
   Options options;
-  for (int i = 1; i < argc; ++i) {
-    const std::string arg = argv[i];
-    auto value = [&]() -> std::string {
-      if (i + 1 >= argc) throw UsageError(arg + ": missing value (see --help)");
-      return argv[++i];
-    };
-    if (arg == "-h" || arg == "--help") {
+  cli::ArgumentReader args(argc, argv);
+  while (args.next()) {
+    if (args.is("-h") || args.is("--help")) {
       std::cout << kUsage;
       std::exit(0);
-    } else if (arg == "--model") {
-      options.model_name = value();
-    } else if (arg == "--file") {
-      options.model_file = value();
-    } else if (arg == "--size") {
-      const std::string text = value();
-      char tail = 0;
-      if (std::sscanf(text.c_str(), "%dx%d%c", &options.width, &options.height, &tail) != 2 ||
-          options.width < 16 || options.height < 16 || options.width > 2048 ||
-          options.height > 2048) {
-        throw UsageError("--size: '" + text + "' is not WxH with each side in 16..2048");
-      }
-    } else if (arg == "--scale") {
-      const std::string text = value();
-      char tail = 0;
-      if (std::sscanf(text.c_str(), "%d%c", &options.scale, &tail) != 1 || options.scale < 1 ||
-          options.scale > 8) {
-        throw UsageError("--scale: '" + text + "' is not a whole number in 1..8");
-      }
+    } else if (args.is("--model")) {
+      options.model_name = args.value();
+    } else if (args.is("--file")) {
+      options.model_file = args.value();
+    } else if (args.is("--size")) {
+      const cli::FrameSize size = cli::parseFrameSize(args.name(), args.value(), 16, 2048);
+      options.width = size.width;
+      options.height = size.height;
+    } else if (args.is("--scale")) {
+      options.scale = cli::parseInt(args.name(), args.value(), 1, 8);
     } else {
-      throw UsageError("unknown argument '" + arg + "' (see --help)");
+      args.refuseUnknown();
     }
   }
   if (!options.model_name.empty() && !options.model_file.empty()) {
-    throw UsageError("give --model or --file, not both");
+    throw cli::Error("give --model or --file, not both");
   }
   return options;
 }
@@ -209,17 +197,16 @@ class FrameRate {
   std::vector<std::int64_t> shown_us_;
 };
 
+// The output-file rule of every tool (cli/output_file.h): whole or nothing, and an existing
+// name that is not a regular file is refused, not replaced.
 void savePng(const cv::Mat& bgr, int number) {
   const std::string name = "octopoint-view-" + std::to_string(number) + ".png";
-  const std::string temporary = "." + name + ".tmp-" + std::to_string(::getpid()) + ".png";
-  std::error_code error;
-  if (cv::imwrite(temporary, bgr))
-    fs::rename(temporary, name, error);
-  else
-    error = std::make_error_code(std::errc::io_error);
-  if (error) {
-    fs::remove(temporary, error);
-    std::fprintf(stderr, "octopoint-view: %s: cannot write the PNG here\n", name.c_str());
+  try {
+    std::vector<std::uint8_t> png;
+    if (!cv::imencode(".png", bgr, png)) throw cli::Error(name + ": cannot encode the PNG");
+    cli::writeFileAtomically(name, {reinterpret_cast<const char*>(png.data()), png.size()});
+  } catch (const std::exception& error) {
+    cli::printError("octopoint-view", error.what());
     return;
   }
   std::printf("saved %s\n", name.c_str());
@@ -275,15 +262,4 @@ int run(int argc, char** argv) {
 
 }  // namespace
 
-int main(int argc, char** argv) {
-  try {
-    return run(argc, argv);
-  } catch (const UsageError& error) {
-    std::fprintf(stderr, "octopoint-view: %s\n", error.what());
-  } catch (const ModelLoadError& error) {
-    std::fprintf(stderr, "octopoint-view: %s\n", error.what());
-  } catch (const std::exception& error) {
-    std::fprintf(stderr, "octopoint-view: unexpected error: %s\n", error.what());
-  }
-  return 1;
-}
+int main(int argc, char** argv) { return octopoint::cli::runTool("octopoint-view", argc, argv, run); }

@@ -1,23 +1,20 @@
 #pragma once
 // Writing a prepared model out: the `.oct` binary (renderer/model_format.h) and the C++ sources an
 // app compiles in (NAME.h, NAME.cpp with the palette and descriptor, NAME_depthD.cpp per level).
-// Files appear all together or not at all: all are written into a staging directory inside the
-// output directory and renamed into place only once every one has been written; a failed rename
-// undoes the earlier ones (codegen/atomic_output.cpp).
+// The files are put in place all together or not at all by cli::writeFilesAtomically
+// (cli/output_file.h).
 
 #include <cstdint>
 #include <filesystem>
 #include <string>
 #include <vector>
 
+#include "cli/output_file.h"
 #include "codegen/prepared_model.h"
 
 namespace octopoint::prepare {
 
-struct OutputFile {
-  std::string name;  // file name inside the output directory
-  std::string contents;
-};
+using OutputFile = cli::OutputFile;
 
 // How the generated sources spell the bytes (docs/embedding.md has the compile-time figures).
 enum class EmitStyle {
@@ -37,9 +34,5 @@ struct EmitOptions {
 
 std::vector<std::uint8_t> serializeModel(const PreparedModel& model);
 std::vector<OutputFile> emitSources(const PreparedModel& model, const EmitOptions& options = {});
-
-// Creates `directory` if needed and writes every file; throws PrepareError (and leaves nothing
-// behind: no temporaries, no partial set of files) when any step fails.
-void writeFilesAtomically(const std::filesystem::path& directory, const std::vector<OutputFile>& files);
 
 }  // namespace octopoint::prepare

@@ -1,10 +1,13 @@
 #include "codegen/prepare.h"
 
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <limits>
 
+#include "cli/real_numbers.h"
+#include "cli/text.h"
 #include "codegen/cube_fit.h"
 #include "codegen/octree_encoder.h"
 #include "codegen/outlier_filter.h"
@@ -61,15 +64,21 @@ Scan cropScan(const Scan& scan, const CropBox& box, const std::string& scan_path
 }
 
 CropBox parseCropBox(const std::string& flag, const std::string& text) {
-  float v[6];
-  char tail = 0;
-  if (std::sscanf(text.c_str(), "%f,%f,%f,%f,%f,%f%c", &v[0], &v[1], &v[2], &v[3], &v[4], &v[5], &tail) != 6) {
-    throw PrepareError(flag + ": '" + text + "' is not six comma-separated numbers X0,Y0,Z0,X1,Y1,Z1");
+  std::array<double, 6> v{};
+  std::size_t at = 0;
+  for (std::size_t i = 0; i < v.size(); ++i) {
+    const std::size_t comma = i + 1 < v.size() ? text.find(',', at) : text.size();
+    if (comma == std::string::npos || (i + 1 == v.size() && text.find(',', at) != std::string::npos)) {
+      throw PrepareError(flag + ": " + cli::inQuotes(text) + " is not six comma-separated numbers X0,Y0,Z0,X1,Y1,Z1");
+    }
+    v[i] = cli::parseReal(flag, std::string_view(text).substr(at, comma - at), -kMaxAbsCoordinate, kMaxAbsCoordinate);
+    at = comma + 1;
   }
-  const CropBox box{{v[0], v[1], v[2]}, {v[3], v[4], v[5]}};
+  const CropBox box{{static_cast<float>(v[0]), static_cast<float>(v[1]), static_cast<float>(v[2])},
+                    {static_cast<float>(v[3]), static_cast<float>(v[4]), static_cast<float>(v[5])}};
   for (std::size_t axis = 0; axis < 3; ++axis) {
     if (!(box.low[axis] < box.high[axis])) {
-      throw PrepareError(flag + ": '" + text + "' is empty: each lower bound must be below its upper bound");
+      throw PrepareError(flag + ": " + cli::inQuotes(text) + " is empty: each lower bound must be below its upper bound");
     }
   }
   return box;

@@ -3,14 +3,16 @@
 // "<file>: <what went wrong> (<where>)", so it must name the file and the place, and end without
 // a newline.
 
-#include <stdexcept>
 #include <string>
+
+#include "cli/error.h"
 
 namespace octopoint::prepare {
 
-class PrepareError : public std::runtime_error {
+// A cli::Error, so that the tools report it like every other error of their command line.
+class PrepareError : public cli::Error {
  public:
-  explicit PrepareError(const std::string& message) : std::runtime_error(message) {}
+  explicit PrepareError(const std::string& message) : cli::Error(message) {}
 };
 
 }  // namespace octopoint::prepare

@@ -1,14 +1,18 @@
 // octopoint-prepare: a range scan in, a model out (C++ sources to compile in, and a `.oct` file).
 #include <chrono>
 #include <cstdio>
-#include <cctype>
-#include <cstring>
 #include <filesystem>
 #include <iostream>
 #include <optional>
 #include <string>
 #include <vector>
 
+#include "cli/arguments.h"
+#include "cli/numbers.h"
+#include "cli/output_file.h"
+#include "cli/run_tool.h"
+#include "cli/text.h"
+#include "codegen/model_name.h"
 #include "codegen/model_writer.h"
 #include "codegen/prepare.h"
 #include "codegen/prepare_error.h"
@@ -28,11 +32,15 @@ Turns a range scan (.pcd or .ply: XYZ, XYZRGB/RGBA or XYZI, organized or not) in
 model: OUTDIR/NAME.h, OUTDIR/NAME.cpp and OUTDIR/NAME_depthD.cpp (const arrays an app compiles in)
 and OUTDIR/NAME.oct (the same model as one binary file, for octopoint-render --file).
 
-  SCAN                  the scan to read; points with a NaN or infinite coordinate are dropped
-  -o, --output OUTDIR   where to write (created if missing); all files appear or none do
-  --name NAME           the model's name: a C++ identifier, e.g. milk_carton
-  --depths LIST         comma-separated octree depths, ascending, each 1..16 (default 7,8):
-                        depth d cuts the fitted cube into 2^d voxels per axis
+  SCAN                  the scan to read (a regular file of at most 1 GiB); points with a NaN
+                        or infinite coordinate are dropped
+  -o, --output OUTDIR   where to write (created if missing); all files appear or none do, also
+                        when interrupted (SIGINT, SIGTERM); existing outputs must be regular files
+  --name NAME           the model's name, e.g. milk_carton: a C++ identifier of at most 64
+                        letters, digits and single underscores (not at either end), with a
+                        lower-case letter, not a C++ keyword
+  --depths LIST         comma-separated octree depths, strictly ascending, each 1..16, at most 8
+                        of them (default 7,8): depth d cuts the fitted cube into 2^d voxels per axis
   --colours N           palette size, 1..256 (default 256)
   --crop X0,Y0,Z0,X1,Y1,Z1
                         keep only the points inside this box (scan units, inclusive) before
@@ -43,7 +51,7 @@ and OUTDIR/NAME.oct (the same model as one binary file, for octopoint-render --f
                         default view is the sensor's
   --scan-unit UNIT      unit of the scan's coordinates: m, cm or mm (default m); only recorded
                         as the model's metric size
-  --scene SCENE.json    the views the app will show (docs/scene.md): yaw/pitch ranges or
+  --scene SCENE.json    (a file of at most 1 MiB) the views the app will show (docs/scene.md): yaw/pitch ranges or
                         viewpoints, zoom range, framebuffer size, depths (or "auto"), palette,
                         crop box, outlier removal, axes. Voxels no view can see are pruned.
                         Replaces --depths, --colours, --crop, --axes and --scan-unit
@@ -68,97 +76,54 @@ struct Arguments {
   octopoint::prepare::PrepareOptions options;
 };
 
-bool isIdentifier(const std::string& name) {
-  if (name.empty() || name.size() > 64 || std::isdigit(static_cast<unsigned char>(name[0]))) return false;
-  for (char c : name) {
-    if (!std::isalnum(static_cast<unsigned char>(c)) && c != '_') return false;
-  }
-  return name.find("__") == std::string::npos && name[0] != '_';  // reserved identifiers
-}
-
-std::vector<int> parseDepths(const std::string& text) {
-  std::vector<int> depths;
-  std::size_t at = 0;
-  while (at <= text.size()) {
-    const std::size_t comma = std::min(text.find(',', at), text.size());
-    const std::string item = text.substr(at, comma - at);
-    char* end = nullptr;
-    const long depth = std::strtol(item.c_str(), &end, 10);
-    if (item.empty() || *end != '\0' || depth < 1 || depth > octopoint::format::kMaxDepth) {
-      throw PrepareError("--depths: '" + item + "' is not a depth in 1.." +
-                         std::to_string(octopoint::format::kMaxDepth));
-    }
-    if (!depths.empty() && depth <= depths.back()) {
-      throw PrepareError("--depths: depths must be strictly ascending, got '" + text + "'");
-    }
-    depths.push_back(static_cast<int>(depth));
-    at = comma + 1;
-  }
-  if (static_cast<int>(depths.size()) > octopoint::format::kMaxLevels) {
-    throw PrepareError("--depths: at most " + std::to_string(octopoint::format::kMaxLevels) + " depths");
-  }
-  return depths;
-}
-
 // Returns nullopt when --help was asked for.
 std::optional<Arguments> parseArguments(int argc, char** argv) {
   Arguments args;
   bool have_name = false;
-  for (int i = 1; i < argc; ++i) {
-    const std::string arg = argv[i];
-    auto value = [&]() -> std::string {
-      if (i + 1 >= argc) throw PrepareError(arg + ": missing value (see --help)");
-      return argv[++i];
-    };
-    if (arg == "-h" || arg == "--help") return std::nullopt;
-    if (arg == "-o" || arg == "--output") {
-      args.output_dir = value();
-    } else if (arg == "--name") {
-      args.options.name = value();
+  octopoint::cli::ArgumentReader reader(argc, argv);
+  while (reader.next()) {
+    if (reader.is("-h") || reader.is("--help")) return std::nullopt;
+    if (reader.is("-o") || reader.is("--output")) {
+      args.output_dir = reader.value();
+    } else if (reader.is("--name")) {
+      args.options.name = reader.value();
       have_name = true;
-    } else if (arg == "--scene") {
-      args.scene = value();
-    } else if (arg == "--emit") {
-      const std::string style = value();
-      if (style == "bytes") args.emit.style = octopoint::prepare::EmitStyle::kBytes;
-      else if (style == "strings") args.emit.style = octopoint::prepare::EmitStyle::kStrings;
-      else throw PrepareError("--emit: '" + style + "' is not bytes or strings");
-    } else if (arg == "--single-source") {
+    } else if (reader.is("--scene")) {
+      args.scene = reader.value();
+    } else if (reader.is("--emit")) {
+      args.emit.style = octopoint::cli::parseChoice(reader.name(), reader.value(), {"strings", "bytes"}) == 0
+                            ? octopoint::prepare::EmitStyle::kStrings
+                            : octopoint::prepare::EmitStyle::kBytes;
+    } else if (reader.is("--single-source")) {
+      reader.noValue();
       args.emit.single_source = true;
-    } else if (arg == "--depths") {
-      args.model_flags.push_back(arg);
-      args.options.depths = parseDepths(value());
-    } else if (arg == "--colours") {
-      args.model_flags.push_back(arg);
-      const std::string text = value();
-      char* end = nullptr;
-      const long colours = std::strtol(text.c_str(), &end, 10);
-      if (text.empty() || *end != '\0' || colours < 1 || colours > 256) {
-        throw PrepareError("--colours: '" + text + "' is not a palette size in 1..256");
-      }
-      args.options.palette_colours = static_cast<int>(colours);
-    } else if (arg == "--crop") {
-      args.model_flags.push_back(arg);
-      args.options.crop = octopoint::prepare::parseCropBox("--crop", value());
-    } else if (arg == "--axes") {
-      args.model_flags.push_back(arg);
-      const std::string axes = value();
-      if (axes == "y-down") args.options.axes = octopoint::prepare::ScanAxes::kYDown;
-      else if (axes == "y-up") args.options.axes = octopoint::prepare::ScanAxes::kYUp;
-      else throw PrepareError("--axes: '" + axes + "' is not y-down or y-up");
-    } else if (arg == "--scan-unit") {
-      args.model_flags.push_back(arg);
-      const std::string unit = value();
-      if (unit == "m") args.options.metres_per_scan_unit = 1.0;
-      else if (unit == "cm") args.options.metres_per_scan_unit = 0.01;
-      else if (unit == "mm") args.options.metres_per_scan_unit = 0.001;
-      else throw PrepareError("--scan-unit: '" + unit + "' is not one of m, cm, mm");
-    } else if (!arg.empty() && arg[0] == '-') {
-      throw PrepareError("unknown option '" + arg + "' (see --help)");
-    } else if (args.scan.empty()) {
-      args.scan = arg;
+    } else if (reader.is("--depths")) {
+      args.model_flags.push_back(reader.name());
+      args.options.depths =
+          octopoint::cli::parseIntList(reader.name(), reader.value(), 1, octopoint::format::kMaxDepth,
+                                       octopoint::format::kMaxLevels, octopoint::cli::ListOrder::kStrictlyAscending);
+    } else if (reader.is("--colours")) {
+      args.model_flags.push_back(reader.name());
+      args.options.palette_colours = octopoint::cli::parseInt(reader.name(), reader.value(), 1, 256);
+    } else if (reader.is("--crop")) {
+      args.model_flags.push_back(reader.name());
+      args.options.crop = octopoint::prepare::parseCropBox(reader.name(), reader.value());
+    } else if (reader.is("--axes")) {
+      args.model_flags.push_back(reader.name());
+      args.options.axes = octopoint::cli::parseChoice(reader.name(), reader.value(), {"y-down", "y-up"}) == 0
+                              ? octopoint::prepare::ScanAxes::kYDown
+                              : octopoint::prepare::ScanAxes::kYUp;
+    } else if (reader.is("--scan-unit")) {
+      args.model_flags.push_back(reader.name());
+      constexpr double kMetres[] = {1.0, 0.01, 0.001};
+      args.options.metres_per_scan_unit = kMetres[octopoint::cli::parseChoice(reader.name(), reader.value(), {"m", "cm", "mm"})];
+    } else if (reader.isPlain() && args.scan.empty()) {
+      args.scan = reader.current();
+    } else if (reader.isPlain()) {
+      throw PrepareError("unexpected argument " + octopoint::cli::inQuotes(reader.current()) +
+                         ": only one SCAN is read (see --help)");
     } else {
-      throw PrepareError("unexpected argument '" + arg + "': only one SCAN is read (see --help)");
+      reader.refuseUnknown();
     }
   }
   if (args.scan.empty()) throw PrepareError("no SCAN given (see --help)");
@@ -167,9 +132,10 @@ std::optional<Arguments> parseArguments(int argc, char** argv) {
   if (!args.scene.empty() && !args.model_flags.empty()) {
     throw PrepareError(args.model_flags.front() + ": not allowed with --scene (set it in the scene file)");
   }
-  if (!isIdentifier(args.options.name)) {
-    throw PrepareError("--name: '" + args.options.name +
-                       "' is not a plain C++ identifier (letters, digits, single underscores)");
+  const std::string name_problem = octopoint::prepare::modelNameProblem(args.options.name);
+  if (!name_problem.empty()) {
+    throw PrepareError("--name: " + octopoint::cli::inQuotes(args.options.name) + " " + name_problem +
+                       " (see --help for model names)");
   }
   return args;
 }
@@ -225,7 +191,7 @@ int run(int argc, char** argv) {
   std::vector<OutputFile> files = emitSources(model, args->emit);
   const std::vector<std::uint8_t> image = serializeModel(model);
   files.push_back({model.name + ".oct", std::string(image.begin(), image.end())});
-  writeFilesAtomically(args->output_dir, files);
+  octopoint::cli::writeFilesAtomically(args->output_dir, files);
 
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   std::printf("%s: %zu points (%zu dropped as non-finite), %s, %zu palette colours, cube edge %.3f m\n",
@@ -256,15 +222,4 @@ int run(int argc, char** argv) {
 
 }  // namespace
 
-int main(int argc, char** argv) {
-  try {
-    return run(argc, argv);
-  } catch (const PrepareError& error) {
-    std::fprintf(stderr, "octopoint-prepare: %s\n", error.what());
-  } catch (const std::bad_alloc&) {
-    std::fprintf(stderr, "octopoint-prepare: out of memory\n");
-  } catch (const std::exception& error) {
-    std::fprintf(stderr, "octopoint-prepare: unexpected error: %s\n", error.what());
-  }
-  return 1;
-}
+int main(int argc, char** argv) { return octopoint::cli::runTool("octopoint-prepare", argc, argv, run); }

@@ -17,6 +17,7 @@
 #include <system_error>
 #include <vector>
 
+#include "cli/text.h"
 #include "codegen/prepare_error.h"
 
 namespace octopoint::prepare {
@@ -33,16 +34,7 @@ constexpr std::uint64_t kMaxPoints = std::numeric_limits<std::uint32_t>::max(); 
 
 }  // namespace
 
-// File content quoted in a message: printable, short, and never a second line.
-std::string printable(std::string_view text) {
-  constexpr std::size_t kMaxQuoted = 40;
-  std::string out;
-  for (char c : text.substr(0, kMaxQuoted)) {
-    out += (c >= 0x20 && c < 0x7f) ? c : '?';
-  }
-  if (text.size() > kMaxQuoted) out += "...";
-  return out;
-}
+std::string printable(std::string_view text) { return cli::printable(text); }
 
 
 std::uint64_t saturatingMul(std::uint64_t a, std::uint64_t b) {
@@ -52,7 +44,7 @@ std::uint64_t saturatingMul(std::uint64_t a, std::uint64_t b) {
 }
 
 [[noreturn]] void fail(const fs::path& path, const std::string& what, const std::string& where) {
-  throw PrepareError(path.string() + ": " + what + " (" + where + ")");
+  throw PrepareError(cli::displayPath(path) + ": " + what + " (" + where + ")");
 }
 
 namespace {

@@ -38,6 +38,7 @@
 #include <string_view>
 #include <system_error>
 
+#include "cli/input_file.h"
 #include "codegen/prepare_error.h"
 #include "codegen/scan_header_check.h"
 
@@ -184,11 +185,12 @@ void collectPoints(const fs::path& path, const pcl::PointCloud<PointT>& points, 
 }  // namespace
 
 Scan loadScan(const fs::path& path) {
-  std::error_code error;
-  const fs::file_status status = fs::status(path, error);
-  if (!fs::exists(status)) fail(path, "no such file", "opening the scan");
-  if (fs::is_directory(status)) fail(path, "is a directory, not a scan file", "opening the scan");
-  if (!fs::is_regular_file(status)) fail(path, "is not a regular file", "opening the scan");
+  std::uint64_t file_size = 0;
+  try {
+    file_size = cli::checkInputFile(path, kScanInput);
+  } catch (const cli::Error& error) {  // "PATH: what", in the loader's "PATH: what (where)" form
+    throw PrepareError(std::string(error.what()) + " (opening the scan)");
+  }
 
   std::string extension = path.extension().string();
   std::transform(extension.begin(), extension.end(), extension.begin(),
@@ -199,8 +201,6 @@ Scan loadScan(const fs::path& path) {
          "file name");
   }
 
-  const std::uint64_t file_size = fs::file_size(path, error);
-  if (error) fail(path, "cannot read the file size: " + error.message(), "opening the scan");
   if (file_size == 0) fail(path, "empty file (0 bytes)", "opening the scan");
   const std::uint64_t declared_points =
       is_ply ? checkPlyHeader(path, file_size) : checkPcdHeader(path, file_size);

@@ -10,6 +10,8 @@
 #include <filesystem>
 #include <vector>
 
+#include "cli/input_file.h"
+
 namespace octopoint::prepare {
 
 // What the per-point colours come from.
@@ -28,6 +30,11 @@ struct Scan {
 // million units in any unit, and such values would wreck the later fit into the cube.
 inline constexpr float kMaxAbsCoordinate = 1.0e6f;
 
+// The scan files loadScan reads: regular files of at most 1 GiB (cli/input_file.h). PCL holds a
+// whole scan in memory several times over while reading it, so the limit keeps a sparse or
+// padded file from costing gigabytes before it fails.
+inline constexpr cli::InputKind kScanInput{"scan", cli::kGiB};
+
 // Loads a .pcd or .ply scan (chosen by extension, case-insensitive).
 // Accepts float32 x/y/z plus optionally a colour field (packed float "rgb", or uint32 "rgb"/"rgba";
 // R is bits 16..23, G 8..15, B 0..7) or else a float32 "intensity" field. PLY red/green/blue(/alpha)
@@ -35,8 +42,8 @@ inline constexpr float kMaxAbsCoordinate = 1.0e6f;
 // Drops points with any non-finite coordinate (NaN or infinity) and counts them.
 // Intensity becomes grey: the 1st..99th percentile of intensity over the kept points maps linearly
 // to 0..255, clamped, so that a few hot returns do not turn everything else black.
-// Throws PrepareError with one line "PATH: what (where)" for every failure: missing file,
-// directory, unknown extension, garbage or truncated file, a header declaring more data than the
+// Throws PrepareError with one line "PATH: what (where)" for every failure: a path that is not a
+// regular file of at most kScanInput.max_bytes (cli::Error, from cli::checkInputFile), unknown extension, garbage or truncated file, a header declaring more data than the
 // file holds (checked before anything is allocated), missing or wrongly typed x/y/z, no points,
 // no finite points, or a finite |coordinate| > kMaxAbsCoordinate (naming point index and value).
 // Identical points are not an error here (the fitting step deals with them).

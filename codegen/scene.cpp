@@ -1,10 +1,12 @@
 #include "codegen/scene.h"
 
-#include <fstream>
+#include <algorithm>
 #include <nlohmann/json.hpp>
 #include <set>
-#include <sstream>
+#include <vector>
 
+#include "cli/input_file.h"
+#include "cli/text.h"
 #include "codegen/prepare_error.h"
 #include "renderer/camera.h"
 #include "renderer/model_format.h"
@@ -20,10 +22,10 @@ constexpr int kMaxNeighbours = 100;
 
 class SceneReader {
  public:
-  explicit SceneReader(std::string path) : path_(std::move(path)) {}
+  explicit SceneReader(const std::string& path) : path_(cli::displayPath(path)) {}
 
   [[noreturn]] void fail(const std::string& key, const std::string& what) const {
-    throw PrepareError(path_ + ": key '" + key + "': " + what);
+    throw PrepareError(path_ + ": key " + cli::inQuotes(key) + ": " + what);
   }
 
   double number(const json& value, const std::string& key, double low, double high) const {
@@ -37,6 +39,9 @@ class SceneReader {
 
   int integer(const json& value, const std::string& key, int low, int high) const {
     if (!value.is_number_integer()) fail(key, "expected a whole number");
+    if (value.is_number_unsigned() && value.get<unsigned long long>() > static_cast<unsigned long long>(high)) {
+      fail(key, format("%llu is outside %d..%d", value.get<unsigned long long>(), low, high));
+    }
     const auto x = value.get<long long>();
     if (x < low || x > high) fail(key, format("%lld is outside %d..%d", x, low, high));
     return static_cast<int>(x);
@@ -111,24 +116,44 @@ void readViewpoints(const SceneReader& reader, const json& value, Scene& scene) 
   }
 }
 
-}  // namespace
-
-Scene parseScene(const std::string& text, const std::string& path) {
-  const SceneReader reader(path);
-  json root;
+// Parses the JSON text, naming in a failure the key whose value was being read: nlohmann's own
+// message says "number overflow parsing '1e400'" but not where.
+json parseJson(const std::string& text, const std::string& path) {
+  const std::size_t nul = text.find('\0');
+  if (nul != std::string::npos) {
+    throw PrepareError(cli::displayPath(path) + ": a NUL byte at byte " + std::to_string(nul) +
+                       ": a scene file is JSON text");
+  }
+  std::vector<std::string> keys;  // keys[d]: the key being read at object depth d + 1
+  const json::parser_callback_t track_keys = [&keys](int depth, json::parse_event_t event, json& parsed) {
+    if (event == json::parse_event_t::key) {
+      keys.resize(static_cast<std::size_t>(std::max(depth, 1)));
+      keys.back() = parsed.get<std::string>();
+    } else if (event == json::parse_event_t::object_end) {
+      keys.resize(std::min(keys.size(), static_cast<std::size_t>(std::max(depth, 0))));
+    }
+    return true;
+  };
   try {
-    root = json::parse(text);
-  } catch (const json::parse_error& error) {
+    return json::parse(text, track_keys);
+  } catch (const json::exception& error) {
     // nlohmann's message reads "[json.exception.parse_error.101] parse error at line L, column C: ...".
     std::string message = error.what();
     const std::size_t cut = message.find("] ");
     if (cut != std::string::npos) message = message.substr(cut + 2);
-    for (char& c : message) {
-      if (c == '\n' || c == '\r') c = ' ';
-    }
-    throw PrepareError(path + ": not valid JSON: " + message);
+    std::string where;
+    for (const std::string& key : keys) where += (where.empty() ? "" : ".") + key;
+    throw PrepareError(cli::displayPath(path) + ": not valid JSON: " + cli::printable(message, 160) +
+                       (where.empty() ? std::string() : " (key " + cli::inQuotes(where) + ")"));
   }
-  if (!root.is_object()) throw PrepareError(path + ": expected a JSON object at the top level");
+}
+
+}  // namespace
+
+Scene parseScene(const std::string& text, const std::string& path) {
+  const SceneReader reader(path);
+  const json root = parseJson(text, path);
+  if (!root.is_object()) throw PrepareError(cli::displayPath(path) + ": expected a JSON object at the top level");
   reader.onlyKeys(root, "", {"yaw", "pitch", "roll", "viewpoints", "zoom", "framebuffer", "depths", "palette",
                              "crop", "outliers", "axes", "scan_unit", "prune", "angle_step", "zoom_step"});
 
@@ -212,11 +237,7 @@ Scene parseScene(const std::string& text, const std::string& path) {
 }
 
 Scene loadScene(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw PrepareError(path + ": cannot read the scene file");
-  std::ostringstream text;
-  text << in.rdbuf();
-  return parseScene(text.str(), path);
+  return parseScene(cli::readInputFile(path, kSceneInput), path);
 }
 
 }  // namespace octopoint::prepare

@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "cli/input_file.h"
 #include "codegen/prepare.h"
 
 namespace octopoint::prepare {
@@ -43,6 +44,9 @@ struct Scene {
   double angle_step_deg = 2.0;  // the largest step between sampled yaw or pitch angles
   double zoom_step = 1.25;      // the largest ratio between neighbouring sampled zooms
 };
+
+// Scene files are regular files of at most 1 MiB (cli/input_file.h): a real one has a few lines.
+inline constexpr cli::InputKind kSceneInput{"scene file", cli::kMiB};
 
 // Reads and checks a scene file. Throws PrepareError with one line "PATH: key 'K': what" for a
 // syntax error, an unknown key, a value of the wrong type or out of range.

@@ -5,7 +5,6 @@
 // arithmetic only, so the tool itself does not perturb a soft-float device.
 #include <algorithm>
 #include <array>
-#include <charconv>
 #include <cinttypes>
 #include <cstdio>
 #include <cstdlib>
@@ -15,6 +14,9 @@
 #include <string_view>
 #include <vector>
 
+#include "cli/arguments.h"
+#include "cli/numbers.h"
+#include "cli/run_tool.h"
 #include "models/registry.h"
 #include "renderer/render.h"
 
@@ -36,8 +38,9 @@ constexpr const char* kUsage =
     "Renders the embedded default model frontal (yaw 0) and rotated (yaw 30 degrees) with every\n"
     "render variant at depths 7 and 8 and prints a table of CPU milliseconds per image (frame clear\n"
     "included; median of 5 runs) and the float/fixed ratio of each algorithm (float_X vs fixed_X).\n"
-    "  --size WxH   framebuffer size in pixels (default 320x240)\n"
-    "  --min-ms N   time spent per table cell, at least one frame per run (default 500)\n";
+    "  --size WxH   framebuffer size in pixels, each side 1..8192, at most 16777216 pixels\n"
+    "               (default 320x240)\n"
+    "  --min-ms N   time spent per table cell, 1..3600000, at least one frame per run (default 500)\n";
 
 struct Options {
   std::int32_t width = 320;
@@ -45,39 +48,22 @@ struct Options {
   std::int64_t min_ms = 500;
 };
 
-template <typename T>
-bool parseInteger(std::string_view text, T* value) {
-  const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), *value);
-  return error == std::errc() && end == text.data() + text.size();
-}
-
-std::optional<Options> parseOptions(int argc, char** argv) {
+Options parseOptions(int argc, char** argv) {
   Options options;
-  for (int i = 1; i < argc; ++i) {
-    const std::string_view flag = argv[i];
-    if (flag == "--help") {
+  cli::ArgumentReader args(argc, argv);
+  while (args.next()) {
+    if (args.is("-h") || args.is("--help")) {
       std::fputs(kUsage, stdout);
       std::exit(0);
-    }
-    if (i + 1 >= argc || (flag != "--size" && flag != "--min-ms")) {
-      std::fprintf(stderr, "device_timing: unknown argument '%s' (see --help)\n", argv[i]);
-      return std::nullopt;
-    }
-    const std::string_view value = argv[++i];
-    if (flag == "--min-ms") {
-      if (!parseInteger(value, &options.min_ms) || options.min_ms < 1) {
-        std::fprintf(stderr, "device_timing: --min-ms wants a positive integer, got '%s'\n", argv[i]);
-        return std::nullopt;
-      }
-      continue;
-    }
-    const std::size_t x = value.find('x');
-    if (x == std::string_view::npos || !parseInteger(value.substr(0, x), &options.width) ||
-        !parseInteger(value.substr(x + 1), &options.height) || options.width < 1 ||
-        options.height < 1 || options.width > kMaxViewportSide || options.height > kMaxViewportSide) {
-      std::fprintf(stderr, "device_timing: --size wants WxH with sides 1..%d, got '%s'\n",
-                   kMaxViewportSide, argv[i]);
-      return std::nullopt;
+    } else if (args.is("--min-ms")) {
+      options.min_ms = cli::parseInteger(args.name(), args.value(), 1, 3'600'000);
+    } else if (args.is("--size")) {
+      const cli::FrameSize size = cli::parseFrameSize(args.name(), args.value(), 1, kMaxViewportSide,
+                                                      std::int64_t{4096} * 4096);
+      options.width = size.width;
+      options.height = size.height;
+    } else {
+      args.refuseUnknown();
     }
   }
   return options;
@@ -237,6 +223,6 @@ int run(const Options& options) {
 }  // namespace octopoint
 
 int main(int argc, char** argv) {
-  const std::optional<octopoint::Options> options = octopoint::parseOptions(argc, argv);
-  return options ? octopoint::run(*options) : 2;
+  return octopoint::cli::runTool("device_timing", argc, argv,
+                                 [](int count, char** values) { return octopoint::run(octopoint::parseOptions(count, values)); });
 }

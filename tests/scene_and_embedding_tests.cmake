@@ -12,7 +12,7 @@ scene_error_test(empty_range "empty_range.json: key 'yaw': empty range" empty_ra
 scene_error_test(zoom_zero "zoom_zero.json: key 'zoom': zoom must be greater than 0" zoom_zero.json)
 scene_error_test(depth_zero "depth_zero.json: key 'depths': 0 is outside 1..16" depth_zero.json)
 scene_error_test(depth_too_deep "depth_too_deep.json: key 'depths': 17 is outside 1..16" depth_too_deep.json)
-scene_error_test(missing_file "missing.json: cannot read the scene file" missing.json)
+scene_error_test(missing_file "missing.json: no such file" missing.json)
 prepare_error_test(scene_with_depths "--depths: not allowed with --scene" ${bad}/good_small.pcd
                    --scene ${scenes}/frontal.json --depths 7 -o ${cli_out}/scene_with_depths --name m)
 
@@ -33,5 +33,5 @@ add_test(NAME embedding.example_app_from_installed_package
                  "-DLINKER_FLAGS=${CMAKE_EXE_LINKER_FLAGS}"
                  -P ${CMAKE_CURRENT_SOURCE_DIR}/embedding_example.cmake)
 set_tests_properties(embedding.example_app_from_installed_package PROPERTIES FIXTURES_REQUIRED test_scans)
-prepare_error_test(bad_emit "--emit: 'hex' is not bytes or strings" ${bad}/good_small.pcd --emit hex
+prepare_error_test(bad_emit "--emit: 'hex' is not one of strings, bytes" ${bad}/good_small.pcd --emit hex
                    -o ${cli_out}/bad_emit --name m)

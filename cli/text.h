@@ -1,0 +1,29 @@
+#pragma once
+// Text from outside (an option's value, a key of a scene file, a file name) quoted in a message:
+// printable, one line, and short enough to read.
+
+#include <cstddef>
+#include <filesystem>
+#include <string>
+#include <string_view>
+
+namespace octopoint::cli {
+
+inline constexpr std::size_t kMaxQuoted = 40;
+inline constexpr std::size_t kMaxPathShown = 160;
+
+// `text` with every byte outside printable ASCII as '?', cut to `max_chars` followed by "..."
+// when longer. Never contains a line break.
+std::string printable(std::string_view text, std::size_t max_chars = kMaxQuoted);
+
+// printable() between single quotes: 'text'.
+std::string inQuotes(std::string_view text, std::size_t max_chars = kMaxQuoted);
+
+// A path for a message: printable, and cut in the middle ("/a/b/...c/scan.pcd") past
+// kMaxPathShown characters so that its file name stays visible.
+std::string displayPath(const std::filesystem::path& path);
+
+// One line: every line break or other control character of `message` as a space.
+std::string oneLine(std::string_view message);
+
+}  // namespace octopoint::cli

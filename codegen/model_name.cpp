@@ -1,0 +1,66 @@
+#include "codegen/model_name.h"
+
+#include <algorithm>
+#include <iterator>
+
+namespace octopoint::prepare {
+namespace {
+
+// C++20's keywords ([lex.key]) and alternative tokens ([lex.digraph]). The identifiers with a
+// special meaning only in some places (final, override, import, module) stay valid names: the
+// generated sources use the name where they are plain identifiers (tests/generated_names).
+constexpr std::string_view kKeywords[] = {
+    "alignas",   "alignof",      "and",           "and_eq",     "asm",          "auto",
+    "bitand",    "bitor",        "bool",          "break",      "case",         "catch",
+    "char",      "char8_t",      "char16_t",      "char32_t",   "class",        "compl",
+    "concept",   "const",        "consteval",     "constexpr",  "constinit",    "const_cast",
+    "continue",  "co_await",     "co_return",     "co_yield",   "decltype",     "default",
+    "delete",    "do",           "double",        "dynamic_cast", "else",       "enum",
+    "explicit",  "export",       "extern",        "false",      "float",        "for",
+    "friend",    "goto",         "if",            "inline",     "int",          "long",
+    "mutable",   "namespace",    "new",           "noexcept",   "not",          "not_eq",
+    "nullptr",   "operator",     "or",            "or_eq",      "private",      "protected",
+    "public",    "register",     "reinterpret_cast", "requires", "return",      "short",
+    "signed",    "sizeof",       "static",        "static_assert", "static_cast", "struct",
+    "switch",    "template",     "this",          "thread_local", "throw",      "true",
+    "try",       "typedef",      "typeid",        "typename",   "union",        "unsigned",
+    "using",     "virtual",      "void",          "volatile",   "wchar_t",      "while",
+    "xor",       "xor_eq"};
+
+// Macros GCC and Clang predefine in their GNU modes (CMake's default, -std=gnu++20) without an
+// underscore: a model called linux would be compiled as "1".
+constexpr std::string_view kPredefinedMacros[] = {"linux", "unix", "i386", "vax"};
+
+bool isLetter(char c) { return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z'); }
+bool isDigit(char c) { return c >= '0' && c <= '9'; }
+
+}  // namespace
+
+std::string modelNameProblem(std::string_view name) {
+  if (name.empty()) return "is empty";
+  if (name.size() > kMaxModelNameLength) {
+    return "is " + std::to_string(name.size()) + " characters long, at most " +
+           std::to_string(kMaxModelNameLength);
+  }
+  for (char c : name) {
+    if (!isLetter(c) && !isDigit(c) && c != '_') {
+      return "has a character other than letters, digits and '_'";
+    }
+  }
+  if (isDigit(name.front())) return "starts with a digit";
+  if (name.front() == '_' || name.back() == '_' || name.find("__") != std::string_view::npos) {
+    return "has an underscore at its start or end or two in a row (such names are reserved)";
+  }
+  if (std::find(std::begin(kKeywords), std::end(kKeywords), name) != std::end(kKeywords)) {
+    return "is a C++ keyword";
+  }
+  if (std::find(std::begin(kPredefinedMacros), std::end(kPredefinedMacros), name) != std::end(kPredefinedMacros)) {
+    return "is a macro some compilers predefine";
+  }
+  if (std::none_of(name.begin(), name.end(), [](char c) { return c >= 'a' && c <= 'z'; })) {
+    return "has no lower-case letter (names in capitals are left to macros)";
+  }
+  return {};
+}
+
+}  // namespace octopoint::prepare
