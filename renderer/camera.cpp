@@ -23,7 +23,26 @@ const char* describe(CameraError error) {
   return "unknown error";
 }
 
-CameraError buildFrameSetup(const Camera& camera, int depth, int fraction_bits, FrameSetup* setup) {
+namespace {
+
+// Pixels per cube edge: zoom (Q16.16) * min(width, height), exact in Q16 (< 2^31 * 2^13).
+std::int64_t edgePixelsQ16(const Camera& camera) {
+  return static_cast<std::int64_t>(camera.zoom.raw()) * std::min(camera.width, camera.height);
+}
+
+// Component `axis` of the offset from a level-`level` node to its child k, Q(32-F).F, or nullopt
+// when it does not fit 64 bits.
+std::optional<std::int64_t> childOffset(const Rotation& rotation, std::int64_t edge_px_q16, int level, int k,
+                                        int axis, int fraction_bits) {
+  const int sign[3] = {(k & 4) ? 1 : -1, (k & 2) ? 1 : -1, (k & 1) ? 1 : -1};
+  // Row of R (Q1.30) dotted with the child's sign vector: Q2.30, |.| < 2^32.
+  std::int64_t row_dot_sign = 0;
+  for (int j = 0; j < 3; ++j) row_dot_sign += std::int64_t{sign[j]} * rotation.m_q30[axis][j];
+  // pixels = row_dot_sign / 2^30 * edge_px_q16 / 2^16 / 2^(level + 2), wanted in Q.F.
+  return mulShiftRound(row_dot_sign, edge_px_q16, 30 + 16 + level + 2 - fraction_bits);
+}
+
+CameraError checkCamera(const Camera& camera, int depth, int fraction_bits) {
   if (camera.width < 1 || camera.width > kMaxViewportSide || camera.height < 1 ||
       camera.height > kMaxViewportSide) {
     return CameraError::kBadViewport;
@@ -33,11 +52,33 @@ CameraError buildFrameSetup(const Camera& camera, int depth, int fraction_bits, 
     return CameraError::kBadFractionBits;
   }
   if (depth < 1 || depth > format::kMaxDepth) return CameraError::kBadDepth;
+  return CameraError::kNone;
+}
 
+}  // namespace
+
+std::optional<SplatFootprint> leafFootprint(const Camera& camera, int depth, int fraction_bits) {
+  if (checkCamera(camera, depth, fraction_bits) != CameraError::kNone) return std::nullopt;
   const Rotation rotation = rotationFromYawPitchRoll(camera.yaw, camera.pitch, camera.roll);
-  // Pixels per cube edge: zoom (Q16.16) * min(width, height), exact in Q16 (< 2^31 * 2^13).
-  const std::int64_t edge_px_q16 =
-      static_cast<std::int64_t>(camera.zoom.raw()) * std::min(camera.width, camera.height);
+  const std::int64_t edge_px_q16 = edgePixelsQ16(camera);
+  std::int64_t largest[2] = {0, 0};
+  for (int k = 0; k < 8; ++k) {
+    for (int axis = 0; axis < 2; ++axis) {
+      const std::optional<std::int64_t> value =
+          childOffset(rotation, edge_px_q16, depth - 1, k, axis, fraction_bits);
+      if (!value || std::llabs(*value) > std::numeric_limits<std::int32_t>::max()) return std::nullopt;
+      largest[axis] = std::max<std::int64_t>(largest[axis], std::llabs(*value));
+    }
+  }
+  return splatFootprint(largest[0], largest[1], depth, fraction_bits);
+}
+
+CameraError buildFrameSetup(const Camera& camera, int depth, int fraction_bits, FrameSetup* setup) {
+  if (const CameraError error = checkCamera(camera, depth, fraction_bits); error != CameraError::kNone) {
+    return error;
+  }
+  const Rotation rotation = rotationFromYawPitchRoll(camera.yaw, camera.pitch, camera.roll);
+  const std::int64_t edge_px_q16 = edgePixelsQ16(camera);
 
   constexpr std::int64_t kLimit = std::numeric_limits<std::int32_t>::max();
   const std::int64_t root[3] = {
@@ -54,18 +95,14 @@ CameraError buildFrameSetup(const Camera& camera, int depth, int fraction_bits, 
   result.fraction_bits = fraction_bits;
   result.width = camera.width;
   result.height = camera.height;
+  std::int64_t largest[3] = {0, 0, 0};  // of the last level done: the leaves' half extents
   for (int level = 0; level < depth; ++level) {
-    std::int64_t largest[3] = {0, 0, 0};
+    largest[0] = largest[1] = largest[2] = 0;
     for (int k = 0; k < 8; ++k) {
-      const int sign[3] = {(k & 4) ? 1 : -1, (k & 2) ? 1 : -1, (k & 1) ? 1 : -1};
       std::int32_t offset[3];
       for (int axis = 0; axis < 3; ++axis) {
-        // Row of R (Q1.30) dotted with the child's sign vector: Q2.30, |.| < 2^32.
-        std::int64_t row_dot_sign = 0;
-        for (int j = 0; j < 3; ++j) row_dot_sign += std::int64_t{sign[j]} * rotation.m_q30[axis][j];
-        // pixels = row_dot_sign / 2^30 * edge_px_q16 / 2^16 / 2^(level + 2), wanted in Q.F.
         const std::optional<std::int64_t> value =
-            mulShiftRound(row_dot_sign, edge_px_q16, 30 + 16 + level + 2 - fraction_bits);
+            childOffset(rotation, edge_px_q16, level, k, axis, fraction_bits);
         if (!value || std::llabs(*value) > kLimit) return CameraError::kOverflow;
         offset[axis] = static_cast<std::int32_t>(*value);
         largest[axis] = std::max<std::int64_t>(largest[axis], std::llabs(*value));
@@ -75,11 +112,18 @@ CameraError buildFrameSetup(const Camera& camera, int depth, int fraction_bits, 
     }
     for (int axis = 0; axis < 3; ++axis) worst[axis] += largest[axis];
   }
+  // A splat reaches at most its padded half extent (largest + depth + 1) and one pixel further
+  // from a leaf (renderer/splat_footprint.h); a leaf without one, only its own position.
+  const SplatFootprint splat = splatFootprint(largest[0], largest[1], depth, fraction_bits);
+  const std::int64_t splat_margin = splat.active() ? depth + 1 + (std::int64_t{1} << fraction_bits) : 0;
+  const std::int64_t splat_reach[3] = {splat.active() ? largest[0] + splat_margin : 0,
+                                       splat.active() ? largest[1] + splat_margin : 0, 0};
   // The z-buffer reserves INT32_MAX for "empty", hence the strict bound.
   for (int axis = 0; axis < 3; ++axis) {
-    if (worst[axis] >= kLimit) return CameraError::kOverflow;
+    if (worst[axis] + splat_reach[axis] >= kLimit) return CameraError::kOverflow;
   }
   result.root = Vec3{static_cast<std::int32_t>(root[0]), static_cast<std::int32_t>(root[1]), 0};
+  result.splat = splat;
   result.depth_bias = static_cast<std::uint32_t>(worst[2]);
   const std::uint64_t depth_range = 2 * static_cast<std::uint64_t>(worst[2]);
   while ((depth_range >> result.depth_shift) > Framebuffer::kMaxDepthKey) ++result.depth_shift;

@@ -15,10 +15,12 @@
 
 #include <array>
 #include <cstdint>
+#include <optional>
 
 #include "fixedpoint/angle.h"
 #include "fixedpoint/fixed.h"
 #include "renderer/model_format.h"
+#include "renderer/splat_footprint.h"
 
 namespace octopoint {
 
@@ -72,6 +74,11 @@ struct FrameSetup {
   // step is 2^(depth_shift - F) pixels of depth: at zoom 1 and F = 15, depth_shift is 0 or 1.
   std::uint32_t depth_bias = 0;
   int depth_shift = 0;
+  // What a leaf covers (renderer/splat_footprint.h): one pixel while a voxel of this depth projects
+  // to at most one pixel per axis, else a columns x rows splat. fixed_fast and fixed_simd draw it;
+  // the paper's variants (fixed_baseline .. fixed_clipped, float_*) always set one pixel per leaf.
+  // A caller may reset it to SplatFootprint{} to draw one pixel per leaf with any variant.
+  SplatFootprint splat;
 
   std::uint32_t depthKey(std::int32_t z) const {
     return (static_cast<std::uint32_t>(z) + depth_bias) >> depth_shift;  // mod 2^32: no overflow
@@ -80,7 +87,14 @@ struct FrameSetup {
 
 // Builds the frame set-up, or refuses the camera (returns the reason) when a coordinate could
 // overflow: the worst case |root| + sum over levels of the largest child offset is checked per
-// axis, so the decoder's additions can never wrap.
+// axis, so the decoder's additions can never wrap, nor the splat's pixel range (its reach is
+// included in the check).
 CameraError buildFrameSetup(const Camera& camera, int depth, int fraction_bits, FrameSetup* setup);
+
+// The footprint a leaf of `depth` has for `camera` (FrameSetup::splat of buildFrameSetup, computed
+// from the last level's offsets alone: cheap enough to ask for every stored depth), or nullopt
+// when the camera is refused outright (bad size, zoom, depth or fraction bits, an offset over 32
+// bits). buildFrameSetup may still refuse a camera this accepts, for the sum of all levels.
+std::optional<SplatFootprint> leafFootprint(const Camera& camera, int depth, int fraction_bits);
 
 }  // namespace octopoint

@@ -42,6 +42,10 @@ std::optional<Variant> variantFromName(std::string_view name) {
   return std::nullopt;
 }
 
+Variant defaultVariant() { return simdDecoderAvailable() ? Variant::kFixedSimd : Variant::kFixedFast; }
+
+bool drawsSplats(Variant variant) { return variant == Variant::kFixedFast || variant == Variant::kFixedSimd; }
+
 bool renderLevel(Variant variant, const LevelView& level, const FrameSetup& setup,
                  Framebuffer& frame, const std::atomic<bool>* abort) {
   switch (variant) {

@@ -1,6 +1,8 @@
 #pragma once
-// Drawing a model level into a framebuffer, by named variant (DESIGN.md 4). All fixed variants
-// draw bit-identical frames.
+// Drawing a model level into a framebuffer, by named variant (docs/splats.md). All fixed variants
+// draw bit-identical frames while a voxel projects to at most one pixel; beyond that fixed_fast and
+// fixed_simd draw footprint splats (identical to each other), the paper's variants one pixel per
+// leaf.
 
 #include <atomic>
 #include <optional>
@@ -36,6 +38,11 @@ struct VariantInfo {
 // The variants this machine runs: fixed_simd only where the CPU has AVX2 (simdDecoderAvailable).
 std::span<const VariantInfo> allVariants();
 std::optional<Variant> variantFromName(std::string_view name);
+// The default variant wherever a frame is drawn: the fastest this CPU runs, fixed_simd where it
+// has AVX2, else fixed_fast. Both draw footprint splats (FrameSetup::splat).
+Variant defaultVariant();
+// Whether a variant draws the set-up's footprint splats; the others set one pixel per leaf.
+bool drawsSplats(Variant variant);
 
 // Draws `level` with the set-up of one frame into `frame` (which it does not clear, so several
 // models can share a frame). The frame must have the set-up's width and height. When `abort` is

@@ -12,6 +12,9 @@
 //   there is no call per leaf parent: calls were a third of the instructions per point.
 // - Hierarchical clipping as in fixed_clipped: subtrees proven on screen plot without bounds
 //   checks, subtrees proven off screen are stepped over without computing positions.
+// When a voxel of the drawn depth projects to more than one pixel (FrameSetup::splat), each leaf
+// covers its footprint splat instead (renderer/splat_plot.h), and the clip's reach includes the
+// splat; the walk is the same, instantiated a second time so the one-pixel path stays as it was.
 #include <algorithm>
 #include <bit>
 #include <cassert>
@@ -19,6 +22,7 @@
 #include "renderer/decode_algorithms.h"
 #include "renderer/framebuffer_plot.h"
 #include "renderer/render.h"
+#include "renderer/splat_plot.h"
 #include "renderer/subtree_clip.h"
 
 namespace octopoint {
@@ -36,11 +40,21 @@ struct FastFrame {
   SubtreeClip clip;
   const std::atomic<bool>* abort;
   mutable bool aborted;
+  SplatPlot splat;  // used by the splat path only
 };
 
-// A leaf parent at tree level `level` centred at `c` plots its children.
-template <bool kChecked>
+// A leaf parent at tree level `level` centred at `c` plots its children: one pixel each, or (kSplat)
+// each its footprint splat.
+template <bool kChecked, bool kSplat>
 Cursor plotChildren(const FastFrame& f, int level, Vec3 c, Cursor at) {
+  if constexpr (kSplat) {
+    const auto& offsets = (*f.offsets)[static_cast<std::size_t>(level)];
+    const std::uint8_t* leaf = at.leaf;
+    for (unsigned mask = *at.node; mask != 0; mask &= mask - 1, ++leaf) {
+      f.splat.plot<kChecked>(c + offsets[static_cast<std::size_t>(std::countr_zero(mask))], *leaf);
+    }
+    return {at.node + 1, leaf};
+  }
   std::uint32_t* const pixel = f.target.pixel;
   const std::int32_t width = f.target.width;
   const std::int32_t height = f.target.height;
@@ -70,7 +84,7 @@ Cursor plotChildren(const FastFrame& f, int level, Vec3 c, Cursor at) {
   return {at.node + 1, leaf};
 }
 
-template <bool kChecked>
+template <bool kChecked, bool kSplat>
 Cursor visit(const FastFrame& f, int level, Vec3 c, Cursor at) {
   if (level <= kAbortCheckLevel && f.abort != nullptr) {
     if (!f.aborted && level == kAbortCheckLevel) f.aborted = f.abort->load(std::memory_order_relaxed);
@@ -81,21 +95,21 @@ Cursor visit(const FastFrame& f, int level, Vec3 c, Cursor at) {
       case Clip::kOutside:
         skipSubtree(at.node, at.leaf, level, f.levels);
         return at;
-      case Clip::kInside: return visit<false>(f, level, c, at);
+      case Clip::kInside: return visit<false, kSplat>(f, level, c, at);
       case Clip::kStraddling: break;
     }
   }
-  if (level + 1 == f.levels) return plotChildren<kChecked>(f, level, c, at);
+  if (level + 1 == f.levels) return plotChildren<kChecked, kSplat>(f, level, c, at);
   const auto& offsets = (*f.offsets)[static_cast<std::size_t>(level)];
   unsigned mask = *at.node++;
   if (!kChecked && level + 2 == f.levels) {  // leaf parents below: plot them here, no call each
     for (; mask != 0; mask &= mask - 1) {
-      at = plotChildren<false>(f, level + 1, c + offsets[static_cast<std::size_t>(std::countr_zero(mask))], at);
+      at = plotChildren<false, kSplat>(f, level + 1, c + offsets[static_cast<std::size_t>(std::countr_zero(mask))], at);
     }
     return at;
   }
   for (; mask != 0; mask &= mask - 1) {
-    at = visit<kChecked>(f, level + 1, c + offsets[static_cast<std::size_t>(std::countr_zero(mask))], at);
+    at = visit<kChecked, kSplat>(f, level + 1, c + offsets[static_cast<std::size_t>(std::countr_zero(mask))], at);
   }
   return at;
 }
@@ -106,8 +120,15 @@ bool renderFixedFast(const LevelView& level, const FrameSetup& setup, Framebuffe
                      const std::atomic<bool>* abort) {
   assert(level.depth == setup.depth);
   assert(frame.width() == setup.width && frame.height() == setup.height);
-  FastFrame f{PlotTarget(frame, setup), setup.depth, &setup.child_offset, SubtreeClip(setup), abort, false};
-  visit<true>(f, 0, setup.root, {level.nodes.data(), level.leaves.data()});
+  const bool splat = setup.splat.active();
+  FastFrame f{PlotTarget(frame, setup), setup.depth, &setup.child_offset,
+              splat ? SubtreeClip(setup, setup.splat) : SubtreeClip(setup), abort, false, SplatPlot(frame, setup)};
+  const Cursor root{level.nodes.data(), level.leaves.data()};
+  if (splat) {
+    visit<true, true>(f, 0, setup.root, root);
+  } else {
+    visit<true, false>(f, 0, setup.root, root);
+  }
   return !f.aborted;
 }
 

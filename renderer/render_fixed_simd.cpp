@@ -17,6 +17,10 @@
 // Subtrees straddling the frame's edge, and a model's last leaves (the eight-byte colour load
 // would read past them), use the scalar checked plot; off-screen subtrees are skipped, as in
 // fixed_fast. The abort flag is polled at kAbortCheckLevel.
+// Splats (FrameSetup::splat active): the same walk, instantiated a second time, emits each leaf's
+// splat's first pixel (its position plus the footprint's offset, then shifted), and the batch
+// writes a columns x rows rectangle per point, eight pixels of a row per vector min; the clip's
+// reach includes the splat. Frames equal fixed_fast's, bit for bit.
 #include <algorithm>
 #include <array>
 #include <bit>
@@ -25,6 +29,7 @@
 #include "renderer/decode_algorithms.h"
 #include "renderer/framebuffer_plot.h"
 #include "renderer/render.h"
+#include "renderer/splat_plot.h"
 #include "renderer/subtree_clip.h"
 
 #if defined(__x86_64__) && defined(__GNUC__)
@@ -63,7 +68,8 @@ struct SimdFrame {
       : target(frame, setup),
         levels(setup.depth),
         offsets(&setup.child_offset),
-        clip(setup),
+        clip(setup.splat.active() ? SubtreeClip(setup, setup.splat) : SubtreeClip(setup)),
+        splat(frame, setup),
         abort(abort_flag),
         leaf_end(level.leaves.data() + level.leaves.size()) {}
 
@@ -71,6 +77,7 @@ struct SimdFrame {
   int levels;              // the model depth
   const OffsetTable<std::int32_t>* offsets;
   SubtreeClip clip;
+  SplatPlot splat;  // the splat path's footprint, and its checked plot on the frame's edge
   const std::atomic<bool>* abort;
   bool aborted = false;
   const std::uint8_t* leaf_end;
@@ -83,6 +90,8 @@ struct SimdFrame {
   int batched = 0;
   alignas(32) std::uint32_t batch_index[kBatch + 8];
   alignas(32) std::uint32_t batch_word[kBatch + 8];
+  // The splat path only: each point's columns (low 16 bits) and rows (high 16 bits), both <= 8192.
+  alignas(32) std::uint32_t batch_extent[kBatch + 8];
 };
 
 __attribute__((target("avx2"))) void plotBatch(SimdFrame& f) {
@@ -104,12 +113,55 @@ __attribute__((target("avx2"))) void plotBatch(SimdFrame& f) {
   f.batched = 0;
 }
 
+// The splat path's batch: each point's index is its splat's first pixel, on screen with the whole
+// rectangle (the clip proved it). A row is written eight pixels per vector min; the last, partial
+// chunk of a row with masked loads and stores, which touch no pixel outside the rectangle.
+__attribute__((target("avx2"))) void plotSplatBatch(SimdFrame& f) {
+  std::uint32_t* const pixel = f.target.pixel;
+  const std::size_t width = static_cast<std::size_t>(f.target.width);
+  const __m256i lane = _mm256_setr_epi32(0, 1, 2, 3, 4, 5, 6, 7);
+  for (int i = 0; i < f.batched; ++i) {
+    const __m256i word = _mm256_set1_epi32(static_cast<std::int32_t>(f.batch_word[i]));
+    const std::int32_t columns = static_cast<std::int32_t>(f.batch_extent[i] & 0xFFFF);
+    const std::int32_t rows = static_cast<std::int32_t>(f.batch_extent[i] >> 16);
+    const std::int32_t full = columns & ~7;
+    const __m256i tail_mask = _mm256_cmpgt_epi32(_mm256_set1_epi32(columns - full), lane);
+    std::uint32_t* row = pixel + f.batch_index[i];
+    for (std::int32_t r = 0; r < rows; ++r, row += width) {
+      for (std::int32_t x = 0; x < full; x += 8) {
+        auto* at = reinterpret_cast<__m256i*>(row + x);
+        _mm256_storeu_si256(at, _mm256_min_epu32(_mm256_loadu_si256(at), word));
+      }
+      if (full != columns) {
+        auto* at = reinterpret_cast<int*>(row + full);
+        _mm256_maskstore_epi32(at, tail_mask, _mm256_min_epu32(_mm256_maskload_epi32(at, tail_mask), word));
+      }
+    }
+  }
+  f.batched = 0;
+}
+
+template <bool kSplat>
+void flushBatch(SimdFrame& f) {
+  if constexpr (kSplat) {
+    plotSplatBatch(f);
+  } else {
+    plotBatch(f);
+  }
+}
+
 // The scalar plot with bounds checks: for leaf parents on the frame's edge.
+template <bool kSplat>
 void plotChildrenChecked(const SimdFrame& f, int level, Vec3 c, unsigned mask,
                          const std::uint8_t*& leaf) {
   const auto& offsets = (*f.offsets)[static_cast<std::size_t>(level)];
   for (; mask != 0; mask &= mask - 1) {
-    f.target(c + offsets[static_cast<std::size_t>(std::countr_zero(mask))], *leaf++);
+    const Vec3 p = c + offsets[static_cast<std::size_t>(std::countr_zero(mask))];
+    if constexpr (kSplat) {
+      f.splat.plot<true>(p, *leaf++);
+    } else {
+      f.target(p, *leaf++);
+    }
   }
 }
 
@@ -119,17 +171,20 @@ struct Emitter {
   std::uint32_t* index;
   std::uint32_t* word;
   const std::uint8_t* colours;
+  std::uint32_t* extent;  // the splat path only
 };
 
 // The frame's formats as vectors, loaded into registers once per call.
 struct LeafLanes {
   __m256i width;
   __m128i fraction_bits, depth_shift;
+  __m256i span_x, span_y;  // the splat path only: SplatFootprint::span_x, span_y
 };
 
 __attribute__((target("avx2"))) inline LeafLanes leafLanes(const SimdFrame& f) {
   return {_mm256_set1_epi32(f.target.width), _mm_cvtsi32_si128(f.target.fraction_bits),
-          _mm_cvtsi32_si128(f.target.depth_shift)};
+          _mm_cvtsi32_si128(f.target.depth_shift), _mm256_set1_epi32(f.splat.footprint.span_x),
+          _mm256_set1_epi32(f.splat.footprint.span_y)};
 }
 
 // The centre's z plus the depth bias (PlotTarget::biasedDepth) in every lane: adding a child's
@@ -139,8 +194,11 @@ __attribute__((target("avx2"))) inline __m256i biasedDepthLanes(const SimdFrame&
 }
 
 // A leaf parent whose children all land on screen, given its eight children's positions per axis
-// (x, y in Q(32-F).F; z in Q(32-F).F plus the depth bias), appends its set children (`mask`) to
-// the batch, their colours being the next popcount(mask) bytes at out.colours.
+// (x, y in Q(32-F).F, plus the splat's offsets when kSplat; z in Q(32-F).F plus the depth bias),
+// appends its set children (`mask`) to the batch, their colours being the next popcount(mask)
+// bytes at out.colours. With kSplat, the index is the splat's first pixel and each point's
+// columns and rows go to out.extent.
+template <bool kSplat>
 __attribute__((target("avx2"), always_inline)) inline void emitChildren(
     const LeafLanes& lanes, __m256i x, __m256i y, __m256i biased_z, unsigned mask, Emitter& out) {
   // Pixel column and row: floor(x / 2^F); index = row * width + column (< 2^26).
@@ -159,6 +217,18 @@ __attribute__((target("avx2"), always_inline)) inline void emitChildren(
                       _mm256_permutevar8x32_epi32(index, keep));
   _mm256_storeu_si256(reinterpret_cast<__m256i*>(out.word), word);
   const int children = std::popcount(mask);
+  if constexpr (kSplat) {
+    // Last column and row (SplatFootprint): (x + span) >> F; count = last - first + 1 (< 2^16).
+    const __m256i columns = _mm256_sub_epi32(
+        _mm256_sra_epi32(_mm256_add_epi32(x, lanes.span_x), lanes.fraction_bits), column);
+    const __m256i rows = _mm256_sub_epi32(
+        _mm256_sra_epi32(_mm256_add_epi32(y, lanes.span_y), lanes.fraction_bits), row);
+    const __m256i one = _mm256_set1_epi32(1);
+    const __m256i extent = _mm256_or_si256(_mm256_add_epi32(columns, one),
+                                           _mm256_slli_epi32(_mm256_add_epi32(rows, one), 16));
+    _mm256_storeu_si256(reinterpret_cast<__m256i*>(out.extent), _mm256_permutevar8x32_epi32(extent, keep));
+    out.extent += children;
+  }
   out.index += children;
   out.word += children;
   out.colours += children;
@@ -166,6 +236,7 @@ __attribute__((target("avx2"), always_inline)) inline void emitChildren(
 
 // The leaf parents below a grandparent at `level`, centred at `c`, with child mask `mask` (already
 // read), whose subtree is on screen: reads their masks from `node` on, returns the node after.
+template <bool kSplat>
 __attribute__((target("avx2"), always_inline)) inline const std::uint8_t* emitGrandparent(
     const SimdFrame& f, const LeafLanes& lanes, int level, Vec3 c, unsigned mask,
     const std::uint8_t* node, Emitter& out) {
@@ -175,14 +246,14 @@ __attribute__((target("avx2"), always_inline)) inline const std::uint8_t* emitGr
   const __m256i biased_cz = biasedDepthLanes(f, c);
   for (; mask != 0; mask &= mask - 1) {
     const auto k = static_cast<std::size_t>(std::countr_zero(mask));
-    emitChildren(lanes, _mm256_add_epi32(cx, f.grandchild_lanes[0][l][k]),
+    emitChildren<kSplat>(lanes, _mm256_add_epi32(cx, f.grandchild_lanes[0][l][k]),
                  _mm256_add_epi32(cy, f.grandchild_lanes[1][l][k]),
                  _mm256_add_epi32(biased_cz, f.grandchild_lanes[2][l][k]), *node++, out);
   }
   return node;
 }
 
-template <bool kChecked>
+template <bool kChecked, bool kSplat>
 __attribute__((target("avx2"))) const std::uint8_t* visit(SimdFrame& f, int level, Vec3 c,
                                                           const std::uint8_t* node,
                                                           const std::uint8_t*& leaf) {
@@ -197,7 +268,7 @@ __attribute__((target("avx2"))) const std::uint8_t* visit(SimdFrame& f, int leve
         skipSubtree(node, leaf, level, f.levels);
         return node;
       case Clip::kInside:
-        return visit<false>(f, level, c, node, leaf);
+        return visit<false, kSplat>(f, level, c, node, leaf);
       case Clip::kStraddling:
         break;
     }
@@ -212,21 +283,25 @@ __attribute__((target("avx2"))) const std::uint8_t* visit(SimdFrame& f, int leve
   // still be in the stream.
   if (!kChecked && may_inline && levels_below <= 3 &&
       f.leaf_end - leaf >= (std::ptrdiff_t{1} << (3 * levels_below))) {
-    if (f.batched > kBatch - kMostLeavesPerCall) plotBatch(f);
+    if (f.batched > kBatch - kMostLeavesPerCall) flushBatch<kSplat>(f);
     const LeafLanes lanes = leafLanes(f);
-    Emitter out{f.batch_index + f.batched, f.batch_word + f.batched, leaf};
+    if constexpr (kSplat) {  // positions shifted to the splat's first pixel (mod 2^32, as lanes add)
+      c.x += f.splat.footprint.offset_x;
+      c.y += f.splat.footprint.offset_y;
+    }
+    Emitter out{f.batch_index + f.batched, f.batch_word + f.batched, leaf, f.batch_extent + f.batched};
     if (levels_below == 1) {
       const auto l = static_cast<std::size_t>(level);
-      emitChildren(lanes, _mm256_add_epi32(_mm256_set1_epi32(c.x), f.child_lanes[0][l]),
+      emitChildren<kSplat>(lanes, _mm256_add_epi32(_mm256_set1_epi32(c.x), f.child_lanes[0][l]),
                    _mm256_add_epi32(_mm256_set1_epi32(c.y), f.child_lanes[1][l]),
                    _mm256_add_epi32(biasedDepthLanes(f, c), f.child_lanes[2][l]), mask, out);
     } else if (levels_below == 2) {
-      node = emitGrandparent(f, lanes, level, c, mask, node, out);
+      node = emitGrandparent<kSplat>(f, lanes, level, c, mask, node, out);
     } else {
       const auto& offsets = (*f.offsets)[static_cast<std::size_t>(level)];
       for (; mask != 0; mask &= mask - 1) {
         const unsigned grandparent_mask = *node++;
-        node = emitGrandparent(f, lanes, level + 1,
+        node = emitGrandparent<kSplat>(f, lanes, level + 1,
                                c + offsets[static_cast<std::size_t>(std::countr_zero(mask))],
                                grandparent_mask, node, out);
       }
@@ -236,12 +311,12 @@ __attribute__((target("avx2"))) const std::uint8_t* visit(SimdFrame& f, int leve
     return node;
   }
   if (levels_below == 1) {
-    plotChildrenChecked(f, level, c, mask, leaf);
+    plotChildrenChecked<kSplat>(f, level, c, mask, leaf);
     return node;
   }
   const auto& offsets = (*f.offsets)[static_cast<std::size_t>(level)];
   for (; mask != 0; mask &= mask - 1) {
-    node = visit<kChecked>(
+    node = visit<kChecked, kSplat>(
         f, level + 1, c + offsets[static_cast<std::size_t>(std::countr_zero(mask))], node, leaf);
   }
   return node;
@@ -277,8 +352,13 @@ __attribute__((target("avx2"))) bool renderAvx2(const LevelView& level, const Fr
     }
   }
   const std::uint8_t* leaf = level.leaves.data();
-  visit<true>(*f, 0, setup.root, level.nodes.data(), leaf);
-  plotBatch(*f);
+  if (setup.splat.active()) {
+    visit<true, true>(*f, 0, setup.root, level.nodes.data(), leaf);
+    plotSplatBatch(*f);
+  } else {
+    visit<true, false>(*f, 0, setup.root, level.nodes.data(), leaf);
+    plotBatch(*f);
+  }
   return !f->aborted;
 }
 

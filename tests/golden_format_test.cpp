@@ -104,6 +104,7 @@ FrameSetup identitySetup(int depth) {
   camera.height = 8;
   FrameSetup setup;
   EXPECT_EQ(buildFrameSetup(camera, depth, 15, &setup), CameraError::kNone);
+  setup.splat = SplatFootprint{};  // one pixel per leaf: the positions, as every fixed variant draws them
   return setup;
 }
 

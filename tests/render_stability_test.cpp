@@ -310,6 +310,7 @@ TEST(RenderStability, OneByOneAndLargestCommonFramebuffersDrawTheSameWithEveryFi
     camera.yaw = Angle::fromDegrees(20);
     FrameSetup setup;
     ASSERT_EQ(buildFrameSetup(camera, 8, kDefaultFractionBits, &setup), CameraError::kNone);
+    setup.splat = SplatFootprint{};  // one pixel per leaf; splats: tests/splat_test.cpp
     expectWithinProvenBound(defaultLevel(8), camera, kDefaultFractionBits);
     Framebuffer reference(width, height), frame(width, height);
     reference.clear();

@@ -1,6 +1,8 @@
-// Every fixed variant draws the bit-identical frame (colours and z-buffer) as fixed_baseline, over
-// many cameras and random trees of every depth up to 9; every floating point variant stays within
-// its stated bound of it.
+// Every fixed variant draws the bit-identical frame (colours and z-buffer) as fixed_baseline at one
+// pixel per leaf, over many cameras and random trees of every depth up to 9; with the set-up's
+// footprint splats, the variants that draw them (fixed_fast, fixed_simd) draw the frame of the
+// splat's definition (tests/splat_reference.h), the others still fixed_baseline's; every floating
+// point variant stays within its stated bound of it.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -8,10 +10,12 @@
 #include <bit>
 #include <cmath>
 #include <random>
+#include <string>
 #include <vector>
 
 #include "models/registry.h"
 #include "renderer/render.h"
+#include "tests/splat_reference.h"
 
 namespace octopoint {
 namespace {
@@ -60,23 +64,49 @@ class RenderVariants : public ::testing::Test {
   std::optional<ModelView> model_;
 };
 
+// Draws `level` with every fixed variant (with and without an abort flag to poll) and checks each
+// frame: at one pixel per leaf (`setup`'s splat reset) against fixed_baseline's, with the set-up's
+// own footprint against the splat's definition for the variants that draw splats.
+void expectEveryFixedVariantMatches(const LevelView& level, const FrameSetup& natural, const std::string& label) {
+  static const std::atomic<bool> never_set{false};
+  FrameSetup one_pixel = natural;
+  one_pixel.splat = SplatFootprint{};
+  Framebuffer baseline(natural.width, natural.height), splatted(natural.width, natural.height);
+  Framebuffer candidate(natural.width, natural.height);
+  baseline.clear();
+  ASSERT_TRUE(renderLevel(Variant::kFixedBaseline, level, one_pixel, baseline));
+  splatted.clear();
+  testing_support::ReferenceSplat::draw(level, natural, splatted);
+  for (const VariantInfo& info : allVariants()) {
+    if (!isFixedPoint(info.variant)) continue;
+    for (const FrameSetup* setup : {static_cast<const FrameSetup*>(&one_pixel), &natural}) {
+      const Framebuffer& expected = setup == &natural && drawsSplats(info.variant) ? splatted : baseline;
+      for (const std::atomic<bool>* abort : {static_cast<const std::atomic<bool>*>(nullptr), &never_set}) {
+        candidate.clear();
+        ASSERT_TRUE(renderLevel(info.variant, level, *setup, candidate, abort));
+        ASSERT_TRUE(std::ranges::equal(candidate.pixels(), expected.pixels()))
+            << info.name << " " << label << (setup == &natural ? " with its splats " : " one pixel per leaf ")
+            << (natural.splat.active() ? "(splat active)" : "(no splat)")
+            << (abort != nullptr ? " with" : " without") << " an abort flag";
+      }
+    }
+  }
+}
+
 TEST_F(RenderVariants, EveryFixedVariantDrawsTheBaselineFrameBitForBit) {
+  int splatting = 0;
   for (int i = 0; i < model_->levelCount(); ++i) {
     const LevelView& level = model_->level(i);
     for (const Camera& camera : manyCameras()) {
       FrameSetup setup;
       ASSERT_EQ(buildFrameSetup(camera, level.depth, kDefaultFractionBits, &setup), CameraError::kNone);
-      Framebuffer reference(camera.width, camera.height);
-      Framebuffer candidate(camera.width, camera.height);
-      draw(Variant::kFixedBaseline, level, setup, reference);
-      for (const VariantInfo& info : allVariants()) {
-        if (!isFixedPoint(info.variant)) continue;
-        draw(info.variant, level, setup, candidate);
-        ASSERT_TRUE(std::ranges::equal(candidate.pixels(), reference.pixels()))
-            << info.name << " depth " << level.depth << " yaw " << camera.yaw.turns16();
-      }
+      splatting += setup.splat.active() ? 1 : 0;
+      expectEveryFixedVariantMatches(level, setup, "depth " + std::to_string(level.depth) + " yaw " +
+                                                       std::to_string(camera.yaw.turns16()));
     }
   }
+  EXPECT_GT(splatting, 20);  // both kinds of frame are among these cameras
+  EXPECT_LT(splatting, 100);
 }
 
 // A random valid level of `depth` with about `leaves_wanted` leaves: each child of each node is
@@ -119,7 +149,6 @@ RandomLevel randomLevel(int depth, double leaves_wanted, std::mt19937& random) {
 TEST_F(RenderVariants, EveryFixedVariantDrawsTheBaselineFrameOfRandomTreesOfEveryDepth) {
   std::mt19937 random(7);
   const std::vector<Camera> cameras = manyCameras();
-  const std::atomic<bool> never_set{false};
   for (int depth = 1; depth <= 9; ++depth) {
     for (const double leaves_wanted : {6.0, 70.0, 600.0, 5000.0}) {
       const RandomLevel tree = randomLevel(depth, leaves_wanted, random);
@@ -129,19 +158,9 @@ TEST_F(RenderVariants, EveryFixedVariantDrawsTheBaselineFrameOfRandomTreesOfEver
         const Camera& camera = cameras[c];
         FrameSetup setup;
         ASSERT_EQ(buildFrameSetup(camera, depth, kDefaultFractionBits, &setup), CameraError::kNone);
-        Framebuffer reference(camera.width, camera.height);
-        Framebuffer candidate(camera.width, camera.height);
-        draw(Variant::kFixedBaseline, level, setup, reference);
-        for (const VariantInfo& info : allVariants()) {
-          if (!isFixedPoint(info.variant)) continue;
-          for (const std::atomic<bool>* abort : {static_cast<const std::atomic<bool>*>(nullptr), &never_set}) {
-            candidate.clear();
-            ASSERT_TRUE(renderLevel(info.variant, level, setup, candidate, abort));
-            ASSERT_TRUE(std::ranges::equal(candidate.pixels(), reference.pixels()))
-                << info.name << " depth " << depth << " leaves " << tree.leaves.size() << " camera " << c
-                << (abort != nullptr ? " with" : " without") << " an abort flag";
-          }
-        }
+        expectEveryFixedVariantMatches(level, setup, "depth " + std::to_string(depth) + " leaves " +
+                                                         std::to_string(tree.leaves.size()) + " camera " +
+                                                         std::to_string(c));
       }
     }
   }

@@ -1,0 +1,44 @@
+#include "renderer/level_of_detail.h"
+
+#include <algorithm>
+#include <array>
+
+namespace octopoint {
+namespace {
+
+// Whether a leaf of `depth` covers at most one pixel per axis for `camera`; nullopt if refused.
+std::optional<bool> fitsAPixel(const Camera& camera, int depth) {
+  const std::optional<SplatFootprint> footprint = leafFootprint(camera, depth, kDefaultFractionBits);
+  if (!footprint) return std::nullopt;
+  constexpr std::int32_t kOnePixel = std::int32_t{1} << kDefaultFractionBits;
+  return std::max(footprint->extent_x, footprint->extent_y) <= kOnePixel;
+}
+
+}  // namespace
+
+std::optional<int> autoDepth(std::span<const int> stored_depths, const Camera& camera) {
+  std::optional<int> finest_accepted;
+  for (const int depth : stored_depths) {  // coarsest first
+    const std::optional<bool> fits = fitsAPixel(camera, depth);
+    if (!fits) continue;
+    if (*fits) return depth;
+    finest_accepted = depth;
+  }
+  return finest_accepted;
+}
+
+std::optional<int> neededDepth(const Camera& camera) {
+  std::array<int, format::kMaxDepth> every_depth{};
+  for (int d = 1; d <= format::kMaxDepth; ++d) every_depth[static_cast<std::size_t>(d - 1)] = d;
+  return autoDepth(every_depth, camera);
+}
+
+const LevelView* autoLevel(const ModelView& model, const Camera& camera) {
+  std::array<int, format::kMaxLevels> depths{};
+  const int count = model.levelCount();
+  for (int i = 0; i < count; ++i) depths[static_cast<std::size_t>(i)] = model.level(i).depth;
+  const std::optional<int> depth = autoDepth(std::span<const int>(depths.data(), static_cast<std::size_t>(count)), camera);
+  return depth ? model.levelOfDepth(*depth) : nullptr;
+}
+
+}  // namespace octopoint
