@@ -1,6 +1,7 @@
 #pragma once
 // A contact sheet of many views of one model (`octopoint-render --sheet N`): N yaw angles in
-// columns; rows for each of the model's depths (coarse first), unfilled and hole-filled.
+// columns; a first row at depth auto (renderer/level_of_detail.h), then rows for each of the
+// model's depths (coarse first), unfilled and hole-filled.
 
 #include <cstdint>
 

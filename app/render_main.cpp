@@ -24,6 +24,7 @@
 #include "renderer/camera.h"
 #include "renderer/framebuffer.h"
 #include "renderer/hole_fill.h"
+#include "renderer/level_of_detail.h"
 #include "renderer/model.h"
 #include "renderer/render.h"
 
@@ -49,17 +50,25 @@ nor --file it draws the default model embedded in this binary.
                      side)
   --size WxH         framebuffer size in pixels, each side 1..8192 and at most 16777216 pixels
                      (4096x4096) in all (default 320x240)
-  --depth N          which of the model's depths to draw, 1..16 (default: the finest)
-  --variant NAME     decoder variant (default fixed_baseline; see --list)
-  --fill, --no-fill  scanline hole filling after decoding, as the paper does (default --fill;
-                     docs/holefill.md)
-  --sheet N          a contact sheet instead: N yaw angles (1..36) in columns, each depth of
-                     the model unfilled and filled in rows; the whole sheet may have at most
-                     16777216 pixels (e.g. --sheet 6 at 640x480 for two depths)
+  --depth N|auto     which of the model's depths to draw (default auto: depth by projected size,
+                     below); N, 1..16, must be one the model stores
+  --variant NAME     decoder variant (default: the fastest this CPU runs, fixed_simd with AVX2,
+                     else fixed_fast; see --list)
+  --fill, --no-fill  scanline hole filling after decoding, as the paper does (default --no-fill:
+                     footprint splats leave no holes; docs/holefill.md)
+  --sheet N          a contact sheet instead: N yaw angles (1..36) in columns; rows: depth auto,
+                     then each depth of the model unfilled and filled; the whole sheet may have
+                     at most 16777216 pixels
   -o, --output FILE  the PNG to write (written whole or not at all); if it exists it must be a
                      regular file (a device or FIFO is refused)
   --list             list the embedded models and the decoder variants
   -h, --help         show this help
+
+Depth auto (docs/splats.md): a leaf's footprint W is the larger of its projected extents along
+screen x and y (voxel edge in pixels times the rotation row's |r0|+|r1|+|r2|). Auto draws the
+coarsest stored depth with W <= 1 pixel; if even the finest has W > 1 pixel, the finest with
+footprint splats (fixed_fast and fixed_simd cover each leaf's projected footprint, z-tested per
+pixel; the paper's variants set one pixel per leaf).
 
 Numbers are parsed whole and range-checked. On any error prints one line on stderr and exits
 with status 1, writing nothing.
@@ -72,10 +81,10 @@ struct Options {
   std::string model_file;
   std::string output;
   Camera camera;
-  std::optional<int> depth;
-  Variant variant = Variant::kFixedBaseline;
+  std::optional<int> depth;  // none: depth auto
+  Variant variant = defaultVariant();
   bool list = false;
-  bool fill = true;
+  bool fill = false;
   int sheet = 0;  // yaw angles of the contact sheet; 0: a single view
 };
 
@@ -111,7 +120,12 @@ Options parseOptions(int argc, char** argv) {
       options.camera.width = size.width;
       options.camera.height = size.height;
     } else if (args.is("--depth")) {
-      options.depth = cli::parseInt(args.name(), args.value(), 1, format::kMaxDepth);
+      const std::string text = args.value();
+      if (text == "auto") {
+        options.depth.reset();
+      } else {
+        options.depth = cli::parseInt(args.name(), text, 1, format::kMaxDepth);
+      }
     } else if (args.is("--variant")) {
       const std::string name = args.value();
       const std::optional<Variant> variant = variantFromName(name);
@@ -173,7 +187,10 @@ int run(int argc, char** argv) {
   const std::unique_ptr<LoadedModel> loaded = loadModel(options.model_name, options.model_file);
   const ModelView* model = &*loaded->view;
   const std::string& model_label = loaded->label;
-  const LevelView* level = options.depth ? model->levelOfDepth(*options.depth) : &model->finestLevel();
+  const LevelView* level = options.depth ? model->levelOfDepth(*options.depth) : autoLevel(*model, options.camera);
+  if (level == nullptr && !options.depth) {
+    throw cli::Error(std::string("camera refused: ") + describe(CameraError::kOverflow));
+  }
   if (level == nullptr) {
     std::string depths;
     for (int i = 0; i < model->levelCount(); ++i) {
@@ -217,8 +234,10 @@ int run(int argc, char** argv) {
   cv::Mat bgr;
   cv::cvtColor(rgb, bgr, cv::COLOR_RGB2BGR);
   writePng(options.output, bgr);
-  std::printf("%s: depth %d, %zu points -> %s (%dx%d)\n", model_label.c_str(), level->depth,
-              level->leaves.size(), options.output.c_str(), options.camera.width, options.camera.height);
+  const SplatFootprint& splat = drawsSplats(options.variant) ? setup.splat : SplatFootprint{};
+  std::printf("%s: depth %d%s, %zu points, splat up to %dx%d px -> %s (%dx%d)\n", model_label.c_str(),
+              level->depth, options.depth ? "" : " (auto)", level->leaves.size(), splat.columns, splat.rows,
+              options.output.c_str(), options.camera.width, options.camera.height);
   return 0;
 }
 

@@ -15,59 +15,70 @@ namespace {
 
 constexpr unsigned kMaxThreads = 2;
 
-// Which leaves can show in a view, by the rule of Framebuffer::plot: off-screen leaves are
+// Which leaves can show in a view, by the rule of Framebuffer::plot: off-screen pixels are
 // dropped, and a pixel shows the smallest word of depth key and palette index. Colours are not
 // known yet here (the palette comes after pruning), so every leaf at a pixel's nearest depth key
-// is kept: whichever of them the palette makes win, it is still there.
-struct LeafPixel {
+// is kept: whichever of them the palette makes win, it is still there. A leaf covers one pixel, or
+// with footprint splats (FrameSetup::splat, drawn by fixed_fast and fixed_simd) a rectangle; a
+// view whose set-up splats is judged both ways, so that the pruned model draws the same frame
+// whichever variant draws it.
+struct LeafPixels {
   std::int32_t width;
   std::int32_t height;
   const FrameSetup& setup;
+  SplatFootprint splat;  // SplatFootprint{}: one pixel per leaf
 
-  // The pixel a leaf at (x, y) (Q(32-F).F) lands on, or -1 off screen.
-  std::ptrdiff_t operator()(std::int32_t x, std::int32_t y) const {
-    const std::int32_t px = x >> setup.fraction_bits;
-    const std::int32_t py = y >> setup.fraction_bits;
-    if (static_cast<std::uint32_t>(px) >= static_cast<std::uint32_t>(width) ||
-        static_cast<std::uint32_t>(py) >= static_cast<std::uint32_t>(height)) {
-      return -1;
+  // Calls visit(pixel index) for each on-screen pixel the leaf at (x, y) (Q(32-F).F) covers.
+  template <typename Visit>
+  void forEach(std::int32_t x, std::int32_t y, Visit visit) const {
+    const int f = setup.fraction_bits;
+    const std::int32_t x_begin = std::max((x + splat.offset_x) >> f, 0);
+    const std::int32_t x_end = std::min(((x + splat.offset_x + splat.span_x) >> f) + 1, width);
+    const std::int32_t y_begin = std::max((y + splat.offset_y) >> f, 0);
+    const std::int32_t y_end = std::min(((y + splat.offset_y + splat.span_y) >> f) + 1, height);
+    for (std::int32_t py = y_begin; py < y_end; ++py) {
+      for (std::int32_t px = x_begin; px < x_end; ++px) visit(static_cast<std::size_t>(py) * static_cast<std::size_t>(width) + static_cast<std::size_t>(px));
     }
-    return static_cast<std::ptrdiff_t>(py) * width + px;
   }
 };
 
 // First pass: the nearest depth key per pixel.
 struct NearestKeySink {
-  LeafPixel pixel_of;
+  LeafPixels pixels_of;
   std::vector<std::uint32_t>& nearest;
   void operator()(std::int32_t x, std::int32_t y, std::int32_t z, std::uint8_t) {
-    const std::ptrdiff_t at = pixel_of(x, y);
-    if (at >= 0) nearest[static_cast<std::size_t>(at)] = std::min(nearest[static_cast<std::size_t>(at)], pixel_of.setup.depthKey(z));
+    const std::uint32_t key = pixels_of.setup.depthKey(z);
+    pixels_of.forEach(x, y, [&](std::size_t at) { nearest[at] = std::min(nearest[at], key); });
   }
 };
 
-// Second pass: every leaf at its pixel's nearest key is visible.
+// Second pass: every leaf at the nearest key of one of its pixels is visible.
 struct MarkNearestSink {
-  LeafPixel pixel_of;
+  LeafPixels pixels_of;
   const std::vector<std::uint32_t>& nearest;
   std::vector<std::uint8_t>& visible;
   std::uint32_t next_leaf = 0;
   void operator()(std::int32_t x, std::int32_t y, std::int32_t z, std::uint8_t) {
     const std::uint32_t index = next_leaf++;
-    const std::ptrdiff_t at = pixel_of(x, y);
-    if (at >= 0 && nearest[static_cast<std::size_t>(at)] == pixel_of.setup.depthKey(z)) visible[index] = 1;
+    const std::uint32_t key = pixels_of.setup.depthKey(z);
+    pixels_of.forEach(x, y, [&](std::size_t at) {
+      if (nearest[at] == key) visible[index] = 1;
+    });
   }
 };
 
 void markWinners(const LevelView& level, const FrameSetup& setup, std::vector<std::uint32_t>& nearest,
                  std::vector<std::uint8_t>& visible) {
-  const LeafPixel pixel_of{setup.width, setup.height, setup};
-  nearest.assign(static_cast<std::size_t>(setup.width) * static_cast<std::size_t>(setup.height),
-                 std::numeric_limits<std::uint32_t>::max());
-  NearestKeySink first{pixel_of, nearest};
-  BaselineWalk<NearestKeySink>(level, setup, first).run();
-  MarkNearestSink second{pixel_of, nearest, visible};
-  BaselineWalk<MarkNearestSink>(level, setup, second).run();
+  for (const bool splat : {false, true}) {
+    if (splat && !setup.splat.active()) continue;
+    const LeafPixels pixels_of{setup.width, setup.height, setup, splat ? setup.splat : SplatFootprint{}};
+    nearest.assign(static_cast<std::size_t>(setup.width) * static_cast<std::size_t>(setup.height),
+                   std::numeric_limits<std::uint32_t>::max());
+    NearestKeySink first{pixels_of, nearest};
+    BaselineWalk<NearestKeySink>(level, setup, first).run();
+    MarkNearestSink second{pixels_of, nearest, visible};
+    BaselineWalk<MarkNearestSink>(level, setup, second).run();
+  }
 }
 
 }  // namespace

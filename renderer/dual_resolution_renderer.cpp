@@ -4,6 +4,7 @@
 #include <cassert>
 
 #include "renderer/camera.h"
+#include "renderer/level_of_detail.h"
 
 namespace octopoint {
 namespace {
@@ -67,7 +68,17 @@ std::uint32_t frameChecksum(const Framebuffer& frame) {
 DualResolutionRenderer::DualResolutionRenderer(const LevelView& coarse, const LevelView& fine,
                                                const Clock& clock, const InteractiveConfig& config,
                                                RenderFunction render)
-    : coarse_level_(coarse),
+    : DualResolutionRenderer(nullptr, &coarse, &fine, clock, config, std::move(render)) {}
+
+DualResolutionRenderer::DualResolutionRenderer(const ModelView& model, const Clock& clock,
+                                               const InteractiveConfig& config, RenderFunction render)
+    : DualResolutionRenderer(&model, nullptr, nullptr, clock, config, std::move(render)) {}
+
+DualResolutionRenderer::DualResolutionRenderer(const ModelView* model, const LevelView* coarse,
+                                               const LevelView* fine, const Clock& clock,
+                                               const InteractiveConfig& config, RenderFunction render)
+    : model_(model),
+      coarse_level_(coarse),
       fine_level_(fine),
       clock_(clock),
       config_(config),
@@ -177,8 +188,18 @@ void DualResolutionRenderer::handle(const ViewEvent& event) {
   coarse_wake_.notify_one();
 }
 
-bool DualResolutionRenderer::draw(Slot& slot, const LevelView& level, HoleFiller& filler,
-                                  const std::atomic<bool>* abort) {
+const LevelView* DualResolutionRenderer::levelFor(FrameSource source, const Camera& camera) const {
+  if (model_ == nullptr) return source == FrameSource::kFine ? fine_level_ : coarse_level_;
+  const LevelView* fine = autoLevel(*model_, camera);
+  if (fine == nullptr || source == FrameSource::kFine) return fine;
+  const LevelView* coarser = fine;  // the stored level just before it, if any
+  for (int i = 0; i < model_->levelCount(); ++i) {
+    if (&model_->level(i) == fine && i > 0) coarser = &model_->level(i - 1);
+  }
+  return coarser;
+}
+
+bool DualResolutionRenderer::draw(Slot& slot, HoleFiller& filler, const std::atomic<bool>* abort) {
   const std::int64_t start_us = steadyMicroseconds();
   Camera camera;
   camera.yaw = slot.info.view.yaw;
@@ -189,8 +210,10 @@ bool DualResolutionRenderer::draw(Slot& slot, const LevelView& level, HoleFiller
   FrameSetup setup;
   slot.frame.clear();
   // The zoom is clamped, so the camera always fits; a refused camera would leave the frame empty.
-  if (buildFrameSetup(camera, level.depth, kDefaultFractionBits, &setup) == CameraError::kNone) {
-    if (!render_(level, setup, slot.frame, abort)) return false;
+  const LevelView* level = levelFor(slot.info.source, camera);
+  if (level != nullptr && buildFrameSetup(camera, level->depth, kDefaultFractionBits, &setup) == CameraError::kNone) {
+    slot.info.depth = level->depth;
+    if (!render_(*level, setup, slot.frame, abort)) return false;
     if (slot.info.view.fill) filler.fill(slot.frame, bridgeDepthLimit(setup));
   }
   slot.info.checksum = frameChecksum(slot.frame);
@@ -230,7 +253,7 @@ void DualResolutionRenderer::coarseLoop() {
     slot.info.view_version = view_version_;
     status_.coarse_busy = true;
     lock.unlock();
-    draw(slot, coarse_level_, coarse_filler_, nullptr);  // L is never aborted: its frames are short
+    draw(slot, coarse_filler_, nullptr);  // L is never aborted: its frames are short
     lock.lock();
     status_.coarse_busy = false;
     handOver(coarse_back_);
@@ -256,7 +279,7 @@ void DualResolutionRenderer::fineLoop() {
     status_.fine_busy = true;
     status_changed_.notify_all();
     lock.unlock();
-    const bool complete = draw(slot, fine_level_, fine_filler_, &fine_abort_);
+    const bool complete = draw(slot, fine_filler_, &fine_abort_);
     lock.lock();
     status_.fine_busy = false;
     fine_busy_version_ = 0;

@@ -1,6 +1,10 @@
 #pragma once
 // Dual-resolution interactive rendering (DESIGN.md 5): two render threads behind one view.
 //
+// Levels: built from a whole model, H draws the depth-auto level of each view
+// (renderer/level_of_detail.h) and L the stored depth one coarser (the same when H's is the
+// coarsest), whose voxels are twice as wide, so its footprint splats are twice as large. Built
+// from two fixed levels, each thread draws its own.
 // - L (coarse) renders the coarse level continuously while a navigation key is held, and once
 //   after a step change (zoom, reset, fill toggle). The view at a frame is a function of time
 //   (held keys turn it at `degrees_per_second` since their press), so the rotation does not
@@ -49,7 +53,7 @@ struct ViewParameters {
   Angle yaw;
   Angle pitch;
   Q16 zoom = Q16::fromRaw(Q16::kOneRaw);  // Q16.16
-  bool fill = true;
+  bool fill = false;  // hole filling: footprint splats leave none to fill (the f key turns it on)
   bool operator==(const ViewParameters&) const = default;
 };
 
@@ -57,7 +61,7 @@ struct InteractiveConfig {
   std::int32_t width = 320;
   std::int32_t height = 240;
   std::int32_t degrees_per_second = 90;
-  Variant variant = Variant::kFixedBaseline;
+  Variant variant = defaultVariant();
   ViewParameters initial_view;
 };
 
@@ -70,6 +74,7 @@ struct FrameInfo {
   std::int64_t view_time_us = 0;   // the clock time the view was taken at
   ViewParameters view;
   std::int64_t render_us = 0;  // real time spent drawing (decode + fill), for the overlay
+  int depth = 0;               // the depth drawn (0: none, the camera was refused)
   std::uint32_t checksum = 0;  // frameChecksum of the finished frame
 };
 
@@ -99,6 +104,10 @@ class DualResolutionRenderer {
   // threads; H draws the initial view at once.
   DualResolutionRenderer(const LevelView& coarse, const LevelView& fine, const Clock& clock,
                          const InteractiveConfig& config, RenderFunction render = {});
+  // The model and `clock` must outlive the renderer. H draws each view at depth auto, L one stored
+  // depth coarser (see the header comment).
+  DualResolutionRenderer(const ModelView& model, const Clock& clock, const InteractiveConfig& config,
+                         RenderFunction render = {});
   ~DualResolutionRenderer();  // stops both threads (aborting H) and joins them
   DualResolutionRenderer(const DualResolutionRenderer&) = delete;
   DualResolutionRenderer& operator=(const DualResolutionRenderer&) = delete;
@@ -118,6 +127,9 @@ class DualResolutionRenderer {
                  std::chrono::milliseconds timeout) const;
 
  private:
+  DualResolutionRenderer(const ModelView* model, const LevelView* coarse, const LevelView* fine,
+                         const Clock& clock, const InteractiveConfig& config, RenderFunction render);
+
   struct Slot {
     Framebuffer frame;
     FrameInfo info;
@@ -133,12 +145,15 @@ class DualResolutionRenderer {
   ViewParameters viewAt(std::int64_t time_us) const;  // base view plus the held keys' motion
   void changeView();  // a new view: aborts H, the fine frame is due again
   // Draws a frame into `slot` (unlocked: the slot belongs to the calling thread).
-  bool draw(Slot& slot, const LevelView& level, HoleFiller& filler, const std::atomic<bool>* abort);
+  bool draw(Slot& slot, HoleFiller& filler, const std::atomic<bool>* abort);
+  // The level a frame of `source` draws for `camera`; nullptr when the camera is refused.
+  const LevelView* levelFor(FrameSource source, const Camera& camera) const;
   // Hands `slot` over unless a newer frame is out (locked).
   void handOver(std::unique_ptr<Slot>& slot);
 
-  const LevelView& coarse_level_;
-  const LevelView& fine_level_;
+  const ModelView* model_ = nullptr;  // when built from a model: levels by projected size
+  const LevelView* coarse_level_ = nullptr;
+  const LevelView* fine_level_ = nullptr;
   const Clock& clock_;
   const InteractiveConfig config_;
   RenderFunction render_;

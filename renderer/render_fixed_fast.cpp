@@ -90,6 +90,12 @@ Cursor visit(const FastFrame& f, int level, Vec3 c, Cursor at) {
     if (!f.aborted && level == kAbortCheckLevel) f.aborted = f.abort->load(std::memory_order_relaxed);
     if (f.aborted) return at;
   }
+  // A splat frame's level-3 subtree may cover the whole screen: it polls at every node below too,
+  // and every loop stops at once when the flag is seen (renderer/abort_flag.h's latency).
+  if (kSplat && level > kAbortCheckLevel && f.abort != nullptr &&
+      (f.aborted = f.abort->load(std::memory_order_relaxed))) {
+    return at;
+  }
   if constexpr (kChecked) {
     switch (f.clip.classify(level, c)) {
       case Clip::kOutside:
@@ -105,11 +111,13 @@ Cursor visit(const FastFrame& f, int level, Vec3 c, Cursor at) {
   if (!kChecked && level + 2 == f.levels) {  // leaf parents below: plot them here, no call each
     for (; mask != 0; mask &= mask - 1) {
       at = plotChildren<false, kSplat>(f, level + 1, c + offsets[static_cast<std::size_t>(std::countr_zero(mask))], at);
+      if (kSplat && f.abort != nullptr && (f.aborted = f.abort->load(std::memory_order_relaxed))) return at;
     }
     return at;
   }
   for (; mask != 0; mask &= mask - 1) {
     at = visit<kChecked, kSplat>(f, level + 1, c + offsets[static_cast<std::size_t>(std::countr_zero(mask))], at);
+    if (kSplat && f.aborted) return at;
   }
   return at;
 }

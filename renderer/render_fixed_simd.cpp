@@ -61,6 +61,7 @@ constexpr int kBatch = 1024;  // points per batch: 8 KiB of indices and words, i
 // levels above the leaves (8^3). A batch with less room left is plotted first.
 constexpr int kMostLeavesPerCall = 512;
 static_assert(kBatch >= kMostLeavesPerCall);
+constexpr std::int64_t kSplatPixelsPerFlush = 1 << 16;
 
 struct SimdFrame {
   SimdFrame(const LevelView& level, const FrameSetup& setup, Framebuffer& frame,
@@ -78,6 +79,11 @@ struct SimdFrame {
   const OffsetTable<std::int32_t>* offsets;
   SubtreeClip clip;
   SplatPlot splat;  // the splat path's footprint, and its checked plot on the frame's edge
+  // The splat path: at most about kSplatPixelsPerFlush pixels are batched between two flushes
+  // (and so between two polls of the abort flag): up to 512 leaves per call while a splat has at
+  // most 128 pixels, else one leaf parent's 8 per call.
+  int splat_levels_inline = 3;
+  int splat_batch_limit = kBatch - kMostLeavesPerCall;
   const std::atomic<bool>* abort;
   bool aborted = false;
   const std::uint8_t* leaf_end;
@@ -262,6 +268,12 @@ __attribute__((target("avx2"))) const std::uint8_t* visit(SimdFrame& f, int leve
       f.aborted = f.abort->load(std::memory_order_relaxed);
     if (f.aborted) return node;
   }
+  // A splat frame's level-3 subtree may cover the whole screen: it polls at every node below too
+  // (and flushes its batch before each poll), and every loop stops at once when the flag is seen.
+  if (kSplat && level > kAbortCheckLevel && f.abort != nullptr &&
+      (f.aborted = f.abort->load(std::memory_order_relaxed))) {
+    return node;
+  }
   if constexpr (kChecked) {
     switch (f.clip.classify(level, c)) {
       case Clip::kOutside:
@@ -281,9 +293,13 @@ __attribute__((target("avx2"))) const std::uint8_t* visit(SimdFrame& f, int leve
   // The unchecked emit loads eight colour bytes per leaf parent, from its first leaf on: for the
   // subtree's last leaf parent that ends at most 8^(levels below) bytes from `leaf`, which must
   // still be in the stream.
-  if (!kChecked && may_inline && levels_below <= 3 &&
+  // Splats: large ones emit a leaf parent per call and flush sooner (SimdFrame::splat_levels_inline,
+  // splat_batch_limit), so the pixels written between two polls stay few.
+  const int levels_inline = kSplat ? f.splat_levels_inline : 3;
+  const int batch_limit = kSplat ? f.splat_batch_limit : kBatch - kMostLeavesPerCall;
+  if (!kChecked && may_inline && levels_below <= levels_inline &&
       f.leaf_end - leaf >= (std::ptrdiff_t{1} << (3 * levels_below))) {
-    if (f.batched > kBatch - kMostLeavesPerCall) flushBatch<kSplat>(f);
+    if (f.batched > batch_limit) flushBatch<kSplat>(f);
     const LeafLanes lanes = leafLanes(f);
     if constexpr (kSplat) {  // positions shifted to the splat's first pixel (mod 2^32, as lanes add)
       c.x += f.splat.footprint.offset_x;
@@ -318,6 +334,7 @@ __attribute__((target("avx2"))) const std::uint8_t* visit(SimdFrame& f, int leve
   for (; mask != 0; mask &= mask - 1) {
     node = visit<kChecked, kSplat>(
         f, level + 1, c + offsets[static_cast<std::size_t>(std::countr_zero(mask))], node, leaf);
+    if (kSplat && f.aborted) return node;
   }
   return node;
 }
@@ -328,6 +345,12 @@ __attribute__((target("avx2"))) bool renderAvx2(const LevelView& level, const Fr
   // About 22 KiB with the offset vectors and the batch, on the stack: drawing never allocates.
   SimdFrame state(level, setup, frame, abort);
   SimdFrame* const f = &state;
+  if (setup.splat.active()) {
+    const std::int64_t area = std::int64_t{setup.splat.columns} * setup.splat.rows;
+    f->splat_levels_inline = area <= 128 ? 3 : 1;
+    f->splat_batch_limit = static_cast<int>(
+        std::clamp<std::int64_t>(kSplatPixelsPerFlush / area, 8, kBatch - kMostLeavesPerCall));
+  }
   const auto depth = static_cast<std::size_t>(setup.depth);
   for (std::size_t l = 0; l < depth; ++l) {
     alignas(32) std::int32_t axis[3][8];
@@ -354,7 +377,7 @@ __attribute__((target("avx2"))) bool renderAvx2(const LevelView& level, const Fr
   const std::uint8_t* leaf = level.leaves.data();
   if (setup.splat.active()) {
     visit<true, true>(*f, 0, setup.root, level.nodes.data(), leaf);
-    plotSplatBatch(*f);
+    if (!f->aborted) plotSplatBatch(*f);
   } else {
     visit<true, false>(*f, 0, setup.root, level.nodes.data(), leaf);
     plotBatch(*f);

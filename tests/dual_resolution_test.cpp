@@ -10,6 +10,7 @@
 
 #include "models/registry.h"
 #include "renderer/dual_resolution_renderer.h"
+#include "renderer/level_of_detail.h"
 
 namespace octopoint {
 namespace {
@@ -178,6 +179,40 @@ TEST_F(DualResolution, AHeldKeyTurnsBySpeedTimesTimeWhateverTheFrameRate) {
       EXPECT_LE(coarse_frames, static_cast<std::uint64_t>(held_real_ms / kSlowFrameMs + 2))
           << "the slow renderer really was slow";
     }
+  }
+}
+
+// Built from the whole model: H draws each view at depth auto, L (after a zoom step) one stored
+// depth coarser, or the same when depth auto is already the coarsest.
+TEST_F(DualResolution, BuiltFromAModelHDrawsDepthAutoAndLOneStoredDepthCoarser) {
+  const InteractiveConfig config;
+  DualResolutionRenderer renderer(*model_, clock_, config);
+  Q16 zoom = config.initial_view.zoom;
+  for (int step = 0; step < 6; ++step) {
+    Camera camera;
+    camera.width = config.width;
+    camera.height = config.height;
+    camera.zoom = zoom;
+    const int fine_index = static_cast<int>(autoLevel(*model_, camera) - &model_->level(0));
+    const int coarse_depth = model_->level(std::max(0, fine_index - 1)).depth;
+    const std::uint64_t version = renderer.status().view_version;
+    if (step > 0) {  // a zoom step: L draws the new view once
+      ASSERT_TRUE(renderer.waitUntil(
+          [&](const RendererStatus& s) { return s.latest.view_version == version && !s.coarse_busy; }, kPatience));
+      FrameInfo shown;
+      ASSERT_NE(renderer.acquireLatest(&shown), nullptr);
+      if (shown.source == FrameSource::kCoarse) EXPECT_EQ(shown.depth, coarse_depth) << "zoom step " << step;
+    }
+    renderer.handle(at(0, ViewEventKind::kTick));
+    ASSERT_TRUE(renderer.waitUntil(
+        [&](const RendererStatus& s) {
+          return s.latest.source == FrameSource::kFine && s.latest.view_version == version;
+        },
+        kPatience));
+    EXPECT_EQ(renderer.status().latest.depth, model_->level(fine_index).depth) << "zoom step " << step;
+    renderer.handle(at(0, ViewEventKind::kZoomOut));
+    zoom = renderer.status().latest.view.zoom;
+    zoom = Q16::fromRaw(static_cast<std::int32_t>(std::int64_t{zoom.raw()} * 4 / 5));
   }
 }
 

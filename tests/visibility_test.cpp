@@ -54,12 +54,12 @@ ModelPair prepareBoth(const prepare::Scan& scan, const std::vector<Camera>& came
   return pair;
 }
 
-Framebuffer draw(const ModelView& model, const Camera& camera) {
+Framebuffer draw(const ModelView& model, const Camera& camera, Variant variant = Variant::kFixedBaseline) {
   FrameSetup setup;
   EXPECT_EQ(buildFrameSetup(camera, kDepth, kDefaultFractionBits, &setup), CameraError::kNone);
   Framebuffer frame(camera.width, camera.height);
   frame.clear();
-  renderLevel(Variant::kFixedBaseline, model.finestLevel(), setup, frame);
+  renderLevel(variant, model.finestLevel(), setup, frame);
   return frame;
 }
 
@@ -69,9 +69,9 @@ struct Comparison {
   std::size_t extra = 0;          // covered only in the pruned frame (must never happen)
 };
 
-Comparison compare(const ModelPair& pair, const Camera& camera) {
-  const Framebuffer expected = draw(pair.unpruned(), camera);
-  const Framebuffer actual = draw(pair.pruned(), camera);
+Comparison compare(const ModelPair& pair, const Camera& camera, Variant variant = Variant::kFixedBaseline) {
+  const Framebuffer expected = draw(pair.unpruned(), camera, variant);
+  const Framebuffer actual = draw(pair.pruned(), camera, variant);
   Comparison result;
   for (std::size_t i = 0; i < expected.pixels().size(); ++i) {
     const bool covered = expected.pixels()[i] != Framebuffer::kEmpty;
@@ -98,6 +98,29 @@ TEST(VisibilityPruning, EverySampledViewDrawsPixelIdenticalToTheUnprunedModel) {
     ASSERT_GT(result.object_pixels, 500u);
     ASSERT_EQ(result.differing, 0u) << "yaw " << camera.yaw.turns16() << " pitch " << camera.pitch.turns16();
     ASSERT_EQ(result.extra, 0u);
+  }
+}
+
+// Zoomed in, a depth-7 voxel covers 2 to 3 pixels: the pruned model drawn with footprint splats
+// (the default variant) is still the unpruned model's frame at every sampled view, so it is as
+// hole-free; drawn one pixel per leaf (fixed_baseline), too.
+TEST(VisibilityPruning, ZoomedInSampledViewsDrawTheUnprunedFrameWithSplatsAndWithout) {
+  prepare::Scene scene = frontalScene();
+  scene.angle_step_deg = 15;
+  scene.zoom = {2, 3};
+  const std::vector<Camera> cameras = prepare::sceneCameras(scene);
+  const ModelPair pair = prepareBoth(testing::faceLikeHeightField(300), cameras);
+  ASSERT_LT(pair.pruned_image.size(), pair.unpruned_image.size());
+  for (const Variant variant : {defaultVariant(), Variant::kFixedBaseline}) {
+    for (const Camera& camera : cameras) {
+      FrameSetup setup;
+      ASSERT_EQ(buildFrameSetup(camera, kDepth, kDefaultFractionBits, &setup), CameraError::kNone);
+      ASSERT_TRUE(setup.splat.active());
+      const Comparison result = compare(pair, camera, variant);
+      ASSERT_GT(result.object_pixels, 500u);
+      ASSERT_EQ(result.differing, 0u) << "variant " << static_cast<int>(variant) << " yaw " << camera.yaw.turns16();
+      ASSERT_EQ(result.extra, 0u);
+    }
   }
 }
 
