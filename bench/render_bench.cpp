@@ -68,6 +68,7 @@ void renderScan(benchmark::State& state, const Scan* scan, Variant variant, int 
     state.SkipWithError("model or camera unavailable");
     return;
   }
+  setup.splat = SplatFootprint{};  // one pixel per leaf in every variant: the paper's comparison
   Framebuffer frame(kWidth, kHeight);
   for (auto _ : state) {
     frame.clear();

@@ -9,6 +9,7 @@
 #include "cli/real_numbers.h"
 #include "cli/text.h"
 #include "codegen/cube_fit.h"
+#include "codegen/depth_range.h"
 #include "codegen/octree_encoder.h"
 #include "codegen/outlier_filter.h"
 #include "codegen/palette.h"
@@ -104,6 +105,14 @@ PreparedModel prepareModel(const Scan& full_scan, const std::string& scan_path, 
     voxel_sets.push_back(voxelize(scan, fit, depth));
     progress.update(voxel_sets.size());
   }
+  std::vector<int> sparse_depths;
+  if (options.stop_at_sparse_depth) {
+    std::vector<std::size_t> counts;
+    for (const VoxelSet& voxels : voxel_sets) counts.push_back(voxels.keys.size());
+    const std::size_t dense = denseDepthCount(counts);
+    for (std::size_t i = dense; i < voxel_sets.size(); ++i) sparse_depths.push_back(voxel_sets[i].depth);
+    voxel_sets.resize(dense);
+  }
   if (options.greyscale) {
     for (VoxelSet& voxels : voxel_sets) {
       for (Rgb8& colour : voxels.colours) colour = toGrey(colour);
@@ -120,6 +129,7 @@ PreparedModel prepareModel(const Scan& full_scan, const std::string& scan_path, 
   model.cube_edge_um = static_cast<std::uint32_t>(
       std::min(std::round(edge_um), double{std::numeric_limits<std::uint32_t>::max()}));
   model.palette = palette.colours();
+  model.sparse_depths_dropped = sparse_depths;
   for (VoxelSet& voxels : voxel_sets) {
     PreparedLevel level;
     level.depth = voxels.depth;

@@ -41,6 +41,9 @@ struct PrepareOptions {
   std::string name;                  // the model's C++ identifier
   std::string source_description;    // for the generated comments
   std::vector<int> depths = {7, 8};  // strictly ascending, each 1..format::kMaxDepth
+  // Keep only the depths the scan samples densely (codegen/depth_range.h): octopoint-prepare's
+  // default range and a scene's "depths": "auto" set it; an explicit list does not.
+  bool stop_at_sparse_depth = false;
   double metres_per_scan_unit = 1.0;  // to record the cube's metric size
   int palette_colours = 256;
   std::optional<CropBox> crop;  // in the scan's own axes, before they are turned

@@ -1,10 +1,12 @@
 // octopoint-prepare: a range scan in, a model out (C++ sources to compile in, and a `.oct` file).
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "cli/arguments.h"
@@ -13,6 +15,7 @@
 #include "cli/run_tool.h"
 #include "cli/text.h"
 #include "codegen/model_name.h"
+#include "codegen/depth_range.h"
 #include "codegen/model_writer.h"
 #include "codegen/prepare.h"
 #include "codegen/prepare_error.h"
@@ -40,7 +43,10 @@ and OUTDIR/NAME.oct (the same model as one binary file, for octopoint-render --f
                         letters, digits and single underscores (not at either end), with a
                         lower-case letter, not a C++ keyword
   --depths LIST         comma-separated octree depths, strictly ascending, each 1..16, at most 8
-                        of them (default 7,8): depth d cuts the fitted cube into 2^d voxels per axis
+                        of them, or a range A..B (default 6..10, cut where the scan stops
+                        sampling densely: a depth with fewer than 3x the voxels of the depth
+                        before is left out with all finer ones, docs/splats.md): depth d cuts
+                        the fitted cube into 2^d voxels per axis
   --colours N           palette size, 1..256 (default 256)
   --crop X0,Y0,Z0,X1,Y1,Z1
                         keep only the points inside this box (scan units, inclusive) before
@@ -73,8 +79,32 @@ struct Arguments {
   std::string scene;
   octopoint::prepare::EmitOptions emit;
   std::vector<std::string> model_flags;  // flags a scene file replaces, to refuse them beside --scene
-  octopoint::prepare::PrepareOptions options;
+  octopoint::prepare::PrepareOptions options = defaultOptions();
+
+  static octopoint::prepare::PrepareOptions defaultOptions() {
+    octopoint::prepare::PrepareOptions options;
+    options.depths = octopoint::prepare::defaultDepths();
+    options.stop_at_sparse_depth = true;
+    return options;
+  }
 };
+
+// --depths: a list (cli::parseIntList's rules) or a range A..B of at most format::kMaxLevels depths.
+std::vector<int> parseDepths(std::string_view option, const std::string& text) {
+  using octopoint::format::kMaxDepth;
+  using octopoint::format::kMaxLevels;
+  const std::size_t dots = text.find("..");
+  if (dots == std::string::npos) {
+    return octopoint::cli::parseIntList(option, text, 1, kMaxDepth, kMaxLevels,
+                                        octopoint::cli::ListOrder::kStrictlyAscending);
+  }
+  const int first = octopoint::cli::parseInt(option, std::string_view(text).substr(0, dots), 1, kMaxDepth);
+  const int last = octopoint::cli::parseInt(option, std::string_view(text).substr(dots + 2), first,
+                                            std::min(kMaxDepth, first + kMaxLevels - 1));
+  std::vector<int> depths;
+  for (int d = first; d <= last; ++d) depths.push_back(d);
+  return depths;
+}
 
 // Returns nullopt when --help was asked for.
 std::optional<Arguments> parseArguments(int argc, char** argv) {
@@ -99,9 +129,8 @@ std::optional<Arguments> parseArguments(int argc, char** argv) {
       args.emit.single_source = true;
     } else if (reader.is("--depths")) {
       args.model_flags.push_back(reader.name());
-      args.options.depths =
-          octopoint::cli::parseIntList(reader.name(), reader.value(), 1, octopoint::format::kMaxDepth,
-                                       octopoint::format::kMaxLevels, octopoint::cli::ListOrder::kStrictlyAscending);
+      args.options.depths = parseDepths(reader.name(), reader.value());
+      args.options.stop_at_sparse_depth = false;
     } else if (reader.is("--colours")) {
       args.model_flags.push_back(reader.name());
       args.options.palette_colours = octopoint::cli::parseInt(reader.name(), reader.value(), 1, 256);
@@ -157,9 +186,11 @@ std::string applyScene(const octopoint::prepare::Scene& scene, octopoint::prepar
   if (scene.auto_depths) {
     DepthChoice choice = chooseDepths(scene);
     options.depths = choice.depths;
+    options.stop_at_sparse_depth = true;
     reason = choice.reason;
   } else {
     options.depths = scene.depths;
+    options.stop_at_sparse_depth = false;
   }
   options.palette_colours = scene.palette_colours;
   options.greyscale = scene.greyscale;
@@ -198,6 +229,11 @@ int run(int argc, char** argv) {
               args->scan.c_str(), scan.positions.size(), scan.dropped_non_finite,
               shadingName(scan.shading), model.palette.size(), model.cube_edge_um / 1e6);
   if (!depth_reason.empty()) std::printf("%s\n", depth_reason.c_str());
+  if (!model.sparse_depths_dropped.empty()) {
+    std::printf("  left out depths %s: finer than the scan samples densely (under %zux the voxels of the depth "
+                "before); the renderer splats the finest depth kept\n",
+                describeDepths(model.sparse_depths_dropped).c_str(), kDenseGrowth);
+  }
   for (const PreparedLevel& level : model.levels) {
     if (level.voxels_before_pruning == 0) continue;
     std::printf("  depth %2d pruned from %zu views: %zu -> %zu voxels, %zu -> %zu bytes (-%.1f%%) in %.2f s\n",

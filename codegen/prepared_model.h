@@ -27,6 +27,7 @@ struct PreparedModel {
   std::uint32_t cube_edge_um = 0;
   std::vector<Rgb8> palette;       // 1..256 colours
   std::vector<PreparedLevel> levels;  // depths strictly ascending
+  std::vector<int> sparse_depths_dropped;  // asked for, but finer than the scan samples densely
 };
 
 }  // namespace octopoint::prepare

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "codegen/depth_range.h"
 #include "renderer/model_format.h"
 
 namespace octopoint::prepare {
@@ -60,18 +61,17 @@ std::vector<Camera> sceneCameras(const Scene& scene) {
 }
 
 DepthChoice chooseDepths(const Scene& scene) {
-  const double cube_px = scene.zoom.high * std::min(scene.width, scene.height);
-  int depth = 1;
-  while (depth < format::kMaxDepth && cube_px > std::ldexp(1.0, depth)) ++depth;
   DepthChoice choice;
-  if (depth > 1) choice.depths.push_back(depth - 1);
-  choice.depths.push_back(depth);
-  char reason[256];
+  const std::vector<Camera> cameras = sceneCameras(scene);
+  choice.depths = neededDepthRange(cameras);
+  if (choice.depths.empty()) choice.depths = {1};  // every view refused: pruning reports it
+  char reason[320];
   std::snprintf(reason, sizeof reason,
-                "depths auto: %d, the coarsest where a voxel covers at most one pixel (the cube spans %.0f px at "
-                "zoom %g on %dx%d, a voxel %.2f px), and %d for moving views",
-                depth, cube_px, scene.zoom.high, scene.width, scene.height, cube_px / std::ldexp(1.0, depth),
-                depth - 1);
+                "depths auto: %s, what the scene's %zu views need by projected size on %dx%d at zoom %g..%g "
+                "(the coarsest depth whose voxel footprint is at most one pixel, per view; one coarser for "
+                "moving views), cut where the scan stops sampling densely",
+                describeDepths(choice.depths).c_str(), cameras.size(), scene.width, scene.height, scene.zoom.low,
+                scene.zoom.high);
   choice.reason = reason;
   return choice;
 }

@@ -26,9 +26,9 @@ struct DepthChoice {
   std::string reason;       // one sentence for the preparer's report
 };
 
-// The coarsest depth d at which one voxel at the largest zoom covers at most one pixel, that is
-// zoom_max * min(width, height) / 2^d <= 1 (at zoom 1 the cube spans the shorter side), capped at
-// format::kMaxDepth; and d - 1, the coarse stream drawn while the view moves (when d > 1).
+// What the scene's views need (codegen/depth_range.h, neededDepthRange over sceneCameras): from
+// one depth coarser than the coarsest depth auto would draw at any view, to the finest.
+// octopoint-prepare also cuts them where the scan stops sampling densely.
 DepthChoice chooseDepths(const Scene& scene);
 
 }  // namespace octopoint::prepare

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "models/registry.h"
+#include "renderer/level_of_detail.h"
 #include "renderer/render.h"
 
 namespace {
@@ -81,6 +82,38 @@ TEST(FrameAllocation, NoVariantAllocatesDuringAFrame) {
       }
     }
   }
+}
+
+// Depth by projected size and footprint splats: choosing the level, building the set-up and
+// drawing with splats (zoom 4: a depth-8 voxel is 3.75 pixels wide) allocate nothing either.
+TEST(FrameAllocation, DepthAutoAndSplatFramesAllocateNothing) {
+  ModelIssue issue;
+  const auto model = ModelView::fromEmbedded(*models::defaultModel(), &issue);
+  ASSERT_TRUE(model.has_value()) << describe(issue.error);
+  Camera camera;
+  Framebuffer frame(camera.width, camera.height);
+  std::vector<std::uint8_t> rgb(static_cast<std::size_t>(camera.width * camera.height) * 3);
+  FrameSetup setup;
+  int splatting = 0;
+  for (const VariantInfo& info : allVariants()) {
+    for (const int zoom : {1, 4}) {
+      camera.zoom = Q16::fromRaw(zoom * Q16::kOneRaw);
+      camera.yaw = Angle::fromDegrees(30);
+      const long before = g_allocation_count.load();
+      const LevelView* level = autoLevel(*model, camera);
+      const CameraError camera_error =
+          level == nullptr ? CameraError::kOverflow : buildFrameSetup(camera, level->depth, kDefaultFractionBits, &setup);
+      frame.clear();
+      const bool complete = camera_error == CameraError::kNone && renderLevel(info.variant, *level, setup, frame);
+      resolveToRgb(frame, *model, Rgb{}, rgb);
+      const long allocations = g_allocation_count.load() - before;
+      ASSERT_EQ(camera_error, CameraError::kNone);
+      EXPECT_TRUE(complete) << info.name;
+      EXPECT_EQ(allocations, 0) << info.name << " at zoom " << zoom;
+      splatting += drawsSplats(info.variant) && setup.splat.active() ? 1 : 0;
+    }
+  }
+  EXPECT_GE(splatting, 2);  // the splat path ran
 }
 
 }  // namespace

@@ -94,19 +94,20 @@ void expectEveryFixedVariantMatches(const LevelView& level, const FrameSetup& na
 }
 
 TEST_F(RenderVariants, EveryFixedVariantDrawsTheBaselineFrameBitForBit) {
-  int splatting = 0;
+  int splatting = 0, frames = 0;
   for (int i = 0; i < model_->levelCount(); ++i) {
     const LevelView& level = model_->level(i);
     for (const Camera& camera : manyCameras()) {
       FrameSetup setup;
       ASSERT_EQ(buildFrameSetup(camera, level.depth, kDefaultFractionBits, &setup), CameraError::kNone);
       splatting += setup.splat.active() ? 1 : 0;
+      ++frames;
       expectEveryFixedVariantMatches(level, setup, "depth " + std::to_string(level.depth) + " yaw " +
                                                        std::to_string(camera.yaw.turns16()));
     }
   }
-  EXPECT_GT(splatting, 20);  // both kinds of frame are among these cameras
-  EXPECT_LT(splatting, 100);
+  EXPECT_GT(splatting, frames / 10);  // both kinds of frame are among these cameras
+  EXPECT_LT(splatting, frames - frames / 10);
 }
 
 // A random valid level of `depth` with about `leaves_wanted` leaves: each child of each node is

@@ -3,6 +3,7 @@
 
 #include <cmath>
 
+#include "codegen/depth_range.h"
 #include "codegen/outlier_filter.h"
 #include "codegen/prepare.h"
 #include "codegen/prepare_error.h"
@@ -99,20 +100,37 @@ TEST(SceneViews, ExplicitViewpointsAreTakenAsTheyAreAtEverySampledZoom) {
   EXPECT_EQ(cameras[3].zoom.raw(), 2 * Q16::kOneRaw);
 }
 
-TEST(SceneViews, AutoDepthsPickTheCoarsestDepthWithVoxelsOfAtMostOnePixel) {
+TEST(SceneViews, AutoDepthsSpanWhatTheViewsNeedByProjectedSizeAndOneCoarser) {
   Scene scene;
   scene.width = 320;
   scene.height = 240;
-  scene.zoom = {1, 1};  // the cube spans 240 px: depth 8 (256 voxels) is the first with <= 1 px
+  scene.yaw_deg = Range{0, 0};
+  scene.pitch_deg = Range{0, 0};
+  scene.zoom = {1, 1};  // head-on the cube spans 240 px: depth 8 (0.94 px per voxel) is needed
   EXPECT_EQ(chooseDepths(scene).depths, (std::vector<int>{7, 8}));
   scene.zoom = {1, 2};  // 480 px -> depth 9
-  EXPECT_EQ(chooseDepths(scene).depths, (std::vector<int>{8, 9}));
+  EXPECT_EQ(chooseDepths(scene).depths, (std::vector<int>{7, 8, 9}));
   scene.zoom = {1, 256.0 / 240};  // exactly 256 px: still depth 8
   EXPECT_EQ(chooseDepths(scene).depths, (std::vector<int>{7, 8}));
+  scene.zoom = {0.25, 1};  // 60 px: depth 6, one coarser for moving views
+  EXPECT_EQ(chooseDepths(scene).depths, (std::vector<int>{5, 6, 7, 8}));
+  scene.yaw_deg = Range{0, 30};  // turned 30 degrees a voxel is 1.37 times as wide on screen
+  scene.zoom = {1, 1};
+  EXPECT_EQ(chooseDepths(scene).depths, (std::vector<int>{7, 8, 9}));
+  scene.yaw_deg = Range{0, 0};
   scene.zoom = {0.001, 0.001};  // under one pixel: depth 1 alone
   EXPECT_EQ(chooseDepths(scene).depths, (std::vector<int>{1}));
-  scene.zoom = {1, 32767};
-  EXPECT_EQ(chooseDepths(scene).depths, (std::vector<int>{15, 16}));
+  scene.zoom = {0.001, 32767};  // at most format::kMaxLevels depths, the finest kept
+  EXPECT_EQ(chooseDepths(scene).depths, (std::vector<int>{9, 10, 11, 12, 13, 14, 15, 16}));
+}
+
+TEST(DepthRange, DenseDepthsStopWhereTheVoxelCountGrowsLessThanThreefold) {
+  const std::vector<std::size_t> tabletop = {5433, 19747, 62502, 141209, 160244};  // depths 6..10
+  EXPECT_EQ(denseDepthCount(tabletop), 3u);  // 62502 -> 141209 is 2.26x: depth 9 is sparse
+  EXPECT_EQ(denseDepthCount(std::vector<std::size_t>{10, 30, 90}), 3u);  // exactly 3x is dense
+  EXPECT_EQ(denseDepthCount(std::vector<std::size_t>{10, 29, 90}), 1u);
+  EXPECT_EQ(denseDepthCount(std::vector<std::size_t>{7}), 1u);
+  EXPECT_EQ(defaultDepths(), (std::vector<int>{6, 7, 8, 9, 10}));
 }
 
 TEST(OutlierRemoval, DropsFarAwayJunkAndKeepsTheSurface) {

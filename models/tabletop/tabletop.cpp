@@ -1,4 +1,4 @@
-// Generated from milk_cartoon_all_small_clorox.pcd by: octopoint-prepare milk_cartoon_all_small_clorox.pcd -o ../../build/regenerated-models --name tabletop --axes y-up --crop -0.35,-0.25,-1.1,0.35,0.45,-0.45 --depths 7,8
+// Generated from milk_cartoon_all_small_clorox.pcd by: octopoint-prepare data/scans/milk_cartoon_all_small_clorox.pcd -o build/regenerated-models --name tabletop --axes y-up --crop -0.35,-0.25,-1.1,0.35,0.45,-0.45
 // Do not edit: regenerate it.
 #include "tabletop.h"
 
@@ -6,6 +6,8 @@
 
 namespace octopoint::models {
 
+extern const std::uint8_t tabletop_depth6_nodes[2011];
+extern const std::uint8_t tabletop_depth6_leaves[5434];
 extern const std::uint8_t tabletop_depth7_nodes[7444];
 extern const std::uint8_t tabletop_depth7_leaves[19748];
 extern const std::uint8_t tabletop_depth8_nodes[27191];
@@ -44,7 +46,8 @@ const std::uint8_t kPalette[768] = {
     62,44,105,107,122,
 };
 
-const octopoint::EmbeddedLevel kLevels[2] = {
+const octopoint::EmbeddedLevel kLevels[3] = {
+    {6, tabletop_depth6_nodes, 2010, tabletop_depth6_leaves, 5433},
     {7, tabletop_depth7_nodes, 7443, tabletop_depth7_leaves, 19747},
     {8, tabletop_depth8_nodes, 27190, tabletop_depth8_leaves, 62502},
 };
@@ -52,6 +55,6 @@ const octopoint::EmbeddedLevel kLevels[2] = {
 }  // namespace
 
 extern const octopoint::EmbeddedModel tabletop = {
-    "tabletop", 699998, 256, kPalette, 2, kLevels};
+    "tabletop", 699998, 256, kPalette, 3, kLevels};
 
 }  // namespace octopoint::models

@@ -1,4 +1,4 @@
-// Generated from milk_cartoon_all_small_clorox.pcd by: octopoint-prepare milk_cartoon_all_small_clorox.pcd -o ../../build/regenerated-models --name tabletop --axes y-up --crop -0.35,-0.25,-1.1,0.35,0.45,-0.45 --depths 7,8
+// Generated from milk_cartoon_all_small_clorox.pcd by: octopoint-prepare data/scans/milk_cartoon_all_small_clorox.pcd -o build/regenerated-models --name tabletop --axes y-up --crop -0.35,-0.25,-1.1,0.35,0.45,-0.45
 // Do not edit: regenerate it.
 #include <cstdint>
 

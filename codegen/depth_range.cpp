@@ -1,0 +1,50 @@
+#include "codegen/depth_range.h"
+
+#include <algorithm>
+#include <optional>
+
+#include "renderer/level_of_detail.h"
+#include "renderer/model_format.h"
+
+namespace octopoint::prepare {
+
+std::vector<int> defaultDepths() {
+  std::vector<int> depths;
+  for (int d = kDefaultCoarsestDepth; d <= kDefaultFinestDepth; ++d) depths.push_back(d);
+  return depths;
+}
+
+std::size_t denseDepthCount(std::span<const std::size_t> voxels_per_depth) {
+  std::size_t kept = std::min<std::size_t>(1, voxels_per_depth.size());
+  while (kept < voxels_per_depth.size() &&
+         voxels_per_depth[kept] >= kDenseGrowth * voxels_per_depth[kept - 1]) {
+    ++kept;
+  }
+  return kept;
+}
+
+std::vector<int> neededDepthRange(std::span<const Camera> cameras) {
+  int coarsest = format::kMaxDepth + 1, finest = 0;
+  for (const Camera& camera : cameras) {
+    const std::optional<int> depth = neededDepth(camera);
+    if (!depth) continue;
+    coarsest = std::min(coarsest, *depth);
+    finest = std::max(finest, *depth);
+  }
+  if (finest == 0) return {};
+  coarsest = std::max({1, coarsest - 1, finest - format::kMaxLevels + 1});
+  std::vector<int> depths;
+  for (int d = coarsest; d <= finest; ++d) depths.push_back(d);
+  return depths;
+}
+
+std::string describeDepths(std::span<const int> depths) {
+  if (depths.empty()) return "none";
+  const bool consecutive = depths.back() - depths.front() + 1 == static_cast<int>(depths.size());
+  if (consecutive && depths.size() > 1) return std::to_string(depths.front()) + ".." + std::to_string(depths.back());
+  std::string text;
+  for (const int d : depths) text += (text.empty() ? "" : ",") + std::to_string(d);
+  return text;
+}
+
+}  // namespace octopoint::prepare

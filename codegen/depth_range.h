@@ -1,0 +1,39 @@
+#pragma once
+// Which depths a model stores (docs/splats.md): the range octopoint-prepare writes by default,
+// what a scene's views need ("depths": "auto"), and where a scan stops sampling a depth densely.
+
+#include <cstddef>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "renderer/camera.h"
+
+namespace octopoint::prepare {
+
+// The default --depths: 6..10 serves screens from 176x208 zoomed out to 0.25 (depth 6: a 44-pixel
+// cube, voxels under a pixel; the dual-resolution renderer's coarse frame one depth coarser) up to
+// 1280x960 at zoom 1 (depth 10: 0.94 pixel per voxel head-on), each cut short where the scan
+// stops sampling densely (denseDepthCount); past the finest depth kept, the renderer splats.
+inline constexpr int kDefaultCoarsestDepth = 6;
+inline constexpr int kDefaultFinestDepth = 10;
+std::vector<int> defaultDepths();
+
+// A surface sampled densely fills about four times as many voxels at each finer depth (eight for
+// a volume); a depth with fewer than kDenseGrowth times its coarser neighbour's voxels is finer
+// than the scan's point spacing, and draws with cracks between its voxels. For the voxel counts of
+// consecutive ascending depths, how many leading depths to keep: up to (excluding) the first whose
+// count is below kDenseGrowth times the previous one's; always at least one.
+inline constexpr std::size_t kDenseGrowth = 3;
+std::size_t denseDepthCount(std::span<const std::size_t> voxels_per_depth);
+
+// What the views `cameras` need (coarsest to finest, consecutive): from one depth coarser than the
+// coarsest neededDepth (renderer/level_of_detail.h) of any camera (the dual-resolution renderer's
+// coarse frame), to the finest neededDepth of any, at most format::kMaxLevels depths (the coarse
+// end gives way). Empty when no camera is accepted.
+std::vector<int> neededDepthRange(std::span<const Camera> cameras);
+
+// "6..10" or "6" for a consecutive range, else the list "6,8".
+std::string describeDepths(std::span<const int> depths);
+
+}  // namespace octopoint::prepare
