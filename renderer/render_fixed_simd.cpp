@@ -120,27 +120,36 @@ __attribute__((target("avx2"))) void plotBatch(SimdFrame& f) {
 }
 
 // The splat path's batch: each point's index is its splat's first pixel, on screen with the whole
-// rectangle (the clip proved it). A row is written eight pixels per vector min; the last, partial
-// chunk of a row with masked loads and stores, which touch no pixel outside the rectangle.
+// rectangle (the clip proved it). A row is written eight pixels per vector min. The last, partial
+// chunk of a row is loaded whole, and its lanes outside the rectangle are stored back unchanged
+// (a blend, not a masked store: those are slow on some CPUs), so nothing outside the rectangle
+// changes; only a chunk that would pass the frame's last pixel goes pixel by pixel.
 __attribute__((target("avx2"))) void plotSplatBatch(SimdFrame& f) {
   std::uint32_t* const pixel = f.target.pixel;
   const std::size_t width = static_cast<std::size_t>(f.target.width);
+  const std::size_t end = width * static_cast<std::size_t>(f.target.height);
   const __m256i lane = _mm256_setr_epi32(0, 1, 2, 3, 4, 5, 6, 7);
   for (int i = 0; i < f.batched; ++i) {
-    const __m256i word = _mm256_set1_epi32(static_cast<std::int32_t>(f.batch_word[i]));
+    const std::uint32_t word_value = f.batch_word[i];
+    const __m256i word = _mm256_set1_epi32(static_cast<std::int32_t>(word_value));
     const std::int32_t columns = static_cast<std::int32_t>(f.batch_extent[i] & 0xFFFF);
     const std::int32_t rows = static_cast<std::int32_t>(f.batch_extent[i] >> 16);
     const std::int32_t full = columns & ~7;
-    const __m256i tail_mask = _mm256_cmpgt_epi32(_mm256_set1_epi32(columns - full), lane);
-    std::uint32_t* row = pixel + f.batch_index[i];
-    for (std::int32_t r = 0; r < rows; ++r, row += width) {
+    const __m256i tail = _mm256_cmpgt_epi32(_mm256_set1_epi32(columns - full), lane);
+    std::size_t at = f.batch_index[i];
+    for (std::int32_t r = 0; r < rows; ++r, at += width) {
+      std::uint32_t* const row = pixel + at;
       for (std::int32_t x = 0; x < full; x += 8) {
-        auto* at = reinterpret_cast<__m256i*>(row + x);
-        _mm256_storeu_si256(at, _mm256_min_epu32(_mm256_loadu_si256(at), word));
+        auto* chunk = reinterpret_cast<__m256i*>(row + x);
+        _mm256_storeu_si256(chunk, _mm256_min_epu32(_mm256_loadu_si256(chunk), word));
       }
-      if (full != columns) {
-        auto* at = reinterpret_cast<int*>(row + full);
-        _mm256_maskstore_epi32(at, tail_mask, _mm256_min_epu32(_mm256_maskload_epi32(at, tail_mask), word));
+      if (full == columns) continue;
+      if (at + static_cast<std::size_t>(full) + 8 <= end) {
+        auto* chunk = reinterpret_cast<__m256i*>(row + full);
+        const __m256i old = _mm256_loadu_si256(chunk);
+        _mm256_storeu_si256(chunk, _mm256_blendv_epi8(old, _mm256_min_epu32(old, word), tail));
+      } else {
+        for (std::int32_t x = full; x < columns; ++x) row[x] = std::min(row[x], word_value);
       }
     }
   }

@@ -201,7 +201,9 @@ TEST_F(DualResolution, BuiltFromAModelHDrawsDepthAutoAndLOneStoredDepthCoarser) 
           [&](const RendererStatus& s) { return s.latest.view_version == version && !s.coarse_busy; }, kPatience));
       FrameInfo shown;
       ASSERT_NE(renderer.acquireLatest(&shown), nullptr);
-      if (shown.source == FrameSource::kCoarse) EXPECT_EQ(shown.depth, coarse_depth) << "zoom step " << step;
+      if (shown.source == FrameSource::kCoarse) {
+        EXPECT_EQ(shown.depth, coarse_depth) << "zoom step " << step;
+      }
     }
     renderer.handle(at(0, ViewEventKind::kTick));
     ASSERT_TRUE(renderer.waitUntil(
