@@ -43,7 +43,10 @@ std::string describeDepths(std::span<const int> depths) {
   const bool consecutive = depths.back() - depths.front() + 1 == static_cast<int>(depths.size());
   if (consecutive && depths.size() > 1) return std::to_string(depths.front()) + ".." + std::to_string(depths.back());
   std::string text;
-  for (const int d : depths) text += (text.empty() ? "" : ",") + std::to_string(d);
+  for (const int d : depths) {
+    if (!text.empty()) text += ',';  // appended apart: GCC 12 warns falsely (-Wrestrict) on "," + string
+    text += std::to_string(d);
+  }
   return text;
 }
 
