@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "cli/text.h"
+#include "codegen/ascii_body.h"
 #include "codegen/prepare_error.h"
 
 namespace octopoint::prepare {
@@ -31,6 +32,9 @@ constexpr std::size_t kMaxHeaderBytes = 1 << 20;
 constexpr std::uint64_t kMaxFieldCount = 1 << 16;
 constexpr std::uint64_t kMaxPointBytes = 1 << 20;
 constexpr std::uint64_t kMaxPoints = std::numeric_limits<std::uint32_t>::max();  // PCL's width
+// The most bytes LZF (PCL's binary_compressed) can make of one compressed byte: a back reference
+// of 3 bytes copies at most 7 + 255 + 2 = 264 bytes; a literal run never expands.
+constexpr std::uint64_t kLzfMaxExpansion = 264 / 3;
 
 }  // namespace
 
@@ -217,7 +221,7 @@ std::uint64_t checkPcdHeader(const fs::path& path, std::uint64_t file_size) {
   }
 
   std::uint64_t point_bytes = 0;
-  std::uint64_t values_per_point = 0;
+  AsciiElement point_layout{"point", "points", 0, {}, "field"};
   for (std::size_t f = 1; f <= field_count; ++f) {
     const auto size = parseUnsigned(sizes.words[f]);
     const std::string_view type = types.words[f];
@@ -242,7 +246,7 @@ std::uint64_t checkPcdHeader(const fs::path& path, std::uint64_t file_size) {
       count = *parsed;
     }
     point_bytes += *size * count;
-    values_per_point += count;
+    point_layout.properties.push_back({std::string(fields.words[f]), {type.front(), *size}, count, false, {}});
   }
   if (point_bytes > kMaxPointBytes) {
     fail(path, "PCD point size of " + std::to_string(point_bytes) + " bytes is absurd", "header");
@@ -269,23 +273,11 @@ std::uint64_t checkPcdHeader(const fs::path& path, std::uint64_t file_size) {
   const std::string data_where = "data at byte " + std::to_string(body_offset);
   const std::uint64_t needed = saturatingMul(points, point_bytes);
   if (encoding == "ascii") {
-    // PCL reads one point per line and, we found, accepts a short last line (the missing values
-    // become garbage), so check both lines and values. A cut inside the very last number stays
-    // undetectable in ascii.
-    const BodyCounts counts = countAsciiBody(path, body_offset);
-    if (counts.lines < points) {
-      fail(path,
-           "truncated: header declares " + std::to_string(points) + " points but the ascii data has " +
-               std::to_string(counts.lines) + " lines",
-           data_where);
-    }
-    if (counts.tokens < saturatingMul(points, values_per_point)) {
-      fail(path,
-           "truncated: header declares " + std::to_string(points) + " points of " +
-               std::to_string(values_per_point) + " values but the ascii data has " +
-               std::to_string(counts.tokens) + " values",
-           data_where);
-    }
+    // PCL reads one point per line, keeps 0 for a value it cannot parse and, we found, accepts a
+    // short last line: every line is checked (codegen/ascii_body.h). A cut inside the very last
+    // number stays undetectable in ascii.
+    point_layout.count = points;
+    checkAsciiBody(path, body_offset, lines.back().number + 1, {point_layout});
   } else if (encoding == "binary") {
     if (body_bytes < needed) {
       fail(path,
@@ -311,6 +303,15 @@ std::uint64_t checkPcdHeader(const fs::path& path, std::uint64_t file_size) {
                std::to_string(needed),
            data_where);
     }
+    // LZF's largest expansion is a 3-byte back reference copying 264 bytes: 88 times. A declared
+    // size beyond that is a lie that PCL would allocate before finding out (8.4 GB for 188 bytes).
+    if (uncompressed > saturatingMul(compressed, kLzfMaxExpansion)) {
+      fail(path,
+           "corrupt: binary_compressed data says " + std::to_string(compressed) + " compressed bytes expand to " +
+               std::to_string(uncompressed) + ", more than LZF's largest ratio (" +
+               std::to_string(kLzfMaxExpansion) + "x) allows",
+           data_where);
+    }
     if (body_bytes - 8 < compressed) {
       fail(path,
            "truncated: header declares " + std::to_string(compressed) +
@@ -326,13 +327,15 @@ std::uint64_t checkPcdHeader(const fs::path& path, std::uint64_t file_size) {
 
 namespace {
 
-std::uint64_t plyTypeBytes(std::string_view type) {
-  static const std::map<std::string_view, std::uint64_t> kBytes = {
-      {"char", 1},   {"uchar", 1},  {"int8", 1},  {"uint8", 1},   {"short", 2},   {"ushort", 2},
-      {"int16", 2},  {"uint16", 2}, {"int", 4},   {"uint", 4},    {"int32", 4},   {"uint32", 4},
-      {"float", 4},  {"float32", 4}, {"double", 8}, {"float64", 8}};
-  const auto found = kBytes.find(type);
-  return found == kBytes.end() ? 0 : found->second;
+// A PLY scalar type's kind and size; size 0 for an unknown type.
+ValueType plyType(std::string_view type) {
+  static const std::map<std::string_view, ValueType> kTypes = {
+      {"char", {'I', 1}},   {"uchar", {'U', 1}},  {"int8", {'I', 1}},    {"uint8", {'U', 1}},
+      {"short", {'I', 2}},  {"ushort", {'U', 2}}, {"int16", {'I', 2}},   {"uint16", {'U', 2}},
+      {"int", {'I', 4}},    {"uint", {'U', 4}},   {"int32", {'I', 4}},   {"uint32", {'U', 4}},
+      {"float", {'F', 4}},  {"float32", {'F', 4}}, {"double", {'F', 8}}, {"float64", {'F', 8}}};
+  const auto found = kTypes.find(type);
+  return found == kTypes.end() ? ValueType{'F', 0} : found->second;
 }
 
 }  // namespace
@@ -355,6 +358,7 @@ std::uint64_t checkPlyHeader(const fs::path& path, std::uint64_t file_size) {
     std::uint64_t min_tokens = 0;  // ascii words of one element with empty lists
   };
   std::vector<Element> elements;
+  std::vector<AsciiElement> ascii_layout;  // the same elements, for checking ascii data lines
   std::string format;
   for (const HeaderLine& line : lines) {
     const std::string where = "header line " + std::to_string(line.number);
@@ -375,13 +379,15 @@ std::uint64_t checkPlyHeader(const fs::path& path, std::uint64_t file_size) {
       const auto count = line.words.size() == 3 ? parseUnsigned(line.words[2]) : std::nullopt;
       if (!count) fail(path, "PLY element line without a non-negative count", where);
       elements.push_back({std::string(line.words[1]), *count, 0, 0});
+      ascii_layout.push_back({std::string(line.words[1]), "'" + printable(line.words[1]) + "' items", *count, {}});
     } else if (keyword == "property") {
       if (elements.empty()) fail(path, "PLY property before any element", where);
       const bool list = line.words.size() == 5 && line.words[1] == "list";
-      const std::uint64_t bytes =
-          list ? (plyTypeBytes(line.words[3]) ? plyTypeBytes(line.words[2]) : 0)
-               : (line.words.size() == 3 ? plyTypeBytes(line.words[1]) : 0);
+      const ValueType count_type = list ? plyType(line.words[2]) : ValueType{};
+      const ValueType type = list ? plyType(line.words[3]) : plyType(line.words.size() == 3 ? line.words[1] : "");
+      const std::uint64_t bytes = list ? (type.size != 0 && count_type.kind != 'F' ? count_type.size : 0) : type.size;
       if (bytes == 0) fail(path, "PLY property line with an unknown type or shape", where);
+      ascii_layout.back().properties.push_back({std::string(line.words.back()), type, 1, list, count_type});
       elements.back().min_bytes += bytes;
       elements.back().min_tokens += 1;
     } else {
@@ -425,6 +431,7 @@ std::uint64_t checkPlyHeader(const fs::path& path, std::uint64_t file_size) {
                " ascii values, but the data has " + std::to_string(tokens),
            data_where);
     }
+    checkAsciiBody(path, body_offset, lines.back().number + 1, ascii_layout);
   } else if (body_bytes < needed) {
     fail(path,
          "truncated: header declares " + std::to_string(vertex->count) +
