@@ -8,6 +8,7 @@
 #include "cli/input_file.h"
 #include "cli/text.h"
 #include "codegen/prepare_error.h"
+#include "codegen/scene_views.h"
 #include "renderer/camera.h"
 #include "renderer/model_format.h"
 
@@ -233,6 +234,10 @@ Scene parseScene(const std::string& text, const std::string& path) {
   }
   if (root.contains("angle_step")) scene.angle_step_deg = reader.number(root["angle_step"], "angle_step", 0.01, 90);
   if (root.contains("zoom_step")) scene.zoom_step = reader.number(root["zoom_step"], "zoom_step", 1.01, 16);
+  if (scene.prune) {
+    const std::string too_much = sceneWorkProblem(scene);
+    if (!too_much.empty()) throw PrepareError(cli::displayPath(path) + ": " + too_much);
+  }
   return scene;
 }
 

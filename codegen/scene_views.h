@@ -10,6 +10,27 @@
 
 namespace octopoint::prepare {
 
+// What visibility pruning would draw for a scene: sampled views, and views x frame pixels (each
+// view clears and scans its whole frame). Counted in double so that no count can wrap.
+struct SceneWork {
+  double yaw_samples = 1;  // or the number of explicit viewpoints
+  double pitch_samples = 1;
+  double zoom_samples = 1;
+  double views = 1;
+  double view_pixels = 0;
+};
+SceneWork sceneWork(const Scene& scene);
+
+// The bounds on that work, whatever the scan: a full sphere at the default 2 degree step is 16,471
+// views (1.3e9 view pixels at 320x240); these leave room for a zoom range on top and refuse what
+// would run for hours or fill the memory (a 0.1 degree step over the sphere asks for 6.5 million).
+inline constexpr double kMaxSceneViews = 200'000;
+inline constexpr double kMaxSceneViewPixels = 17'179'869'184.0;  // 2^34
+
+// Empty when the scene's work is within the bounds, else one sentence saying how much it asks and
+// how to shrink it (parseScene refuses such a scene with it).
+std::string sceneWorkProblem(const Scene& scene);
+
 // The cameras visibility pruning draws from. Yaw and pitch ranges are sampled on an even grid that
 // includes both ends, with at most `angle_step_deg` between neighbours (explicit viewpoints are
 // taken as they are); the zoom range is sampled geometrically, ends included, with at most a

@@ -69,6 +69,38 @@ TEST(SceneFile, ErrorsNameTheKeyOnOneLine) {
   EXPECT_EQ(syntax.find('\n'), std::string::npos);
 }
 
+// What the hardening sweep found (issue 16 items 2, 7 and 12): numbers out of double's range name
+// the file and key, junk after a NUL byte is refused, echoed keys are cut, and a scene may not ask
+// for unbounded work.
+TEST(SceneFile, HostileNumbersKeysAndBytesAreRefusedNamingFileAndKey) {
+  EXPECT_EQ(errorOf(R"({"zoom": [1, 1e400]})"),
+            "scene.json: not valid JSON: number overflow parsing '1e400' (key 'zoom')");
+  EXPECT_EQ(errorOf(R"({"palette": {"colours": 1e400}})"),
+            "scene.json: not valid JSON: number overflow parsing '1e400' (key 'palette.colours')");
+  EXPECT_EQ(errorOf(std::string("{\"yaw\": [0, 1]}\0junk", 20)),
+            "scene.json: a NUL byte at byte 15: a scene file is JSON text");
+  EXPECT_EQ(errorOf(R"({"depths": [18446744073709551615]})"),
+            "scene.json: key 'depths': 18446744073709551615 is outside 1..16");
+  EXPECT_EQ(errorOf("{\"" + std::string(5000, 'k') + "\": 1}"),
+            "scene.json: key '" + std::string(40, 'k') + "...': unknown key");
+}
+
+TEST(SceneViews, ASceneAskingForUnboundedWorkIsRefusedSayingHowToShrinkIt) {
+  const std::string message = errorOf(R"({"yaw": [-180, 180], "pitch": [-90, 90], "angle_step": 0.1})");
+  EXPECT_EQ(message.find("scene.json: the scene asks for 6485401 views (3601 yaw x 1801 pitch x 1 zoom samples) "
+                         "of 320x240 pixels"),
+            0u)
+      << message;
+  EXPECT_NE(message.find("raise angle_step (now 0.1)"), std::string::npos) << message;
+  EXPECT_NE(errorOf(R"({"yaw": [-180, 180], "pitch": [-90, 90], "framebuffer": [8192, 8192]})")
+                .find("shrink the framebuffer"),
+            std::string::npos);
+  // The full sphere at the default step, and the same without pruning, are fine.
+  EXPECT_EQ(sceneWork(parseScene(R"({"yaw": [-180, 180], "pitch": [-90, 90]})", "scene.json")).views, 181.0 * 91);
+  EXPECT_NO_THROW(parseScene(R"({"yaw": [-180, 180], "pitch": [-90, 90], "angle_step": 0.1, "prune": false})",
+                             "scene.json"));
+}
+
 TEST(SceneViews, SampleBothEndsOfEveryRangeAtMostOneStepApart) {
   Scene scene;
   scene.yaw_deg = Range{-30, 30};
