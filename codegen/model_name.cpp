@@ -27,9 +27,23 @@ constexpr std::string_view kKeywords[] = {
     "using",     "virtual",      "void",          "volatile",   "wchar_t",      "while",
     "xor",       "xor_eq"};
 
-// Macros GCC and Clang predefine in their GNU modes (CMake's default, -std=gnu++20) without an
-// underscore: a model called linux would be compiled as "1".
-constexpr std::string_view kPredefinedMacros[] = {"linux", "unix", "i386", "vax"};
+// Object-like macros in lower case: predefined by GCC and Clang in their GNU modes (CMake's
+// default, -std=gnu++20), where a model called linux would be compiled as "1", and the C library's
+// (<cerrno>, <cmath>) in an app that includes them beside the model's header.
+constexpr std::string_view kPredefinedMacros[] = {"linux", "unix", "i386", "vax", "errno", "math_errhandling"};
+
+// The preparer writes NAME.h, and apps put its directory on the include path: a model called stdint
+// would hide <stdint.h> from everything compiled with it, the generated sources included. These
+// are the C standard library's headers, POSIX's and glibc's top-level ones that C++ headers pull in.
+constexpr std::string_view kHeaderNames[] = {
+    "assert", "complex", "ctype", "errno", "fenv", "float", "inttypes", "iso646", "limits", "locale", "math",
+    "setjmp", "signal", "stdalign", "stdarg", "stdatomic", "stdbool", "stddef", "stdint", "stdio", "stdlib",
+    "stdnoreturn", "string", "tgmath", "threads", "time", "uchar", "wchar", "wctype",
+    "aio", "cpio", "dirent", "dlfcn", "fcntl", "fmtmsg", "fnmatch", "ftw", "glob", "grp", "iconv", "langinfo",
+    "libgen", "monetary", "mqueue", "ndbm", "netdb", "nl_types", "poll", "pthread", "pwd", "regex", "sched",
+    "search", "semaphore", "spawn", "strings", "stropts", "syslog", "tar", "termios", "trace", "ulimit",
+    "unistd", "utime", "utmpx", "wordexp",
+    "features", "alloca", "endian", "malloc", "memory", "link", "elf", "getopt", "libintl", "values", "ctime"};
 
 bool isLetter(char c) { return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z'); }
 bool isDigit(char c) { return c >= '0' && c <= '9'; }
@@ -55,7 +69,10 @@ std::string modelNameProblem(std::string_view name) {
     return "is a C++ keyword";
   }
   if (std::find(std::begin(kPredefinedMacros), std::end(kPredefinedMacros), name) != std::end(kPredefinedMacros)) {
-    return "is a macro some compilers predefine";
+    return "is a macro of some compilers or of the C library";
+  }
+  if (std::find(std::begin(kHeaderNames), std::end(kHeaderNames), name) != std::end(kHeaderNames)) {
+    return "is the name of a standard header (" + std::string(name) + ".h would hide <" + std::string(name) + ".h>)";
   }
   if (std::none_of(name.begin(), name.end(), [](char c) { return c >= 'a' && c <= 'z'; })) {
     return "has no lower-case letter (names in capitals are left to macros)";

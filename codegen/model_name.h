@@ -5,8 +5,9 @@
 // them (no name is reserved: no leading underscore, no "__"; and no name ends in '_', which
 // leaves such names to the generator), at most kMaxModelNameLength
 // characters, not a C++ keyword or alternative token (class, and, ...), not a macro a compiler
-// predefines (linux, unix in GNU mode), and with at least one lower-case letter (the standard
-// headers' macros, INT8_MAX and the like, are all capitals).
+// predefines (linux, unix in GNU mode), not the name of a standard C or POSIX header (NAME.h
+// would hide it), and with at least one lower-case letter (the standard headers' macros, INT8_MAX
+// and the like, are all capitals).
 
 #include <cstddef>
 #include <string>

@@ -2,6 +2,7 @@
 // needs no file I/O. Bytes are written either as decimal initialiser lists or as string literals
 // (EmitStyle; docs/embedding.md compares their compile time and memory).
 #include <sstream>
+#include <string_view>
 
 #include "codegen/model_writer.h"
 #include "renderer/model_format.h"
@@ -64,7 +65,7 @@ std::size_t storedSize(std::size_t bytes, const EmitOptions& options) {
 
 void appendArray(std::ostringstream& out, const std::string& name, const std::vector<std::uint8_t>& bytes,
                  const EmitOptions& options) {
-  out << "extern const std::uint8_t " << name << "[" << storedSize(bytes.size(), options) << "] =";
+  out << "extern const ::std::uint8_t " << name << "[" << storedSize(bytes.size(), options) << "] =";
   if (options.style == EmitStyle::kStrings) {
     out << "\n";
     appendStringPieces(out, bytes);
@@ -76,12 +77,36 @@ void appendArray(std::ostringstream& out, const std::string& name, const std::ve
   }
 }
 
+// Every identifier the generator adds ends in '_', which no model name may (codegen/model_name.h):
+// no model's arrays can clash with another model's name, nor this model's helpers with its own.
 std::string arrayName(const PreparedModel& model, const PreparedLevel& level, const char* part) {
-  return model.name + "_depth" + std::to_string(level.depth) + "_" + part;
+  return model.name + "_depth" + std::to_string(level.depth) + "_" + part + "_";
+}
+
+// Text from outside (file names, the command line) in a comment: kept as it is when it is plainly
+// printable, otherwise %XX per byte. A newline would end the comment and turn the rest into code;
+// a backslash at a line's end would splice the next line into the comment; '?' and a few others
+// are kept out so that nothing in the comment can mean anything to a compiler.
+std::string commentSafe(const std::string& text) {
+  static constexpr char kHex[] = "0123456789ABCDEF";
+  std::string out;
+  for (const char c : text) {
+    const bool plain = (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') ||
+                       std::string_view(" _-.,:/=+@").find(c) != std::string_view::npos;
+    if (plain) {
+      out += c;
+    } else {
+      const auto byte = static_cast<unsigned char>(c);
+      out += '%';
+      out += kHex[byte >> 4];
+      out += kHex[byte & 15];
+    }
+  }
+  return out;
 }
 
 std::string banner(const PreparedModel& model) {
-  return "// Generated from " + model.source_description + "\n// Do not edit: regenerate it.\n";
+  return "// Generated from " + commentSafe(model.source_description) + "\n// Do not edit: regenerate it.\n";
 }
 
 std::string header(const PreparedModel& model) {
@@ -95,7 +120,7 @@ std::string header(const PreparedModel& model) {
         << level.nodes.size() << " node bytes (" << static_cast<int>(bits_per_point * 100) / 100.0
         << " bits per point of geometry) + " << level.leaves.size() << " colour bytes\n";
   }
-  out << "extern const octopoint::EmbeddedModel " << model.name << ";\n\n"
+  out << "extern const ::octopoint::EmbeddedModel " << model.name << ";\n\n"
       << "}  // namespace octopoint::models\n";
   return out.str();
 }
@@ -117,27 +142,27 @@ std::string descriptorSource(const PreparedModel& model, const EmitOptions& opti
       out << "\n";
       continue;
     }
-    out << "extern const std::uint8_t " << arrayName(model, level, "nodes") << "["
+    out << "extern const ::std::uint8_t " << arrayName(model, level, "nodes") << "["
         << storedSize(level.nodes.size(), options) << "];\n"
-        << "extern const std::uint8_t " << arrayName(model, level, "leaves") << "["
+        << "extern const ::std::uint8_t " << arrayName(model, level, "leaves") << "["
         << storedSize(level.leaves.size(), options) << "];\n";
   }
   std::vector<std::uint8_t> palette_bytes(3 * format::kPaletteEntries, 0);
   for (std::size_t i = 0; i < model.palette.size(); ++i) {
     for (std::size_t ch = 0; ch < 3; ++ch) palette_bytes[3 * i + ch] = model.palette[i][ch];
   }
-  out << "\nnamespace {\n\nconst std::uint8_t kPalette[" << palette_bytes.size() << "] = {\n";
+  out << "\nnamespace {\n\nconst ::std::uint8_t palette_[" << palette_bytes.size() << "] = {\n";
   appendByteList(out, palette_bytes);
-  out << "};\n\nconst octopoint::EmbeddedLevel kLevels[" << model.levels.size() << "] = {\n";
+  out << "};\n\nconst ::octopoint::EmbeddedLevel levels_[" << model.levels.size() << "] = {\n";
   for (const PreparedLevel& level : model.levels) {
     out << "    {" << level.depth << ", " << arrayName(model, level, "nodes") << ", "
         << level.nodes.size() << ", " << arrayName(model, level, "leaves") << ", "
         << level.leaves.size() << "},\n";
   }
   out << "};\n\n}  // namespace\n\n"
-      << "extern const octopoint::EmbeddedModel " << model.name << " = {\n"
+      << "extern const ::octopoint::EmbeddedModel " << model.name << " = {\n"
       << "    \"" << model.name << "\", " << model.cube_edge_um << ", " << model.palette.size()
-      << ", kPalette, " << model.levels.size() << ", kLevels};\n\n"
+      << ", palette_, " << model.levels.size() << ", levels_};\n\n"
       << "}  // namespace octopoint::models\n";
   return out.str();
 }
