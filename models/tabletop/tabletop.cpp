@@ -6,16 +6,16 @@
 
 namespace octopoint::models {
 
-extern const std::uint8_t tabletop_depth6_nodes[2011];
-extern const std::uint8_t tabletop_depth6_leaves[5434];
-extern const std::uint8_t tabletop_depth7_nodes[7444];
-extern const std::uint8_t tabletop_depth7_leaves[19748];
-extern const std::uint8_t tabletop_depth8_nodes[27191];
-extern const std::uint8_t tabletop_depth8_leaves[62503];
+extern const ::std::uint8_t tabletop_depth6_nodes_[2011];
+extern const ::std::uint8_t tabletop_depth6_leaves_[5434];
+extern const ::std::uint8_t tabletop_depth7_nodes_[7444];
+extern const ::std::uint8_t tabletop_depth7_leaves_[19748];
+extern const ::std::uint8_t tabletop_depth8_nodes_[27191];
+extern const ::std::uint8_t tabletop_depth8_leaves_[62503];
 
 namespace {
 
-const std::uint8_t kPalette[768] = {
+const ::std::uint8_t palette_[768] = {
     17,12,9,5,12,58,88,81,67,61,59,10,93,83,70,102,102,119,76,67,37,90,83,77,133,136,155,71,71,12,89,84,
     87,60,82,100,163,152,157,86,83,24,82,78,7,115,92,11,69,85,111,128,109,6,112,113,134,169,174,205,143,
     146,174,67,88,124,99,87,75,101,96,93,4,13,71,121,121,137,103,106,103,161,149,8,116,119,136,48,106,
@@ -46,15 +46,15 @@ const std::uint8_t kPalette[768] = {
     62,44,105,107,122,
 };
 
-const octopoint::EmbeddedLevel kLevels[3] = {
-    {6, tabletop_depth6_nodes, 2010, tabletop_depth6_leaves, 5433},
-    {7, tabletop_depth7_nodes, 7443, tabletop_depth7_leaves, 19747},
-    {8, tabletop_depth8_nodes, 27190, tabletop_depth8_leaves, 62502},
+const ::octopoint::EmbeddedLevel levels_[3] = {
+    {6, tabletop_depth6_nodes_, 2010, tabletop_depth6_leaves_, 5433},
+    {7, tabletop_depth7_nodes_, 7443, tabletop_depth7_leaves_, 19747},
+    {8, tabletop_depth8_nodes_, 27190, tabletop_depth8_leaves_, 62502},
 };
 
 }  // namespace
 
-extern const octopoint::EmbeddedModel tabletop = {
-    "tabletop", 699998, 256, kPalette, 3, kLevels};
+extern const ::octopoint::EmbeddedModel tabletop = {
+    "tabletop", 699998, 256, palette_, 3, levels_};
 
 }  // namespace octopoint::models

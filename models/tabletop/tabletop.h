@@ -9,6 +9,6 @@ namespace octopoint::models {
 // depth 6: 5433 voxels, 2010 node bytes (2.95 bits per point of geometry) + 5433 colour bytes
 // depth 7: 19747 voxels, 7443 node bytes (3.01 bits per point of geometry) + 19747 colour bytes
 // depth 8: 62502 voxels, 27190 node bytes (3.48 bits per point of geometry) + 62502 colour bytes
-extern const octopoint::EmbeddedModel tabletop;
+extern const ::octopoint::EmbeddedModel tabletop;
 
 }  // namespace octopoint::models
