@@ -15,7 +15,10 @@
 
 namespace octopoint {
 
-class Framebuffer {
+// A frame's pixels in memory someone else owns: what the decoders, the hole filler and the band
+// renderer (renderer/band_renderer.h) draw into. A band renderer points it at a caller-provided band
+// buffer, so drawing on a device needs no heap.
+class FrameView {
  public:
   static constexpr std::uint32_t kEmpty = 0xFFFF'FFFF;  // no point: farther than any real word
   // Key 2^24 - 1 is left to kEmpty, so that a real point's word is always below it.
@@ -29,7 +32,9 @@ class Framebuffer {
     return static_cast<std::uint8_t>(word & 0xFF);
   }
 
-  Framebuffer(std::int32_t width, std::int32_t height);
+  // `pixels` holds width * height words, row-major.
+  FrameView(std::uint32_t* pixels, std::int32_t width, std::int32_t height)
+      : pixel_(pixels), width_(width), height_(height) {}
 
   std::int32_t width() const { return width_; }
   std::int32_t height() const { return height_; }
@@ -53,23 +58,40 @@ class Framebuffer {
     return colourIndexOf(pixelAt(x, y));
   }
   // Row-major packed words, kEmpty where nothing was drawn.
-  std::span<const std::uint32_t> pixels() const { return pixel_; }
+  std::span<const std::uint32_t> pixels() const { return {pixel_, pixelCount()}; }
   // Raw access for the decoders' plotters (renderer/framebuffer_plot.h) and the hole filler.
-  std::uint32_t* pixelData() { return pixel_.data(); }
+  std::uint32_t* pixelData() { return pixel_; }
 
- private:
+ protected:
+  std::size_t pixelCount() const {
+    return static_cast<std::size_t>(width_) * static_cast<std::size_t>(height_);
+  }
   std::size_t indexOf(std::int32_t x, std::int32_t y) const {
     return static_cast<std::size_t>(y) * static_cast<std::size_t>(width_) + static_cast<std::size_t>(x);
   }
 
+  std::uint32_t* pixel_;
   std::int32_t width_;
   std::int32_t height_;
-  std::vector<std::uint32_t> pixel_;
+};
+
+// A frame that owns its pixels (allocated once, at construction).
+class Framebuffer : public FrameView {
+ public:
+  Framebuffer(std::int32_t width, std::int32_t height);
+  Framebuffer(const Framebuffer& other);
+  Framebuffer(Framebuffer&& other) noexcept;
+  Framebuffer& operator=(const Framebuffer& other);
+  Framebuffer& operator=(Framebuffer&& other) noexcept;
+  ~Framebuffer() = default;
+
+ private:
+  std::vector<std::uint32_t> storage_;
 };
 
 // Turns a frame into RGB888 (3 bytes per pixel, row-major): covered pixels get their palette
 // colour, empty ones `background`. `rgb` must hold width * height * 3 bytes.
-void resolveToRgb(const Framebuffer& frame, const ModelView& model, Rgb background,
+void resolveToRgb(const FrameView& frame, const ModelView& model, Rgb background,
                   std::span<std::uint8_t> rgb);
 
 }  // namespace octopoint

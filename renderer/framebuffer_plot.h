@@ -14,7 +14,7 @@ namespace octopoint {
 // What every integer decoder needs to write pixels: the frame's words and size, and the set-up's
 // screen (Q(32-F).F) and depth-key formats.
 struct PlotTarget {
-  PlotTarget(Framebuffer& frame, const FrameSetup& setup)
+  PlotTarget(FrameView& frame, const FrameSetup& setup)
       : pixel(frame.pixelData()),
         width(frame.width()),
         height(frame.height()),

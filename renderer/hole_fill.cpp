@@ -59,23 +59,36 @@ std::uint32_t bridgeDepthLimit(const FrameSetup& setup) {
 }
 
 HoleFiller::HoleFiller(std::int32_t width)
-    : width_(width), history_(static_cast<std::size_t>(width + 2 * kPad) * kRows, kEmpty) {
+    : width_(width), history_(holeFillHistoryWords(width), kEmpty) {
   assert(width > 0);
 }
 
-HoleFillCounts HoleFiller::fill(Framebuffer& frame, std::uint32_t max_bridge_depth) {
+HoleFillCounts HoleFiller::fill(FrameView& frame, std::uint32_t max_bridge_depth) {
   assert(frame.width() == width_);
-  const std::int32_t width = width_;
-  const std::int32_t height = frame.height();
-  std::uint32_t* const pixels = frame.pixelData();
+  return fillHoleRows(frame, 0, frame.height(), max_bridge_depth, history_);
+}
+
+std::size_t holeFillHistoryWords(std::int32_t width) {
+  return static_cast<std::size_t>(width + 2 * kHoleFillPadColumns) * kHoleFillHistoryRows;
+}
+
+HoleFillCounts fillHoleRows(FrameView& window, std::int32_t row_begin, std::int32_t row_end,
+                            std::uint32_t max_bridge_depth, std::span<std::uint32_t> history) {
+  const std::int32_t width = window.width();
+  const std::int32_t height = window.height();
+  assert(0 <= row_begin && row_begin <= row_end && row_end <= height);
+  assert(history.size() >= holeFillHistoryWords(width));
+  constexpr std::int32_t kRows = kHoleFillHistoryRows;
+  constexpr std::int32_t kPad = kHoleFillPadColumns;
+  std::uint32_t* const pixels = window.pixelData();
   const std::ptrdiff_t stride = width + 2 * kPad;
-  // Frame row r (-2 <= r < height + 2) lives in slot (r + kRows) % kRows, kPad columns in; rows
-  // outside the frame and the padding columns are empty, so no read needs a bounds check.
-  const auto slot = [&](std::int32_t r) {
-    return history_.data() + ((r + kRows) % kRows) * stride + kPad;
-  };
-  const auto load = [&](std::int32_t r) {
-    std::uint32_t* row = slot(r);
+  // The original words of rows y - 2 .. y + 2 live in a ring of kRows slots, kPad columns in; rows
+  // outside the window and the padding columns are empty, so no read needs a bounds check. The
+  // ring turns by rotating slot pointers, not by a remainder: a device without a divide
+  // instruction would call a helper for it.
+  std::fill_n(history.begin(), holeFillHistoryWords(width), kEmpty);
+  std::uint32_t* slot_of[kRows];  // slot_of[i]: the slot of row row_begin - 2 + i, in ring order
+  const auto load = [&](std::uint32_t* row, std::int32_t r) {
     if (r >= 0 && r < height) {
       std::memcpy(row, pixels + static_cast<std::ptrdiff_t>(r) * width,
                   static_cast<std::size_t>(width) * 4);
@@ -83,15 +96,17 @@ HoleFillCounts HoleFiller::fill(Framebuffer& frame, std::uint32_t max_bridge_dep
       std::fill(row, row + width, kEmpty);
     }
   };
-  for (std::int32_t r = -2; r < 2; ++r) load(r);
+  for (std::int32_t i = 0; i < kRows; ++i) slot_of[i] = history.data() + i * stride + kPad;
+  for (std::int32_t i = 0; i < kRows - 1; ++i) load(slot_of[i], row_begin - 2 + i);
   HoleFillCounts counts;
-  for (std::int32_t y = 0; y < height; ++y) {
-    load(y + 2);  // into the slot of row y - 3, which no decision needs any more
-    const std::uint32_t* up2 = slot(y - 2);
-    const std::uint32_t* up1 = slot(y - 1);
-    const std::uint32_t* row = slot(y);
-    const std::uint32_t* down1 = slot(y + 1);
-    const std::uint32_t* down2 = slot(y + 2);
+  for (std::int32_t y = row_begin; y < row_end; ++y) {
+    const std::uint32_t* up2 = slot_of[0];
+    const std::uint32_t* up1 = slot_of[1];
+    const std::uint32_t* row = slot_of[2];
+    const std::uint32_t* down1 = slot_of[3];
+    std::uint32_t* const down2_slot = slot_of[4];
+    load(down2_slot, y + 2);
+    const std::uint32_t* down2 = down2_slot;
     for (std::int32_t x = 0; x < width; ++x) {
       if (row[x] != kEmpty) continue;
       // Every type needs one of these covered (the left, right, upper or lower neighbour, or the
@@ -135,6 +150,10 @@ HoleFillCounts HoleFiller::fill(Framebuffer& frame, std::uint32_t max_bridge_dep
         fillFrom(down1[x], counts.type4);
       }
     }
+    // Row y - 2's slot takes row y + 3 next.
+    std::uint32_t* const oldest = slot_of[0];
+    for (std::int32_t i = 0; i + 1 < kRows; ++i) slot_of[i] = slot_of[i + 1];
+    slot_of[kRows - 1] = oldest;
   }
   return counts;
 }

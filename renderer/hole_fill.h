@@ -20,7 +20,9 @@
 // gap, so one pass cannot creep across the background. The filler keeps the original depths of
 // the five rows around the current one in a padded ring; it allocates them once, at set-up.
 
+#include <cstddef>
 #include <cstdint>
+#include <span>
 #include <vector>
 
 #include "renderer/camera.h"
@@ -46,6 +48,23 @@ struct HoleFillCounts {
   std::int32_t total() const { return type1 + type2 + type3 + type4; }
 };
 
+// Rows of history and padding columns the filler keeps: a decision about row y reads the decoder's
+// words of rows y - 2 .. y + 2 and columns x - 2 .. x + 2.
+inline constexpr std::int32_t kHoleFillReachRows = 2;
+inline constexpr std::int32_t kHoleFillHistoryRows = 2 * kHoleFillReachRows + 1;
+inline constexpr std::int32_t kHoleFillPadColumns = 2;
+
+// Words of history fillHoleRows needs for frames `width` pixels wide.
+std::size_t holeFillHistoryWords(std::int32_t width);
+
+// The row-range entry point (band rendering, renderer/band_renderer.h): fills the gaps of rows
+// [row_begin, row_end) of `window`, reading rows row_begin - 2 .. row_end + 1 of it as the decoder
+// left them; rows outside the window read as empty. So when `window` holds rows [y0, y0 + h) of a
+// frame, the result equals the whole-frame fill's rows exactly if the window also holds every frame
+// row within kHoleFillReachRows of the filled ones. `history` (holeFillHistoryWords) is scratch.
+HoleFillCounts fillHoleRows(FrameView& window, std::int32_t row_begin, std::int32_t row_end,
+                            std::uint32_t max_bridge_depth, std::span<std::uint32_t> history);
+
 class HoleFiller {
  public:
   // Allocates the row history for frames `width` pixels wide.
@@ -53,14 +72,11 @@ class HoleFiller {
 
   // Fills the gaps of types 1 to 4 in `frame` (which must be as wide as the filler) in place.
   // `max_bridge_depth` is in the frame's depth-key units (bridgeDepthLimit). Never allocates.
-  HoleFillCounts fill(Framebuffer& frame, std::uint32_t max_bridge_depth);
+  HoleFillCounts fill(FrameView& frame, std::uint32_t max_bridge_depth);
 
  private:
-  static constexpr std::int32_t kRows = 5;  // rows y - 2 .. y + 2
-  static constexpr std::int32_t kPad =
-      2;  // empty columns either side: x - 2 .. x + 2 need no check
   std::int32_t width_;
-  std::vector<std::uint32_t> history_;  // kRows rows of width_ + 2 * kPad original pixel words
+  std::vector<std::uint32_t> history_;  // holeFillHistoryWords(width_) original pixel words
 };
 
 // For measuring (docs/holefill.md): the empty pixels of `frame` that lie inside the object as

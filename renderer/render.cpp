@@ -47,7 +47,7 @@ Variant defaultVariant() { return simdDecoderAvailable() ? Variant::kFixedSimd :
 bool drawsSplats(Variant variant) { return variant == Variant::kFixedFast || variant == Variant::kFixedSimd; }
 
 bool renderLevel(Variant variant, const LevelView& level, const FrameSetup& setup,
-                 Framebuffer& frame, const std::atomic<bool>* abort) {
+                 FrameView& frame, const std::atomic<bool>* abort) {
   switch (variant) {
     case Variant::kFixedBaseline: return renderFixedBaseline(level, setup, frame, abort);
     case Variant::kFixedLeafCall: return renderFixedLeafCall(level, setup, frame, abort);

@@ -48,23 +48,23 @@ bool drawsSplats(Variant variant);
 // models can share a frame). The frame must have the set-up's width and height. When `abort` is
 // given and becomes true while drawing, the decoder stops at its next poll and returns false: the
 // frame is then incomplete and must not be shown. Returns true for a complete frame.
-bool renderLevel(Variant variant, const LevelView& level, const FrameSetup& setup, Framebuffer& frame,
+bool renderLevel(Variant variant, const LevelView& level, const FrameSetup& setup, FrameView& frame,
                  const std::atomic<bool>* abort = nullptr);
 
 // Whether a variant uses integer arithmetic only (the float_* ones are references).
 bool isFixedPoint(Variant variant);
 
 // The variants one by one (renderLevel dispatches to them).
-bool renderFixedBaseline(const LevelView&, const FrameSetup&, Framebuffer&, const std::atomic<bool>* abort);
-bool renderFixedLeafCall(const LevelView&, const FrameSetup&, Framebuffer&, const std::atomic<bool>* abort);
-bool renderFixedUnrolled(const LevelView&, const FrameSetup&, Framebuffer&, const std::atomic<bool>* abort);
-bool renderFixedSetBits(const LevelView&, const FrameSetup&, Framebuffer&, const std::atomic<bool>* abort);
-bool renderFixedClipped(const LevelView&, const FrameSetup&, Framebuffer&, const std::atomic<bool>* abort);
-bool renderFixedFast(const LevelView&, const FrameSetup&, Framebuffer&, const std::atomic<bool>* abort);
-bool renderFixedSimd(const LevelView&, const FrameSetup&, Framebuffer&, const std::atomic<bool>* abort);
+bool renderFixedBaseline(const LevelView&, const FrameSetup&, FrameView&, const std::atomic<bool>* abort);
+bool renderFixedLeafCall(const LevelView&, const FrameSetup&, FrameView&, const std::atomic<bool>* abort);
+bool renderFixedUnrolled(const LevelView&, const FrameSetup&, FrameView&, const std::atomic<bool>* abort);
+bool renderFixedSetBits(const LevelView&, const FrameSetup&, FrameView&, const std::atomic<bool>* abort);
+bool renderFixedClipped(const LevelView&, const FrameSetup&, FrameView&, const std::atomic<bool>* abort);
+bool renderFixedFast(const LevelView&, const FrameSetup&, FrameView&, const std::atomic<bool>* abort);
+bool renderFixedSimd(const LevelView&, const FrameSetup&, FrameView&, const std::atomic<bool>* abort);
 bool simdDecoderAvailable();  // an x86-64 CPU with AVX2
-bool renderFloatBaseline(const LevelView&, const FrameSetup&, Framebuffer&, const std::atomic<bool>* abort);
-bool renderFloatLeafCall(const LevelView&, const FrameSetup&, Framebuffer&, const std::atomic<bool>* abort);
-bool renderFloatUnrolled(const LevelView&, const FrameSetup&, Framebuffer&, const std::atomic<bool>* abort);
+bool renderFloatBaseline(const LevelView&, const FrameSetup&, FrameView&, const std::atomic<bool>* abort);
+bool renderFloatLeafCall(const LevelView&, const FrameSetup&, FrameView&, const std::atomic<bool>* abort);
+bool renderFloatUnrolled(const LevelView&, const FrameSetup&, FrameView&, const std::atomic<bool>* abort);
 
 }  // namespace octopoint

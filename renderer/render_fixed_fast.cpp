@@ -124,7 +124,7 @@ Cursor visit(const FastFrame& f, int level, Vec3 c, Cursor at) {
 
 }  // namespace
 
-bool renderFixedFast(const LevelView& level, const FrameSetup& setup, Framebuffer& frame,
+bool renderFixedFast(const LevelView& level, const FrameSetup& setup, FrameView& frame,
                      const std::atomic<bool>* abort) {
   assert(level.depth == setup.depth);
   assert(frame.width() == setup.width && frame.height() == setup.height);

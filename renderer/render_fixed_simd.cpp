@@ -64,7 +64,7 @@ static_assert(kBatch >= kMostLeavesPerCall);
 constexpr std::int64_t kSplatPixelsPerFlush = 1 << 16;
 
 struct SimdFrame {
-  SimdFrame(const LevelView& level, const FrameSetup& setup, Framebuffer& frame,
+  SimdFrame(const LevelView& level, const FrameSetup& setup, FrameView& frame,
             const std::atomic<bool>* abort_flag)
       : target(frame, setup),
         levels(setup.depth),
@@ -349,7 +349,7 @@ __attribute__((target("avx2"))) const std::uint8_t* visit(SimdFrame& f, int leve
 }
 
 __attribute__((target("avx2"))) bool renderAvx2(const LevelView& level, const FrameSetup& setup,
-                                                Framebuffer& frame,
+                                                FrameView& frame,
                                                 const std::atomic<bool>* abort) {
   // About 22 KiB with the offset vectors and the batch, on the stack: drawing never allocates.
   SimdFrame state(level, setup, frame, abort);
@@ -398,7 +398,7 @@ __attribute__((target("avx2"))) bool renderAvx2(const LevelView& level, const Fr
 
 bool simdDecoderAvailable() { return __builtin_cpu_supports("avx2") != 0; }
 
-bool renderFixedSimd(const LevelView& level, const FrameSetup& setup, Framebuffer& frame,
+bool renderFixedSimd(const LevelView& level, const FrameSetup& setup, FrameView& frame,
                      const std::atomic<bool>* abort) {
   assert(level.depth == setup.depth);
   assert(frame.width() == setup.width && frame.height() == setup.height);
@@ -414,7 +414,7 @@ namespace octopoint {
 
 bool simdDecoderAvailable() { return false; }
 
-bool renderFixedSimd(const LevelView& level, const FrameSetup& setup, Framebuffer& frame,
+bool renderFixedSimd(const LevelView& level, const FrameSetup& setup, FrameView& frame,
                      const std::atomic<bool>* abort) {
   return renderFixedFast(level, setup, frame, abort);
 }

@@ -13,7 +13,7 @@ using CheckedPlot = FixedPlot<true>;
 using InsidePlot = FixedPlot<false>;
 
 template <typename Visit>
-bool renderWith(Visit visit, const LevelView& level, const FrameSetup& setup, Framebuffer& frame,
+bool renderWith(Visit visit, const LevelView& level, const FrameSetup& setup, FrameView& frame,
                 const std::atomic<bool>* abort) {
   assert(level.depth == setup.depth);
   assert(frame.width() == setup.width && frame.height() == setup.height);
@@ -29,7 +29,7 @@ bool renderWith(Visit visit, const LevelView& level, const FrameSetup& setup, Fr
 // still have to be stepped over); only subtrees straddling an edge test each leaf.
 class ClippedWalk {
  public:
-  ClippedWalk(const LevelView& level, const FrameSetup& setup, Framebuffer& frame,
+  ClippedWalk(const LevelView& level, const FrameSetup& setup, FrameView& frame,
               const std::atomic<bool>* abort)
       : checked_{level.nodes.data(), level.leaves.data(), setup.child_offset, setup.depth,
                  CheckedPlot(frame, setup), abort},
@@ -77,27 +77,27 @@ class ClippedWalk {
 
 }  // namespace
 
-bool renderFixedBaseline(const LevelView& level, const FrameSetup& setup, Framebuffer& frame,
+bool renderFixedBaseline(const LevelView& level, const FrameSetup& setup, FrameView& frame,
                          const std::atomic<bool>* abort) {
   return renderWith([](auto& s, int l, Vec3 p) { visitBaseline(s, l, p); }, level, setup, frame, abort);
 }
 
-bool renderFixedLeafCall(const LevelView& level, const FrameSetup& setup, Framebuffer& frame,
+bool renderFixedLeafCall(const LevelView& level, const FrameSetup& setup, FrameView& frame,
                          const std::atomic<bool>* abort) {
   return renderWith([](auto& s, int l, Vec3 p) { visitLeafCall(s, l, p); }, level, setup, frame, abort);
 }
 
-bool renderFixedUnrolled(const LevelView& level, const FrameSetup& setup, Framebuffer& frame,
+bool renderFixedUnrolled(const LevelView& level, const FrameSetup& setup, FrameView& frame,
                          const std::atomic<bool>* abort) {
   return renderWith([](auto& s, int l, Vec3 p) { visitUnrolled(s, l, p); }, level, setup, frame, abort);
 }
 
-bool renderFixedSetBits(const LevelView& level, const FrameSetup& setup, Framebuffer& frame,
+bool renderFixedSetBits(const LevelView& level, const FrameSetup& setup, FrameView& frame,
                         const std::atomic<bool>* abort) {
   return renderWith([](auto& s, int l, Vec3 p) { visitSetBits(s, l, p); }, level, setup, frame, abort);
 }
 
-bool renderFixedClipped(const LevelView& level, const FrameSetup& setup, Framebuffer& frame,
+bool renderFixedClipped(const LevelView& level, const FrameSetup& setup, FrameView& frame,
                         const std::atomic<bool>* abort) {
   assert(level.depth == setup.depth);
   assert(frame.width() == setup.width && frame.height() == setup.height);

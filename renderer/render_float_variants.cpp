@@ -82,7 +82,7 @@ struct FloatPlot {
 };
 
 template <typename Visit>
-bool renderFloatWith(Visit visit, const LevelView& level, const FrameSetup& setup, Framebuffer& frame,
+bool renderFloatWith(Visit visit, const LevelView& level, const FrameSetup& setup, FrameView& frame,
                      const std::atomic<bool>* abort) {
   assert(level.depth == setup.depth);
   assert(frame.width() == setup.width && frame.height() == setup.height);
@@ -99,19 +99,19 @@ bool renderFloatWith(Visit visit, const LevelView& level, const FrameSetup& setu
 
 }  // namespace
 
-bool renderFloatBaseline(const LevelView& level, const FrameSetup& setup, Framebuffer& frame,
+bool renderFloatBaseline(const LevelView& level, const FrameSetup& setup, FrameView& frame,
                          const std::atomic<bool>* abort) {
   return renderFloatWith([](auto& s, int l, Point3<float> p) { visitBaseline(s, l, p); }, level, setup,
                          frame, abort);
 }
 
-bool renderFloatLeafCall(const LevelView& level, const FrameSetup& setup, Framebuffer& frame,
+bool renderFloatLeafCall(const LevelView& level, const FrameSetup& setup, FrameView& frame,
                          const std::atomic<bool>* abort) {
   return renderFloatWith([](auto& s, int l, Point3<float> p) { visitLeafCall(s, l, p); }, level, setup,
                          frame, abort);
 }
 
-bool renderFloatUnrolled(const LevelView& level, const FrameSetup& setup, Framebuffer& frame,
+bool renderFloatUnrolled(const LevelView& level, const FrameSetup& setup, FrameView& frame,
                          const std::atomic<bool>* abort) {
   return renderFloatWith([](auto& s, int l, Point3<float> p) { visitUnrolled(s, l, p); }, level, setup,
                          frame, abort);

@@ -1,0 +1,194 @@
+#include "renderer/band_renderer.h"
+
+#include <algorithm>
+#include <bit>
+#include <cstdlib>
+#include <limits>
+
+#include "renderer/decode_algorithms.h"
+#include "renderer/framebuffer.h"
+#include "renderer/hole_fill.h"
+
+namespace octopoint {
+namespace {
+
+// Sum over levels l >= from of the largest |offset| on each axis: how far the leaves of a node at
+// tree level `from` lie from its centre (as SubtreeClip's reach), Q(32-F).F.
+void reachFrom(const FrameSetup& setup, int from, std::int64_t* reach_x, std::int64_t* reach_y) {
+  *reach_x = *reach_y = 0;
+  for (int l = from; l < setup.depth; ++l) {
+    std::int64_t widest_x = 0, widest_y = 0;
+    for (const Vec3& d : setup.child_offset[static_cast<std::size_t>(l)]) {
+      widest_x = std::max<std::int64_t>(widest_x, std::llabs(d.x));
+      widest_y = std::max<std::int64_t>(widest_y, std::llabs(d.y));
+    }
+    *reach_x += widest_x;
+    *reach_y += widest_y;
+  }
+}
+
+std::span<std::uint8_t> bytesOf(std::span<std::uint32_t> words) {
+  return {reinterpret_cast<std::uint8_t*>(words.data()), words.size() * 4};
+}
+
+// One band drawn through the index: the levels above the index level are walked here, each
+// subtree at the index level that meets the band's rows is drawn by the decoder as a tree of its
+// own; the others are jumped over with the index.
+class IndexedBandWalk {
+ public:
+  IndexedBandWalk(const LevelView& level, const FrameSetup& frame, const BandIndex& index,
+                  Variant variant, FrameSetup& subtree_setup, FrameView& window, std::int32_t window_y0)
+      : level_(level),
+        frame_(frame),
+        index_(index),
+        variant_(variant),
+        subtree_(subtree_setup),
+        window_(window),
+        y_shift_(window_y0 << frame.fraction_bits),
+        x_end_(std::int64_t{frame.width} << frame.fraction_bits),
+        y_begin_(std::int64_t{window_y0} << frame.fraction_bits),
+        y_end_(std::int64_t{window_y0 + window.height()} << frame.fraction_bits) {
+    reachFrom(frame, index.level, &reach_x_, &reach_y_);
+  }
+
+  void run() {
+    const std::uint8_t* node = level_.nodes.data();
+    std::uint32_t leaf = 0;
+    visit(0, frame_.root, node, leaf);
+  }
+
+ private:
+  void visit(int l, const Vec3& centre, const std::uint8_t*& node, std::uint32_t& leaf) {
+    if (l == index_.level) {
+      const SubtreeEnd& end = index_.ends[entry_++];
+      if (meetsWindow(centre)) draw(centre, node, leaf, end);
+      node = level_.nodes.data() + end.node_end;
+      leaf = end.leaf_end;
+      return;
+    }
+    const auto& offsets = frame_.child_offset[static_cast<std::size_t>(l)];
+    for (unsigned mask = *node++; mask != 0; mask &= mask - 1) {
+      visit(l + 1, centre + offsets[static_cast<std::size_t>(std::countr_zero(mask))], node, leaf);
+    }
+  }
+
+  bool meetsWindow(const Vec3& c) const {
+    return c.x + reach_x_ >= 0 && c.x - reach_x_ < x_end_ && c.y + reach_y_ >= y_begin_ &&
+           c.y - reach_y_ < y_end_;
+  }
+
+  void draw(const Vec3& centre, const std::uint8_t* node, std::uint32_t leaf, const SubtreeEnd& end) {
+    const auto node_begin = static_cast<std::size_t>(node - level_.nodes.data());
+    const LevelView subtree{subtree_.depth, level_.nodes.subspan(node_begin, end.node_end - node_begin),
+                            level_.leaves.subspan(leaf, end.leaf_end - leaf)};
+    subtree_.root = Vec3{centre.x, centre.y - y_shift_, centre.z};
+    renderLevel(variant_, subtree, subtree_, window_);
+  }
+
+  const LevelView& level_;
+  const FrameSetup& frame_;
+  const BandIndex& index_;
+  Variant variant_;
+  FrameSetup& subtree_;
+  FrameView& window_;
+  std::int32_t y_shift_;
+  std::int64_t x_end_, y_begin_, y_end_;
+  std::int64_t reach_x_ = 0, reach_y_ = 0;
+  std::size_t entry_ = 0;
+};
+
+}  // namespace
+
+CameraError bandFrameSetup(const FrameSetup& frame, std::int32_t y0, std::int32_t rows, FrameSetup* band) {
+  if (y0 < 0 || rows < 1 || rows > frame.height - y0) return CameraError::kBadViewport;
+  std::int64_t reach_x = 0, reach_y = 0;
+  reachFrom(frame, 0, &reach_x, &reach_y);
+  const std::int64_t root_y = std::int64_t{frame.root.y} - (std::int64_t{y0} << frame.fraction_bits);
+  // As buildFrameSetup: every leaf's coordinate and every partial sum stays strictly inside int32.
+  if (std::llabs(root_y) + reach_y >= std::numeric_limits<std::int32_t>::max()) return CameraError::kOverflow;
+  *band = frame;
+  band->root.y = static_cast<std::int32_t>(root_y);
+  band->height = rows;
+  band->camera.height = rows;
+  return CameraError::kNone;
+}
+
+bool supportsBands(Variant variant) { return isFixedPoint(variant); }
+
+std::int32_t bandMarginRows(const BandConfig& config) { return config.fill ? kHoleFillReachRows : 0; }
+
+std::size_t bandBufferWords(std::int32_t width, const BandConfig& config) {
+  return static_cast<std::size_t>(config.band_rows + 2 * bandMarginRows(config)) * static_cast<std::size_t>(width);
+}
+
+const char* describe(BandError error) {
+  switch (error) {
+    case BandError::kNone: return "no error";
+    case BandError::kUnsupportedVariant: return "this variant does not draw bands (float reference)";
+    case BandError::kBadBandRows: return "band rows must be at least 1";
+    case BandError::kBufferTooSmall: return "band buffer or fill history too small";
+    case BandError::kOverflow: return "band coordinates would overflow 32 bits";
+    case BandError::kNoSink: return "no flush callback";
+  }
+  return "unknown error";
+}
+
+BandError renderBands(const LevelView& level, const FrameSetup& setup, const BandConfig& config,
+                      const BandIndex& index, const Rgb565Palette& palette, const BandBuffers& buffers,
+                      const BandSink& sink) {
+  if (!supportsBands(config.variant)) return BandError::kUnsupportedVariant;
+  if (config.band_rows < 1) return BandError::kBadBandRows;
+  if (sink.flush == nullptr) return BandError::kNoSink;
+  const std::int32_t width = setup.width, height = setup.height;
+  const std::size_t words = bandBufferWords(width, config);
+  if (buffers.first.size() < words || (!buffers.second.empty() && buffers.second.size() < words) ||
+      (config.fill && buffers.fill_history.size() < holeFillHistoryWords(width))) {
+    return BandError::kBufferTooSmall;
+  }
+  const std::int32_t margin = bandMarginRows(config);
+  const std::int32_t band_rows = std::min(config.band_rows, height);
+  FrameSetup band;
+  // No band is shifted more than by the frame's last row: if that set-up fits, every band's does.
+  if (bandFrameSetup(setup, height - 1, 1, &band) != CameraError::kNone) return BandError::kOverflow;
+
+  // The index-level subtrees' set-up: the frame's vectors from the index level down.
+  FrameSetup subtree = setup;
+  if (index.level > 0) {
+    subtree.depth = setup.depth - index.level;
+    for (int l = 0; l < format::kMaxDepth; ++l) {
+      const int from = l + index.level;
+      subtree.child_offset[static_cast<std::size_t>(l)] =
+          from < format::kMaxDepth ? setup.child_offset[static_cast<std::size_t>(from)] : decltype(subtree.child_offset)::value_type{};
+    }
+  }
+  const std::uint32_t bridge_limit = config.fill ? bridgeDepthLimit(setup) : 0;
+
+  const int buffer_count = buffers.second.empty() ? 1 : 2;
+  int band_number = 0;
+  for (std::int32_t y0 = 0; y0 < height; y0 += band_rows, ++band_number) {
+    const std::int32_t rows = std::min(band_rows, height - y0);
+    const std::span<std::uint32_t> buffer = (band_number & 1) != 0 && buffer_count == 2 ? buffers.second : buffers.first;
+    if (band_number >= buffer_count && sink.wait != nullptr) sink.wait(sink.user, bytesOf(buffer));
+    const std::int32_t window_y0 = std::max(0, y0 - margin);
+    const std::int32_t window_rows = std::min(height, y0 + rows + margin) - window_y0;
+    FrameView window(buffer.data(), width, window_rows);
+    window.clear();
+    bandFrameSetup(setup, window_y0, window_rows, &band);  // cannot fail: checked above
+    if (index.level == 0) {
+      renderLevel(config.variant, level, band, window);
+    } else {
+      subtree.height = window_rows;
+      subtree.camera.height = window_rows;
+      IndexedBandWalk(level, setup, index, config.variant, subtree, window, window_y0).run();
+    }
+    const std::int32_t first_row = y0 - window_y0;  // the band's own rows in the window
+    if (config.fill) fillHoleRows(window, first_row, first_row + rows, bridge_limit, buffers.fill_history);
+    const std::size_t pixels = static_cast<std::size_t>(rows) * static_cast<std::size_t>(width);
+    const std::span<std::uint8_t> rgb565 = bytesOf(buffer).first(pixels * 2);
+    packedToRgb565(buffer.data() + static_cast<std::ptrdiff_t>(first_row) * width, pixels, palette, rgb565.data());
+    sink.flush(sink.user, y0, rows, rgb565);
+  }
+  return BandError::kNone;
+}
+
+}  // namespace octopoint
