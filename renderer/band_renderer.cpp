@@ -1,6 +1,7 @@
 #include "renderer/band_renderer.h"
 
 #include <algorithm>
+#include <array>
 #include <bit>
 #include <cstdlib>
 #include <limits>
@@ -147,18 +148,19 @@ BandError renderBands(const LevelView& level, const FrameSetup& setup, const Ban
   }
   const std::int32_t margin = bandMarginRows(config);
   const std::int32_t band_rows = std::min(config.band_rows, height);
-  FrameSetup band;
+  // One set-up on the stack (1.6 KB: it counts on a microcontroller): without an index, each band's
+  // shifted frame set-up; with one, the index-level subtrees' set-up (the frame's vectors from the
+  // index level down), whose root each subtree sets.
+  FrameSetup work;
   // No band is shifted more than by the frame's last row: if that set-up fits, every band's does.
-  if (bandFrameSetup(setup, height - 1, 1, &band) != CameraError::kNone) return BandError::kOverflow;
-
-  // The index-level subtrees' set-up: the frame's vectors from the index level down.
-  FrameSetup subtree = setup;
+  if (bandFrameSetup(setup, height - 1, 1, &work) != CameraError::kNone) return BandError::kOverflow;
   if (index.level > 0) {
-    subtree.depth = setup.depth - index.level;
+    work = setup;
+    work.depth = setup.depth - index.level;
     for (int l = 0; l < format::kMaxDepth; ++l) {
       const int from = l + index.level;
-      subtree.child_offset[static_cast<std::size_t>(l)] =
-          from < format::kMaxDepth ? setup.child_offset[static_cast<std::size_t>(from)] : decltype(subtree.child_offset)::value_type{};
+      work.child_offset[static_cast<std::size_t>(l)] =
+          from < format::kMaxDepth ? setup.child_offset[static_cast<std::size_t>(from)] : std::array<Vec3, 8>{};
     }
   }
   const std::uint32_t bridge_limit = config.fill ? bridgeDepthLimit(setup) : 0;
@@ -169,17 +171,17 @@ BandError renderBands(const LevelView& level, const FrameSetup& setup, const Ban
     const std::int32_t rows = std::min(band_rows, height - y0);
     const std::span<std::uint32_t> buffer = (band_number & 1) != 0 && buffer_count == 2 ? buffers.second : buffers.first;
     if (band_number >= buffer_count && sink.wait != nullptr) sink.wait(sink.user, bytesOf(buffer));
-    const std::int32_t window_y0 = std::max(0, y0 - margin);
+    const std::int32_t window_y0 = std::max<std::int32_t>(0, y0 - margin);
     const std::int32_t window_rows = std::min(height, y0 + rows + margin) - window_y0;
     FrameView window(buffer.data(), width, window_rows);
     window.clear();
-    bandFrameSetup(setup, window_y0, window_rows, &band);  // cannot fail: checked above
     if (index.level == 0) {
-      renderLevel(config.variant, level, band, window);
+      bandFrameSetup(setup, window_y0, window_rows, &work);  // cannot fail: checked above
+      renderLevel(config.variant, level, work, window);
     } else {
-      subtree.height = window_rows;
-      subtree.camera.height = window_rows;
-      IndexedBandWalk(level, setup, index, config.variant, subtree, window, window_y0).run();
+      work.height = window_rows;
+      work.camera.height = window_rows;
+      IndexedBandWalk(level, setup, index, config.variant, work, window, window_y0).run();
     }
     const std::int32_t first_row = y0 - window_y0;  // the band's own rows in the window
     if (config.fill) fillHoleRows(window, first_row, first_row + rows, bridge_limit, buffers.fill_history);

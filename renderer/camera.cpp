@@ -82,9 +82,9 @@ CameraError buildFrameSetup(const Camera& camera, int depth, int fraction_bits, 
 
   constexpr std::int64_t kLimit = std::numeric_limits<std::int32_t>::max();
   const std::int64_t root[3] = {
-      (static_cast<std::int64_t>(camera.width) << fraction_bits) / 2 +
+      (static_cast<std::int64_t>(camera.width) << fraction_bits >> 1) +  // half the width, Q.F
           (static_cast<std::int64_t>(camera.pan_x_px) << fraction_bits),
-      (static_cast<std::int64_t>(camera.height) << fraction_bits) / 2 +
+      (static_cast<std::int64_t>(camera.height) << fraction_bits >> 1) +
           (static_cast<std::int64_t>(camera.pan_y_px) << fraction_bits),
       0};
   std::int64_t worst[3] = {std::llabs(root[0]), std::llabs(root[1]), 0};

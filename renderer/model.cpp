@@ -30,7 +30,9 @@ bool plausibleLevelSize(int depth, std::uint64_t nodes, std::uint64_t leaves) {
   if (nodes < levels || nodes > levels * leaves || leaves > 8 * nodes) return false;
   if (depth <= 10) {
     const std::uint64_t full_leaves = std::uint64_t{1} << (3 * depth);
-    if (leaves > full_leaves || nodes > (full_leaves - 1) / 7) return false;
+    // nodes > (8^depth - 1) / 7, without a division (a Cortex-M0+ has no divide instruction);
+    // nodes < 2^32 (a u32 field), so 7 * nodes cannot wrap.
+    if (leaves > full_leaves || 7 * nodes > full_leaves - 1) return false;
   }
   return true;
 }

@@ -56,9 +56,15 @@ bool renderLevel(Variant variant, const LevelView& level, const FrameSetup& setu
     case Variant::kFixedClipped: return renderFixedClipped(level, setup, frame, abort);
     case Variant::kFixedFast: return renderFixedFast(level, setup, frame, abort);
     case Variant::kFixedSimd: return renderFixedSimd(level, setup, frame, abort);
+#ifndef OCTOPOINT_INTEGER_ONLY
     case Variant::kFloatBaseline: return renderFloatBaseline(level, setup, frame, abort);
     case Variant::kFloatLeafCall: return renderFloatLeafCall(level, setup, frame, abort);
     case Variant::kFloatUnrolled: return renderFloatUnrolled(level, setup, frame, abort);
+#else  // bare metal (docs/device.md): the float references are not built
+    case Variant::kFloatBaseline:
+    case Variant::kFloatLeafCall:
+    case Variant::kFloatUnrolled: return false;
+#endif
   }
   return false;
 }

@@ -1,0 +1,18 @@
+// The control image for mcu/check_no_helpers.cmake: it divides and uses float on purpose, so the
+// linked image must contain the helpers the check looks for; a check that cannot see them fails.
+#include <cstdint>
+
+volatile std::int32_t numerator = 7, denominator = 3;
+volatile float value = 1.5f;
+
+extern "C" void Reset_Handler() {
+  numerator = numerator / denominator;
+  value = value * static_cast<float>(numerator);
+  for (;;) {
+  }
+}
+
+extern "C" std::uint32_t __stack_top[];
+using Handler = void (*)();
+__attribute__((section(".vectors"), used)) const Handler kVectors[2] = {reinterpret_cast<Handler>(__stack_top),
+                                                                        Reset_Handler};
