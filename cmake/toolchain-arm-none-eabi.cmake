@@ -13,9 +13,17 @@ set(CMAKE_C_COMPILER arm-none-eabi-gcc)
 set(CMAKE_CXX_COMPILER arm-none-eabi-g++)
 set(CMAKE_TRY_COMPILE_TARGET_TYPE STATIC_LIBRARY)  # no executable links without our startup code
 
-set(octopoint_mcu_flags "${octopoint_mcu_cpu_flags} -ffunction-sections -fdata-sections -fno-exceptions -fno-rtti -fno-threadsafe-statics -fno-unwind-tables -fno-asynchronous-unwind-tables")
+# -fno-tree-loop-distribute-patterns: newlib nano's memset and memcpy are byte loops (it prefers
+# size), so word loops (a band's clear: 7,680 words for 24 rows) stay word loops instead of
+# becoming calls to them.
+set(octopoint_mcu_flags "${octopoint_mcu_cpu_flags} -fno-tree-loop-distribute-patterns -ffunction-sections -fdata-sections -fno-exceptions -fno-rtti -fno-threadsafe-statics -fno-unwind-tables -fno-asynchronous-unwind-tables")
 set(CMAKE_C_FLAGS_INIT "${octopoint_mcu_cpu_flags} -ffunction-sections -fdata-sections")
 set(CMAKE_CXX_FLAGS_INIT "${octopoint_mcu_flags}")
+# -O2, not -O3: on Thumb-1, -O3's inlining and unrolling triple the decoders' code and spill the
+# cursors a decoder returns through memcpy calls; -O2 runs the default model's frame in fewer
+# instructions (docs/device.md).
+set(CMAKE_C_FLAGS_RELEASE "-O2 -DNDEBUG" CACHE STRING "Flags of Release builds")
+set(CMAKE_CXX_FLAGS_RELEASE "-O2 -DNDEBUG" CACHE STRING "Flags of Release builds")
 set(CMAKE_EXE_LINKER_FLAGS_INIT "${octopoint_mcu_cpu_flags} --specs=nano.specs -nostartfiles -Wl,--gc-sections")
 
 set(OCTOPOINT_MCU_QEMU_MACHINE ${octopoint_mcu_qemu_machine} CACHE STRING "qemu-system-arm machine that runs the images")

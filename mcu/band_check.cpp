@@ -20,6 +20,7 @@ BandSink GoldenSink::sink() {
 }
 
 void GoldenSink::flush(void* user, std::int32_t y0, std::int32_t rows, std::span<const std::uint8_t> rgb565) {
+  const std::uint64_t start = instructionsNow();
   auto& self = *static_cast<GoldenSink*>(user);
   if (y0 != self.next_y0_) ++self.mismatches_;
   self.next_y0_ = y0 + rows;
@@ -32,6 +33,7 @@ void GoldenSink::flush(void* user, std::int32_t y0, std::int32_t rows, std::span
     if (sum != *self.golden_++) ++self.mismatches_;
     at += slice;
   }
+  self.flush_instructions_ += instructionsNow() - start;
 }
 
 const ModelView& defaultModel() {

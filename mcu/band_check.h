@@ -18,6 +18,8 @@ class GoldenSink {
   GoldenSink(int case_number, std::int32_t width);
   BandSink sink();
   bool passed() const { return mismatches_ == 0 && next_y0_ == height_; }
+  // Instructions spent in flush (checksumming): the display driver's time, not the renderer's.
+  std::uint64_t flushInstructions() const { return flush_instructions_; }
 
  private:
   static void flush(void* user, std::int32_t y0, std::int32_t rows, std::span<const std::uint8_t> rgb565);
@@ -28,6 +30,7 @@ class GoldenSink {
   std::int32_t height_;
   std::int32_t next_y0_ = 0;
   int mismatches_ = 0;
+  std::uint64_t flush_instructions_ = 0;
 };
 
 // The default model, validated at boot (set-up, not per frame).

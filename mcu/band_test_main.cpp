@@ -62,7 +62,7 @@ bool drawCase(int number, Variant variant, bool indexed, std::int32_t rows, bool
   const std::uint64_t start = instructionsNow();
   const BandError error = renderBands(level, setup, config, indexed ? indexes[c.depth - 7] : no_index, palette,
                                       buffers, golden.sink());
-  *instructions = instructionsNow() - start;
+  *instructions = instructionsNow() - start - golden.flushInstructions();
   if (error != BandError::kNone) {
     print("renderBands: ");
     print(describe(error));

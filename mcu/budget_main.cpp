@@ -17,7 +17,7 @@ namespace {
 
 constexpr std::int32_t kWidth = 320;
 constexpr std::int32_t kRows = OCTOPOINT_BAND_ROWS;
-constexpr std::size_t kIndexCapacity = 128;  // the default model has 116 nodes at tree level 3
+constexpr std::size_t kIndexCapacity = 120;  // the default model has 116 nodes at tree level 3
 
 // The renderer's state, all of it here (and the stack): what the RAM budget covers.
 alignas(8) std::uint32_t band_buffer[static_cast<std::size_t>(kRows) * kWidth];
@@ -42,6 +42,8 @@ int octopoint::mcu::programMain() {
   const LevelView& level = *model.levelOfDepth(8);
   palette = makeRgb565Palette(model, kBackground);
   band_index = buildBandIndex(level, deepestIndexLevel(level, kIndexCapacity), index_storage);
+  const std::uint32_t setup_stack = stackHighWater();
+  paintStack();  // from here on, the high-water mark is the frames' alone
   int failures = 0;
   for (const int camera : {0, 1}) {
     const int number = caseNumber(camera, kRows);
@@ -52,7 +54,7 @@ int octopoint::mcu::programMain() {
     const BandConfig config{Variant::kFixedFast, kRows, false, kBackground};
     const std::uint64_t start = instructionsNow();
     const BandError error = renderBands(level, setup, config, band_index, palette, {band_buffer, {}, {}}, golden.sink());
-    const std::uint64_t spent = instructionsNow() - start;
+    const std::uint64_t spent = instructionsNow() - start - golden.flushInstructions();
     const bool passed = error == BandError::kNone && golden.passed();
     failures += passed ? 0 : 1;
     print(passed ? "pass" : "FAIL");
@@ -68,6 +70,7 @@ int octopoint::mcu::programMain() {
   report("ram palette bytes", sizeof palette);
   report("ram frame setup bytes", sizeof setup);
   report("ram model view bytes", sizeof(ModelView));
+  report("stack high-water bytes (set-up: model validation, index)", setup_stack);
   report("stack high-water bytes", stackHighWater());
   report("stack region bytes", stackBytes());
   report("failures", static_cast<std::uint64_t>(failures));

@@ -1,8 +1,8 @@
 #include "renderer/band_index.h"
 
 #include <array>
-#include <bit>
 
+#include "renderer/bit_scan.h"
 #include "renderer/decode_algorithms.h"
 
 namespace octopoint {
@@ -13,7 +13,7 @@ const std::uint8_t* countSubtree(const std::uint8_t* node, int level, int depth,
   ++counts[level];
   const unsigned mask = *node++;
   if (level + 1 == depth) return node;
-  for (int child = std::popcount(mask); child > 0; --child) node = countSubtree(node, level + 1, depth, counts);
+  for (int child = childCount(mask); child > 0; --child) node = countSubtree(node, level + 1, depth, counts);
   return node;
 }
 
@@ -33,7 +33,7 @@ struct IndexWalk {
       return;
     }
     const unsigned mask = *node++;
-    for (int child = std::popcount(mask); child > 0; --child) visit(node, leaf, level + 1);
+    for (int child = childCount(mask); child > 0; --child) visit(node, leaf, level + 1);
   }
 };
 

@@ -2,10 +2,10 @@
 
 #include <algorithm>
 #include <array>
-#include <bit>
 #include <cstdlib>
 #include <limits>
 
+#include "renderer/bit_scan.h"
 #include "renderer/decode_algorithms.h"
 #include "renderer/framebuffer.h"
 #include "renderer/hole_fill.h"
@@ -69,7 +69,7 @@ class IndexedBandWalk {
     }
     const auto& offsets = frame_.child_offset[static_cast<std::size_t>(l)];
     for (unsigned mask = *node++; mask != 0; mask &= mask - 1) {
-      visit(l + 1, centre + offsets[static_cast<std::size_t>(std::countr_zero(mask))], node, leaf);
+      visit(l + 1, centre + offsets[lowestChild(mask)], node, leaf);
     }
   }
 
@@ -157,10 +157,10 @@ BandError renderBands(const LevelView& level, const FrameSetup& setup, const Ban
   if (index.level > 0) {
     work = setup;
     work.depth = setup.depth - index.level;
-    for (int l = 0; l < format::kMaxDepth; ++l) {
+    for (int l = 0; l < kMaxRenderDepth; ++l) {
       const int from = l + index.level;
       work.child_offset[static_cast<std::size_t>(l)] =
-          from < format::kMaxDepth ? setup.child_offset[static_cast<std::size_t>(from)] : std::array<Vec3, 8>{};
+          from < kMaxRenderDepth ? setup.child_offset[static_cast<std::size_t>(from)] : std::array<Vec3, 8>{};
     }
   }
   const std::uint32_t bridge_limit = config.fill ? bridgeDepthLimit(setup) : 0;

@@ -51,7 +51,7 @@ CameraError checkCamera(const Camera& camera, int depth, int fraction_bits) {
   if (fraction_bits < kMinFractionBits || fraction_bits > kMaxFractionBits) {
     return CameraError::kBadFractionBits;
   }
-  if (depth < 1 || depth > format::kMaxDepth) return CameraError::kBadDepth;
+  if (depth < 1 || depth > kMaxRenderDepth) return CameraError::kBadDepth;
   return CameraError::kNone;
 }
 

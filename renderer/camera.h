@@ -29,6 +29,16 @@ inline constexpr int kMinFractionBits = 1;
 inline constexpr int kMaxFractionBits = 24;      // leaves 7 integer bits: 64 pixels of room
 inline constexpr int kMaxViewportSide = 8192;
 
+// The deepest level a frame set-up can draw: the format's limit, unless a build says less. Each
+// level costs a FrameSetup 96 bytes (eight vectors); a microcontroller build sets
+// OCTOPOINT_MAX_RENDER_DEPTH=10 (mcu/, docs/device.md), which saves 576 bytes of RAM per set-up
+// and refuses deeper levels with kBadDepth.
+#ifndef OCTOPOINT_MAX_RENDER_DEPTH
+#define OCTOPOINT_MAX_RENDER_DEPTH 16
+#endif
+inline constexpr int kMaxRenderDepth = OCTOPOINT_MAX_RENDER_DEPTH;
+static_assert(kMaxRenderDepth >= 1 && kMaxRenderDepth <= format::kMaxDepth);
+
 struct Camera {
   Angle yaw;
   Angle pitch;
@@ -45,7 +55,7 @@ enum class CameraError : std::uint8_t {
   kBadViewport,      // width or height outside 1..kMaxViewportSide
   kBadZoom,          // zoom <= 0
   kBadFractionBits,  // outside kMinFractionBits..kMaxFractionBits
-  kBadDepth,         // outside 1..format::kMaxDepth
+  kBadDepth,         // outside 1..kMaxRenderDepth (format::kMaxDepth unless a build says less)
   kOverflow,         // some leaf coordinate would not fit 32 bits: zoom or pan too large
 };
 
@@ -67,7 +77,7 @@ struct FrameSetup {
   std::int32_t height = 0;
   Vec3 root{};  // screen position of the cube centre
   // child_offset[l][k]: from a node at tree level l to the centre of its child k.
-  std::array<std::array<Vec3, 8>, format::kMaxDepth> child_offset{};
+  std::array<std::array<Vec3, 8>, kMaxRenderDepth> child_offset{};
   // The z-buffer keeps 24 bits of depth per pixel (Framebuffer): a leaf's depth key is
   // (z + depth_bias) >> depth_shift, unsigned. Every leaf has |z| <= depth_bias, so the sum lies in
   // [0, 2 * depth_bias]; depth_shift is the least that brings that range under 2^24 - 1. One key

@@ -14,13 +14,14 @@
 #include <cstdint>
 #include <utility>
 
+#include "renderer/bit_scan.h"
 #include "renderer/abort_flag.h"
 #include "renderer/camera.h"
 
 namespace octopoint {
 
 template <typename T>
-using OffsetTable = std::array<std::array<Point3<T>, 8>, format::kMaxDepth>;
+using OffsetTable = std::array<std::array<Point3<T>, 8>, kMaxRenderDepth>;
 
 template <typename T>
 constexpr Point3<T> operator+(const Point3<T>& a, const Point3<T>& b) {
@@ -103,23 +104,37 @@ void visitSetBits(DecodeState<T, Plot>& s, int level, Point3<T> centre) {
   unsigned mask = *s.node++;
   const auto& offsets = s.offsets[static_cast<std::size_t>(level)];
   if (level + 1 == s.depth) {
-    for (; mask != 0; mask &= mask - 1) s.plot(centre + offsets[std::countr_zero(mask)], *s.leaf++);
+    for (; mask != 0; mask &= mask - 1) s.plot(centre + offsets[lowestChild(mask)], *s.leaf++);
     return;
   }
   for (; mask != 0; mask &= mask - 1) {
-    visitSetBits(s, level + 1, centre + offsets[std::countr_zero(mask)]);
+    visitSetBits(s, level + 1, centre + offsets[lowestChild(mask)]);
   }
 }
 
 // Advances the stream past a subtree without computing a single position: what a clipped-away
-// subtree still costs in a depth-first stream without an index.
+// subtree still costs in a depth-first stream without an index. A loop, not a recursion: its cost
+// is a few instructions per node, and its stack one byte per level (on a microcontroller, stack is
+// RAM). pending[l] counts the nodes of relative level l still to read under the current parent.
 inline void skipSubtree(const std::uint8_t*& node, const std::uint8_t*& leaf, int level, int depth) {
-  const unsigned mask = *node++;
-  if (level + 1 == depth) {
-    leaf += std::popcount(mask);
-    return;
+  const int node_levels = depth - level;  // the subtree's levels of mask bytes
+  std::array<std::uint8_t, kMaxRenderDepth> pending;
+  int l = 0;
+  pending[0] = 1;
+  for (;;) {
+    const unsigned mask = *node++;
+    --pending[static_cast<std::size_t>(l)];
+    if (l + 1 < node_levels) {  // an inner node: its first child is next
+      pending[static_cast<std::size_t>(++l)] = static_cast<std::uint8_t>(childCount(mask));
+      continue;
+    }
+    leaf += childCount(mask);  // a leaf parent, then its remaining siblings
+    for (; pending[static_cast<std::size_t>(l)] != 0; --pending[static_cast<std::size_t>(l)]) leaf += childCount(*node++);
+    do {
+      if (l == 0) return;
+      --l;
+    } while (pending[static_cast<std::size_t>(l)] == 0);
   }
-  for (int child = std::popcount(mask); child > 0; --child) skipSubtree(node, leaf, level + 1, depth);
 }
 
 }  // namespace octopoint

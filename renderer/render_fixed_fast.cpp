@@ -19,6 +19,7 @@
 #include <bit>
 #include <cassert>
 
+#include "renderer/bit_scan.h"
 #include "renderer/decode_algorithms.h"
 #include "renderer/framebuffer_plot.h"
 #include "renderer/render.h"
@@ -51,7 +52,7 @@ Cursor plotChildren(const FastFrame& f, int level, Vec3 c, Cursor at) {
     const auto& offsets = (*f.offsets)[static_cast<std::size_t>(level)];
     const std::uint8_t* leaf = at.leaf;
     for (unsigned mask = *at.node; mask != 0; mask &= mask - 1, ++leaf) {
-      f.splat.plot<kChecked>(c + offsets[static_cast<std::size_t>(std::countr_zero(mask))], *leaf);
+      f.splat.plot<kChecked>(c + offsets[lowestChild(mask)], *leaf);
     }
     return {at.node + 1, leaf};
   }
@@ -64,7 +65,7 @@ Cursor plotChildren(const FastFrame& f, int level, Vec3 c, Cursor at) {
   const auto& offsets = (*f.offsets)[static_cast<std::size_t>(level)];
   const std::uint8_t* leaf = at.leaf;
   for (unsigned mask = *at.node; mask != 0; mask &= mask - 1, ++leaf) {
-    const Vec3& d = offsets[static_cast<std::size_t>(std::countr_zero(mask))];
+    const Vec3& d = offsets[lowestChild(mask)];
     const std::int32_t x = (c.x + d.x) >> shift;  // Q(32-F).F -> pixel (floor)
     const std::int32_t y = (c.y + d.y) >> shift;
     if constexpr (kChecked) {
@@ -110,13 +111,13 @@ Cursor visit(const FastFrame& f, int level, Vec3 c, Cursor at) {
   unsigned mask = *at.node++;
   if (!kChecked && level + 2 == f.levels) {  // leaf parents below: plot them here, no call each
     for (; mask != 0; mask &= mask - 1) {
-      at = plotChildren<false, kSplat>(f, level + 1, c + offsets[static_cast<std::size_t>(std::countr_zero(mask))], at);
+      at = plotChildren<false, kSplat>(f, level + 1, c + offsets[lowestChild(mask)], at);
       if (kSplat && f.abort != nullptr && (f.aborted = f.abort->load(std::memory_order_relaxed))) return at;
     }
     return at;
   }
   for (; mask != 0; mask &= mask - 1) {
-    at = visit<kChecked, kSplat>(f, level + 1, c + offsets[static_cast<std::size_t>(std::countr_zero(mask))], at);
+    at = visit<kChecked, kSplat>(f, level + 1, c + offsets[lowestChild(mask)], at);
     if (kSplat && f.aborted) return at;
   }
   return at;

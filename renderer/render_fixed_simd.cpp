@@ -91,8 +91,8 @@ struct SimdFrame {
   // child_lanes[a][l]: the offsets of a level-l node's eight children, one per lane;
   // grandchild_lanes[a][l][k]: offset[l][k] plus child_lanes[a][l + 1], so that the eight children
   // of a level-l node's child k are one add from the level-l centre.
-  __m256i child_lanes[3][format::kMaxDepth];
-  __m256i grandchild_lanes[3][format::kMaxDepth][8];
+  __m256i child_lanes[3][kMaxRenderDepth];
+  __m256i grandchild_lanes[3][kMaxRenderDepth][8];
   int batched = 0;
   alignas(32) std::uint32_t batch_index[kBatch + 8];
   alignas(32) std::uint32_t batch_word[kBatch + 8];

@@ -1,6 +1,7 @@
 // The integer decoders: each draws bit-identical frames (tests/render_variants_test.cpp).
 #include <cassert>
 
+#include "renderer/bit_scan.h"
 #include "renderer/decode_algorithms.h"
 #include "renderer/framebuffer_plot.h"
 #include "renderer/render.h"
@@ -63,11 +64,11 @@ class ClippedWalk {
     const auto& offsets = checked_.offsets[static_cast<std::size_t>(level)];
     if (level + 1 == checked_.depth) {
       for (; mask != 0; mask &= mask - 1) {
-        checked_.plot(centre + offsets[std::countr_zero(mask)], *checked_.leaf++);
+        checked_.plot(centre + offsets[lowestChild(mask)], *checked_.leaf++);
       }
       return;
     }
-    for (; mask != 0; mask &= mask - 1) visit(level + 1, centre + offsets[std::countr_zero(mask)]);
+    for (; mask != 0; mask &= mask - 1) visit(level + 1, centre + offsets[lowestChild(mask)]);
   }
 
   DecodeState<std::int32_t, CheckedPlot> checked_;

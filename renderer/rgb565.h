@@ -25,8 +25,9 @@ struct Rgb565Palette {
 Rgb565Palette makeRgb565Palette(const ModelView& model, Rgb background);
 
 // Converts `count` packed pixel words to RGB565 halfwords in the CPU's byte order, writing halfword
-// i to bytes 2i and 2i + 1 of `out`. `out` may be the words' own memory (then the band becomes its
-// RGB565 image in its first half): halfword i lands in bytes a word that was already read held.
+// i to bytes 2i and 2i + 1 of `out` (2-byte aligned). `out` may be the words' own memory (then the
+// band becomes its RGB565 image in its first half): halfword i lands in bytes a word that was
+// already read held.
 void packedToRgb565(const std::uint32_t* words, std::size_t count, const Rgb565Palette& palette,
                     std::uint8_t* out);
 

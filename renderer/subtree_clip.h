@@ -54,7 +54,7 @@ class SubtreeClip {
  private:
   std::int64_t x_end_, y_end_;
   std::int64_t low_x_, low_y_, high_x_, high_y_;
-  std::array<std::int64_t, format::kMaxDepth> reach_x_{}, reach_y_{};
+  std::array<std::int64_t, kMaxRenderDepth> reach_x_{}, reach_y_{};
 };
 
 }  // namespace octopoint
