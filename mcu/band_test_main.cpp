@@ -1,10 +1,11 @@
 // The bare-metal band test (docs/device.md), run under qemu-system-arm by scripts/test-mcu:
 //  1. every case of mcu/band_cases.h (three cameras, depths 7 and 8, with and without hole
-//     filling, bands of 1, 7, 8 and 24 rows) drawn by fixed_fast with the subtree index into two
-//     alternating band buffers, every band's checksum compared with the host's golden;
-//  2. the cost table: every fixed variant, bands of 8 and 24 rows, with and without the index, and
-//     two bands of 120 rows (almost one walk), at 320x240 and 240x320, depth 8: instructions per
-//     frame from qemu's instruction clock, each frame checked against the goldens too;
+//     filling, bands of 1, 7, 8 and 24 rows) drawn by fixed_fast with the level-3 subtree index
+//     into two alternating band buffers, every band's checksum compared with the host's golden;
+//  2. the cost table: every fixed variant, bands of 8, 24 and 120 rows (two or three bands:
+//     almost one walk), without an index and with the level-3 and level-4 ones, at 320x240 and
+//     240x320, depth 8: instructions per frame from qemu's instruction clock (the sink's
+//     checksumming excluded), each frame checked against the goldens too;
 //  3. the stack's high-water mark over all of it.
 // Prints one line per measurement and exits with status 0 only if every band matched.
 #include <array>
@@ -28,9 +29,14 @@ constexpr std::size_t kArenaWords = static_cast<std::size_t>(kTallRows) * kMaxWi
 static_assert(2 * kBufferWords <= kArenaWords);
 alignas(8) std::uint32_t arena[kArenaWords];
 std::uint32_t history[kHistoryWords];
+// The index the device uses (level 3: 116 nodes of the default model, 464 bytes) and a deeper one
+// (level 4: 398 nodes, 1,592 bytes) for the cost table; by depth 7, 8.
 constexpr int kIndexLevel = 3;
-std::array<SubtreeEnd, 128> index_storage[2];  // depths 7 and 8
+constexpr int kDeeperIndexLevel = 4;
+std::array<SubtreeSize, 120> index_storage[2];
+std::array<SubtreeSize, 400> deeper_index_storage[2];
 BandIndex indexes[2];
+BandIndex deeper_indexes[2];
 Rgb565Palette palette;
 
 struct VariantName {
@@ -45,7 +51,7 @@ constexpr VariantName kVariants[] = {
 
 // Draws case `number` (band rows overridden by `rows` when > 0); returns whether every band
 // matched its golden, and the instructions spent in renderBands.
-bool drawCase(int number, Variant variant, bool indexed, std::int32_t rows, bool two_buffers,
+bool drawCase(int number, Variant variant, int index_level, std::int32_t rows, bool two_buffers,
               std::uint64_t* instructions) {
   const BandCase& c = kCases[static_cast<std::size_t>(number)];
   const Camera& camera = kCameras[c.camera];
@@ -60,8 +66,10 @@ bool drawCase(int number, Variant variant, bool indexed, std::int32_t rows, bool
   GoldenSink golden(number, camera.width);
   const BandIndex no_index;
   const std::uint64_t start = instructionsNow();
-  const BandError error = renderBands(level, setup, config, indexed ? indexes[c.depth - 7] : no_index, palette,
-                                      buffers, golden.sink());
+  const BandIndex& index = index_level == kIndexLevel        ? indexes[c.depth - 7]
+                           : index_level == kDeeperIndexLevel ? deeper_indexes[c.depth - 7]
+                                                              : no_index;
+  const BandError error = renderBands(level, setup, config, index, palette, buffers, golden.sink());
   *instructions = instructionsNow() - start - golden.flushInstructions();
   if (error != BandError::kNone) {
     print("renderBands: ");
@@ -90,8 +98,12 @@ int octopoint::mcu::programMain() {
   }
   const ModelView& model = defaultModel();
   palette = makeRgb565Palette(model, kBackground);
-  for (int d = 0; d < 2; ++d) indexes[d] = buildBandIndex(*model.levelOfDepth(7 + d), kIndexLevel, index_storage[d]);
-  if (indexes[0].level != kIndexLevel || indexes[1].level != kIndexLevel) {
+  for (int d = 0; d < 2; ++d) {
+    indexes[d] = buildBandIndex(*model.levelOfDepth(7 + d), kIndexLevel, index_storage[d]);
+    deeper_indexes[d] = buildBandIndex(*model.levelOfDepth(7 + d), kDeeperIndexLevel, deeper_index_storage[d]);
+  }
+  if (indexes[0].level != kIndexLevel || indexes[1].level != kIndexLevel ||
+      deeper_indexes[0].level != kDeeperIndexLevel || deeper_indexes[1].level != kDeeperIndexLevel) {
     print("the subtree index does not fit its storage\n");
     return 1;
   }
@@ -100,7 +112,7 @@ int octopoint::mcu::programMain() {
 
   for (int i = 0; i < kCaseCount; ++i) {
     const BandCase& c = kCases[static_cast<std::size_t>(i)];
-    const bool passed = drawCase(i, Variant::kFixedFast, true, 0, true, &instructions);
+    const bool passed = drawCase(i, Variant::kFixedFast, kIndexLevel, 0, true, &instructions);
     failures += passed ? 0 : 1;
     print(passed ? "pass" : "FAIL");
     print(" case camera ");
@@ -119,10 +131,10 @@ int octopoint::mcu::programMain() {
     const std::uint64_t leaves = model.levelOfDepth(8)->leaves.size();
     for (const VariantName& v : kVariants) {
       for (const std::int32_t rows : {std::int32_t{8}, std::int32_t{24}, kTallRows}) {
-        for (const bool indexed : {false, true}) {
+        for (const int index_level : {0, kIndexLevel, kDeeperIndexLevel}) {
           // Checked against the 24-row goldens when drawn in 120-row bands (5 slices each).
           const int number = caseNumber(camera, 8, false, rows == kTallRows ? 24 : rows);
-          const bool passed = drawCase(number, v.variant, indexed, rows, false, &instructions);
+          const bool passed = drawCase(number, v.variant, index_level, rows, false, &instructions);
           failures += passed ? 0 : 1;
           print(passed ? "pass" : "FAIL");
           print(" cost ");
@@ -134,7 +146,7 @@ int octopoint::mcu::programMain() {
           print(" rows ");
           printUnsigned(static_cast<std::uint64_t>(rows));
           print(" index ");
-          printUnsigned(indexed ? kIndexLevel : 0);
+          printUnsigned(static_cast<std::uint64_t>(index_level));
           print(" instructions ");
           printUnsigned(instructions);
           print(" leaves ");

@@ -17,11 +17,11 @@ namespace {
 
 constexpr std::int32_t kWidth = 320;
 constexpr std::int32_t kRows = OCTOPOINT_BAND_ROWS;
-constexpr std::size_t kIndexCapacity = 120;  // the default model has 116 nodes at tree level 3
+constexpr std::size_t kIndexCapacity = 120;  // the default model has 398 nodes at tree level 4
 
 // The renderer's state, all of it here (and the stack): what the RAM budget covers.
 alignas(8) std::uint32_t band_buffer[static_cast<std::size_t>(kRows) * kWidth];
-std::array<SubtreeEnd, kIndexCapacity> index_storage;
+std::array<SubtreeSize, kIndexCapacity> index_storage;
 BandIndex band_index;
 Rgb565Palette palette;
 FrameSetup setup;
@@ -65,7 +65,7 @@ int octopoint::mcu::programMain() {
   report("band rows", kRows);
   report("index level", static_cast<std::uint64_t>(band_index.level));
   report("ram band buffer bytes", sizeof band_buffer);
-  report("ram index bytes", band_index.ends.size() * sizeof(SubtreeEnd));
+  report("ram index bytes", band_index.sizes.size() * sizeof(SubtreeSize));
   report("ram index storage bytes", sizeof index_storage);
   report("ram palette bytes", sizeof palette);
   report("ram frame setup bytes", sizeof setup);

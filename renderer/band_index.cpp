@@ -22,14 +22,16 @@ struct IndexWalk {
   const std::uint8_t* leaves;
   int index_level;
   int depth;
-  std::span<SubtreeEnd> storage;
+  std::span<SubtreeSize> storage;
   std::size_t count = 0;
 
-  // Walks the levels above the index level; records where each index-level subtree ends.
+  // Walks the levels above the index level; records each index-level subtree's size.
   void visit(const std::uint8_t*& node, const std::uint8_t*& leaf, int level) {
     if (level == index_level) {
+      const std::uint8_t* const node_begin = node;
+      const std::uint8_t* const leaf_begin = leaf;
       skipSubtree(node, leaf, level, depth);
-      storage[count++] = {static_cast<std::uint32_t>(node - nodes), static_cast<std::uint32_t>(leaf - leaves)};
+      storage[count++] = {static_cast<std::uint16_t>(node - node_begin), static_cast<std::uint16_t>(leaf - leaf_begin)};
       return;
     }
     const unsigned mask = *node++;
@@ -44,18 +46,22 @@ void countNodesPerLevel(const LevelView& level, std::span<std::uint32_t> counts)
   countSubtree(level.nodes.data(), 0, level.depth, counts.data());
 }
 
+bool indexLevelAllowed(int depth, int index_level) {
+  return index_level >= 1 && index_level + 2 <= depth && depth - index_level <= kMaxIndexedSubtreeLevels;
+}
+
 int deepestIndexLevel(const LevelView& level, std::size_t capacity) {
   std::array<std::uint32_t, format::kMaxDepth> counts{};
   countNodesPerLevel(level, counts);
   int best = 0;
-  for (int l = 1; l + 1 < level.depth; ++l) {
-    if (counts[static_cast<std::size_t>(l)] <= capacity) best = l;
+  for (int l = 1; l < level.depth; ++l) {
+    if (indexLevelAllowed(level.depth, l) && counts[static_cast<std::size_t>(l)] <= capacity) best = l;
   }
   return best;
 }
 
-BandIndex buildBandIndex(const LevelView& level, int index_level, std::span<SubtreeEnd> storage) {
-  if (index_level < 1 || index_level >= level.depth) return {};
+BandIndex buildBandIndex(const LevelView& level, int index_level, std::span<SubtreeSize> storage) {
+  if (!indexLevelAllowed(level.depth, index_level)) return {};
   std::array<std::uint32_t, format::kMaxDepth> counts{};
   countNodesPerLevel(level, counts);
   const std::uint32_t needed = counts[static_cast<std::size_t>(index_level)];

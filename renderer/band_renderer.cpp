@@ -9,6 +9,7 @@
 #include "renderer/decode_algorithms.h"
 #include "renderer/framebuffer.h"
 #include "renderer/hole_fill.h"
+#include "renderer/subtree_clip.h"
 
 namespace octopoint {
 namespace {
@@ -37,6 +38,8 @@ std::span<std::uint8_t> bytesOf(std::span<std::uint32_t> words) {
 // own; the others are jumped over with the index.
 class IndexedBandWalk {
  public:
+  // `subtree_setup` is the index-level subtrees' set-up with the window's height: its clip's reach
+  // at its level 0 is the reach of an index-level node, its screen the window.
   IndexedBandWalk(const LevelView& level, const FrameSetup& frame, const BandIndex& index,
                   Variant variant, FrameSetup& subtree_setup, FrameView& window, std::int32_t window_y0)
       : level_(level),
@@ -45,12 +48,8 @@ class IndexedBandWalk {
         variant_(variant),
         subtree_(subtree_setup),
         window_(window),
-        y_shift_(window_y0 << frame.fraction_bits),
-        x_end_(std::int64_t{frame.width} << frame.fraction_bits),
-        y_begin_(std::int64_t{window_y0} << frame.fraction_bits),
-        y_end_(std::int64_t{window_y0 + window.height()} << frame.fraction_bits) {
-    reachFrom(frame, index.level, &reach_x_, &reach_y_);
-  }
+        window_clip_(subtree_setup),
+        y_shift_(std::int64_t{window_y0} << frame.fraction_bits) {}
 
   void run() {
     const std::uint8_t* node = level_.nodes.data();
@@ -61,10 +60,12 @@ class IndexedBandWalk {
  private:
   void visit(int l, const Vec3& centre, const std::uint8_t*& node, std::uint32_t& leaf) {
     if (l == index_.level) {
-      const SubtreeEnd& end = index_.ends[entry_++];
-      if (meetsWindow(centre)) draw(centre, node, leaf, end);
-      node = level_.nodes.data() + end.node_end;
-      leaf = end.leaf_end;
+      const SubtreeSize& size = index_.sizes[entry_++];
+      // In window coordinates (bandFrameSetup proved that every shifted coordinate fits 32 bits).
+      const Vec3 shifted{centre.x, static_cast<std::int32_t>(centre.y - y_shift_), centre.z};
+      if (window_clip_.classify(0, shifted) != Clip::kOutside) draw(shifted, node, leaf, size);
+      node += size.nodes;
+      leaf += size.leaves;
       return;
     }
     const auto& offsets = frame_.child_offset[static_cast<std::size_t>(l)];
@@ -73,16 +74,11 @@ class IndexedBandWalk {
     }
   }
 
-  bool meetsWindow(const Vec3& c) const {
-    return c.x + reach_x_ >= 0 && c.x - reach_x_ < x_end_ && c.y + reach_y_ >= y_begin_ &&
-           c.y - reach_y_ < y_end_;
-  }
-
-  void draw(const Vec3& centre, const std::uint8_t* node, std::uint32_t leaf, const SubtreeEnd& end) {
+  void draw(const Vec3& root, const std::uint8_t* node, std::uint32_t leaf, const SubtreeSize& size) {
     const auto node_begin = static_cast<std::size_t>(node - level_.nodes.data());
-    const LevelView subtree{subtree_.depth, level_.nodes.subspan(node_begin, end.node_end - node_begin),
-                            level_.leaves.subspan(leaf, end.leaf_end - leaf)};
-    subtree_.root = Vec3{centre.x, centre.y - y_shift_, centre.z};
+    const LevelView subtree{subtree_.depth, level_.nodes.subspan(node_begin, size.nodes),
+                            level_.leaves.subspan(leaf, size.leaves)};
+    subtree_.root = root;
     renderLevel(variant_, subtree, subtree_, window_);
   }
 
@@ -92,9 +88,8 @@ class IndexedBandWalk {
   Variant variant_;
   FrameSetup& subtree_;
   FrameView& window_;
-  std::int32_t y_shift_;
-  std::int64_t x_end_, y_begin_, y_end_;
-  std::int64_t reach_x_ = 0, reach_y_ = 0;
+  SubtreeClip window_clip_;
+  std::int64_t y_shift_;
   std::size_t entry_ = 0;
 };
 

@@ -126,9 +126,10 @@ TEST_F(BandRenderer, EveryFixedVariantAtEveryBandHeightIsTheWholeFrame) {
                             camera(57, 41, -45, 15, 250, -13, 11)};
   {  // the coarser level: every variant at every height of three cameras is many frames
     const LevelView& level = model_->level(0);
-    std::array<SubtreeEnd, 600> storage{};
-    const BandIndex indexes[] = {BandIndex{}, buildBandIndex(level, 2, storage)};
-    ASSERT_EQ(indexes[1].level, 2);
+    std::array<SubtreeSize, 600> storage{};
+    const BandIndex indexes[] = {BandIndex{}, buildBandIndex(level, 2, storage), buildBandIndex(level, 4, storage)};
+    ASSERT_EQ(indexes[1].level, 2);  // depth 7: levels 2 to 5 can be indexed
+    ASSERT_EQ(indexes[2].level, 4);
     for (const Camera& cam : cameras) {
       const FrameSetup setup = setupFor(cam, level.depth);
       for (const VariantInfo& info : allVariants()) {
@@ -148,9 +149,9 @@ TEST_F(BandRenderer, EveryFixedVariantAtEveryBandHeightIsTheWholeFrame) {
 TEST_F(BandRenderer, FastestVariantsAtEveryBandHeightOfFullSizeFrames) {
   const Rgb565Palette palette = identityPalette();
   const LevelView& level = model_->finestLevel();
-  std::array<SubtreeEnd, 600> storage{};
-  const BandIndex index = buildBandIndex(level, 3, storage);
-  ASSERT_EQ(index.level, 3);
+  std::array<SubtreeSize, 600> storage{};
+  const BandIndex index = buildBandIndex(level, 4, storage);
+  ASSERT_EQ(index.level, 4);
   for (const Camera& cam : {camera(320, 240, 0, 0, 100, 0, 0), camera(240, 320, 30, -20, 150, 20, 0)}) {
     const FrameSetup setup = setupFor(cam, level.depth);
     for (const Variant variant : {Variant::kFixedFast, Variant::kFixedSimd}) {
@@ -239,27 +240,35 @@ TEST_F(BandRenderer, RefusesWhatItCannotDraw) {
   EXPECT_EQ(bandFrameSetup(tight, 10, 1, &band), CameraError::kOverflow);
 }
 
-TEST_F(BandRenderer, IndexRecordsWhereEverySubtreeOfItsLevelEnds) {
+TEST_F(BandRenderer, IndexRecordsTheSizeOfEverySubtreeOfItsLevel) {
   const LevelView& level = model_->finestLevel();
   std::array<std::uint32_t, format::kMaxDepth> counts{};
   countNodesPerLevel(level, counts);
   EXPECT_EQ(counts[0], 1u);
   EXPECT_EQ(std::accumulate(counts.begin(), counts.end(), std::uint32_t{0}), level.nodes.size());
-  std::vector<SubtreeEnd> storage(counts[3]);
-  const BandIndex index = buildBandIndex(level, 3, storage);
-  ASSERT_EQ(index.level, 3);
-  ASSERT_EQ(index.ends.size(), counts[3]);
-  EXPECT_EQ(index.ends.back().node_end, level.nodes.size());
-  EXPECT_EQ(index.ends.back().leaf_end, level.leaves.size());
-  for (std::size_t i = 1; i < index.ends.size(); ++i) {
-    EXPECT_LT(index.ends[i - 1].node_end, index.ends[i].node_end);
-    EXPECT_LT(index.ends[i - 1].leaf_end, index.ends[i].leaf_end);
+  std::vector<SubtreeSize> storage(counts[4]);
+  for (const int index_level : {3, 4}) {
+    const BandIndex index = buildBandIndex(level, index_level, storage);
+    ASSERT_EQ(index.level, index_level);
+    ASSERT_EQ(index.sizes.size(), counts[static_cast<std::size_t>(index_level)]);
+    // The subtrees' nodes are every node at their levels and below; their leaves are all leaves.
+    std::uint32_t nodes = 0, leaves = 0;
+    for (const SubtreeSize& size : index.sizes) {
+      EXPECT_GT(size.nodes, 0u);
+      EXPECT_GT(size.leaves, 0u);
+      nodes += size.nodes;
+      leaves += size.leaves;
+    }
+    EXPECT_EQ(nodes, std::accumulate(counts.begin() + index_level, counts.end(), std::uint32_t{0}));
+    EXPECT_EQ(leaves, level.leaves.size());
   }
-  // Too little room: no index (level 0), and deepestIndexLevel picks what fits.
+  // Too little room, or a level whose subtrees are too deep for 16-bit sizes: no index.
   EXPECT_EQ(buildBandIndex(level, 3, std::span(storage).first(counts[3] - 1)).level, 0);
-  EXPECT_EQ(deepestIndexLevel(level, counts[3]), 3);
-  EXPECT_EQ(deepestIndexLevel(level, counts[3] - 1), 2);
-  EXPECT_EQ(deepestIndexLevel(level, 0), 0);
+  EXPECT_EQ(buildBandIndex(level, 2, storage).level, 0);  // depth 8: 6 levels below level 2
+  EXPECT_EQ(buildBandIndex(level, 7, storage).level, 0);  // leaf parents: nothing to index
+  EXPECT_EQ(deepestIndexLevel(level, counts[4]), 4);
+  EXPECT_EQ(deepestIndexLevel(level, counts[4] - 1), 3);
+  EXPECT_EQ(deepestIndexLevel(level, counts[3] - 1), 0);
 }
 
 }  // namespace
