@@ -126,8 +126,8 @@ TEST_F(BandRenderer, EveryFixedVariantAtEveryBandHeightIsTheWholeFrame) {
                             camera(57, 41, -45, 15, 250, -13, 11)};
   {  // the coarser level: every variant at every height of three cameras is many frames
     const LevelView& level = model_->level(0);
-    std::array<SubtreeSize, 600> storage{};
-    const BandIndex indexes[] = {BandIndex{}, buildBandIndex(level, 2, storage), buildBandIndex(level, 4, storage)};
+    std::array<SubtreeSize, 600> storage_2{}, storage_4{};
+    const BandIndex indexes[] = {BandIndex{}, buildBandIndex(level, 2, storage_2), buildBandIndex(level, 4, storage_4)};
     ASSERT_EQ(indexes[1].level, 2);  // depth 7: levels 2 to 5 can be indexed
     ASSERT_EQ(indexes[2].level, 4);
     for (const Camera& cam : cameras) {
