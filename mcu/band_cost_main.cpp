@@ -2,8 +2,8 @@
 // fixed_fast), drawn either whole (one walk of the tree into a whole-frame buffer, then RGB565) or
 // in bands (renderBands, with or without the subtree index), inside drawFrame, so that callgrind
 // counts exactly one frame's instructions:
-//   valgrind --tool=callgrind --collect-atstart=no --toggle-collect='drawFrame*' \
-//     mcu_band_cost ROWS INDEX_LEVEL [portrait]     (ROWS 0: the whole frame in one walk)
+//   valgrind --tool=callgrind --collect-atstart=no --toggle-collect='*drawFrame*'
+//            mcu_band_cost ROWS INDEX_LEVEL [portrait]     (ROWS 0: the whole frame in one walk)
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
