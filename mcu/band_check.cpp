@@ -6,8 +6,8 @@
 
 namespace octopoint::mcu {
 
-GoldenSink::GoldenSink(int case_number, std::int32_t width)
-    : golden_(kGoldenBands + kGoldenFirst[case_number]),
+GoldenSink::GoldenSink(int case_number, Variant variant, std::int32_t width)
+    : golden_((drawsSplats(variant) ? kGoldenSplatBands : kGoldenPixelBands) + kGoldenFirst[case_number]),
       golden_rows_(kCases[static_cast<std::size_t>(case_number)].band_rows),
       width_(width),
       height_(kCameras[kCases[static_cast<std::size_t>(case_number)].camera].height) {}

@@ -11,11 +11,12 @@
 
 namespace octopoint::mcu {
 
-// Compares flushed bands with the golden bands of one case. A flushed band may span several
-// golden bands (a taller band than the case's): it is checked slice by slice.
+// Compares flushed bands with the golden bands of one case, as `variant` draws it (with or
+// without footprint splats). A flushed band may span several golden bands (a taller band than the
+// case's): it is checked slice by slice.
 class GoldenSink {
  public:
-  GoldenSink(int case_number, std::int32_t width);
+  GoldenSink(int case_number, Variant variant, std::int32_t width);
   BandSink sink();
   bool passed() const { return mismatches_ == 0 && next_y0_ == height_; }
   // Instructions spent in flush (checksumming): the display driver's time, not the renderer's.

@@ -63,7 +63,7 @@ bool drawCase(int number, Variant variant, int index_level, std::int32_t rows, b
   const std::size_t words = bandBufferWords(camera.width, config);
   BandBuffers buffers{std::span(arena, words), {}, std::span(history)};
   if (two_buffers) buffers.second = std::span(arena + words, words);
-  GoldenSink golden(number, camera.width);
+  GoldenSink golden(number, variant, camera.width);
   const BandIndex no_index;
   const std::uint64_t start = instructionsNow();
   const BandIndex& index = index_level == kIndexLevel        ? indexes[c.depth - 7]

@@ -19,6 +19,7 @@ extern "C" std::uint32_t __data_start[], __stack_bottom[];  // mcu/sections.ld: 
 namespace {
 
 constexpr std::int32_t kWidth = 320;
+constexpr Variant kVariant = Variant::kFixedClipped;
 constexpr std::int32_t kRows = OCTOPOINT_BAND_ROWS;
 constexpr std::size_t kIndexCapacity = 120;  // the default model has 398 nodes at tree level 4
 
@@ -53,8 +54,8 @@ int octopoint::mcu::programMain() {
     if (number < 0 || buildFrameSetup(kCameras[camera], 8, kDefaultFractionBits, &setup) != CameraError::kNone) {
       return 1;
     }
-    GoldenSink golden(number, kWidth);
-    const BandConfig config{Variant::kFixedClipped, kRows, false, kBackground};
+    GoldenSink golden(number, kVariant, kWidth);
+    const BandConfig config{kVariant, kRows, false, kBackground};
     const std::uint64_t start = instructionsNow();
     const BandError error = renderBands(level, setup, config, band_index, palette, {band_buffer, {}, {}}, golden.sink());
     const std::uint64_t spent = instructionsNow() - start - golden.flushInstructions();

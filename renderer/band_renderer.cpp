@@ -39,7 +39,8 @@ std::span<std::uint8_t> bytesOf(std::span<std::uint32_t> words) {
 class IndexedBandWalk {
  public:
   // `subtree_setup` is the index-level subtrees' set-up with the window's height: its clip's reach
-  // at its level 0 is the reach of an index-level node, its screen the window.
+  // at its level 0 is the reach of an index-level node (widened by the splat, when leaves are drawn
+  // as splats), its screen the window.
   IndexedBandWalk(const LevelView& level, const FrameSetup& frame, const BandIndex& index,
                   Variant variant, FrameSetup& subtree_setup, FrameView& window, std::int32_t window_y0)
       : level_(level),
@@ -48,7 +49,7 @@ class IndexedBandWalk {
         variant_(variant),
         subtree_(subtree_setup),
         window_(window),
-        window_clip_(subtree_setup),
+        window_clip_(subtree_setup, subtree_setup.splat),
         y_shift_(std::int64_t{window_y0} << frame.fraction_bits) {}
 
   void run() {
@@ -100,8 +101,11 @@ CameraError bandFrameSetup(const FrameSetup& frame, std::int32_t y0, std::int32_
   std::int64_t reach_x = 0, reach_y = 0;
   reachFrom(frame, 0, &reach_x, &reach_y);
   const std::int64_t root_y = std::int64_t{frame.root.y} - (std::int64_t{y0} << frame.fraction_bits);
-  // As buildFrameSetup: every leaf's coordinate and every partial sum stays strictly inside int32.
-  if (std::llabs(root_y) + reach_y >= std::numeric_limits<std::int32_t>::max()) return CameraError::kOverflow;
+  // As buildFrameSetup: every leaf's coordinate, every partial sum and every splat row stays
+  // strictly inside int32.
+  const std::int64_t splat_y = std::max(std::llabs(frame.splat.offset_y),
+                                        std::llabs(std::int64_t{frame.splat.offset_y} + frame.splat.span_y));
+  if (std::llabs(root_y) + reach_y + splat_y >= std::numeric_limits<std::int32_t>::max()) return CameraError::kOverflow;
   *band = frame;
   band->root.y = static_cast<std::int32_t>(root_y);
   band->height = rows;

@@ -16,7 +16,7 @@
 namespace octopoint {
 
 struct SplatPlot : PlotTarget {
-  SplatPlot(Framebuffer& frame, const FrameSetup& setup) : PlotTarget(frame, setup), footprint(setup.splat) {}
+  SplatPlot(FrameView& frame, const FrameSetup& setup) : PlotTarget(frame, setup), footprint(setup.splat) {}
 
   // Writes `word` (Framebuffer::pack) over columns [x_begin, x_end) and rows [y_begin, y_end),
   // clipped to the frame when kChecked.
@@ -24,9 +24,9 @@ struct SplatPlot : PlotTarget {
   void fill(std::int32_t x_begin, std::int32_t x_end, std::int32_t y_begin, std::int32_t y_end,
             std::uint32_t word) const {
     if constexpr (kChecked) {
-      x_begin = std::max(x_begin, 0);
+      x_begin = std::max<std::int32_t>(x_begin, 0);
       x_end = std::min(x_end, width);
-      y_begin = std::max(y_begin, 0);
+      y_begin = std::max<std::int32_t>(y_begin, 0);
       y_end = std::min(y_end, height);
     } else {
       assert(x_begin >= 0 && x_end <= width && y_begin >= 0 && y_end <= height);
