@@ -34,7 +34,8 @@ class ClippedWalk {
               const std::atomic<bool>* abort)
       : checked_{level.nodes.data(), level.leaves.data(), setup.child_offset, setup.depth,
                  CheckedPlot(frame, setup), abort},
-        inside_plot_(frame, setup),
+        inside_{level.nodes.data(), level.leaves.data(), setup.child_offset, setup.depth,
+                InsidePlot(frame, setup), abort},
         clip_(setup) {}
 
   bool run(const Vec3& root) {
@@ -51,13 +52,16 @@ class ClippedWalk {
       return;
     }
     if (clip == Clip::kInside) {
-      DecodeState<std::int32_t, InsidePlot> inside{checked_.node, checked_.leaf, checked_.offsets,
-                                                   checked_.depth, inside_plot_, checked_.abort,
-                                                   checked_.aborted};
-      visitSetBits(inside, level, centre);
-      checked_.node = inside.node;
-      checked_.leaf = inside.leaf;
-      checked_.aborted = inside.aborted;
+      // The unchecked walk's state lives beside the checked one: handing the cursors over costs
+      // three stores, where building a state per subtree copied its plotter (a memcpy call on
+      // Thumb-1, docs/device.md).
+      inside_.node = checked_.node;
+      inside_.leaf = checked_.leaf;
+      inside_.aborted = checked_.aborted;
+      visitSetBits(inside_, level, centre);
+      checked_.node = inside_.node;
+      checked_.leaf = inside_.leaf;
+      checked_.aborted = inside_.aborted;
       return;
     }
     unsigned mask = *checked_.node++;
@@ -72,7 +76,7 @@ class ClippedWalk {
   }
 
   DecodeState<std::int32_t, CheckedPlot> checked_;
-  InsidePlot inside_plot_;
+  DecodeState<std::int32_t, InsidePlot> inside_;
   SubtreeClip clip_;
 };
 
