@@ -12,6 +12,7 @@
 #include "models/registry.h"
 #include "renderer/level_of_detail.h"
 #include "renderer/render.h"
+#include "tests/dual_resolution_fixture.h"
 
 namespace {
 
@@ -114,6 +115,35 @@ TEST(FrameAllocation, DepthAutoAndSplatFramesAllocateNothing) {
     }
   }
   EXPECT_GE(splatting, 2);  // the splat path ran
+}
+
+// The interactive renderer's threads after the window was resized and zoomed in (H at depth auto
+// with splats, L one depth coarser): once each buffer has been reallocated at the new size (at
+// most once each, RendererStatus::buffers_allocated), coarse and fine frames allocate nothing, in
+// any thread.
+TEST(FrameAllocation, DualResolutionFramesAllocateNothingOnceAResizeSettles) {
+  ModelIssue issue;
+  const auto model = ModelView::fromEmbedded(*models::defaultModel(), &issue);
+  ASSERT_TRUE(model.has_value()) << describe(issue.error);
+  ManualClock clock;
+  DualResolutionRenderer renderer(*model, clock, InteractiveConfig{});
+  dual_resolution_testing::Round round(renderer, clock);
+  ViewEvent resize;
+  resize.kind = ViewEventKind::kResize;
+  resize.width = 400;
+  resize.height = 300;
+  renderer.handle(resize);
+  for (int step = 0; step < 4; ++step) renderer.handle({0, ViewEventKind::kZoomIn});
+  constexpr std::uint64_t kBuffers = 6;  // four frames and two hole fillers
+  for (int i = 0; i < 20 && renderer.status().buffers_allocated < kBuffers; ++i) round.play();
+  ASSERT_EQ(renderer.status().buffers_allocated, kBuffers);
+
+  const long before = g_allocation_count.load();
+  for (int i = 0; i < 5; ++i) round.play();
+  const long allocations = g_allocation_count.load() - before;
+  ASSERT_FALSE(round.failed());
+  EXPECT_GE(renderer.status().coarse_shown, 15u);
+  EXPECT_EQ(allocations, 0) << "in 5 turns of the view (15 coarse frames or more, 5 fine ones)";
 }
 
 }  // namespace

@@ -83,9 +83,11 @@ DualResolutionRenderer::DualResolutionRenderer(const ModelView* model, const Lev
       clock_(clock),
       config_(config),
       render_(std::move(render)),
-      coarse_filler_(config.width),
-      fine_filler_(config.width),
-      base_view_(config.initial_view) {
+      coarse_worker_{HoleFiller(config.width), config.width},
+      fine_worker_{HoleFiller(config.width), config.width},
+      base_view_(config.initial_view),
+      width_(config.width),
+      height_(config.height) {
   status_.view_version = view_version_;
   if (!render_) {
     const Variant variant = config.variant;
@@ -181,6 +183,16 @@ void DualResolutionRenderer::handle(const ViewEvent& event) {
         coarse_once_ = true;
         changeView();
         break;
+      case ViewEventKind::kResize: {
+        const std::int32_t width = std::clamp(event.width, 1, kMaxViewportSide);
+        const std::int32_t height = std::clamp(event.height, 1, kMaxViewportSide);
+        if (width == width_ && height == height_) return;
+        width_ = width;
+        height_ = height;
+        coarse_once_ = true;
+        changeView();
+        break;
+      }
       case ViewEventKind::kQuit:
         return;
     }
@@ -199,14 +211,38 @@ const LevelView* DualResolutionRenderer::levelFor(FrameSource source, const Came
   return coarser;
 }
 
-bool DualResolutionRenderer::draw(Slot& slot, HoleFiller& filler, const std::atomic<bool>* abort) {
+void DualResolutionRenderer::beginFrame(Slot& slot, FrameSource source) {
+  slot.info = FrameInfo{};
+  slot.info.source = source;
+  slot.info.view_time_us = clock_.nowMicroseconds();
+  slot.info.view = viewAt(slot.info.view_time_us);
+  slot.info.view_version = view_version_;
+  slot.info.width = width_;
+  slot.info.height = height_;
+}
+
+int DualResolutionRenderer::fitBuffers(Slot& slot, Worker& worker) {
+  int allocated = 0;
+  if (slot.frame.width() != slot.info.width || slot.frame.height() != slot.info.height) {
+    slot.frame = Framebuffer(slot.info.width, slot.info.height);
+    ++allocated;
+  }
+  if (worker.filler_width != slot.info.width) {
+    worker.filler = HoleFiller(slot.info.width);
+    worker.filler_width = slot.info.width;
+    ++allocated;
+  }
+  return allocated;
+}
+
+bool DualResolutionRenderer::draw(Slot& slot, Worker& worker, const std::atomic<bool>* abort) {
   const std::int64_t start_us = steadyMicroseconds();
   Camera camera;
   camera.yaw = slot.info.view.yaw;
   camera.pitch = slot.info.view.pitch;
   camera.zoom = slot.info.view.zoom;
-  camera.width = config_.width;
-  camera.height = config_.height;
+  camera.width = slot.info.width;
+  camera.height = slot.info.height;
   FrameSetup setup;
   slot.frame.clear();
   // The zoom is clamped, so the camera always fits; a refused camera would leave the frame empty.
@@ -214,14 +250,14 @@ bool DualResolutionRenderer::draw(Slot& slot, HoleFiller& filler, const std::ato
   if (level != nullptr && buildFrameSetup(camera, level->depth, kDefaultFractionBits, &setup) == CameraError::kNone) {
     slot.info.depth = level->depth;
     if (!render_(*level, setup, slot.frame, abort)) return false;
-    if (slot.info.view.fill) filler.fill(slot.frame, bridgeDepthLimit(setup));
+    if (slot.info.view.fill) worker.filler.fill(slot.frame, bridgeDepthLimit(setup));
   }
   slot.info.checksum = frameChecksum(slot.frame);
   slot.info.render_us = steadyMicroseconds() - start_us;
   return true;
 }
 
-void DualResolutionRenderer::handOver(std::unique_ptr<Slot>& slot) {
+bool DualResolutionRenderer::handOver(std::unique_ptr<Slot>& slot) {
   const FrameInfo& latest = status_.latest;
   const FrameInfo& info = slot->info;
   const bool newer =
@@ -230,13 +266,21 @@ void DualResolutionRenderer::handOver(std::unique_ptr<Slot>& slot) {
        !(latest.source == FrameSource::kFine && info.source == FrameSource::kCoarse));
   if (!newer) {
     ++status_.stale_dropped;
-    return;
+    return false;
   }
   slot->info.generation = ++generation_;
   status_.latest = slot->info;
   ++(info.source == FrameSource::kFine ? status_.fine_shown : status_.coarse_shown);
   std::swap(slot, handed_over_);
   handed_over_is_new_ = true;
+  return true;
+}
+
+void DualResolutionRenderer::notifyFrameReady(std::unique_lock<std::mutex>& lock) {
+  if (!config_.frame_ready) return;
+  lock.unlock();  // the callback may take the display's own locks (SDL_PushEvent does)
+  config_.frame_ready();
+  lock.lock();
 }
 
 void DualResolutionRenderer::coarseLoop() {
@@ -246,18 +290,17 @@ void DualResolutionRenderer::coarseLoop() {
     if (stopping_) return;
     coarse_once_ = false;
     Slot& slot = *coarse_back_;
-    slot.info = FrameInfo{};
-    slot.info.source = FrameSource::kCoarse;
-    slot.info.view_time_us = clock_.nowMicroseconds();
-    slot.info.view = viewAt(slot.info.view_time_us);
-    slot.info.view_version = view_version_;
+    beginFrame(slot, FrameSource::kCoarse);
     status_.coarse_busy = true;
     lock.unlock();
-    draw(slot, coarse_filler_, nullptr);  // L is never aborted: its frames are short
+    const int allocated = fitBuffers(slot, coarse_worker_);
+    draw(slot, coarse_worker_, nullptr);  // L is never aborted: its frames are short
     lock.lock();
     status_.coarse_busy = false;
-    handOver(coarse_back_);
+    status_.buffers_allocated += static_cast<std::uint64_t>(allocated);
+    const bool handed_over = handOver(coarse_back_);
     status_changed_.notify_all();
+    if (handed_over) notifyFrameReady(lock);
   }
 }
 
@@ -269,29 +312,29 @@ void DualResolutionRenderer::fineLoop() {
     fine_requested_ = false;
     fine_abort_.store(false, std::memory_order_relaxed);  // under the mutex: a press sets it again
     Slot& slot = *fine_back_;
-    slot.info = FrameInfo{};
-    slot.info.source = FrameSource::kFine;
-    slot.info.view_time_us = clock_.nowMicroseconds();
-    slot.info.view = viewAt(slot.info.view_time_us);
-    slot.info.view_version = view_version_;
+    beginFrame(slot, FrameSource::kFine);
     fine_busy_version_ = view_version_;
     ++status_.fine_started;
     status_.fine_busy = true;
     status_changed_.notify_all();
     lock.unlock();
-    const bool complete = draw(slot, fine_filler_, &fine_abort_);
+    const int allocated = fitBuffers(slot, fine_worker_);
+    const bool complete = draw(slot, fine_worker_, &fine_abort_);
     lock.lock();
     status_.fine_busy = false;
+    status_.buffers_allocated += static_cast<std::uint64_t>(allocated);
     fine_busy_version_ = 0;
+    bool handed_over = false;
     if (!complete) {
       ++status_.fine_aborted;
     } else if (slot.info.view_version != view_version_) {
       ++status_.stale_dropped;  // finished just as the view changed
     } else {
       fine_due_ = false;
-      handOver(fine_back_);
+      handed_over = handOver(fine_back_);
     }
     status_changed_.notify_all();
+    if (handed_over) notifyFrameReady(lock);
   }
 }
 

@@ -18,6 +18,13 @@
 //   An aborted frame is never handed over, nor a frame older than the one on screen (a fine
 //   frame of a view that has changed since H started, or a coarse frame that ends after the fine
 //   frame of the same view).
+// - The frame follows the window: a kResize event changes the size of the frames drawn from then
+//   on (a new view: H is aborted, L draws once). A buffer is reallocated by the thread that owns it
+//   when it next draws into it at a new size (a back buffer belongs to its thread between hand-
+//   overs, so nobody else can be reading it), and so is each thread's hole filler: after a
+//   resize each of the four buffers and two fillers is reallocated at most once, and drawing at a
+//   settled size never allocates. A frame already drawn at the old size may still be handed over
+//   (it is complete); FrameInfo says each frame's size.
 // - Idle threads sleep on condition variables; nothing polls.
 //
 // Threads: std::thread with a `stopping_` flag under the same mutex as the rest of the state,
@@ -58,11 +65,15 @@ struct ViewParameters {
 };
 
 struct InteractiveConfig {
-  std::int32_t width = 320;
+  std::int32_t width = 320;  // the initial frame size (kResize changes it), 1..kMaxViewportSide
   std::int32_t height = 240;
   std::int32_t degrees_per_second = 90;
   Variant variant = defaultVariant();
   ViewParameters initial_view;
+  // Called from a render thread, without any lock held, after each frame it hands over: lets a
+  // display sleep until there is something to show (the viewer posts a window event). Must not
+  // call back into the renderer.
+  std::function<void()> frame_ready;
 };
 
 enum class FrameSource : std::uint8_t { kCoarse, kFine };  // drawn by L or by H
@@ -73,6 +84,8 @@ struct FrameInfo {
   std::uint64_t view_version = 0;  // bumped by every event that changes the view
   std::int64_t view_time_us = 0;   // the clock time the view was taken at
   ViewParameters view;
+  std::int32_t width = 0;  // the frame's size (the size in force when it was started)
+  std::int32_t height = 0;
   std::int64_t render_us = 0;  // real time spent drawing (decode + fill), for the overlay
   int depth = 0;               // the depth drawn (0: none, the camera was refused)
   std::uint32_t checksum = 0;  // frameChecksum of the finished frame
@@ -81,6 +94,7 @@ struct FrameInfo {
 struct RendererStatus {
   std::uint64_t coarse_shown = 0;  // frames handed over, per thread
   std::uint64_t fine_shown = 0;
+  std::uint64_t buffers_allocated = 0;  // frame buffers and hole fillers (re)allocated by resizes
   std::uint64_t fine_started = 0;
   std::uint64_t fine_aborted = 0;
   std::uint64_t stale_dropped = 0;  // complete frames not handed over: a newer one was out
@@ -138,18 +152,30 @@ class DualResolutionRenderer {
     bool held = false;
     std::int64_t since_us = 0;
   };
+  // What a render thread owns besides its back buffer: the hole filler, as wide as its frames.
+  struct Worker {
+    HoleFiller filler;
+    std::int32_t filler_width;
+  };
 
   void coarseLoop();
   void fineLoop();
   bool anyKeyHeld() const;
   ViewParameters viewAt(std::int64_t time_us) const;  // base view plus the held keys' motion
   void changeView();  // a new view: aborts H, the fine frame is due again
+  // Starts a frame in `slot` (locked): the current view, its version, time and size.
+  void beginFrame(Slot& slot, FrameSource source);
+  // Makes the slot's frame and the worker's filler the slot's size (unlocked: both belong to the
+  // calling thread); returns how many it reallocated.
+  static int fitBuffers(Slot& slot, Worker& worker);
   // Draws a frame into `slot` (unlocked: the slot belongs to the calling thread).
-  bool draw(Slot& slot, HoleFiller& filler, const std::atomic<bool>* abort);
+  bool draw(Slot& slot, Worker& worker, const std::atomic<bool>* abort);
   // The level a frame of `source` draws for `camera`; nullptr when the camera is refused.
   const LevelView* levelFor(FrameSource source, const Camera& camera) const;
-  // Hands `slot` over unless a newer frame is out (locked).
-  void handOver(std::unique_ptr<Slot>& slot);
+  // Hands `slot` over unless a newer frame is out (locked); returns whether it did.
+  bool handOver(std::unique_ptr<Slot>& slot);
+  // Calls config_.frame_ready with the mutex released for the call.
+  void notifyFrameReady(std::unique_lock<std::mutex>& lock);
 
   const ModelView* model_ = nullptr;  // when built from a model: levels by projected size
   const LevelView* coarse_level_ = nullptr;
@@ -157,8 +183,8 @@ class DualResolutionRenderer {
   const Clock& clock_;
   const InteractiveConfig config_;
   RenderFunction render_;
-  HoleFiller coarse_filler_;
-  HoleFiller fine_filler_;
+  Worker coarse_worker_;
+  Worker fine_worker_;
 
   mutable std::mutex mutex_;
   std::condition_variable coarse_wake_;
@@ -167,6 +193,8 @@ class DualResolutionRenderer {
   bool stopping_ = false;
   std::array<HeldKey, kNavigationKeyCount> held_{};
   ViewParameters base_view_;
+  std::int32_t width_;  // the size of the frames drawn from now on
+  std::int32_t height_;
   std::uint64_t view_version_ = 1;
   bool coarse_once_ = false;    // one coarse frame after a step change
   bool fine_due_ = true;        // the fine frame of the current view is not on screen yet

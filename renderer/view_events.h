@@ -1,6 +1,7 @@
 #pragma once
-// What drives the interactive renderer (DESIGN.md 5): timed view events from an event source,
-// either the viewer's keyboard (app/view_main.cpp) or a scripted timeline (tests, benchmarks).
+// What drives the interactive renderer: timed view events from an event source, either the
+// viewer's window (app/view_window.cpp: SDL2 key presses and releases, wheel, resizes) or a
+// scripted timeline (tests, benchmarks).
 
 #include <cstdint>
 #include <optional>
@@ -22,6 +23,7 @@ enum class ViewEventKind : std::uint8_t {
   kZoomOut,     // one zoom step out
   kToggleFill,  // hole filling on/off
   kReset,       // back to the initial view
+  kResize,      // the frame becomes width x height pixels (the window was resized)
   kQuit,        // the source has ended
 };
 
@@ -31,6 +33,8 @@ struct ViewEvent {
   std::int64_t time_us = 0;  // on the renderer's clock
   ViewEventKind kind = ViewEventKind::kTick;
   NavigationKey key = NavigationKey::kYawLeft;  // for kPress and kRelease
+  std::int32_t width = 0;                       // for kResize: the new frame size
+  std::int32_t height = 0;
 };
 
 class EventSource {

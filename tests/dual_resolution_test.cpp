@@ -1,96 +1,13 @@
 // The dual-resolution render threads, driven headless by scripted timelines on a manual clock.
 // Real threads and the real decoder; "slow" renderers are the real one repeated or delayed.
-#include <gtest/gtest.h>
-#include <time.h>
-
-#include <chrono>
-#include <memory>
 #include <random>
 #include <thread>
 
-#include "models/registry.h"
-#include "renderer/dual_resolution_renderer.h"
 #include "renderer/level_of_detail.h"
+#include "tests/dual_resolution_fixture.h"
 
-namespace octopoint {
+namespace octopoint::dual_resolution_testing {
 namespace {
-
-using std::chrono::milliseconds;
-constexpr milliseconds kPatience{20000};  // generous: ThreadSanitizer slows everything down
-
-std::int64_t processCpuMicroseconds() {
-  timespec now{};
-  clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &now);
-  return std::int64_t{now.tv_sec} * 1'000'000 + now.tv_nsec / 1000;
-}
-
-std::int64_t realMicroseconds() { return SteadyClock().nowMicroseconds(); }
-
-ViewEvent at(std::int64_t time_ms, ViewEventKind kind,
-             NavigationKey key = NavigationKey::kYawRight) {
-  return {time_ms * 1000, kind, key};
-}
-
-class DualResolution : public ::testing::Test {
- protected:
-  void SetUp() override {
-    ModelIssue issue;
-    model_ = ModelView::fromEmbedded(*models::defaultModel(), &issue);
-    ASSERT_TRUE(model_.has_value());
-    ASSERT_GE(model_->levelCount(), 2);
-    coarse_ = &model_->level(0);
-    fine_ = &model_->finestLevel();
-  }
-
-  // The real decoder, repeated until `budget` of real time has passed (each pass polls `abort`).
-  RenderFunction slowFine(milliseconds budget) const {
-    return slowFine(std::make_shared<std::atomic<int>>(static_cast<int>(budget.count())));
-  }
-
-  // The same with a budget the test may change while the renderer runs (32 bits: ARMv5 has no
-  // lock-free 64-bit atomics).
-  RenderFunction slowFine(std::shared_ptr<const std::atomic<int>> budget_ms) const {
-    const LevelView* fine = fine_;
-    return [fine, budget_ms](const LevelView& level, const FrameSetup& setup, Framebuffer& frame,
-                             const std::atomic<bool>* abort) {
-      const std::int64_t end_us = realMicroseconds() + std::int64_t{budget_ms->load()} * 1000;
-      do {
-        if (!renderLevel(Variant::kFixedBaseline, level, setup, frame, abort)) return false;
-      } while (&level == fine && realMicroseconds() < end_us);
-      return true;
-    };
-  }
-
-  // Plays `timeline` up to (and including) the next event of `kind`.
-  static ViewEvent playThrough(ScriptedTimeline& timeline, DualResolutionRenderer& renderer,
-                               ViewEventKind kind) {
-    while (true) {
-      const ViewEvent event = *timeline.next(0);
-      renderer.handle(event);
-      if (event.kind == kind || event.kind == ViewEventKind::kQuit) return event;
-    }
-  }
-
-  Framebuffer directRender(const LevelView& level, const ViewParameters& view) const {
-    Camera camera;
-    camera.yaw = view.yaw;
-    camera.pitch = view.pitch;
-    camera.zoom = view.zoom;
-    FrameSetup setup;
-    EXPECT_EQ(buildFrameSetup(camera, level.depth, kDefaultFractionBits, &setup),
-              CameraError::kNone);
-    Framebuffer frame(camera.width, camera.height);
-    frame.clear();
-    renderLevel(Variant::kFixedBaseline, level, setup, frame);
-    if (view.fill) HoleFiller(frame.width()).fill(frame, bridgeDepthLimit(setup));
-    return frame;
-  }
-
-  std::optional<ModelView> model_;
-  const LevelView* coarse_ = nullptr;
-  const LevelView* fine_ = nullptr;
-  ManualClock clock_;
-};
 
 TEST_F(DualResolution, PressReleasePressWithin300MsAbortsTheFineFrameAndShowsACoarseOne) {
   DualResolutionRenderer renderer(*coarse_, *fine_, clock_, InteractiveConfig{},
@@ -240,6 +157,8 @@ TEST_F(DualResolution, AfterReleaseTheFineFrameIsShownAndBothThreadsSleep) {
 }
 
 TEST_F(DualResolution, ThousandsOfRandomEventsLeaveNoDeadlockNoLostAndNoTornFrame) {
+  // Resizes among the events: buffers are reallocated by their threads while the others draw,
+  // hand over and show frames of another size.
   // Fine frames of at least 3 ms, so that presses often land while H is drawing. How often
   // depends on the scheduler (on a loaded machine H may never start before the next event), so
   // every few hundred events one abort is forced: H draws until a press stops it.
@@ -248,11 +167,11 @@ TEST_F(DualResolution, ThousandsOfRandomEventsLeaveNoDeadlockNoLostAndNoTornFram
   DualResolutionRenderer renderer(*coarse_, *fine_, clock_, InteractiveConfig{},
                                   slowFine(fine_budget_ms));
   std::mt19937 random(12345);
-  constexpr ViewEventKind kKinds[] = {ViewEventKind::kPress,      ViewEventKind::kPress,
-                                      ViewEventKind::kRelease,    ViewEventKind::kRelease,
-                                      ViewEventKind::kTick,       ViewEventKind::kTick,
-                                      ViewEventKind::kZoomIn,     ViewEventKind::kZoomOut,
-                                      ViewEventKind::kToggleFill, ViewEventKind::kReset};
+  constexpr ViewEventKind kKinds[] = {
+      ViewEventKind::kPress,   ViewEventKind::kPress,   ViewEventKind::kRelease,
+      ViewEventKind::kRelease, ViewEventKind::kTick,    ViewEventKind::kTick,
+      ViewEventKind::kZoomIn,  ViewEventKind::kZoomOut, ViewEventKind::kToggleFill,
+      ViewEventKind::kReset,   ViewEventKind::kResize};
   std::int64_t now_us = 0;
   const Framebuffer* shown = nullptr;
   FrameInfo shown_info;
@@ -267,8 +186,10 @@ TEST_F(DualResolution, ThousandsOfRandomEventsLeaveNoDeadlockNoLostAndNoTornFram
     FrameInfo info;
     const Framebuffer* latest = renderer.acquireLatest(&info);
     ASSERT_NE(latest, nullptr);
-    // The new one is complete and newer.
+    // The new one is complete, newer, and of the size it was started at.
     ASSERT_EQ(frameChecksum(*latest), info.checksum) << "torn frame";
+    ASSERT_EQ(latest->width(), info.width);
+    ASSERT_EQ(latest->height(), info.height);
     ASSERT_GT(info.generation, shown_info.generation);
     ++frames_checked;
     shown = latest;
@@ -311,6 +232,9 @@ TEST_F(DualResolution, ThousandsOfRandomEventsLeaveNoDeadlockNoLostAndNoTornFram
         kKinds[std::uniform_int_distribution<std::size_t>(0, std::size(kKinds) - 1)(random)];
     event.key = static_cast<NavigationKey>(
         std::uniform_int_distribution<int>(0, kNavigationKeyCount - 1)(random));
+    // Few sizes, so that often only one side changes.
+    event.width = std::uniform_int_distribution<std::int32_t>(0, 1)(random) == 0 ? 64 : 320;
+    event.height = std::uniform_int_distribution<std::int32_t>(0, 1)(random) == 0 ? 48 : 240;
     renderer.handle(event);
     checkFront();
     if (i % 16 == 0) std::this_thread::sleep_for(milliseconds(1));
@@ -337,4 +261,4 @@ TEST_F(DualResolution, ThousandsOfRandomEventsLeaveNoDeadlockNoLostAndNoTornFram
 }
 
 }  // namespace
-}  // namespace octopoint
+}  // namespace octopoint::dual_resolution_testing
