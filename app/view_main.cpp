@@ -1,23 +1,22 @@
-// octopoint-view: an interactive window on a model (DESIGN.md 5). The keyboard is the event
-// source of the dual-resolution renderer: L draws the coarse level while an arrow key is held, H
-// the fine one at the next 100 ms tick after it is let go.
-#include <unistd.h>
+// octopoint-view: an interactive window on a model. The window (SDL2, app/view_window.h) drives the
+// dual-resolution renderer: an arrow key's press and release start and stop thread L's coarse
+// frames, thread H's fine frame follows at the next 100 ms tick after the last release, and the
+// frames follow the window's size.
 
 #include <algorithm>
 #include <cstdio>
-#include <filesystem>
-#include <fstream>
 #include <iostream>
-#include <opencv2/highgui.hpp>
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
-#include <optional>
+#include <span>
 #include <stdexcept>
 #include <string>
 #include <utility>
-#include <vector>
 
 #include "app/model_source.h"
+#include "app/view_keys.h"
+#include "app/view_overlay.h"
+#include "app/view_window.h"
 #include "cli/arguments.h"
 #include "cli/error.h"
 #include "cli/numbers.h"
@@ -28,58 +27,320 @@
 
 namespace {
 
-namespace fs = std::filesystem;
 using namespace octopoint;
 
 constexpr const char* kUsage =
-    R"(usage: octopoint-view [--model NAME | --file M.oct] [--size WxH] [--scale N]
+    R"(usage: octopoint-view [--model NAME | --file M.oct] [--size WxH] [--scale N] [--speed DEG]
 
-Shows an octopoint model in a window. While an arrow key is held the coarse level turns at a fixed
-speed (thread L); once it is let go the fine level is drawn at the next 100 ms tick (thread H),
-and a key press aborts it at once.
+Shows an octopoint model in a resizable window. While an arrow key is held the view turns at a
+fixed speed, drawn coarse (thread L); once the last key is let go the fine frame is drawn at the
+next 100 ms tick (thread H), and a key press aborts it at once. The frame follows the window's
+size.
 
   --model NAME   an embedded model (default: the default model)
   --file M.oct   a model file written by octopoint-prepare; it is validated first
-  --size WxH     the rendered frame, each side 16..2048 (default 320x240)
-  --scale N      the window shows each pixel as NxN, 1..8 (default 2)
+  --size WxH     the initial frame, each side 16..4096 (default 640x480)
+  --scale N      each frame pixel is shown as NxN window pixels, 1..8 (default 1): the frame is
+                 the window's size divided by N
+  --speed DEG    how fast a held arrow key turns the view, degrees per second, 1..720 (default 90)
   -h, --help     show this help
 
-keys: arrows turn (90 degrees per second), + and - zoom, f toggles hole filling, r resets the view,
-      s saves the frame as octopoint-view-N.png in the current directory, q or Esc quits.
-The overlay shows which thread drew the frame (L or H), its drawing time and the frame rate.
-highgui reports key presses only: a key counts as held while its auto-repeat keeps coming, and as
-released 250 ms after its last repeat (so a tap turns the view by about 22 degrees).
+keys:
 )";
 
-constexpr const char* kWindow = "octopoint-view";
+constexpr const char* kUsageEnd =
+    R"(
+The overlay shows which thread drew the frame (L or H), its drawing time, the frame's size and
+zoom, and two rates over the last second: frames drawn (complete frames the render threads handed
+over) and frames shown (new frames put on the screen; a frame superseded before the window was
+drawn is drawn but not shown). `s` prints the frame's view as octopoint-render options.
+The window needs a display (DISPLAY or WAYLAND_DISPLAY); SDL_VIDEODRIVER picks another SDL video
+driver, e.g. kmsdrm on a panel without a window system.
+)";
+
+constexpr const char* kWindowTitle = "octopoint-view";
 constexpr Rgb kBackground{236, 236, 240};
-constexpr std::int64_t kReleaseAfterUs = 250'000;
+constexpr int kMaxFrameSide = 4096;
+constexpr int kMinFrameSide = 16;
 
 struct Options {
   std::string model_name;
   std::string model_file;
-  int width = 320;
-  int height = 240;
-  int scale = 2;
+  int width = 640;
+  int height = 480;
+  int scale = 1;
+  int degrees_per_second = 90;
 };
+
+double degreesOf(Angle angle) { return angle.turns16() * 360.0 / Angle::kUnitsPerTurn; }
+double zoomOf(Q16 zoom) { return static_cast<double>(zoom.raw()) / Q16::kOneRaw; }
+
+class Viewer {
+ public:
+  Viewer(const Options& options, const ModelView& model);
+  // Shows the window until the user quits.
+  void run();
+  // The key table; `viewer` may be null when only the help text is wanted.
+  static KeyBindings keyTable(Viewer* viewer);
+
+ private:
+  void handle(const WindowEvent& event);
+  void handleKey(const WindowEvent& event);
+  void send(ViewEventKind kind, std::int64_t now_us) { renderer_.handle({now_us, kind}); }
+  void resizeFrame(int window_width, int window_height);
+  // Puts the newest frame on the screen when it, the window or the overlay's text changed.
+  void show();
+  void save();
+  void defaultOverlay(OverlayLines& lines) const;
+
+  const Options options_;
+  const ModelView& model_;
+  const SteadyClock clock_;
+  ViewWindow window_;  // before renderer_: its threads wake the window until they are joined
+  DualResolutionRenderer renderer_;
+  KeyBindings keys_;
+  Overlay overlay_;
+  // Turns a frame into RGB888 for the screen and for `s` (default: its palette colours).
+  std::function<void(const Framebuffer&, const FrameInfo&, std::span<std::uint8_t>)> resolve_;
+
+  bool quit_ = false;
+  bool resolve_again_ = false;  // the frame on screen must be turned into RGB again
+  bool compose_again_ = true;   // the window must be drawn again
+  std::optional<std::pair<int, int>> pending_window_size_;
+  FrameInfo shown_info_;  // of the frame on screen (generation 0: none yet)
+  cv::Mat frame_rgb_;     // the frame on screen in RGB, frame size
+  cv::Mat scaled_rgb_;    // the same scaled by --scale
+  cv::Mat window_rgb_;    // what the window shows, window size
+  OverlayLines shown_lines_;
+  std::uint64_t frames_shown_ = 0;
+  RateCounter drawn_rate_;
+  RateCounter shown_rate_;
+  int saved_ = 0;
+};
+
+InteractiveConfig interactiveConfig(const Options& options, ViewWindow& window) {
+  InteractiveConfig config;
+  config.width = options.width;
+  config.height = options.height;
+  config.degrees_per_second = options.degrees_per_second;
+  config.frame_ready = [&window] { window.wake(); };
+  return config;
+}
+
+Viewer::Viewer(const Options& options, const ModelView& model)
+    : options_(options),
+      model_(model),
+      window_(kWindowTitle, options.width * options.scale, options.height * options.scale,
+              kMinFrameSide * options.scale, kMinFrameSide * options.scale),
+      renderer_(model, clock_, interactiveConfig(options, window_)),
+      keys_(keyTable(this)),
+      resolve_([this](const Framebuffer& frame, const FrameInfo&, std::span<std::uint8_t> rgb) {
+        resolveToRgb(frame, model_, kBackground, rgb);
+      }) {
+  overlay_.add([this](OverlayLines& lines) { defaultOverlay(lines); });
+}
+
+KeyBindings Viewer::keyTable(Viewer* viewer) {
+  KeyBindings keys;
+  keys.hold({SDLK_LEFT}, "Left", "hold to turn left", NavigationKey::kYawLeft);
+  keys.hold({SDLK_RIGHT}, "Right", "hold to turn right", NavigationKey::kYawRight);
+  keys.hold({SDLK_UP}, "Up", "hold to tilt up", NavigationKey::kPitchUp);
+  keys.hold({SDLK_DOWN}, "Down", "hold to tilt down", NavigationKey::kPitchDown);
+  constexpr bool kRepeats = true;
+  keys.press(
+      {SDLK_PLUS, SDLK_EQUALS, SDLK_KP_PLUS}, "+ -", "zoom in and out (held: again and again)",
+      [viewer](std::int64_t now) { viewer->send(ViewEventKind::kZoomIn, now); }, kRepeats);
+  keys.press(
+      {SDLK_MINUS, SDLK_UNDERSCORE, SDLK_KP_MINUS}, "", "",
+      [viewer](std::int64_t now) { viewer->send(ViewEventKind::kZoomOut, now); }, kRepeats);
+  keys.describe("wheel", "zoom in (away from you) and out, one step of 5/4 per notch");
+  keys.press({SDLK_f}, "f", "hole filling on and off",
+             [viewer](std::int64_t now) { viewer->send(ViewEventKind::kToggleFill, now); });
+  keys.press({SDLK_r}, "r", "back to the initial view",
+             [viewer](std::int64_t now) { viewer->send(ViewEventKind::kReset, now); });
+  keys.press({SDLK_s}, "s", "save the frame as octopoint-view-N.png in the current directory",
+             [viewer](std::int64_t) { viewer->save(); });
+  keys.press({SDLK_q, SDLK_ESCAPE}, "q Esc", "quit",
+             [viewer](std::int64_t) { viewer->quit_ = true; });
+  return keys;
+}
+
+void Viewer::run() {
+  std::int64_t next_tick_us = clock_.nowMicroseconds();
+  while (!quit_) {
+    const std::int64_t now_us = clock_.nowMicroseconds();
+    if (now_us >= next_tick_us) {
+      send(ViewEventKind::kTick, now_us);
+      next_tick_us +=
+          kTickPeriodMicroseconds * ((now_us - next_tick_us) / kTickPeriodMicroseconds + 1);
+    }
+    // One event (sleeping until the next tick at most), then all that are already queued.
+    const int wait_ms = static_cast<int>((next_tick_us - now_us + 999) / 1000);
+    for (std::optional<WindowEvent> event = window_.next(wait_ms); event && !quit_;
+         event = window_.next(0)) {
+      handle(*event);
+    }
+    if (pending_window_size_) {  // a drag resizes many times: only the last size is drawn
+      resizeFrame(pending_window_size_->first, pending_window_size_->second);
+      pending_window_size_.reset();
+    }
+    if (!quit_) show();
+  }
+}
+
+void Viewer::handle(const WindowEvent& event) {
+  const std::int64_t now_us = clock_.nowMicroseconds();
+  switch (event.kind) {
+    case WindowEvent::Kind::kKeyDown:
+    case WindowEvent::Kind::kKeyUp:
+      handleKey(event);
+      break;
+    case WindowEvent::Kind::kWheel:
+      for (int step = 0; step < std::abs(event.wheel_steps); ++step) {
+        send(event.wheel_steps > 0 ? ViewEventKind::kZoomIn : ViewEventKind::kZoomOut, now_us);
+      }
+      break;
+    case WindowEvent::Kind::kResized:
+      pending_window_size_ = {event.width, event.height};
+      break;
+    case WindowEvent::Kind::kExposed:
+      compose_again_ = true;
+      break;
+    case WindowEvent::Kind::kFocusLost:  // their releases will go elsewhere: let them go now
+      for (int key = 0; key < kNavigationKeyCount; ++key) {
+        renderer_.handle({now_us, ViewEventKind::kRelease, static_cast<NavigationKey>(key)});
+      }
+      break;
+    case WindowEvent::Kind::kWake:  // a new frame: show() takes it
+      break;
+    case WindowEvent::Kind::kClose:
+      quit_ = true;
+      break;
+  }
+}
+
+void Viewer::handleKey(const WindowEvent& event) {
+  const KeyBinding* binding = keys_.find(event.key);
+  if (binding == nullptr) return;
+  const std::int64_t now_us = clock_.nowMicroseconds();
+  const bool down = event.kind == WindowEvent::Kind::kKeyDown;
+  if (binding->navigation) {
+    if (event.repeat) return;  // still held: the renderer turns the view by time, not by repeats
+    renderer_.handle(
+        {now_us, down ? ViewEventKind::kPress : ViewEventKind::kRelease, *binding->navigation});
+  } else if (down && (!event.repeat || binding->repeats)) {
+    binding->action(now_us);
+  }
+}
+
+void Viewer::resizeFrame(int window_width, int window_height) {
+  ViewEvent event;
+  event.time_us = clock_.nowMicroseconds();
+  event.kind = ViewEventKind::kResize;
+  event.width = std::clamp(window_width / options_.scale, 1, kMaxFrameSide);
+  event.height = std::clamp(window_height / options_.scale, 1, kMaxFrameSide);
+  renderer_.handle(event);
+  compose_again_ = true;
+}
+
+void Viewer::show() {
+  FrameInfo info;
+  const Framebuffer* frame = renderer_.acquireLatest(&info);
+  const std::int64_t now_us = clock_.nowMicroseconds();
+  if (frame == nullptr) return;
+  const bool new_frame = info.generation != shown_info_.generation;
+  if (new_frame || resolve_again_) {
+    frame_rgb_.create(frame->height(), frame->width(), CV_8UC3);  // allocates on a new size only
+    resolve_(*frame, info, {frame_rgb_.data, frame_rgb_.total() * 3});
+    resolve_again_ = false;
+    compose_again_ = true;
+  }
+  if (new_frame) ++frames_shown_;
+  shown_info_ = info;
+  drawn_rate_.record(now_us, renderer_.status().latest.generation);
+  shown_rate_.record(now_us, frames_shown_);
+  OverlayLines lines = overlay_.lines();
+  if (!compose_again_ && lines == shown_lines_) return;
+
+  const cv::Mat* scaled = &frame_rgb_;
+  if (options_.scale > 1) {
+    cv::resize(frame_rgb_, scaled_rgb_, {}, options_.scale, options_.scale, cv::INTER_NEAREST);
+    scaled = &scaled_rgb_;
+  }
+  window_rgb_.create(window_.height(), window_.width(), CV_8UC3);
+  const cv::Rect covered(0, 0, std::min(scaled->cols, window_rgb_.cols),
+                         std::min(scaled->rows, window_rgb_.rows));
+  if (covered.size() != window_rgb_.size()) {  // a frame drawn before the latest resize
+    window_rgb_.setTo(cv::Scalar(kBackground.r, kBackground.g, kBackground.b));
+  }
+  (*scaled)(covered).copyTo(window_rgb_(covered));
+  Overlay::draw(window_rgb_, lines);
+  window_.present(
+      window_rgb_.data, window_rgb_.cols, window_rgb_.rows, window_rgb_.step,
+      std::uint32_t{kBackground.r} << 16 | std::uint32_t{kBackground.g} << 8 | kBackground.b);
+  shown_lines_ = std::move(lines);
+  compose_again_ = false;
+}
+
+void Viewer::defaultOverlay(OverlayLines& lines) const {
+  const FrameInfo& info = shown_info_;
+  char line[128];
+  std::snprintf(line, sizeof line, "%s %lld.%01lld ms  depth %d  %dx%d  zoom %.2f%s",
+                info.source == FrameSource::kFine ? "H" : "L",
+                static_cast<long long>(info.render_us / 1000),
+                static_cast<long long>(info.render_us / 100 % 10), info.depth, info.width,
+                info.height, zoomOf(info.view.zoom), info.view.fill ? "  fill" : "");
+  lines.emplace_back(line);
+  std::snprintf(line, sizeof line, "%llu fps drawn, %llu shown",
+                static_cast<unsigned long long>(drawn_rate_.perSecond()),
+                static_cast<unsigned long long>(shown_rate_.perSecond()));
+  lines.emplace_back(line);
+}
+
+// The output-file rule of every tool (cli/output_file.h): whole or nothing, and an existing name
+// that is not a regular file is refused, not replaced. A failure is reported and the viewer goes
+// on.
+void Viewer::save() {
+  if (shown_info_.generation == 0) return;
+  const std::string name = "octopoint-view-" + std::to_string(++saved_) + ".png";
+  try {
+    cv::Mat bgr;
+    cv::cvtColor(frame_rgb_, bgr, cv::COLOR_RGB2BGR);
+    std::vector<std::uint8_t> png;
+    if (!cv::imencode(".png", bgr, png)) throw cli::Error(name + ": cannot encode the PNG");
+    cli::writeFileAtomically(name, {reinterpret_cast<const char*>(png.data()), png.size()});
+  } catch (const std::exception& error) {
+    cli::printError("octopoint-view", error.what());
+    return;
+  }
+  const FrameInfo& info = shown_info_;
+  std::printf("saved %s (%s): --size %dx%d --yaw %.2f --pitch %.2f --zoom %.4f --depth %d%s\n",
+              name.c_str(), info.source == FrameSource::kFine ? "H" : "L", info.width, info.height,
+              degreesOf(info.view.yaw), degreesOf(info.view.pitch), zoomOf(info.view.zoom),
+              info.depth, info.view.fill ? " --fill" : "");
+  std::fflush(stdout);
+}
 
 Options parseOptions(int argc, char** argv) {
   Options options;
   cli::ArgumentReader args(argc, argv);
   while (args.next()) {
     if (args.is("-h") || args.is("--help")) {
-      std::cout << kUsage;
+      std::cout << kUsage << Viewer::keyTable(nullptr).helpText() << kUsageEnd;
       std::exit(0);
     } else if (args.is("--model")) {
       options.model_name = args.value();
     } else if (args.is("--file")) {
       options.model_file = args.value();
     } else if (args.is("--size")) {
-      const cli::FrameSize size = cli::parseFrameSize(args.name(), args.value(), 16, 2048);
+      const cli::FrameSize size =
+          cli::parseFrameSize(args.name(), args.value(), kMinFrameSide, kMaxFrameSide);
       options.width = size.width;
       options.height = size.height;
     } else if (args.is("--scale")) {
       options.scale = cli::parseInt(args.name(), args.value(), 1, 8);
+    } else if (args.is("--speed")) {
+      options.degrees_per_second = cli::parseInt(args.name(), args.value(), 1, 720);
     } else {
       args.refuseUnknown();
     }
@@ -90,176 +351,16 @@ Options parseOptions(int argc, char** argv) {
   return options;
 }
 
-// The window's keyboard as an event source: arrow keys are navigation keys (held while their
-// auto-repeat comes), the others one-shot events; the 100 ms ticks come from the steady clock.
-class KeyboardEventSource final : public EventSource {
- public:
-  explicit KeyboardEventSource(const Clock& clock)
-      : clock_(clock), next_tick_us_(clock.nowMicroseconds()) {}
-
-  std::optional<ViewEvent> next(std::int32_t max_wait_ms) override {
-    if (std::optional<ViewEvent> due = dueEvent()) return due;
-    const int key = cv::waitKeyEx(std::max(1, max_wait_ms));
-    const std::int64_t now = clock_.nowMicroseconds();
-    if (key < 0) return dueEvent();
-    if (const std::optional<NavigationKey> navigation = navigationKey(key)) {
-      release_at_us_ = now + kReleaseAfterUs;
-      if (holding_ && held_key_ != *navigation) {
-        pending_press_ = ViewEvent{now, ViewEventKind::kPress, *navigation};
-        const ViewEvent release{now, ViewEventKind::kRelease, held_key_};
-        held_key_ = *navigation;
-        return release;  // the other key goes up first; the press follows on the next call
-      }
-      holding_ = true;
-      held_key_ = *navigation;
-      return ViewEvent{now, ViewEventKind::kPress, *navigation};  // a repeat is ignored downstream
-    }
-    switch (key) {
-      case '+':
-      case '=':
-        return ViewEvent{now, ViewEventKind::kZoomIn};
-      case '-':
-      case '_':
-        return ViewEvent{now, ViewEventKind::kZoomOut};
-      case 'f':
-        return ViewEvent{now, ViewEventKind::kToggleFill};
-      case 'r':
-        return ViewEvent{now, ViewEventKind::kReset};
-      case 's':
-        save_requested_ = true;
-        return std::nullopt;
-      case 'q':
-      case 27:
-        return ViewEvent{now, ViewEventKind::kQuit};
-      default:
-        return std::nullopt;
-    }
-  }
-
-  // Whether `s` was pressed since the last call.
-  bool takeSaveRequest() { return std::exchange(save_requested_, false); }
-
- private:
-  static std::optional<NavigationKey> navigationKey(int key) {
-    switch (key) {  // waitKeyEx reports X11 keysyms (GTK highgui) or Qt key codes (Qt highgui)
-      case 0xff51:
-      case 0x1000012:
-        return NavigationKey::kYawLeft;
-      case 0xff53:
-      case 0x1000014:
-        return NavigationKey::kYawRight;
-      case 0xff52:
-      case 0x1000013:
-        return NavigationKey::kPitchUp;
-      case 0xff54:
-      case 0x1000015:
-        return NavigationKey::kPitchDown;
-      default:
-        return std::nullopt;
-    }
-  }
-
-  std::optional<ViewEvent> dueEvent() {
-    const std::int64_t now = clock_.nowMicroseconds();
-    if (pending_press_) return std::exchange(pending_press_, std::nullopt);
-    if (holding_ && now >= release_at_us_) {
-      holding_ = false;
-      return ViewEvent{now, ViewEventKind::kRelease, held_key_};
-    }
-    if (now >= next_tick_us_) {
-      next_tick_us_ +=
-          kTickPeriodMicroseconds * ((now - next_tick_us_) / kTickPeriodMicroseconds + 1);
-      return ViewEvent{now, ViewEventKind::kTick};
-    }
-    return std::nullopt;
-  }
-
-  const Clock& clock_;
-  std::int64_t next_tick_us_;
-  bool holding_ = false;  // a navigation key is down (its auto-repeat keeps coming)
-  NavigationKey held_key_ = NavigationKey::kYawLeft;
-  std::int64_t release_at_us_ = 0;
-  std::optional<ViewEvent> pending_press_;
-  bool save_requested_ = false;
-};
-
-// Frames shown in the last second.
-class FrameRate {
- public:
-  int update(std::int64_t now_us) {
-    shown_us_.push_back(now_us);
-    while (!shown_us_.empty() && shown_us_.front() <= now_us - 1'000'000)
-      shown_us_.erase(shown_us_.begin());
-    return static_cast<int>(shown_us_.size());
-  }
-
- private:
-  std::vector<std::int64_t> shown_us_;
-};
-
-// The output-file rule of every tool (cli/output_file.h): whole or nothing, and an existing
-// name that is not a regular file is refused, not replaced.
-void savePng(const cv::Mat& bgr, int number) {
-  const std::string name = "octopoint-view-" + std::to_string(number) + ".png";
-  try {
-    std::vector<std::uint8_t> png;
-    if (!cv::imencode(".png", bgr, png)) throw cli::Error(name + ": cannot encode the PNG");
-    cli::writeFileAtomically(name, {reinterpret_cast<const char*>(png.data()), png.size()});
-  } catch (const std::exception& error) {
-    cli::printError("octopoint-view", error.what());
-    return;
-  }
-  std::printf("saved %s\n", name.c_str());
-  std::fflush(stdout);
-}
-
 int run(int argc, char** argv) {
   const Options options = parseOptions(argc, argv);
   const std::unique_ptr<LoadedModel> loaded = loadModel(options.model_name, options.model_file);
-  const ModelView* model = &*loaded->view;
-
-  InteractiveConfig config;
-  config.width = options.width;
-  config.height = options.height;
-  const SteadyClock clock;
-  DualResolutionRenderer renderer(model->level(0), model->finestLevel(), clock, config);
-  KeyboardEventSource keyboard(clock);
-  FrameRate frame_rate;
-  cv::namedWindow(kWindow, cv::WINDOW_AUTOSIZE | cv::WINDOW_GUI_NORMAL);  // no Qt toolbar
-  cv::Mat rgb(options.height, options.width, CV_8UC3);
-  cv::Mat bgr, shown;
-  std::uint64_t shown_generation = 0;
-  int saved = 0;
-  while (true) {
-    if (const std::optional<ViewEvent> event = keyboard.next(10)) {
-      if (event->kind == ViewEventKind::kQuit) break;
-      renderer.handle(*event);
-    }
-    FrameInfo info;
-    const Framebuffer* frame = renderer.acquireLatest(&info);
-    if (frame != nullptr && info.generation != shown_generation) {
-      shown_generation = info.generation;
-      resolveToRgb(*frame, *model, kBackground, {rgb.data, rgb.total() * 3});
-      cv::cvtColor(rgb, bgr, cv::COLOR_RGB2BGR);
-      cv::resize(bgr, shown, {}, options.scale, options.scale, cv::INTER_NEAREST);
-      char overlay[96];
-      std::snprintf(overlay, sizeof overlay, "%s  %lld.%01lld ms  %d fps%s",
-                    info.source == FrameSource::kFine ? "H" : "L",
-                    static_cast<long long>(info.render_us / 1000),
-                    static_cast<long long>(info.render_us / 100 % 10),
-                    frame_rate.update(clock.nowMicroseconds()), info.view.fill ? "  fill" : "");
-      cv::putText(shown, overlay, {8, 20}, cv::FONT_HERSHEY_SIMPLEX, 0.55, {0, 0, 0}, 3,
-                  cv::LINE_AA);
-      cv::putText(shown, overlay, {8, 20}, cv::FONT_HERSHEY_SIMPLEX, 0.55, {255, 255, 255}, 1,
-                  cv::LINE_AA);
-      cv::imshow(kWindow, shown);
-    }
-    if (keyboard.takeSaveRequest() && frame != nullptr) savePng(bgr, ++saved);
-  }
-  cv::destroyAllWindows();
+  Viewer viewer(options, *loaded->view);
+  viewer.run();
   return 0;
 }
 
 }  // namespace
 
-int main(int argc, char** argv) { return octopoint::cli::runTool("octopoint-view", argc, argv, run); }
+int main(int argc, char** argv) {
+  return octopoint::cli::runTool("octopoint-view", argc, argv, run);
+}

@@ -1,0 +1,79 @@
+#pragma once
+// The viewer's window on SDL2: a resizable window, its events (keys going down and up, the mouse
+// wheel, size changes), a wake-up any thread may send, and presenting an RGB image.
+//
+// SDL2 rather than OpenCV's highgui because highgui reports key presses only: "a key is held" had
+// to be guessed from the keyboard's auto-repeat, so every hold began with a stutter. SDL2 reports
+// each key's press and release (auto-repeats flagged as such), which is what the dual-resolution
+// renderer's L/H logic runs on. The window is a plain software surface: no GPU, no OpenGL, so it
+// shows the same pixels on a desktop, over ssh -X and under Xvfb.
+
+#include <SDL2/SDL.h>
+
+#include <atomic>
+#include <cstddef>
+#include <cstdint>
+#include <optional>
+#include <stdexcept>
+#include <string>
+
+namespace octopoint {
+
+struct WindowError : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+struct WindowEvent {
+  enum class Kind : std::uint8_t {
+    kKeyDown,    // key (repeat: an auto-repeat of a key already down)
+    kKeyUp,      // key
+    kWheel,      // wheel_steps notches, > 0 away from the user
+    kResized,    // the window is now width x height pixels
+    kExposed,    // the window must be drawn again
+    kFocusLost,  // keys held now will not report their release to us
+    kWake,       // wake() was called
+    kClose,      // the window was closed (or the process was interrupted)
+  };
+  Kind kind = Kind::kWake;
+  SDL_Keycode key = SDLK_UNKNOWN;
+  bool repeat = false;
+  int wheel_steps = 0;
+  int width = 0;
+  int height = 0;
+};
+
+class ViewWindow {
+ public:
+  // Opens a resizable window of width x height pixels that cannot be made smaller than
+  // min_width x min_height. Throws WindowError (one line) when there is no display.
+  ViewWindow(const std::string& title, int width, int height, int min_width, int min_height);
+  ~ViewWindow();
+  ViewWindow(const ViewWindow&) = delete;
+  ViewWindow& operator=(const ViewWindow&) = delete;
+
+  // The next event, waiting at most `timeout_ms` (0: only what is already queued); nullopt when
+  // none came. Events the viewer has no use for (mouse motion, ...) are skipped.
+  std::optional<WindowEvent> next(int timeout_ms);
+
+  // From any thread: makes next() return a kWake event soon. Wakes that come while one is still
+  // queued are merged into it.
+  void wake();
+
+  int width() const;
+  int height() const;
+
+  // Shows a width x height RGB888 image (rows `stride` bytes apart) at the window's top left; the
+  // part of the window it does not cover is filled with `background` (0xRRGGBB).
+  void present(const std::uint8_t* rgb, int width, int height, std::size_t stride,
+               std::uint32_t background);
+
+ private:
+  std::optional<WindowEvent> translate(const SDL_Event& event);
+
+  SDL_Window* window_ = nullptr;
+  std::uint32_t wake_event_type_ = 0;
+  std::atomic<bool> wake_queued_{false};
+  float wheel_remainder_ = 0;  // trackpads scroll in fractions of a notch
+};
+
+}  // namespace octopoint
