@@ -5,13 +5,15 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <cstdlib>
+#include <functional>
 #include <iostream>
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 #include <span>
-#include <stdexcept>
 #include <string>
 #include <utility>
+#include <vector>
 
 #include "app/model_source.h"
 #include "app/view_keys.h"
