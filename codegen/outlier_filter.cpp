@@ -46,16 +46,9 @@ Scan removeOutliers(const Scan& scan, const OutlierRemoval& rule, const std::str
   const double stddev = std::sqrt(square_sum / static_cast<double>(count - 1));
   const double limit = mean + rule.stddev_factor * stddev;
 
-  Scan kept;
-  kept.shading = scan.shading;
-  kept.points_in_file = scan.points_in_file;
-  kept.dropped_non_finite = scan.dropped_non_finite;
-  kept.organized = scan.organized;
-  for (std::size_t i = 0; i < count; ++i) {
-    if (mean_distance[i] > limit) continue;
-    kept.positions.push_back(scan.positions[i]);
-    if (!scan.colours.empty()) kept.colours.push_back(scan.colours[i]);
-  }
+  std::vector<std::uint8_t> inlier(count);
+  for (std::size_t i = 0; i < count; ++i) inlier[i] = mean_distance[i] <= limit;
+  Scan kept = keepPoints(scan, inlier);
   if (kept.positions.empty()) throw PrepareError(scan_path + ": outlier removal left no point");
   return kept;
 }

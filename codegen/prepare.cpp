@@ -42,21 +42,15 @@ VoxelSet keepVisible(const VoxelSet& voxels, const std::vector<std::uint8_t>& vi
 }  // namespace
 
 Scan cropScan(const Scan& scan, const CropBox& box, const std::string& scan_path) {
-  Scan cropped;
-  cropped.shading = scan.shading;
-  cropped.points_in_file = scan.points_in_file;
-  cropped.dropped_non_finite = scan.dropped_non_finite;
-  cropped.organized = scan.organized;
+  std::vector<std::uint8_t> inside(scan.positions.size());
   for (std::size_t i = 0; i < scan.positions.size(); ++i) {
     const auto& p = scan.positions[i];
-    bool inside = true;
-    for (std::size_t axis = 0; axis < 3; ++axis) {
-      inside = inside && p[axis] >= box.low[axis] && p[axis] <= box.high[axis];
-    }
-    if (!inside) continue;
-    cropped.positions.push_back(p);
-    if (!scan.colours.empty()) cropped.colours.push_back(scan.colours[i]);
+    bool in = true;
+    for (std::size_t axis = 0; axis < 3; ++axis)
+      in = in && p[axis] >= box.low[axis] && p[axis] <= box.high[axis];
+    inside[i] = in;
   }
+  Scan cropped = keepPoints(scan, inside);
   if (cropped.positions.empty()) {
     throw PrepareError(scan_path + ": no point of the " + std::to_string(scan.positions.size()) +
                        " points lies inside the crop box");

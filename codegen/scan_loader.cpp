@@ -178,6 +178,7 @@ void collectPoints(const fs::path& path, const pcl::PointCloud<PointT>& points, 
       }
     }
     scan.positions.push_back(xyz);
+    if (scan.organized) scan.grid_index.push_back(static_cast<std::uint32_t>(i));
     keep_extra(p);
   }
 }
@@ -234,6 +235,10 @@ Scan loadScan(const fs::path& path) {
   Scan scan;
   scan.points_in_file = declared_points;
   scan.organized = cloud.height > 1;
+  if (scan.organized) {
+    scan.grid_width = cloud.width;
+    scan.grid_height = cloud.height;
+  }
   scan.shading = pickShading(path, cloud);
   if (scan.shading == ScanShading::kColour) {
     pcl::PointCloud<pcl::PointXYZRGBA> points;
@@ -261,6 +266,23 @@ Scan loadScan(const fs::path& path) {
          "every point");
   }
   return scan;
+}
+
+Scan keepPoints(const Scan& scan, const std::vector<std::uint8_t>& keep) {
+  Scan kept;
+  kept.shading = scan.shading;
+  kept.points_in_file = scan.points_in_file;
+  kept.dropped_non_finite = scan.dropped_non_finite;
+  kept.organized = scan.organized;
+  kept.grid_width = scan.grid_width;
+  kept.grid_height = scan.grid_height;
+  for (std::size_t i = 0; i < scan.positions.size(); ++i) {
+    if (!keep[i]) continue;
+    kept.positions.push_back(scan.positions[i]);
+    if (!scan.colours.empty()) kept.colours.push_back(scan.colours[i]);
+    if (!scan.grid_index.empty()) kept.grid_index.push_back(scan.grid_index[i]);
+  }
+  return kept;
 }
 
 }  // namespace octopoint::prepare

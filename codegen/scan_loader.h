@@ -24,7 +24,17 @@ struct Scan {
   std::size_t points_in_file = 0;  // including the dropped ones
   std::size_t dropped_non_finite = 0;
   bool organized = false;  // height > 1 in the file
+  // An organized scan's grid (rows of a depth image) and, per position, the index
+  // row * grid_width + column it was read from, so that a surface can be built from grid
+  // neighbours (app/reference_surface.h). Both stay zero and grid_index empty when not organized.
+  std::uint32_t grid_width = 0;
+  std::uint32_t grid_height = 0;
+  std::vector<std::uint32_t> grid_index;
 };
+
+// The points of `scan` with keep[i] != 0, in order, with their colours and grid indices; the
+// file's counts and the grid's size are kept. `keep` has one entry per position.
+Scan keepPoints(const Scan& scan, const std::vector<std::uint8_t>& keep);
 
 // A finite coordinate with a larger magnitude is refused as absurd: no range scanner measures a
 // million units in any unit, and such values would wreck the later fit into the cube.

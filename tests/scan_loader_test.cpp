@@ -22,6 +22,7 @@
 #include <string>
 #include <vector>
 
+#include "codegen/prepare.h"
 #include "codegen/prepare_error.h"
 
 namespace octopoint::prepare {
@@ -313,7 +314,7 @@ TEST_F(ScanLoaderTest, NanAndInfinitePointsAreDroppedAndCountedWithTheirColours)
   }
 }
 
-TEST_F(ScanLoaderTest, OrganizedFlagIsSetOnlyWhenHeightExceedsOne) {
+TEST_F(ScanLoaderTest, OrganizedScanKeepsItsGridAndEachPointsPlaceInIt) {
   pcl::PointCloud<pcl::PointXYZ> organized(3, 2);
   for (int i = 0; i < 6; ++i) setPosition(organized[i], i);
   organized[4].x = kNaN;  // organized scans keep NaN placeholders
@@ -323,11 +324,25 @@ TEST_F(ScanLoaderTest, OrganizedFlagIsSetOnlyWhenHeightExceedsOne) {
     EXPECT_TRUE(scan.organized);
     EXPECT_EQ(scan.points_in_file, 6u);
     EXPECT_EQ(scan.positions.size(), 5u);
+    EXPECT_EQ(scan.grid_width, 3u);
+    EXPECT_EQ(scan.grid_height, 2u);
+    EXPECT_EQ(scan.grid_index, (std::vector<std::uint32_t>{0, 1, 2, 3, 5}));  // 4 was NaN
+
+    // Cropping keeps each survivor's place in the grid.
+    CropBox box;
+    box.low = positionOf(1);
+    box.high = positionOf(3);
+    const Scan cropped = cropScan(scan, box, "organized.pcd");
+    EXPECT_EQ(cropped.grid_width, 3u);
+    EXPECT_EQ(cropped.grid_index, (std::vector<std::uint32_t>{1, 2, 3}));
 
     pcl::PointCloud<pcl::PointXYZ> flat = organized;
     flat.width = 6;
     flat.height = 1;
-    EXPECT_FALSE(loadScan(write(flat, encoding, "flat")).organized);
+    const Scan flat_scan = loadScan(write(flat, encoding, "flat"));
+    EXPECT_FALSE(flat_scan.organized);
+    EXPECT_EQ(flat_scan.grid_width, 0u);
+    EXPECT_TRUE(flat_scan.grid_index.empty());
   }
 }
 
