@@ -1,21 +1,46 @@
 #pragma once
-// The dense reference render the speed/accuracy trade is measured against (docs/tradeoff.md):
-// every point of the scan (after the same crop and axes as the model), in double precision, with
-// its own colour (not the palette's), through the same orthographic camera, nearest point per pixel.
+// The dense reference render the speed/accuracy trade is measured against (docs/tradeoff.md): the
+// scan's surface (app/reference_surface.h) drawn in double precision, with the scan's own colours
+// (not the palette's), through the same orthographic camera as octopoint, z-buffered.
+//
+// Coverage is decided at pixel centres: pixel (col, row) spans [col, col + 1) x [row, row + 1) of
+// the screen (octopoint's own convention: a point at x lands on pixel floor(x)), and
+//   - a triangle covers it when its centre (col + 0.5, row + 0.5) lies inside the projected
+//     triangle or on its edge; depth and colour are interpolated linearly across the triangle
+//     (barycentric weights of the centre: Gouraud colour, rounded to nearest);
+//   - a splat covers the pixel its point falls in, and every pixel whose centre lies within the
+//     splat's projected radius of the point; depth and colour are the point's (a flat disc facing
+//     the viewer).
+// The nearest (smallest z) wins each pixel. The covered pixels are the object's silhouette.
 
 #include <opencv2/core.hpp>
 
+#include "app/reference_surface.h"
 #include "codegen/cube_fit.h"
-#include "codegen/scan_loader.h"
 #include "renderer/camera.h"
 #include "renderer/model.h"
 
 namespace octopoint::tradeoff {
 
-// `fit` is the cube the model was fitted into (so both renders share the same framing); `scan`
-// holds the points in the model's axes. Returns an 8-bit BGR image and sets `covered` (CV_8U,
-// 255 where some point landed) to the reference's object mask.
-cv::Mat renderReference(const prepare::Scan& scan, const prepare::CubeFit& fit, const Camera& camera,
-                        Rgb background, cv::Mat* covered);
+// The reference's projection, in double precision: the camera's rotation (referenceRotation) about
+// the fitted cube's centre, scaled so that the cube's edge spans zoom x min(width, height) pixels,
+// centred on the frame plus the pan. x and y are in pixels, z in scan units (smaller is nearer).
+class ScreenProjection {
+ public:
+  ScreenProjection(const prepare::CubeFit& fit, const Camera& camera);
+  std::array<double, 3> operator()(const std::array<float, 3>& position) const;
+  double pixelsPerUnit() const { return pixels_per_unit_; }
+
+ private:
+  std::array<std::array<double, 3>, 3> rotation_;
+  std::array<double, 3> centre_;
+  double pixels_per_unit_;
+  double screen_x_, screen_y_;
+};
+
+// `fit` is the cube the model was fitted into (so both renders share the same framing). Returns an
+// 8-bit BGR image and sets `covered` (CV_8U, 255 where the surface is) to the object's silhouette.
+cv::Mat renderReference(const ReferenceSurface& surface, const prepare::CubeFit& fit,
+                        const Camera& camera, Rgb background, cv::Mat* covered);
 
 }  // namespace octopoint::tradeoff

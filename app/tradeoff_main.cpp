@@ -1,293 +1,196 @@
-// octopoint-tradeoff: sweeps the speed/accuracy trade for one scan (docs/tradeoff.md): depth,
-// decoder variant, fraction bits and hole filling; writes a CSV row per configuration and a plot of
-// time against quality.
-#include <algorithm>
-#include <chrono>
+// octopoint-tradeoff: measures the speed/accuracy trade of octopoint on one scan
+// (docs/tradeoff.md), either over depths and variants at one view or, with --sweep-views, over
+// sizes and zooms.
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <iostream>
 #include <string>
 #include <vector>
 
-#include <opencv2/imgcodecs.hpp>
-#include <opencv2/imgproc.hpp>
-
-#include "app/image_quality.h"
-#include "app/reference_render.h"
-#include "cli/arguments.h"
-#include "cli/error.h"
-#include "cli/numbers.h"
-#include "cli/output_file.h"
-#include "cli/real_numbers.h"
-#include "cli/run_tool.h"
-#include "cli/text.h"
-#include "codegen/cube_fit.h"
-#include "codegen/model_writer.h"
-#include "codegen/prepare.h"
+#include "app/tradeoff.h"
 #include "codegen/prepare_error.h"
-#include "renderer/hole_fill.h"
-#include "renderer/render.h"
 
 namespace {
 
 namespace fs = std::filesystem;
 using namespace octopoint;
+using prepare::PrepareError;
 
 constexpr const char* kUsage = R"(usage: octopoint-tradeoff SCAN [options]
+       octopoint-tradeoff SCAN --sweep-views [options]
 
-Measures the speed/accuracy trade of octopoint on one scan: for every depth, decoder variant,
-fraction bits and hole filling on/off it renders one view and records the time per frame, the
-model size and the quality against a dense double precision render of the scan's own points
-(docs/tradeoff.md defines it). Writes OUTDIR/tradeoff.csv and OUTDIR/tradeoff.png.
+Measures the speed/accuracy trade of octopoint on one scan against a dense double precision
+render of the scan's own surface (docs/tradeoff.md defines it).
+
+Without --sweep-views: for every depth, decoder variant, fraction bits and hole filling on/off it
+renders one view and records the time per frame, the model size and the quality. Writes
+OUTDIR/tradeoff.csv, OUTDIR/tradeoff.png and OUTDIR/tradeoff_reference.png.
+
+With --sweep-views: for every frame size and zoom it draws today's renderer (the finest depth of
+the 7,8 model, one pixel per voxel, hole filling off and on) and octopoint's current one (depth
+auto, footprint splats), and records time, depth, splat size, empty share of the silhouette, PSNR
+and SSIM. Writes OUTDIR/sweep.csv and OUTDIR/sweep.md (the table and the issue's targets).
 
   --axes y-down|y-up     the scan's axes (as octopoint-prepare; default y-down)
   --crop X0,Y0,Z0,X1,Y1,Z1  keep the points inside this box (as octopoint-prepare)
-  --yaw DEG, --pitch DEG the view, |DEG| <= 1e6 (default 0, 0)
-  --size WxH             framebuffer size, each side 1..8192, at most 16777216 pixels
-                         (default 320x240)
-  --depths LIST          octree depths, strictly ascending, each 1..16 (default 6,7,8,9,10)
-  --fraction-bits LIST   fixed-point fraction bits of the positions, strictly ascending, each
-                         1..24 (default 8,12,15,20); a setting the camera refuses for this view
-                         (too few integer bits for the frame) is an error
-  -o, --output OUTDIR    where to write (default out); the three files appear together at the
-                         end or not at all, and existing ones must be regular files
+  --yaw DEG, --pitch DEG the view (default 0, 0)
+  --size WxH             framebuffer size (default 320x240)
+  --zoom X               magnification, > 0 (default 1: the model cube spans the shorter side)
+  --depths LIST          octree depths (default 6,7,8,9,10)
+  --fraction-bits LIST   fixed-point fraction bits of the positions (default 8,12,15,20)
+  --sweep-views          sweep sizes and zooms instead (the options below)
+  --sizes LIST           WxH,WxH,... (default 176x208,320x240,640x480,1280x960,1920x1080)
+  --zooms LIST           X,X,... (default 0.25,0.5,1,2,4,8)
+  --label NAME           names the scan in the sweep's outputs (default: the file's stem)
+  --pictures             also write OUTDIR/pictures/WxH_zoomX.png: reference | before | after
+  -o, --output OUTDIR    where to write (default out)
   -h, --help             show this help
-
-SCAN is a regular file of at most 1 GiB. On any error prints one line on stderr and exits with
-status 1, writing nothing.
 )";
-
-constexpr Rgb kBackground{236, 236, 240};
-// What the sweep writes into OUTDIR, all together at the end or nothing.
-constexpr const char* kOutputNames[] = {"tradeoff.csv", "tradeoff.png", "tradeoff_reference.png"};
-constexpr double kMinSecondsPerConfiguration = 0.05;
-constexpr int kMaxFramesPerConfiguration = 200;
 
 struct Options {
   std::string scan;
   prepare::PrepareOptions prepare;
-  Camera camera;
-  std::vector<int> depths = {6, 7, 8, 9, 10};
-  std::vector<int> fraction_bits = {8, 12, 15, 20};
+  tradeoff::DepthSweepOptions depth_sweep;
+  tradeoff::ViewSweepOptions view_sweep;
+  bool sweep_views = false;
+  bool label_given = false;
   fs::path output = "out";
 };
 
-struct Row {
-  int depth;
-  std::string variant;
-  int fraction_bits;
-  bool fill;
-  double ms_per_frame;
-  std::size_t model_bytes;
-  double bits_per_point;
-  double psnr;
-  double ssim;
-  double empty_inside;  // share of the reference's object pixels left empty
-};
+// Splits "a,b,c" and parses each item with `parse`, which throws on a bad one.
+template <typename Parse>
+auto parseEach(const std::string& flag, const std::string& text, Parse parse) {
+  std::vector<decltype(parse(std::string()))> values;
+  std::size_t at = 0;
+  while (at <= text.size()) {
+    const std::size_t comma = std::min(text.find(',', at), text.size());
+    const std::string item = text.substr(at, comma - at);
+    if (item.empty()) throw PrepareError(flag + ": '" + text + "' has an empty item");
+    values.push_back(parse(item));
+    at = comma + 1;
+  }
+  return values;
+}
 
-// The largest frame the sweep draws: the same cap as octopoint-render's images.
-constexpr std::int64_t kMaxFramePixels = std::int64_t{4096} * 4096;
+int parseInteger(const std::string& flag, const std::string& text) {
+  char* end = nullptr;
+  errno = 0;
+  const long value = std::strtol(text.c_str(), &end, 10);
+  if (text.empty() || *end != '\0' || errno != 0 || value < -1000000 || value > 1000000) {
+    throw PrepareError(flag + ": '" + text + "' is not an integer");
+  }
+  return static_cast<int>(value);
+}
+
+double parseZoom(const std::string& flag, const std::string& text) {
+  char* end = nullptr;
+  const double zoom = std::strtod(text.c_str(), &end);
+  const double raw = std::round(zoom * Q16::kOneRaw);
+  if (text.empty() || *end != '\0' || !std::isfinite(zoom) || raw < 1 || raw > 0x7fffffff) {
+    throw PrepareError(flag + ": '" + text + "' is not a zoom in 2^-16 .. 32767");
+  }
+  return zoom;
+}
+
+std::pair<int, int> parseSize(const std::string& flag, const std::string& text) {
+  int width = 0, height = 0;
+  char tail = 0;
+  if (std::sscanf(text.c_str(), "%dx%d%c", &width, &height, &tail) != 2 || width < 1 ||
+      height < 1 || width > kMaxViewportSide || height > kMaxViewportSide) {
+    throw PrepareError(flag + ": '" + text + "' is not WxH with sides 1.." +
+                       std::to_string(kMaxViewportSide));
+  }
+  return {width, height};
+}
 
 Options parseOptions(int argc, char** argv) {
   Options options;
-  cli::ArgumentReader args(argc, argv);
-  while (args.next()) {
-    if (args.is("-h") || args.is("--help")) {
+  Camera& camera = options.depth_sweep.camera;
+  for (int i = 1; i < argc; ++i) {
+    const std::string arg = argv[i];
+    auto value = [&]() -> std::string {
+      if (i + 1 >= argc) throw PrepareError(arg + ": missing value (see --help)");
+      return argv[++i];
+    };
+    auto integers = [&](const std::string& text) {
+      return parseEach(arg, text, [&](const std::string& item) { return parseInteger(arg, item); });
+    };
+    if (arg == "-h" || arg == "--help") {
       std::cout << kUsage;
       std::exit(0);
-    } else if (args.is("--axes")) {
-      options.prepare.axes = cli::parseChoice(args.name(), args.value(), {"y-down", "y-up"}) == 0
-                                 ? prepare::ScanAxes::kYDown
-                                 : prepare::ScanAxes::kYUp;
-    } else if (args.is("--crop")) {
-      options.prepare.crop = prepare::parseCropBox(args.name(), args.value());
-    } else if (args.is("--yaw")) {
-      options.camera.yaw = cli::parseDegrees(args.name(), args.value());
-    } else if (args.is("--pitch")) {
-      options.camera.pitch = cli::parseDegrees(args.name(), args.value());
-    } else if (args.is("--size")) {
-      const cli::FrameSize size =
-          cli::parseFrameSize(args.name(), args.value(), 1, kMaxViewportSide, kMaxFramePixels);
-      options.camera.width = size.width;
-      options.camera.height = size.height;
-    } else if (args.is("--depths")) {
-      options.depths = cli::parseIntList(args.name(), args.value(), 1, format::kMaxDepth, format::kMaxDepth,
-                                         cli::ListOrder::kStrictlyAscending);
-    } else if (args.is("--fraction-bits")) {
-      options.fraction_bits = cli::parseIntList(args.name(), args.value(), kMinFractionBits, kMaxFractionBits,
-                                                kMaxFractionBits, cli::ListOrder::kStrictlyAscending);
-    } else if (args.is("-o") || args.is("--output")) {
-      options.output = args.value();
-    } else if (args.isPlain() && options.scan.empty()) {
-      options.scan = args.current();
+    } else if (arg == "--axes") {
+      const std::string axes = value();
+      if (axes != "y-down" && axes != "y-up")
+        throw PrepareError("--axes: '" + axes + "' is not y-down or y-up");
+      options.prepare.axes = axes == "y-up" ? prepare::ScanAxes::kYUp : prepare::ScanAxes::kYDown;
+    } else if (arg == "--crop") {
+      options.prepare.crop = prepare::parseCropBox(arg, value());
+    } else if (arg == "--yaw") {
+      camera.yaw = Angle::fromDegrees(parseInteger(arg, value()));
+    } else if (arg == "--pitch") {
+      camera.pitch = Angle::fromDegrees(parseInteger(arg, value()));
+    } else if (arg == "--size") {
+      std::tie(camera.width, camera.height) = parseSize(arg, value());
+    } else if (arg == "--zoom") {
+      camera.zoom = Q16::fromRaw(
+          static_cast<std::int32_t>(std::round(parseZoom(arg, value()) * Q16::kOneRaw)));
+    } else if (arg == "--depths") {
+      options.depth_sweep.depths = integers(value());
+    } else if (arg == "--fraction-bits") {
+      options.depth_sweep.fraction_bits = integers(value());
+    } else if (arg == "--sweep-views") {
+      options.sweep_views = true;
+    } else if (arg == "--sizes") {
+      options.view_sweep.sizes =
+          parseEach(arg, value(), [&](const std::string& item) { return parseSize(arg, item); });
+    } else if (arg == "--zooms") {
+      options.view_sweep.zooms =
+          parseEach(arg, value(), [&](const std::string& item) { return parseZoom(arg, item); });
+    } else if (arg == "--label") {
+      options.view_sweep.label = value();
+      options.label_given = true;
+    } else if (arg == "--pictures") {
+      options.view_sweep.pictures = true;
+    } else if (arg == "-o" || arg == "--output") {
+      options.output = value();
+    } else if (!arg.empty() && arg[0] == '-') {
+      throw PrepareError("unknown option '" + arg + "' (see --help)");
+    } else if (!options.scan.empty()) {
+      throw PrepareError("more than one SCAN given: '" + options.scan + "' and '" + arg + "'");
     } else {
-      args.refuseUnknown();
+      options.scan = arg;
     }
   }
-  if (options.scan.empty()) throw cli::Error("no SCAN given (see --help)");
-  std::error_code error;
-  if (fs::exists(options.output, error) && !fs::is_directory(options.output, error)) {
-    throw cli::Error(cli::displayPath(options.output) + ": the output path exists and is not a directory");
-  }
-  for (const char* name : kOutputNames) cli::checkOutputFile(options.output / name);
+  if (options.scan.empty()) throw PrepareError("no SCAN given (see --help)");
+  options.view_sweep.camera = camera;
+  if (!options.label_given) options.view_sweep.label = fs::path(options.scan).stem().string();
   return options;
-}
-
-cv::Mat toImage(const Framebuffer& frame, const ModelView& model) {
-  cv::Mat rgb(frame.height(), frame.width(), CV_8UC3);
-  resolveToRgb(frame, model, kBackground, {rgb.data, rgb.total() * 3});
-  cv::Mat bgr;
-  cv::cvtColor(rgb, bgr, cv::COLOR_RGB2BGR);
-  return bgr;
-}
-
-// Median milliseconds per frame over repeated frames (at least kMinSecondsPerConfiguration).
-template <typename DrawFrame>
-double medianMilliseconds(DrawFrame draw) {
-  std::vector<double> times;
-  const auto start = std::chrono::steady_clock::now();
-  do {
-    const auto before = std::chrono::steady_clock::now();
-    draw();
-    times.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - before).count());
-  } while (static_cast<int>(times.size()) < kMaxFramesPerConfiguration &&
-           std::chrono::steady_clock::now() - start < std::chrono::duration<double>(kMinSecondsPerConfiguration));
-  std::nth_element(times.begin(), times.begin() + static_cast<std::ptrdiff_t>(times.size() / 2), times.end());
-  return times[times.size() / 2];
-}
-
-// Time (log scale) against PSNR, one point per variant, depth and hole filling, at the default
-// fraction bits (the CSV has every fraction bits setting).
-cv::Mat drawPlot(const std::vector<Row>& rows) {
-  constexpr int kWidth = 900, kHeight = 600, kMargin = 70;
-  cv::Mat plot(kHeight, kWidth, CV_8UC3, cv::Scalar(255, 255, 255));
-  std::vector<const Row*> shown;
-  for (const Row& r : rows) {
-    if (r.fraction_bits == kDefaultFractionBits) shown.push_back(&r);
-  }
-  double min_ms = 1e9, max_ms = 0, min_psnr = 1e9, max_psnr = 0;
-  for (const Row* r : shown) {
-    min_ms = std::min(min_ms, r->ms_per_frame);
-    max_ms = std::max(max_ms, r->ms_per_frame);
-    min_psnr = std::min(min_psnr, r->psnr);
-    max_psnr = std::max(max_psnr, r->psnr);
-  }
-  const double log_low = std::floor(std::log10(min_ms)), log_high = std::ceil(std::log10(max_ms));
-  const double psnr_low = std::floor(min_psnr) - 1, psnr_high = std::ceil(max_psnr) + 1;
-  auto at = [&](double ms, double psnr) {
-    const double u = (std::log10(ms) - log_low) / (log_high - log_low);
-    const double v = (psnr - psnr_low) / (psnr_high - psnr_low);
-    return cv::Point(kMargin + static_cast<int>(u * (kWidth - 2 * kMargin)),
-                     kHeight - kMargin - static_cast<int>(v * (kHeight - 2 * kMargin)));
-  };
-  const cv::Scalar black(0, 0, 0), grey(210, 210, 210);
-  for (double decade = log_low; decade <= log_high; ++decade) {
-    const cv::Point p = at(std::pow(10.0, decade), psnr_low);
-    cv::line(plot, p, {p.x, kMargin}, grey);
-    char label[32];
-    std::snprintf(label, sizeof label, "%g ms", std::pow(10.0, decade));
-    cv::putText(plot, label, {p.x - 20, kHeight - kMargin + 20}, cv::FONT_HERSHEY_SIMPLEX, 0.45, black);
-  }
-  for (double db = psnr_low; db <= psnr_high; db += 5) {
-    const cv::Point p = at(std::pow(10.0, log_low), db);
-    cv::line(plot, p, {kWidth - kMargin, p.y}, grey);
-    cv::putText(plot, std::to_string(static_cast<int>(db)) + " dB", {10, p.y + 5}, cv::FONT_HERSHEY_SIMPLEX, 0.45, black);
-  }
-  cv::putText(plot, "time per frame (log scale)", {kWidth / 2 - 110, kHeight - 20}, cv::FONT_HERSHEY_SIMPLEX, 0.6, black);
-  cv::putText(plot, "PSNR against the dense reference; dot: hole filling on, ring: off, x: floating point",
-              {kMargin, 30}, cv::FONT_HERSHEY_SIMPLEX, 0.5, black);
-  const cv::Scalar depth_colour[] = {{180, 119, 31}, {14, 127, 255}, {44, 160, 44}, {40, 39, 214}, {189, 103, 148}, {75, 86, 140}};
-  for (const Row* r : shown) {
-    const cv::Scalar colour = depth_colour[static_cast<std::size_t>(std::clamp(r->depth - 6, 0, 5))];
-    if (r->variant.rfind("float_", 0) == 0) cv::drawMarker(plot, at(r->ms_per_frame, r->psnr), colour, cv::MARKER_TILTED_CROSS, 9);
-    else cv::circle(plot, at(r->ms_per_frame, r->psnr), r->fill ? 5 : 4, colour, r->fill ? cv::FILLED : 1);
-  }
-  for (int d = 0; d < 5; ++d) {
-    cv::circle(plot, {kWidth - 150, kHeight - kMargin - 120 + 22 * d}, 5, depth_colour[d], cv::FILLED);
-    cv::putText(plot, "depth " + std::to_string(d + 6), {kWidth - 135, kHeight - kMargin - 115 + 22 * d},
-                cv::FONT_HERSHEY_SIMPLEX, 0.5, black);
-  }
-  return plot;
-}
-
-std::string encodePng(const cv::Mat& image) {
-  std::vector<std::uint8_t> png;
-  if (!cv::imencode(".png", image, png)) throw cli::Error("cannot encode a PNG");
-  return {png.begin(), png.end()};
 }
 
 int run(int argc, char** argv) {
   const Options options = parseOptions(argc, argv);
-  const prepare::Scan scan = prepare::loadScan(options.scan);
-  const prepare::Scan points = prepare::modelPoints(scan, options.scan, options.prepare);
-  const prepare::CubeFit fit = prepare::fitCube(points.positions, options.scan);
-  cv::Mat object_mask;
-  const cv::Mat reference = tradeoff::renderReference(points, fit, options.camera, kBackground, &object_mask);
-  const double object_pixels = std::max(1, cv::countNonZero(object_mask));
-
-  std::vector<Row> rows;
-  for (int depth : options.depths) {
-    prepare::PrepareOptions prepare_options = options.prepare;
-    prepare_options.name = "tradeoff";
-    prepare_options.depths = {depth};
-    const std::vector<std::uint8_t> image =
-        prepare::serializeModel(prepare::prepareModel(scan, options.scan, prepare_options));
-    ModelIssue issue;
-    const std::optional<ModelView> model = ModelView::fromBytes(image, &issue);
-    if (!model) throw prepare::PrepareError(std::string("model at depth ") + std::to_string(depth) + ": " + describe(issue.error));
-    const LevelView& level = model->finestLevel();
-    const std::size_t model_bytes = level.nodes.size() + level.leaves.size();
-    Framebuffer frame(options.camera.width, options.camera.height);
-    HoleFiller filler(options.camera.width);
-    for (const VariantInfo& info : allVariants()) {
-      // Fraction bits change nothing in a floating point variant: one run of those.
-      const std::vector<int> fractions = isFixedPoint(info.variant) ? options.fraction_bits : std::vector<int>{kDefaultFractionBits};
-      for (int bits : fractions) {
-        FrameSetup setup;
-        const CameraError camera_error = buildFrameSetup(options.camera, depth, bits, &setup);
-        if (camera_error != CameraError::kNone) {
-          throw cli::Error("--fraction-bits " + std::to_string(bits) + ": the camera refuses this view at depth " +
-                           std::to_string(depth) + ": " + describe(camera_error));
-        }
-        for (bool fill : {false, true}) {
-          const double ms = medianMilliseconds([&] {
-            frame.clear();
-            renderLevel(info.variant, level, setup, frame);
-            if (fill) filler.fill(frame, bridgeDepthLimit(setup));
-          });
-          const cv::Mat drawn = toImage(frame, *model);
-          int empty_inside = 0;
-          for (int y = 0; y < frame.height(); ++y)
-            for (int x = 0; x < frame.width(); ++x)
-              empty_inside += object_mask.at<std::uint8_t>(y, x) != 0 && !frame.covered(x, y);
-          rows.push_back({depth, std::string(info.name), bits, fill, ms, model_bytes,
-                          8.0 * static_cast<double>(model_bytes) / static_cast<double>(level.leaves.size()),
-                          tradeoff::psnr(reference, drawn), tradeoff::ssim(reference, drawn),
-                          empty_inside / object_pixels});
-        }
-      }
-    }
-    std::fprintf(stderr, "octopoint-tradeoff: depth %d done (%zu voxels)\n", depth, level.leaves.size());
-  }
-
-  std::string csv =
-      "depth,variant,fraction_bits,hole_fill,ms_per_frame,model_bytes,bits_per_point,psnr_db,ssim,empty_inside_share\n";
-  for (const Row& r : rows) {
-    char line[256];
-    std::snprintf(line, sizeof line, "%d,%s,%d,%s,%.4f,%zu,%.3f,%.3f,%.4f,%.4f\n", r.depth, r.variant.c_str(),
-                  r.fraction_bits, r.fill ? "on" : "off", r.ms_per_frame, r.model_bytes, r.bits_per_point, r.psnr,
-                  r.ssim, r.empty_inside);
-    csv += line;
-  }
-  cli::writeFilesAtomically(options.output, {{kOutputNames[0], csv},
-                                             {kOutputNames[1], encodePng(drawPlot(rows))},
-                                             {kOutputNames[2], encodePng(reference)}});
-  std::printf("wrote %s and %s (%zu configurations)\n", (options.output / "tradeoff.csv").c_str(),
-              (options.output / "tradeoff.png").c_str(), rows.size());
+  const tradeoff::Scene scene = tradeoff::loadScene(options.scan, options.prepare);
+  std::error_code error;
+  fs::create_directories(options.output, error);
+  if (error)
+    throw PrepareError(options.output.string() +
+                       ": cannot create the output directory: " + error.message());
+  if (options.sweep_views)
+    tradeoff::runViewSweep(scene, options.view_sweep, options.output);
+  else
+    tradeoff::runDepthSweep(scene, options.depth_sweep, options.output);
   return 0;
 }
 
 }  // namespace
 
-int main(int argc, char** argv) { return octopoint::cli::runTool("octopoint-tradeoff", argc, argv, run); }
+int main(int argc, char** argv) {
+  try {
+    return run(argc, argv);
+  } catch (const std::exception& error) {
+    std::fprintf(stderr, "octopoint-tradeoff: %s\n", error.what());
+  }
+  return 1;
+}

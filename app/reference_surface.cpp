@@ -1,0 +1,119 @@
+// The reference's surface: PCL's OrganizedFastMesh for a depth image, PCL's k-d tree for the splat
+// radii of an unorganized scan. The only file under app/ that includes PCL headers.
+#include "app/reference_surface.h"
+
+#include <pcl/Vertices.h>
+#include <pcl/common/angles.h>
+#include <pcl/kdtree/kdtree_flann.h>
+#include <pcl/point_cloud.h>
+#include <pcl/point_types.h>
+#include <pcl/surface/organized_fast_mesh.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <memory>
+#include <stdexcept>
+
+namespace octopoint::tradeoff {
+namespace {
+
+// The grid's angular pitch: the median over horizontally adjacent points of their distance
+// divided by their distance from the sensor (radians per grid step; a Kinect's is about 1/580).
+double gridPitch(const pcl::PointCloud<pcl::PointXYZ>& grid) {
+  std::vector<double> ratios;
+  for (std::uint32_t row = 0; row < grid.height; ++row) {
+    for (std::uint32_t col = 0; col + 1 < grid.width; ++col) {
+      const pcl::PointXYZ& a = grid.at(col, row);
+      const pcl::PointXYZ& b = grid.at(col + 1, row);
+      if (!pcl::isFinite(a) || !pcl::isFinite(b)) continue;
+      const double range = a.getVector3fMap().cast<double>().norm();
+      if (range > 0)
+        ratios.push_back((a.getVector3fMap() - b.getVector3fMap()).cast<double>().norm() / range);
+    }
+  }
+  if (ratios.empty()) return 0;
+  std::nth_element(ratios.begin(), ratios.begin() + static_cast<std::ptrdiff_t>(ratios.size() / 2),
+                   ratios.end());
+  return ratios[ratios.size() / 2];
+}
+
+void meshGrid(const prepare::Scan& points, ReferenceSurface& surface) {
+  const std::size_t cells = std::size_t{points.grid_width} * points.grid_height;
+  constexpr float kNaN = std::numeric_limits<float>::quiet_NaN();
+  auto grid = std::make_shared<pcl::PointCloud<pcl::PointXYZ>>(
+      points.grid_width, points.grid_height, pcl::PointXYZ(kNaN, kNaN, kNaN));
+  grid->is_dense = false;
+  // Which position sits in each grid cell (-1: none, the scan had NaN there or it was cropped).
+  std::vector<std::int32_t> position_of_cell(cells, -1);
+  for (std::size_t i = 0; i < points.positions.size(); ++i) {
+    const std::uint32_t cell = points.grid_index[i];
+    if (cell >= cells)
+      throw std::invalid_argument("reference surface: grid index outside the scan's grid");
+    const auto& p = points.positions[i];
+    (*grid)[cell] = pcl::PointXYZ(p[0], p[1], p[2]);
+    position_of_cell[cell] = static_cast<std::int32_t>(i);
+  }
+  pcl::OrganizedFastMesh<pcl::PointXYZ> mesher;
+  mesher.setInputCloud(grid);
+  // Of the two triangles a grid quad can be cut into, the cut across the smaller jump in depth.
+  mesher.setTriangulationType(pcl::OrganizedFastMesh<pcl::PointXYZ>::TRIANGLE_ADAPTIVE_CUT);
+  mesher.setViewpoint(Eigen::Vector3f::Zero());
+  const double pitch = gridPitch(*grid);
+  if (pitch > 0) mesher.setMaxEdgeLength(0.0f, static_cast<float>(kMaxEdgeGridSteps * pitch));
+  std::vector<pcl::Vertices> polygons;
+  mesher.reconstruct(polygons);
+  surface.triangles.reserve(polygons.size());
+  for (const pcl::Vertices& polygon : polygons) {
+    std::array<std::uint32_t, 3> triangle{};
+    for (std::size_t k = 0; k < 3; ++k) {
+      triangle[k] = static_cast<std::uint32_t>(
+          position_of_cell[static_cast<std::size_t>(polygon.vertices[k])]);
+    }
+    surface.triangles.push_back(triangle);
+  }
+}
+
+void splatRadii(const prepare::Scan& points, ReferenceSurface& surface) {
+  const std::size_t count = points.positions.size();
+  surface.splat_radius.assign(count, 0.0f);
+  if (count < 2) return;
+  auto cloud = std::make_shared<pcl::PointCloud<pcl::PointXYZ>>();
+  cloud->reserve(count);
+  for (const auto& p : points.positions) cloud->push_back({p[0], p[1], p[2]});
+  pcl::KdTreeFLANN<pcl::PointXYZ> tree;
+  tree.setInputCloud(cloud);
+  // The point itself comes back first (distance 0): ask for one more.
+  const int wanted = static_cast<int>(std::min<std::size_t>(kSplatNeighbour, count - 1)) + 1;
+  pcl::Indices found;
+  std::vector<float> squared;
+  for (std::size_t i = 0; i < count; ++i) {
+    tree.nearestKSearch((*cloud)[i], wanted, found, squared);
+    surface.splat_radius[i] = squared.empty() ? 0.0f : std::sqrt(squared.back());
+  }
+  // Far from everything else a point samples no surface: no splat wider than kMaxSplatMedians
+  // times the median radius.
+  std::vector<float> sorted = surface.splat_radius;
+  std::nth_element(sorted.begin(), sorted.begin() + static_cast<std::ptrdiff_t>(count / 2),
+                   sorted.end());
+  const float limit = static_cast<float>(kMaxSplatMedians) * sorted[count / 2];
+  for (float& radius : surface.splat_radius) radius = std::min(radius, limit);
+}
+
+}  // namespace
+
+ReferenceSurface buildReferenceSurface(const prepare::Scan& points) {
+  ReferenceSurface surface;
+  surface.positions = points.positions;
+  surface.colours = points.colours;
+  const bool gridded = !points.grid_index.empty() &&
+                       points.grid_index.size() == points.positions.size() &&
+                       points.grid_width > 0 && points.grid_height > 1;
+  if (gridded)
+    meshGrid(points, surface);
+  else
+    splatRadii(points, surface);
+  return surface;
+}
+
+}  // namespace octopoint::tradeoff

@@ -1,0 +1,108 @@
+#pragma once
+// octopoint-tradeoff's parts (docs/tradeoff.md): the scan and its reference surface, models
+// prepared in-process, the measures of one frame, and the two sweeps (depths x variants at one
+// view; sizes x zooms, before and after).
+
+#include <algorithm>
+#include <chrono>
+#include <filesystem>
+#include <memory>
+#include <opencv2/core.hpp>
+#include <string>
+#include <vector>
+
+#include "app/reference_surface.h"
+#include "codegen/cube_fit.h"
+#include "codegen/prepare.h"
+#include "renderer/camera.h"
+#include "renderer/framebuffer.h"
+#include "renderer/model.h"
+
+namespace octopoint::tradeoff {
+
+inline constexpr Rgb kBackground{236, 236, 240};
+
+// The scan as the model sees it: the points after crop and axes, their cube and their surface.
+struct Scene {
+  std::string scan_path;
+  prepare::Scan scan;  // as loaded: prepareModel crops and turns it itself
+  prepare::PrepareOptions prepare;
+  prepare::CubeFit fit;
+  ReferenceSurface surface;
+};
+Scene loadScene(const std::string& scan_path, const prepare::PrepareOptions& options);
+
+// A model prepared in memory from the scene at `depths`; the view points into `bytes`.
+struct InMemoryModel {
+  std::vector<std::uint8_t> bytes;
+  std::optional<ModelView> view;
+};
+std::unique_ptr<InMemoryModel> prepareInMemory(const Scene& scene, const std::vector<int>& depths);
+
+// The reference render of the scene for `camera`, with its silhouette (CV_8U, 255 = object).
+struct Reference {
+  cv::Mat image;
+  cv::Mat silhouette;
+};
+Reference referenceFor(const Scene& scene, const Camera& camera);
+
+struct Quality {
+  double psnr = 0;         // dB, cv::PSNR against the reference over all pixels
+  double ssim = 0;         // mean over B, G, R (app/image_quality.h)
+  double empty_share = 0;  // share of the reference's silhouette pixels the frame leaves empty
+};
+// The frame resolved to BGR (palette colours, kBackground where empty).
+cv::Mat toImage(const Framebuffer& frame, const ModelView& model);
+Quality measure(const Reference& reference, const Framebuffer& frame, const ModelView& model);
+
+// How long to repeat a frame for its median time: at least `min_frames` frames and
+// `min_seconds`, at most `max_frames`.
+struct Repeats {
+  int min_frames = 1;
+  double min_seconds = 0.05;
+  int max_frames = 200;
+};
+
+// Median milliseconds per call of `draw` (wall clock).
+template <typename Draw>
+double medianMilliseconds(Draw draw, const Repeats& repeats) {
+  std::vector<double> times;
+  const auto start = std::chrono::steady_clock::now();
+  do {
+    const auto before = std::chrono::steady_clock::now();
+    draw();
+    times.push_back(
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - before)
+            .count());
+  } while (static_cast<int>(times.size()) < repeats.max_frames &&
+           (static_cast<int>(times.size()) < repeats.min_frames ||
+            std::chrono::steady_clock::now() - start <
+                std::chrono::duration<double>(repeats.min_seconds)));
+  std::nth_element(times.begin(), times.begin() + static_cast<std::ptrdiff_t>(times.size() / 2),
+                   times.end());
+  return times[times.size() / 2];
+}
+
+struct DepthSweepOptions {
+  Camera camera;
+  std::vector<int> depths = {6, 7, 8, 9, 10};
+  std::vector<int> fraction_bits = {8, 12, 15, 20};
+};
+// Every depth x variant x fraction bits x hole filling at one view: OUTDIR/tradeoff.csv, .png.
+void runDepthSweep(const Scene& scene, const DepthSweepOptions& options,
+                   const std::filesystem::path& output);
+
+struct ViewSweepOptions {
+  Camera camera;  // its angles; width, height and zoom come from the lists
+  std::vector<std::pair<int, int>> sizes = {
+      {176, 208}, {320, 240}, {640, 480}, {1280, 960}, {1920, 1080}};
+  std::vector<double> zooms = {0.25, 0.5, 1, 2, 4, 8};
+  std::string label = "scan";  // names the scan in the outputs
+  bool pictures = false;       // also write reference | before | after pictures per cell
+  Repeats repeats{7, 0.1, 200};
+};
+// Every size x zoom, today's renderer against depth auto with splats: OUTDIR/sweep.csv, sweep.md.
+void runViewSweep(const Scene& scene, const ViewSweepOptions& options,
+                  const std::filesystem::path& output);
+
+}  // namespace octopoint::tradeoff

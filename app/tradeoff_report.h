@@ -1,0 +1,43 @@
+#pragma once
+// The view sweep's outputs (docs/tradeoff.md): one CSV row per cell and configuration, and a
+// markdown page with the table and issue 11's targets checked from the same numbers.
+
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "app/tradeoff.h"
+
+namespace octopoint::tradeoff {
+
+enum class Config {
+  kBefore,        // today's renderer: finest depth, one pixel per voxel, no filling
+  kBeforeFilled,  // the same with scanline hole filling
+  kAfter,         // depth auto, footprint splats, no filling
+};
+const char* configName(Config config);
+
+struct SweepResult {
+  Config config;
+  int depth = 0;  // the depth drawn
+  int splat = 1;  // the splat's side in pixels (1: one pixel per voxel)
+  double ms_per_frame = 0;
+  Quality quality;
+};
+
+struct SweepCell {
+  int width = 0, height = 0;
+  double zoom = 1;
+  std::vector<SweepResult> results;
+  const SweepResult* find(Config config) const;
+};
+
+void writeSweepCsv(const std::string& label, const std::vector<SweepCell>& cells,
+                   const std::filesystem::path& path);
+// The table (before / before + fill / after side by side per cell) and, when the cells hold
+// "after" results, every target of issue 11 with its measured numbers.
+void writeSweepMarkdown(const std::string& label, const std::vector<SweepCell>& cells,
+                        const std::filesystem::path& path);
+
+}  // namespace octopoint::tradeoff

@@ -1,0 +1,66 @@
+// octopoint-tradeoff's common parts: the scene, in-memory models, the reference and the measures.
+#include <opencv2/imgproc.hpp>
+
+#include "app/image_quality.h"
+#include "app/reference_render.h"
+#include "app/tradeoff.h"
+#include "codegen/model_writer.h"
+#include "codegen/prepare_error.h"
+
+namespace octopoint::tradeoff {
+
+Scene loadScene(const std::string& scan_path, const prepare::PrepareOptions& options) {
+  Scene scene;
+  scene.scan_path = scan_path;
+  scene.scan = prepare::loadScan(scan_path);
+  scene.prepare = options;
+  scene.prepare.name = "tradeoff";
+  const prepare::Scan points = prepare::modelPoints(scene.scan, scan_path, options);
+  scene.fit = prepare::fitCube(points.positions, scan_path);
+  scene.surface = buildReferenceSurface(points);
+  return scene;
+}
+
+std::unique_ptr<InMemoryModel> prepareInMemory(const Scene& scene, const std::vector<int>& depths) {
+  prepare::PrepareOptions options = scene.prepare;
+  options.depths = depths;
+  auto model = std::make_unique<InMemoryModel>();
+  model->bytes =
+      prepare::serializeModel(prepare::prepareModel(scene.scan, scene.scan_path, options));
+  ModelIssue issue;
+  model->view = ModelView::fromBytes(model->bytes, &issue);
+  if (!model->view)
+    throw prepare::PrepareError(std::string("model prepared in memory: ") + describe(issue.error));
+  return model;
+}
+
+Reference referenceFor(const Scene& scene, const Camera& camera) {
+  Reference reference;
+  reference.image =
+      renderReference(scene.surface, scene.fit, camera, kBackground, &reference.silhouette);
+  return reference;
+}
+
+cv::Mat toImage(const Framebuffer& frame, const ModelView& model) {
+  cv::Mat rgb(frame.height(), frame.width(), CV_8UC3);
+  resolveToRgb(frame, model, kBackground, {rgb.data, rgb.total() * 3});
+  cv::Mat bgr;
+  cv::cvtColor(rgb, bgr, cv::COLOR_RGB2BGR);
+  return bgr;
+}
+
+Quality measure(const Reference& reference, const Framebuffer& frame, const ModelView& model) {
+  const cv::Mat drawn = toImage(frame, model);
+  std::int64_t object = 0, empty = 0;
+  for (int y = 0; y < frame.height(); ++y) {
+    const std::uint8_t* inside = reference.silhouette.ptr<std::uint8_t>(y);
+    for (int x = 0; x < frame.width(); ++x) {
+      object += inside[x] != 0;
+      empty += inside[x] != 0 && !frame.covered(x, y);
+    }
+  }
+  return {psnr(reference.image, drawn), ssim(reference.image, drawn),
+          object == 0 ? 0.0 : static_cast<double>(empty) / static_cast<double>(object)};
+}
+
+}  // namespace octopoint::tradeoff
