@@ -93,10 +93,6 @@ void drawTriangle(const ScreenPoint (&v)[3], const Colour (&c)[3], const Camera&
 
 void drawSplat(const ScreenPoint& p, double radius_px, const Colour& rgb, const Camera& camera,
                DepthImage& out) {
-  const double own_col = std::floor(p.x), own_row = std::floor(p.y);
-  if (own_col >= 0 && own_row >= 0 && own_col < camera.width && own_row < camera.height) {
-    out.plot(static_cast<int>(own_col), static_cast<int>(own_row), p.z, rgb);
-  }
   const PixelSpan cols = centresWithin(p.x - radius_px, p.x + radius_px, camera.width);
   const PixelSpan rows = centresWithin(p.y - radius_px, p.y + radius_px, camera.height);
   const double radius_squared = radius_px * radius_px;

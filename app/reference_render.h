@@ -8,9 +8,11 @@
 //   - a triangle covers it when its centre (col + 0.5, row + 0.5) lies inside the projected
 //     triangle or on its edge; depth and colour are interpolated linearly across the triangle
 //     (barycentric weights of the centre: Gouraud colour, rounded to nearest);
-//   - a splat covers the pixel its point falls in, and every pixel whose centre lies within the
-//     splat's projected radius of the point; depth and colour are the point's (a flat disc facing
-//     the viewer).
+//   - a splat covers the pixels whose centre lies within its projected radius of its point;
+//     depth and colour are the point's (a flat disc facing the viewer).
+// Both are the same rule: the scan's surface is a set of triangles or discs, and a pixel shows it
+// when its centre does. A triangle or disc smaller than a pixel may thus cover none (as a stray
+// point does at low zoom).
 // The nearest (smallest z) wins each pixel. The covered pixels are the object's silhouette.
 
 #include <opencv2/core.hpp>

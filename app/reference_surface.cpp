@@ -91,12 +91,12 @@ void splatRadii(const prepare::Scan& points, ReferenceSurface& surface) {
     tree.nearestKSearch((*cloud)[i], wanted, found, squared);
     surface.splat_radius[i] = squared.empty() ? 0.0f : std::sqrt(squared.back());
   }
-  // Far from everything else a point samples no surface: no splat wider than kMaxSplatMedians
-  // times the median radius.
+  // Far from everything else a point samples no surface: no splat wider than the quantile.
   std::vector<float> sorted = surface.splat_radius;
-  std::nth_element(sorted.begin(), sorted.begin() + static_cast<std::ptrdiff_t>(count / 2),
+  const auto rank = static_cast<std::size_t>(kMaxSplatQuantile * static_cast<double>(count - 1));
+  std::nth_element(sorted.begin(), sorted.begin() + static_cast<std::ptrdiff_t>(rank),
                    sorted.end());
-  const float limit = static_cast<float>(kMaxSplatMedians) * sorted[count / 2];
+  const float limit = sorted[rank];
   for (float& radius : surface.splat_radius) radius = std::min(radius, limit);
 }
 

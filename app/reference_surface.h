@@ -4,11 +4,11 @@
 //
 // - Organized scan (a depth image: Scan::grid_width x grid_height): the grid is triangulated with
 //   PCL's OrganizedFastMesh, neighbours in the grid joined by triangles, except across a depth
-//   discontinuity (an edge within kShadowAngleDegrees of the sensor's line of sight through it).
+//   discontinuity (an edge longer than kMaxEdgeGridSteps grid steps).
 // - Unorganized scan: every point becomes a disc facing the viewer whose radius is the distance to
-//   its kSplatNeighbour-th nearest neighbour (PCL k-d tree), at most kMaxSplatMedians times the
-//   median of that distance over the scan, so the discs of a sampled surface overlap without gaps
-//   wherever the sampling is even.
+//   its kSplatNeighbour-th nearest neighbour (PCL k-d tree), at most the kMaxSplatQuantile
+//   quantile of that distance over the scan, so that the discs of an evenly sampled surface
+//   overlap without gaps.
 //
 // Building it is view-independent and done once per scan; app/reference_render.h draws it per view.
 // This file's .cpp is the only one under app/ that includes PCL headers (they compile slowly).
@@ -26,13 +26,14 @@ namespace octopoint::tradeoff {
 // jump in depth, not a surface: a surface seen at up to acos(1/8) = 83 degrees from face-on, or a
 // depth camera's quantized depth (a Kinect's step is about 1.7 grid steps at 1 m), stays joined.
 inline constexpr double kMaxEdgeGridSteps = 8;
-// Which nearest neighbour's distance is a splat's radius. On an even grid of spacing h the 8th
-// nearest lies at sqrt(2) h, enough for discs to cover the gaps of a sampling up to twice as
-// sparse along one direction as along the other (laser scan lines).
-inline constexpr int kSplatNeighbour = 8;
+// Which nearest neighbour's distance is a splat's radius. On a square grid of spacing h the 5th
+// and 6th nearest lie at sqrt(2) h (h / sqrt(2) closes the grid's gaps); on a jittered grid (one
+// point anywhere in each cell) the 5th is the least that leaves no hole
+// (tests/reference_render_test.cpp), the 6th leaves a margin.
+inline constexpr int kSplatNeighbour = 6;
 // A point whose neighbours are far (stray returns, the sparse floor of a laser scan) samples no
-// surface: its splat is no wider than this many times the median splat radius of the scan.
-inline constexpr double kMaxSplatMedians = 2;
+// surface: no splat is wider than this quantile of the scan's splat radii.
+inline constexpr double kMaxSplatQuantile = 0.9;
 
 struct ReferenceSurface {
   // The points (model axes, scan units) and their colours, as given.
