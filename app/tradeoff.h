@@ -97,9 +97,10 @@ struct ViewSweepOptions {
   std::vector<std::pair<int, int>> sizes = {
       {176, 208}, {320, 240}, {640, 480}, {1280, 960}, {1920, 1080}};
   std::vector<double> zooms = {0.25, 0.5, 1, 2, 4, 8};
-  std::string label = "scan";  // names the scan in the outputs
-  bool pictures = false;       // also write reference | before | after pictures per cell
-  Repeats repeats{7, 0.1, 200};
+  std::string label = "scan";     // names the scan in the outputs
+  bool pictures = false;          // also write reference | before | after pictures per cell
+  Repeats repeats{9, 0.05, 200};  // per cell, configuration and round
+  int rounds = 3;                 // a cell's time is the median of its rounds' medians
 };
 // Every size x zoom, today's renderer against depth auto with splats: OUTDIR/sweep.csv, sweep.md.
 void runViewSweep(const Scene& scene, const ViewSweepOptions& options,

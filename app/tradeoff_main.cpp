@@ -44,7 +44,11 @@ and SSIM. Writes OUTDIR/sweep.csv and OUTDIR/sweep.md (the table and the issue's
   --sizes LIST           WxH,WxH,... (default 176x208,320x240,640x480,1280x960,1920x1080)
   --zooms LIST           X,X,... (default 0.25,0.5,1,2,4,8)
   --label NAME           names the scan in the sweep's outputs (default: the file's stem)
-  --pictures             also write OUTDIR/pictures/WxH_zoomX.png: reference | before | after
+  --pictures             also write OUTDIR/pictures/WxH_zoomX.png: reference | before | after,
+                         and WxH_zoomX_empty.png: after's misses of the silhouette in red, its
+                         pixels outside it in blue
+  --rounds N             timing rounds over all cells, 1..100 (default 3): a cell's time is the
+                         median of its rounds, each the median of at least 9 frames and 0.05 s
   -o, --output OUTDIR    where to write (default out)
   -h, --help             show this help
 )";
@@ -151,6 +155,12 @@ Options parseOptions(int argc, char** argv) {
     } else if (arg == "--label") {
       options.view_sweep.label = value();
       options.label_given = true;
+    } else if (arg == "--rounds") {
+      options.view_sweep.rounds = parseInteger(arg, value());
+      if (options.view_sweep.rounds < 1 || options.view_sweep.rounds > 100) {
+        throw PrepareError("--rounds: " + std::to_string(options.view_sweep.rounds) +
+                           " is outside 1..100");
+      }
     } else if (arg == "--pictures") {
       options.view_sweep.pictures = true;
     } else if (arg == "-o" || arg == "--output") {

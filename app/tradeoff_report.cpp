@@ -15,6 +15,12 @@ std::string format(const char* pattern, double value) {
   return text;
 }
 
+// "1" (one pixel per leaf), "3" (3 x 3) or "3x2" (columns x rows).
+std::string splatSize(const SweepResult& r) {
+  if (r.splat_columns == r.splat_rows) return std::to_string(r.splat_columns);
+  return std::to_string(r.splat_columns) + "x" + std::to_string(r.splat_rows);
+}
+
 std::string cellName(const SweepCell& cell) {
   char text[64];
   std::snprintf(text, sizeof text, "%dx%d zoom %g", cell.width, cell.height, cell.zoom);
@@ -198,13 +204,15 @@ const SweepResult* SweepCell::find(Config config) const {
 void writeSweepCsv(const std::string& label, const std::vector<SweepCell>& cells,
                    const std::filesystem::path& path) {
   std::ofstream csv(path);
-  csv << "scan,width,height,zoom,config,depth,splat_px,ms_per_frame,empty_share,psnr_db,ssim\n";
+  csv << "scan,width,height,zoom,config,depth,splat_columns,splat_rows,ms_per_frame,empty_share,"
+         "psnr_db,ssim\n";
   for (const SweepCell& cell : cells) {
     for (const SweepResult& r : cell.results) {
       char line[256];
-      std::snprintf(line, sizeof line, "%s,%d,%d,%g,%s,%d,%d,%.4f,%.5f,%.3f,%.4f\n", label.c_str(),
-                    cell.width, cell.height, cell.zoom, configName(r.config), r.depth, r.splat,
-                    r.ms_per_frame, r.quality.empty_share, r.quality.psnr, r.quality.ssim);
+      std::snprintf(line, sizeof line, "%s,%d,%d,%g,%s,%d,%d,%d,%.4f,%.5f,%.3f,%.4f\n",
+                    label.c_str(), cell.width, cell.height, cell.zoom, configName(r.config),
+                    r.depth, r.splat_columns, r.splat_rows, r.ms_per_frame, r.quality.empty_share,
+                    r.quality.psnr, r.quality.ssim);
       csv << line;
     }
   }
@@ -224,7 +232,7 @@ void writeSweepMarkdown(const std::string& label, const std::vector<SweepCell>& 
   for (const SweepCell& cell : cells) {
     md << "| " << cell.width << "x" << cell.height << " | " << format("%g", cell.zoom) << " | "
        << triple(cell, [](const SweepResult& r) { return std::to_string(r.depth); }) << " | "
-       << triple(cell, [](const SweepResult& r) { return std::to_string(r.splat); }) << " | "
+       << triple(cell, splatSize) << " | "
        << triple(cell,
                  [](const SweepResult& r) {
                    return format(r.ms_per_frame < 1 ? "%.3f" : "%.2f", r.ms_per_frame);

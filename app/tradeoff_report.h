@@ -20,8 +20,9 @@ const char* configName(Config config);
 
 struct SweepResult {
   Config config;
-  int depth = 0;  // the depth drawn
-  int splat = 1;  // the splat's side in pixels (1: one pixel per voxel)
+  int depth = 0;          // the depth drawn
+  int splat_columns = 1;  // the most pixels a leaf covers along x (1: one pixel per leaf)
+  int splat_rows = 1;     // and along y
   double ms_per_frame = 0;
   Quality quality;
 };

@@ -1,17 +1,19 @@
 // octopoint-tradeoff --sweep-views (docs/tradeoff.md): every frame size x zoom, today's renderer
 // ("before": the finest depth of the 7,8 model, one pixel per voxel, hole filling off and on)
 // against depth auto with footprint splats ("after"), measured against the surface reference.
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <fstream>
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
 #include "app/tradeoff.h"
 #include "app/tradeoff_report.h"
 #include "renderer/hole_fill.h"
+#include "renderer/level_of_detail.h"
 #include "renderer/render.h"
 
 namespace octopoint::tradeoff {
@@ -22,8 +24,63 @@ namespace fs = std::filesystem;
 // Today's default model: depths 7 and 8, drawn at its finest.
 const std::vector<int> kBeforeDepths = {7, 8};
 
-Variant fastestVariant() {
-  return simdDecoderAvailable() ? Variant::kFixedSimd : Variant::kFixedFast;
+// Draws one configuration's frames: everything a frame costs happens in draw() (clear, depth
+// choice, camera set-up, decoding, filling), so that it can be timed.
+class SweepDrawer {
+ public:
+  SweepDrawer(const ModelView& before, const ModelView& after) : before_(before), after_(after) {}
+
+  // Draws `config` for `camera` into `frame`; throws when the camera is refused.
+  void draw(Config config, const Camera& camera, Framebuffer& frame, HoleFiller& filler) {
+    frame.clear();
+    const LevelView* level =
+        config == Config::kAfter ? autoLevel(after_, camera) : &before_.finestLevel();
+    if (level == nullptr)
+      throw std::runtime_error("depth auto: the camera is refused at every depth");
+    const CameraError error = buildFrameSetup(camera, level->depth, kDefaultFractionBits, &setup_);
+    if (error != CameraError::kNone)
+      throw std::runtime_error(std::string("camera: ") + describe(error));
+    if (config != Config::kAfter) setup_.splat = SplatFootprint{};  // one pixel per leaf, as before
+    renderLevel(variant_, *level, setup_, frame);
+    if (config == Config::kBeforeFilled) filler.fill(frame, bridgeDepthLimit(setup_));
+  }
+  // Throws, naming the view, when draw() would refuse `camera` in some configuration.
+  void check(const Camera& camera) {
+    for (Config config : {Config::kBefore, Config::kAfter}) {
+      const LevelView* level =
+          config == Config::kAfter ? autoLevel(after_, camera) : &before_.finestLevel();
+      const CameraError error =
+          level == nullptr ? CameraError::kOverflow
+                           : buildFrameSetup(camera, level->depth, kDefaultFractionBits, &setup_);
+      if (error != CameraError::kNone) {
+        throw std::runtime_error(std::to_string(camera.width) + "x" +
+                                 std::to_string(camera.height) + " at zoom " +
+                                 std::to_string(camera.zoom.raw() / 65536.0) + " (" +
+                                 configName(config) + "): " + describe(error));
+      }
+    }
+  }
+  // The last frame's set-up (its depth and splat).
+  const FrameSetup& setup() const { return setup_; }
+  const ModelView& model(Config config) const {
+    return config == Config::kAfter ? after_ : before_;
+  }
+
+ private:
+  const ModelView& before_;
+  const ModelView& after_;
+  const Variant variant_ = defaultVariant();
+  FrameSetup setup_;
+};
+
+constexpr Config kConfigs[] = {Config::kBefore, Config::kBeforeFilled, Config::kAfter};
+
+Camera cameraOf(const ViewSweepOptions& options, const SweepCell& cell) {
+  Camera camera = options.camera;
+  camera.width = cell.width;
+  camera.height = cell.height;
+  camera.zoom = Q16::fromRaw(static_cast<std::int32_t>(std::lround(cell.zoom * Q16::kOneRaw)));
+  return camera;
 }
 
 // Reference | before with filling | after, side by side under a caption strip.
@@ -36,59 +93,101 @@ cv::Mat sideBySide(const cv::Mat& reference, const cv::Mat& before, const cv::Ma
   const cv::Mat* panels[] = {&reference, &before, &after};
   for (int k = 0; k < 3; ++k) {
     panels[k]->copyTo(out(cv::Rect(k * (w + kGap), kCaption, w, h)));
-    cv::putText(out, captions[k], {k * (w + kGap) + 4, kCaption - 8}, cv::FONT_HERSHEY_SIMPLEX, 0.5,
-                cv::Scalar(0, 0, 0));
+    // The captions shrink with narrow panels (about 260 pixels of text at scale 0.5).
+    cv::putText(out, captions[k], {k * (w + kGap) + 4, kCaption - 8}, cv::FONT_HERSHEY_SIMPLEX,
+                std::min(0.5, 0.5 * (w - 8) / 260.0), cv::Scalar(0, 0, 0));
   }
   return out;
+}
+
+// Where the after frame misses the silhouette (red) and covers what is not in it (blue); grey
+// where both agree the object is, white where both agree it is not.
+void markEmpty(const Reference& reference, const Framebuffer& frame, cv::Mat* marked) {
+  *marked = cv::Mat(frame.height(), frame.width(), CV_8UC3, cv::Scalar(255, 255, 255));
+  for (int y = 0; y < frame.height(); ++y) {
+    for (int x = 0; x < frame.width(); ++x) {
+      const bool object = reference.silhouette.at<std::uint8_t>(y, x) != 0,
+                 drawn = frame.covered(x, y);
+      if (object || drawn) {
+        marked->at<cv::Vec3b>(y, x) = !drawn    ? cv::Vec3b(0, 0, 255)
+                                      : !object ? cv::Vec3b(255, 128, 0)
+                                                : cv::Vec3b(170, 170, 170);
+      }
+    }
+  }
 }
 
 }  // namespace
 
 void runViewSweep(const Scene& scene, const ViewSweepOptions& options, const fs::path& output) {
   const std::unique_ptr<InMemoryModel> before_model = prepareInMemory(scene, kBeforeDepths);
-  const LevelView& before_level = before_model->view->finestLevel();
-  const Variant variant = fastestVariant();
+  // After: the model with the preparer's default depths, drawn at depth auto.
+  const std::unique_ptr<InMemoryModel> after_model =
+      prepareInMemory(scene, prepare::PrepareOptions{}.depths);
+  SweepDrawer drawer(*before_model->view, *after_model->view);
+  // Every view is checked before anything is written: a refused one leaves no half-written sweep.
+  for (const auto& [width, height] : options.sizes) {
+    for (double zoom : options.zooms)
+      drawer.check(cameraOf(options, SweepCell{width, height, zoom, {}}));
+  }
   if (options.pictures) fs::create_directories(output / "pictures");
 
+  // Quality: one frame of each configuration per cell against the reference.
   std::vector<SweepCell> cells;
   for (const auto& [width, height] : options.sizes) {
     Framebuffer frame(width, height);
     HoleFiller filler(width);
     for (double zoom : options.zooms) {
-      Camera camera = options.camera;
-      camera.width = width;
-      camera.height = height;
-      camera.zoom = Q16::fromRaw(static_cast<std::int32_t>(std::lround(zoom * Q16::kOneRaw)));
       SweepCell cell{width, height, zoom, {}};
+      const Camera camera = cameraOf(options, cell);
       const Reference reference = referenceFor(scene, camera);
-
-      FrameSetup setup;
-      const CameraError error =
-          buildFrameSetup(camera, before_level.depth, kDefaultFractionBits, &setup);
-      if (error != CameraError::kNone)
-        throw std::runtime_error(std::string("before: ") + describe(error));
-      cv::Mat before_picture;
-      for (bool fill : {false, true}) {
-        auto draw = [&] {
-          frame.clear();
-          renderLevel(variant, before_level, setup, frame);
-          if (fill) filler.fill(frame, bridgeDepthLimit(setup));
-        };
-        const double ms = medianMilliseconds(draw, options.repeats);
-        cell.results.push_back({fill ? Config::kBeforeFilled : Config::kBefore, before_level.depth,
-                                1, ms, measure(reference, frame, *before_model->view)});
-        if (fill && options.pictures) before_picture = toImage(frame, *before_model->view);
+      cv::Mat pictures[3], after_empty;
+      for (std::size_t k = 0; k < 3; ++k) {
+        drawer.draw(kConfigs[k], camera, frame, filler);
+        const SplatFootprint& splat = drawer.setup().splat;
+        cell.results.push_back({kConfigs[k], drawer.setup().depth, splat.columns, splat.rows, 0,
+                                measure(reference, frame, drawer.model(kConfigs[k]))});
+        if (options.pictures) {
+          pictures[k] = toImage(frame, drawer.model(kConfigs[k]));
+          if (kConfigs[k] == Config::kAfter) markEmpty(reference, frame, &after_empty);
+        }
       }
-
       if (options.pictures) {
         char name[64];
         std::snprintf(name, sizeof name, "%dx%d_zoom%g.png", width, height, zoom);
         cv::imwrite((output / "pictures" / name).string(),
-                    sideBySide(reference.image, before_picture, before_picture));
+                    sideBySide(reference.image, pictures[1], pictures[2]));
+        std::snprintf(name, sizeof name, "%dx%d_zoom%g_empty.png", width, height, zoom);
+        cv::imwrite((output / "pictures" / name).string(), after_empty);
       }
-      std::fprintf(stderr, "octopoint-tradeoff: %s %dx%d zoom %g done\n", options.label.c_str(),
-                   width, height, zoom);
       cells.push_back(std::move(cell));
+    }
+    std::fprintf(stderr, "octopoint-tradeoff: %s %dx%d measured\n", options.label.c_str(), width,
+                 height);
+  }
+
+  // Time: rounds over all cells, each a median over repeated frames; a cell's time is the median
+  // of its rounds, so that a burst of load on a shared machine spoils one round, not the figure.
+  std::vector<std::vector<double>> round_ms(cells.size() * 3);
+  for (int round = 0; round < options.rounds; ++round) {
+    for (std::size_t c = 0; c < cells.size(); ++c) {
+      const Camera camera = cameraOf(options, cells[c]);
+      Framebuffer frame(camera.width, camera.height);
+      HoleFiller filler(camera.width);
+      for (std::size_t k = 0; k < 3; ++k) {
+        round_ms[c * 3 + k].push_back(medianMilliseconds(
+            [&] { drawer.draw(kConfigs[k], camera, frame, filler); }, options.repeats));
+      }
+    }
+    std::fprintf(stderr, "octopoint-tradeoff: %s timing round %d of %d done\n",
+                 options.label.c_str(), round + 1, options.rounds);
+  }
+  for (std::size_t c = 0; c < cells.size(); ++c) {
+    for (std::size_t k = 0; k < 3; ++k) {
+      std::vector<double>& ms = round_ms[c * 3 + k];
+      std::nth_element(ms.begin(), ms.begin() + static_cast<std::ptrdiff_t>(ms.size() / 2),
+                       ms.end());
+      cells[c].results[k].ms_per_frame = ms[ms.size() / 2];
     }
   }
   writeSweepCsv(options.label, cells, output / "sweep.csv");

@@ -3,3 +3,26 @@
 add_executable(reference_tests reference_render_test.cpp)
 target_link_libraries(reference_tests PRIVATE octopoint_reference GTest::gtest_main octopoint_warnings)
 gtest_discover_tests(reference_tests DISCOVERY_MODE PRE_TEST)
+
+# The view sweep through the real CLI, small: the synthetic ball seen by a depth camera (organized:
+# meshed) and the synthetic sphere (unorganized: splatted), 2 sizes x 2 zooms, one timing round.
+foreach(scan depth_image sphere)
+  add_test(NAME cli.tradeoff.sweep_smoke_${scan}
+           COMMAND ${CMAKE_COMMAND} -DTRADEOFF=$<TARGET_FILE:octopoint-tradeoff>
+                   -DSCAN=${test_scans}/${scan}.pcd -DOUT=${cli_out}/tradeoff_sweep_${scan}
+                   -P ${CMAKE_CURRENT_SOURCE_DIR}/tradeoff_sweep_smoke.cmake)
+  set_tests_properties(cli.tradeoff.sweep_smoke_${scan} PROPERTIES FIXTURES_REQUIRED test_scans)
+endforeach()
+
+# Bad options: one line naming the flag, no output.
+function(tradeoff_error_test name expected)
+  add_test(NAME cli.tradeoff.${name}
+           COMMAND ${expect_error} "${expected}" ${cli_out}/tradeoff_${name} --
+                   $<TARGET_FILE:octopoint-tradeoff> ${ARGN} -o ${cli_out}/tradeoff_${name})
+  set_tests_properties(cli.tradeoff.${name} PROPERTIES FIXTURES_REQUIRED test_scans)
+endfunction()
+tradeoff_error_test(bad_sizes "--sizes: '0x10' is not WxH" ${test_scans}/sphere.pcd --sweep-views --sizes 64x48,0x10)
+tradeoff_error_test(bad_zooms "--zooms: '0' is not a zoom" ${test_scans}/sphere.pcd --sweep-views --zooms 1,0)
+tradeoff_error_test(bad_zoom "--zoom: 'x' is not a zoom" ${test_scans}/sphere.pcd --zoom x)
+tradeoff_error_test(bad_rounds "--rounds: 0 is outside 1..100" ${test_scans}/sphere.pcd --sweep-views --rounds 0)
+tradeoff_error_test(missing_scan "no such file" ${test_scans}/missing.pcd --sweep-views)

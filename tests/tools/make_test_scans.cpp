@@ -1,6 +1,7 @@
 // Writes the scan files the end-to-end tests read: a coloured sphere for the generated-source test,
-// and one broken scan per kind of bad input for the CLI error tests. PCD files are written by hand
-// (the format is simple) so that each byte of the broken ones is deliberate.
+// an organized depth image for the trade-off sweep's smoke test, and one broken scan per kind of
+// bad input for the CLI error tests. PCD files are written by hand (the format is simple) so that
+// each byte of the broken ones is deliberate.
 // usage: make_test_scans OUTDIR
 #include <cmath>
 #include <cstdio>
@@ -22,14 +23,16 @@ struct Point {
   std::uint32_t rgba;
 };
 
-std::string pcdHeader(std::size_t points, const char* data) {
+// `rows` > 1: an organized scan of points / rows columns.
+std::string pcdHeader(std::size_t points, const char* data, std::size_t rows = 1) {
   return "# .PCD v0.7 - Point Cloud Data file format\nVERSION 0.7\nFIELDS x y z rgba\nSIZE 4 4 4 4\n"
-         "TYPE F F F U\nCOUNT 1 1 1 1\nWIDTH " + std::to_string(points) + "\nHEIGHT 1\n"
-         "VIEWPOINT 0 0 0 1 0 0 0\nPOINTS " + std::to_string(points) + "\nDATA " + data + "\n";
+         "TYPE F F F U\nCOUNT 1 1 1 1\nWIDTH " + std::to_string(points / rows) + "\nHEIGHT " +
+         std::to_string(rows) + "\nVIEWPOINT 0 0 0 1 0 0 0\nPOINTS " + std::to_string(points) +
+         "\nDATA " + data + "\n";
 }
 
-std::string binaryPcd(const std::vector<Point>& points) {
-  std::string out = pcdHeader(points.size(), "binary");
+std::string binaryPcd(const std::vector<Point>& points, std::size_t rows = 1) {
+  std::string out = pcdHeader(points.size(), "binary", rows);
   out.append(reinterpret_cast<const char*>(points.data()), points.size() * sizeof(Point));
   return out;
 }
@@ -47,6 +50,34 @@ std::string asciiPcd(const std::vector<Point>& points) {
 
 void write(const fs::path& path, const std::string& contents) {
   std::ofstream(path, std::ios::binary) << contents;
+}
+
+// A depth camera's view (160 x 120, focal length 150 pixels, from the origin) of a ball of radius
+// 0.3 at 1.5 in front of a wall at 2.5, the image's corners unmeasured (NaN), as a Kinect's are.
+std::vector<Point> depthImageOfBall() {
+  constexpr int kColumns = 160, kRows = 120;
+  constexpr double kFocal = 150, kBallZ = 1.5, kBallRadius = 0.3, kWallZ = 2.5;
+  const float nan = std::numeric_limits<float>::quiet_NaN();
+  std::vector<Point> points;
+  for (int row = 0; row < kRows; ++row) {
+    for (int col = 0; col < kColumns; ++col) {
+      const double u = col - (kColumns - 1) / 2.0, v = row - (kRows - 1) / 2.0;
+      if (std::hypot(u / kColumns, v / kRows) > 0.68) {
+        points.push_back({nan, nan, nan, 0});
+        continue;
+      }
+      // The ray t (dx, dy, 1) meets the ball where |t d - c|^2 = r^2: the nearer root.
+      const double dx = u / kFocal, dy = v / kFocal;
+      const double a = dx * dx + dy * dy + 1, b = -2 * kBallZ;
+      const double c = kBallZ * kBallZ - kBallRadius * kBallRadius;
+      const double discriminant = b * b - 4 * a * c;
+      const bool ball = discriminant >= 0;
+      const double t = ball ? (-b - std::sqrt(discriminant)) / (2 * a) : kWallZ;
+      points.push_back({static_cast<float>(t * dx), static_cast<float>(t * dy), static_cast<float>(t),
+                        ball ? 0xffd04020u : 0xff8090a0u});
+    }
+  }
+  return points;
 }
 
 }  // namespace
@@ -67,6 +98,7 @@ int main(int argc, char** argv) {
     points.push_back({p[0], p[1], p[2], 0xff000000u | std::uint32_t{c[0]} << 16 | std::uint32_t{c[1]} << 8 | c[2]});
   }
   write(out / "sphere.pcd", binaryPcd(points));
+  write(out / "depth_image.pcd", binaryPcd(depthImageOfBall(), 120));
 
   const float nan = std::numeric_limits<float>::quiet_NaN();
   const std::string valid = binaryPcd(points);
