@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "app/reference_surface.h"
+#include "cli/output_file.h"
 #include "codegen/cube_fit.h"
 #include "codegen/prepare.h"
 #include "renderer/camera.h"
@@ -88,9 +89,11 @@ struct DepthSweepOptions {
   std::vector<int> depths = {6, 7, 8, 9, 10};
   std::vector<int> fraction_bits = {8, 12, 15, 20};
 };
-// Every depth x variant x fraction bits x hole filling at one view: OUTDIR/tradeoff.csv, .png.
-void runDepthSweep(const Scene& scene, const DepthSweepOptions& options,
-                   const std::filesystem::path& output);
+// Every depth x variant x fraction bits x hole filling at one view: returns tradeoff.csv, the plot
+// tradeoff.png and the reference tradeoff_reference.png (depthSweepOutputNames), for the caller to
+// write together. Throws cli::Error when the camera refuses a fraction bits setting.
+std::vector<cli::OutputFile> runDepthSweep(const Scene& scene, const DepthSweepOptions& options);
+std::vector<std::string> depthSweepOutputNames();
 
 struct ViewSweepOptions {
   Camera camera;  // its angles; width, height and zoom come from the lists
@@ -102,8 +105,13 @@ struct ViewSweepOptions {
   Repeats repeats{9, 0.05, 200};  // per cell, configuration and round
   int rounds = 3;                 // a cell's time is the median of its rounds' medians
 };
-// Every size x zoom, today's renderer against depth auto with splats: OUTDIR/sweep.csv, sweep.md.
-void runViewSweep(const Scene& scene, const ViewSweepOptions& options,
-                  const std::filesystem::path& output);
+// Every size x zoom, today's renderer against depth auto with splats: returns sweep.csv and
+// sweep.md (viewSweepOutputNames) for the caller to write together. With options.pictures, writes
+// each cell's pictures into OUTDIR/pictures as they are made, once every view has been checked.
+std::vector<cli::OutputFile> runViewSweep(const Scene& scene, const ViewSweepOptions& options,
+                                          const std::filesystem::path& output);
+std::vector<std::string> viewSweepOutputNames();
+// The PNG encoding of an 8-bit BGR image.
+std::string encodePng(const cv::Mat& image);
 
 }  // namespace octopoint::tradeoff

@@ -3,13 +3,13 @@
 // quality.
 #include <cmath>
 #include <cstdio>
-#include <fstream>
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 #include <string>
 #include <vector>
 
 #include "app/tradeoff.h"
+#include "cli/error.h"
 #include "renderer/hole_fill.h"
 #include "renderer/render.h"
 
@@ -31,7 +31,7 @@ struct Row {
 
 // Time (log scale) against PSNR, one point per variant, depth and hole filling, at the default
 // fraction bits (the CSV has every fraction bits setting).
-void writePlot(const std::vector<Row>& rows, const fs::path& path) {
+cv::Mat drawPlot(const std::vector<Row>& rows) {
   constexpr int kWidth = 900, kHeight = 600, kMargin = 70;
   cv::Mat plot(kHeight, kWidth, CV_8UC3, cv::Scalar(255, 255, 255));
   std::vector<const Row*> shown;
@@ -92,14 +92,17 @@ void writePlot(const std::vector<Row>& rows, const fs::path& path) {
                 {kWidth - 135, kHeight - kMargin - 115 + 22 * d}, cv::FONT_HERSHEY_SIMPLEX, 0.5,
                 black);
   }
-  cv::imwrite(path.string(), plot);
+  return plot;
 }
 
 }  // namespace
 
-void runDepthSweep(const Scene& scene, const DepthSweepOptions& options, const fs::path& output) {
+std::vector<std::string> depthSweepOutputNames() {
+  return {"tradeoff.csv", "tradeoff.png", "tradeoff_reference.png"};
+}
+
+std::vector<cli::OutputFile> runDepthSweep(const Scene& scene, const DepthSweepOptions& options) {
   const Reference reference = referenceFor(scene, options.camera);
-  cv::imwrite((output / "tradeoff_reference.png").string(), reference.image);
   const Repeats repeats;
   std::vector<Row> rows;
   for (int depth : options.depths) {
@@ -115,7 +118,14 @@ void runDepthSweep(const Scene& scene, const DepthSweepOptions& options, const f
                                              : std::vector<int>{kDefaultFractionBits};
       for (int bits : fractions) {
         FrameSetup setup;
-        if (buildFrameSetup(options.camera, depth, bits, &setup) != CameraError::kNone) continue;
+        const CameraError camera_error = buildFrameSetup(options.camera, depth, bits, &setup);
+        if (camera_error != CameraError::kNone) {
+          throw cli::Error("--fraction-bits " + std::to_string(bits) +
+                           ": the camera refuses this view at depth " + std::to_string(depth) +
+                           ": " + describe(camera_error));
+        }
+        setup.splat =
+            SplatFootprint{};  // one pixel per leaf in every variant, as they were measured
         for (bool fill : {false, true}) {
           const double ms = medianMilliseconds(
               [&] {
@@ -135,20 +145,21 @@ void runDepthSweep(const Scene& scene, const DepthSweepOptions& options, const f
                  level.leaves.size());
   }
 
-  std::ofstream csv(output / "tradeoff.csv");
-  csv << "depth,variant,fraction_bits,hole_fill,ms_per_frame,model_bytes,bits_per_point,psnr_db,"
-         "ssim,empty_inside_share\n";
+  std::string csv =
+      "depth,variant,fraction_bits,hole_fill,ms_per_frame,model_bytes,bits_per_point,psnr_db,"
+      "ssim,empty_inside_share\n";
   for (const Row& r : rows) {
     char line[256];
     std::snprintf(line, sizeof line, "%d,%s,%d,%s,%.4f,%zu,%.3f,%.3f,%.4f,%.4f\n", r.depth,
                   r.variant.c_str(), r.fraction_bits, r.fill ? "on" : "off", r.ms_per_frame,
                   r.model_bytes, r.bits_per_point, r.quality.psnr, r.quality.ssim,
                   r.quality.empty_share);
-    csv << line;
+    csv += line;
   }
-  writePlot(rows, output / "tradeoff.png");
-  std::printf("wrote %s and %s (%zu configurations)\n", (output / "tradeoff.csv").c_str(),
-              (output / "tradeoff.png").c_str(), rows.size());
+  const std::vector<std::string> names = depthSweepOutputNames();
+  return {{names[0], csv},
+          {names[1], encodePng(drawPlot(rows))},
+          {names[2], encodePng(reference.image)}};
 }
 
 }  // namespace octopoint::tradeoff

@@ -1,6 +1,7 @@
 // octopoint-tradeoff: measures the speed/accuracy trade of octopoint on one scan
 // (docs/tradeoff.md), either over depths and variants at one view or, with --sweep-views, over
 // sizes and zooms.
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -10,13 +11,18 @@
 #include <vector>
 
 #include "app/tradeoff.h"
-#include "codegen/prepare_error.h"
+#include "cli/arguments.h"
+#include "cli/error.h"
+#include "cli/numbers.h"
+#include "cli/output_file.h"
+#include "cli/real_numbers.h"
+#include "cli/run_tool.h"
+#include "cli/text.h"
 
 namespace {
 
 namespace fs = std::filesystem;
 using namespace octopoint;
-using prepare::PrepareError;
 
 constexpr const char* kUsage = R"(usage: octopoint-tradeoff SCAN [options]
        octopoint-tradeoff SCAN --sweep-views [options]
@@ -35,23 +41,39 @@ and SSIM. Writes OUTDIR/sweep.csv and OUTDIR/sweep.md (the table and the issue's
 
   --axes y-down|y-up     the scan's axes (as octopoint-prepare; default y-down)
   --crop X0,Y0,Z0,X1,Y1,Z1  keep the points inside this box (as octopoint-prepare)
-  --yaw DEG, --pitch DEG the view (default 0, 0)
-  --size WxH             framebuffer size (default 320x240)
-  --zoom X               magnification, > 0 (default 1: the model cube spans the shorter side)
-  --depths LIST          octree depths (default 6,7,8,9,10)
-  --fraction-bits LIST   fixed-point fraction bits of the positions (default 8,12,15,20)
-  --sweep-views          sweep sizes and zooms instead (the options below)
-  --sizes LIST           WxH,WxH,... (default 176x208,320x240,640x480,1280x960,1920x1080)
-  --zooms LIST           X,X,... (default 0.25,0.5,1,2,4,8)
-  --label NAME           names the scan in the sweep's outputs (default: the file's stem)
-  --pictures             also write OUTDIR/pictures/WxH_zoomX.png: reference | before | after,
-                         and WxH_zoomX_empty.png: after's misses of the silhouette in red, its
-                         pixels outside it in blue
+  --yaw DEG, --pitch DEG the view, |DEG| <= 1e6 (default 0, 0)
+  --size WxH             framebuffer size, each side 1..8192, at most 16777216 pixels
+                         (default 320x240)
+  --zoom X               magnification, 1/65536..32767 (default 1: the model cube spans the
+                         shorter side of the frame)
+  --depths LIST          octree depths, strictly ascending, each 1..16 (default 6,7,8,9,10)
+  --fraction-bits LIST   fixed-point fraction bits of the positions, strictly ascending, each
+                         1..24 (default 8,12,15,20); a setting the camera refuses for this view
+                         (too few integer bits for the frame) is an error
+  --sweep-views          sweep sizes and zooms instead (the options below; --size and --zoom
+                         are then not used)
+  --sizes LIST           WxH,WxH,... up to 16 sizes, each as --size
+                         (default 176x208,320x240,640x480,1280x960,1920x1080)
+  --zooms LIST           X,X,... up to 16 zooms, each as --zoom (default 0.25,0.5,1,2,4,8)
+  --label NAME           names the scan in the sweep's outputs, 1..64 printable characters
+                         without ',' '|' or '"' (default: the file's stem)
+  --pictures             also write OUTDIR/pictures/WxH_zoomX.png (reference | before with
+                         filling | after) and WxH_zoomX_empty.png (after's misses of the
+                         silhouette in red, its pixels outside it in blue), each as it is made
   --rounds N             timing rounds over all cells, 1..100 (default 3): a cell's time is the
                          median of its rounds, each the median of at least 9 frames and 0.05 s
-  -o, --output OUTDIR    where to write (default out)
+  -o, --output OUTDIR    where to write (default out); the tables appear together at the end or
+                         not at all, and existing ones must be regular files
   -h, --help             show this help
+
+SCAN is a regular file of at most 1 GiB. On any error prints one line on stderr and exits with
+status 1; every view is checked before anything is written.
 )";
+
+// The largest frame drawn: the same cap as octopoint-render's images.
+constexpr std::int64_t kMaxFramePixels = std::int64_t{4096} * 4096;
+constexpr std::size_t kMaxListItems = 16;
+constexpr std::size_t kMaxLabelLength = 64;
 
 struct Options {
   std::string scan;
@@ -63,144 +85,152 @@ struct Options {
   fs::path output = "out";
 };
 
-// Splits "a,b,c" and parses each item with `parse`, which throws on a bad one.
+// Splits "a,b,c" (1..kMaxListItems items) and parses each item with `parse`.
 template <typename Parse>
-auto parseEach(const std::string& flag, const std::string& text, Parse parse) {
+auto parseEach(const std::string& option, const std::string& text, Parse parse) {
   std::vector<decltype(parse(std::string()))> values;
   std::size_t at = 0;
   while (at <= text.size()) {
     const std::size_t comma = std::min(text.find(',', at), text.size());
     const std::string item = text.substr(at, comma - at);
-    if (item.empty()) throw PrepareError(flag + ": '" + text + "' has an empty item");
+    if (item.empty()) {
+      throw cli::Error(option + ": item " + std::to_string(values.size() + 1) + " of " +
+                       cli::inQuotes(text) + " is empty");
+    }
+    if (values.size() == kMaxListItems) {
+      throw cli::Error(option + ": more than " + std::to_string(kMaxListItems) + " items");
+    }
     values.push_back(parse(item));
     at = comma + 1;
   }
   return values;
 }
 
-int parseInteger(const std::string& flag, const std::string& text) {
-  char* end = nullptr;
-  errno = 0;
-  const long value = std::strtol(text.c_str(), &end, 10);
-  if (text.empty() || *end != '\0' || errno != 0 || value < -1000000 || value > 1000000) {
-    throw PrepareError(flag + ": '" + text + "' is not an integer");
-  }
-  return static_cast<int>(value);
+cli::FrameSize parseSize(const std::string& option, const std::string& text) {
+  return cli::parseFrameSize(option, text, 1, kMaxViewportSide, kMaxFramePixels);
 }
 
-double parseZoom(const std::string& flag, const std::string& text) {
-  char* end = nullptr;
-  const double zoom = std::strtod(text.c_str(), &end);
-  const double raw = std::round(zoom * Q16::kOneRaw);
-  if (text.empty() || *end != '\0' || !std::isfinite(zoom) || raw < 1 || raw > 0x7fffffff) {
-    throw PrepareError(flag + ": '" + text + "' is not a zoom in 2^-16 .. 32767");
+// The label goes into CSV cells and markdown tables: printable, and none of their separators.
+std::string parseLabel(const std::string& option, const std::string& text) {
+  const bool plain = std::all_of(text.begin(), text.end(), [](unsigned char c) {
+    return c >= 0x20 && c < 0x7f && c != ',' && c != '|' && c != '"';
+  });
+  if (text.empty() || text.size() > kMaxLabelLength || !plain) {
+    throw cli::Error(option + ": " + cli::inQuotes(text) + " is not 1.." +
+                     std::to_string(kMaxLabelLength) +
+                     " printable characters without ',' '|' or '\"'");
   }
-  return zoom;
-}
-
-std::pair<int, int> parseSize(const std::string& flag, const std::string& text) {
-  int width = 0, height = 0;
-  char tail = 0;
-  if (std::sscanf(text.c_str(), "%dx%d%c", &width, &height, &tail) != 2 || width < 1 ||
-      height < 1 || width > kMaxViewportSide || height > kMaxViewportSide) {
-    throw PrepareError(flag + ": '" + text + "' is not WxH with sides 1.." +
-                       std::to_string(kMaxViewportSide));
-  }
-  return {width, height};
+  return text;
 }
 
 Options parseOptions(int argc, char** argv) {
   Options options;
   Camera& camera = options.depth_sweep.camera;
-  for (int i = 1; i < argc; ++i) {
-    const std::string arg = argv[i];
-    auto value = [&]() -> std::string {
-      if (i + 1 >= argc) throw PrepareError(arg + ": missing value (see --help)");
-      return argv[++i];
-    };
-    auto integers = [&](const std::string& text) {
-      return parseEach(arg, text, [&](const std::string& item) { return parseInteger(arg, item); });
-    };
-    if (arg == "-h" || arg == "--help") {
+  cli::ArgumentReader args(argc, argv);
+  while (args.next()) {
+    if (args.is("-h") || args.is("--help")) {
       std::cout << kUsage;
       std::exit(0);
-    } else if (arg == "--axes") {
-      const std::string axes = value();
-      if (axes != "y-down" && axes != "y-up")
-        throw PrepareError("--axes: '" + axes + "' is not y-down or y-up");
-      options.prepare.axes = axes == "y-up" ? prepare::ScanAxes::kYUp : prepare::ScanAxes::kYDown;
-    } else if (arg == "--crop") {
-      options.prepare.crop = prepare::parseCropBox(arg, value());
-    } else if (arg == "--yaw") {
-      camera.yaw = Angle::fromDegrees(parseInteger(arg, value()));
-    } else if (arg == "--pitch") {
-      camera.pitch = Angle::fromDegrees(parseInteger(arg, value()));
-    } else if (arg == "--size") {
-      std::tie(camera.width, camera.height) = parseSize(arg, value());
-    } else if (arg == "--zoom") {
-      camera.zoom = Q16::fromRaw(
-          static_cast<std::int32_t>(std::round(parseZoom(arg, value()) * Q16::kOneRaw)));
-    } else if (arg == "--depths") {
-      options.depth_sweep.depths = integers(value());
-    } else if (arg == "--fraction-bits") {
-      options.depth_sweep.fraction_bits = integers(value());
-    } else if (arg == "--sweep-views") {
+    } else if (args.is("--axes")) {
+      options.prepare.axes = cli::parseChoice(args.name(), args.value(), {"y-down", "y-up"}) == 0
+                                 ? prepare::ScanAxes::kYDown
+                                 : prepare::ScanAxes::kYUp;
+    } else if (args.is("--crop")) {
+      options.prepare.crop = prepare::parseCropBox(args.name(), args.value());
+    } else if (args.is("--yaw")) {
+      camera.yaw = cli::parseDegrees(args.name(), args.value());
+    } else if (args.is("--pitch")) {
+      camera.pitch = cli::parseDegrees(args.name(), args.value());
+    } else if (args.is("--size")) {
+      const cli::FrameSize size = parseSize(args.name(), args.value());
+      camera.width = size.width;
+      camera.height = size.height;
+    } else if (args.is("--zoom")) {
+      camera.zoom = cli::parseZoom(args.name(), args.value());
+    } else if (args.is("--depths")) {
+      options.depth_sweep.depths =
+          cli::parseIntList(args.name(), args.value(), 1, format::kMaxDepth, format::kMaxDepth,
+                            cli::ListOrder::kStrictlyAscending);
+    } else if (args.is("--fraction-bits")) {
+      options.depth_sweep.fraction_bits =
+          cli::parseIntList(args.name(), args.value(), kMinFractionBits, kMaxFractionBits,
+                            kMaxFractionBits, cli::ListOrder::kStrictlyAscending);
+    } else if (args.is("--sweep-views")) {
+      args.noValue();
       options.sweep_views = true;
-    } else if (arg == "--sizes") {
-      options.view_sweep.sizes =
-          parseEach(arg, value(), [&](const std::string& item) { return parseSize(arg, item); });
-    } else if (arg == "--zooms") {
-      options.view_sweep.zooms =
-          parseEach(arg, value(), [&](const std::string& item) { return parseZoom(arg, item); });
-    } else if (arg == "--label") {
-      options.view_sweep.label = value();
-      options.label_given = true;
-    } else if (arg == "--rounds") {
-      options.view_sweep.rounds = parseInteger(arg, value());
-      if (options.view_sweep.rounds < 1 || options.view_sweep.rounds > 100) {
-        throw PrepareError("--rounds: " + std::to_string(options.view_sweep.rounds) +
-                           " is outside 1..100");
+    } else if (args.is("--sizes")) {
+      const std::string name = args.name();
+      options.view_sweep.sizes.clear();
+      for (const cli::FrameSize& size : parseEach(name, args.value(), [&](const std::string& item) {
+             return parseSize(name, item);
+           })) {
+        options.view_sweep.sizes.emplace_back(size.width, size.height);
       }
-    } else if (arg == "--pictures") {
+    } else if (args.is("--zooms")) {
+      const std::string name = args.name();
+      options.view_sweep.zooms = parseEach(name, args.value(), [&](const std::string& item) {
+        return cli::parseZoom(name, item).raw() / static_cast<double>(Q16::kOneRaw);
+      });
+    } else if (args.is("--label")) {
+      options.view_sweep.label = parseLabel(args.name(), args.value());
+      options.label_given = true;
+    } else if (args.is("--rounds")) {
+      options.view_sweep.rounds = cli::parseInt(args.name(), args.value(), 1, 100);
+    } else if (args.is("--pictures")) {
+      args.noValue();
       options.view_sweep.pictures = true;
-    } else if (arg == "-o" || arg == "--output") {
-      options.output = value();
-    } else if (!arg.empty() && arg[0] == '-') {
-      throw PrepareError("unknown option '" + arg + "' (see --help)");
-    } else if (!options.scan.empty()) {
-      throw PrepareError("more than one SCAN given: '" + options.scan + "' and '" + arg + "'");
+    } else if (args.is("-o") || args.is("--output")) {
+      options.output = args.value();
+    } else if (args.isPlain() && options.scan.empty()) {
+      options.scan = args.current();
     } else {
-      options.scan = arg;
+      args.refuseUnknown();
     }
   }
-  if (options.scan.empty()) throw PrepareError("no SCAN given (see --help)");
+  if (options.scan.empty()) throw cli::Error("no SCAN given (see --help)");
   options.view_sweep.camera = camera;
-  if (!options.label_given) options.view_sweep.label = fs::path(options.scan).stem().string();
+  if (!options.label_given) {
+    std::string stem = fs::path(options.scan).stem().string();
+    std::replace_if(
+        stem.begin(), stem.end(), [](char c) { return c == ',' || c == '|' || c == '"'; }, '_');
+    options.view_sweep.label = cli::printable(stem.substr(0, kMaxLabelLength));
+  }
   return options;
+}
+
+// Refuses, before any work, an output directory or output file that cannot be written.
+void checkOutputs(const Options& options) {
+  std::error_code error;
+  if (!fs::exists(options.output, error)) return;  // made at the end
+  if (!fs::is_directory(options.output, error)) {
+    throw cli::Error(cli::displayPath(options.output) +
+                     ": the output path exists and is not a directory");
+  }
+  const std::vector<std::string> names =
+      options.sweep_views ? tradeoff::viewSweepOutputNames() : tradeoff::depthSweepOutputNames();
+  for (const std::string& name : names) cli::checkOutputFile(options.output / name);
+  const fs::path pictures = options.output / "pictures";
+  if (options.view_sweep.pictures && fs::exists(pictures, error) &&
+      !fs::is_directory(pictures, error)) {
+    throw cli::Error(cli::displayPath(pictures) + ": exists and is not a directory");
+  }
 }
 
 int run(int argc, char** argv) {
   const Options options = parseOptions(argc, argv);
+  checkOutputs(options);
   const tradeoff::Scene scene = tradeoff::loadScene(options.scan, options.prepare);
-  std::error_code error;
-  fs::create_directories(options.output, error);
-  if (error)
-    throw PrepareError(options.output.string() +
-                       ": cannot create the output directory: " + error.message());
-  if (options.sweep_views)
-    tradeoff::runViewSweep(scene, options.view_sweep, options.output);
-  else
-    tradeoff::runDepthSweep(scene, options.depth_sweep, options.output);
+  const std::vector<cli::OutputFile> files =
+      options.sweep_views ? tradeoff::runViewSweep(scene, options.view_sweep, options.output)
+                          : tradeoff::runDepthSweep(scene, options.depth_sweep);
+  cli::writeFilesAtomically(options.output, files);
+  for (const cli::OutputFile& file : files)
+    std::printf("wrote %s\n", (options.output / file.name).c_str());
   return 0;
 }
 
 }  // namespace
 
 int main(int argc, char** argv) {
-  try {
-    return run(argc, argv);
-  } catch (const std::exception& error) {
-    std::fprintf(stderr, "octopoint-tradeoff: %s\n", error.what());
-  }
-  return 1;
+  return octopoint::cli::runTool("octopoint-tradeoff", argc, argv, run);
 }

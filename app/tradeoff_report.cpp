@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cstdio>
-#include <fstream>
 #include <functional>
 #include <sstream>
 
@@ -201,11 +200,10 @@ const SweepResult* SweepCell::find(Config config) const {
   return nullptr;
 }
 
-void writeSweepCsv(const std::string& label, const std::vector<SweepCell>& cells,
-                   const std::filesystem::path& path) {
-  std::ofstream csv(path);
-  csv << "scan,width,height,zoom,config,depth,splat_columns,splat_rows,ms_per_frame,empty_share,"
-         "psnr_db,ssim\n";
+std::string sweepCsv(const std::string& label, const std::vector<SweepCell>& cells) {
+  std::string csv =
+      "scan,width,height,zoom,config,depth,splat_columns,splat_rows,ms_per_frame,empty_share,"
+      "psnr_db,ssim\n";
   for (const SweepCell& cell : cells) {
     for (const SweepResult& r : cell.results) {
       char line[256];
@@ -213,14 +211,13 @@ void writeSweepCsv(const std::string& label, const std::vector<SweepCell>& cells
                     label.c_str(), cell.width, cell.height, cell.zoom, configName(r.config),
                     r.depth, r.splat_columns, r.splat_rows, r.ms_per_frame, r.quality.empty_share,
                     r.quality.psnr, r.quality.ssim);
-      csv << line;
+      csv += line;
     }
   }
-  if (!csv) throw std::runtime_error(path.string() + ": cannot write");
+  return csv;
 }
 
-void writeSweepMarkdown(const std::string& label, const std::vector<SweepCell>& cells,
-                        const std::filesystem::path& path) {
+std::string sweepMarkdown(const std::string& label, const std::vector<SweepCell>& cells) {
   std::ostringstream md;
   md << "### " << label << "\n\n"
      << "Each cell: before (finest depth, one pixel per voxel) / before with hole filling / after "
@@ -251,9 +248,7 @@ void writeSweepMarkdown(const std::string& label, const std::vector<SweepCell>& 
                      : std::string("not in this sweep"))
        << "\n";
   }
-  std::ofstream out(path);
-  out << md.str();
-  if (!out) throw std::runtime_error(path.string() + ": cannot write");
+  return md.str();
 }
 
 }  // namespace octopoint::tradeoff

@@ -34,11 +34,9 @@ struct SweepCell {
   const SweepResult* find(Config config) const;
 };
 
-void writeSweepCsv(const std::string& label, const std::vector<SweepCell>& cells,
-                   const std::filesystem::path& path);
+std::string sweepCsv(const std::string& label, const std::vector<SweepCell>& cells);
 // The table (before / before + fill / after side by side per cell) and, when the cells hold
 // "after" results, every target of issue 11 with its measured numbers.
-void writeSweepMarkdown(const std::string& label, const std::vector<SweepCell>& cells,
-                        const std::filesystem::path& path);
+std::string sweepMarkdown(const std::string& label, const std::vector<SweepCell>& cells);
 
 }  // namespace octopoint::tradeoff

@@ -1,9 +1,11 @@
 // octopoint-tradeoff's common parts: the scene, in-memory models, the reference and the measures.
+#include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 
 #include "app/image_quality.h"
 #include "app/reference_render.h"
 #include "app/tradeoff.h"
+#include "cli/error.h"
 #include "codegen/model_writer.h"
 #include "codegen/prepare_error.h"
 
@@ -39,6 +41,12 @@ Reference referenceFor(const Scene& scene, const Camera& camera) {
   reference.image =
       renderReference(scene.surface, scene.fit, camera, kBackground, &reference.silhouette);
   return reference;
+}
+
+std::string encodePng(const cv::Mat& image) {
+  std::vector<std::uint8_t> png;
+  if (!cv::imencode(".png", image, png)) throw cli::Error("cannot encode a PNG");
+  return {png.begin(), png.end()};
 }
 
 cv::Mat toImage(const Framebuffer& frame, const ModelView& model) {

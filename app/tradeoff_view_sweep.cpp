@@ -4,7 +4,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 #include <stdexcept>
 #include <string>
@@ -12,6 +11,9 @@
 
 #include "app/tradeoff.h"
 #include "app/tradeoff_report.h"
+#include "cli/error.h"
+#include "cli/output_file.h"
+#include "cli/text.h"
 #include "renderer/hole_fill.h"
 #include "renderer/level_of_detail.h"
 #include "renderer/render.h"
@@ -35,11 +37,9 @@ class SweepDrawer {
     frame.clear();
     const LevelView* level =
         config == Config::kAfter ? autoLevel(after_, camera) : &before_.finestLevel();
-    if (level == nullptr)
-      throw std::runtime_error("depth auto: the camera is refused at every depth");
+    if (level == nullptr) throw cli::Error("depth auto: the camera is refused at every depth");
     const CameraError error = buildFrameSetup(camera, level->depth, kDefaultFractionBits, &setup_);
-    if (error != CameraError::kNone)
-      throw std::runtime_error(std::string("camera: ") + describe(error));
+    if (error != CameraError::kNone) throw cli::Error(std::string("camera: ") + describe(error));
     if (config != Config::kAfter) setup_.splat = SplatFootprint{};  // one pixel per leaf, as before
     renderLevel(variant_, *level, setup_, frame);
     if (config == Config::kBeforeFilled) filler.fill(frame, bridgeDepthLimit(setup_));
@@ -53,10 +53,9 @@ class SweepDrawer {
           level == nullptr ? CameraError::kOverflow
                            : buildFrameSetup(camera, level->depth, kDefaultFractionBits, &setup_);
       if (error != CameraError::kNone) {
-        throw std::runtime_error(std::to_string(camera.width) + "x" +
-                                 std::to_string(camera.height) + " at zoom " +
-                                 std::to_string(camera.zoom.raw() / 65536.0) + " (" +
-                                 configName(config) + "): " + describe(error));
+        throw cli::Error(std::to_string(camera.width) + "x" + std::to_string(camera.height) +
+                         " at zoom " + std::to_string(camera.zoom.raw() / 65536.0) + " (" +
+                         configName(config) + "): " + describe(error));
       }
     }
   }
@@ -119,7 +118,10 @@ void markEmpty(const Reference& reference, const Framebuffer& frame, cv::Mat* ma
 
 }  // namespace
 
-void runViewSweep(const Scene& scene, const ViewSweepOptions& options, const fs::path& output) {
+std::vector<std::string> viewSweepOutputNames() { return {"sweep.csv", "sweep.md"}; }
+
+std::vector<cli::OutputFile> runViewSweep(const Scene& scene, const ViewSweepOptions& options,
+                                          const fs::path& output) {
   const std::unique_ptr<InMemoryModel> before_model = prepareInMemory(scene, kBeforeDepths);
   // After: the model with the preparer's default depths, drawn at depth auto.
   const std::unique_ptr<InMemoryModel> after_model =
@@ -130,7 +132,13 @@ void runViewSweep(const Scene& scene, const ViewSweepOptions& options, const fs:
     for (double zoom : options.zooms)
       drawer.check(cameraOf(options, SweepCell{width, height, zoom, {}}));
   }
-  if (options.pictures) fs::create_directories(output / "pictures");
+  const fs::path pictures_dir = output / "pictures";
+  if (options.pictures) {
+    std::error_code error;
+    fs::create_directories(pictures_dir, error);
+    if (error)
+      throw cli::Error(cli::displayPath(pictures_dir) + ": cannot create it: " + error.message());
+  }
 
   // Quality: one frame of each configuration per cell against the reference.
   std::vector<SweepCell> cells;
@@ -155,10 +163,10 @@ void runViewSweep(const Scene& scene, const ViewSweepOptions& options, const fs:
       if (options.pictures) {
         char name[64];
         std::snprintf(name, sizeof name, "%dx%d_zoom%g.png", width, height, zoom);
-        cv::imwrite((output / "pictures" / name).string(),
-                    sideBySide(reference.image, pictures[1], pictures[2]));
+        cli::writeFileAtomically(pictures_dir / name,
+                                 encodePng(sideBySide(reference.image, pictures[1], pictures[2])));
         std::snprintf(name, sizeof name, "%dx%d_zoom%g_empty.png", width, height, zoom);
-        cv::imwrite((output / "pictures" / name).string(), after_empty);
+        cli::writeFileAtomically(pictures_dir / name, encodePng(after_empty));
       }
       cells.push_back(std::move(cell));
     }
@@ -190,10 +198,9 @@ void runViewSweep(const Scene& scene, const ViewSweepOptions& options, const fs:
       cells[c].results[k].ms_per_frame = ms[ms.size() / 2];
     }
   }
-  writeSweepCsv(options.label, cells, output / "sweep.csv");
-  writeSweepMarkdown(options.label, cells, output / "sweep.md");
-  std::printf("wrote %s and %s (%zu cells)\n", (output / "sweep.csv").c_str(),
-              (output / "sweep.md").c_str(), cells.size());
+  const std::vector<std::string> names = viewSweepOutputNames();
+  return {{names[0], sweepCsv(options.label, cells)},
+          {names[1], sweepMarkdown(options.label, cells)}};
 }
 
 }  // namespace octopoint::tradeoff
