@@ -33,12 +33,15 @@ struct Scene {
 };
 Scene loadScene(const std::string& scan_path, const prepare::PrepareOptions& options);
 
-// A model prepared in memory from the scene at `depths`; the view points into `bytes`.
+// A model prepared in memory from the scene at `depths` (only the densely sampled ones when
+// `dense_only`, as octopoint-prepare's default range: codegen/depth_range.h); the view points
+// into `bytes`.
 struct InMemoryModel {
   std::vector<std::uint8_t> bytes;
   std::optional<ModelView> view;
 };
-std::unique_ptr<InMemoryModel> prepareInMemory(const Scene& scene, const std::vector<int>& depths);
+std::unique_ptr<InMemoryModel> prepareInMemory(const Scene& scene, const std::vector<int>& depths,
+                                               bool dense_only = false);
 
 // The reference render of the scene for `camera`, with its silhouette (CV_8U, 255 = object).
 struct Reference {

@@ -217,9 +217,11 @@ std::string sweepCsv(const std::string& label, const std::vector<SweepCell>& cel
   return csv;
 }
 
-std::string sweepMarkdown(const std::string& label, const std::vector<SweepCell>& cells) {
+std::string sweepMarkdown(const std::string& label, const std::string& models,
+                          const std::vector<SweepCell>& cells) {
   std::ostringstream md;
   md << "### " << label << "\n\n"
+     << models << "\n\n"
      << "Each cell: before (finest depth, one pixel per voxel) / before with hole filling / after "
         "(depth auto, "
         "splats, no filling).\n\n"

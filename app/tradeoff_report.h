@@ -37,6 +37,8 @@ struct SweepCell {
 std::string sweepCsv(const std::string& label, const std::vector<SweepCell>& cells);
 // The table (before / before + fill / after side by side per cell) and, when the cells hold
 // "after" results, every target of issue 11 with its measured numbers.
-std::string sweepMarkdown(const std::string& label, const std::vector<SweepCell>& cells);
+// `models` says what before and after draw (their depths and sizes), under the heading.
+std::string sweepMarkdown(const std::string& label, const std::string& models,
+                          const std::vector<SweepCell>& cells);
 
 }  // namespace octopoint::tradeoff

@@ -23,9 +23,11 @@ Scene loadScene(const std::string& scan_path, const prepare::PrepareOptions& opt
   return scene;
 }
 
-std::unique_ptr<InMemoryModel> prepareInMemory(const Scene& scene, const std::vector<int>& depths) {
+std::unique_ptr<InMemoryModel> prepareInMemory(const Scene& scene, const std::vector<int>& depths,
+                                               bool dense_only) {
   prepare::PrepareOptions options = scene.prepare;
   options.depths = depths;
+  options.stop_at_sparse_depth = dense_only;
   auto model = std::make_unique<InMemoryModel>();
   model->bytes =
       prepare::serializeModel(prepare::prepareModel(scene.scan, scene.scan_path, options));

@@ -14,6 +14,7 @@
 #include "cli/error.h"
 #include "cli/output_file.h"
 #include "cli/text.h"
+#include "codegen/depth_range.h"
 #include "renderer/hole_fill.h"
 #include "renderer/level_of_detail.h"
 #include "renderer/render.h"
@@ -74,6 +75,24 @@ class SweepDrawer {
 
 constexpr Config kConfigs[] = {Config::kBefore, Config::kBeforeFilled, Config::kAfter};
 
+// "6..8 (123,456 bytes)": a model's stored depths and its size.
+std::string storedDepths(const InMemoryModel& model) {
+  std::vector<int> depths;
+  for (int i = 0; i < model.view->levelCount(); ++i) depths.push_back(model.view->level(i).depth);
+  const std::string digits = std::to_string(model.bytes.size());
+  std::string bytes;
+  for (std::size_t i = 0; i < digits.size(); ++i) {
+    if (i > 0 && (digits.size() - i) % 3 == 0) bytes += ',';
+    bytes += digits[i];
+  }
+  // Appended piece by piece: GCC 12 warns falsely (-Wrestrict) on "literal" + string.
+  std::string text = prepare::describeDepths(depths);
+  text += " (";
+  text += bytes;
+  text += " bytes)";
+  return text;
+}
+
 Camera cameraOf(const ViewSweepOptions& options, const SweepCell& cell) {
   Camera camera = options.camera;
   camera.width = cell.width;
@@ -123,9 +142,10 @@ std::vector<std::string> viewSweepOutputNames() { return {"sweep.csv", "sweep.md
 std::vector<cli::OutputFile> runViewSweep(const Scene& scene, const ViewSweepOptions& options,
                                           const fs::path& output) {
   const std::unique_ptr<InMemoryModel> before_model = prepareInMemory(scene, kBeforeDepths);
-  // After: the model with the preparer's default depths, drawn at depth auto.
+  // After: the model octopoint-prepare makes by default (depths 6..10 as far as the scan samples
+  // them densely), drawn at depth auto.
   const std::unique_ptr<InMemoryModel> after_model =
-      prepareInMemory(scene, prepare::PrepareOptions{}.depths);
+      prepareInMemory(scene, prepare::defaultDepths(), /*dense_only=*/true);
   SweepDrawer drawer(*before_model->view, *after_model->view);
   // Every view is checked before anything is written: a refused one leaves no half-written sweep.
   for (const auto& [width, height] : options.sizes) {
@@ -198,9 +218,14 @@ std::vector<cli::OutputFile> runViewSweep(const Scene& scene, const ViewSweepOpt
       cells[c].results[k].ms_per_frame = ms[ms.size() / 2];
     }
   }
+  std::string models = "Before: depths ";
+  models += storedDepths(*before_model);
+  models += ", after: depths ";
+  models += storedDepths(*after_model);
+  models += ".";
   const std::vector<std::string> names = viewSweepOutputNames();
   return {{names[0], sweepCsv(options.label, cells)},
-          {names[1], sweepMarkdown(options.label, cells)}};
+          {names[1], sweepMarkdown(options.label, models, cells)}};
 }
 
 }  // namespace octopoint::tradeoff
