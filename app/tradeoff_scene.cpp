@@ -61,16 +61,28 @@ cv::Mat toImage(const Framebuffer& frame, const ModelView& model) {
 
 Quality measure(const Reference& reference, const Framebuffer& frame, const ModelView& model) {
   const cv::Mat drawn = toImage(frame, model);
-  std::int64_t object = 0, empty = 0;
+  cv::Mat interior;  // outside the frame counts as outside the silhouette
+  cv::erode(
+      reference.silhouette, interior,
+      cv::getStructuringElement(cv::MORPH_RECT, {2 * kInteriorMargin + 1, 2 * kInteriorMargin + 1}),
+      {-1, -1}, 1, cv::BORDER_CONSTANT, cv::Scalar(0));
+  std::int64_t object = 0, empty = 0, inner = 0, inner_empty = 0;
   for (int y = 0; y < frame.height(); ++y) {
     const std::uint8_t* inside = reference.silhouette.ptr<std::uint8_t>(y);
+    const std::uint8_t* deep = interior.ptr<std::uint8_t>(y);
     for (int x = 0; x < frame.width(); ++x) {
+      const bool hole = !frame.covered(x, y);
       object += inside[x] != 0;
-      empty += inside[x] != 0 && !frame.covered(x, y);
+      empty += inside[x] != 0 && hole;
+      inner += deep[x] != 0;
+      inner_empty += deep[x] != 0 && hole;
     }
   }
-  return {psnr(reference.image, drawn), ssim(reference.image, drawn),
-          object == 0 ? 0.0 : static_cast<double>(empty) / static_cast<double>(object)};
+  auto share = [](std::int64_t part, std::int64_t whole) {
+    return whole == 0 ? 0.0 : static_cast<double>(part) / static_cast<double>(whole);
+  };
+  return {psnr(reference.image, drawn), ssim(reference.image, drawn), share(empty, object),
+          share(inner_empty, inner)};
 }
 
 }  // namespace octopoint::tradeoff

@@ -102,15 +102,17 @@ Camera cameraOf(const ViewSweepOptions& options, const SweepCell& cell) {
 }
 
 // Reference | before with filling | after, side by side under a caption strip.
-cv::Mat sideBySide(const cv::Mat& reference, const cv::Mat& before, const cv::Mat& after) {
+// Only the `region` of each (the whole frame, or its centre for a closer look at 1:1).
+cv::Mat sideBySide(const cv::Mat& reference, const cv::Mat& before, const cv::Mat& after,
+                   const cv::Rect& region) {
   constexpr int kCaption = 28, kGap = 6;
-  const int w = reference.cols, h = reference.rows;
+  const int w = region.width, h = region.height;
   cv::Mat out(h + kCaption, 3 * w + 2 * kGap, CV_8UC3, cv::Scalar(255, 255, 255));
   const char* captions[] = {"reference (scan surface)", "before: depth 8 + hole filling",
                             "after: depth auto, splats"};
   const cv::Mat* panels[] = {&reference, &before, &after};
   for (int k = 0; k < 3; ++k) {
-    panels[k]->copyTo(out(cv::Rect(k * (w + kGap), kCaption, w, h)));
+    (*panels[k])(region).copyTo(out(cv::Rect(k * (w + kGap), kCaption, w, h)));
     // The captions shrink with narrow panels (about 260 pixels of text at scale 0.5).
     cv::putText(out, captions[k], {k * (w + kGap) + 4, kCaption - 8}, cv::FONT_HERSHEY_SIMPLEX,
                 std::min(0.5, 0.5 * (w - 8) / 260.0), cv::Scalar(0, 0, 0));
@@ -133,6 +135,22 @@ void markEmpty(const Reference& reference, const Framebuffer& frame, cv::Mat* ma
       }
     }
   }
+}
+
+// A cell's pictures: WxH_zoomZ.png (reference | before with filling | after), _centre.png (the
+// centre quarter of each at 1:1) and _empty.png (markEmpty), each written whole.
+void writePictures(const fs::path& directory, const SweepCell& cell, const cv::Mat& reference,
+                   const cv::Mat (&frames)[3], const cv::Mat& after_empty) {
+  const int w = cell.width, h = cell.height;
+  char stem[48];
+  std::snprintf(stem, sizeof stem, "%dx%d_zoom%g", w, h, cell.zoom);
+  const cv::Rect whole(0, 0, w, h), centre(w / 4, h / 4, std::max(1, w / 2), std::max(1, h / 2));
+  const std::string base = stem;
+  cli::writeFileAtomically(directory / (base + ".png"),
+                           encodePng(sideBySide(reference, frames[1], frames[2], whole)));
+  cli::writeFileAtomically(directory / (base + "_centre.png"),
+                           encodePng(sideBySide(reference, frames[1], frames[2], centre)));
+  cli::writeFileAtomically(directory / (base + "_empty.png"), encodePng(after_empty));
 }
 
 }  // namespace
@@ -180,14 +198,8 @@ std::vector<cli::OutputFile> runViewSweep(const Scene& scene, const ViewSweepOpt
           if (kConfigs[k] == Config::kAfter) markEmpty(reference, frame, &after_empty);
         }
       }
-      if (options.pictures) {
-        char name[64];
-        std::snprintf(name, sizeof name, "%dx%d_zoom%g.png", width, height, zoom);
-        cli::writeFileAtomically(pictures_dir / name,
-                                 encodePng(sideBySide(reference.image, pictures[1], pictures[2])));
-        std::snprintf(name, sizeof name, "%dx%d_zoom%g_empty.png", width, height, zoom);
-        cli::writeFileAtomically(pictures_dir / name, encodePng(after_empty));
-      }
+      if (options.pictures)
+        writePictures(pictures_dir, cell, reference.image, pictures, after_empty);
       cells.push_back(std::move(cell));
     }
     std::fprintf(stderr, "octopoint-tradeoff: %s %dx%d measured\n", options.label.c_str(), width,
