@@ -1,4 +1,6 @@
 // octopoint-tradeoff's common parts: the scene, in-memory models, the reference and the measures.
+#include <algorithm>
+#include <cstdio>
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 
@@ -20,6 +22,18 @@ Scene loadScene(const std::string& scan_path, const prepare::PrepareOptions& opt
   const prepare::Scan points = prepare::modelPoints(scene.scan, scan_path, options);
   scene.fit = prepare::fitCube(points.positions, scan_path);
   scene.surface = buildReferenceSurface(points);
+  if (scene.surface.splat_radius.empty()) {
+    std::fprintf(stderr, "octopoint-tradeoff: reference surface: %zu triangles over %zu points\n",
+                 scene.surface.triangles.size(), points.positions.size());
+  } else {
+    std::vector<float> radius = scene.surface.splat_radius;
+    std::nth_element(radius.begin(),
+                     radius.begin() + static_cast<std::ptrdiff_t>(radius.size() / 2), radius.end());
+    std::fprintf(
+        stderr,
+        "octopoint-tradeoff: reference surface: %zu splats, median radius %.3g (cube edge %.3g)\n",
+        radius.size(), static_cast<double>(radius[radius.size() / 2]), scene.fit.edge);
+  }
   return scene;
 }
 
