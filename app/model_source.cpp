@@ -7,17 +7,17 @@
 namespace octopoint {
 namespace {
 
-// Built by appending: GCC 12 warns falsely (-Wrestrict) on chains of string + here.
+// "bad magic (file byte 0)", "zero mask byte (depth 8, file byte 1234)": the byte a hex editor
+// shows. Built by appending: GCC 12 warns falsely (-Wrestrict) on chains of string + here.
 std::string issueText(const ModelIssue& issue) {
   std::string text = describe(issue.error);
+  text += " (";
   if (issue.depth != 0) {
-    text += " (depth ";
+    text += "depth ";
     text += std::to_string(issue.depth);
-    text += " stream";
-  } else {
-    text += " (file";
+    text += ", ";
   }
-  text += ", byte ";
+  text += issue.offset_in_file ? "file byte " : "stream byte ";
   text += std::to_string(issue.offset);
   text += ')';
   return text;

@@ -15,8 +15,9 @@ std::uint16_t readU16(const std::uint8_t* p) {
   return static_cast<std::uint16_t>(p[0] | p[1] << 8);
 }
 
+// A problem of the file's header or level table: its offset is in the file.
 bool fail(ModelIssue* issue, ModelError error, std::size_t offset, int depth = 0) {
-  if (issue != nullptr) *issue = ModelIssue{error, offset, depth};
+  if (issue != nullptr) *issue = ModelIssue{error, offset, depth, true};
   return false;
 }
 
@@ -105,20 +106,47 @@ ModelIssue validateLevelStream(const LevelView& level, int palette_count) {
   return {};
 }
 
-bool ModelView::validateLevels(ModelView& view, ModelIssue* issue) {
+namespace {
+
+// Where level `index`'s problem lies in a whole model image starting at `file`: in its node
+// stream, its leaves, or its row of the level table (depth, then node bytes, then leaf count).
+std::size_t fileOffsetOf(const ModelIssue& issue, const LevelView& level, int index, const std::uint8_t* file) {
+  const std::size_t row = format::kHeaderBytes + format::kLevelRowBytes * static_cast<std::size_t>(index);
+  switch (issue.error) {
+    case ModelError::kEmptyNode:
+    case ModelError::kStreamTruncated:
+    case ModelError::kTrailingNodeBytes:
+      return static_cast<std::size_t>(level.nodes.data() - file) + issue.offset;
+    case ModelError::kLeafOutsidePalette:
+      return static_cast<std::size_t>(level.leaves.data() - file) + issue.offset;
+    case ModelError::kLeafCountMismatch: return row + 8;
+    case ModelError::kEmptyLevel:
+    case ModelError::kImplausibleLevelSize: return row + 4;
+    default: return row;  // the depth
+  }
+}
+
+}  // namespace
+
+bool ModelView::validateLevels(ModelView& view, ModelIssue* issue, const std::uint8_t* file) {
   int previous_depth = 0;
   for (int i = 0; i < view.level_count_; ++i) {
     const LevelView& level = view.level(i);
+    ModelIssue found;
     if (level.depth < 1 || level.depth > format::kMaxDepth) {
-      return fail(issue, ModelError::kBadDepth, 0, level.depth);
-    }
-    if (level.depth <= previous_depth) {
-      return fail(issue, ModelError::kDepthsNotAscending, 0, level.depth);
+      found = {ModelError::kBadDepth, 0, level.depth};
+    } else if (level.depth <= previous_depth) {
+      found = {ModelError::kDepthsNotAscending, 0, level.depth};
+    } else {
+      found = validateLevelStream(level, view.palette_count_);
     }
     previous_depth = level.depth;
-    const ModelIssue stream_issue = validateLevelStream(level, view.palette_count_);
-    if (stream_issue.error != ModelError::kNone) {
-      if (issue != nullptr) *issue = stream_issue;
+    if (found.error != ModelError::kNone) {
+      if (file != nullptr) {
+        found.offset = fileOffsetOf(found, level, i, file);
+        found.offset_in_file = true;
+      }
+      if (issue != nullptr) *issue = found;
       return false;
     }
   }
@@ -198,7 +226,7 @@ std::optional<ModelView> ModelView::fromBytes(std::span<const std::uint8_t> byte
     fail(issue, ModelError::kSizeMismatch, static_cast<std::size_t>(data_at));
     return std::nullopt;
   }
-  if (!validateLevels(view, issue)) return std::nullopt;
+  if (!validateLevels(view, issue, p)) return std::nullopt;
   if (issue != nullptr) *issue = {};
   return view;
 }
@@ -227,7 +255,7 @@ std::optional<ModelView> ModelView::fromEmbedded(const EmbeddedModel& model, Mod
     view.levels_[static_cast<std::size_t>(i)] = LevelView{
         source.depth, {source.nodes, source.node_bytes}, {source.leaves, source.leaf_count}};
   }
-  if (!validateLevels(view, issue)) return std::nullopt;
+  if (!validateLevels(view, issue, nullptr)) return std::nullopt;
   if (issue != nullptr) *issue = {};
   return view;
 }

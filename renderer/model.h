@@ -40,8 +40,12 @@ const char* describe(ModelError error);
 
 struct ModelIssue {
   ModelError error = ModelError::kNone;
-  std::size_t offset = 0;  // byte offset where it was found (in the file, or in the level's stream)
-  int depth = 0;           // the level concerned, 0 when the header is at fault
+  // Where it was found: from fromBytes, the byte of the model image (the `.oct` file) at fault, be
+  // it in the header, the level table or a stream; otherwise (fromEmbedded, validateLevelStream)
+  // the byte of the level's node stream, or the leaf's index for a leaf colour.
+  std::size_t offset = 0;
+  int depth = 0;  // the level concerned, 0 when the header is at fault
+  bool offset_in_file = false;  // offset counts from the start of the model image
 };
 
 struct Rgb {
@@ -74,7 +78,8 @@ class ModelView {
 
  private:
   ModelView() = default;
-  static bool validateLevels(ModelView& view, ModelIssue* issue);
+  // `file`: the start of the image for fromBytes, so that offsets are the file's; else nullptr.
+  static bool validateLevels(ModelView& view, ModelIssue* issue, const std::uint8_t* file);
 
   std::uint32_t cube_edge_um_ = 0;
   int palette_count_ = 0;

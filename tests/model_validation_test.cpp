@@ -192,7 +192,29 @@ TEST(ModelValidation, ReportsWhereTheStreamWentWrong) {
   EXPECT_FALSE(ModelView::fromBytes(image, &issue).has_value());
   EXPECT_EQ(issue.error, ModelError::kEmptyNode);
   EXPECT_EQ(issue.depth, 2);
-  EXPECT_EQ(issue.offset, 1u);  // the second byte of that level's node stream
+  // The second byte of that level's node stream, counted in the file (its 3 bytes end the image).
+  EXPECT_TRUE(issue.offset_in_file);
+  EXPECT_EQ(issue.offset, image.size() - 3 + 1);
+  EXPECT_EQ(image[issue.offset], 0x00);
+  // validateLevelStream itself counts in the stream.
+  const ModelIssue in_stream = validateLevelStream({2, std::span<const std::uint8_t>(image).last(3).first(2),
+                                                    std::span<const std::uint8_t>(image).last(1)}, 1);
+  EXPECT_EQ(in_stream.offset, 1u);
+  EXPECT_FALSE(in_stream.offset_in_file);
+}
+
+TEST(ModelValidation, LevelSizeAndLeafErrorsPointAtTheirBytesInTheFile) {
+  ModelIssue issue;
+  // A leaf colour past the palette: the leaf's own byte.
+  const auto image = modelImage({{1, {0x81}, {0, 2}}}, 2);
+  EXPECT_FALSE(ModelView::fromBytes(image, &issue).has_value());
+  EXPECT_EQ(issue.error, ModelError::kLeafOutsidePalette);
+  EXPECT_EQ(issue.offset, image.size() - 1);
+  // A leaf count the tree does not have: the count in the level table.
+  const auto miscounted = modelImage({{1, {0x81}, {0, 1, 1}}});
+  EXPECT_FALSE(ModelView::fromBytes(miscounted, &issue).has_value());
+  EXPECT_EQ(issue.error, ModelError::kLeafCountMismatch);
+  EXPECT_EQ(issue.offset, format::kHeaderBytes + 8);
 }
 
 TEST(ModelValidation, ValidatesEmbeddedModelsTheSameWay) {
