@@ -12,6 +12,7 @@
 #include "models/registry.h"
 #include "renderer/level_of_detail.h"
 #include "renderer/render.h"
+#include "renderer/rgb_renderer.h"
 #include "tests/dual_resolution_fixture.h"
 
 namespace {
@@ -144,6 +145,28 @@ TEST(FrameAllocation, DualResolutionFramesAllocateNothingOnceAResizeSettles) {
   ASSERT_FALSE(round.failed());
   EXPECT_GE(renderer.status().coarse_shown, 15u);
   EXPECT_EQ(allocations, 0) << "in 5 turns of the view (15 coarse frames or more, 5 fine ones)";
+}
+
+// The one-call path (renderer/rgb_renderer.h) allocates its frame on the first draw and again
+// only when the camera's size changes: frame after frame at one size, nothing.
+TEST(FrameAllocation, RgbRendererAllocatesOnlyWhenTheSizeChanges) {
+  ModelIssue issue;
+  const auto model = ModelView::fromEmbedded(*models::defaultModel(), &issue);
+  ASSERT_TRUE(model.has_value()) << describe(issue.error);
+  Camera camera;
+  std::vector<std::uint8_t> rgb(static_cast<std::size_t>(camera.width * camera.height) * 3);
+  RgbRenderer renderer;
+  DrawOptions options;
+  options.fill_holes = true;
+  long before = g_allocation_count.load();
+  ASSERT_EQ(renderer.draw(*model, camera, rgb, options), DrawError::kNone);
+  EXPECT_GT(g_allocation_count.load() - before, 0);  // the first draw sizes the frame
+  for (int yaw_degrees : {10, 20, 30}) {
+    camera.yaw = Angle::fromDegrees(yaw_degrees);
+    before = g_allocation_count.load();
+    ASSERT_EQ(renderer.draw(*model, camera, rgb, options), DrawError::kNone);
+    EXPECT_EQ(g_allocation_count.load() - before, 0) << "yaw " << yaw_degrees;
+  }
 }
 
 }  // namespace

@@ -1,19 +1,27 @@
 #include "renderer/framebuffer.h"
 
 #include <algorithm>
-#include <cassert>
 #include <utility>
 
 namespace octopoint {
 
 void FrameView::clear() { std::fill(pixel_, pixel_ + pixelCount(), kEmpty); }
 
+namespace {
+
+bool validSize(std::int32_t width, std::int32_t height) {
+  return width >= 1 && width <= kMaxViewportSide && height >= 1 && height <= kMaxViewportSide;
+}
+
+}  // namespace
+
 Framebuffer::Framebuffer(std::int32_t width, std::int32_t height)
-    : FrameView(nullptr, width, height),
-      storage_(static_cast<std::size_t>(width) * static_cast<std::size_t>(height), kEmpty) {
-  assert(width > 0 && height > 0);
+    : FrameView(nullptr, validSize(width, height) ? width : 0, validSize(width, height) ? height : 0),
+      storage_(pixelCount(), kEmpty) {
   pixel_ = storage_.data();
 }
+
+Framebuffer::Framebuffer(const FrameSetup& setup) : Framebuffer(setup.width, setup.height) {}
 
 // The view's pointer always names this object's own storage, never the source's.
 Framebuffer::Framebuffer(const Framebuffer& other) : FrameView(other), storage_(other.storage_) {
@@ -47,10 +55,10 @@ Framebuffer& Framebuffer::operator=(Framebuffer&& other) noexcept {
   return *this;
 }
 
-void resolveToRgb(const FrameView& frame, const ModelView& model, Rgb background,
+bool resolveToRgb(const FrameView& frame, const ModelView& model, Rgb background,
                   std::span<std::uint8_t> rgb) {
   const std::span<const std::uint32_t> pixels = frame.pixels();
-  assert(rgb.size() >= pixels.size() * 3);
+  if (rgb.size() < pixels.size() * 3) return false;
   for (std::size_t i = 0; i < pixels.size(); ++i) {
     const Rgb colour = pixels[i] == Framebuffer::kEmpty
                            ? background
@@ -59,6 +67,7 @@ void resolveToRgb(const FrameView& frame, const ModelView& model, Rgb background
     rgb[3 * i + 1] = colour.g;
     rgb[3 * i + 2] = colour.b;
   }
+  return true;
 }
 
 }  // namespace octopoint

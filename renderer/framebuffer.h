@@ -11,6 +11,7 @@
 #include <span>
 #include <vector>
 
+#include "renderer/camera.h"
 #include "renderer/model.h"
 
 namespace octopoint {
@@ -78,7 +79,11 @@ class FrameView {
 // A frame that owns its pixels (allocated once, at construction).
 class Framebuffer : public FrameView {
  public:
+  // A frame of width x height pixels, each 1..kMaxViewportSide (renderer/camera.h); any other size
+  // gives an empty 0 x 0 frame, which every drawing call refuses (it fits no frame set-up).
   Framebuffer(std::int32_t width, std::int32_t height);
+  // A frame of the set-up's size: the size given once, where the set-up was built.
+  explicit Framebuffer(const FrameSetup& setup);
   Framebuffer(const Framebuffer& other);
   Framebuffer(Framebuffer&& other) noexcept;
   Framebuffer& operator=(const Framebuffer& other);
@@ -90,8 +95,9 @@ class Framebuffer : public FrameView {
 };
 
 // Turns a frame into RGB888 (3 bytes per pixel, row-major): covered pixels get their palette
-// colour, empty ones `background`. `rgb` must hold width * height * 3 bytes.
-void resolveToRgb(const FrameView& frame, const ModelView& model, Rgb background,
+// colour, empty ones `background`. `rgb` must hold at least width * height * 3 bytes: otherwise
+// nothing is written and the result is false.
+bool resolveToRgb(const FrameView& frame, const ModelView& model, Rgb background,
                   std::span<std::uint8_t> rgb);
 
 }  // namespace octopoint

@@ -1,7 +1,6 @@
 #include "renderer/hole_fill.h"
 
 #include <algorithm>
-#include <cassert>
 #include <cstring>
 #include <limits>
 
@@ -43,7 +42,9 @@ std::uint32_t nearer(std::uint32_t a, std::uint32_t b) {
 }  // namespace
 
 std::uint32_t bridgeDepthLimit(const FrameSetup& setup) {
-  assert(setup.depth >= 1);
+  if (setup.depth < 1 || setup.depth > format::kMaxDepth || setup.depth_shift < 0 || setup.depth_shift > 63) {
+    return 0;  // not a set-up buildFrameSetup makes: bridge nothing
+  }
   // Children 4 and 0 of a leaf-parent differ by one voxel edge along the model's x axis, rotated.
   const auto& offsets = setup.child_offset[static_cast<std::size_t>(setup.depth - 1)];
   std::uint64_t squared = 0;
@@ -59,12 +60,14 @@ std::uint32_t bridgeDepthLimit(const FrameSetup& setup) {
 }
 
 HoleFiller::HoleFiller(std::int32_t width)
-    : width_(width), history_(holeFillHistoryWords(width), kEmpty) {
-  assert(width > 0);
-}
+    : width_(width >= 1 && width <= kMaxViewportSide ? width : 0), history_(holeFillHistoryWords(width_), kEmpty) {}
 
 HoleFillCounts HoleFiller::fill(FrameView& frame, std::uint32_t max_bridge_depth) {
-  assert(frame.width() == width_);
+  if (frame.width() != width_ || width_ == 0) {
+    HoleFillCounts refused;
+    refused.refused = true;
+    return refused;
+  }
   return fillHoleRows(frame, 0, frame.height(), max_bridge_depth, history_);
 }
 
@@ -76,8 +79,12 @@ HoleFillCounts fillHoleRows(FrameView& window, std::int32_t row_begin, std::int3
                             std::uint32_t max_bridge_depth, std::span<std::uint32_t> history) {
   const std::int32_t width = window.width();
   const std::int32_t height = window.height();
-  assert(0 <= row_begin && row_begin <= row_end && row_end <= height);
-  assert(history.size() >= holeFillHistoryWords(width));
+  if (row_begin < 0 || row_begin > row_end || row_end > height || width < 1 ||
+      history.size() < holeFillHistoryWords(width)) {
+    HoleFillCounts refused;
+    refused.refused = true;
+    return refused;
+  }
   constexpr std::int32_t kRows = kHoleFillHistoryRows;
   constexpr std::int32_t kPad = kHoleFillPadColumns;
   std::uint32_t* const pixels = window.pixelData();
@@ -160,7 +167,7 @@ HoleFillCounts fillHoleRows(FrameView& window, std::int32_t row_begin, std::int3
 
 std::int32_t countEnclosedEmptyPixels(const Framebuffer& outline, const Framebuffer& frame,
                                       std::int32_t window) {
-  assert(outline.width() == frame.width() && outline.height() == frame.height());
+  if (outline.width() != frame.width() || outline.height() != frame.height()) return -1;
   const std::int32_t width = frame.width(), height = frame.height();
   // Whether a covered pixel lies within `window` steps of (x, y) in direction (dx, dy).
   const auto coveredWithin = [&](std::int32_t x, std::int32_t y, std::int32_t dx, std::int32_t dy) {

@@ -45,6 +45,8 @@ std::uint32_t bridgeDepthLimit(const FrameSetup& setup);
 
 struct HoleFillCounts {
   std::int32_t type1 = 0, type2 = 0, type3 = 0, type4 = 0;
+  bool refused = false;  // the frame, rows or history did not fit: nothing was filled
+  bool refused = false;  // the frame was not as wide as the filler: nothing was filled
   std::int32_t total() const { return type1 + type2 + type3 + type4; }
 };
 
@@ -62,17 +64,25 @@ std::size_t holeFillHistoryWords(std::int32_t width);
 // left them; rows outside the window read as empty. So when `window` holds rows [y0, y0 + h) of a
 // frame, the result equals the whole-frame fill's rows exactly if the window also holds every frame
 // row within kHoleFillReachRows of the filled ones. `history` (holeFillHistoryWords) is scratch.
+// A row range outside the window or a history too small is refused (counts.refused, nothing
+// changed), also in release builds.
 HoleFillCounts fillHoleRows(FrameView& window, std::int32_t row_begin, std::int32_t row_end,
                             std::uint32_t max_bridge_depth, std::span<std::uint32_t> history);
 
 class HoleFiller {
  public:
-  // Allocates the row history for frames `width` pixels wide.
+  // Allocates the row history for frames `width` pixels wide (1..kMaxViewportSide; any other width
+  // makes a filler that refuses every frame).
   explicit HoleFiller(std::int32_t width);
+  // For frames as wide as `frame`: the size given once.
+  explicit HoleFiller(const Framebuffer& frame) : HoleFiller(frame.width()) {}
 
-  // Fills the gaps of types 1 to 4 in `frame` (which must be as wide as the filler) in place.
+  // Fills the gaps of types 1 to 4 in `frame` in place. A frame of another width than the
+  // filler's is refused (counts.refused, nothing changed), also in release builds.
   // `max_bridge_depth` is in the frame's depth-key units (bridgeDepthLimit). Never allocates.
   HoleFillCounts fill(FrameView& frame, std::uint32_t max_bridge_depth);
+
+  std::int32_t width() const { return width_; }
 
  private:
   std::int32_t width_;
@@ -84,6 +94,7 @@ class HoleFiller {
 // pixels from it on both sides in its row (left and right) or on both sides in its column (above
 // and below). With the unfilled frame as both arguments this counts the holes before filling;
 // with the unfilled frame as `outline` and the filled one as `frame`, the holes left after it.
+// -1 when the two frames differ in size.
 std::int32_t countEnclosedEmptyPixels(const Framebuffer& outline, const Framebuffer& frame,
                                       std::int32_t window);
 

@@ -21,22 +21,6 @@ bool fail(ModelIssue* issue, ModelError error, std::size_t offset, int depth = 0
   return false;
 }
 
-// Bounds any tree of `depth` levels obeys, checked before walking so that a hostile size is
-// refused in constant time: every inner node (one byte) has at least one leaf below it and every
-// leaf has exactly `depth` inner ancestors, so depth <= nodes <= depth * leaves; a leaf parent
-// has at most 8 leaves, so leaves <= 8 * nodes; and a full tree caps both, (8^depth - 1) / 7
-// nodes and 8^depth leaves, which only bites below depth 11 (8^11 > 2^32).
-bool plausibleLevelSize(int depth, std::uint64_t nodes, std::uint64_t leaves) {
-  const auto levels = static_cast<std::uint64_t>(depth);
-  if (nodes < levels || nodes > levels * leaves || leaves > 8 * nodes) return false;
-  if (depth <= 10) {
-    const std::uint64_t full_leaves = std::uint64_t{1} << (3 * depth);
-    // nodes > (8^depth - 1) / 7, without a division (a Cortex-M0+ has no divide instruction);
-    // nodes < 2^32 (a u32 field), so 7 * nodes cannot wrap.
-    if (leaves > full_leaves || 7 * nodes > full_leaves - 1) return false;
-  }
-  return true;
-}
 
 }  // namespace
 
@@ -61,6 +45,24 @@ const char* describe(ModelError error) {
     case ModelError::kImplausibleLevelSize: return "node bytes and leaf count impossible for the depth";
   }
   return "unknown error";
+}
+
+// Bounds any tree of `depth` levels obeys, checked before walking so that a hostile size is
+// refused in constant time: every inner node (one byte) has at least one leaf below it and every
+// leaf has exactly `depth` inner ancestors, so depth <= nodes <= depth * leaves; a leaf parent
+// has at most 8 leaves, so leaves <= 8 * nodes; and a full tree caps both, (8^depth - 1) / 7
+// nodes and 8^depth leaves, which only bites below depth 11 (8^11 > 2^32).
+bool plausibleLevelSize(int depth, std::uint64_t nodes, std::uint64_t leaves) {
+  if (depth < 1 || depth > format::kMaxDepth || nodes == 0 || leaves == 0) return false;
+  const auto levels = static_cast<std::uint64_t>(depth);
+  if (nodes < levels || nodes > levels * leaves || leaves > 8 * nodes) return false;
+  if (depth <= 10) {
+    const std::uint64_t full_leaves = std::uint64_t{1} << (3 * depth);
+    // nodes > (8^depth - 1) / 7, without a division (a Cortex-M0+ has no divide instruction);
+    // nodes < 2^32 (a u32 field), so 7 * nodes cannot wrap.
+    if (leaves > full_leaves || 7 * nodes > full_leaves - 1) return false;
+  }
+  return true;
 }
 
 ModelIssue validateLevelStream(const LevelView& level, int palette_count) {

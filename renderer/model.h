@@ -94,4 +94,9 @@ class ModelView {
 // inside the palette. Exposed for tests and tools; ModelView runs it on every level.
 ModelIssue validateLevelStream(const LevelView& level, int palette_count);
 
+// The constant-time part of that: whether some tree of `depth` levels has `nodes` node bytes and
+// `leaves` leaves (depth <= nodes <= depth * leaves, leaves <= 8 * nodes, and a full tree's
+// counts). False for a depth outside 1..format::kMaxDepth or an empty level.
+bool plausibleLevelSize(int depth, std::uint64_t nodes, std::uint64_t leaves);
+
 }  // namespace octopoint

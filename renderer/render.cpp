@@ -1,5 +1,7 @@
 #include "renderer/render.h"
 
+#include "renderer/render_check.h"
+
 #include <array>
 #include <vector>
 
@@ -48,6 +50,7 @@ bool drawsSplats(Variant variant) { return variant == Variant::kFixedFast || var
 
 bool renderLevel(Variant variant, const LevelView& level, const FrameSetup& setup,
                  FrameView& frame, const std::atomic<bool>* abort) {
+  if (checkRender(level, setup, frame) != RenderError::kNone) return false;  // refused, nothing drawn
   switch (variant) {
     case Variant::kFixedBaseline: return renderFixedBaseline(level, setup, frame, abort);
     case Variant::kFixedLeafCall: return renderFixedLeafCall(level, setup, frame, abort);

@@ -45,16 +45,19 @@ Variant defaultVariant();
 bool drawsSplats(Variant variant);
 
 // Draws `level` with the set-up of one frame into `frame` (which it does not clear, so several
-// models can share a frame). The frame must have the set-up's width and height. When `abort` is
-// given and becomes true while drawing, the decoder stops at its next poll and returns false: the
-// frame is then incomplete and must not be shown. Returns true for a complete frame.
+// models can share a frame). The frame must have the set-up's width and height (make it with
+// Framebuffer(setup)) and the level the set-up's depth; arguments that do not fit together are
+// refused in O(1), also in release builds: false, nothing drawn (checkRender in
+// renderer/render_check.h says why). When `abort` is given and becomes true while drawing, the
+// decoder stops at its next poll and returns false: the frame is then incomplete and must not be
+// shown. Returns true for a complete frame.
 bool renderLevel(Variant variant, const LevelView& level, const FrameSetup& setup, FrameView& frame,
                  const std::atomic<bool>* abort = nullptr);
 
 // Whether a variant uses integer arithmetic only (the float_* ones are references).
 bool isFixedPoint(Variant variant);
 
-// The variants one by one (renderLevel dispatches to them).
+// The variants one by one (renderLevel dispatches to them); each refuses what renderLevel refuses.
 bool renderFixedBaseline(const LevelView&, const FrameSetup&, FrameView&, const std::atomic<bool>* abort);
 bool renderFixedLeafCall(const LevelView&, const FrameSetup&, FrameView&, const std::atomic<bool>* abort);
 bool renderFixedUnrolled(const LevelView&, const FrameSetup&, FrameView&, const std::atomic<bool>* abort);

@@ -17,12 +17,12 @@
 // splat; the walk is the same, instantiated a second time so the one-pixel path stays as it was.
 #include <algorithm>
 #include <bit>
-#include <cassert>
 
 #include "renderer/bit_scan.h"
 #include "renderer/decode_algorithms.h"
 #include "renderer/framebuffer_plot.h"
 #include "renderer/render.h"
+#include "renderer/render_check.h"
 #include "renderer/splat_plot.h"
 #include "renderer/subtree_clip.h"
 
@@ -127,8 +127,7 @@ Cursor visit(const FastFrame& f, int level, Vec3 c, Cursor at) {
 
 bool renderFixedFast(const LevelView& level, const FrameSetup& setup, FrameView& frame,
                      const std::atomic<bool>* abort) {
-  assert(level.depth == setup.depth);
-  assert(frame.width() == setup.width && frame.height() == setup.height);
+  if (checkRender(level, setup, frame) != RenderError::kNone) return false;  // refused, nothing drawn
   const bool splat = setup.splat.active();
   FastFrame f{PlotTarget(frame, setup), setup.depth, &setup.child_offset,
               splat ? SubtreeClip(setup, setup.splat) : SubtreeClip(setup), abort, false, SplatPlot(frame, setup)};

@@ -29,6 +29,7 @@
 #include "renderer/decode_algorithms.h"
 #include "renderer/framebuffer_plot.h"
 #include "renderer/render.h"
+#include "renderer/render_check.h"
 #include "renderer/splat_plot.h"
 #include "renderer/subtree_clip.h"
 
@@ -400,8 +401,7 @@ bool simdDecoderAvailable() { return __builtin_cpu_supports("avx2") != 0; }
 
 bool renderFixedSimd(const LevelView& level, const FrameSetup& setup, FrameView& frame,
                      const std::atomic<bool>* abort) {
-  assert(level.depth == setup.depth);
-  assert(frame.width() == setup.width && frame.height() == setup.height);
+  if (checkRender(level, setup, frame) != RenderError::kNone) return false;  // refused, nothing drawn
   if (!simdDecoderAvailable()) return renderFixedFast(level, setup, frame, abort);  // same frame
   return renderAvx2(level, setup, frame, abort);
 }

@@ -1,10 +1,10 @@
 // The integer decoders: each draws bit-identical frames (tests/render_variants_test.cpp).
-#include <cassert>
 
 #include "renderer/bit_scan.h"
 #include "renderer/decode_algorithms.h"
 #include "renderer/framebuffer_plot.h"
 #include "renderer/render.h"
+#include "renderer/render_check.h"
 #include "renderer/subtree_clip.h"
 
 namespace octopoint {
@@ -16,8 +16,7 @@ using InsidePlot = FixedPlot<false>;
 template <typename Visit>
 bool renderWith(Visit visit, const LevelView& level, const FrameSetup& setup, FrameView& frame,
                 const std::atomic<bool>* abort) {
-  assert(level.depth == setup.depth);
-  assert(frame.width() == setup.width && frame.height() == setup.height);
+  if (checkRender(level, setup, frame) != RenderError::kNone) return false;  // refused, nothing drawn
   DecodeState<std::int32_t, CheckedPlot> state{level.nodes.data(), level.leaves.data(),
                                                setup.child_offset, setup.depth,
                                                CheckedPlot(frame, setup), abort};
@@ -104,8 +103,7 @@ bool renderFixedSetBits(const LevelView& level, const FrameSetup& setup, FrameVi
 
 bool renderFixedClipped(const LevelView& level, const FrameSetup& setup, FrameView& frame,
                         const std::atomic<bool>* abort) {
-  assert(level.depth == setup.depth);
-  assert(frame.width() == setup.width && frame.height() == setup.height);
+  if (checkRender(level, setup, frame) != RenderError::kNone) return false;  // refused, nothing drawn
   return ClippedWalk(level, setup, frame, abort).run(setup.root);
 }
 

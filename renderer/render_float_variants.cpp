@@ -4,11 +4,11 @@
 // This file is the only place in renderer/ that uses floating point at run time; the device build
 // checks that nothing else does.
 #include <algorithm>
-#include <cassert>
 #include <cmath>
 
 #include "renderer/decode_algorithms.h"
 #include "renderer/render.h"
+#include "renderer/render_check.h"
 
 namespace octopoint {
 namespace {
@@ -84,8 +84,7 @@ struct FloatPlot {
 template <typename Visit>
 bool renderFloatWith(Visit visit, const LevelView& level, const FrameSetup& setup, FrameView& frame,
                      const std::atomic<bool>* abort) {
-  assert(level.depth == setup.depth);
-  assert(frame.width() == setup.width && frame.height() == setup.height);
+  if (checkRender(level, setup, frame) != RenderError::kNone) return false;  // refused, nothing drawn
   const FloatFrame float_frame = floatFrameFrom(setup);
   // The largest float not above depth_bias: its conversion to int32 stays within the bias.
   const float z_limit = std::nextafter(static_cast<float>(setup.depth_bias), 0.0f);
