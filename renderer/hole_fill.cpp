@@ -42,7 +42,7 @@ std::uint32_t nearer(std::uint32_t a, std::uint32_t b) {
 }  // namespace
 
 std::uint32_t bridgeDepthLimit(const FrameSetup& setup) {
-  if (setup.depth < 1 || setup.depth > format::kMaxDepth || setup.depth_shift < 0 || setup.depth_shift > 63) {
+  if (setup.depth < 1 || setup.depth > kMaxRenderDepth || setup.depth_shift < 0 || setup.depth_shift > 63) {
     return 0;  // not a set-up buildFrameSetup makes: bridge nothing
   }
   // Children 4 and 0 of a leaf-parent differ by one voxel edge along the model's x axis, rotated.

@@ -46,7 +46,6 @@ std::uint32_t bridgeDepthLimit(const FrameSetup& setup);
 struct HoleFillCounts {
   std::int32_t type1 = 0, type2 = 0, type3 = 0, type4 = 0;
   bool refused = false;  // the frame, rows or history did not fit: nothing was filled
-  bool refused = false;  // the frame was not as wide as the filler: nothing was filled
   std::int32_t total() const { return type1 + type2 + type3 + type4; }
 };
 
@@ -75,7 +74,7 @@ class HoleFiller {
   // makes a filler that refuses every frame).
   explicit HoleFiller(std::int32_t width);
   // For frames as wide as `frame`: the size given once.
-  explicit HoleFiller(const Framebuffer& frame) : HoleFiller(frame.width()) {}
+  explicit HoleFiller(const FrameView& frame) : HoleFiller(frame.width()) {}
 
   // Fills the gaps of types 1 to 4 in `frame` in place. A frame of another width than the
   // filler's is refused (counts.refused, nothing changed), also in release builds.

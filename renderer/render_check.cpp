@@ -4,7 +4,6 @@
 #include <cstdlib>
 #include <limits>
 
-#include "renderer/splat_footprint.h"
 
 namespace octopoint {
 
@@ -20,7 +19,7 @@ const char* describe(RenderError error) {
 }
 
 RenderError checkFrameSetup(const FrameSetup& setup) {
-  if (setup.depth < 1 || setup.depth > format::kMaxDepth || setup.fraction_bits < kMinFractionBits ||
+  if (setup.depth < 1 || setup.depth > kMaxRenderDepth || setup.fraction_bits < kMinFractionBits ||
       setup.fraction_bits > kMaxFractionBits || setup.width < 1 || setup.width > kMaxViewportSide ||
       setup.height < 1 || setup.height > kMaxViewportSide) {
     return RenderError::kBadSetup;
@@ -39,15 +38,14 @@ RenderError checkFrameSetup(const FrameSetup& setup) {
     }
     for (int axis = 0; axis < 3; ++axis) worst[axis] += largest[axis];
   }
-  const SplatFootprint splat = splatFootprint(largest[0], largest[1], setup.depth, setup.fraction_bits);
-  const SplatFootprint& given = setup.splat;
-  const auto same = [](const SplatFootprint& a, const SplatFootprint& b) {
-    return a.columns == b.columns && a.rows == b.rows && a.offset_x == b.offset_x && a.offset_y == b.offset_y &&
-           a.span_x == b.span_x && a.span_y == b.span_y;
-  };
-  if (given.active() && !same(given, splat)) return RenderError::kBadSetup;
-  const std::int64_t margin = given.active() ? setup.depth + 1 + (std::int64_t{1} << setup.fraction_bits) : 0;
-  const std::int64_t reach[3] = {given.active() ? largest[0] + margin : 0, given.active() ? largest[1] + margin : 0, 0};
+  // A leaf at p covers up to (p + offset + span) >> F (renderer/splat_footprint.h): the decoders
+  // add these in 32 bits too. The fields are judged as they are, not against a recomputed splat:
+  // a band renderer's subtree set-up keeps the whole frame's splat at a smaller depth.
+  const SplatFootprint& splat = setup.splat;
+  if (splat.span_x < 0 || splat.span_y < 0) return RenderError::kBadSetup;
+  const std::int64_t reach[3] = {
+      std::max(std::llabs(splat.offset_x), std::llabs(std::int64_t{splat.offset_x} + splat.span_x)),
+      std::max(std::llabs(splat.offset_y), std::llabs(std::int64_t{splat.offset_y} + splat.span_y)), 0};
   for (int axis = 0; axis < 3; ++axis) {
     if (worst[axis] + reach[axis] >= kLimit) return RenderError::kBadSetup;
   }

@@ -18,7 +18,7 @@ namespace octopoint {
 enum class RenderError : std::uint8_t {
   kNone,
   kBadSetup,           // not a set-up buildFrameSetup makes: depth, fraction bits or size out of range,
-                       // offsets that could overflow 32 bits, or a splat that does not match them
+                       // or offsets and splat that could overflow 32 bits
   kFrameSizeMismatch,  // the framebuffer's width or height differs from the set-up's
   kDepthMismatch,      // the level's depth differs from the set-up's
   kImplausibleLevel,   // no nodes or leaves, or node bytes and leaf count no tree of its depth has
@@ -27,8 +27,10 @@ enum class RenderError : std::uint8_t {
 // A short, stable English description, for one-line messages.
 const char* describe(RenderError error);
 
-// Whether `setup` could have come from buildFrameSetup (or be a band of one: the same set-up with
-// a smaller height and a shifted root, or with its splat reset to SplatFootprint{}).
+// Whether `setup` is safe to draw: sizes, depth and fraction bits in range, and no position a
+// decoder computes (root plus one offset per level, plus the splat's pixel range) can wrap 32
+// bits, as buildFrameSetup proves for what it makes. Band set-ups (a smaller height, a shifted
+// root, a subtree's depth) and a splat reset to SplatFootprint{} pass.
 RenderError checkFrameSetup(const FrameSetup& setup);
 
 // checkFrameSetup, then whether `level` and `frame` fit it. renderLevel and every variant's

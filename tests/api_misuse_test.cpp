@@ -76,8 +76,10 @@ TEST_F(ApiMisuse, ASetUpBuildFrameSetupWouldNotMakeIsRefused) {
   wrong_bits.fraction_bits = 0;
   expectRefusedByEveryVariant(wrong_bits, frame, *level_, RenderError::kBadSetup);
   FrameSetup wrong_splat = setup_;
-  wrong_splat.splat.columns = 50;  // a splat the offsets do not make: its reach is unchecked
-  wrong_splat.splat.rows = 50;
+  wrong_splat.splat.columns = 50;
+  wrong_splat.splat.span_x = std::numeric_limits<std::int32_t>::max() - 5;  // p + offset + span would wrap
+  expectRefusedByEveryVariant(wrong_splat, frame, *level_, RenderError::kBadSetup);
+  wrong_splat.splat.span_x = -1;
   expectRefusedByEveryVariant(wrong_splat, frame, *level_, RenderError::kBadSetup);
 }
 
