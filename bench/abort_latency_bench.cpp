@@ -1,6 +1,6 @@
-// Abort latency of the fine render (DESIGN.md 5): the time from the abort request (the store to
-// the flag) to renderLevel returning on the rendering thread, for the default model's fine level
-// at 320x240, with the abort at a random point of the frame.
+// Abort latency of the fine render (docs/design.md section 5): the time from the abort request (the
+// store to the flag) to renderLevel returning on the rendering thread, for the default model's fine
+// level at 320x240, with the abort at a random point of the frame.
 //
 // Each iteration starts a render on a thread of its own, waits a random time in the first half of
 // the frame time after the render began, takes the time and stores the flag; the thread takes the

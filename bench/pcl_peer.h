@@ -1,6 +1,6 @@
 #pragma once
-// The peer the renderer is measured against (DESIGN.md 4): how a PCL user draws the same voxels
-// today. A flat pcl::PointCloud of the voxel centres is transformed with Eigen
+// The peer the renderer is measured against (docs/design.md section 4): how a PCL user draws the
+// same voxels today. A flat pcl::PointCloud of the voxel centres is transformed with Eigen
 // (pcl::transformPointCloud) and the projected points are z-buffered, in single precision.
 
 #include <pcl/point_cloud.h>

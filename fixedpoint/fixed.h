@@ -11,9 +11,9 @@
 //    std::nullopt when the exact (rounded) result does not fit int32 raw. Use them for setup and
 //    validation, where input is not under our control.
 //  - The plain operators + - * and unary - are for hot paths where overflow is impossible by
-//    construction (DESIGN.md section 3: ranges are validated up front). They compute in int64 and
-//    assert() that the result fits; with NDEBUG an overflow wraps modulo 2^32 (defined behaviour
-//    in C++20, but wrong), so a caller must have proved it cannot happen.
+//    construction (docs/design.md section 3: ranges are validated up front). They compute in int64
+//    and assert() that the result fits; with NDEBUG an overflow wraps modulo 2^32 (defined
+//    behaviour in C++20, but wrong), so a caller must have proved it cannot happen.
 //
 // Rounding: every operation that drops bits (*, checkedMul, checkedDiv, fromRatio, roundToInt,
 // narrowing convert) rounds to nearest with ties toward +infinity, floor(x + 1/2), so the error is
@@ -150,7 +150,7 @@ class Fixed {
   int32_t raw_ = 0;
 };
 
-using Q15 = Fixed<15>;  // Q17.15: the default position format (DESIGN.md section 3)
+using Q15 = Fixed<15>;  // Q17.15: the default position format (docs/design.md section 3)
 using Q16 = Fixed<16>;  // Q16.16
 
 }  // namespace octopoint

@@ -1,6 +1,7 @@
 #pragma once
-// Aborting a frame from another thread (DESIGN.md 5): the fine render thread is stopped the moment
-// the user moves again. Decoders poll a std::atomic<bool> at one tree level only.
+// Aborting a frame from another thread (docs/design.md section 5): the fine render thread is
+// stopped the moment the user moves again. Decoders poll a std::atomic<bool> at one tree level
+// only.
 
 namespace octopoint {
 

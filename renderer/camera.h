@@ -1,5 +1,6 @@
 #pragma once
-// The camera and the per-frame displacement vectors of the recursive decoder (DESIGN.md 3).
+// The camera and the per-frame displacement vectors of the recursive decoder (docs/design.md
+// section 3).
 //
 // Frames: the model cube is centred on the origin in the scan's own camera frame (x right, y
 // down, z away from the viewer, as PCL and OpenCV use it), so the identity camera shows a range
@@ -24,7 +25,7 @@
 
 namespace octopoint {
 
-inline constexpr int kDefaultFractionBits = 15;  // Q17.15 screen positions (DESIGN.md 3)
+inline constexpr int kDefaultFractionBits = 15;  // Q17.15 positions (docs/design.md section 3)
 inline constexpr int kMinFractionBits = 1;
 inline constexpr int kMaxFractionBits = 24;      // leaves 7 integer bits: 64 pixels of room
 inline constexpr int kMaxViewportSide = 8192;

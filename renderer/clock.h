@@ -1,6 +1,6 @@
 #pragma once
-// The time source of the interactive renderer (DESIGN.md 5), injectable so that scripted tests
-// run on a clock they set themselves. Time is an integer count of microseconds.
+// The time source of the interactive renderer (docs/design.md section 5), injectable so that
+// scripted tests run on a clock they set themselves. Time is an integer count of microseconds.
 
 #include <chrono>
 #include <cstdint>

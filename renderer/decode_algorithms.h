@@ -1,9 +1,9 @@
 #pragma once
-// The recursive octree decoders of DESIGN.md 4, written once for any position type: instantiated
-// with int32_t positions (Q(32-F).F screen pixels) they are the fixed variants, with a floating
-// point type (only in render_float_*.cpp) the reference variants the paper compares against.
-// Every algorithm walks the same depth-first stream: a node's child-mask byte, then its occupied
-// children's subtrees in order k = 0..7; a leaf takes the next palette index.
+// The recursive octree decoders of docs/design.md section 4, written once for any position type:
+// instantiated with int32_t positions (Q(32-F).F screen pixels) they are the fixed variants, with a
+// floating point type (only in render_float_*.cpp) the reference variants the paper compares
+// against. Every algorithm walks the same depth-first stream: a node's child-mask byte, then its
+// occupied children's subtrees in order k = 0..7; a leaf takes the next palette index.
 //
 // Each algorithm polls the abort flag at tree level kAbortCheckLevel (and, once it was seen,
 // returns at every level above it), so a frame can be stopped within one level-3 subtree.

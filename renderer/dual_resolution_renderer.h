@@ -1,5 +1,6 @@
 #pragma once
-// Dual-resolution interactive rendering (DESIGN.md 5): two render threads behind one view.
+// Dual-resolution interactive rendering (docs/design.md section 5): two render threads behind one
+// view.
 //
 // Levels: built from a whole model, H draws the depth-auto level of each view
 // (renderer/level_of_detail.h) and L the stored depth one coarser (the same when H's is the

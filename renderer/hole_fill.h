@@ -1,5 +1,6 @@
 #pragma once
-// Scanline hole filling (DESIGN.md 6; pictures and exact definitions in docs/holefill.md).
+// Scanline hole filling (docs/design.md section 6; pictures and exact definitions in
+// docs/holefill.md).
 //
 // A point-based frame has background pixels between the projected voxel centres wherever a voxel
 // covers more than one pixel (zoom) or the grid is seen at an angle. After decoding, one top-to-

@@ -1,6 +1,6 @@
-// The floating point reference variants (DESIGN.md 4): the same algorithms as the fixed ones
-// (renderer/decode_algorithms.h), with positions, rotation and displacement vectors in single
-// precision computed from the camera, as an FPU-equipped port of the paper's renderer would.
+// The floating point reference variants (docs/design.md section 4): the same algorithms as the
+// fixed ones (renderer/decode_algorithms.h), with positions, rotation and displacement vectors in
+// single precision computed from the camera, as an FPU-equipped port of the paper's renderer would.
 // This file is the only place in renderer/ that uses floating point at run time; the device build
 // checks that nothing else does.
 #include <algorithm>
