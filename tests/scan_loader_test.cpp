@@ -19,6 +19,7 @@
 #include <functional>
 #include <limits>
 #include <random>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -96,7 +97,9 @@ class ScanLoaderTest : public ::testing::Test {
 
 std::string readBytes(const fs::path& path) {
   std::ifstream in(path, std::ios::binary);
-  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+  std::ostringstream bytes;
+  bytes << in.rdbuf();
+  return std::move(bytes).str();
 }
 
 // The message of the PrepareError that loading `path` throws ("" and a test failure if none).
