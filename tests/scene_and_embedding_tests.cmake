@@ -23,12 +23,13 @@ add_test(NAME cli.prepare.scene_frontal
 set_tests_properties(cli.prepare.scene_frontal PROPERTIES FIXTURES_REQUIRED test_scans
   PASS_REGULAR_EXPRESSION "depths auto: 6\\.\\.8.*left out depths 7\\.\\.8.*depth  6 pruned from [0-9]+ views")
 
-# Embedding: the example app, built against the installed package, embeds two models of the
-# synthetic sphere (one pruned to a frontal scene, one all around in grey) and draws them.
+# Embedding: the example app, built against the installed package, embeds two models cut out of
+# the real tabletop scan (the milk carton pruned to a frontal scene, the Clorox bottle all around)
+# and draws them.
 add_test(NAME embedding.example_app_from_installed_package
          COMMAND ${CMAKE_COMMAND} -DBUILD_DIR=${PROJECT_BINARY_DIR} -DSOURCE_DIR=${PROJECT_SOURCE_DIR}
-                 -DWORK=${CMAKE_CURRENT_BINARY_DIR}/embedding_example -DSCAN_A=${test_scans}/sphere.pcd
-                 -DSCAN_B=${test_scans}/sphere.pcd -DCXX_COMPILER=${CMAKE_CXX_COMPILER}
+                 -DWORK=${CMAKE_CURRENT_BINARY_DIR}/embedding_example
+                 -DSCAN=${PROJECT_SOURCE_DIR}/data/scans/milk_cartoon_all_small_clorox.pcd -DCXX_COMPILER=${CMAKE_CXX_COMPILER}
                  -DBUILD_TYPE=${CMAKE_BUILD_TYPE} "-DCXX_FLAGS=${CMAKE_CXX_FLAGS}"
                  "-DLINKER_FLAGS=${CMAKE_EXE_LINKER_FLAGS}"
                  -P ${CMAKE_CURRENT_SOURCE_DIR}/embedding_example.cmake)
