@@ -2,19 +2,32 @@
 #   find_package(octopoint REQUIRED)
 #   octopoint_add_model(TARGET app NAME face SCAN face.pcd SCENE scene.json)
 # (docs/embedding.md). Headers keep their layout: #include "renderer/render.h".
+#
+# Every library whose headers are installed is exported, so that whatever an installed header
+# declares links: fixedpoint/ (octopoint::fixedpoint), renderer/ (octopoint::renderer, and
+# octopoint::interactive for the dual-resolution renderer and its view events, whose headers live
+# in renderer/ too) and models/ (octopoint::models: the committed default model and its registry).
+# The package test (tests/package_test.cmake) links a program against every exported target.
 include(GNUInstallDirs)
 include(CMakePackageConfigHelpers)
 
 set(octopoint_cmake_dir ${CMAKE_INSTALL_LIBDIR}/cmake/octopoint)
-foreach(library fixedpoint renderer)
-  target_include_directories(octopoint_${library} PUBLIC $<INSTALL_INTERFACE:${CMAKE_INSTALL_INCLUDEDIR}>)
-  set_target_properties(octopoint_${library} PROPERTIES EXPORT_NAME ${library})
-  install(DIRECTORY ${PROJECT_SOURCE_DIR}/${library}/ DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/${library}
+set(octopoint_exported octopoint_fixedpoint octopoint_renderer octopoint_models)
+if(TARGET octopoint_interactive)  # not in a bare-metal build (no threads)
+  list(APPEND octopoint_exported octopoint_interactive)
+endif()
+foreach(target IN LISTS octopoint_exported)
+  string(REPLACE "octopoint_" "" name ${target})
+  target_include_directories(${target} PUBLIC $<INSTALL_INTERFACE:${CMAKE_INSTALL_INCLUDEDIR}>)
+  set_target_properties(${target} PROPERTIES EXPORT_NAME ${name})
+endforeach()
+foreach(directory fixedpoint renderer models)
+  install(DIRECTORY ${PROJECT_SOURCE_DIR}/${directory}/ DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/${directory}
           FILES_MATCHING PATTERN "*.h")
 endforeach()
 # The warnings target travels along only as a link-only dependency of the static libraries.
 set_target_properties(octopoint_warnings PROPERTIES EXPORT_NAME warnings)
-install(TARGETS octopoint_fixedpoint octopoint_renderer octopoint_warnings EXPORT octopointTargets
+install(TARGETS ${octopoint_exported} octopoint_warnings EXPORT octopointTargets
         ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR})
 if(TARGET octopoint-prepare)
   install(TARGETS octopoint-prepare EXPORT octopointTargets RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
