@@ -14,7 +14,9 @@
 #include "cli/output_file.h"
 #include "cli/run_tool.h"
 #include "cli/text.h"
+#include "codegen/chunked_writer.h"
 #include "codegen/depth_range.h"
+#include "codegen/level_voxels.h"
 #include "codegen/model_name.h"
 #include "codegen/model_writer.h"
 #include "codegen/prepare.h"
@@ -66,6 +68,11 @@ and OUTDIR/NAME.oct (the same model as one binary file, for octopoint-render --f
                         compile ~10x faster in a quarter of the memory (docs/embedding.md)
   --single-source       write only NAME.h and NAME.cpp (all depths in one source), so that a
                         build rule can name its outputs before the depths are known
+  --chunked             write NAME.oct in the chunked format (version 3, docs/format.md): a
+                        head with a coarse base, a directory, and chunks that refine the model
+                        coarse to fine, for streaming (octopoint-serve, docs/streaming.md). The
+                        depths (and a scene's pruning) are as without it; pruned depths are made
+                        nested (each holds the parents of the next finer one's voxels)
   -h, --help            show this help
 
 Prints, per depth: voxels, node bytes, colour bytes and bits per point; with a scene also the
@@ -78,6 +85,7 @@ struct Arguments {
   std::string output_dir;
   std::string scene;
   octopoint::prepare::EmitOptions emit;
+  bool chunked = false;
   std::vector<std::string> model_flags;  // flags a scene file replaces, to refuse them beside --scene
   octopoint::prepare::PrepareOptions options = defaultOptions();
 
@@ -127,6 +135,9 @@ std::optional<Arguments> parseArguments(int argc, char** argv) {
     } else if (reader.is("--single-source")) {
       reader.noValue();
       args.emit.single_source = true;
+    } else if (reader.is("--chunked")) {
+      reader.noValue();
+      args.chunked = true;
     } else if (reader.is("--depths")) {
       args.model_flags.push_back(reader.name());
       args.options.depths = parseDepths(reader.name(), reader.value());
@@ -217,10 +228,14 @@ int run(int argc, char** argv) {
   // The generated files name the exact command that made them, so anyone can regenerate them.
   options.source_description = std::filesystem::path(args->scan).filename().string() + " by: octopoint-prepare";
   for (int i = 1; i < argc; ++i) options.source_description += std::string(" ") + argv[i];
-  const PreparedModel model = prepareModel(scan, args->scan, options);
+  PreparedModel model = prepareModel(scan, args->scan, options);
+  // A chunked file refines each depth from the one above it, so its depths must be nested; the
+  // sources get the same voxels, so that both draw alike.
+  const std::size_t nesting_added = args->chunked ? nestLevels(model) : 0;
+  ChunkedLayout layout;
 
   std::vector<OutputFile> files = emitSources(model, args->emit);
-  const std::vector<std::uint8_t> image = serializeModel(model);
+  const std::vector<std::uint8_t> image = args->chunked ? serializeChunkedModel(model, {}, &layout) : serializeModel(model);
   files.push_back({model.name + ".oct", std::string(image.begin(), image.end())});
   octopoint::cli::writeFilesAtomically(args->output_dir, files);
 
@@ -251,8 +266,17 @@ int run(int argc, char** argv) {
                 level.nodes.size() + level.leaves.size(), 8.0 * static_cast<double>(level.nodes.size()) / voxels,
                 8.0 * static_cast<double>(level.nodes.size() + level.leaves.size()) / voxels);
   }
-  std::printf("wrote %s/%s.{h,cpp,oct} (%zu bytes .oct) in %.2f s\n", args->output_dir.c_str(),
-              model.name.c_str(), image.size(), seconds);
+  if (args->chunked) {
+    if (nesting_added > 0) std::printf("  nesting the pruned depths added %zu voxels\n", nesting_added);
+    std::printf("  chunked: base depth %d%s, head %zu bytes, directory %zu bytes\n", layout.base_depth,
+                layout.base_added ? " (added)" : "", layout.head_bytes, layout.table_bytes);
+    for (std::size_t j = 0; j < layout.depths.size(); ++j) {
+      std::printf("  chunked depth %2d: %6zu chunks (regions at tree level %d), %9zu bytes\n", layout.depths[j],
+                  layout.chunks[j], layout.region_levels[j], layout.chunk_bytes[j]);
+    }
+  }
+  std::printf("wrote %s/%s.{h,cpp,oct} (%zu bytes .oct%s) in %.2f s\n", args->output_dir.c_str(),
+              model.name.c_str(), image.size(), args->chunked ? ", chunked" : "", seconds);
   return 0;
 }
 

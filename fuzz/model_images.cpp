@@ -4,6 +4,7 @@
 #include <cstddef>
 #include <span>
 
+#include "codegen/level_voxels.h"
 #include "codegen/model_writer.h"
 #include "codegen/octree_encoder.h"
 
@@ -42,15 +43,34 @@ struct KeyLister {
 
 }  // namespace
 
-std::vector<std::uint8_t> octImage(const EmbeddedModel& model) {
+prepare::PreparedModel preparedModel(const EmbeddedModel& model, const std::vector<int>& depths) {
   prepare::PreparedModel prepared = preparedShell(model);
   for (int i = 0; i < model.level_count; ++i) {
     const EmbeddedLevel& level = model.levels[i];
     prepared.levels.push_back({level.depth, {level.nodes, level.nodes + level.node_bytes},
                                {level.leaves, level.leaves + level.leaf_count}});
   }
-  return prepare::serializeModel(prepared);
+  if (!depths.empty()) {
+    const prepare::LevelVoxels finest = prepare::decodeLevel(prepared.levels.back());
+    std::vector<prepare::PreparedLevel> levels;
+    for (int depth : depths) {
+      levels.push_back(depth == finest.depth ? prepared.levels.back()
+                                             : prepare::encodeLevel(prepare::coarsen(finest, depth, prepared.palette)));
+    }
+    prepared.levels = std::move(levels);
+  }
+  return prepared;
 }
+
+std::vector<std::uint8_t> octImage(const EmbeddedModel& model) {
+  return prepare::serializeModel(preparedModel(model));
+}
+
+std::vector<std::uint8_t> chunkedImage(const EmbeddedModel& model, const std::vector<int>& depths,
+                                       const prepare::ChunkedOptions& options) {
+  return prepare::serializeChunkedModel(preparedModel(model, depths), options);
+}
+
 
 std::vector<std::uint8_t> coarsenedOctImage(const EmbeddedModel& model, int depth) {
   const EmbeddedLevel& finest = model.levels[model.level_count - 1];

@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "codegen/chunked_writer.h"
 #include "renderer/embedded_model.h"
 
 namespace octopoint::fuzzing {
@@ -16,5 +17,14 @@ std::vector<std::uint8_t> octImage(const EmbeddedModel& model);
 // A smaller real model: the finest level of `model` coarsened to `depth` (1 .. its depth), each
 // coarse voxel taking the colour of the first fine voxel inside it. One level only.
 std::vector<std::uint8_t> coarsenedOctImage(const EmbeddedModel& model, int depth);
+
+// The model as the preparer holds it, with its own depths, or, when `depths` is given, with those
+// depths made from its finest level (each at most its finest depth; coarser ones coarsened as the
+// chunked writer makes its base: codegen/level_voxels.h).
+prepare::PreparedModel preparedModel(const EmbeddedModel& model, const std::vector<int>& depths = {});
+
+// That model as octopoint-prepare --chunked writes it (format version 3).
+std::vector<std::uint8_t> chunkedImage(const EmbeddedModel& model, const std::vector<int>& depths = {},
+                                       const prepare::ChunkedOptions& options = {});
 
 }  // namespace octopoint::fuzzing

@@ -1,0 +1,215 @@
+#include "codegen/chunked_writer.h"
+
+#include <algorithm>
+#include <cassert>
+#include <string>
+
+#include "codegen/level_voxels.h"
+#include "codegen/octree_encoder.h"
+#include "codegen/prepare_error.h"
+#include "renderer/chunked_format.h"
+#include "renderer/crc32.h"
+
+namespace octopoint::prepare {
+namespace {
+
+void putU16(std::vector<std::uint8_t>& out, std::uint32_t value) {
+  out.push_back(static_cast<std::uint8_t>(value));
+  out.push_back(static_cast<std::uint8_t>(value >> 8));
+}
+
+void putU32(std::vector<std::uint8_t>& out, std::uint32_t value) {
+  putU16(out, value & 0xFFFFu);
+  putU16(out, value >> 16);
+}
+
+void putU64(std::vector<std::uint8_t>& out, std::uint64_t value) {
+  putU32(out, static_cast<std::uint32_t>(value));
+  putU32(out, static_cast<std::uint32_t>(value >> 32));
+}
+
+struct Chunk {
+  std::uint32_t region = 0;
+  std::uint32_t points = 0;
+  std::uint32_t coarse_points = 0;
+  std::vector<std::uint8_t> bytes;  // masks, then palette indices
+};
+
+struct Level {
+  int depth = 0;
+  int region_level = 0;
+  std::vector<Chunk> chunks;
+};
+
+std::size_t headBytes(std::size_t palette_count, std::size_t levels, const PreparedLevel& base) {
+  return chunked::kFixedHeaderBytes + 3 * palette_count + chunked::kLevelRowBytes * levels +
+         base.nodes.size() + base.leaves.size() + chunked::kHeadCrcBytes;
+}
+
+// Level `fine` as chunks refining `coarse`, regions at `region_level`.
+std::vector<Chunk> makeChunks(const LevelVoxels& coarse, const LevelVoxels& fine,
+                              int region_level) {
+  const int gap = fine.depth - coarse.depth;
+  const int region_shift = 3 * (coarse.depth - region_level);
+  const std::uint64_t suffix_mask = (std::uint64_t{1} << (3 * gap)) - 1;
+  std::vector<Chunk> chunks;
+  std::vector<std::uint64_t> suffixes;
+  std::size_t f = 0;  // next fine voxel; fine voxels below each coarse one are contiguous
+  const auto orphan = [&](std::uint64_t key) {
+    return PrepareError("chunked model: a voxel of depth " + std::to_string(fine.depth) + " (key " +
+                        std::to_string(key) + ") has no parent at depth " +
+                        std::to_string(coarse.depth) + ": the levels are not nested");
+  };
+  for (std::size_t c = 0; c < coarse.keys.size(); ++c) {
+    const auto region = static_cast<std::uint32_t>(coarse.keys[c] >> region_shift);
+    if (chunks.empty() || chunks.back().region != region) chunks.push_back(Chunk{region, 0, 0, {}});
+    Chunk& chunk = chunks.back();
+    ++chunk.coarse_points;
+    if (f < fine.keys.size() && fine.keys[f] >> (3 * gap) < coarse.keys[c])
+      throw orphan(fine.keys[f]);
+    const std::size_t first = f;
+    suffixes.clear();
+    for (; f < fine.keys.size() && fine.keys[f] >> (3 * gap) == coarse.keys[c]; ++f) {
+      suffixes.push_back(fine.keys[f] & suffix_mask);
+    }
+    if (suffixes.empty()) {
+      chunk.bytes.push_back(0);  // nothing of this voxel at the finer depth
+      continue;
+    }
+    const std::vector<std::uint8_t> masks = encodeOctree(suffixes, gap);
+    chunk.bytes.insert(chunk.bytes.end(), masks.begin(), masks.end());
+    chunk.points += static_cast<std::uint32_t>(f - first);
+  }
+  if (f != fine.keys.size()) throw orphan(fine.keys[f]);
+  // Masks are in place; the palette indices follow them, in the same order.
+  std::size_t next_colour = 0;
+  for (Chunk& chunk : chunks) {
+    chunk.bytes.insert(
+        chunk.bytes.end(), fine.colours.begin() + static_cast<std::ptrdiff_t>(next_colour),
+        fine.colours.begin() + static_cast<std::ptrdiff_t>(next_colour + chunk.points));
+    next_colour += chunk.points;
+  }
+  return chunks;
+}
+
+}  // namespace
+
+std::vector<std::uint8_t> serializeChunkedModel(const PreparedModel& model,
+                                                const ChunkedOptions& options,
+                                                ChunkedLayout* layout) {
+  assert(!model.levels.empty() && model.levels.size() <= format::kMaxLevels);
+  if (model.levels.front().depth < 2) {
+    throw PrepareError(
+        "--chunked: the coarsest depth must be at least 2 (a chunked model needs a coarser base)");
+  }
+  std::vector<LevelVoxels> voxels;
+  for (const PreparedLevel& level : model.levels) voxels.push_back(decodeLevel(level));
+
+  // The base: the coarsest depth itself when its head fits the budget and finer depths remain,
+  // else the finest coarser depth that fits (depth 1 at worst: at most 8 voxels).
+  std::size_t first_chunked = 0;
+  LevelVoxels base;
+  if (model.levels.size() >= 2 && headBytes(model.palette.size(), model.levels.size(),
+                                            model.levels.front()) <= options.head_budget) {
+    base = voxels.front();
+    first_chunked = 1;
+  } else {
+    for (int depth = model.levels.front().depth - 1; depth >= 1; --depth) {
+      base = coarsen(voxels.front(), depth, model.palette);
+      if (depth == 1 || headBytes(model.palette.size(), model.levels.size() + 1,
+                                  encodeLevel(base)) <= options.head_budget) {
+        break;
+      }
+    }
+  }
+  const PreparedLevel base_level = encodeLevel(base);
+
+  std::vector<Level> levels;
+  const LevelVoxels* coarser = &base;
+  int region_level = 0;
+  for (std::size_t i = first_chunked; i < voxels.size(); ++i) {
+    const int depth = voxels[i].depth;
+    region_level = std::min({std::max(depth - options.chunk_span, region_level), coarser->depth - 1,
+                             chunked::kMaxRegionLevel});
+    levels.push_back(Level{depth, region_level, makeChunks(*coarser, voxels[i], region_level)});
+    coarser = &voxels[i];
+  }
+
+  // Layout: head, record tables, chunks.
+  const std::size_t level_count = levels.size() + 1;
+  const std::size_t head_bytes = headBytes(model.palette.size(), level_count, base_level);
+  std::uint64_t chunk_count = 0;
+  for (const Level& level : levels) chunk_count += level.chunks.size();
+  std::uint64_t offset = head_bytes + chunked::kRecordBytes * chunk_count;
+  std::vector<std::vector<std::uint8_t>> tables;
+  std::vector<std::uint64_t> level_offsets;
+  for (const Level& level : levels) {
+    level_offsets.push_back(offset);
+    std::vector<std::uint8_t>& table = tables.emplace_back();
+    for (const Chunk& chunk : level.chunks) {
+      putU32(table, chunk.region);
+      putU32(table, static_cast<std::uint32_t>(chunk.bytes.size()));
+      putU32(table, chunk.points);
+      putU32(table, chunk.coarse_points);
+      putU32(table, crc32(chunk.bytes));
+      offset += chunk.bytes.size();
+    }
+  }
+  const std::uint64_t file_bytes = offset;
+
+  std::vector<std::uint8_t> out(format::kMagic, format::kMagic + sizeof format::kMagic);
+  putU16(out, chunked::kFormatVersion);
+  out.push_back(static_cast<std::uint8_t>(level_count));
+  out.push_back(0);  // flags
+  putU32(out, model.cube_edge_um);
+  putU32(out, 0);
+  putU16(out, static_cast<std::uint32_t>(model.palette.size()));
+  putU16(out, 0);
+  putU32(out, static_cast<std::uint32_t>(head_bytes));
+  putU64(out, file_bytes);
+  putU32(out, static_cast<std::uint32_t>(base_level.nodes.size()));
+  putU32(out, static_cast<std::uint32_t>(base_level.leaves.size()));
+  for (const Rgb8& colour : model.palette) out.insert(out.end(), colour.begin(), colour.end());
+  // Level table: the base row, then one per chunked level.
+  out.push_back(static_cast<std::uint8_t>(base.depth));
+  out.insert(out.end(), 19, std::uint8_t{0});
+  for (std::size_t j = 0; j < levels.size(); ++j) {
+    out.push_back(static_cast<std::uint8_t>(levels[j].depth));
+    out.push_back(static_cast<std::uint8_t>(levels[j].region_level));
+    putU16(out, 0);
+    putU32(out, static_cast<std::uint32_t>(levels[j].chunks.size()));
+    putU32(out, crc32(tables[j]));
+    putU64(out, level_offsets[j]);
+  }
+  out.insert(out.end(), base_level.nodes.begin(), base_level.nodes.end());
+  out.insert(out.end(), base_level.leaves.begin(), base_level.leaves.end());
+  putU32(out, crc32(out));
+  assert(out.size() == head_bytes);
+  for (const std::vector<std::uint8_t>& table : tables)
+    out.insert(out.end(), table.begin(), table.end());
+  for (const Level& level : levels) {
+    for (const Chunk& chunk : level.chunks)
+      out.insert(out.end(), chunk.bytes.begin(), chunk.bytes.end());
+  }
+  assert(out.size() == file_bytes);
+
+  if (layout != nullptr) {
+    *layout = {};
+    layout->base_depth = base.depth;
+    layout->base_added = first_chunked == 0;
+    for (const Level& level : levels) {
+      layout->depths.push_back(level.depth);
+      layout->region_levels.push_back(level.region_level);
+      layout->chunks.push_back(level.chunks.size());
+      std::size_t bytes = 0;
+      for (const Chunk& chunk : level.chunks) bytes += chunk.bytes.size();
+      layout->chunk_bytes.push_back(bytes);
+    }
+    layout->head_bytes = head_bytes;
+    layout->table_bytes = chunked::kRecordBytes * chunk_count;
+    layout->file_bytes = out.size();
+  }
+  return out;
+}
+
+}  // namespace octopoint::prepare

@@ -1,0 +1,46 @@
+#pragma once
+// Writing a prepared model as a chunked file (format version 3, renderer/chunked_format.h,
+// docs/format.md): `octopoint-prepare --chunked`. No PCL here, so tools and tests without the
+// scan loader can write chunked files too.
+
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+#include "codegen/prepared_model.h"
+
+namespace octopoint::prepare {
+
+// Measured in docs/streaming.md ("Choosing the chunk size"): a chunk spans this many tree levels
+// below its region, so chunks hold about the same number of voxels at every depth.
+inline constexpr int kDefaultChunkSpan = 5;
+// The head (everything before the first picture) is kept within this many bytes: the base is the
+// finest depth that fits. 4 KiB take under a second on a 5 kB/s link.
+inline constexpr std::size_t kDefaultHeadBudget = 4096;
+
+struct ChunkedOptions {
+  int chunk_span = kDefaultChunkSpan;
+  std::size_t head_budget = kDefaultHeadBudget;
+};
+
+// What the writer chose, for the preparer's report and the measurements.
+struct ChunkedLayout {
+  int base_depth = 0;
+  bool base_added = false;               // the base is a coarser depth than any of the model's own
+  std::vector<int> depths;               // of the chunked levels
+  std::vector<int> region_levels;        // of the chunked levels
+  std::vector<std::size_t> chunks;       // per chunked level
+  std::vector<std::size_t> chunk_bytes;  // per chunked level
+  std::size_t head_bytes = 0;
+  std::size_t table_bytes = 0;
+  std::size_t file_bytes = 0;
+};
+
+// The chunked image of `model`, whose levels must be nested (codegen/level_voxels.h, nestLevels;
+// throws PrepareError otherwise). Throws PrepareError when the coarsest depth is 1 (no coarser base
+// is possible).
+std::vector<std::uint8_t> serializeChunkedModel(const PreparedModel& model,
+                                                const ChunkedOptions& options = {},
+                                                ChunkedLayout* layout = nullptr);
+
+}  // namespace octopoint::prepare

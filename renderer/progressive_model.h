@@ -1,0 +1,190 @@
+#pragma once
+// A chunked model (renderer/chunked_format.h) that fills in while its bytes arrive, drawn at every
+// moment from what it holds. It does no I/O: a caller (net/ for HTTP, a file reader, a radio link)
+// asks it what to fetch next for the current view, and hands it each record table and chunk as it
+// arrives. Every chunk is checked on its own (CRC-32 and a walk of its refinements) before it is
+// kept; a chunk that fails is refused and may be offered again, up to kMaxChunkAttempts times.
+//
+// Drawing: each visible region is drawn at the finest depth held, up to the depth the view needs;
+// where a chunk is missing, the coarser chunk it refines is drawn in its place (its part of that
+// region only), so the picture is always complete, coarser where data is missing, never holey. The
+// base (in the head) covers the whole model from the start. A view drawn from every chunk it needs
+// is exactly the frame of a single-file model holding those depths (tested).
+//
+// Memory: the head is copied (a few kB); a record table costs 20 bytes per chunk in the file and
+// about 100 here; a chunk is kept as the octree stream of its region at its depth (node bytes and
+// one byte per leaf), which is what a version-1 file spends on the same region and depth: so a
+// model holding everything takes at most the size of a version-1 file of its depths, plus the
+// records. A chunk that arrives before the one it refines waits as its raw bytes. This memory is
+// allocated when bytes arrive; drawing and fetchPriority allocate nothing.
+//
+// Not thread-safe: one thread (or a caller's lock) feeds, asks and draws.
+
+#include <array>
+#include <cstdint>
+#include <optional>
+#include <span>
+#include <vector>
+
+#include "renderer/camera.h"
+#include "renderer/chunk_records.h"
+#include "renderer/chunk_stream.h"
+#include "renderer/chunked_head.h"
+#include "renderer/framebuffer.h"
+#include "renderer/model.h"
+#include "renderer/render.h"
+
+namespace octopoint {
+
+enum class ChunkState : std::uint8_t {
+  kMissing,      // not received (or refused, fewer than kMaxChunkAttempts times)
+  kWaiting,      // received and valid, waiting for the coarser chunk it refines
+  kHeld,         // drawable
+  kUnavailable,  // refused kMaxChunkAttempts times, or its data contradicts the directory
+};
+
+// One byte range to fetch: a level's record table or one chunk.
+struct FetchItem {
+  enum class Kind : std::uint8_t { kRecordTable, kChunk };
+  Kind kind = Kind::kChunk;
+  int level = 0;             // 1..levelCount()-1
+  std::uint32_t index = 0;   // the chunk's index in its level (kChunk)
+  std::uint64_t offset = 0;  // first byte in the file
+  std::uint64_t bytes = 0;
+  bool visible = true;  // whether the current view shows it (chunks)
+  bool operator==(const FetchItem&) const = default;
+};
+
+struct ProgressiveDrawStats {
+  int wanted_depth = 0;      // the depth the view needs (renderer/progressive_model.h: wantedDepth)
+  int drawn_depth = 0;       // the finest stored depth not finer than that
+  int pieces = 0;            // region streams drawn
+  int coarser_pieces = 0;    // of those, drawn coarser than drawn_depth because data is missing
+  std::uint64_t points = 0;  // leaves in the streams drawn
+};
+
+class ProgressiveModel {
+ public:
+  static constexpr int kMaxChunkAttempts = 3;
+
+  // Starts from the file's head: `bytes` holds at least the head's bytes (chunkedHeadBytes says how
+  // many); anything after them is ignored (pass it to acceptPrefix to use it).
+  static std::optional<ProgressiveModel> fromHead(std::span<const std::uint8_t> bytes,
+                                                  ChunkedIssue* issue);
+
+  // Movable: everything the views point into lives on the heap.
+  ProgressiveModel(ProgressiveModel&&) noexcept = default;
+  ProgressiveModel& operator=(ProgressiveModel&&) noexcept = default;
+
+  const ChunkedHead& head() const { return head_; }
+  int levelCount() const { return head_.level_count; }
+  int levelDepth(int level) const { return head_.levels[static_cast<std::size_t>(level)].depth; }
+  // The palette and the base as an ordinary validated model, for resolveToRgb and friends.
+  const ModelView& baseModel() const { return *base_view_; }
+
+  bool hasRecordTable(int level) const {
+    return levels_[static_cast<std::size_t>(level)].table_known;
+  }
+  FetchItem recordTableItem(int level) const;
+  std::uint32_t chunkCount(int level) const;  // 0 until the level's record table is accepted
+  const ChunkRecord& record(int level, std::uint32_t index) const;
+  ChunkState chunkState(int level, std::uint32_t index) const;
+  FetchItem chunkItem(int level, std::uint32_t index) const;
+
+  // Takes the bytes fetched for `item`. Record tables must come in level order (each is checked
+  // against the one above it). Returns kNone when accepted (or already held); otherwise the chunk
+  // or table is refused, nothing else changes, and the issue's offset is a file offset.
+  ChunkedIssue accept(const FetchItem& item, std::span<const std::uint8_t> bytes);
+
+  // Takes every record table and chunk that lies whole in `bytes`, a piece of the file starting at
+  // `file_offset` (a file read front to back, a radio broadcast). Returns the file offset up to
+  // which everything was taken; stops at the first refused part, with its issue.
+  std::uint64_t acceptBytes(std::uint64_t file_offset, std::span<const std::uint8_t> bytes,
+                            ChunkedIssue* issue);
+
+  // The depth this view needs: the depth-by-projected-size rule over the stored depths.
+  int wantedDepth(const Camera& camera) const;
+
+  // What to fetch next for this view, most urgent first: the record tables it needs, then its
+  // chunks, visible before invisible (these only with include_invisible), coarse before fine,
+  // larger on screen before smaller, then file order. Never a depth finer than the view needs,
+  // never a chunk held, waiting or unavailable (or refining one that is unavailable). Writes up to
+  // out.size() items and returns how many. Allocates nothing. Returns 0 for a camera it refuses.
+  std::size_t fetchPriority(const Camera& camera, bool include_invisible, std::span<FetchItem> out);
+
+  // Draws the view into `frame` (which it does not clear) with a fixed-point variant. Returns
+  // false, drawing nothing, for a camera buildFrameSetup refuses. Allocates nothing.
+  bool draw(const Camera& camera, Variant variant, Framebuffer& frame,
+            ProgressiveDrawStats* stats = nullptr);
+
+  // Whether this view's picture is final: every visible region drawn at the depth the view needs.
+  bool viewComplete(const Camera& camera);
+
+  // Bytes held for chunks (assembled streams, waiting chunks) and records.
+  std::uint64_t heldBytes() const;
+  // Chunks by state, over the levels whose tables are known.
+  std::uint32_t chunksIn(ChunkState state) const;
+
+ private:
+  struct Slot {
+    ChunkState state = ChunkState::kMissing;
+    std::uint8_t refusals = 0;
+    bool range_known = false;  // in_parent is set
+    bool blocked = false;  // fetchPriority scratch: it or a coarser chunk it needs is unavailable
+    StreamRange in_parent{};  // the region's part of the coarser chunk's stream
+    std::uint32_t child_begin = 0, child_end = 0;  // its regions in the next level (table known)
+    std::vector<std::uint8_t> raw;                 // while waiting
+    std::vector<std::uint8_t> nodes, leaves;       // the region's stream at the level's depth
+  };
+  struct Level {
+    bool table_known = false;
+    std::vector<ChunkRecord> records;
+    std::vector<Slot> slots;
+  };
+  // Per frame: set-ups of each level's depth, moved to the level's own regions and to the next
+  // level's regions (drawing a coarser chunk in place of a missing finer one).
+  struct FrameState {
+    int wanted_depth = 0;
+    std::int32_t width = 0, height = 0;
+    int drawn_level = 0;  // the finest level whose depth is not finer than wanted_depth
+    std::array<FrameSetup, chunked::kMaxChunkedLevels> full{};  // for whole-model streams
+    std::array<FrameSetup, chunked::kMaxChunkedLevels> own{};
+    std::array<FrameSetup, chunked::kMaxChunkedLevels> restricted{};
+    // Half the on-screen extent (Q(32-F).F) of a region of each level's regions and of the next
+    // level's, reaching down to the finest depth drawn: anything drawn for the region lies within.
+    std::array<Vec3, chunked::kMaxChunkedLevels> own_reach{};
+    std::array<Vec3, chunked::kMaxChunkedLevels> restricted_reach{};
+  };
+  struct Priority {
+    std::uint64_t key;  // visibility, level, screen area, order (see fetchPriority)
+    FetchItem item;
+  };
+
+  ProgressiveModel() = default;
+  bool acceptRecordTable(int level, std::span<const std::uint8_t> bytes, ChunkedIssue* issue);
+  ChunkedIssue acceptChunk(int level, std::uint32_t index, std::span<const std::uint8_t> bytes);
+  void linkChildren(int level, std::uint32_t index);
+  void becomeHeld(int level, std::uint32_t index);
+  bool prepareFrame(const Camera& camera);
+  Vec3 regionCentre(int level, std::uint32_t region) const;
+  Vec3 reachBelow(int tree_level) const;
+  bool offScreen(const Vec3& centre, const Vec3& reach) const;
+  template <typename PieceVisitor>
+  void visitPieces(int level, std::uint32_t index, PieceVisitor& visitor);
+
+  ChunkedHead head_;
+  std::vector<std::uint8_t> base_palette_;  // 256 x RGB888 for base_view_ (on the heap: movable)
+  std::optional<ModelView> base_view_;
+  std::array<Level, chunked::kMaxChunkedLevels> levels_{};
+  FrameState frame_{};
+  std::vector<Priority> priority_scratch_;
+};
+
+// Reads a model from the front of a file (or any prefix of one): the head, then every record table
+// and chunk lying whole in `bytes`. nullopt (with the issue) when the head is bad or incomplete; a
+// later bad part only stops the reading there (`issue` says what), the model keeps what came
+// before.
+std::optional<ProgressiveModel> progressiveModelFromPrefix(std::span<const std::uint8_t> bytes,
+                                                           ChunkedIssue* issue);
+
+}  // namespace octopoint
