@@ -9,6 +9,7 @@
 #include "codegen/prepare_error.h"
 #include "renderer/chunked_format.h"
 #include "renderer/crc32.h"
+#include "renderer/model_format.h"
 
 namespace octopoint::prepare {
 namespace {
@@ -46,41 +47,71 @@ std::size_t headBytes(std::size_t palette_count, std::size_t levels, const Prepa
          base.nodes.size() + base.leaves.size() + chunked::kHeadCrcBytes;
 }
 
-// Level `fine` as chunks refining `coarse`, regions at `region_level`.
-std::vector<Chunk> makeChunks(const LevelVoxels& coarse, const LevelVoxels& fine,
-                              int region_level) {
+// What each coarse voxel becomes at the finer depth: its refinement's mask bytes (a single 0 when
+// nothing) and how many finer voxels it has. Fine voxels below each coarse one are contiguous.
+struct Refinement {
+  std::vector<std::uint8_t> masks;
+  std::uint32_t points = 0;
+};
+
+std::vector<Refinement> refinements(const LevelVoxels& coarse, const LevelVoxels& fine) {
   const int gap = fine.depth - coarse.depth;
-  const int region_shift = 3 * (coarse.depth - region_level);
   const std::uint64_t suffix_mask = (std::uint64_t{1} << (3 * gap)) - 1;
-  std::vector<Chunk> chunks;
-  std::vector<std::uint64_t> suffixes;
-  std::size_t f = 0;  // next fine voxel; fine voxels below each coarse one are contiguous
   const auto orphan = [&](std::uint64_t key) {
     return PrepareError("chunked model: a voxel of depth " + std::to_string(fine.depth) + " (key " +
                         std::to_string(key) + ") has no parent at depth " +
                         std::to_string(coarse.depth) + ": the levels are not nested");
   };
+  std::vector<Refinement> result(coarse.keys.size());
+  std::vector<std::uint64_t> suffixes;
+  std::size_t f = 0;
   for (std::size_t c = 0; c < coarse.keys.size(); ++c) {
-    const auto region = static_cast<std::uint32_t>(coarse.keys[c] >> region_shift);
-    if (chunks.empty() || chunks.back().region != region) chunks.push_back(Chunk{region, 0, 0, {}});
-    Chunk& chunk = chunks.back();
-    ++chunk.coarse_points;
     if (f < fine.keys.size() && fine.keys[f] >> (3 * gap) < coarse.keys[c])
       throw orphan(fine.keys[f]);
-    const std::size_t first = f;
     suffixes.clear();
     for (; f < fine.keys.size() && fine.keys[f] >> (3 * gap) == coarse.keys[c]; ++f) {
       suffixes.push_back(fine.keys[f] & suffix_mask);
     }
-    if (suffixes.empty()) {
-      chunk.bytes.push_back(0);  // nothing of this voxel at the finer depth
-      continue;
-    }
-    const std::vector<std::uint8_t> masks = encodeOctree(suffixes, gap);
-    chunk.bytes.insert(chunk.bytes.end(), masks.begin(), masks.end());
-    chunk.points += static_cast<std::uint32_t>(f - first);
+    result[c].masks = suffixes.empty() ? std::vector<std::uint8_t>{0} : encodeOctree(suffixes, gap);
+    result[c].points = static_cast<std::uint32_t>(suffixes.size());
   }
   if (f != fine.keys.size()) throw orphan(fine.keys[f]);
+  return result;
+}
+
+// The finest region level in [lowest, highest] whose chunks hold at least `target` bytes on
+// average (the coarsest, `lowest`, when none does): a level's bytes do not depend on how it is cut.
+int chooseRegionLevel(const LevelVoxels& coarse, std::size_t level_bytes, int lowest, int highest,
+                      std::size_t target) {
+  for (int level = highest; level > lowest; --level) {
+    const int shift = 3 * (coarse.depth - level);
+    std::size_t regions = 0;
+    for (std::size_t c = 0; c < coarse.keys.size(); ++c) {
+      regions += c == 0 || coarse.keys[c] >> shift != coarse.keys[c - 1] >> shift;
+    }
+    if (level_bytes >= target * regions) return level;
+  }
+  return lowest;
+}
+
+// Level `fine` as chunks refining `coarse`, regions at the chosen level (at least `lowest`).
+std::vector<Chunk> makeChunks(const LevelVoxels& coarse, const LevelVoxels& fine, int lowest,
+                              std::size_t target, int* region_level) {
+  const std::vector<Refinement> parts = refinements(coarse, fine);
+  std::size_t level_bytes = fine.keys.size();
+  for (const Refinement& part : parts) level_bytes += part.masks.size();
+  *region_level = chooseRegionLevel(coarse, level_bytes, lowest,
+                                    std::min(coarse.depth - 1, chunked::kMaxRegionLevel), target);
+  const int shift = 3 * (coarse.depth - *region_level);
+  std::vector<Chunk> chunks;
+  for (std::size_t c = 0; c < coarse.keys.size(); ++c) {
+    const auto region = static_cast<std::uint32_t>(coarse.keys[c] >> shift);
+    if (chunks.empty() || chunks.back().region != region) chunks.push_back(Chunk{region, 0, 0, {}});
+    Chunk& chunk = chunks.back();
+    ++chunk.coarse_points;
+    chunk.points += parts[c].points;
+    chunk.bytes.insert(chunk.bytes.end(), parts[c].masks.begin(), parts[c].masks.end());
+  }
   // Masks are in place; the palette indices follow them, in the same order.
   std::size_t next_colour = 0;
   for (Chunk& chunk : chunks) {
@@ -92,19 +123,10 @@ std::vector<Chunk> makeChunks(const LevelVoxels& coarse, const LevelVoxels& fine
   return chunks;
 }
 
-}  // namespace
-
-std::vector<std::uint8_t> serializeChunkedModel(const PreparedModel& model,
-                                                const ChunkedOptions& options,
-                                                ChunkedLayout* layout) {
-  assert(!model.levels.empty() && model.levels.size() <= format::kMaxLevels);
-  if (model.levels.front().depth < 2) {
-    throw PrepareError(
-        "--chunked: the coarsest depth must be at least 2 (a chunked model needs a coarser base)");
-  }
-  std::vector<LevelVoxels> voxels;
-  for (const PreparedLevel& level : model.levels) voxels.push_back(decodeLevel(level));
-
+// The chunked image with chunks of `options.target_chunk_bytes`; fills `layout`.
+std::vector<std::uint8_t> serializeLevels(const PreparedModel& model,
+                                          const std::vector<LevelVoxels>& voxels,
+                                          const ChunkedOptions& options, ChunkedLayout* layout) {
   // The base: the coarsest depth itself when its head fits the budget and finer depths remain,
   // else the finest coarser depth that fits (depth 1 at worst: at most 8 voxels).
   std::size_t first_chunked = 0;
@@ -128,10 +150,9 @@ std::vector<std::uint8_t> serializeChunkedModel(const PreparedModel& model,
   const LevelVoxels* coarser = &base;
   int region_level = 0;
   for (std::size_t i = first_chunked; i < voxels.size(); ++i) {
-    const int depth = voxels[i].depth;
-    region_level = std::min({std::max(depth - options.chunk_span, region_level), coarser->depth - 1,
-                             chunked::kMaxRegionLevel});
-    levels.push_back(Level{depth, region_level, makeChunks(*coarser, voxels[i], region_level)});
+    std::vector<Chunk> chunks =
+        makeChunks(*coarser, voxels[i], region_level, options.target_chunk_bytes, &region_level);
+    levels.push_back(Level{voxels[i].depth, region_level, std::move(chunks)});
     coarser = &voxels[i];
   }
 
@@ -193,7 +214,7 @@ std::vector<std::uint8_t> serializeChunkedModel(const PreparedModel& model,
   }
   assert(out.size() == file_bytes);
 
-  if (layout != nullptr) {
+  {
     *layout = {};
     layout->base_depth = base.depth;
     layout->base_added = first_chunked == 0;
@@ -210,6 +231,42 @@ std::vector<std::uint8_t> serializeChunkedModel(const PreparedModel& model,
     layout->file_bytes = out.size();
   }
   return out;
+}
+
+}  // namespace
+
+std::vector<std::uint8_t> serializeChunkedModel(const PreparedModel& model,
+                                                const ChunkedOptions& options,
+                                                ChunkedLayout* layout) {
+  assert(!model.levels.empty() && model.levels.size() <= format::kMaxLevels);
+  if (model.levels.front().depth < 2) {
+    throw PrepareError(
+        "--chunked: the coarsest depth must be at least 2 (a chunked model needs a coarser base)");
+  }
+  std::vector<LevelVoxels> voxels;
+  for (const PreparedLevel& level : model.levels) voxels.push_back(decodeLevel(level));
+  std::size_t version1 = format::kHeaderBytes + format::kLevelRowBytes * model.levels.size();
+  for (const PreparedLevel& level : model.levels)
+    version1 += level.nodes.size() + level.leaves.size();
+
+  ChunkedLayout chosen;
+  ChunkedOptions tried = options;
+  std::vector<std::uint8_t> image = serializeLevels(model, voxels, tried, &chosen);
+  // Each chunk costs a 20-byte record; refining instead of repeating the coarser levels saves their
+  // node bytes. When the records win (few depths, small coarse levels), fewer and larger chunks,
+  // down to one per level, keep the file no larger than version 1 where that is possible at all.
+  const auto chunk_count = [](const ChunkedLayout& l) {
+    std::size_t count = 0;
+    for (std::size_t c : l.chunks) count += c;
+    return count;
+  };
+  while (image.size() > version1 && chunk_count(chosen) > chosen.chunks.size()) {
+    tried.target_chunk_bytes *= 2;
+    image = serializeLevels(model, voxels, tried, &chosen);
+  }
+  chosen.target_chunk_bytes = tried.target_chunk_bytes;
+  if (layout != nullptr) *layout = chosen;
+  return image;
 }
 
 }  // namespace octopoint::prepare

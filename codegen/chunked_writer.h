@@ -11,15 +11,17 @@
 
 namespace octopoint::prepare {
 
-// Measured in docs/streaming.md ("Choosing the chunk size"): a chunk spans this many tree levels
-// below its region, so chunks hold about the same number of voxels at every depth.
-inline constexpr int kDefaultChunkSpan = 5;
+// Measured in docs/streaming.md ("Choosing the chunk size"): each level is cut at the finest
+// region level whose chunks hold at least this many bytes on average, so chunks are about the
+// same size at every depth: larger ones cost a zoomed view bytes it does not need, smaller ones
+// cost directory bytes (20 per chunk) and requests.
+inline constexpr std::size_t kDefaultTargetChunkBytes = 2048;
 // The head (everything before the first picture) is kept within this many bytes: the base is the
 // finest depth that fits. 4 KiB take under a second on a 5 kB/s link.
 inline constexpr std::size_t kDefaultHeadBudget = 4096;
 
 struct ChunkedOptions {
-  int chunk_span = kDefaultChunkSpan;
+  std::size_t target_chunk_bytes = kDefaultTargetChunkBytes;
   std::size_t head_budget = kDefaultHeadBudget;
 };
 
@@ -31,14 +33,17 @@ struct ChunkedLayout {
   std::vector<int> region_levels;        // of the chunked levels
   std::vector<std::size_t> chunks;       // per chunked level
   std::vector<std::size_t> chunk_bytes;  // per chunked level
+  std::size_t target_chunk_bytes = 0;    // larger than asked when needed to stay within version 1
   std::size_t head_bytes = 0;
   std::size_t table_bytes = 0;
   std::size_t file_bytes = 0;
 };
 
 // The chunked image of `model`, whose levels must be nested (codegen/level_voxels.h, nestLevels;
-// throws PrepareError otherwise). Throws PrepareError when the coarsest depth is 1 (no coarser base
-// is possible).
+// throws PrepareError otherwise). No larger than the version-1 file of the same levels: when the
+// asked chunk size would make it larger, chunks are made larger (down to one per level); only a
+// model whose every level fits in one chunk can still be larger (a single depth, whose base is
+// extra). Throws PrepareError when the coarsest depth is 1 (no coarser base is possible).
 std::vector<std::uint8_t> serializeChunkedModel(const PreparedModel& model,
                                                 const ChunkedOptions& options = {},
                                                 ChunkedLayout* layout = nullptr);

@@ -107,32 +107,50 @@ std::vector<prepare::PreparedLevel> levelStreams(std::span<const std::uint8_t> i
   return levels;
 }
 
+void resealTables(Bytes& image);
+
 void reseal(Bytes& image) {
+  using le::readU32;
+  // Reads with bounds: an altered header may point anywhere; whatever lies outside is left alone.
+  const auto fits = [&](std::uint64_t at, std::uint64_t size) { return at + size <= image.size(); };
+  if (!fits(0, 40)) return;
+  resealTables(image);
+  const std::size_t head_bytes = readU32(&image[20]);
+  if (head_bytes >= 4 && fits(0, head_bytes)) {
+    putU32(image, head_bytes - 4, crc32(std::span(image).first(head_bytes - 4)));
+  }
+}
+
+// The records' chunk CRCs and each table's CRC in the level table, as far as they lie in the file.
+void resealTables(Bytes& image) {
   using le::readU16;
   using le::readU32;
   using le::readU64;
+  const auto fits = [&](std::uint64_t at, std::uint64_t size) { return at + size <= image.size(); };
   const std::size_t level_count = image[6];
   const std::size_t palette_count = readU16(&image[16]);
   const std::size_t head_bytes = readU32(&image[20]);
   const std::size_t rows_at = 40 + 3 * palette_count;
-  std::size_t table_at = head_bytes;
-  for (std::size_t j = 1; j < level_count; ++j) {
+  std::uint64_t table_at = head_bytes;
+  for (std::size_t j = 1; j < level_count && fits(rows_at + 20 * j, 20); ++j) {
     const std::size_t row = rows_at + 20 * j;
-    const std::size_t count = readU32(&image[row + 4]);
+    const std::uint64_t count = readU32(&image[row + 4]);
     std::uint64_t chunk_at = readU64(&image[row + 12]);
-    for (std::size_t i = 0; i < count; ++i) {
-      const std::size_t record = table_at + 20 * i;
+    if (!fits(table_at, 20 * count)) return;
+    for (std::uint64_t i = 0; i < count; ++i) {
+      const auto record = static_cast<std::size_t>(table_at + 20 * i);
       const std::uint32_t bytes = readU32(&image[record + 4]);
-      if (chunk_at + bytes <= image.size()) {
+      if (fits(chunk_at, bytes)) {
         putU32(image, record + 16,
                crc32(std::span(image).subspan(static_cast<std::size_t>(chunk_at), bytes)));
       }
       chunk_at += bytes;
     }
-    putU32(image, row + 8, crc32(std::span(image).subspan(table_at, 20 * count)));
+    putU32(image, row + 8,
+           crc32(std::span(image).subspan(static_cast<std::size_t>(table_at),
+                                          static_cast<std::size_t>(20 * count))));
     table_at += 20 * count;
   }
-  putU32(image, head_bytes - 4, crc32(std::span(image).first(head_bytes - 4)));
 }
 
 std::vector<FetchItem> allChunkItems(const ProgressiveModel& model) {

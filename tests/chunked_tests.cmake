@@ -3,7 +3,9 @@
 # these tests also run on the device build.
 set(codegen ${PROJECT_SOURCE_DIR}/codegen)
 add_executable(chunked_tests
+  chunked_format_test.cpp
   chunked_test_support.cpp
+  chunked_writer_test.cpp
   progressive_model_test.cpp
   ${PROJECT_SOURCE_DIR}/fuzz/model_images.cpp
   ${codegen}/chunked_writer.cpp

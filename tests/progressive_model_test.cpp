@@ -56,7 +56,7 @@ struct Fixture {
       : prepared(thin ? thinned(fuzzing::preparedModel(*models::defaultModel(), {4, 5, 6, 7, 8}))
                       : fuzzing::preparedModel(*models::defaultModel(), {4, 5, 6, 7, 8})) {}
   prepare::PreparedModel prepared;
-  Bytes image = prepare::serializeChunkedModel(prepared, {3, 600});
+  Bytes image = prepare::serializeChunkedModel(prepared, {64, 600});
   std::vector<prepare::PreparedLevel> streams = octopoint::testing::levelStreams(image, prepared);
 
   ProgressiveModel headOnly() const {
@@ -279,8 +279,8 @@ TEST_P(ProgressiveModelTest, AZoomedViewFetchesOnlyPartOfTheFile) {
 }
 
 INSTANTIATE_TEST_SUITE_P(WholeAndThinned, ProgressiveModelTest, ::testing::Bool(),
-                         [](const ::testing::TestParamInfo<bool>& info) {
-                           return info.param ? "thinned" : "whole";
+                         [](const ::testing::TestParamInfo<bool>& param) {
+                           return param.param ? "thinned" : "whole";
                          });
 
 }  // namespace
