@@ -25,13 +25,28 @@ std::string issueText(const ModelIssue& issue) {
 
 }  // namespace
 
-std::unique_ptr<LoadedModel> loadModel(const std::string& model_name, const std::string& model_file) {
+std::unique_ptr<LoadedModel> loadModel(const std::string& model_name, const std::string& model_file,
+                                       bool accept_chunked) {
   auto loaded = std::make_unique<LoadedModel>();
   ModelIssue issue;
   if (!model_file.empty()) {
     loaded->file_bytes = cli::readInputBytes(model_file, kModelFileInput);
-    loaded->view = ModelView::fromBytes(loaded->file_bytes, &issue);
     loaded->label = cli::displayPath(model_file);
+    if (looksChunked(loaded->file_bytes)) {
+      if (!accept_chunked) throw ModelLoadError(loaded->label + ": a chunked model (format version 3) cannot be shown here");
+      ChunkedIssue chunked_issue;
+      loaded->chunked = progressiveModelFromPrefix(loaded->file_bytes, &chunked_issue);
+      if (chunked_issue.error == ChunkedError::kNone && loaded->chunked &&
+          loaded->chunked->head().file_bytes != loaded->file_bytes.size()) {
+        chunked_issue = {ChunkedError::kBadFileSize, loaded->file_bytes.size(), 0};
+      }
+      if (chunked_issue.error != ChunkedError::kNone) {
+        throw ModelLoadError(loaded->label + ": " + describe(chunked_issue.error) + " (level " +
+                             std::to_string(chunked_issue.level) + ", byte " + std::to_string(chunked_issue.offset) + ")");
+      }
+      return loaded;
+    }
+    loaded->view = ModelView::fromBytes(loaded->file_bytes, &issue);
   } else {
     const EmbeddedModel* embedded = model_name.empty() ? models::defaultModel() : models::findModel(model_name);
     if (embedded == nullptr) throw ModelLoadError("--model: no embedded model " + cli::inQuotes(model_name) + " (see --list)");

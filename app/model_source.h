@@ -11,6 +11,7 @@
 
 #include "cli/input_file.h"
 #include "renderer/model.h"
+#include "renderer/progressive_model.h"
 
 namespace octopoint {
 
@@ -24,12 +25,16 @@ inline constexpr cli::InputKind kModelFileInput{"model file", cli::kGiB};
 
 struct LoadedModel {
   std::vector<std::uint8_t> file_bytes;  // the .oct image the view points into (empty if embedded)
-  std::optional<ModelView> view;
+  std::optional<ModelView> view;         // a version-1 model
+  std::optional<ProgressiveModel> chunked;  // or a chunked one (version 3), read whole
   std::string label;  // the file path or the embedded model's name, for messages
 };
 
 // Throws ModelLoadError with one line ("PATH: what (where)") when the model is missing,
-// unreadable or invalid. Returned by pointer: the view points into the object's own bytes.
-std::unique_ptr<LoadedModel> loadModel(const std::string& model_name, const std::string& model_file);
+// unreadable or invalid. Returned by pointer: the view points into the object's own bytes. A file
+// in the chunked format (version 3) is read whole into `chunked`; every part must be valid.
+// Callers that cannot draw one pass accept_chunked = false and get a ModelLoadError for it.
+std::unique_ptr<LoadedModel> loadModel(const std::string& model_name, const std::string& model_file,
+                                       bool accept_chunked = false);
 
 }  // namespace octopoint

@@ -11,6 +11,7 @@
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 
+#include "app/chunked_render.h"
 #include "app/contact_sheet.h"
 #include "app/model_source.h"
 #include "cli/arguments.h"
@@ -33,15 +34,22 @@ namespace {
 namespace fs = std::filesystem;
 using namespace octopoint;
 
-constexpr const char* kUsage = R"(usage: octopoint-render [--model NAME | --file M.oct] [options] -o OUT.png
+constexpr const char* kUsage = R"(usage: octopoint-render [--model NAME | --file M.oct | --url URL [--bytes N]] [options] -o OUT.png
        octopoint-render --list
 
 Draws an octopoint model with the integer renderer and writes it as a PNG. With neither --model
-nor --file it draws the default model embedded in this binary.
+nor --file nor --url it draws the default model embedded in this binary.
 
   --model NAME       an embedded model (see --list)
   --file M.oct       a model file written by octopoint-prepare (a regular file of at most 1 GiB);
-                     it is validated before drawing
+                     it is validated before drawing. A chunked file (--chunked) is drawn at the
+                     depth the view needs
+  --url URL          a chunked model on an HTTP server with Range requests (octopoint-serve,
+                     nginx, ...), http://HOST:PORT/NAME.oct: fetches what this view needs, coarse
+                     first, then draws it (docs/streaming.md)
+  --bytes N          with --url: stop after N bytes and draw what they give (one connection, so
+                     the same N bytes every time)
+  --timeout S        with --url: draw what arrived after S seconds at most, 1..86400 (default 60)
   --yaw DEG          turn about the vertical axis, |DEG| <= 1e6 (default 0; the scan as its
                      sensor saw it)
   --pitch DEG        turn about the horizontal axis (default 0)
@@ -79,6 +87,8 @@ constexpr Rgb kBackground{236, 236, 240};  // light grey: range scans are often 
 struct Options {
   std::string model_name;
   std::string model_file;
+  std::string url;
+  UrlFetchOptions fetch;
   std::string output;
   Camera camera;
   std::optional<int> depth;  // none: depth auto
@@ -106,6 +116,12 @@ Options parseOptions(int argc, char** argv) {
       options.model_name = args.value();
     } else if (args.is("--file")) {
       options.model_file = args.value();
+    } else if (args.is("--url")) {
+      options.url = args.value();
+    } else if (args.is("--bytes")) {
+      options.fetch.bytes = static_cast<std::uint64_t>(cli::parseInteger(args.name(), args.value(), 1, std::int64_t{1} << 50));
+    } else if (args.is("--timeout")) {
+      options.fetch.timeout_seconds = cli::parseInt(args.name(), args.value(), 1, 86400);
     } else if (args.is("--yaw")) {
       options.camera.yaw = cli::parseDegrees(args.name(), args.value());
     } else if (args.is("--pitch")) {
@@ -142,8 +158,12 @@ Options parseOptions(int argc, char** argv) {
       args.refuseUnknown();
     }
   }
-  if (!options.model_name.empty() && !options.model_file.empty()) {
-    throw cli::Error("give --model or --file, not both");
+  if (!options.model_name.empty() + !options.model_file.empty() + !options.url.empty() > 1) {
+    throw cli::Error("give one of --model, --file and --url");
+  }
+  if (options.url.empty() && options.fetch.bytes > 0) throw cli::Error("--bytes needs --url");
+  if (!options.url.empty() && (options.depth || options.sheet > 0)) {
+    throw cli::Error("--url draws the depth the view needs: --depth and --sheet do not apply");
   }
   if (!options.list && options.output.empty()) throw cli::Error("no output given: use -o OUT.png");
   return options;
@@ -184,7 +204,30 @@ int run(int argc, char** argv) {
     listModels();
     return 0;
   }
-  const std::unique_ptr<LoadedModel> loaded = loadModel(options.model_name, options.model_file);
+  if (!options.url.empty()) {
+    cli::checkOutputFile(options.output);  // before fetching: a FIFO, a device or a directory is refused
+    std::string report;
+    const cv::Mat image = renderFromUrl(options.url, options.camera, options.variant, options.fill, kBackground,
+                                        options.fetch, &report);
+    writePng(options.output, image);
+    std::printf("%s: %s -> %s (%dx%d)\n", options.url.c_str(), report.c_str(), options.output.c_str(),
+                options.camera.width, options.camera.height);
+    return 0;
+  }
+  const std::unique_ptr<LoadedModel> loaded = loadModel(options.model_name, options.model_file, true);
+  if (loaded->chunked) {
+    cli::checkOutputFile(options.output);
+    if (options.depth || options.sheet > 0) {
+      throw cli::Error(loaded->label + ": a chunked model is drawn at the depth the view needs: --depth and --sheet do not apply");
+    }
+    ProgressiveDrawStats stats;
+    writePng(options.output, renderChunkedView(*loaded->chunked, options.camera, options.variant, options.fill,
+                                               kBackground, &stats));
+    std::printf("%s: chunked, depth %d, %llu points -> %s (%dx%d)\n", loaded->label.c_str(), stats.drawn_depth,
+                static_cast<unsigned long long>(stats.points), options.output.c_str(), options.camera.width,
+                options.camera.height);
+    return 0;
+  }
   const ModelView* model = &*loaded->view;
   const std::string& model_label = loaded->label;
   const LevelView* level = options.depth ? model->levelOfDepth(*options.depth) : autoLevel(*model, options.camera);

@@ -2,7 +2,10 @@
 //  - model: the default embedded model (a real Kinect scan, as octopoint-prepare wrote it) as a
 //    `.oct` file, and the same scan coarsened to every smaller depth, so the fuzzer starts from
 //    real trees of every size;
-//  - scan_header: one small, valid scan per PCD/PLY encoding the checker knows.
+//  - scan_header: one small, valid scan per PCD/PLY encoding the checker knows;
+//  - chunked: the default model as chunked files (format version 3) of a few depth sets, read
+//    whole (first byte 0), and splices into the harness's own model at the head, a record table
+//    and a chunk (first byte 3: spliced, CRCs recomputed). See fuzz/chunked_fuzzer.cpp.
 // usage: make_fuzz_corpus OUTDIR
 #include <cstdio>
 #include <cstring>
@@ -70,6 +73,26 @@ void writeScanHeaders(const fs::path& dir) {
         "property float z\nend_header\n" + binaryPoints(4));
 }
 
+void writeChunkedSeeds(const fs::path& dir, const octopoint::EmbeddedModel& model) {
+  fs::create_directories(dir);
+  const std::vector<std::vector<int>> depth_sets = {{}, {3, 5}, {4, 6, 8}, {5, 6, 7, 8}};
+  for (std::size_t i = 0; i < depth_sets.size(); ++i) {
+    std::vector<std::uint8_t> seed{0};
+    const std::vector<std::uint8_t> image = octopoint::fuzzing::chunkedImage(model, depth_sets[i], {512, 1500});
+    seed.insert(seed.end(), image.begin(), image.end());
+    write(dir / ("whole_" + std::to_string(i) + ".bin"), seed);
+  }
+  // Splices of 16 bytes of the harness's own model, at the fixed header, the level table, the first
+  // record table and the first chunk: the fuzzer mutates from there.
+  const std::vector<std::uint8_t> real = octopoint::fuzzing::chunkedImage(model, {5, 6, 7, 8}, {512, 1500});
+  const std::uint32_t head_bytes = static_cast<std::uint32_t>(real[20] | real[21] << 8);
+  for (std::uint32_t offset : {6u, 40u + 3u * 256u, head_bytes, head_bytes + 400u}) {
+    std::vector<std::uint8_t> seed{3, static_cast<std::uint8_t>(offset), static_cast<std::uint8_t>(offset >> 8), 0, 0};
+    seed.insert(seed.end(), real.begin() + offset, real.begin() + offset + 16);
+    write(dir / ("splice_" + std::to_string(offset) + ".bin"), seed);
+  }
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -89,6 +112,7 @@ int main(int argc, char** argv) {
             octopoint::fuzzing::coarsenedOctImage(model, depth));
     }
     writeScanHeaders(out / "scan_header");
+    writeChunkedSeeds(out / "chunked", model);
   } catch (const std::exception& error) {
     std::fprintf(stderr, "make_fuzz_corpus: %s\n", error.what());
     return 1;

@@ -7,6 +7,8 @@
 #include "codegen/level_voxels.h"
 #include "codegen/model_writer.h"
 #include "codegen/octree_encoder.h"
+#include "renderer/crc32.h"
+#include "renderer/little_endian.h"
 
 namespace octopoint::fuzzing {
 namespace {
@@ -40,6 +42,44 @@ struct KeyLister {
     }
   }
 };
+
+using Bytes = std::vector<std::uint8_t>;
+
+void putU32(Bytes& image, std::size_t at, std::uint32_t value) {
+  for (int i = 0; i < 4; ++i) image[at + static_cast<std::size_t>(i)] = static_cast<std::uint8_t>(value >> (8 * i));
+}
+
+// The records' chunk CRCs and each table's CRC in the level table, as far as they lie in the file.
+void resealTables(Bytes& image) {
+  using le::readU16;
+  using le::readU32;
+  using le::readU64;
+  const auto fits = [&](std::uint64_t at, std::uint64_t size) { return at + size <= image.size(); };
+  const std::size_t level_count = image[6];
+  const std::size_t palette_count = readU16(&image[16]);
+  const std::size_t head_bytes = readU32(&image[20]);
+  const std::size_t rows_at = 40 + 3 * palette_count;
+  std::uint64_t table_at = head_bytes;
+  for (std::size_t j = 1; j < level_count && fits(rows_at + 20 * j, 20); ++j) {
+    const std::size_t row = rows_at + 20 * j;
+    const std::uint64_t count = readU32(&image[row + 4]);
+    std::uint64_t chunk_at = readU64(&image[row + 12]);
+    if (!fits(table_at, 20 * count)) return;
+    for (std::uint64_t i = 0; i < count; ++i) {
+      const auto record = static_cast<std::size_t>(table_at + 20 * i);
+      const std::uint32_t bytes = readU32(&image[record + 4]);
+      if (fits(chunk_at, bytes)) {
+        putU32(image, record + 16,
+               crc32(std::span(image).subspan(static_cast<std::size_t>(chunk_at), bytes)));
+      }
+      chunk_at += bytes;
+    }
+    putU32(image, row + 8,
+           crc32(std::span(image).subspan(static_cast<std::size_t>(table_at),
+                                          static_cast<std::size_t>(20 * count))));
+    table_at += 20 * count;
+  }
+}
 
 }  // namespace
 
@@ -90,6 +130,18 @@ std::vector<std::uint8_t> coarsenedOctImage(const EmbeddedModel& model, int dept
   prepare::PreparedModel prepared = preparedShell(model);
   prepared.levels.push_back(std::move(coarse));
   return prepare::serializeModel(prepared);
+}
+
+void resealChunked(Bytes& image) {
+  using le::readU32;
+  // Reads with bounds: an altered header may point anywhere; whatever lies outside is left alone.
+  const auto fits = [&](std::uint64_t at, std::uint64_t size) { return at + size <= image.size(); };
+  if (!fits(0, 40)) return;
+  resealTables(image);
+  const std::size_t head_bytes = readU32(&image[20]);
+  if (head_bytes >= 4 && fits(0, head_bytes)) {
+    putU32(image, head_bytes - 4, crc32(std::span(image).first(head_bytes - 4)));
+  }
 }
 
 }  // namespace octopoint::fuzzing

@@ -27,4 +27,10 @@ prepare::PreparedModel preparedModel(const EmbeddedModel& model, const std::vect
 std::vector<std::uint8_t> chunkedImage(const EmbeddedModel& model, const std::vector<int>& depths = {},
                                        const prepare::ChunkedOptions& options = {});
 
+// Recomputes every CRC of a chunked image from its raw bytes (each record's chunk CRC, each record
+// table's CRC in the level table, then the head's), so that a test or a fuzzer can change any field
+// and reach the checks behind the CRCs. Reads offsets as the format says, within the image's bounds;
+// what lies outside is left alone.
+void resealChunked(std::vector<std::uint8_t>& image);
+
 }  // namespace octopoint::fuzzing

@@ -188,8 +188,9 @@ bool ProgressiveModel::viewComplete(const Camera& camera) {
 }
 
 std::size_t ProgressiveModel::fetchPriority(const Camera& camera, bool include_invisible,
-                                            std::span<FetchItem> out) {
-  if (out.empty() || !prepareFrame(camera)) return 0;
+                                            std::span<FetchItem> out, std::size_t* total) {
+  if (total != nullptr) *total = 0;
+  if (!prepareFrame(camera)) return 0;
   priority_scratch_.clear();
   const std::int64_t frame_w = camera.width, frame_h = camera.height;
   for (int level = 1; level <= frame_.drawn_level; ++level) {
@@ -225,6 +226,7 @@ std::size_t ProgressiveModel::fetchPriority(const Camera& camera, bool include_i
       priority_scratch_.push_back({key, item});
     }
   }
+  if (total != nullptr) *total = priority_scratch_.size();
   const std::size_t count = std::min(out.size(), priority_scratch_.size());
   std::partial_sort(
       priority_scratch_.begin(), priority_scratch_.begin() + static_cast<std::ptrdiff_t>(count),

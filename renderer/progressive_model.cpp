@@ -37,6 +37,7 @@ std::optional<ProgressiveModel> ProgressiveModel::fromHead(std::span<const std::
   base_slot.state = ChunkState::kHeld;
   base_slot.nodes = model.head_.base_nodes;
   base_slot.leaves = model.head_.base_leaves;
+  model.priority_scratch_.reserve(chunked::kMaxChunkedLevels);  // tables asked for before any is known
   return model;
 }
 

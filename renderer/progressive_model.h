@@ -109,8 +109,10 @@ class ProgressiveModel {
   // chunks, visible before invisible (these only with include_invisible), coarse before fine,
   // larger on screen before smaller, then file order. Never a depth finer than the view needs,
   // never a chunk held, waiting or unavailable (or refining one that is unavailable). Writes up to
-  // out.size() items and returns how many. Allocates nothing. Returns 0 for a camera it refuses.
-  std::size_t fetchPriority(const Camera& camera, bool include_invisible, std::span<FetchItem> out);
+  // out.size() items and returns how many; `total`, when given, gets how many there are in all.
+  // Allocates nothing. Returns 0 for a camera it refuses.
+  std::size_t fetchPriority(const Camera& camera, bool include_invisible, std::span<FetchItem> out,
+                            std::size_t* total = nullptr);
 
   // Draws the view into `frame` (which it does not clear) with a fixed-point variant. Returns
   // false, drawing nothing, for a camera buildFrameSetup refuses. Allocates nothing.

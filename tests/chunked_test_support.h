@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "codegen/prepared_model.h"
+#include "fuzz/model_images.h"
 #include "renderer/camera.h"
 #include "renderer/framebuffer.h"
 #include "renderer/progressive_model.h"
@@ -31,10 +32,8 @@ Framebuffer referenceFrame(const ProgressiveModel& model,
 std::vector<prepare::PreparedLevel> levelStreams(std::span<const std::uint8_t> image,
                                                  const prepare::PreparedModel& prepared);
 
-// Recomputes every CRC of a chunked image from its raw bytes (records' chunk CRCs, then each record
-// table's CRC in the level table, then the head's), so that a test can change one field and reach
-// the check behind the CRCs. Reads offsets as the format says, trusting them.
-void reseal(Bytes& image);
+// Recomputes every CRC of a chunked image (fuzz/model_images.h).
+inline void reseal(Bytes& image) { fuzzing::resealChunked(image); }
 
 // Feeds a model every record table, then every chunk in `order` (indices into the chunk list in
 // file order); returns the chunk items in file order.

@@ -1,0 +1,336 @@
+#include "net/model_stream.h"
+
+#include <algorithm>
+#include <atomic>
+#include <thread>
+#include <unordered_set>
+#include <vector>
+
+namespace octopoint::net {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+std::uint64_t itemKey(const FetchItem& item) {
+  return (item.kind == FetchItem::Kind::kRecordTable ? std::uint64_t{1} << 63 : 0) |
+         std::uint64_t(item.level) << 32 | item.index;
+}
+
+// One request: a byte range, and the tables and chunks lying whole in it, in file order.
+struct Plan {
+  bool head = false;
+  std::uint64_t offset = 0;
+  std::uint64_t size = 0;
+  std::vector<FetchItem> items;
+};
+
+constexpr std::size_t kPriorityWindow = 512;  // items considered per request
+
+}  // namespace
+
+class ModelStream::Impl {
+ public:
+  Impl(const HttpUrl& url, const StreamOptions& options) : url_(url), options_(options) {
+    priority_.resize(kPriorityWindow);
+  }
+  ~Impl() { stop(); }
+
+  void start() {
+    std::lock_guard<std::mutex> lock(mutex_);
+    if (!threads_.empty()) return;
+    for (int i = 0; i < std::max(options_.connections, 1); ++i)
+      threads_.emplace_back([this] { work(); });
+  }
+
+  void stop() {
+    {
+      std::lock_guard<std::mutex> lock(mutex_);
+      stopping_ = true;
+      for (RangeClient* client : clients_) client->abort();
+    }
+    cv_.notify_all();
+    for (std::thread& thread : threads_) thread.join();
+    threads_.clear();
+  }
+
+  void setView(const Camera& camera) {
+    std::lock_guard<std::mutex> lock(mutex_);
+    view_ = camera;
+    cv_.notify_all();
+  }
+
+  StreamStatus status() {
+    std::lock_guard<std::mutex> lock(mutex_);
+    return statusLocked();
+  }
+
+  void withModel(const std::function<void(ProgressiveModel*)>& use) {
+    std::lock_guard<std::mutex> lock(mutex_);
+    use(model_ ? &*model_ : nullptr);
+  }
+
+  void onAccepted(std::function<void(ProgressiveModel&, std::uint64_t)> callback) {
+    std::lock_guard<std::mutex> lock(mutex_);
+    on_accepted_ = std::move(callback);
+  }
+
+  StreamStatus waitUntilSettled(std::chrono::milliseconds timeout) {
+    std::unique_lock<std::mutex> lock(mutex_);
+    const auto deadline = Clock::now() + timeout;
+    while (Clock::now() < deadline) {
+      StreamStatus now = statusLocked();
+      if (now.failed || now.settled) return now;
+      cv_.wait_until(lock, std::min(deadline, Clock::now() + std::chrono::milliseconds(50)));
+    }
+    return statusLocked();
+  }
+
+ private:
+  std::uint64_t budgetLeft() const {
+    if (options_.byte_budget == 0) return UINT64_MAX;
+    const std::uint64_t used = received_ + outstanding_;
+    return used >= options_.byte_budget ? 0 : options_.byte_budget - used;
+  }
+
+  StreamStatus statusLocked() {
+    StreamStatus status;
+    status.head_known = model_.has_value();
+    status.failed = failed_;
+    status.error = error_;
+    status.bytes_received = received_;
+    status.requests = requests_;
+    status.failed_requests = failed_requests_;
+    status.refused_items = refused_items_;
+    if (model_) {
+      status.file_bytes = model_->head().file_bytes;
+      status.chunks_held = model_->chunksIn(ChunkState::kHeld);
+      std::size_t pending = 0;
+      model_->fetchPriority(view_, false, {}, &pending);
+      status.chunks_pending = static_cast<std::uint32_t>(pending);
+      status.view_complete = model_->viewComplete(view_);
+      std::size_t wanted = 0;
+      model_->fetchPriority(view_, options_.prefetch_invisible, {}, &wanted);
+      status.settled = busy_ == 0 && (wanted == 0 || budgetLeft() == 0);
+    } else {
+      status.settled = failed_ || (busy_ == 0 && budgetLeft() == 0);
+    }
+    return status;
+  }
+
+  void fail(const std::string& why) {
+    failed_ = true;
+    error_ = why;
+    cv_.notify_all();
+  }
+
+  // Under the lock: the next request, or false when there is none to make now.
+  bool nextPlan(Plan& plan) {
+    const std::uint64_t budget = budgetLeft();
+    if (budget == 0) return false;
+    if (!model_) {
+      if (head_in_flight_) return false;
+      // Until the fixed header is in, ask for the first bytes; then for the rest of the head.
+      std::uint64_t want = options_.first_request_bytes;
+      if (head_bytes_ > 0) want = head_bytes_;
+      want = std::max<std::uint64_t>(want, chunked::kFixedHeaderBytes);
+      if (want <= head_.size()) want = head_.size() + 1;
+      plan = Plan{true, head_.size(), std::min(want - head_.size(), budget), {}};
+      head_in_flight_ = true;
+      return true;
+    }
+    std::size_t count = model_->fetchPriority(view_, false, priority_);
+    const auto free = [&](const FetchItem& item) { return !in_flight_.contains(itemKey(item)); };
+    auto first = std::find_if(priority_.begin(),
+                              priority_.begin() + static_cast<std::ptrdiff_t>(count), free);
+    if (first == priority_.begin() + static_cast<std::ptrdiff_t>(count) &&
+        options_.prefetch_invisible) {
+      count = model_->fetchPriority(view_, true, priority_);
+      first = std::find_if(priority_.begin(),
+                           priority_.begin() + static_cast<std::ptrdiff_t>(count), free);
+    }
+    if (first == priority_.begin() + static_cast<std::ptrdiff_t>(count)) return false;
+    // Extend the most urgent item with the wanted items that follow it in the file, across gaps
+    // smaller than merge_gap_bytes, up to max_request_bytes.
+    const FetchItem lead = *first;
+    sorted_.assign(priority_.begin(), priority_.begin() + static_cast<std::ptrdiff_t>(count));
+    std::sort(sorted_.begin(), sorted_.end(),
+              [](const FetchItem& a, const FetchItem& b) { return a.offset < b.offset; });
+    plan = Plan{false, lead.offset, lead.bytes, {lead}};
+    std::uint64_t end = lead.offset + lead.bytes;
+    for (auto it = std::upper_bound(
+             sorted_.begin(), sorted_.end(), lead.offset,
+             [](std::uint64_t at, const FetchItem&item) { return at < item.offset; });
+         it != sorted_.end(); ++it) {
+      if (!free(*it) || it->offset < end || it->offset - end > options_.merge_gap_bytes ||
+          it->offset + it->bytes - plan.offset > options_.max_request_bytes) {
+        break;
+      }
+      end = it->offset + it->bytes;
+      plan.items.push_back(*it);
+    }
+    plan.size = std::min(end - plan.offset, budget);
+    while (!plan.items.empty() &&
+           plan.items.back().offset + plan.items.back().bytes > plan.offset + plan.size) {
+      plan.items.pop_back();  // beyond the budget: not asked for
+    }
+    for (const FetchItem& item : plan.items) in_flight_.insert(itemKey(item));
+    return true;
+  }
+
+  // Under the lock: the head's bytes so far; makes the model once they hold the whole head.
+  void takeHead() {
+    ChunkedIssue issue;
+    if (head_bytes_ == 0 && head_.size() >= chunked::kFixedHeaderBytes) {
+      const std::optional<std::uint64_t> size = chunkedHeadBytes(head_, &issue);
+      if (!size)
+        return fail(url_.text() + ": " + describe(issue.error) + " (byte " +
+                    std::to_string(issue.offset) + ")");
+      head_bytes_ = *size;
+    }
+    if (!model_ && head_bytes_ > 0 && head_.size() >= head_bytes_) {
+      std::optional<ProgressiveModel> model = ProgressiveModel::fromHead(head_, &issue);
+      if (!model)
+        return fail(url_.text() + ": " + describe(issue.error) + " (byte " +
+                    std::to_string(issue.offset) + ")");
+      model_ = std::move(model);
+      if (on_accepted_) on_accepted_(*model_, received_);
+    }
+    if (model_) {
+      // Whatever followed the head in the first request: tables and chunks lying whole in it.
+      const std::uint32_t before = model_->chunksIn(ChunkState::kHeld);
+      model_->acceptBytes(0, head_, &issue);
+      if (on_accepted_ && model_->chunksIn(ChunkState::kHeld) != before)
+        on_accepted_(*model_, received_);
+    }
+  }
+
+  // Under the lock: hands the model every planned item whose bytes have all arrived.
+  void deliver(const Plan& plan, const std::vector<std::uint8_t>& buffer, std::size_t& next) {
+    while (next < plan.items.size()) {
+      const FetchItem& item = plan.items[next];
+      const std::uint64_t end = item.offset + item.bytes - plan.offset;
+      if (end > buffer.size()) return;
+      const std::span<const std::uint8_t> bytes(buffer.data() + (item.offset - plan.offset),
+                                                item.bytes);
+      const ChunkedIssue issue = model_->accept(item, bytes);
+      in_flight_.erase(itemKey(item));
+      ++next;
+      if (issue.error != ChunkedError::kNone) {
+        ++refused_items_;
+        error_ = std::string("refused: ") + describe(issue.error);
+      } else if (on_accepted_) {
+        on_accepted_(*model_, received_);
+      }
+    }
+  }
+
+  void work() {
+    RangeClient client(url_, options_.timeouts);
+    std::unique_lock<std::mutex> lock(mutex_);
+    clients_.push_back(&client);
+    while (!stopping_ && !failed_) {
+      if (Clock::now() < retry_after_) {
+        cv_.wait_until(lock, retry_after_);
+        continue;
+      }
+      Plan plan;
+      if (!nextPlan(plan)) {
+        cv_.wait_for(lock, std::chrono::milliseconds(100));
+        continue;
+      }
+      ++busy_;
+      ++requests_;
+      outstanding_ += plan.size;
+      lock.unlock();
+      std::vector<std::uint8_t> buffer;
+      std::size_t next = 0;
+      const FetchResult result = client.fetch(
+          plan.offset, plan.size,
+          [&](std::uint64_t, std::span<const std::uint8_t> piece) {
+            std::lock_guard<std::mutex> guard(mutex_);
+            received_ += piece.size();
+            outstanding_ -= piece.size();
+            if (plan.head) {
+              head_.insert(head_.end(), piece.begin(), piece.end());
+              takeHead();
+            } else {
+              buffer.insert(buffer.end(), piece.begin(), piece.end());
+              deliver(plan, buffer, next);
+            }
+            return !stopping_ && !failed_;
+          },
+          &stopping_);
+      lock.lock();
+      outstanding_ -= plan.size - result.bytes;
+      --busy_;
+      for (std::size_t i = next; i < plan.items.size(); ++i)
+        in_flight_.erase(itemKey(plan.items[i]));
+      if (plan.head) head_in_flight_ = false;
+      if (result.status == FetchStatus::kOk) {
+        backoff_ = std::chrono::milliseconds(0);
+      } else if (!stopping_ && !failed_) {
+        ++failed_requests_;
+        error_ =
+            url_.text() + ": " + result.message +
+            (result.http_status > 0 ? " (HTTP " + std::to_string(result.http_status) + ")" : "");
+        if (plan.head && result.status == FetchStatus::kHttpStatus && result.http_status >= 400 &&
+            result.http_status < 500 && result.http_status != 408 && result.http_status != 429) {
+          fail(error_);
+        }
+        backoff_ = std::clamp(backoff_ * 2, std::chrono::milliseconds(100),
+                              std::chrono::milliseconds(2000));
+        retry_after_ = Clock::now() + backoff_;
+      }
+      if (model_ && result.file_size != 0 && result.file_size != model_->head().file_bytes) {
+        fail(url_.text() + ": the file is " + std::to_string(result.file_size) +
+             " bytes now, not the " + std::to_string(model_->head().file_bytes) +
+             " its head says: it changed");
+      }
+      cv_.notify_all();
+    }
+    clients_.erase(std::find(clients_.begin(), clients_.end(), &client));
+  }
+
+  HttpUrl url_;
+  StreamOptions options_;
+  std::vector<std::thread> threads_;
+  std::atomic<bool> stopping_{false};
+  std::mutex mutex_;
+  std::condition_variable cv_;
+  // Under mutex_:
+  std::vector<RangeClient*> clients_;
+  std::optional<ProgressiveModel> model_;
+  std::vector<std::uint8_t> head_;  // the file's first bytes, while the head is being read
+  std::uint64_t head_bytes_ = 0;
+  bool head_in_flight_ = false;
+  Camera view_;
+  std::unordered_set<std::uint64_t> in_flight_;
+  std::uint64_t received_ = 0, outstanding_ = 0;
+  int busy_ = 0;
+  bool failed_ = false;
+  std::string error_;
+  std::chrono::milliseconds backoff_{0};
+  Clock::time_point retry_after_{};
+  std::uint32_t requests_ = 0, failed_requests_ = 0, refused_items_ = 0;
+  std::vector<FetchItem> priority_, sorted_;
+  std::function<void(ProgressiveModel&, std::uint64_t)> on_accepted_;
+};
+
+ModelStream::ModelStream(const HttpUrl& url, const StreamOptions& options)
+    : impl_(std::make_unique<Impl>(url, options)) {}
+ModelStream::~ModelStream() = default;
+void ModelStream::start() { impl_->start(); }
+void ModelStream::stop() { impl_->stop(); }
+void ModelStream::setView(const Camera& camera) { impl_->setView(camera); }
+StreamStatus ModelStream::status() { return impl_->status(); }
+void ModelStream::withModel(const std::function<void(ProgressiveModel*)>& use) {
+  impl_->withModel(use);
+}
+void ModelStream::onAccepted(std::function<void(ProgressiveModel&, std::uint64_t)> callback) {
+  impl_->onAccepted(std::move(callback));
+}
+StreamStatus ModelStream::waitUntilSettled(std::chrono::milliseconds timeout) {
+  return impl_->waitUntilSettled(timeout);
+}
+
+}  // namespace octopoint::net
