@@ -181,11 +181,10 @@ std::vector<std::uint8_t> serializeLevels(const PreparedModel& model,
   std::vector<std::uint8_t> out(format::kMagic, format::kMagic + sizeof format::kMagic);
   putU16(out, chunked::kFormatVersion);
   out.push_back(static_cast<std::uint8_t>(level_count));
-  out.push_back(0);  // flags
-  putU32(out, model.cube_edge_um);
-  putU32(out, 0);
+  out.push_back(0);                                            // flags
+  putU64(out, std::uint64_t{model.cube_edge_um} * 1'000'000);  // picometres, as format version 2
   putU16(out, static_cast<std::uint32_t>(model.palette.size()));
-  putU16(out, 0);
+  putU16(out, 0);  // no normals
   putU32(out, static_cast<std::uint32_t>(head_bytes));
   putU64(out, file_bytes);
   putU32(out, static_cast<std::uint32_t>(base_level.nodes.size()));

@@ -13,6 +13,10 @@
 #include <string>
 #include <thread>
 
+#include "cli/arguments.h"
+#include "cli/error.h"
+#include "cli/numbers.h"
+#include "cli/run_tool.h"
 #include "net/model_server.h"
 
 namespace {
@@ -37,54 +41,35 @@ and headers pass 16 KiB or take more than 10 s, and clients that take no bytes f
 off. On any error prints one line on stderr and exits with status 1.
 )";
 
-struct UsageError : std::runtime_error {
-  using std::runtime_error::runtime_error;
-};
-
-std::uint64_t parseCount(const std::string& flag, const std::string& text, std::uint64_t low,
-                         std::uint64_t high) {
-  errno = 0;
-  char* end = nullptr;
-  const unsigned long long value = std::strtoull(text.c_str(), &end, 10);
-  if (text.empty() || text[0] == '-' || *end != '\0' || errno != 0 || value < low || value > high) {
-    throw UsageError(flag + ": '" + text + "' is not a whole number in " + std::to_string(low) +
-                     ".." + std::to_string(high));
-  }
-  return value;
-}
-
 octopoint::net::ServerOptions parseOptions(int argc, char** argv) {
-  octopoint::net::ServerOptions options;
+  using namespace octopoint;
+  net::ServerOptions options;
   bool have_root = false;
-  for (int i = 1; i < argc; ++i) {
-    const std::string arg = argv[i];
-    auto value = [&]() -> std::string {
-      if (i + 1 >= argc) throw UsageError(arg + ": missing value (see --help)");
-      return argv[++i];
-    };
-    if (arg == "-h" || arg == "--help") {
+  cli::ArgumentReader args(argc, argv);
+  while (args.next()) {
+    if (args.is("-h") || args.is("--help")) {
       std::cout << kUsage;
       std::exit(0);
-    } else if (arg == "--port") {
-      options.port = static_cast<int>(parseCount(arg, value(), 0, 65535));
-    } else if (arg == "--bind") {
-      options.bind_address = value();
-    } else if (arg == "--rate") {
-      options.rate_bytes_per_second = parseCount(arg, value(), 1, std::uint64_t{1} << 40);
-    } else if (arg == "--latency") {
-      options.latency_ms = static_cast<std::uint32_t>(parseCount(arg, value(), 0, 600'000));
-    } else if (arg == "--max-connections") {
-      options.max_connections = static_cast<int>(parseCount(arg, value(), 1, 1024));
-    } else if (!arg.empty() && arg[0] == '-') {
-      throw UsageError("unknown argument '" + arg + "' (see --help)");
-    } else if (!have_root) {
-      options.root = arg;
+    } else if (args.is("--port")) {
+      options.port = cli::parseInt(args.name(), args.value(), 0, 65535);
+    } else if (args.is("--bind")) {
+      options.bind_address = args.value();
+    } else if (args.is("--rate")) {
+      options.rate_bytes_per_second = static_cast<std::uint64_t>(
+          cli::parseInteger(args.name(), args.value(), 1, std::int64_t{1} << 40));
+    } else if (args.is("--latency")) {
+      options.latency_ms =
+          static_cast<std::uint32_t>(cli::parseInt(args.name(), args.value(), 0, 600'000));
+    } else if (args.is("--max-connections")) {
+      options.max_connections = cli::parseInt(args.name(), args.value(), 1, 1024);
+    } else if (args.isPlain() && !have_root) {
+      options.root = args.current();
       have_root = true;
     } else {
-      throw UsageError("unexpected argument '" + arg + "': one DIR only (see --help)");
+      args.refuseUnknown();
     }
   }
-  if (!have_root) throw UsageError("no DIR given (see --help)");
+  if (!have_root) throw cli::Error("no DIR given (see --help)");
   return options;
 }
 
@@ -99,7 +84,7 @@ int run(int argc, char** argv) {
 
   octopoint::net::ModelServer server(options);
   std::string error;
-  if (!server.bind(&error)) throw UsageError(error);
+  if (!server.bind(&error)) throw octopoint::cli::Error(error);
   std::printf(
       "octopoint-serve: serving %s at http://%s:%d/ (rate %s, latency %u ms, at most %d "
       "connections)\n",
@@ -127,12 +112,5 @@ int run(int argc, char** argv) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  try {
-    return run(argc, argv);
-  } catch (const UsageError& error) {
-    std::fprintf(stderr, "octopoint-serve: %s\n", error.what());
-  } catch (const std::exception& error) {
-    std::fprintf(stderr, "octopoint-serve: unexpected error: %s\n", error.what());
-  }
-  return 1;
+  return octopoint::cli::runTool("octopoint-serve", argc, argv, run);
 }

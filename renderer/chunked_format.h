@@ -22,11 +22,13 @@
 //   0      4    magic "OCTP"
 //   4      2    format version, 3
 //   6      1    level count L, 2..kMaxChunkedLevels
-//   7      1    flags, 0 (bit 0 is kept for per-leaf normals: see docs/format.md)
-//   8      4    cube edge in micrometres (the metric size of the model cube)
-//   12     4    reserved, 0 (room for a wider metric size)
+//   7      1    flags, as in version 2: bit 1 synthetic colour (the scan had none: the palette is a
+//                depth shade); bit 0 (per-leaf normals: a normal palette after the colour palette
+//                and each chunk's normal indices after its colour indices) is kept for a later
+//                reader and refused by this one; other bits 0
+//   8      8    cube edge in picometres (the metric size of the model cube; 0: not recorded)
 //   16     2    palette colour count P, 1..256
-//   18     2    reserved, 0
+//   18     2    normal count, 0 (until normals are read)
 //   20     4    head bytes H: from offset 0 to the end of the head CRC
 //   24     8    file bytes: the whole file
 //   32     4    base node bytes
@@ -76,15 +78,18 @@ inline constexpr std::size_t kHeadCrcBytes = 4;
 inline constexpr std::uint64_t kMaxChunks = std::uint64_t{1} << 22;
 inline constexpr std::uint64_t kMaxFileBytes = std::uint64_t{1} << 40;
 
+// Header flags (the same bits as format version 2).
+inline constexpr std::uint8_t kFlagNormals = 1u << 0;          // not read yet: refused
+inline constexpr std::uint8_t kFlagSyntheticColour = 1u << 1;  // the palette is a depth shade
+
 // Where each part of the fixed header is.
 namespace offset {
 inline constexpr std::size_t kVersion = 4;
 inline constexpr std::size_t kLevelCount = 6;
 inline constexpr std::size_t kFlags = 7;
 inline constexpr std::size_t kCubeEdge = 8;
-inline constexpr std::size_t kCubeEdgeReserved = 12;
 inline constexpr std::size_t kPaletteCount = 16;
-inline constexpr std::size_t kPaletteReserved = 18;
+inline constexpr std::size_t kNormalCount = 18;
 inline constexpr std::size_t kHeadBytes = 20;
 inline constexpr std::size_t kFileBytes = 24;
 inline constexpr std::size_t kBaseNodeBytes = 32;

@@ -109,12 +109,10 @@ std::optional<std::uint64_t> chunkedHeadBytes(std::span<const std::uint8_t> byte
     ok = fail(issue, ChunkedError::kUnsupportedVersion, off::kVersion);
   } else if (p[off::kLevelCount] < 2 || p[off::kLevelCount] > chunked::kMaxChunkedLevels) {
     ok = fail(issue, ChunkedError::kBadLevelCount, off::kLevelCount);
-  } else if (p[off::kFlags] != 0) {
-    ok = fail(issue, ChunkedError::kBadFlags, off::kFlags);
-  } else if (readU32(p + off::kCubeEdgeReserved) != 0) {
-    ok = fail(issue, ChunkedError::kBadReservedField, off::kCubeEdgeReserved);
-  } else if (readU16(p + off::kPaletteReserved) != 0) {
-    ok = fail(issue, ChunkedError::kBadReservedField, off::kPaletteReserved);
+  } else if ((p[off::kFlags] & ~chunked::kFlagSyntheticColour) != 0) {
+    ok = fail(issue, ChunkedError::kBadFlags, off::kFlags);  // normals, or a bit nobody knows
+  } else if (readU16(p + off::kNormalCount) != 0) {
+    ok = fail(issue, ChunkedError::kBadReservedField, off::kNormalCount);
   } else if (readU16(p + off::kPaletteCount) < 1 ||
              readU16(p + off::kPaletteCount) > format::kPaletteEntries) {
     ok = fail(issue, ChunkedError::kBadPaletteCount, off::kPaletteCount);
@@ -143,7 +141,8 @@ std::optional<ChunkedHead> parseChunkedHead(std::span<const std::uint8_t> bytes,
     return std::nullopt;
   }
   ChunkedHead head;
-  head.cube_edge_um = readU32(p + off::kCubeEdge);
+  head.cube_edge_pm = readU64(p + off::kCubeEdge);
+  head.flags = p[off::kFlags];
   head.palette_count = readU16(p + off::kPaletteCount);
   std::memcpy(head.palette_rgb.data(), p + off::kPalette,
               3 * static_cast<std::size_t>(head.palette_count));

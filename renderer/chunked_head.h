@@ -26,7 +26,8 @@ struct ChunkedLevel {
 };
 
 struct ChunkedHead {
-  std::uint32_t cube_edge_um = 0;
+  std::uint64_t cube_edge_pm = 0;  // picometres; 0: not recorded
+  std::uint8_t flags = 0;          // chunked::kFlagSyntheticColour or 0
   int palette_count = 0;
   std::array<std::uint8_t, 3 * format::kPaletteEntries> palette_rgb{};  // zero past the count
   std::uint64_t head_bytes = 0;

@@ -18,8 +18,11 @@ std::optional<ProgressiveModel> ProgressiveModel::fromHead(std::span<const std::
       static_cast<std::uint8_t>(model.head_.levels[0].depth), model.head_.base_nodes.data(),
       static_cast<std::uint32_t>(model.head_.base_nodes.size()), model.head_.base_leaves.data(),
       static_cast<std::uint32_t>(model.head_.base_leaves.size())};
+  // EmbeddedModel's metric size is in micrometres (format version 1): only what is shown, if
+  // anything.
   const EmbeddedModel base{"chunked model base",
-                           model.head_.cube_edge_um,
+                           static_cast<std::uint32_t>(std::min<std::uint64_t>(
+                               model.head_.cube_edge_pm / 1'000'000, UINT32_MAX)),
                            static_cast<std::uint16_t>(model.head_.palette_count),
                            model.base_palette_.data(),
                            1,
@@ -37,7 +40,8 @@ std::optional<ProgressiveModel> ProgressiveModel::fromHead(std::span<const std::
   base_slot.state = ChunkState::kHeld;
   base_slot.nodes = model.head_.base_nodes;
   base_slot.leaves = model.head_.base_leaves;
-  model.priority_scratch_.reserve(chunked::kMaxChunkedLevels);  // tables asked for before any is known
+  model.priority_scratch_.reserve(
+      chunked::kMaxChunkedLevels);  // tables asked for before any is known
   return model;
 }
 

@@ -23,9 +23,9 @@ using octopoint::testing::Bytes;
 // at tree level 1: region 0 refines the green voxel to its child 1 (z+; red); region 7 refines the
 // blue voxel to nothing (its first mask is 0), so it has no voxel at depth 3.
 const Bytes kGolden = {
-    // Fixed header: magic, version 3, 3 levels, flags 0, cube edge 1,000,000 um, reserved,
-    0x4f, 0x43, 0x54, 0x50, 0x03, 0x00, 0x03, 0x00, 0x40, 0x42, 0x0f, 0x00, 0x00, 0x00, 0x00, 0x00,
-    // 3 colours, reserved, head 116 bytes, file 183 bytes, base: 1 node byte, 2 leaves.
+    // Fixed header: magic, version 3, 3 levels, flags 0, cube edge 10^12 pm (1 m),
+    0x4f, 0x43, 0x54, 0x50, 0x03, 0x00, 0x03, 0x00, 0x00, 0x10, 0xa5, 0xd4, 0xe8, 0x00, 0x00, 0x00,
+    // 3 colours, no normals, head 116 bytes, file 183 bytes, base: 1 node byte, 2 leaves.
     0x03, 0x00, 0x00, 0x00, 0x74, 0x00, 0x00, 0x00, 0xb7, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00,
     0x01, 0x00, 0x00, 0x00, 0x02, 0x00, 0x00, 0x00, 0xff, 0x00, 0x00, 0x00, 0xff, 0x00, 0x00, 0x00,
     0xff,  // palette (offset 40)
@@ -38,7 +38,7 @@ const Bytes kGolden = {
     // Level 2: depth 3, region level 1, 2 chunks, table CRC 0x95944a8d, chunks at 180.
     0x03, 0x01, 0x00, 0x00, 0x02, 0x00, 0x00, 0x00, 0x8d, 0x4a, 0x94, 0x95, 0xb4, 0x00, 0x00, 0x00,
     0x00, 0x00, 0x00, 0x00, 0x81, 0x00, 0x02,  // base (offset 109): root mask, leaves red and blue
-    0xa1, 0x98, 0xa0, 0x2b,                    // head CRC-32 of bytes 0..111
+    0xda, 0xd2, 0xe7, 0xdc,                    // head CRC-32 of bytes 0..111
     // Record table of level 1 (offset 116): region 0, 4 bytes, 2 points, refines 2, CRC.
     0x00, 0x00, 0x00, 0x00, 0x04, 0x00, 0x00, 0x00, 0x02, 0x00, 0x00, 0x00, 0x02, 0x00, 0x00, 0x00,
     0x94, 0xf3, 0xd8, 0x8f,
@@ -97,7 +97,8 @@ TEST(ChunkedFormat, GoldenHeadReadsAsWrittenByHand) {
   const std::optional<ChunkedHead> head =
       parseChunkedHead(std::span(kGolden).first(kHeadBytes), &issue);
   ASSERT_TRUE(head.has_value()) << describe(issue.error);
-  EXPECT_EQ(head->cube_edge_um, 1'000'000u);
+  EXPECT_EQ(head->cube_edge_pm, 1'000'000'000'000u);
+  EXPECT_EQ(head->flags, 0);
   EXPECT_EQ(head->palette_count, 3);
   EXPECT_EQ(head->file_bytes, 183u);
   ASSERT_EQ(head->level_count, 3);
@@ -161,9 +162,11 @@ TEST(ChunkedFormat, EveryHeadRuleIsChecked) {
   EXPECT_EQ(headError(altered(4, {1})), ChunkedError::kUnsupportedVersion);
   EXPECT_EQ(headError(altered(6, {1})), ChunkedError::kBadLevelCount);
   EXPECT_EQ(headError(altered(6, {10})), ChunkedError::kBadLevelCount);
-  EXPECT_EQ(headError(altered(7, {1})), ChunkedError::kBadFlags);
-  EXPECT_EQ(headError(altered(12, {1})), ChunkedError::kBadReservedField);
-  EXPECT_EQ(headError(altered(18, {1})), ChunkedError::kBadReservedField);
+  EXPECT_EQ(headError(altered(7, {1})), ChunkedError::kBadFlags);  // normals: not read yet
+  EXPECT_EQ(headError(altered(7, {4})), ChunkedError::kBadFlags);
+  EXPECT_EQ(headError(altered(7, {2})), ChunkedError::kNone);  // synthetic colour
+  EXPECT_EQ(headError(altered(18, {1})),
+            ChunkedError::kBadReservedField);  // normals without the flag
   EXPECT_EQ(headError(altered(16, {0})), ChunkedError::kBadPaletteCount);
   EXPECT_EQ(headError(altered(20, {117})), ChunkedError::kBadHeadSize);
   EXPECT_EQ(headError(altered(29, {0x02})), ChunkedError::kBadFileSize);  // 2^41 bytes
