@@ -49,31 +49,39 @@ class StopSignal {
 
 // One connection's socket as cpp-httplib's Stream, with the limits cpp-httplib 0.11 does not have:
 // a request (line and headers; GET has no body) may take at most kMaxRequestBytes and must arrive
-// within kRequestSeconds of its first byte; a write waits at most kWriteTimeoutSeconds for room.
+// within ServerOptions::request_seconds of its first byte; a write waits at most
+// ServerOptions::write_timeout_seconds for room.
 // Reads are buffered for the connection's whole life, so pipelined requests are not lost.
 class GuardedStream : public httplib::Stream {
  public:
-  explicit GuardedStream(int sock) : sock_(sock) {}
+  GuardedStream(int sock, const ServerOptions& options)
+      : sock_(sock),
+        request_seconds_(options.request_seconds),
+        write_seconds_(options.write_timeout_seconds) {}
 
   // Waits up to `seconds` for the next request's first byte; false when none comes.
   bool awaitRequest(int seconds) {
     if (buffered_ == 0 && !poll(POLLIN, Clock::now() + std::chrono::seconds(seconds))) return false;
     request_bytes_ = 0;
-    request_deadline_ = Clock::now() + std::chrono::seconds(kRequestSeconds);
+    request_deadline_ = Clock::now() + std::chrono::seconds(request_seconds_);
     return true;
   }
 
   bool is_readable() const override { return buffered_ > 0 || pollNow(POLLIN); }
   bool is_writable() const override {
-    return poll(POLLOUT, Clock::now() + std::chrono::seconds(kWriteTimeoutSeconds));
+    return poll(POLLOUT, Clock::now() + std::chrono::seconds(write_seconds_));
   }
 
+  // Whether a read failed: too large, too slow, or the peer went away. The connection is then
+  // closed after the response cut-off requests get (if any), whatever keep-alive says.
+  bool broken() const { return broken_; }
+
   ssize_t read(char* ptr, size_t size) override {
-    if (request_bytes_ >= kMaxRequestBytes) return -1;  // the request is too large: drop it
+    if (request_bytes_ >= kMaxRequestBytes) return fail();  // the request is too large: drop it
     if (buffered_ == 0) {
-      if (!poll(POLLIN, request_deadline_)) return -1;  // too slow
+      if (!poll(POLLIN, request_deadline_)) return fail();  // too slow
       const ssize_t got = ::recv(sock_, buffer_, sizeof buffer_, 0);
-      if (got <= 0) return -1;
+      if (got <= 0) return fail();
       buffered_ = static_cast<std::size_t>(got);
       at_ = 0;
     }
@@ -97,6 +105,10 @@ class GuardedStream : public httplib::Stream {
   socket_t socket() const override { return sock_; }
 
  private:
+  ssize_t fail() {
+    broken_ = true;
+    return -1;
+  }
   bool poll(short events, Clock::time_point deadline) const {
     for (;;) {
       const auto left =
@@ -132,10 +144,13 @@ class GuardedStream : public httplib::Stream {
   }
 
   int sock_;
+  int request_seconds_;
+  int write_seconds_;
   char buffer_[4096];
   std::size_t at_ = 0, buffered_ = 0;
   std::size_t request_bytes_ = 0;
   Clock::time_point request_deadline_{};
+  bool broken_ = false;
 };
 
 // Tells process_and_close_socket, run inline by the pool, to turn the connection away.
@@ -225,11 +240,12 @@ class ModelServer::Impl : public httplib::Server {
           "HTTP/1.1 503 Service Unavailable\r\nContent-Length: 0\r\nConnection: close\r\n\r\n";
       ::send(sock, kBusy, sizeof kBusy - 1, MSG_NOSIGNAL | MSG_DONTWAIT);
     } else {
-      GuardedStream stream(sock);
+      GuardedStream stream(sock, options_);
       for (int request = 0; request < kRequestsPerConnection && !stop_.stopped(); ++request) {
-        if (!stream.awaitRequest(kKeepAliveSeconds)) break;
+        if (!stream.awaitRequest(options_.keep_alive_seconds)) break;
         bool connection_closed = false;
-        if (!process_request(stream, false, connection_closed, nullptr) || connection_closed) break;
+        const bool written = process_request(stream, false, connection_closed, nullptr);
+        if (!written || connection_closed || stream.broken()) break;
       }
     }
     ::shutdown(sock, SHUT_RDWR);
@@ -318,11 +334,11 @@ bool ModelServer::bind(std::string* error) {
     *error = impl_->options_.root.string() + ": not a folder";
     return false;
   }
-  impl_->set_read_timeout(kRequestSeconds);
-  impl_->set_write_timeout(kWriteTimeoutSeconds);
+  impl_->set_read_timeout(impl_->options_.request_seconds);
+  impl_->set_write_timeout(impl_->options_.write_timeout_seconds);
   impl_->set_payload_max_length(0);
   impl_->set_keep_alive_max_count(kRequestsPerConnection);  // what the Keep-Alive header announces
-  impl_->set_keep_alive_timeout(kKeepAliveSeconds);
+  impl_->set_keep_alive_timeout(impl_->options_.keep_alive_seconds);
   if (impl_->options_.port == 0) {
     impl_->port_ = impl_->bind_to_any_port(impl_->options_.bind_address);
   } else if (impl_->bind_to_port(impl_->options_.bind_address, impl_->options_.port)) {

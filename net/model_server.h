@@ -5,8 +5,9 @@
 // What it refuses (tests/net): any path outside the folder (net/served_path.h: "..", absolute
 // paths, percent-encoded forms, links pointing out); malformed, multiple or unsatisfiable ranges
 // (416); a request whose line and headers exceed kMaxRequestBytes, or that has not arrived whole
-// kRequestSeconds after its first byte (the connection is closed); a client that takes no bytes for
-// kWriteTimeoutSeconds; more than `max_connections` connections at once (503, closed at once).
+// `request_seconds` after its first byte (the connection is closed); a client that takes no bytes
+// for `write_timeout_seconds`; more than `max_connections` connections at once (503, closed at
+// once).
 // Each connection has its own thread from a fixed pool, so memory does not grow with load.
 
 #include <atomic>
@@ -27,12 +28,12 @@ struct ServerOptions {
   std::uint64_t rate_bytes_per_second = 0;  // 0: unshaped
   std::uint32_t latency_ms = 0;  // added before each response, as a slow link's round trip
   int max_connections = 64;
+  int request_seconds = 10;        // from a request's first byte to its end
+  int keep_alive_seconds = 5;      // idle time between requests
+  int write_timeout_seconds = 10;  // a client that takes no bytes for this long is cut off
 };
 
 inline constexpr std::size_t kMaxRequestBytes = 16 * 1024;  // request line and headers
-inline constexpr int kRequestSeconds = 10;       // from a request's first byte to its end
-inline constexpr int kKeepAliveSeconds = 5;      // idle time between requests
-inline constexpr int kWriteTimeoutSeconds = 10;  // a client that takes no bytes
 
 class ModelServer {
  public:

@@ -198,6 +198,7 @@ std::size_t ProgressiveModel::fetchPriority(const Camera& camera, bool include_i
     // Key, most significant first: invisible (1 bit), level (4 bits), 2^32 - 1 - on-screen area
     // (32 bits; a record table takes 0, before its level's chunks), index (27 bits).
     const std::uint64_t level_key = std::uint64_t(level) << 59;
+    if (levels_[at].table_unavailable) break;  // nothing of this level or finer will come
     if (!levels_[at].table_known) {
       priority_scratch_.push_back({level_key, recordTableItem(level)});
       continue;

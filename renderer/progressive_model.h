@@ -93,7 +93,8 @@ class ProgressiveModel {
 
   // Takes the bytes fetched for `item`. Record tables must come in level order (each is checked
   // against the one above it). Returns kNone when accepted (or already held); otherwise the chunk
-  // or table is refused, nothing else changes, and the issue's offset is a file offset.
+  // or table is refused, nothing else changes, and the issue's offset is a file offset. A table
+  // refused kMaxChunkAttempts times is given up, like a chunk: its level is never drawn.
   ChunkedIssue accept(const FetchItem& item, std::span<const std::uint8_t> bytes);
 
   // Takes every record table and chunk that lies whole in `bytes`, a piece of the file starting at
@@ -140,6 +141,8 @@ class ProgressiveModel {
   };
   struct Level {
     bool table_known = false;
+    std::uint8_t table_refusals = 0;  // kMaxChunkAttempts of them: the level is given up
+    bool table_unavailable = false;
     std::vector<ChunkRecord> records;
     std::vector<Slot> slots;
   };
