@@ -16,12 +16,15 @@ std::uint64_t itemKey(const FetchItem& item) {
          std::uint64_t(item.level) << 32 | item.index;
 }
 
-// One request: a byte range, and the tables and chunks lying whole in it, in file order.
+// One request: a byte range, and the tables and chunks lying whole in it, in file order. Bytes
+// the first request already brought (it reads past the head) are not asked for again: `known`
+// holds them, and the request starts after them.
 struct Plan {
   bool head = false;
   std::uint64_t offset = 0;
   std::uint64_t size = 0;
   std::vector<FetchItem> items;
+  std::vector<std::uint8_t> known;  // the bytes from `offset` on that are already here
 };
 
 constexpr std::size_t kPriorityWindow = 512;  // items considered per request
@@ -134,7 +137,7 @@ class ModelStream::Impl {
       if (head_bytes_ > 0) want = head_bytes_;
       want = std::max<std::uint64_t>(want, chunked::kFixedHeaderBytes);
       if (want <= head_.size()) want = head_.size() + 1;
-      plan = Plan{true, head_.size(), std::min(want - head_.size(), budget), {}};
+      plan = Plan{true, head_.size(), std::min(want - head_.size(), budget), {}, {}};
       head_in_flight_ = true;
       return true;
     }
@@ -155,7 +158,7 @@ class ModelStream::Impl {
     sorted_.assign(priority_.begin(), priority_.begin() + static_cast<std::ptrdiff_t>(count));
     std::sort(sorted_.begin(), sorted_.end(),
               [](const FetchItem& a, const FetchItem& b) { return a.offset < b.offset; });
-    plan = Plan{false, lead.offset, lead.bytes, {lead}};
+    plan = Plan{false, lead.offset, lead.bytes, {lead}, {}};
     std::uint64_t end = lead.offset + lead.bytes;
     for (auto it = std::upper_bound(
              sorted_.begin(), sorted_.end(), lead.offset,
@@ -174,6 +177,11 @@ class ModelStream::Impl {
       plan.items.pop_back();  // beyond the budget: not asked for
     }
     for (const FetchItem& item : plan.items) in_flight_.insert(itemKey(item));
+    if (plan.offset < head_.size()) {
+      const std::uint64_t known = std::min<std::uint64_t>(head_.size() - plan.offset, plan.size);
+      plan.known.assign(head_.begin() + static_cast<std::ptrdiff_t>(plan.offset),
+                        head_.begin() + static_cast<std::ptrdiff_t>(plan.offset + known));
+    }
     return true;
   }
 
@@ -238,14 +246,21 @@ class ModelStream::Impl {
         cv_.wait_for(lock, std::chrono::milliseconds(100));
         continue;
       }
+      std::vector<std::uint8_t> buffer = std::move(plan.known);
+      std::size_t next = 0;
+      if (!plan.head) deliver(plan, buffer, next);
+      const std::uint64_t fetch_offset = plan.offset + buffer.size();
+      const std::uint64_t fetch_size = plan.size - buffer.size();
+      if (fetch_size == 0) {
+        for (std::size_t i = next; i < plan.items.size(); ++i) in_flight_.erase(itemKey(plan.items[i]));
+        continue;
+      }
       ++busy_;
       ++requests_;
-      outstanding_ += plan.size;
+      outstanding_ += fetch_size;
       lock.unlock();
-      std::vector<std::uint8_t> buffer;
-      std::size_t next = 0;
       const FetchResult result = client.fetch(
-          plan.offset, plan.size,
+          fetch_offset, fetch_size,
           [&](std::uint64_t, std::span<const std::uint8_t> piece) {
             std::lock_guard<std::mutex> guard(mutex_);
             received_ += piece.size();
@@ -261,7 +276,7 @@ class ModelStream::Impl {
           },
           &stopping_);
       lock.lock();
-      outstanding_ -= plan.size - result.bytes;
+      outstanding_ -= fetch_size - result.bytes;
       --busy_;
       for (std::size_t i = next; i < plan.items.size(); ++i)
         in_flight_.erase(itemKey(plan.items[i]));

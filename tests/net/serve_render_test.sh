@@ -1,0 +1,32 @@
+#!/usr/bin/env bash
+# End to end through the real programs: a scan prepared --chunked, served by octopoint-serve on a
+# free port of 127.0.0.1, drawn by octopoint-render --url. The whole view equals the file's picture;
+# --bytes N gives the same picture every time; bad URLs fail with one line.
+# usage: serve_render_test.sh PREPARE SERVE RENDER SCAN WORKDIR
+set -euo pipefail
+prepare=$1 serve=$2 render=$3 scan=$4 work=$5
+source "$(dirname "$0")/net_script_lib.sh"
+rm -rf "$work" && mkdir -p "$work/models"
+"$prepare" "$scan" -o "$work/models" --name sphere --depths 4,5,6,7 --chunked >/dev/null
+start_octopoint_serve "$serve" "$work/models"
+trap 'stop_pid $SERVE_PID' EXIT
+url="http://127.0.0.1:$SERVE_PORT/sphere.oct"
+for view in "--yaw 0" "--yaw 30 --pitch -20" "--zoom 4 --yaw 10" "--zoom 0.5 --size 640x480"; do
+  # shellcheck disable=SC2086
+  "$render" --file "$work/models/sphere.oct" $view --no-fill -o "$work/file.png" >/dev/null
+  # shellcheck disable=SC2086
+  "$render" --url "$url" $view --no-fill -o "$work/url.png" >/dev/null
+  cmp -s "$work/file.png" "$work/url.png" || fail "--url and --file differ for view '$view'"
+done
+"$render" --url "$url" --bytes 3000 -o "$work/bytes_a.png" >/dev/null
+"$render" --url "$url" --bytes 3000 -o "$work/bytes_b.png" >/dev/null
+cmp -s "$work/bytes_a.png" "$work/bytes_b.png" || fail "--bytes 3000 drew two different pictures"
+"$render" --url "$url" -o "$work/all.png" >/dev/null
+cmp -s "$work/bytes_a.png" "$work/all.png" && fail "3000 bytes drew the complete picture"
+for bad in "http://127.0.0.1:$SERVE_PORT/nothere.oct|404" "http://127.0.0.1:$SERVE_PORT/../etc/passwd|403" \
+           "ftp://127.0.0.1/x.oct|not an http:// URL"; do
+  message=$("$render" --url "${bad%|*}" -o "$work/bad.png" 2>&1 >/dev/null) && fail "${bad%|*} did not fail"
+  case "$message" in *"${bad#*|}"*) ;; *) fail "${bad%|*}: '$message' does not say '${bad#*|}'";; esac
+  [ ! -e "$work/bad.png" ] || fail "${bad%|*} left a PNG"
+done
+echo "ok: octopoint-serve on port $SERVE_PORT, --url matches --file, --bytes is repeatable"
