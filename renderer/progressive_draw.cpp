@@ -12,6 +12,7 @@
 #include <algorithm>
 #include <cstdlib>
 
+#include "renderer/level_of_detail.h"
 #include "renderer/progressive_model.h"
 
 namespace octopoint {
@@ -61,27 +62,31 @@ struct PieceCounter {
 
 }  // namespace
 
-int ProgressiveModel::wantedDepth(const Camera& camera) const {
-  // Placeholder for issue 11's rule: the finest depth whose voxel edge, zoom * min(w, h) / 2^d
-  // pixels, is more than half a pixel. zoom is Q16.16, so the edge in Q16 is zoom.raw * min(w, h).
-  const std::int64_t edge_q16 =
-      static_cast<std::int64_t>(camera.zoom.raw()) * std::min(camera.width, camera.height);
-  int depth = 1;
-  while (depth < format::kMaxDepth && 2 * edge_q16 > (std::int64_t{1} << (depth + 1 + 16))) ++depth;
-  return depth;
+std::optional<int> ProgressiveModel::wantedDepth(const Camera& camera) const {
+  std::array<int, chunked::kMaxChunkedLevels> depths{};
+  for (int j = 0; j < head_.level_count; ++j) depths[static_cast<std::size_t>(j)] = levelDepth(j);
+  return autoDepth(std::span<const int>(depths.data(), static_cast<std::size_t>(head_.level_count)),
+                   camera);
 }
 
 bool ProgressiveModel::prepareFrame(const Camera& camera) {
-  const int wanted = wantedDepth(camera);
+  const std::optional<int> wanted = wantedDepth(camera);
+  if (!wanted) return false;
   int drawn = 0;
-  while (drawn + 1 < head_.level_count && levelDepth(drawn + 1) <= wanted) ++drawn;
+  while (drawn + 1 < head_.level_count && levelDepth(drawn + 1) <= *wanted) ++drawn;
   frame_.drawn_level = drawn;
-  frame_.wanted_depth = wanted;
+  frame_.wanted_depth = *wanted;
+  // Where a leaf's splat reaches from its position, over every depth that may be drawn.
+  frame_.splat_low = {0, 0, 0};
+  frame_.splat_high = {0, 0, 0};
   for (int j = 0; j <= drawn; ++j) {
-    if (buildFrameSetup(camera, levelDepth(j), kDefaultFractionBits,
-                        &frame_.full[static_cast<std::size_t>(j)]) != CameraError::kNone) {
+    FrameSetup& full = frame_.full[static_cast<std::size_t>(j)];
+    if (buildFrameSetup(camera, levelDepth(j), kDefaultFractionBits, &full) != CameraError::kNone)
       return false;
-    }
+    frame_.splat_low.x = std::min(frame_.splat_low.x, full.splat.offset_x);
+    frame_.splat_low.y = std::min(frame_.splat_low.y, full.splat.offset_y);
+    frame_.splat_high.x = std::max(frame_.splat_high.x, full.splat.offset_x + full.splat.span_x);
+    frame_.splat_high.y = std::max(frame_.splat_high.y, full.splat.offset_y + full.splat.span_y);
   }
   const FrameSetup& finest = frame_.full[static_cast<std::size_t>(drawn)];
   for (int j = 0; j <= drawn; ++j) {

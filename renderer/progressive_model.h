@@ -103,8 +103,9 @@ class ProgressiveModel {
   std::uint64_t acceptBytes(std::uint64_t file_offset, std::span<const std::uint8_t> bytes,
                             ChunkedIssue* issue);
 
-  // The depth this view needs: the depth-by-projected-size rule over the stored depths.
-  int wantedDepth(const Camera& camera) const;
+  // The depth this view draws: depth by projected size (renderer/level_of_detail.h, autoDepth)
+  // over the model's depths, the base's included; nullopt for a camera refused at every depth.
+  std::optional<int> wantedDepth(const Camera& camera) const;
 
   // What to fetch next for this view, most urgent first: the record tables it needs, then its
   // chunks, visible before invisible (these only with include_invisible), coarse before fine,
@@ -159,6 +160,7 @@ class ProgressiveModel {
     // level's, reaching down to the finest depth drawn: anything drawn for the region lies within.
     std::array<Vec3, chunked::kMaxChunkedLevels> own_reach{};
     std::array<Vec3, chunked::kMaxChunkedLevels> restricted_reach{};
+    Vec3 splat_low{}, splat_high{};  // the widest splat's first and last pixel from a leaf (x, y)
   };
   struct Priority {
     std::uint64_t key;  // visibility, level, screen area, order (see fetchPriority)

@@ -37,7 +37,7 @@ bool held(const ProgressiveModel& model, int level, std::uint32_t region) {
 Framebuffer referenceFrame(const ProgressiveModel& model,
                            const std::vector<prepare::PreparedLevel>& levels, const Camera& camera,
                            Variant variant) {
-  const int wanted = model.wantedDepth(camera);
+  const int wanted = *model.wantedDepth(camera);
   int drawn = 0;
   while (drawn + 1 < model.levelCount() && model.levelDepth(drawn + 1) <= wanted) ++drawn;
   FrameSetup finest;

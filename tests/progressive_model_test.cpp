@@ -124,7 +124,7 @@ TEST_P(ProgressiveModelTest, HoldingEverythingDrawsTheWholeModelStreamBitForBit)
   EXPECT_EQ(model->chunksIn(ChunkState::kHeld), octopoint::testing::allChunkItems(*model).size());
   for (const Camera& camera : cameras()) {
     ASSERT_TRUE(model->viewComplete(camera));
-    const int wanted = model->wantedDepth(camera);
+    const int wanted = *model->wantedDepth(camera);
     const auto level =
         std::find_if(f.streams.rbegin(), f.streams.rend(),
                      [&](const prepare::PreparedLevel& l) { return l.depth <= wanted; });
@@ -251,7 +251,7 @@ TEST_P(ProgressiveModelTest, FetchPriorityAsksForWhatTheViewNeedsCoarseFirstAndN
     std::vector<FetchItem> order;
     const std::uint64_t fetched = fetchUntilComplete(model, f.image, camera, &order);
     EXPECT_TRUE(model.viewComplete(camera));
-    const int wanted = model.wantedDepth(camera);
+    const int wanted = *model.wantedDepth(camera);
     int previous_level = 0;
     for (const FetchItem& item : order) {
       EXPECT_LE(model.levelDepth(item.level), wanted) << "never finer than the view needs";
