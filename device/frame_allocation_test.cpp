@@ -9,8 +9,10 @@
 #include <new>
 #include <vector>
 
+#include "fuzz/model_images.h"
 #include "models/registry.h"
 #include "renderer/level_of_detail.h"
+#include "renderer/progressive_model.h"
 #include "renderer/render.h"
 #include "renderer/rgb_renderer.h"
 #include "tests/dual_resolution_fixture.h"
@@ -167,6 +169,42 @@ TEST(FrameAllocation, RgbRendererAllocatesOnlyWhenTheSizeChanges) {
     ASSERT_EQ(renderer.draw(*model, camera, rgb, options), DrawError::kNone);
     EXPECT_EQ(g_allocation_count.load() - before, 0) << "yaw " << yaw_degrees;
   }
+}
+
+// A progressive model (renderer/progressive_model.h) holding part of a chunked file: asking what
+// to fetch, drawing, and asking whether the view is complete allocate nothing; only taking bytes
+// may.
+TEST(FrameAllocation, ProgressiveFramesAllocateNothing) {
+  const std::vector<std::uint8_t> image = fuzzing::chunkedImage(*models::defaultModel(), {5, 6, 7, 8}, {1024, 1500});
+  std::optional<ProgressiveModel> model =
+      progressiveModelFromPrefix(std::span(image).first(image.size() / 2), nullptr);  // half the file
+  ASSERT_TRUE(model.has_value());
+  Camera camera;
+  Framebuffer frame(camera.width, camera.height);
+  std::vector<std::uint8_t> rgb(static_cast<std::size_t>(camera.width * camera.height) * 3);
+  std::array<FetchItem, 64> wanted{};
+  int coarser = 0;
+  for (const VariantInfo& info : allVariants()) {
+    if (!isFixedPoint(info.variant)) continue;
+    for (const int zoom : {1, 4}) {
+      camera.zoom = Q16::fromRaw(zoom * Q16::kOneRaw);
+      camera.yaw = Angle::fromDegrees(30);
+      ProgressiveDrawStats stats;
+      const long before = g_allocation_count.load();
+      const std::size_t count = model->fetchPriority(camera, true, wanted);
+      frame.clear();
+      const bool drawn = model->draw(camera, info.variant, frame, &stats);
+      const bool complete = model->viewComplete(camera);
+      resolveToRgb(frame, model->baseModel(), Rgb{}, rgb);
+      const long allocations = g_allocation_count.load() - before;
+      EXPECT_TRUE(drawn);
+      EXPECT_FALSE(complete);
+      EXPECT_GT(count, 0u);
+      EXPECT_EQ(allocations, 0) << info.name << " at zoom " << zoom;
+      coarser += stats.coarser_pieces;
+    }
+  }
+  EXPECT_GT(coarser, 0);  // regions were drawn from coarser chunks
 }
 
 }  // namespace
