@@ -56,6 +56,7 @@ nor --file nor --url it draws the default model embedded in this binary.
   --roll DEG         turn about the viewing axis (default 0)
   --zoom X           magnification, 1/65536..32767 (default 1: the model cube spans the shorter
                      side)
+  --pan X,Y          move the picture X pixels right and Y down, each |.| <= 1e6 (default 0,0)
   --size WxH         framebuffer size in pixels, each side 1..8192 and at most 16777216 pixels
                      (4096x4096) in all (default 320x240)
   --depth N|auto     which of the model's depths to draw (default auto: depth by projected size,
@@ -130,6 +131,12 @@ Options parseOptions(int argc, char** argv) {
       options.camera.roll = cli::parseDegrees(args.name(), args.value());
     } else if (args.is("--zoom")) {
       options.camera.zoom = cli::parseZoom(args.name(), args.value());
+    } else if (args.is("--pan")) {
+      const std::string text = args.value();
+      const std::size_t comma = text.find(',');
+      if (comma == std::string::npos) throw cli::Error("--pan: " + cli::inQuotes(text) + " is not X,Y");
+      options.camera.pan_x_px = cli::parseInt(args.name(), text.substr(0, comma), -1'000'000, 1'000'000);
+      options.camera.pan_y_px = cli::parseInt(args.name(), text.substr(comma + 1), -1'000'000, 1'000'000);
     } else if (args.is("--size")) {
       const cli::FrameSize size =
           cli::parseFrameSize(args.name(), args.value(), 1, kMaxViewportSide, kMaxOutputPixels);

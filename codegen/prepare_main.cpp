@@ -73,6 +73,9 @@ and OUTDIR/NAME.oct (the same model as one binary file, for octopoint-render --f
                         coarse to fine, for streaming (octopoint-serve, docs/streaming.md). The
                         depths (and a scene's pruning) are as without it; pruned depths are made
                         nested (each holds the parents of the next finer one's voxels)
+  --chunk-bytes N       with --chunked: cut each depth into chunks of about N bytes or more on
+                        average, 256..16777216 (default 2048, measured in docs/streaming.md);
+                        larger when needed to keep the file within the version-1 size
   -h, --help            show this help
 
 Prints, per depth: voxels, node bytes, colour bytes and bits per point; with a scene also the
@@ -86,6 +89,7 @@ struct Arguments {
   std::string scene;
   octopoint::prepare::EmitOptions emit;
   bool chunked = false;
+  octopoint::prepare::ChunkedOptions chunking;
   std::vector<std::string> model_flags;  // flags a scene file replaces, to refuse them beside --scene
   octopoint::prepare::PrepareOptions options = defaultOptions();
 
@@ -138,6 +142,9 @@ std::optional<Arguments> parseArguments(int argc, char** argv) {
     } else if (reader.is("--chunked")) {
       reader.noValue();
       args.chunked = true;
+    } else if (reader.is("--chunk-bytes")) {
+      args.chunking.target_chunk_bytes =
+          static_cast<std::size_t>(octopoint::cli::parseInteger(reader.name(), reader.value(), 256, 1 << 24));
     } else if (reader.is("--depths")) {
       args.model_flags.push_back(reader.name());
       args.options.depths = parseDepths(reader.name(), reader.value());
@@ -235,7 +242,7 @@ int run(int argc, char** argv) {
   ChunkedLayout layout;
 
   std::vector<OutputFile> files = emitSources(model, args->emit);
-  const std::vector<std::uint8_t> image = args->chunked ? serializeChunkedModel(model, {}, &layout) : serializeModel(model);
+  const std::vector<std::uint8_t> image = args->chunked ? serializeChunkedModel(model, args->chunking, &layout) : serializeModel(model);
   files.push_back({model.name + ".oct", std::string(image.begin(), image.end())});
   octopoint::cli::writeFilesAtomically(args->output_dir, files);
 
@@ -268,8 +275,8 @@ int run(int argc, char** argv) {
   }
   if (args->chunked) {
     if (nesting_added > 0) std::printf("  nesting the pruned depths added %zu voxels\n", nesting_added);
-    std::printf("  chunked: base depth %d%s, head %zu bytes, directory %zu bytes\n", layout.base_depth,
-                layout.base_added ? " (added)" : "", layout.head_bytes, layout.table_bytes);
+    std::printf("  chunked: base depth %d%s, head %zu bytes, directory %zu bytes, chunks of %zu bytes or more on average\n", layout.base_depth,
+                layout.base_added ? " (added)" : "", layout.head_bytes, layout.table_bytes, layout.target_chunk_bytes);
     for (std::size_t j = 0; j < layout.depths.size(); ++j) {
       std::printf("  chunked depth %2d: %6zu chunks (regions at tree level %d), %9zu bytes\n", layout.depths[j],
                   layout.chunks[j], layout.region_levels[j], layout.chunk_bytes[j]);
