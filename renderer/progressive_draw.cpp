@@ -35,7 +35,7 @@ FrameSetup movedToLevel(const FrameSetup& full, int level, const FrameSetup& fin
 // Draws pieces into a frame, counting them.
 struct PieceDrawer {
   Variant variant;
-  Framebuffer& frame;
+  FrameView& frame;
   ProgressiveDrawStats stats;
 
   void operator()(FrameSetup& setup, const Vec3& centre, std::span<const std::uint8_t> nodes,
@@ -172,7 +172,7 @@ void ProgressiveModel::visitPieces(int level, std::uint32_t index, PieceVisitor&
   }
 }
 
-bool ProgressiveModel::draw(const Camera& camera, Variant variant, Framebuffer& frame,
+bool ProgressiveModel::draw(const Camera& camera, Variant variant, FrameView& frame,
                             ProgressiveDrawStats* stats) {
   if (!prepareFrame(camera)) return false;
   PieceDrawer drawer{variant, frame, {}};

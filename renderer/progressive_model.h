@@ -118,7 +118,7 @@ class ProgressiveModel {
 
   // Draws the view into `frame` (which it does not clear) with a fixed-point variant. Returns
   // false, drawing nothing, for a camera buildFrameSetup refuses. Allocates nothing.
-  bool draw(const Camera& camera, Variant variant, Framebuffer& frame,
+  bool draw(const Camera& camera, Variant variant, FrameView& frame,
             ProgressiveDrawStats* stats = nullptr);
 
   // Whether this view's picture is final: every visible region drawn at the depth the view needs.
