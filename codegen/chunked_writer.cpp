@@ -4,6 +4,7 @@
 #include <cassert>
 #include <string>
 
+#include "codegen/byte_output.h"
 #include "codegen/level_voxels.h"
 #include "codegen/octree_encoder.h"
 #include "codegen/prepare_error.h"
@@ -13,21 +14,6 @@
 
 namespace octopoint::prepare {
 namespace {
-
-void putU16(std::vector<std::uint8_t>& out, std::uint32_t value) {
-  out.push_back(static_cast<std::uint8_t>(value));
-  out.push_back(static_cast<std::uint8_t>(value >> 8));
-}
-
-void putU32(std::vector<std::uint8_t>& out, std::uint32_t value) {
-  putU16(out, value & 0xFFFFu);
-  putU16(out, value >> 16);
-}
-
-void putU64(std::vector<std::uint8_t>& out, std::uint64_t value) {
-  putU32(out, static_cast<std::uint32_t>(value));
-  putU32(out, static_cast<std::uint32_t>(value >> 32));
-}
 
 struct Chunk {
   std::uint32_t region = 0;

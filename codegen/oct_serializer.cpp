@@ -1,23 +1,11 @@
 // The `.oct` binary image of a prepared model, in the layout of renderer/model_format.h.
 #include <cassert>
 
+#include "codegen/byte_output.h"
 #include "codegen/model_writer.h"
 #include "renderer/model_format.h"
 
 namespace octopoint::prepare {
-namespace {
-
-void putU16(std::vector<std::uint8_t>& out, std::uint32_t value) {
-  out.push_back(static_cast<std::uint8_t>(value));
-  out.push_back(static_cast<std::uint8_t>(value >> 8));
-}
-
-void putU32(std::vector<std::uint8_t>& out, std::uint32_t value) {
-  putU16(out, value & 0xffffu);
-  putU16(out, value >> 16);
-}
-
-}  // namespace
 
 std::vector<std::uint8_t> serializeModel(const PreparedModel& model) {
   assert(!model.levels.empty() && model.levels.size() <= format::kMaxLevels);
