@@ -36,16 +36,18 @@ FrameSetup movedToLevel(const FrameSetup& full, int level, const FrameSetup& fin
 struct PieceDrawer {
   Variant variant;
   FrameView& frame;
+  const std::atomic<bool>* abort;
   ProgressiveDrawStats stats;
+  bool aborted = false;
 
   void operator()(FrameSetup& setup, const Vec3& centre, std::span<const std::uint8_t> nodes,
                   std::span<const std::uint8_t> leaves, bool coarser) {
     ++stats.pieces;
     stats.coarser_pieces += coarser;
-    if (nodes.empty()) return;  // a region whose voxels all vanished at this depth
+    if (nodes.empty() || aborted) return;  // an empty region: its voxels all vanished at this depth
     stats.points += leaves.size();
     setup.root = centre;
-    renderLevel(variant, LevelView{setup.depth, nodes, leaves}, setup, frame);
+    aborted = !renderLevel(variant, LevelView{setup.depth, nodes, leaves}, setup, frame, abort);
   }
 };
 
@@ -69,11 +71,12 @@ std::optional<int> ProgressiveModel::wantedDepth(const Camera& camera) const {
                    camera);
 }
 
-bool ProgressiveModel::prepareFrame(const Camera& camera) {
+bool ProgressiveModel::prepareFrame(const Camera& camera, int coarser_levels) {
   const std::optional<int> wanted = wantedDepth(camera);
   if (!wanted) return false;
   int drawn = 0;
   while (drawn + 1 < head_.level_count && levelDepth(drawn + 1) <= *wanted) ++drawn;
+  drawn = std::max(0, drawn - coarser_levels);
   frame_.drawn_level = drawn;
   frame_.wanted_depth = *wanted;
   // Where a leaf's splat reaches from its position, over every depth that may be drawn.
@@ -173,16 +176,17 @@ void ProgressiveModel::visitPieces(int level, std::uint32_t index, PieceVisitor&
 }
 
 bool ProgressiveModel::draw(const Camera& camera, Variant variant, FrameView& frame,
-                            ProgressiveDrawStats* stats) {
-  if (!prepareFrame(camera)) return false;
-  PieceDrawer drawer{variant, frame, {}};
+                            ProgressiveDrawStats* stats, const std::atomic<bool>* abort,
+                            int coarser_levels) {
+  if (!prepareFrame(camera, coarser_levels)) return false;
+  PieceDrawer drawer{variant, frame, abort, {}};
   visitPieces(0, 0, drawer);
   if (stats != nullptr) {
     *stats = drawer.stats;
     stats->wanted_depth = frame_.wanted_depth;
     stats->drawn_depth = levelDepth(frame_.drawn_level);
   }
-  return true;
+  return !drawer.aborted;
 }
 
 bool ProgressiveModel::viewComplete(const Camera& camera) {

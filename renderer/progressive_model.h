@@ -116,10 +116,15 @@ class ProgressiveModel {
   std::size_t fetchPriority(const Camera& camera, bool include_invisible, std::span<FetchItem> out,
                             std::size_t* total = nullptr);
 
-  // Draws the view into `frame` (which it does not clear) with a fixed-point variant. Returns
-  // false, drawing nothing, for a camera buildFrameSetup refuses. Allocates nothing.
+  // Draws the view into `frame` (which it does not clear) with a fixed-point variant (those that
+  // draw splats, renderer/render.h drawsSplats, fill coarse voxels' footprints). Returns false,
+  // drawing nothing, for a camera buildFrameSetup refuses, and false, the frame incomplete, when
+  // `abort` became true while drawing (polled as renderLevel polls it). `coarser_levels` draws that
+  // many stored levels coarser than the view needs (a quick frame while the view moves).
+  // Allocates nothing.
   bool draw(const Camera& camera, Variant variant, FrameView& frame,
-            ProgressiveDrawStats* stats = nullptr);
+            ProgressiveDrawStats* stats = nullptr, const std::atomic<bool>* abort = nullptr,
+            int coarser_levels = 0);
 
   // Whether this view's picture is final: every visible region drawn at the depth the view needs.
   bool viewComplete(const Camera& camera);
@@ -172,7 +177,7 @@ class ProgressiveModel {
   ChunkedIssue acceptChunk(int level, std::uint32_t index, std::span<const std::uint8_t> bytes);
   void linkChildren(int level, std::uint32_t index);
   void becomeHeld(int level, std::uint32_t index);
-  bool prepareFrame(const Camera& camera);
+  bool prepareFrame(const Camera& camera, int coarser_levels = 0);
   Vec3 regionCentre(int level, std::uint32_t region) const;
   Vec3 reachBelow(int tree_level) const;
   bool offScreen(const Vec3& centre, const Vec3& reach) const;

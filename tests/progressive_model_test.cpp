@@ -278,6 +278,34 @@ TEST_P(ProgressiveModelTest, AZoomedViewFetchesOnlyPartOfTheFile) {
   for (std::size_t i = 0; i < invisible; ++i) EXPECT_FALSE(rest[i].visible);
 }
 
+TEST_P(ProgressiveModelTest, ACoarserFrameDrawsTheLevelAboveAndAnAbortStopsIt) {
+  const Fixture& f = fixture();
+  std::optional<ProgressiveModel> model = progressiveModelFromPrefix(f.image, nullptr);
+  const Camera camera = makeCamera(20, -10, 1, 320, 240);
+  const int wanted = *model->wantedDepth(camera);
+  const auto level =
+      std::find_if(f.streams.rbegin(), f.streams.rend(),
+                   [&](const prepare::PreparedLevel& l) { return l.depth < wanted; });
+  ASSERT_NE(level, f.streams.rend());
+  FrameSetup setup;
+  ASSERT_EQ(buildFrameSetup(camera, level->depth, kDefaultFractionBits, &setup),
+            CameraError::kNone);
+  Framebuffer expected(camera.width, camera.height);
+  expected.clear();
+  renderLevel(Variant::kFixedFast, LevelView{level->depth, level->nodes, level->leaves}, setup,
+              expected);
+  Framebuffer coarser(camera.width, camera.height);
+  coarser.clear();
+  ProgressiveDrawStats stats;
+  ASSERT_TRUE(model->draw(camera, Variant::kFixedFast, coarser, &stats, nullptr, 1));
+  EXPECT_EQ(stats.drawn_depth, level->depth);
+  EXPECT_TRUE(octopoint::testing::sameFrame(coarser, expected));
+  const std::atomic<bool> abort{true};
+  Framebuffer aborted(camera.width, camera.height);
+  aborted.clear();
+  EXPECT_FALSE(model->draw(camera, Variant::kFixedFast, aborted, nullptr, &abort));
+}
+
 INSTANTIATE_TEST_SUITE_P(WholeAndThinned, ProgressiveModelTest, ::testing::Bool(),
                          [](const ::testing::TestParamInfo<bool>& param) {
                            return param.param ? "thinned" : "whole";
