@@ -18,6 +18,7 @@
 #include "app/image_quality.h"
 #include "app/model_source.h"
 #include "app/reference_render.h"
+#include "app/reference_surface.h"
 #include "app/stream_run.h"
 #include "cli/arguments.h"
 #include "cli/error.h"
@@ -36,7 +37,7 @@ constexpr const char* kUsage = R"(usage: octopoint-stream-measure SCAN --model M
 
 Streams the chunked model M.oct (prepared from SCAN with --chunked) from octopoint-serve over
 shaped links, one connection each, and records, per view and link: the time to the first picture,
-the PSNR of every frame against a render of the scan's own points, the time and bytes until the
+the PSNR of every frame against the scan's surface reference (docs/tradeoff.md), the time and bytes until the
 frame is within 1 dB of the complete frame's PSNR, and the time to download the whole file first.
 Writes OUTDIR/LABEL_runs.csv, LABEL_samples.csv, LABEL_psnr_bytes.png and LABEL_frames_VIEW.png.
 
@@ -221,6 +222,7 @@ int run(int argc, char** argv) {
   const prepare::Scan scan = prepare::loadScan(options.scan);
   const prepare::Scan points = prepare::modelPoints(scan, options.scan, options.prepare);
   const prepare::CubeFit fit = prepare::fitCube(points.positions, options.scan);
+  const tradeoff::ReferenceSurface surface = tradeoff::buildReferenceSurface(points);
 
   std::ofstream runs(options.output / (options.label + "_runs.csv"));
   runs << "model,view,link,file_bytes,depth,deepest_fetched,first_picture_s,complete_psnr_db,within_1db_s,"
@@ -232,7 +234,7 @@ int run(int argc, char** argv) {
   std::vector<double> curve_complete;
   for (const View& view : options.views) {
     cv::Mat mask;
-    const cv::Mat reference = tradeoff::renderReference(points, fit, view.camera, kBackground, &mask);
+    const cv::Mat reference = tradeoff::renderReference(surface, fit, view.camera, kBackground, &mask);
     const cv::Mat complete_frame = renderChunkedView(*whole->chunked, view.camera, defaultVariant(), false, kBackground, nullptr);
     const double complete_psnr = tradeoff::psnr(reference, complete_frame);
     for (std::size_t l = 0; l < options.links.size(); ++l) {
