@@ -68,18 +68,24 @@ std::uint32_t frameChecksum(const Framebuffer& frame) {
 DualResolutionRenderer::DualResolutionRenderer(const LevelView& coarse, const LevelView& fine,
                                                const Clock& clock, const InteractiveConfig& config,
                                                RenderFunction render)
-    : DualResolutionRenderer(nullptr, &coarse, &fine, clock, config, std::move(render)) {}
+    : DualResolutionRenderer(nullptr, &coarse, &fine, {}, clock, config, std::move(render)) {}
 
 DualResolutionRenderer::DualResolutionRenderer(const ModelView& model, const Clock& clock,
                                                const InteractiveConfig& config, RenderFunction render)
-    : DualResolutionRenderer(&model, nullptr, nullptr, clock, config, std::move(render)) {}
+    : DualResolutionRenderer(&model, nullptr, nullptr, {}, clock, config, std::move(render)) {}
+
+DualResolutionRenderer::DualResolutionRenderer(ViewDrawFunction draw_view, const Clock& clock,
+                                               const InteractiveConfig& config)
+    : DualResolutionRenderer(nullptr, nullptr, nullptr, std::move(draw_view), clock, config, {}) {}
 
 DualResolutionRenderer::DualResolutionRenderer(const ModelView* model, const LevelView* coarse,
-                                               const LevelView* fine, const Clock& clock,
-                                               const InteractiveConfig& config, RenderFunction render)
+                                               const LevelView* fine, ViewDrawFunction draw_view,
+                                               const Clock& clock, const InteractiveConfig& config,
+                                               RenderFunction render)
     : model_(model),
       coarse_level_(coarse),
       fine_level_(fine),
+      draw_view_(std::move(draw_view)),
       clock_(clock),
       config_(config),
       render_(std::move(render)),
@@ -193,6 +199,10 @@ void DualResolutionRenderer::handle(const ViewEvent& event) {
         changeView();
         break;
       }
+      case ViewEventKind::kContentChanged:
+        ++content_version_;  // fineLoop keeps the fine frame due when this moved while it drew
+        fine_due_ = true;
+        return;
       case ViewEventKind::kQuit:
         return;
     }
@@ -245,6 +255,16 @@ bool DualResolutionRenderer::draw(Slot& slot, Worker& worker, const std::atomic<
   camera.height = slot.info.height;
   FrameSetup setup;
   slot.frame.clear();
+  if (draw_view_) {
+    if (!draw_view_(slot.info.source, camera, slot.frame, abort, &slot.info.depth)) return false;
+    if (slot.info.view.fill && slot.info.depth > 0 &&
+        buildFrameSetup(camera, slot.info.depth, kDefaultFractionBits, &setup) == CameraError::kNone) {
+      worker.filler.fill(slot.frame, bridgeDepthLimit(setup));
+    }
+    slot.info.checksum = frameChecksum(slot.frame);
+    slot.info.render_us = steadyMicroseconds() - start_us;
+    return true;
+  }
   // The zoom is clamped, so the camera always fits; a refused camera would leave the frame empty.
   const LevelView* level = levelFor(slot.info.source, camera);
   if (level != nullptr && buildFrameSetup(camera, level->depth, kDefaultFractionBits, &setup) == CameraError::kNone) {
@@ -314,6 +334,7 @@ void DualResolutionRenderer::fineLoop() {
     Slot& slot = *fine_back_;
     beginFrame(slot, FrameSource::kFine);
     fine_busy_version_ = view_version_;
+    const std::uint64_t content_version = content_version_;
     ++status_.fine_started;
     status_.fine_busy = true;
     status_changed_.notify_all();
@@ -330,7 +351,7 @@ void DualResolutionRenderer::fineLoop() {
     } else if (slot.info.view_version != view_version_) {
       ++status_.stale_dropped;  // finished just as the view changed
     } else {
-      fine_due_ = false;
+      fine_due_ = content_version_ != content_version;  // more arrived while it drew: again
       handed_over = handOver(fine_back_);
     }
     status_changed_.notify_all();

@@ -110,6 +110,13 @@ struct RendererStatus {
 using RenderFunction = std::function<bool(const LevelView& level, const FrameSetup& setup,
                                           Framebuffer& frame, const std::atomic<bool>* abort)>;
 
+// Draws a whole view into a cleared frame, for models that are not one ModelView (a chunked model
+// streaming in: app/view_main.cpp with --url): the fine frame (`source` kFine) at the depth the
+// view needs, the coarse one at a coarser depth. Returns false when `abort` stopped it; sets
+// `depth` to the depth drawn (0: nothing).
+using ViewDrawFunction = std::function<bool(FrameSource source, const Camera& camera, Framebuffer& frame,
+                                            const std::atomic<bool>* abort, int* depth)>;
+
 // A cheap integrity stamp of a frame's colours and depths.
 std::uint32_t frameChecksum(const Framebuffer& frame);
 
@@ -123,6 +130,9 @@ class DualResolutionRenderer {
   // depth coarser (see the header comment).
   DualResolutionRenderer(const ModelView& model, const Clock& clock, const InteractiveConfig& config,
                          RenderFunction render = {});
+  // Whatever `draw_view` draws (see ViewDrawFunction), which must be safe to call from both render
+  // threads at once. A kContentChanged event makes the fine frame due again.
+  DualResolutionRenderer(ViewDrawFunction draw_view, const Clock& clock, const InteractiveConfig& config);
   ~DualResolutionRenderer();  // stops both threads (aborting H) and joins them
   DualResolutionRenderer(const DualResolutionRenderer&) = delete;
   DualResolutionRenderer& operator=(const DualResolutionRenderer&) = delete;
@@ -143,7 +153,8 @@ class DualResolutionRenderer {
 
  private:
   DualResolutionRenderer(const ModelView* model, const LevelView* coarse, const LevelView* fine,
-                         const Clock& clock, const InteractiveConfig& config, RenderFunction render);
+                         ViewDrawFunction draw_view, const Clock& clock, const InteractiveConfig& config,
+                         RenderFunction render);
 
   struct Slot {
     Framebuffer frame;
@@ -181,6 +192,7 @@ class DualResolutionRenderer {
   const ModelView* model_ = nullptr;  // when built from a model: levels by projected size
   const LevelView* coarse_level_ = nullptr;
   const LevelView* fine_level_ = nullptr;
+  ViewDrawFunction draw_view_;  // when built from one: draws whole views
   const Clock& clock_;
   const InteractiveConfig config_;
   RenderFunction render_;
@@ -201,6 +213,7 @@ class DualResolutionRenderer {
   bool fine_due_ = true;        // the fine frame of the current view is not on screen yet
   bool fine_requested_ = true;  // H should start (set by a tick)
   std::uint64_t fine_busy_version_ = 0;
+  std::uint64_t content_version_ = 0;  // bumped by kContentChanged
   std::atomic<bool> fine_abort_{false};
   std::unique_ptr<Slot> coarse_back_, fine_back_, handed_over_, front_;
   bool handed_over_is_new_ = false;

@@ -24,6 +24,8 @@ enum class ViewEventKind : std::uint8_t {
   kToggleFill,  // hole filling on/off
   kReset,       // back to the initial view
   kResize,      // the frame becomes width x height pixels (the window was resized)
+  kContentChanged,  // the model has more in it (a streamed chunk arrived): the fine frame is due
+                    // again, without changing the view or aborting a fine frame under way
   kQuit,        // the source has ended
 };
 

@@ -1,6 +1,7 @@
 # Issue 5's thread tests (included from tests/CMakeLists.txt): headless, scripted, real threads.
 # Also built by the tsan preset, which runs them under ThreadSanitizer (scripts/test-tsan).
-add_executable(interactive_tests dual_resolution_test.cpp dual_resolution_window_test.cpp)
+add_executable(interactive_tests dual_resolution_content_test.cpp dual_resolution_test.cpp
+               dual_resolution_window_test.cpp)
 target_link_libraries(interactive_tests PRIVATE octopoint_interactive octopoint_models GTest::gtest_main
                       octopoint_warnings)
 gtest_discover_tests(interactive_tests DISCOVERY_MODE PRE_TEST)
