@@ -3,5 +3,5 @@
 find_package(SDL2 REQUIRED)
 add_executable(octopoint-view view_main.cpp view_keys.cpp view_overlay.cpp view_window.cpp
                model_source.cpp)
-target_link_libraries(octopoint-view PRIVATE octopoint_cli octopoint_interactive octopoint_models opencv_core
-                      opencv_imgproc opencv_imgcodecs SDL2::SDL2 octopoint_warnings)
+target_link_libraries(octopoint-view PRIVATE octopoint_cli octopoint_interactive octopoint_models octopoint_net
+                      opencv_core opencv_imgproc opencv_imgcodecs SDL2::SDL2 octopoint_warnings)

@@ -24,15 +24,19 @@
 #include "cli/numbers.h"
 #include "cli/output_file.h"
 #include "cli/run_tool.h"
+#include "cli/text.h"
+#include "net/http_url.h"
+#include "net/model_stream.h"
 #include "renderer/dual_resolution_renderer.h"
 #include "renderer/model.h"
+#include "renderer/progressive_model.h"
 
 namespace {
 
 using namespace octopoint;
 
 constexpr const char* kUsage =
-    R"(usage: octopoint-view [--model NAME | --file M.oct] [--size WxH] [--scale N] [--speed DEG]
+    R"(usage: octopoint-view [--model NAME | --file M.oct | --url URL] [--size WxH] [--scale N] [--speed DEG]
 
 Shows an octopoint model in a resizable window. While an arrow key is held the view turns at a
 fixed speed, drawn coarse (thread L); once the last key is let go the fine frame is drawn at the
@@ -41,6 +45,10 @@ size.
 
   --model NAME   an embedded model (default: the default model)
   --file M.oct   a model file written by octopoint-prepare; it is validated first
+  --url URL      a chunked model (octopoint-prepare --chunked) on an HTTP server with Range
+                 requests, http://HOST:PORT/NAME.oct (octopoint-serve, nginx, ...): the view
+                 sharpens as its chunks arrive, those it shows first, coarse before fine; turning
+                 or zooming asks for what the new view needs (docs/streaming.md)
   --size WxH     the initial frame, each side 16..4096 (default 640x480)
   --scale N      each frame pixel is shown as NxN window pixels, 1..8 (default 1): the frame is
                  the window's size divided by N
@@ -55,7 +63,8 @@ constexpr const char* kUsageEnd =
 The overlay shows which thread drew the frame (L or H), its drawing time, the frame's size and
 zoom, and two rates over the last second: frames drawn (complete frames the render threads handed
 over) and frames shown (new frames put on the screen; a frame superseded before the window was
-drawn is drawn but not shown). `s` prints the frame's view as octopoint-render options.
+drawn is drawn but not shown). With --url it also shows the bytes received of the file's, and the
+chunks the view still waits for. `s` prints the frame's view as octopoint-render options.
 The window needs a display (DISPLAY or WAYLAND_DISPLAY); SDL_VIDEODRIVER picks another SDL video
 driver, e.g. kmsdrm on a panel without a window system.
 )";
@@ -68,6 +77,7 @@ constexpr int kMinFrameSide = 16;
 struct Options {
   std::string model_name;
   std::string model_file;
+  std::string url;
   int width = 640;
   int height = 480;
   int scale = 1;
@@ -79,7 +89,10 @@ double zoomOf(Q16 zoom) { return static_cast<double>(zoom.raw()) / Q16::kOneRaw;
 
 class Viewer {
  public:
-  Viewer(const Options& options, const ModelView& model);
+  // Shows `model`, or, when `model` is null, the chunked model `stream` brings in.
+  Viewer(const Options& options, const ModelView* model, net::ModelStream* stream);
+  // From the stream's thread: more of the model arrived.
+  void contentChanged();
   // Shows the window until the user quits.
   void run();
   // The key table; `viewer` may be null when only the help text is wanted.
@@ -88,18 +101,22 @@ class Viewer {
  private:
   void handle(const WindowEvent& event);
   void handleKey(const WindowEvent& event);
-  void send(ViewEventKind kind, std::int64_t now_us) { renderer_.handle({now_us, kind}); }
+  void send(ViewEventKind kind, std::int64_t now_us) { renderer_->handle({now_us, kind}); }
   void resizeFrame(int window_width, int window_height);
   // Puts the newest frame on the screen when it, the window or the overlay's text changed.
   void show();
   void save();
   void defaultOverlay(OverlayLines& lines) const;
+  void streamOverlay(OverlayLines& lines);
+  // Tells the stream which view to fetch for: the one on screen, as it changes.
+  void followView();
 
   const Options options_;
-  const ModelView& model_;
+  const ModelView* model_;
+  net::ModelStream* stream_;
   const SteadyClock clock_;
   ViewWindow window_;  // before renderer_: its threads wake the window until they are joined
-  DualResolutionRenderer renderer_;
+  std::unique_ptr<DualResolutionRenderer> renderer_;
   KeyBindings keys_;
   Overlay overlay_;
   // Turns a frame into RGB888 for the screen and for `s` (default: its palette colours).
@@ -118,6 +135,7 @@ class Viewer {
   RateCounter drawn_rate_;
   RateCounter shown_rate_;
   int saved_ = 0;
+  std::optional<Camera> followed_view_;  // the view the stream fetches for
 };
 
 InteractiveConfig interactiveConfig(const Options& options, ViewWindow& window) {
@@ -129,17 +147,95 @@ InteractiveConfig interactiveConfig(const Options& options, ViewWindow& window) 
   return config;
 }
 
-Viewer::Viewer(const Options& options, const ModelView& model)
+// Draws the views of a chunked model as it streams in: the fine frame at the depth the view needs,
+// the coarse one a stored depth coarser; an empty frame until the head has arrived. Both render
+// threads take the stream's lock to draw (the model is not thread-safe).
+ViewDrawFunction streamDrawer(net::ModelStream& stream) {
+  const Variant variant = InteractiveConfig{}.variant;
+  return [&stream, variant](FrameSource source, const Camera& camera, Framebuffer& frame,
+                            const std::atomic<bool>* abort, int* depth) {
+    bool complete = true;
+    stream.withModel([&](ProgressiveModel* model) {
+      if (model == nullptr) return;
+      ProgressiveDrawStats stats;
+      const int coarser = source == FrameSource::kCoarse ? 1 : 0;
+      complete = model->draw(camera, variant, frame, &stats, abort, coarser) || abort == nullptr ||
+                 !abort->load();
+      *depth = stats.drawn_depth;
+    });
+    return complete;
+  };
+}
+
+Viewer::Viewer(const Options& options, const ModelView* model, net::ModelStream* stream)
     : options_(options),
       model_(model),
+      stream_(stream),
       window_(kWindowTitle, options.width * options.scale, options.height * options.scale,
               kMinFrameSide * options.scale, kMinFrameSide * options.scale),
-      renderer_(model, clock_, interactiveConfig(options, window_)),
+      renderer_(model != nullptr
+                    ? std::make_unique<DualResolutionRenderer>(*model, clock_,
+                                                               interactiveConfig(options, window_))
+                    : std::make_unique<DualResolutionRenderer>(
+                          streamDrawer(*stream), clock_, interactiveConfig(options, window_))),
       keys_(keyTable(this)),
       resolve_([this](const Framebuffer& frame, const FrameInfo&, std::span<std::uint8_t> rgb) {
-        resolveToRgb(frame, model_, kBackground, rgb);
+        if (model_ != nullptr) {
+          resolveToRgb(frame, *model_, kBackground, rgb);
+          return;
+        }
+        stream_->withModel([&](ProgressiveModel* chunked) {
+          if (chunked != nullptr) {
+            resolveToRgb(frame, chunked->baseModel(), kBackground, rgb);
+            return;
+          }
+          for (std::size_t i = 0; i + 2 < rgb.size(); i += 3) {
+            rgb[i] = kBackground.r, rgb[i + 1] = kBackground.g, rgb[i + 2] = kBackground.b;
+          }
+        });
       }) {
   overlay_.add([this](OverlayLines& lines) { defaultOverlay(lines); });
+  if (stream_ != nullptr) overlay_.add([this](OverlayLines& lines) { streamOverlay(lines); });
+}
+
+void Viewer::contentChanged() {
+  renderer_->handle({clock_.nowMicroseconds(), ViewEventKind::kContentChanged});
+  window_.wake();  // the overlay's byte count moved too
+}
+
+void Viewer::followView() {
+  if (stream_ == nullptr) return;
+  const FrameInfo latest = renderer_->status().latest;
+  if (latest.generation == 0) return;
+  Camera camera;
+  camera.yaw = latest.view.yaw;
+  camera.pitch = latest.view.pitch;
+  camera.zoom = latest.view.zoom;
+  camera.width = latest.width;
+  camera.height = latest.height;
+  const bool same =
+      followed_view_ && followed_view_->yaw == camera.yaw &&
+      followed_view_->pitch == camera.pitch && followed_view_->zoom.raw() == camera.zoom.raw() &&
+      followed_view_->width == camera.width && followed_view_->height == camera.height;
+  if (same) return;
+  followed_view_ = camera;
+  stream_->setView(camera);
+}
+
+void Viewer::streamOverlay(OverlayLines& lines) {
+  const net::StreamStatus status = stream_->status();
+  char line[160];
+  if (!status.head_known) {
+    std::snprintf(line, sizeof line, "waiting for the head: %llu bytes%s%s",
+                  static_cast<unsigned long long>(status.bytes_received),
+                  status.error.empty() ? "" : "  ", status.error.c_str());
+  } else {
+    std::snprintf(line, sizeof line, "%llu of %llu kB received  %u chunks pending%s",
+                  static_cast<unsigned long long>(status.bytes_received / 1000),
+                  static_cast<unsigned long long>(status.file_bytes / 1000), status.chunks_pending,
+                  status.view_complete ? "  view complete" : "");
+  }
+  lines.emplace_back(line);
 }
 
 KeyBindings Viewer::keyTable(Viewer* viewer) {
@@ -186,7 +282,10 @@ void Viewer::run() {
       resizeFrame(pending_window_size_->first, pending_window_size_->second);
       pending_window_size_.reset();
     }
-    if (!quit_) show();
+    if (!quit_) {
+      show();
+      followView();
+    }
   }
 }
 
@@ -210,7 +309,7 @@ void Viewer::handle(const WindowEvent& event) {
       break;
     case WindowEvent::Kind::kFocusLost:  // their releases will go elsewhere: let them go now
       for (int key = 0; key < kNavigationKeyCount; ++key) {
-        renderer_.handle({now_us, ViewEventKind::kRelease, static_cast<NavigationKey>(key)});
+        renderer_->handle({now_us, ViewEventKind::kRelease, static_cast<NavigationKey>(key)});
       }
       break;
     case WindowEvent::Kind::kWake:  // a new frame: show() takes it
@@ -228,7 +327,7 @@ void Viewer::handleKey(const WindowEvent& event) {
   const bool down = event.kind == WindowEvent::Kind::kKeyDown;
   if (binding->navigation) {
     if (event.repeat) return;  // still held: the renderer turns the view by time, not by repeats
-    renderer_.handle(
+    renderer_->handle(
         {now_us, down ? ViewEventKind::kPress : ViewEventKind::kRelease, *binding->navigation});
   } else if (down && (!event.repeat || binding->repeats)) {
     binding->action(now_us);
@@ -241,13 +340,13 @@ void Viewer::resizeFrame(int window_width, int window_height) {
   event.kind = ViewEventKind::kResize;
   event.width = std::clamp(window_width / options_.scale, 1, kMaxFrameSide);
   event.height = std::clamp(window_height / options_.scale, 1, kMaxFrameSide);
-  renderer_.handle(event);
+  renderer_->handle(event);
   compose_again_ = true;
 }
 
 void Viewer::show() {
   FrameInfo info;
-  const Framebuffer* frame = renderer_.acquireLatest(&info);
+  const Framebuffer* frame = renderer_->acquireLatest(&info);
   const std::int64_t now_us = clock_.nowMicroseconds();
   if (frame == nullptr) return;
   const bool new_frame = info.generation != shown_info_.generation;
@@ -259,7 +358,7 @@ void Viewer::show() {
   }
   if (new_frame) ++frames_shown_;
   shown_info_ = info;
-  drawn_rate_.record(now_us, renderer_.status().latest.generation);
+  drawn_rate_.record(now_us, renderer_->status().latest.generation);
   shown_rate_.record(now_us, frames_shown_);
   OverlayLines lines = overlay_.lines();
   if (!compose_again_ && lines == shown_lines_) return;
@@ -334,6 +433,8 @@ Options parseOptions(int argc, char** argv) {
       options.model_name = args.value();
     } else if (args.is("--file")) {
       options.model_file = args.value();
+    } else if (args.is("--url")) {
+      options.url = args.value();
     } else if (args.is("--size")) {
       const cli::FrameSize size =
           cli::parseFrameSize(args.name(), args.value(), kMinFrameSide, kMaxFrameSide);
@@ -347,16 +448,34 @@ Options parseOptions(int argc, char** argv) {
       args.refuseUnknown();
     }
   }
-  if (!options.model_name.empty() && !options.model_file.empty()) {
-    throw cli::Error("give --model or --file, not both");
+  if (!options.model_name.empty() + !options.model_file.empty() + !options.url.empty() > 1) {
+    throw cli::Error("give one of --model, --file and --url");
   }
   return options;
 }
 
 int run(int argc, char** argv) {
   const Options options = parseOptions(argc, argv);
+  if (!options.url.empty()) {
+    std::string why;
+    const std::optional<net::HttpUrl> url = net::parseHttpUrl(options.url, &why);
+    if (!url) throw cli::Error("--url: " + cli::inQuotes(options.url) + ": " + why);
+    net::ModelStream stream(*url, net::StreamOptions{});  // prefetches the rest once the view is in
+    Camera first_view;  // the renderer's initial view, until its first frame says otherwise
+    first_view.width = options.width;
+    first_view.height = options.height;
+    stream.setView(first_view);
+    Viewer viewer(options, nullptr, &stream);
+    // Set before the stream starts, so that no accepted chunk goes unseen by the renderer.
+    stream.onAccepted([&viewer](ProgressiveModel&, std::uint64_t) { viewer.contentChanged(); });
+    stream.start();
+    viewer.run();
+    stream.onAccepted({});
+    stream.stop();
+    return 0;
+  }
   const std::unique_ptr<LoadedModel> loaded = loadModel(options.model_name, options.model_file);
-  Viewer viewer(options, *loaded->view);
+  Viewer viewer(options, &*loaded->view, nullptr);
   viewer.run();
   return 0;
 }

@@ -1,0 +1,60 @@
+#!/usr/bin/env bash
+# octopoint-view --url in a real X server (Xvfb), against octopoint-serve shaped to a slow link: the
+# window shows a coarse picture early, and once the view's chunks are in, the fine frame is the
+# file's own picture (pixel for pixel what octopoint-render --file draws). Frames are read with the
+# viewer's `s` key (xdotool). Exits 77 (skipped) without Xvfb or xdotool (scripts/viewer-smoke and
+# scripts/test install them).
+# usage: viewer_url_smoke.sh PREPARE SERVE VIEW RENDER SCAN WORKDIR
+set -euo pipefail
+prepare=$1 serve=$2 viewer=$3 render=$4 scan=$5 work=$6
+source "$(dirname "$0")/net_script_lib.sh"
+for tool in Xvfb xdotool compare; do
+  command -v "$tool" >/dev/null || { echo "$tool is not installed: skipped"; exit 77; }
+done
+rm -rf "$work" && mkdir -p "$work/models" "$work/run"
+"$prepare" "$scan" -o "$work/models" --name sphere --depths 4,5,6,7 --chunked >/dev/null
+start_octopoint_serve "$serve" "$work/models" --rate 12000 --latency 100
+xvfb_pid="" viewer_pid=""
+cleanup() {
+  [ -n "$viewer_pid" ] && stop_pid "$viewer_pid"
+  [ -n "$xvfb_pid" ] && stop_pid "$xvfb_pid"
+  stop_pid "$SERVE_PID"
+}
+trap cleanup EXIT
+Xvfb -displayfd 3 -screen 0 800x600x24 -nolisten tcp 3>"$work/display" 2>"$work/xvfb.log" &
+xvfb_pid=$!
+for _ in $(seq 100); do [ -s "$work/display" ] && break; sleep 0.05; done
+[ -s "$work/display" ] || fail "Xvfb did not start: $(cat "$work/xvfb.log")"
+export DISPLAY=:$(cat "$work/display")
+(cd "$work/run" && exec "$viewer" --url "http://127.0.0.1:$SERVE_PORT/sphere.oct" --size 320x240) >"$work/viewer.log" 2>&1 &
+viewer_pid=$!
+window=""
+for _ in $(seq 100); do
+  window=$(xdotool search --onlyvisible --name '^octopoint-view$' 2>/dev/null | head -1) && [ -n "$window" ] && break
+  kill -0 "$viewer_pid" 2>/dev/null || fail "the viewer exited: $(cat "$work/viewer.log")"
+  sleep 0.05
+done
+[ -n "$window" ] || fail "no viewer window appeared"
+xdotool windowfocus --sync "$window"
+save() {  # presses s and waits for the viewer to say it saved frame $1
+  xdotool key s
+  for _ in $(seq 100); do
+    grep -q "^saved octopoint-view-$1.png " "$work/viewer.log" && return 0
+    sleep 0.02
+  done
+  fail "s saved nothing: $(cat "$work/viewer.log")"
+}
+# The file is about 49 kB at 12 kB/s: a frame soon after the head, and one after it all arrived.
+for _ in $(seq 50); do save 1; [ -s "$work/run/octopoint-view-1.png" ] && break; done
+sleep 7
+save 2
+xdotool key q
+for _ in $(seq 100); do kill -0 "$viewer_pid" 2>/dev/null || break; sleep 0.05; done
+wait "$viewer_pid" || fail "the viewer exited with an error: $(cat "$work/viewer.log")"
+viewer_pid=""
+"$render" --file "$work/models/sphere.oct" --size 320x240 -o "$work/file.png" >/dev/null
+early=$(compare -metric AE "$work/run/octopoint-view-1.png" "$work/file.png" null: 2>&1 || true)
+final=$(compare -metric AE "$work/run/octopoint-view-2.png" "$work/file.png" null: 2>&1 || true)
+[ "$final" = 0 ] || fail "after the stream, the viewer's frame differs from the file's in $final pixels"
+[ "$early" != 0 ] || fail "the early frame is already the final picture: the stream was not seen"
+echo "ok: the early frame differs from the file's picture in $early pixels, the final one in none"
