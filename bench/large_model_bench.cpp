@@ -8,7 +8,6 @@
 #include <cstdio>
 #include <cstring>
 #include <fstream>
-#include <iterator>
 #include <memory>
 #include <optional>
 #include <string>
@@ -34,9 +33,14 @@ Camera screen(int zoom) {
   return camera;
 }
 
-std::optional<ProgressiveModel> loadChunked(const std::string& path, std::vector<std::uint8_t>& bytes) {
-  std::ifstream in(path, std::ios::binary);
-  bytes.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+std::optional<ProgressiveModel> loadChunked(const std::string& path,
+                                            std::vector<std::uint8_t>& bytes) {
+  std::ifstream in(path, std::ios::binary | std::ios::ate);
+  if (!in) return std::nullopt;
+  bytes.resize(static_cast<std::size_t>(in.tellg()));
+  in.seekg(0);
+  if (!in.read(reinterpret_cast<char*>(bytes.data()), static_cast<std::streamsize>(bytes.size())))
+    return std::nullopt;
   ChunkedIssue issue;
   std::optional<ProgressiveModel> model = progressiveModelFromPrefix(bytes, &issue);
   if (model && issue.error != ChunkedError::kNone) model.reset();
@@ -68,7 +72,9 @@ void drawProgressive(benchmark::State& state, const std::string& path) {
 }
 
 void BM_LargeModel(benchmark::State& state) { drawProgressive(state, g_large_path); }
-void BM_Depth8ModelChunked(benchmark::State& state) { drawProgressive(state, g_default_chunked_path); }
+void BM_Depth8ModelChunked(benchmark::State& state) {
+  drawProgressive(state, g_default_chunked_path);
+}
 
 void BM_Depth8Model(benchmark::State& state) {
   ModelIssue issue;
