@@ -7,12 +7,11 @@
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <opencv2/imgcodecs.hpp>
+#include <opencv2/imgproc.hpp>
 #include <sstream>
 #include <string>
 #include <vector>
-
-#include <opencv2/imgcodecs.hpp>
-#include <opencv2/imgproc.hpp>
 
 #include "app/chunked_render.h"
 #include "app/image_quality.h"
@@ -33,7 +32,8 @@ namespace {
 namespace fs = std::filesystem;
 using namespace octopoint;
 
-constexpr const char* kUsage = R"(usage: octopoint-stream-measure SCAN --model M.oct --serve OCTOPOINT-SERVE [options] -o OUTDIR
+constexpr const char* kUsage =
+    R"(usage: octopoint-stream-measure SCAN --model M.oct --serve OCTOPOINT-SERVE [options] -o OUTDIR
 
 Streams the chunked model M.oct (prepared from SCAN with --chunked) from octopoint-serve over
 shaped links, one connection each, and records, per view and link: the time to the first picture,
@@ -80,8 +80,10 @@ std::vector<std::string> split(const std::string& text, char separator) {
 
 std::string linkName(std::uint64_t rate, std::uint32_t latency) {
   char text[64];
-  if (rate >= 1'000'000) std::snprintf(text, sizeof text, "%.0f MB/s + %u ms", rate / 1e6, latency);
-  else std::snprintf(text, sizeof text, "%.0f kB/s + %u ms", rate / 1e3, latency);
+  if (rate >= 1'000'000)
+    std::snprintf(text, sizeof text, "%.0f MB/s + %u ms", rate / 1e6, latency);
+  else
+    std::snprintf(text, sizeof text, "%.0f kB/s + %u ms", rate / 1e3, latency);
   return text;
 }
 
@@ -103,7 +105,8 @@ Options parseOptions(int argc, char** argv) {
     } else if (args.is("--crop")) {
       options.prepare.crop = prepare::parseCropBox(args.name(), args.value());
     } else if (args.is("--size")) {
-      const cli::FrameSize size = cli::parseFrameSize(args.name(), args.value(), 1, 4096, 4096 * 4096);
+      const cli::FrameSize size =
+          cli::parseFrameSize(args.name(), args.value(), 1, 4096, 4096 * 4096);
       options.camera.width = size.width;
       options.camera.height = size.height;
     } else if (args.is("--view")) {
@@ -117,8 +120,10 @@ Options parseOptions(int argc, char** argv) {
     } else if (args.is("--link")) {
       const std::vector<std::string> parts = split(args.value(), ':');
       if (parts.size() != 2) throw cli::Error("--link: expected RATE:LATENCY");
-      const auto rate = static_cast<std::uint64_t>(cli::parseInteger(args.name(), parts[0], 1, std::int64_t{1} << 40));
-      const auto latency = static_cast<std::uint32_t>(cli::parseInt(args.name(), parts[1], 0, 600'000));
+      const auto rate = static_cast<std::uint64_t>(
+          cli::parseInteger(args.name(), parts[0], 1, std::int64_t{1} << 40));
+      const auto latency =
+          static_cast<std::uint32_t>(cli::parseInt(args.name(), parts[1], 0, 600'000));
       options.links.push_back({linkName(rate, latency), rate, latency});
     } else if (args.is("--limit")) {
       options.limit_seconds = cli::parseInt(args.name(), args.value(), 1, 86400);
@@ -144,7 +149,8 @@ Options parseOptions(int argc, char** argv) {
     view.camera.height = options.camera.height;
   }
   if (options.links.empty()) {
-    for (const auto& [rate, latency] : {std::pair<std::uint64_t, std::uint32_t>{5000, 500}, {50'000, 100}, {1'000'000, 20}}) {
+    for (const auto& [rate, latency] :
+         {std::pair<std::uint64_t, std::uint32_t>{5000, 500}, {50'000, 100}, {1'000'000, 20}}) {
       options.links.push_back({linkName(rate, latency), rate, latency});
     }
   }
@@ -175,24 +181,31 @@ cv::Mat plotPsnrAgainstBytes(const std::vector<std::pair<std::string, StreamRunR
   low = std::floor(low - 1), high = std::ceil(high + 1);
   const double min_bytes = 1000, max_bytes = static_cast<double>(file_bytes) * 1.2;
   const auto x_of = [&](double bytes) {
-    return left + static_cast<int>((std::log10(std::max(bytes, min_bytes)) - std::log10(min_bytes)) /
-                                   (std::log10(max_bytes) - std::log10(min_bytes)) * (width - left - right));
+    return left + static_cast<int>(
+                      (std::log10(std::max(bytes, min_bytes)) - std::log10(min_bytes)) /
+                      (std::log10(max_bytes) - std::log10(min_bytes)) * (width - left - right));
   };
-  const auto y_of = [&](double psnr) { return top + static_cast<int>((high - psnr) / (high - low) * (height - top - bottom)); };
+  const auto y_of = [&](double psnr) {
+    return top + static_cast<int>((high - psnr) / (high - low) * (height - top - bottom));
+  };
   cv::rectangle(plot, {left, top}, {width - right, height - bottom}, cv::Scalar(0, 0, 0));
   for (double bytes = 1000; bytes <= max_bytes; bytes *= 10) {
-    cv::line(plot, {x_of(bytes), height - bottom}, {x_of(bytes), height - bottom + 5}, cv::Scalar(0, 0, 0));
-    cv::putText(plot, bytes >= 1e6 ? std::to_string(static_cast<int>(bytes / 1e6)) + " MB" : std::to_string(static_cast<int>(bytes / 1e3)) + " kB",
-                {x_of(bytes) - 18, height - bottom + 22}, cv::FONT_HERSHEY_SIMPLEX, 0.45, cv::Scalar(0, 0, 0));
+    cv::line(plot, {x_of(bytes), height - bottom}, {x_of(bytes), height - bottom + 5},
+             cv::Scalar(0, 0, 0));
+    cv::putText(plot,
+                bytes >= 1e6 ? std::to_string(static_cast<int>(bytes / 1e6)) + " MB"
+                             : std::to_string(static_cast<int>(bytes / 1e3)) + " kB",
+                {x_of(bytes) - 18, height - bottom + 22}, cv::FONT_HERSHEY_SIMPLEX, 0.45,
+                cv::Scalar(0, 0, 0));
   }
   for (double psnr = low; psnr <= high; psnr += 2) {
-    cv::putText(plot, std::to_string(static_cast<int>(psnr)), {left - 30, y_of(psnr) + 5}, cv::FONT_HERSHEY_SIMPLEX,
-                0.45, cv::Scalar(0, 0, 0));
+    cv::putText(plot, std::to_string(static_cast<int>(psnr)), {left - 30, y_of(psnr) + 5},
+                cv::FONT_HERSHEY_SIMPLEX, 0.45, cv::Scalar(0, 0, 0));
   }
-  cv::line(plot, {x_of(static_cast<double>(file_bytes)), top}, {x_of(static_cast<double>(file_bytes)), height - bottom},
-           cv::Scalar(160, 160, 160));
-  cv::putText(plot, "bytes received (log); grey: whole file", {left + 200, height - 15}, cv::FONT_HERSHEY_SIMPLEX, 0.5,
-              cv::Scalar(0, 0, 0));
+  cv::line(plot, {x_of(static_cast<double>(file_bytes)), top},
+           {x_of(static_cast<double>(file_bytes)), height - bottom}, cv::Scalar(160, 160, 160));
+  cv::putText(plot, "bytes received (log); grey: whole file", {left + 200, height - 15},
+              cv::FONT_HERSHEY_SIMPLEX, 0.5, cv::Scalar(0, 0, 0));
   cv::putText(plot, "PSNR dB", {5, top - 10}, cv::FONT_HERSHEY_SIMPLEX, 0.5, cv::Scalar(0, 0, 0));
   const cv::Scalar colours[] = {{200, 60, 30}, {30, 140, 30}, {30, 30, 200}, {160, 30, 160}};
   for (std::size_t c = 0; c < curves.size(); ++c) {
@@ -201,12 +214,16 @@ cv::Mat plotPsnrAgainstBytes(const std::vector<std::pair<std::string, StreamRunR
     for (std::size_t i = 1; i < run.samples.size(); ++i) {
       const StreamSample& a = run.samples[i - 1];
       const StreamSample& b = run.samples[i];
-      cv::line(plot, {x_of(static_cast<double>(a.bytes)), y_of(a.psnr_db)}, {x_of(static_cast<double>(b.bytes)), y_of(a.psnr_db)}, colour, 2);
-      cv::line(plot, {x_of(static_cast<double>(b.bytes)), y_of(a.psnr_db)}, {x_of(static_cast<double>(b.bytes)), y_of(b.psnr_db)}, colour, 2);
+      cv::line(plot, {x_of(static_cast<double>(a.bytes)), y_of(a.psnr_db)},
+               {x_of(static_cast<double>(b.bytes)), y_of(a.psnr_db)}, colour, 2);
+      cv::line(plot, {x_of(static_cast<double>(b.bytes)), y_of(a.psnr_db)},
+               {x_of(static_cast<double>(b.bytes)), y_of(b.psnr_db)}, colour, 2);
     }
-    cv::line(plot, {left, y_of(complete_psnr[c] - 1)}, {width - right, y_of(complete_psnr[c] - 1)}, colour, 1, cv::LINE_4);
-    cv::putText(plot, curves[c].first + " (thin: complete - 1 dB)", {left + 10, top + 20 + 20 * static_cast<int>(c)},
-                cv::FONT_HERSHEY_SIMPLEX, 0.5, colour, 1);
+    cv::line(plot, {left, y_of(complete_psnr[c] - 1)}, {width - right, y_of(complete_psnr[c] - 1)},
+             colour, 1, cv::LINE_4);
+    cv::putText(plot, curves[c].first + " (thin: complete - 1 dB)",
+                {left + 10, top + 20 + 20 * static_cast<int>(c)}, cv::FONT_HERSHEY_SIMPLEX, 0.5,
+                colour, 1);
   }
   return plot;
 }
@@ -217,7 +234,8 @@ int run(int argc, char** argv) {
   const std::string folder = fs::absolute(fs::path(options.model)).parent_path().string();
   const std::string name = fs::path(options.model).filename().string();
   const std::unique_ptr<LoadedModel> whole = loadModel("", options.model, true);
-  if (!whole->chunked) throw cli::Error(options.model + ": not a chunked model (prepare it with --chunked)");
+  if (!whole->chunked)
+    throw cli::Error(options.model + ": not a chunked model (prepare it with --chunked)");
   const std::uint64_t file_bytes = whole->file_bytes.size();
   const prepare::Scan scan = prepare::loadScan(options.scan);
   const prepare::Scan points = prepare::modelPoints(scan, options.scan, options.prepare);
@@ -225,8 +243,10 @@ int run(int argc, char** argv) {
   const tradeoff::ReferenceSurface surface = tradeoff::buildReferenceSurface(points);
 
   std::ofstream runs(options.output / (options.label + "_runs.csv"));
-  runs << "model,view,link,file_bytes,depth,deepest_fetched,first_picture_s,complete_psnr_db,within_1db_s,"
-          "within_1db_bytes,whole_file_s,whole_file_measured,speedup,complete,complete_s,complete_bytes,"
+  runs << "model,view,link,file_bytes,depth,deepest_fetched,first_picture_s,complete_psnr_db,"
+          "within_1db_s,"
+          "within_1db_bytes,whole_file_s,whole_file_measured,speedup,complete,complete_s,complete_"
+          "bytes,"
           "share_of_file\n";
   std::ofstream samples(options.output / (options.label + "_samples.csv"));
   samples << "model,view,link,seconds,bytes,psnr_db,held_chunks\n";
@@ -234,8 +254,10 @@ int run(int argc, char** argv) {
   std::vector<double> curve_complete;
   for (const View& view : options.views) {
     cv::Mat mask;
-    const cv::Mat reference = tradeoff::renderReference(surface, fit, view.camera, kBackground, &mask);
-    const cv::Mat complete_frame = renderChunkedView(*whole->chunked, view.camera, defaultVariant(), false, kBackground, nullptr);
+    const cv::Mat reference =
+        tradeoff::renderReference(surface, fit, view.camera, kBackground, &mask);
+    const cv::Mat complete_frame = renderChunkedView(*whole->chunked, view.camera, defaultVariant(),
+                                                     false, kBackground, nullptr);
     const double complete_psnr = tradeoff::psnr(reference, complete_frame);
     for (std::size_t l = 0; l < options.links.size(); ++l) {
       const Link& link = options.links[l];
@@ -248,30 +270,39 @@ int run(int argc, char** argv) {
       {
         ServeProcess server(options.serve, folder, link);
         const std::string url = "http://127.0.0.1:" + std::to_string(server.port()) + "/" + name;
-        result = runStream(url, view.camera, reference, std::chrono::seconds(options.limit_seconds), figures ? keep : std::vector<std::uint64_t>{},
-                           [&](std::uint64_t, const cv::Mat& frame) { strip.push_back(frame.clone()); });
-        const double expected = link.latency_ms / 1000.0 + static_cast<double>(file_bytes) / static_cast<double>(link.bytes_per_second);
+        result =
+            runStream(url, view.camera, reference, std::chrono::seconds(options.limit_seconds),
+                      figures ? keep : std::vector<std::uint64_t>{},
+                      [&](std::uint64_t, const cv::Mat& frame) { strip.push_back(frame.clone()); });
+        const double expected =
+            link.latency_ms / 1000.0 +
+            static_cast<double>(file_bytes) / static_cast<double>(link.bytes_per_second);
         if (expected < options.limit_seconds) {
-          whole_seconds = downloadWholeFile(url, file_bytes, std::chrono::seconds(options.limit_seconds));
+          whole_seconds =
+              downloadWholeFile(url, file_bytes, std::chrono::seconds(options.limit_seconds));
           whole_measured = whole_seconds > 0;
         }
         if (!whole_measured) whole_seconds = expected;
       }
       const StreamSample* good = withinOneDb(result, complete_psnr);
       char row[512];
-      std::snprintf(row, sizeof row, "%s,%s,%s,%llu,%d,%d,%.3f,%.2f,%.3f,%llu,%.3f,%d,%.2f,%d,%.3f,%llu,%.4f\n",
-                    options.label.c_str(), view.name.c_str(), link.name.c_str(), static_cast<unsigned long long>(file_bytes),
-                    result.wanted_depth, result.deepest_level_depth, result.samples.empty() ? -1.0 : result.samples.front().seconds,
-                    complete_psnr, good ? good->seconds : -1.0, static_cast<unsigned long long>(good ? good->bytes : 0),
-                    whole_seconds, whole_measured ? 1 : 0, good ? whole_seconds / good->seconds : 0.0, result.complete ? 1 : 0,
-                    result.seconds, static_cast<unsigned long long>(result.bytes),
-                    static_cast<double>(result.bytes) / static_cast<double>(file_bytes));
+      std::snprintf(
+          row, sizeof row,
+          "%s,%s,%s,%llu,%d,%d,%.3f,%.2f,%.3f,%llu,%.3f,%d,%.2f,%d,%.3f,%llu,%.4f\n",
+          options.label.c_str(), view.name.c_str(), link.name.c_str(),
+          static_cast<unsigned long long>(file_bytes), result.wanted_depth,
+          result.deepest_level_depth,
+          result.samples.empty() ? -1.0 : result.samples.front().seconds, complete_psnr,
+          good ? good->seconds : -1.0, static_cast<unsigned long long>(good ? good->bytes : 0),
+          whole_seconds, whole_measured ? 1 : 0, good ? whole_seconds / good->seconds : 0.0,
+          result.complete ? 1 : 0, result.seconds, static_cast<unsigned long long>(result.bytes),
+          static_cast<double>(result.bytes) / static_cast<double>(file_bytes));
       runs << row;
       std::printf("%s", row);
       std::fflush(stdout);
       for (const StreamSample& s : result.samples) {
-        samples << options.label << ',' << view.name << ',' << link.name << ',' << s.seconds << ',' << s.bytes << ','
-                << s.psnr_db << ',' << s.held_chunks << '\n';
+        samples << options.label << ',' << view.name << ',' << link.name << ',' << s.seconds << ','
+                << s.bytes << ',' << s.psnr_db << ',' << s.held_chunks << '\n';
       }
       if (figures) {
         curves.emplace_back(view.name, result);
@@ -280,7 +311,8 @@ int run(int argc, char** argv) {
         strip.push_back(reference);
         cv::Mat joined;
         cv::hconcat(strip, joined);
-        cv::imwrite((options.output / (options.label + "_frames_" + view.name + ".png")).string(), joined);
+        cv::imwrite((options.output / (options.label + "_frames_" + view.name + ".png")).string(),
+                    joined);
       }
     }
   }
@@ -291,4 +323,6 @@ int run(int argc, char** argv) {
 
 }  // namespace
 
-int main(int argc, char** argv) { return cli::runTool("octopoint-stream-measure", argc, argv, run); }
+int main(int argc, char** argv) {
+  return cli::runTool("octopoint-stream-measure", argc, argv, run);
+}

@@ -25,7 +25,8 @@ constexpr auto kMinSampleInterval = std::chrono::milliseconds(25);
 
 }  // namespace
 
-ServeProcess::ServeProcess(const std::string& serve_binary, const std::string& folder, const Link& link) {
+ServeProcess::ServeProcess(const std::string& serve_binary, const std::string& folder,
+                           const Link& link) {
   int out[2];
   if (::pipe(out) != 0) throw std::runtime_error("pipe failed");
   pid_ = ::fork();
@@ -36,8 +37,8 @@ ServeProcess::ServeProcess(const std::string& serve_binary, const std::string& f
     ::close(out[1]);
     const std::string rate = std::to_string(link.bytes_per_second);
     const std::string latency = std::to_string(link.latency_ms);
-    ::execl(serve_binary.c_str(), serve_binary.c_str(), folder.c_str(), "--port", "0", "--rate", rate.c_str(),
-            "--latency", latency.c_str(), static_cast<char*>(nullptr));
+    ::execl(serve_binary.c_str(), serve_binary.c_str(), folder.c_str(), "--port", "0", "--rate",
+            rate.c_str(), "--latency", latency.c_str(), static_cast<char*>(nullptr));
     std::perror("exec octopoint-serve");
     ::_exit(127);
   }
@@ -58,8 +59,9 @@ ServeProcess::~ServeProcess() {
   ::waitpid(pid_, &status, 0);
 }
 
-StreamRunResult runStream(const std::string& url_text, const Camera& camera, const cv::Mat& reference,
-                          std::chrono::seconds limit, const std::vector<std::uint64_t>& keep_frames_at,
+StreamRunResult runStream(const std::string& url_text, const Camera& camera,
+                          const cv::Mat& reference, std::chrono::seconds limit,
+                          const std::vector<std::uint64_t>& keep_frames_at,
                           const std::function<void(std::uint64_t, const cv::Mat&)>& on_frame) {
   const std::optional<net::HttpUrl> url = net::parseHttpUrl(url_text, nullptr);
   if (!url) throw std::runtime_error("bad URL " + url_text);
@@ -74,12 +76,15 @@ StreamRunResult runStream(const std::string& url_text, const Camera& camera, con
   const auto score = [&](ProgressiveModel& model, std::uint64_t bytes, bool force) {
     const Clock::time_point now = Clock::now();
     const bool keep = next_keep < keep_frames_at.size() && bytes >= keep_frames_at[next_keep];
-    if (!force && !keep && !result.samples.empty() && now - last_sample < kMinSampleInterval) return;
+    if (!force && !keep && !result.samples.empty() && now - last_sample < kMinSampleInterval)
+      return;
     last_sample = now;
     ProgressiveDrawStats stats;
-    const cv::Mat frame = renderChunkedView(model, camera, defaultVariant(), false, kBackground, &stats);
+    const cv::Mat frame =
+        renderChunkedView(model, camera, defaultVariant(), false, kBackground, &stats);
     result.samples.push_back({std::chrono::duration<double>(now - start).count(), bytes,
-                              tradeoff::psnr(reference, frame), static_cast<int>(model.chunksIn(ChunkState::kHeld))});
+                              tradeoff::psnr(reference, frame),
+                              static_cast<int>(model.chunksIn(ChunkState::kHeld))});
     for (; next_keep < keep_frames_at.size() && bytes >= keep_frames_at[next_keep]; ++next_keep) {
       if (on_frame) on_frame(keep_frames_at[next_keep], frame);
     }
@@ -90,7 +95,8 @@ StreamRunResult runStream(const std::string& url_text, const Camera& camera, con
       result.final_frame = frame;
     }
   };
-  stream.onAccepted([&](ProgressiveModel& model, std::uint64_t bytes) { score(model, bytes, false); });
+  stream.onAccepted(
+      [&](ProgressiveModel& model, std::uint64_t bytes) { score(model, bytes, false); });
   stream.setView(camera);
   stream.start();
   const net::StreamStatus status = stream.waitUntilSettled(limit);
@@ -102,7 +108,8 @@ StreamRunResult runStream(const std::string& url_text, const Camera& camera, con
     for (int level = 1; level < model->levelCount(); ++level) {
       for (std::uint32_t i = 0; i < model->chunkCount(level); ++i) {
         if (model->chunkState(level, i) != ChunkState::kMissing) {
-          result.deepest_level_depth = std::max(result.deepest_level_depth, model->levelDepth(level));
+          result.deepest_level_depth =
+              std::max(result.deepest_level_depth, model->levelDepth(level));
         }
       }
     }
@@ -115,7 +122,8 @@ StreamRunResult runStream(const std::string& url_text, const Camera& camera, con
   return result;
 }
 
-double downloadWholeFile(const std::string& url_text, std::uint64_t file_bytes, std::chrono::seconds limit) {
+double downloadWholeFile(const std::string& url_text, std::uint64_t file_bytes,
+                         std::chrono::seconds limit) {
   const std::optional<net::HttpUrl> url = net::parseHttpUrl(url_text, nullptr);
   net::RangeTimeouts timeouts;
   timeouts.min_bytes_per_second = 1;
@@ -123,11 +131,12 @@ double downloadWholeFile(const std::string& url_text, std::uint64_t file_bytes, 
   std::atomic<bool> cancel{false};
   const Clock::time_point start = Clock::now();
   std::thread watchdog([&] {
-    while (!cancel && Clock::now() - start < limit) std::this_thread::sleep_for(std::chrono::milliseconds(50));
+    while (!cancel && Clock::now() - start < limit)
+      std::this_thread::sleep_for(std::chrono::milliseconds(50));
     cancel = true;
   });
-  const net::FetchResult result =
-      client.fetch(0, file_bytes, [](std::uint64_t, std::span<const std::uint8_t>) { return true; }, &cancel);
+  const net::FetchResult result = client.fetch(
+      0, file_bytes, [](std::uint64_t, std::span<const std::uint8_t>) { return true; }, &cancel);
   const double seconds = std::chrono::duration<double>(Clock::now() - start).count();
   cancel = true;
   watchdog.join();

@@ -8,10 +8,9 @@
 #include <chrono>
 #include <cstdint>
 #include <functional>
+#include <opencv2/core.hpp>
 #include <string>
 #include <vector>
-
-#include <opencv2/core.hpp>
 
 #include "renderer/camera.h"
 
@@ -38,9 +37,9 @@ class ServeProcess {
 };
 
 struct StreamSample {
-  double seconds = 0;        // since the first request
-  std::uint64_t bytes = 0;   // received so far
-  double psnr_db = 0;        // of the frame drawn then, against the reference
+  double seconds = 0;       // since the first request
+  std::uint64_t bytes = 0;  // received so far
+  double psnr_db = 0;       // of the frame drawn then, against the reference
   int held_chunks = 0;
 };
 
@@ -49,20 +48,22 @@ struct StreamRunResult {
   bool complete = false;              // the view's every chunk arrived within the time limit
   double seconds = 0;                 // until complete (or the limit)
   std::uint64_t bytes = 0;
-  int deepest_level_depth = 0;        // the finest depth of any chunk fetched
-  int wanted_depth = 0;               // the depth the view draws at
-  cv::Mat final_frame;                // BGR
+  int deepest_level_depth = 0;  // the finest depth of any chunk fetched
+  int wanted_depth = 0;         // the depth the view draws at
+  cv::Mat final_frame;          // BGR
 };
 
-// Streams `url` for `camera`, scoring each frame against `reference` (BGR, the camera's size), until
-// the view is complete or `limit` passes. `keep_frames_at`: byte counts after which the frame is
-// also handed to `on_frame` (for figures).
-StreamRunResult runStream(const std::string& url, const Camera& camera, const cv::Mat& reference,
-                          std::chrono::seconds limit, const std::vector<std::uint64_t>& keep_frames_at,
-                          const std::function<void(std::uint64_t bytes, const cv::Mat& frame)>& on_frame);
+// Streams `url` for `camera`, scoring each frame against `reference` (BGR, the camera's size),
+// until the view is complete or `limit` passes. `keep_frames_at`: byte counts after which the frame
+// is also handed to `on_frame` (for figures).
+StreamRunResult runStream(
+    const std::string& url, const Camera& camera, const cv::Mat& reference,
+    std::chrono::seconds limit, const std::vector<std::uint64_t>& keep_frames_at,
+    const std::function<void(std::uint64_t bytes, const cv::Mat& frame)>& on_frame);
 
 // Downloads the whole file over one connection; seconds until its last byte, or a negative number
 // when it did not finish within `limit`.
-double downloadWholeFile(const std::string& url, std::uint64_t file_bytes, std::chrono::seconds limit);
+double downloadWholeFile(const std::string& url, std::uint64_t file_bytes,
+                         std::chrono::seconds limit);
 
 }  // namespace octopoint

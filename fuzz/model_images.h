@@ -21,16 +21,18 @@ std::vector<std::uint8_t> coarsenedOctImage(const EmbeddedModel& model, int dept
 // The model as the preparer holds it, with its own depths, or, when `depths` is given, with those
 // depths made from its finest level (each at most its finest depth; coarser ones coarsened as the
 // chunked writer makes its base: codegen/level_voxels.h).
-prepare::PreparedModel preparedModel(const EmbeddedModel& model, const std::vector<int>& depths = {});
+prepare::PreparedModel preparedModel(const EmbeddedModel& model,
+                                     const std::vector<int>& depths = {});
 
 // That model as octopoint-prepare --chunked writes it (format version 3).
-std::vector<std::uint8_t> chunkedImage(const EmbeddedModel& model, const std::vector<int>& depths = {},
+std::vector<std::uint8_t> chunkedImage(const EmbeddedModel& model,
+                                       const std::vector<int>& depths = {},
                                        const prepare::ChunkedOptions& options = {});
 
 // Recomputes every CRC of a chunked image from its raw bytes (each record's chunk CRC, each record
 // table's CRC in the level table, then the head's), so that a test or a fuzzer can change any field
-// and reach the checks behind the CRCs. Reads offsets as the format says, within the image's bounds;
-// what lies outside is left alone.
+// and reach the checks behind the CRCs. Reads offsets as the format says, within the image's
+// bounds; what lies outside is left alone.
 void resealChunked(std::vector<std::uint8_t>& image);
 
 }  // namespace octopoint::fuzzing

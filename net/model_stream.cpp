@@ -252,7 +252,8 @@ class ModelStream::Impl {
       const std::uint64_t fetch_offset = plan.offset + buffer.size();
       const std::uint64_t fetch_size = plan.size - buffer.size();
       if (fetch_size == 0) {
-        for (std::size_t i = next; i < plan.items.size(); ++i) in_flight_.erase(itemKey(plan.items[i]));
+        for (std::size_t i = next; i < plan.items.size(); ++i)
+          in_flight_.erase(itemKey(plan.items[i]));
         continue;
       }
       ++busy_;

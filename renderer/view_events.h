@@ -16,17 +16,17 @@ enum class NavigationKey : std::uint8_t { kYawLeft, kYawRight, kPitchUp, kPitchD
 inline constexpr int kNavigationKeyCount = 4;
 
 enum class ViewEventKind : std::uint8_t {
-  kPress,       // a navigation key goes down (repeats of a held key are ignored)
-  kRelease,     // a navigation key goes up
-  kTick,        // the frame tick (every kTickPeriodMicroseconds): the fine frame may start
-  kZoomIn,      // one zoom step in
-  kZoomOut,     // one zoom step out
-  kToggleFill,  // hole filling on/off
-  kReset,       // back to the initial view
-  kResize,      // the frame becomes width x height pixels (the window was resized)
+  kPress,           // a navigation key goes down (repeats of a held key are ignored)
+  kRelease,         // a navigation key goes up
+  kTick,            // the frame tick (every kTickPeriodMicroseconds): the fine frame may start
+  kZoomIn,          // one zoom step in
+  kZoomOut,         // one zoom step out
+  kToggleFill,      // hole filling on/off
+  kReset,           // back to the initial view
+  kResize,          // the frame becomes width x height pixels (the window was resized)
   kContentChanged,  // the model has more in it (a streamed chunk arrived): the fine frame is due
                     // again, without changing the view or aborting a fine frame under way
-  kQuit,        // the source has ended
+  kQuit,            // the source has ended
 };
 
 inline constexpr std::int64_t kTickPeriodMicroseconds = 100'000;

@@ -25,8 +25,8 @@ struct CountingContent {
   std::atomic<int> draw_us{0};
 
   ViewDrawFunction drawer() {
-    return [this](FrameSource source, const Camera&, Framebuffer& frame, const std::atomic<bool>* abort,
-                  int* depth) {
+    return [this](FrameSource source, const Camera&, Framebuffer& frame,
+                  const std::atomic<bool>* abort, int* depth) {
       const std::int64_t end_us = realMicroseconds() + draw_us.load();
       const auto value = static_cast<std::uint8_t>(content.load());
       if (source == FrameSource::kFine) {
@@ -53,7 +53,8 @@ TEST(DualResolutionContent, DrawsWhatTheFunctionDrawsAndRedrawsWhenTheContentCha
   CountingContent content;
   ManualClock clock;
   DualResolutionRenderer renderer(content.drawer(), clock, InteractiveConfig{});
-  ASSERT_TRUE(renderer.waitUntil([](const RendererStatus& s) { return s.fine_shown == 1; }, kPatience));
+  ASSERT_TRUE(
+      renderer.waitUntil([](const RendererStatus& s) { return s.fine_shown == 1; }, kPatience));
   EXPECT_EQ(shownContent(renderer), 1);
   EXPECT_EQ(renderer.status().latest.depth, 7);
 
@@ -62,7 +63,8 @@ TEST(DualResolutionContent, DrawsWhatTheFunctionDrawsAndRedrawsWhenTheContentCha
     clock.set(i * kTickPeriodMicroseconds);
     renderer.handle({clock.nowMicroseconds(), ViewEventKind::kTick});
   }
-  ASSERT_FALSE(renderer.waitUntil([](const RendererStatus& s) { return s.fine_shown > 1; }, std::chrono::milliseconds(300)));
+  ASSERT_FALSE(renderer.waitUntil([](const RendererStatus& s) { return s.fine_shown > 1; },
+                                  std::chrono::milliseconds(300)));
   EXPECT_EQ(content.fine_draws.load(), 1);
 
   // New content: the fine frame is due again at the next tick, for the same view.
@@ -71,12 +73,14 @@ TEST(DualResolutionContent, DrawsWhatTheFunctionDrawsAndRedrawsWhenTheContentCha
   renderer.handle({clock.nowMicroseconds(), ViewEventKind::kContentChanged});
   clock.set(4 * kTickPeriodMicroseconds);
   renderer.handle({clock.nowMicroseconds(), ViewEventKind::kTick});
-  ASSERT_TRUE(renderer.waitUntil([](const RendererStatus& s) { return s.fine_shown == 2; }, kPatience));
+  ASSERT_TRUE(
+      renderer.waitUntil([](const RendererStatus& s) { return s.fine_shown == 2; }, kPatience));
   EXPECT_EQ(shownContent(renderer), 2);
   EXPECT_EQ(renderer.status().view_version, view_version);
 }
 
-TEST(DualResolutionContent, ContentThatArrivesWhileAFineFrameIsDrawnBringsAnotherOneWithoutAborting) {
+TEST(DualResolutionContent,
+     ContentThatArrivesWhileAFineFrameIsDrawnBringsAnotherOneWithoutAborting) {
   CountingContent content;
   content.draw_us = 300'000;
   ManualClock clock;
@@ -84,11 +88,13 @@ TEST(DualResolutionContent, ContentThatArrivesWhileAFineFrameIsDrawnBringsAnothe
   ASSERT_TRUE(renderer.waitUntil([](const RendererStatus& s) { return s.fine_busy; }, kPatience));
   content.content = 3;  // arrives while the first fine frame draws content 1
   renderer.handle({clock.nowMicroseconds(), ViewEventKind::kContentChanged});
-  ASSERT_TRUE(renderer.waitUntil([](const RendererStatus& s) { return s.fine_shown == 1; }, kPatience));
+  ASSERT_TRUE(
+      renderer.waitUntil([](const RendererStatus& s) { return s.fine_shown == 1; }, kPatience));
   EXPECT_EQ(renderer.status().fine_aborted, 0u);
   clock.set(kTickPeriodMicroseconds);
   renderer.handle({clock.nowMicroseconds(), ViewEventKind::kTick});
-  ASSERT_TRUE(renderer.waitUntil([](const RendererStatus& s) { return s.fine_shown == 2; }, kPatience));
+  ASSERT_TRUE(
+      renderer.waitUntil([](const RendererStatus& s) { return s.fine_shown == 2; }, kPatience));
   EXPECT_EQ(shownContent(renderer), 3);
 }
 
@@ -98,7 +104,9 @@ TEST(DualResolutionContent, HeldKeysDrawCoarseFramesFromTheFunction) {
   DualResolutionRenderer renderer(content.drawer(), clock, InteractiveConfig{});
   renderer.handle({0, ViewEventKind::kPress, NavigationKey::kYawRight});
   ASSERT_TRUE(renderer.waitUntil(
-      [](const RendererStatus& s) { return s.coarse_shown >= 2 && s.latest.source == FrameSource::kCoarse; },
+      [](const RendererStatus& s) {
+        return s.coarse_shown >= 2 && s.latest.source == FrameSource::kCoarse;
+      },
       kPatience));
   FrameInfo info;
   const Framebuffer* frame = renderer.acquireLatest(&info);

@@ -39,7 +39,8 @@ octopoint::Camera randomView(std::mt19937& random) {
   octopoint::Camera camera;
   camera.yaw = octopoint::Angle::fromDegrees(static_cast<int>(random() % 360));
   camera.pitch = octopoint::Angle::fromDegrees(static_cast<int>(random() % 120) - 60);
-  camera.zoom = octopoint::Q16::fromRaw(static_cast<std::int32_t>(octopoint::Q16::kOneRaw / 2 + random() % (4 * octopoint::Q16::kOneRaw)));
+  camera.zoom = octopoint::Q16::fromRaw(static_cast<std::int32_t>(
+      octopoint::Q16::kOneRaw / 2 + random() % (4 * octopoint::Q16::kOneRaw)));
   camera.pan_x_px = static_cast<std::int32_t>(random() % 200) - 100;
   return camera;
 }
@@ -100,10 +101,13 @@ int main(int argc, char** argv) {
   done = true;
   for (std::thread& thread : threads) thread.join();
   const double seconds = std::chrono::duration<double>(Clock::now() - start).count();
-  std::printf("net_load_test: %d clients, %.1f s: %ld model streams, %ld requests (%.0f/s), %.1f MB, %ld failed; "
-              "server resident memory %ld KiB after %lld s, %ld KiB at the end, %ld KiB at most\n",
-              clients, seconds, streams.load(), requests.load(), requests.load() / seconds, bytes.load() / 1e6,
-              failed.load(), warm_kib, static_cast<long long>(kWarmUp.count()), end_kib, peak_kib);
+  std::printf(
+      "net_load_test: %d clients, %.1f s: %ld model streams, %ld requests (%.0f/s), %.1f MB, %ld "
+      "failed; "
+      "server resident memory %ld KiB after %lld s, %ld KiB at the end, %ld KiB at most\n",
+      clients, seconds, streams.load(), requests.load(), requests.load() / seconds,
+      bytes.load() / 1e6, failed.load(), warm_kib, static_cast<long long>(kWarmUp.count()), end_kib,
+      peak_kib);
   if (warm_kib < 0 || end_kib < 0) {
     std::fprintf(stderr, "net_load_test: cannot read the server's memory (pid %d)\n", pid);
     return 1;
@@ -113,7 +117,8 @@ int main(int argc, char** argv) {
     return 1;
   }
   if (peak_kib > warm_kib + kToleranceKiB) {
-    std::fprintf(stderr, "net_load_test: the server grew from %ld to %ld KiB after the warm-up\n", warm_kib, peak_kib);
+    std::fprintf(stderr, "net_load_test: the server grew from %ld to %ld KiB after the warm-up\n",
+                 warm_kib, peak_kib);
     return 1;
   }
   return 0;
