@@ -47,6 +47,8 @@ Writes OUTDIR/LABEL_runs.csv, LABEL_samples.csv, LABEL_psnr_bytes.png and LABEL_
   --view NAME:YAW:PITCH:ZOOM  a view (repeatable; default frontal:0:0:1 and zoom4:0:0:4)
   --link RATE:LATENCY     bytes per second and milliseconds (repeatable; default 5000:500,
                           50000:100 and 1000000:20)
+  --fill                  draw every frame with hole filling (octopoint-render --fill), for files
+                          holding depths finer than the scan samples densely (docs/streaming.md)
   --limit S               stop a run after S seconds (default 300); a whole-file download that
                           would take longer is computed from the link instead of measured
   --label NAME            prefix of the output files (default: the model's file name)
@@ -68,6 +70,7 @@ struct Options {
   std::vector<View> views;
   std::vector<Link> links;
   int limit_seconds = 300;
+  bool fill = false;
   fs::path output = "out";
 };
 
@@ -125,6 +128,8 @@ Options parseOptions(int argc, char** argv) {
       const auto latency =
           static_cast<std::uint32_t>(cli::parseInt(args.name(), parts[1], 0, 600'000));
       options.links.push_back({linkName(rate, latency), rate, latency});
+    } else if (args.is("--fill")) {
+      options.fill = true;
     } else if (args.is("--limit")) {
       options.limit_seconds = cli::parseInt(args.name(), args.value(), 1, 86400);
     } else if (args.is("--label")) {
@@ -257,7 +262,7 @@ int run(int argc, char** argv) {
     const cv::Mat reference =
         tradeoff::renderReference(surface, fit, view.camera, kBackground, &mask);
     const cv::Mat complete_frame = renderChunkedView(*whole->chunked, view.camera, defaultVariant(),
-                                                     false, kBackground, nullptr);
+                                                     options.fill, kBackground, nullptr);
     const double complete_psnr = tradeoff::psnr(reference, complete_frame);
     for (std::size_t l = 0; l < options.links.size(); ++l) {
       const Link& link = options.links[l];
@@ -270,10 +275,10 @@ int run(int argc, char** argv) {
       {
         ServeProcess server(options.serve, folder, link);
         const std::string url = "http://127.0.0.1:" + std::to_string(server.port()) + "/" + name;
-        result =
-            runStream(url, view.camera, reference, std::chrono::seconds(options.limit_seconds),
-                      figures ? keep : std::vector<std::uint64_t>{},
-                      [&](std::uint64_t, const cv::Mat& frame) { strip.push_back(frame.clone()); });
+        result = runStream(
+            url, view.camera, options.fill, reference, std::chrono::seconds(options.limit_seconds),
+            figures ? keep : std::vector<std::uint64_t>{},
+            [&](std::uint64_t, const cv::Mat& frame) { strip.push_back(frame.clone()); });
         const double expected =
             link.latency_ms / 1000.0 +
             static_cast<double>(file_bytes) / static_cast<double>(link.bytes_per_second);

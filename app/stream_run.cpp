@@ -59,7 +59,7 @@ ServeProcess::~ServeProcess() {
   ::waitpid(pid_, &status, 0);
 }
 
-StreamRunResult runStream(const std::string& url_text, const Camera& camera,
+StreamRunResult runStream(const std::string& url_text, const Camera& camera, bool fill,
                           const cv::Mat& reference, std::chrono::seconds limit,
                           const std::vector<std::uint64_t>& keep_frames_at,
                           const std::function<void(std::uint64_t, const cv::Mat&)>& on_frame) {
@@ -81,7 +81,7 @@ StreamRunResult runStream(const std::string& url_text, const Camera& camera,
     last_sample = now;
     ProgressiveDrawStats stats;
     const cv::Mat frame =
-        renderChunkedView(model, camera, defaultVariant(), false, kBackground, &stats);
+        renderChunkedView(model, camera, defaultVariant(), fill, kBackground, &stats);
     result.samples.push_back({std::chrono::duration<double>(now - start).count(), bytes,
                               tradeoff::psnr(reference, frame),
                               static_cast<int>(model.chunksIn(ChunkState::kHeld))});

@@ -53,11 +53,11 @@ struct StreamRunResult {
   cv::Mat final_frame;          // BGR
 };
 
-// Streams `url` for `camera`, scoring each frame against `reference` (BGR, the camera's size),
-// until the view is complete or `limit` passes. `keep_frames_at`: byte counts after which the frame
-// is also handed to `on_frame` (for figures).
+// Streams `url` for `camera`, scoring each frame (hole-filled when `fill`) against `reference`
+// (BGR, the camera's size), until the view is complete or `limit` passes. `keep_frames_at`: byte
+// counts after which the frame is also handed to `on_frame` (for figures).
 StreamRunResult runStream(
-    const std::string& url, const Camera& camera, const cv::Mat& reference,
+    const std::string& url, const Camera& camera, bool fill, const cv::Mat& reference,
     std::chrono::seconds limit, const std::vector<std::uint64_t>& keep_frames_at,
     const std::function<void(std::uint64_t bytes, const cv::Mat& frame)>& on_frame);
 
