@@ -1,14 +1,13 @@
 // A frame allocates nothing: once the model view, the framebuffer and the RGB buffer exist, a frame
 // (camera set-up, clear, decode with any variant, palette to RGB) makes no heap allocation. The
-// global operator new of this binary counts every allocation, so the test also sees allocations
-// hidden in the standard library. Runs on the host and on the device (qemu-arm).
+// global operator new of this binary counts every allocation (device/allocation_counter.h), so the
+// test also sees allocations hidden in the standard library. Runs on the host and on the device
+// (qemu-arm).
 #include <gtest/gtest.h>
 
-#include <atomic>
-#include <cstdlib>
-#include <new>
 #include <vector>
 
+#include "device/allocation_counter.h"
 #include "fuzz/model_images.h"
 #include "models/registry.h"
 #include "renderer/level_of_detail.h"
@@ -17,42 +16,15 @@
 #include "renderer/rgb_renderer.h"
 #include "tests/dual_resolution_fixture.h"
 
-namespace {
-
-std::atomic<long> g_allocation_count{0};
-
-void* countedAllocation(std::size_t size, std::size_t alignment) {
-  g_allocation_count.fetch_add(1, std::memory_order_relaxed);
-  if (size == 0) size = 1;
-  // aligned_alloc wants a multiple of the alignment; the default alignment suits malloc.
-  void* memory = alignment <= alignof(std::max_align_t)
-                     ? std::malloc(size)
-                     : std::aligned_alloc(alignment, (size + alignment - 1) / alignment * alignment);
-  if (memory == nullptr) throw std::bad_alloc();
-  return memory;
-}
-
-}  // namespace
-
-// The array and nothrow forms of libstdc++ forward to these two; every delete ends in free().
-void* operator new(std::size_t size) { return countedAllocation(size, alignof(std::max_align_t)); }
-void* operator new(std::size_t size, std::align_val_t alignment) {
-  return countedAllocation(size, static_cast<std::size_t>(alignment));
-}
-void operator delete(void* memory) noexcept { std::free(memory); }
-void operator delete(void* memory, std::size_t) noexcept { std::free(memory); }
-void operator delete(void* memory, std::align_val_t) noexcept { std::free(memory); }
-void operator delete(void* memory, std::size_t, std::align_val_t) noexcept { std::free(memory); }
-
 namespace octopoint {
 namespace {
 
 // Proves the counter is live in this binary (static linking included): a vector allocates.
 TEST(FrameAllocation, TheCounterSeesAnAllocation) {
-  const long before = g_allocation_count.load();
+  const long before = heapAllocationCount();
   std::vector<int> values(1000, 7);
   asm volatile("" : : "r"(values.data()) : "memory");  // the vector escapes: GCC may not elide it
-  const long after = g_allocation_count.load();
+  const long after = heapAllocationCount();
   EXPECT_EQ(after - before, 1);
 }
 
@@ -72,12 +44,12 @@ TEST(FrameAllocation, NoVariantAllocatesDuringAFrame) {
       for (int yaw_degrees : {0, 30}) {
         camera.yaw = Angle::fromDegrees(yaw_degrees);
         // The frame: from the camera to the RGB image.
-        const long before = g_allocation_count.load();
+        const long before = heapAllocationCount();
         const CameraError camera_error = buildFrameSetup(camera, level.depth, kDefaultFractionBits, &setup);
         frame.clear();
         const bool complete = renderLevel(info.variant, level, setup, frame);
         resolveToRgb(frame, *model, Rgb{}, rgb);
-        const long allocations = g_allocation_count.load() - before;
+        const long allocations = heapAllocationCount() - before;
 
         ASSERT_EQ(camera_error, CameraError::kNone);
         EXPECT_TRUE(complete) << info.name;
@@ -103,14 +75,14 @@ TEST(FrameAllocation, DepthAutoAndSplatFramesAllocateNothing) {
     for (const int zoom : {1, 4}) {
       camera.zoom = Q16::fromRaw(zoom * Q16::kOneRaw);
       camera.yaw = Angle::fromDegrees(30);
-      const long before = g_allocation_count.load();
+      const long before = heapAllocationCount();
       const LevelView* level = autoLevel(*model, camera);
       const CameraError camera_error =
           level == nullptr ? CameraError::kOverflow : buildFrameSetup(camera, level->depth, kDefaultFractionBits, &setup);
       frame.clear();
       const bool complete = camera_error == CameraError::kNone && renderLevel(info.variant, *level, setup, frame);
       resolveToRgb(frame, *model, Rgb{}, rgb);
-      const long allocations = g_allocation_count.load() - before;
+      const long allocations = heapAllocationCount() - before;
       ASSERT_EQ(camera_error, CameraError::kNone);
       EXPECT_TRUE(complete) << info.name;
       EXPECT_EQ(allocations, 0) << info.name << " at zoom " << zoom;
@@ -141,9 +113,9 @@ TEST(FrameAllocation, DualResolutionFramesAllocateNothingOnceAResizeSettles) {
   for (int i = 0; i < 20 && renderer.status().buffers_allocated < kBuffers; ++i) round.play();
   ASSERT_EQ(renderer.status().buffers_allocated, kBuffers);
 
-  const long before = g_allocation_count.load();
+  const long before = heapAllocationCount();
   for (int i = 0; i < 5; ++i) round.play();
-  const long allocations = g_allocation_count.load() - before;
+  const long allocations = heapAllocationCount() - before;
   ASSERT_FALSE(round.failed());
   EXPECT_GE(renderer.status().coarse_shown, 15u);
   EXPECT_EQ(allocations, 0) << "in 5 turns of the view (15 coarse frames or more, 5 fine ones)";
@@ -160,14 +132,14 @@ TEST(FrameAllocation, RgbRendererAllocatesOnlyWhenTheSizeChanges) {
   RgbRenderer renderer;
   DrawOptions options;
   options.fill_holes = true;
-  long before = g_allocation_count.load();
+  long before = heapAllocationCount();
   ASSERT_EQ(renderer.draw(*model, camera, rgb, options), DrawError::kNone);
-  EXPECT_GT(g_allocation_count.load() - before, 0);  // the first draw sizes the frame
+  EXPECT_GT(heapAllocationCount() - before, 0);  // the first draw sizes the frame
   for (int yaw_degrees : {10, 20, 30}) {
     camera.yaw = Angle::fromDegrees(yaw_degrees);
-    before = g_allocation_count.load();
+    before = heapAllocationCount();
     ASSERT_EQ(renderer.draw(*model, camera, rgb, options), DrawError::kNone);
-    EXPECT_EQ(g_allocation_count.load() - before, 0) << "yaw " << yaw_degrees;
+    EXPECT_EQ(heapAllocationCount() - before, 0) << "yaw " << yaw_degrees;
   }
 }
 
@@ -190,13 +162,13 @@ TEST(FrameAllocation, ProgressiveFramesAllocateNothing) {
       camera.zoom = Q16::fromRaw(zoom * Q16::kOneRaw);
       camera.yaw = Angle::fromDegrees(30);
       ProgressiveDrawStats stats;
-      const long before = g_allocation_count.load();
+      const long before = heapAllocationCount();
       const std::size_t count = model->fetchPriority(camera, true, wanted);
       frame.clear();
       const bool drawn = model->draw(camera, info.variant, frame, &stats);
       const bool complete = model->viewComplete(camera);
       resolveToRgb(frame, model->baseModel(), Rgb{}, rgb);
-      const long allocations = g_allocation_count.load() - before;
+      const long allocations = heapAllocationCount() - before;
       EXPECT_TRUE(drawn);
       EXPECT_FALSE(complete);
       EXPECT_GT(count, 0u);
