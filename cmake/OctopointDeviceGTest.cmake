@@ -11,3 +11,8 @@ set(INSTALL_GTEST OFF CACHE BOOL "" FORCE)
 add_subdirectory(${octopoint_googletest_source} ${CMAKE_BINARY_DIR}/googletest EXCLUDE_FROM_ALL)
 # GCC 12's false -Wrestrict in std::string, inlined into gtest.cc: not our code, not our warning.
 target_compile_options(gtest PRIVATE -Wno-restrict)
+# No name service on the device: GoogleTest's result streaming is the only user of getaddrinfo,
+# whose static glibc version makes the linker warn on every test program
+# (device/no_name_service.cpp says why and what happens instead).
+target_sources(gtest PRIVATE ${PROJECT_SOURCE_DIR}/device/no_name_service.cpp)
+target_link_options(gtest INTERFACE LINKER:--wrap=getaddrinfo,--wrap=freeaddrinfo)
