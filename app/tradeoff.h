@@ -101,6 +101,9 @@ struct DepthSweepOptions {
 // tradeoff.png and the reference tradeoff_reference.png (depthSweepOutputNames), for the caller to
 // write together. Throws cli::Error when the camera refuses a fraction bits setting.
 std::vector<cli::OutputFile> runDepthSweep(const Scene& scene, const DepthSweepOptions& options);
+// Throws cli::Error when the camera refuses the view at one of the depths and fraction bits: the
+// same check runDepthSweep makes, before the scan is read (it needs only the options).
+void checkDepthSweepViews(const DepthSweepOptions& options);
 std::vector<std::string> depthSweepOutputNames();
 
 struct ViewSweepOptions {

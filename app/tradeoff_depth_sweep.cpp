@@ -95,7 +95,26 @@ cv::Mat drawPlot(const std::vector<Row>& rows) {
   return plot;
 }
 
+// The set-up of one depth and fraction bits setting, or cli::Error naming the option.
+FrameSetup setupFor(const Camera& camera, int depth, int fraction_bits) {
+  FrameSetup setup;
+  const CameraError camera_error = buildFrameSetup(camera, depth, fraction_bits, &setup);
+  if (camera_error != CameraError::kNone) {
+    throw cli::Error("--fraction-bits " + std::to_string(fraction_bits) +
+                     ": the camera refuses this view at depth " + std::to_string(depth) + ": " +
+                     describe(camera_error));
+  }
+  return setup;
+}
+
 }  // namespace
+
+void checkDepthSweepViews(const DepthSweepOptions& options) {
+  for (int depth : options.depths) {
+    for (int bits : options.fraction_bits) setupFor(options.camera, depth, bits);
+    setupFor(options.camera, depth, kDefaultFractionBits);  // the floating point variants' setting
+  }
+}
 
 std::vector<std::string> depthSweepOutputNames() {
   return {"tradeoff.csv", "tradeoff.png", "tradeoff_reference.png"};
@@ -117,13 +136,7 @@ std::vector<cli::OutputFile> runDepthSweep(const Scene& scene, const DepthSweepO
                                              ? options.fraction_bits
                                              : std::vector<int>{kDefaultFractionBits};
       for (int bits : fractions) {
-        FrameSetup setup;
-        const CameraError camera_error = buildFrameSetup(options.camera, depth, bits, &setup);
-        if (camera_error != CameraError::kNone) {
-          throw cli::Error("--fraction-bits " + std::to_string(bits) +
-                           ": the camera refuses this view at depth " + std::to_string(depth) +
-                           ": " + describe(camera_error));
-        }
+        FrameSetup setup = setupFor(options.camera, depth, bits);
         setup.splat =
             SplatFootprint{};  // one pixel per leaf in every variant, as they were measured
         for (bool fill : {false, true}) {
@@ -141,8 +154,8 @@ std::vector<cli::OutputFile> runDepthSweep(const Scene& scene, const DepthSweepO
         }
       }
     }
-    std::fprintf(stderr, "octopoint-tradeoff: depth %d done (%zu voxels)\n", depth,
-                 level.leaves.size());
+    std::printf("depth %d done (%zu voxels)\n", depth, level.leaves.size());
+    std::fflush(stdout);
   }
 
   std::string csv =

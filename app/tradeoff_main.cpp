@@ -200,25 +200,21 @@ Options parseOptions(int argc, char** argv) {
 
 // Refuses, before any work, an output directory or output file that cannot be written.
 void checkOutputs(const Options& options) {
+  cli::checkOutputDirectory(options.output);
   std::error_code error;
   if (!fs::exists(options.output, error)) return;  // made at the end
-  if (!fs::is_directory(options.output, error)) {
-    throw cli::Error(cli::displayPath(options.output) +
-                     ": the output path exists and is not a directory");
-  }
   const std::vector<std::string> names =
       options.sweep_views ? tradeoff::viewSweepOutputNames() : tradeoff::depthSweepOutputNames();
   for (const std::string& name : names) cli::checkOutputFile(options.output / name);
-  const fs::path pictures = options.output / "pictures";
-  if (options.view_sweep.pictures && fs::exists(pictures, error) &&
-      !fs::is_directory(pictures, error)) {
-    throw cli::Error(cli::displayPath(pictures) + ": exists and is not a directory");
+  if (options.sweep_views && options.view_sweep.pictures) {
+    cli::checkOutputDirectory(options.output / "pictures");
   }
 }
 
 int run(int argc, char** argv) {
   const Options options = parseOptions(argc, argv);
   checkOutputs(options);
+  if (!options.sweep_views) tradeoff::checkDepthSweepViews(options.depth_sweep);
   const tradeoff::Scene scene = tradeoff::loadScene(options.scan, options.prepare);
   const std::vector<cli::OutputFile> files =
       options.sweep_views ? tradeoff::runViewSweep(scene, options.view_sweep, options.output)

@@ -23,17 +23,16 @@ Scene loadScene(const std::string& scan_path, const prepare::PrepareOptions& opt
   scene.fit = prepare::fitCube(points.positions, scan_path);
   scene.surface = buildReferenceSurface(points);
   if (scene.surface.splat_radius.empty()) {
-    std::fprintf(stderr, "octopoint-tradeoff: reference surface: %zu triangles over %zu points\n",
+    std::printf("reference surface: %zu triangles over %zu points\n",
                  scene.surface.triangles.size(), points.positions.size());
   } else {
     std::vector<float> radius = scene.surface.splat_radius;
     std::nth_element(radius.begin(),
                      radius.begin() + static_cast<std::ptrdiff_t>(radius.size() / 2), radius.end());
-    std::fprintf(
-        stderr,
-        "octopoint-tradeoff: reference surface: %zu splats, median radius %.3g (cube edge %.3g)\n",
+    std::printf("reference surface: %zu splats, median radius %.3g (cube edge %.3g)\n",
         radius.size(), static_cast<double>(radius[radius.size() / 2]), scene.fit.edge);
   }
+  std::fflush(stdout);
   return scene;
 }
 

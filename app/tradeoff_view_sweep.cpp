@@ -202,8 +202,8 @@ std::vector<cli::OutputFile> runViewSweep(const Scene& scene, const ViewSweepOpt
         writePictures(pictures_dir, cell, reference.image, pictures, after_empty);
       cells.push_back(std::move(cell));
     }
-    std::fprintf(stderr, "octopoint-tradeoff: %s %dx%d measured\n", options.label.c_str(), width,
-                 height);
+    std::printf("%s %dx%d measured\n", options.label.c_str(), width, height);
+    std::fflush(stdout);
   }
 
   // Time: rounds over all cells, each a median over repeated frames; a cell's time is the median
@@ -219,8 +219,9 @@ std::vector<cli::OutputFile> runViewSweep(const Scene& scene, const ViewSweepOpt
             [&] { drawer.draw(kConfigs[k], camera, frame, filler); }, options.repeats));
       }
     }
-    std::fprintf(stderr, "octopoint-tradeoff: %s timing round %d of %d done\n",
-                 options.label.c_str(), round + 1, options.rounds);
+    std::printf("%s timing round %d of %d done\n", options.label.c_str(), round + 1,
+                options.rounds);
+    std::fflush(stdout);
   }
   for (std::size_t c = 0; c < cells.size(); ++c) {
     for (std::size_t k = 0; k < 3; ++k) {

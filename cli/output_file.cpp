@@ -50,6 +50,7 @@ void throwIfInterrupted(const fs::path& path) {
 
 std::string kindOf(mode_t mode) {
   if (S_ISDIR(mode)) return "a directory";
+  if (S_ISREG(mode)) return "a regular file";
   if (S_ISFIFO(mode)) return "a FIFO (named pipe)";
   if (S_ISCHR(mode)) return "a character device";
   if (S_ISBLK(mode)) return "a block device";
@@ -158,6 +159,23 @@ void checkOutputFile(const fs::path& path) {
   }
 }
 
+void checkOutputDirectory(const fs::path& path) {
+  if (path.empty()) throw Error("an empty output directory name was given");
+  struct stat status {};
+  if (::stat(path.c_str(), &status) == 0) {
+    if (!S_ISDIR(status.st_mode)) fail(path, "exists and is not a directory: it is " + kindOf(status.st_mode));
+    return;
+  }
+  const int error = errno;
+  struct stat link {};
+  if (error == ENOENT && ::lstat(path.c_str(), &link) == 0) {
+    fail(path, "is a dangling symbolic link: refusing to write through it");
+  }
+  if (error == ELOOP) fail(path, "too many levels of symbolic links (a symlink loop?)");
+  if (error == ENOTDIR) fail(path, "a part of the path is not a directory");
+  if (error != ENOENT) fail(path, std::string("cannot look at it: ") + std::strerror(error));
+}
+
 void writeFileAtomically(const fs::path& path, std::string_view bytes) {
   checkOutputFile(path);
   std::error_code error;
@@ -188,13 +206,12 @@ void writeFileAtomically(const fs::path& path, std::string_view bytes) {
 }
 
 void writeFilesAtomically(const fs::path& directory, const std::vector<OutputFile>& files) {
+  checkOutputDirectory(directory);
   std::error_code error;
   const bool existed = fs::exists(directory, error);
   if (!existed) {
     fs::create_directories(directory, error);
     if (error) fail(directory, "cannot create the output directory (" + error.message() + ")");
-  } else if (!fs::is_directory(directory, error)) {
-    fail(directory, "the output path exists and is not a directory");
   }
   const TerminationSignalsHeld signals_held;
   const FileSizeSignalIgnored file_size_signal_ignored;

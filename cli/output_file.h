@@ -18,6 +18,11 @@ namespace octopoint::cli {
 // judged by what they point to), or when its directory does not exist or is not a directory.
 void checkOutputFile(const std::filesystem::path& path);
 
+// Throws cli::Error "PATH: ..." when `path` exists and is not a directory (a regular file, a FIFO,
+// a device: named by its kind; symbolic links are judged by what they point to), is a symlink loop
+// or a dangling link. A path that does not exist yet passes: writeFilesAtomically creates it.
+void checkOutputDirectory(const std::filesystem::path& path);
+
 // checkOutputFile, then writes `bytes` into a temporary beside `path` and renames it over `path`
 // (through a symbolic link, onto the file it points to). Throws cli::Error and leaves no
 // temporary when anything fails.

@@ -111,8 +111,14 @@ std::vector<int> parseDepths(std::string_view option, const std::string& text) {
                                         octopoint::cli::ListOrder::kStrictlyAscending);
   }
   const int first = octopoint::cli::parseInt(option, std::string_view(text).substr(0, dots), 1, kMaxDepth);
-  const int last = octopoint::cli::parseInt(option, std::string_view(text).substr(dots + 2), first,
-                                            std::min(kMaxDepth, first + kMaxLevels - 1));
+  const int last = octopoint::cli::parseInt(option, std::string_view(text).substr(dots + 2), 1, kMaxDepth);
+  if (last < first) {
+    throw PrepareError(std::string(option) + ": " + octopoint::cli::inQuotes(text) + " is an empty range");
+  }
+  if (last - first + 1 > kMaxLevels) {
+    throw PrepareError(std::string(option) + ": " + octopoint::cli::inQuotes(text) + " is " +
+                       std::to_string(last - first + 1) + " depths, at most " + std::to_string(kMaxLevels));
+  }
   std::vector<int> depths;
   for (int d = first; d <= last; ++d) depths.push_back(d);
   return depths;
@@ -220,6 +226,21 @@ std::string applyScene(const octopoint::prepare::Scene& scene, octopoint::prepar
   return reason;
 }
 
+// Refuses, before any work, outputs that cannot be written: OUTDIR must be a directory (or not
+// exist yet) and every file the run may write in it a regular file where it exists. A depth the
+// scan turns out not to sample densely is left out later, so its file is checked too.
+void checkOutputs(const Arguments& args, const octopoint::prepare::PrepareOptions& options) {
+  const std::filesystem::path directory = args.output_dir;
+  octopoint::cli::checkOutputDirectory(directory);
+  std::error_code error;
+  if (!std::filesystem::exists(directory, error)) return;
+  std::vector<std::string> names = {options.name + ".h", options.name + ".cpp", options.name + ".oct"};
+  if (!args.emit.single_source) {
+    for (int depth : options.depths) names.push_back(options.name + "_depth" + std::to_string(depth) + ".cpp");
+  }
+  for (const std::string& name : names) octopoint::cli::checkOutputFile(directory / name);
+}
+
 int run(int argc, char** argv) {
   const auto start = std::chrono::steady_clock::now();
   const std::optional<Arguments> args = parseArguments(argc, argv);
@@ -231,6 +252,7 @@ int run(int argc, char** argv) {
   PrepareOptions options = args->options;
   std::string depth_reason;
   if (!args->scene.empty()) depth_reason = applyScene(loadScene(args->scene), options);
+  checkOutputs(*args, options);
   const Scan scan = loadScan(args->scan);
   // The generated files name the exact command that made them, so anyone can regenerate them.
   options.source_description = std::filesystem::path(args->scan).filename().string() + " by: octopoint-prepare";

@@ -117,21 +117,55 @@ void readViewpoints(const SceneReader& reader, const json& value, Scene& scene) 
   }
 }
 
+// How deep objects and lists may nest: a scene needs 3 ({"viewpoints": [{...}]}); the limit
+// keeps a file of a million '[' from costing a million nested values.
+constexpr std::size_t kMaxNesting = 8;
+
 // Parses the JSON text, naming in a failure the key whose value was being read: nlohmann's own
-// message says "number overflow parsing '1e400'" but not where.
+// message says "number overflow parsing '1e400'" but not where. A key given twice in one object
+// (JSON leaves its meaning open, nlohmann keeps the last) and nesting past kMaxNesting are errors.
 json parseJson(const std::string& text, const std::string& path) {
   const std::size_t nul = text.find('\0');
   if (nul != std::string::npos) {
     throw PrepareError(cli::displayPath(path) + ": a NUL byte at byte " + std::to_string(nul) +
                        ": a scene file is JSON text");
   }
-  std::vector<std::string> keys;  // keys[d]: the key being read at object depth d + 1
-  const json::parser_callback_t track_keys = [&keys](int depth, json::parse_event_t event, json& parsed) {
-    if (event == json::parse_event_t::key) {
-      keys.resize(static_cast<std::size_t>(std::max(depth, 1)));
-      keys.back() = parsed.get<std::string>();
-    } else if (event == json::parse_event_t::object_end) {
-      keys.resize(std::min(keys.size(), static_cast<std::size_t>(std::max(depth, 0))));
+  struct Open {  // an object or list being read
+    bool object = false;
+    std::string key;  // the object's key being read
+    std::set<std::string> keys;
+  };
+  std::vector<Open> open;
+  auto where = [&open] {
+    std::string keys;
+    for (const Open& level : open) {
+      if (level.object && !level.key.empty()) keys += (keys.empty() ? "" : ".") + level.key;
+    }
+    return keys;
+  };
+  const json::parser_callback_t track_keys = [&](int, json::parse_event_t event, json& parsed) {
+    switch (event) {
+      case json::parse_event_t::object_start:
+      case json::parse_event_t::array_start:
+        if (open.size() == kMaxNesting) {
+          throw PrepareError(cli::displayPath(path) + ": objects and lists nested deeper than " +
+                             std::to_string(kMaxNesting) + " levels" +
+                             (where().empty() ? std::string() : " (key " + cli::inQuotes(where()) + ")"));
+        }
+        open.push_back({event == json::parse_event_t::object_start, {}, {}});
+        break;
+      case json::parse_event_t::key:
+        open.back().key = parsed.get<std::string>();
+        if (!open.back().keys.insert(open.back().key).second) {
+          throw PrepareError(cli::displayPath(path) + ": key " + cli::inQuotes(where()) + ": given twice");
+        }
+        break;
+      case json::parse_event_t::object_end:
+      case json::parse_event_t::array_end:
+        if (!open.empty()) open.pop_back();
+        break;
+      case json::parse_event_t::value:
+        break;
     }
     return true;
   };
@@ -142,10 +176,9 @@ json parseJson(const std::string& text, const std::string& path) {
     std::string message = error.what();
     const std::size_t cut = message.find("] ");
     if (cut != std::string::npos) message = message.substr(cut + 2);
-    std::string where;
-    for (const std::string& key : keys) where += (where.empty() ? "" : ".") + key;
+    const std::string key = where();
     throw PrepareError(cli::displayPath(path) + ": not valid JSON: " + cli::printable(message, 160) +
-                       (where.empty() ? std::string() : " (key " + cli::inQuotes(where) + ")"));
+                       (key.empty() ? std::string() : " (key " + cli::inQuotes(key) + ")"));
   }
 }
 

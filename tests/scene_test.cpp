@@ -85,6 +85,21 @@ TEST(SceneFile, HostileNumbersKeysAndBytesAreRefusedNamingFileAndKey) {
             "scene.json: key '" + std::string(40, 'k') + "...': unknown key");
 }
 
+// A key given twice (nlohmann would keep the last silently), nesting past what a scene needs, and
+// a number out of range inside a list of objects named by its key path.
+TEST(SceneFile, DuplicateKeysDeepNestingAndKeysInsideListsAreNamed) {
+  EXPECT_EQ(errorOf(R"({"yaw": [-30, 30], "yaw": [0, 1]})"), "scene.json: key 'yaw': given twice");
+  EXPECT_EQ(errorOf(R"({"palette": {"colours": 4, "colours": 8}})"),
+            "scene.json: key 'palette.colours': given twice");
+  EXPECT_EQ(errorOf(std::string(100000, '[')), "scene.json: objects and lists nested deeper than 8 levels");
+  EXPECT_EQ(errorOf(R"({"crop": {"min": [[[[[[[[1]]]]]]]]}})"),
+            "scene.json: objects and lists nested deeper than 8 levels (key 'crop.min')");
+  EXPECT_EQ(errorOf(R"({"viewpoints": [{"yaw": 0, "pitch": 0}, {"yaw": 1e400, "pitch": 0}]})"),
+            "scene.json: not valid JSON: number overflow parsing '1e400' (key 'viewpoints.yaw')");
+  // The same key in two objects of a list is not a duplicate.
+  EXPECT_NO_THROW(parseScene(R"({"viewpoints": [{"yaw": 0, "pitch": 0}, {"yaw": 1, "pitch": 0}]})", "scene.json"));
+}
+
 TEST(SceneViews, ASceneAskingForUnboundedWorkIsRefusedSayingHowToShrinkIt) {
   const std::string message = errorOf(R"({"yaw": [-180, 180], "pitch": [-90, 90], "angle_step": 0.1})");
   EXPECT_EQ(message.find("scene.json: the scene asks for 6485401 views (3601 yaw x 1801 pitch x 1 zoom samples) "

@@ -184,5 +184,30 @@ TEST_F(OutputFileTest, OutputsThatAreNotRegularFilesAreRefusedAndKept) {
   EXPECT_EQ(entries(), (std::set<std::string>{"sub", "fifo.png", "dangling.png", "loop_a", "loop_b"}));
 }
 
+// An output directory that is a file, a FIFO or a device is named by its kind, before anything
+// is written, and stays what it was.
+TEST_F(OutputFileTest, AnOutputDirectoryThatIsNotADirectoryIsNamedByItsKind) {
+  fs::create_directories(dir_);
+  put(dir_ / "file", "text");
+  ASSERT_EQ(::mkfifo((dir_ / "fifo").c_str(), 0600), 0);
+  fs::create_symlink("loop_b", dir_ / "loop_a");
+  fs::create_symlink("loop_a", dir_ / "loop_b");
+  fs::create_symlink("nowhere", dir_ / "dangling");
+  EXPECT_EQ(messageOf([&] { writeFilesAtomically(dir_ / "file", {{"a.txt", "a"}}); }),
+            (dir_ / "file").string() + ": exists and is not a directory: it is a regular file");
+  EXPECT_EQ(messageOf([&] { writeFilesAtomically(dir_ / "fifo", {{"a.txt", "a"}}); }),
+            (dir_ / "fifo").string() + ": exists and is not a directory: it is a FIFO (named pipe)");
+  EXPECT_EQ(messageOf([] { checkOutputDirectory("/dev/null"); }),
+            "/dev/null: exists and is not a directory: it is a character device");
+  EXPECT_NE(messageOf([&] { checkOutputDirectory(dir_ / "loop_a"); }).find("symlink loop"), std::string::npos);
+  EXPECT_NE(messageOf([&] { checkOutputDirectory(dir_ / "dangling"); }).find("dangling symbolic link"),
+            std::string::npos);
+  EXPECT_NO_THROW(checkOutputDirectory(dir_ / "not_yet"));
+  EXPECT_NO_THROW(checkOutputDirectory(dir_));
+  EXPECT_TRUE(fs::is_fifo(dir_ / "fifo"));
+  EXPECT_EQ(contentsOf(dir_ / "file"), "text");
+  EXPECT_EQ(entries(), (std::set<std::string>{"file", "fifo", "loop_a", "loop_b", "dangling"}));
+}
+
 }  // namespace
 }  // namespace octopoint::cli
