@@ -1,0 +1,177 @@
+# The hostile sweep's input classes (sourced by scripts/hostile-sweep after tests/hostile/lib.sh):
+# files that cost far more than they weigh (issue 16 item 1), files that are not files or are too
+# big (3), ascii data lines that do not parse (5) and scans whose metric size the model must hold
+# (6). Every file is made here, byte by byte.
+
+sweepClass 1 "inputs that cost far more than they weigh"
+sweepClass 3 "inputs of the wrong kind or size, every reader"
+sweepClass 5 "ascii data lines that do not parse"
+sweepClass 6 "metric size out of the model's range (refused or stored right)"
+
+# Four bytes, little-endian.
+le32() {
+  local n=$1 i
+  for i in 0 8 16 24; do printf "\\$(printf %03o $(((n >> i) & 255)))"; done
+}
+
+# A PCD header: pcdHeader FIELDS SIZE TYPE COUNT WIDTH HEIGHT POINTS DATA.
+pcdHeader() {
+  printf 'VERSION 0.7\nFIELDS %s\nSIZE %s\nTYPE %s\nCOUNT %s\nWIDTH %s\nHEIGHT %s\n' "$1" "$2" "$3" "$4" "$5" "$6"
+  printf 'VIEWPOINT 0 0 0 1 0 0 0\nPOINTS %s\nDATA %s\n' "$7" "$8"
+}
+xyzHeader() { pcdHeader "x y z" "4 4 4" "F F F" "1 1 1" "$1" 1 "$1" "$2"; }
+
+# --- 1: declared sizes the bytes present cannot back -------------------------------------------
+I1=$IN/cost
+mkdir -p "$I1"
+# The issue's own: 188 bytes whose POINTS and uncompressed size agree (1.2 GB of points).
+{ xyzHeader 100000000 binary_compressed; le32 100; le32 1200000000; head -c 100 /dev/urandom; } >"$I1/agreeing_sizes.pcd"
+{ xyzHeader 1000 binary_compressed; le32 8; le32 4294967295; head -c 8 /dev/urandom; } >"$I1/max_uncompressed.pcd"
+{ xyzHeader 1000 binary_compressed; le32 100; le32 12000; head -c 100 /dev/urandom; } >"$I1/past_lzf_ratio.pcd"
+{ xyzHeader 1000 binary_compressed; le32 4000000000; le32 12000; head -c 16 /dev/urandom; } >"$I1/compressed_past_file.pcd"
+{ xyzHeader 2000000000 binary; head -c 24 /dev/urandom; } >"$I1/binary_points.pcd"
+{ xyzHeader 4000000000 ascii; echo "1 2 3"; } >"$I1/ascii_points.pcd"
+{ pcdHeader "x y z" "4 4 4" "F F F" "1 1 1" 65536 65537 4295032832 binary; head -c 24 /dev/urandom; } >"$I1/width_times_height.pcd"
+{ pcdHeader "x y z junk" "4 4 4 4" "F F F F" "1 1 1 100000000" 1 1 1 binary; head -c 64 /dev/urandom; } >"$I1/huge_count.pcd"
+{ printf 'ply\nformat binary_little_endian 1.0\nelement vertex 4000000000\nproperty float x\nproperty float y\n'
+  printf 'property float z\nend_header\n'; head -c 12 /dev/urandom; } >"$I1/ply_vertices.ply"
+{ printf 'ply\nformat ascii 1.0\nelement vertex 1000000000\nproperty float x\nproperty float y\nproperty float z\n'
+  printf 'end_header\n1 2 3\n'; } >"$I1/ply_ascii_vertices.ply"
+{ printf 'ply\nformat binary_little_endian 1.0\nelement face 4000000000\nproperty list uchar int vertex_indices\n'
+  printf 'element vertex 3\nproperty float x\nproperty float y\nproperty float z\nend_header\n'; head -c 64 /dev/urandom; } >"$I1/ply_faces_first.ply"
+{ printf 'ply\nformat binary_little_endian 1.0\nelement vertex 100000\n'
+  seq -f 'property float p%g' 1 30000
+  printf 'property float x\nproperty float y\nproperty float z\nend_header\n'; head -c 64 /dev/urandom; } >"$I1/ply_many_properties.ply"
+repeat() { yes "$1" | head -n "$2" | tr '\n' ' '; }
+{ printf 'VERSION 0.7\nFIELDS x y z %s\n' "$(seq -f 'f%g' -s ' ' 1 40000)"
+  printf 'SIZE 4 4 4 %s\nTYPE F F F %s\nCOUNT 1 1 1 %s\n' "$(repeat 4 40000)" "$(repeat F 40000)" "$(repeat 1 40000)"
+  printf 'WIDTH 1000000\nHEIGHT 1\nVIEWPOINT 0 0 0 1 0 0 0\nPOINTS 1000000\nDATA binary\n'; head -c 64 /dev/urandom; } >"$I1/many_fields.pcd"
+refuse 1 q:pcd_agreeing_sizes "agreeing_sizes.pcd" "$PREPARE" "$I1/agreeing_sizes.pcd" -o "$W/work/out/p" --name m
+for scan in max_uncompressed.pcd past_lzf_ratio.pcd compressed_past_file.pcd binary_points.pcd ascii_points.pcd \
+  width_times_height.pcd huge_count.pcd ply_vertices.ply ply_ascii_vertices.ply ply_faces_first.ply \
+  ply_many_properties.ply many_fields.pcd; do
+  refuse 1 "${scan%.*}" "$scan" "$PREPARE" "$I1/$scan" -o "$W/work/out/p" --name m
+done
+refuse 1 tradeoff_agreeing_sizes "agreeing_sizes.pcd" "$TRADEOFF" "$I1/agreeing_sizes.pcd" -o "$W/work/out/t"
+# Model files whose level table declares more than the file holds.
+patchBytes() {  # patchBytes FILE OFFSET BYTES...: a copy of good.oct with bytes replaced
+  cp "$IN/good.oct" "$1"
+  printf "$3" | dd of="$1" bs=1 seek="$2" conv=notrunc status=none
+}
+patchBytes "$I1/huge_level.oct" $((784 + 4)) '\377\377\377\377'
+patchBytes "$I1/huge_leaves.oct" $((784 + 8)) '\377\377\377\377'
+patchBytes "$I1/many_levels.oct" 6 '\377'
+refuse 1 q:oct_huge_level "huge_level.oct" "$RENDER" --file "$I1/huge_level.oct" -o "$W/work/out/x.png"
+refuse 1 oct_huge_leaves "huge_leaves.oct" "$RENDER" --file "$I1/huge_leaves.oct" -o "$W/work/out/x.png"
+refuse 1 oct_many_levels "many_levels.oct" "$RENDER" --file "$I1/many_levels.oct" -o "$W/work/out/x.png"
+
+# --- 3: not a regular file, or past the stated size, for every tool that reads one -------------
+I3=$IN/kind
+mkdir -p "$I3/directory"
+mkfifo "$I3/fifo"
+ln -s loop_b "$I3/loop_a"
+ln -s loop_a "$I3/loop_b"
+ln -s nowhere "$I3/dangling"
+ln -s fifo "$I3/link_to_fifo"
+truncate -s 2G "$I3/sparse_2g.pcd"  # no blocks on disk: 2 GiB of zeros to a reader
+truncate -s 2M "$I3/sparse_2m.json"
+: >"$I3/empty"
+kinds=(/dev/zero fifo directory loop_a dangling link_to_fifo sparse_2g.pcd empty)
+expect_of() {
+  case $1 in
+    /dev/zero) echo "is a character device" ;; fifo | link_to_fifo) echo "is a FIFO" ;;
+    directory) echo "is a directory" ;; loop_a) echo "symlink loop" ;; dangling) echo "dangling symbolic link" ;;
+    sparse_2g.pcd) echo "2147483648 bytes, more than the 1" ;; empty) echo "empty" ;; block) echo "is a block device" ;;
+    socket) echo "is a socket" ;; *) echo "$1" ;;
+  esac
+}
+if [ "$is_root" -eq 1 ]; then  # devices of our own: never the system's /dev nodes as outputs
+  mknod "$I3/block" b 7 250 && kinds+=(block)
+fi
+[ -n "$socket" ] && ln "$socket" "$I3/socket" && kinds+=(socket)
+for kind in "${kinds[@]}"; do
+  path=$kind
+  [[ $kind == /* ]] || path=$I3/$kind
+  tag=${kind##*/}
+  expected=$(expect_of "$kind")
+  q=""
+  [ "$kind" = fifo ] && q="q:"
+  refuse 3 "${q}prepare_scan_$tag" "$expected" "$PREPARE" "$path" -o "$W/work/out/p" --name m
+  refuse 3 "prepare_scene_$tag" "$expected" "$PREPARE" "$IN/good.pcd" --scene "$path" -o "$W/work/out/p" --name m
+  refuse 3 "${q}render_file_$tag" "$expected" "$RENDER" --file "$path" -o "$W/work/out/x.png"
+  refuse 3 "tradeoff_scan_$tag" "$expected" "$TRADEOFF" "$path" -o "$W/work/out/t"
+  [ -n "$VIEW" ] && refuse 3 "view_file_$tag" "$expected" env -u DISPLAY -u WAYLAND_DISPLAY -u SDL_VIDEODRIVER \
+    "$VIEW" --file "$path"
+done
+refuse 3 q:scene_past_1mib "more than the 1 MiB" "$PREPARE" "$IN/good.pcd" --scene "$I3/sparse_2m.json" \
+  -o "$W/work/out/p" --name m
+refuse 3 proc_file_as_scan "status" "$PREPARE" /proc/self/status -o "$W/work/out/p" --name m
+refuse 3 dev_urandom_as_model "is a character device" "$RENDER" --file /dev/urandom -o "$W/work/out/x.png"
+
+# --- 5: ascii data lines that do not parse: an error naming the line ---------------------------
+I5=$IN/lines
+mkdir -p "$I5"
+asciiWith() {  # asciiWith NAME LINE: three points, the second one LINE
+  { xyzHeader 3 ascii; printf '1 2 3\n%s\n7 8 9\n' "$2"; } >"$I5/$1.pcd"
+}
+asciiWith word "10.5 10.5 oops"
+asciiWith missing_column "10.5 10.5"
+asciiWith extra_column "10.5 10.5 1 4"
+asciiWith empty_line ""
+asciiWith hex "0x10 1 2"
+asciiWith comma_decimal "1,5 2 3"
+asciiWith trailing_junk "1 2 3x"
+asciiWith nul "$(printf '1 2 \0013')"
+{ xyzHeader 5 ascii; printf '1 2 3\n4 5 6\n'; } >"$I5/fewer_lines.pcd"
+{ printf 'ply\nformat ascii 1.0\nelement vertex 2\nproperty float x\nproperty float y\nproperty float z\n'
+  printf 'end_header\n1 2 3\n4 5 oops\n'; } >"$I5/ply_word.ply"
+{ printf 'ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\n'
+  printf 'end_header\n1 2 3\n4 5 6\n'; } >"$I5/ply_fewer_lines.ply"
+refuse 5 q:word "line 12" "$PREPARE" "$I5/word.pcd" -o "$W/work/out/p" --name m
+refuse 5 empty_line "empty_line.pcd" "$PREPARE" "$I5/empty_line.pcd" -o "$W/work/out/p" --name m
+for scan in missing_column extra_column hex comma_decimal trailing_junk nul; do
+  refuse 5 "$scan" "line 12" "$PREPARE" "$I5/$scan.pcd" -o "$W/work/out/p" --name m
+done
+refuse 5 fewer_lines "fewer_lines.pcd" "$PREPARE" "$I5/fewer_lines.pcd" -o "$W/work/out/p" --name m
+refuse 5 ply_word "ply_word.ply" "$PREPARE" "$I5/ply_word.ply" -o "$W/work/out/p" --name m
+refuse 5 ply_fewer_lines "ply_fewer_lines.ply" "$PREPARE" "$I5/ply_fewer_lines.ply" -o "$W/work/out/p" --name m
+refuse 5 tradeoff_word "line 12" "$TRADEOFF" "$I5/word.pcd" -o "$W/work/out/t"
+
+# --- 6: a scan larger than the model's size field or smaller than its unit ---------------------
+# Passes when refused as above, or when prepared (exit 0) with the cube edge printed and stored
+# (a version 1 .oct keeps micrometres in bytes 8..11) within 1% of the scan's.
+metricCase() {  # metricCase NAME EDGE_METRES SCAN
+  local name=$1 edge=$2 scan=$3
+  selected "$name" || return 0
+  out "metric_$name"
+  before=$(snapshot)
+  measure "$PREPARE" "$scan" -o "$OUT/m" --name m
+  problems=""
+  if [ "$status" -eq 0 ]; then
+    local printed stored version
+    printed=$(sed -n 's/.*cube edge \([0-9.e+-]*\) m.*/\1/p' "$META/stdout")
+    awk -v p="$printed" -v e="$edge" 'BEGIN { exit !(p > 0.99 * e && p < 1.01 * e) }' ||
+      problems+=" printed cube edge '$printed' m, the scan's is $edge m"
+    version=$(od -An -tu2 -j4 -N2 "$OUT/m/m.oct" | tr -d ' ')
+    if [ "$version" = 1 ]; then
+      stored=$(od -An -tu4 -j8 -N4 "$OUT/m/m.oct" | tr -d ' ')
+      awk -v s="$stored" -v e="$edge" 'BEGIN { exit !(s > 0.99e6 * e && s < 1.01e6 * e) }' ||
+        problems+=" stored ${stored} um, the scan's edge is $edge m"
+    fi
+    rm -rf "$OUT/m"
+    before=$(snapshot)  # a model written on purpose is not a leftover
+  else
+    [ "$status" -eq 1 ] || problems+=" exit status $status"
+    [ "$lines" -eq 1 ] || problems+=" $lines lines on stderr (want 1)"
+  fi
+  judgeCost
+  recordCase 6 "$name" "$problems"
+}
+I6=$IN/metric
+mkdir -p "$I6"
+{ xyzHeader 3 ascii; printf '0 0 0\n5000 1 1\n2500 3 2\n'; } >"$I6/five_km.pcd"
+{ xyzHeader 3 ascii; printf '0 0 0\n1e6 1 1\n-1e6 3 2\n'; } >"$I6/two_thousand_km.pcd"
+{ xyzHeader 3 ascii; printf '0 0 0\n0.0000002 0 0\n0 0.0000001 0\n'; } >"$I6/sub_micrometre.pcd"
+metricCase five_km 5000 "$I6/five_km.pcd"
+metricCase two_thousand_km 2000000 "$I6/two_thousand_km.pcd"
+metricCase sub_micrometre 0.0000002 "$I6/sub_micrometre.pcd"
