@@ -1,3 +1,4 @@
+# shellcheck shell=bash disable=SC2154,SC2034,SC2059  # lib.sh sets the variables; printf formats are built on purpose
 # The hostile sweep's input classes (sourced by scripts/hostile-sweep after tests/hostile/lib.sh):
 # files that cost far more than they weigh (issue 16 item 1), files that are not files or are too
 # big (3), ascii data lines that do not parse (5) and scans whose metric size the model must hold
@@ -85,7 +86,7 @@ expect_of() {
     socket) echo "is a socket" ;; *) echo "$1" ;;
   esac
 }
-if [ "$is_root" -eq 1 ]; then  # devices of our own: never the system's /dev nodes as outputs
+if [ "$can_mknod" -eq 1 ]; then  # devices of our own: never the system's /dev nodes as outputs
   mknod "$I3/block" b 7 250 && kinds+=(block)
 fi
 [ -n "$socket" ] && ln "$socket" "$I3/socket" && kinds+=(socket)

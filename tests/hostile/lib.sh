@@ -1,3 +1,4 @@
+# shellcheck shell=bash disable=SC2034  # the variables set here are read by the class files
 # The hostile sweep's machinery (sourced by scripts/hostile-sweep): runs one case under measure
 # and judges it. A refusal passes when the tool
 #   - exits with status 1 (not 0, not a signal, not the hang timeout),
@@ -45,8 +46,8 @@ sweepInit() {
   trap 'rm -rf "$W"' EXIT
   META=$W/meta IN=$W/work/in
   mkdir -p "$META" "$IN" "$W/work/out"
-  is_root=0
-  [ "$(id -u)" -eq 0 ] && is_root=1
+  can_mknod=0  # device nodes of our own (root, outside a container that forbids them)
+  mknod "$META/null" c 1 3 2>/dev/null && can_mknod=1
   socket=""  # one UNIX socket, hard-linked wherever a case needs one
   if command -v python3 >/dev/null &&
     python3 -c 'import socket, sys; socket.socket(socket.AF_UNIX).bind(sys.argv[1])' "$META/socket"; then

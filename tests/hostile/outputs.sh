@@ -1,3 +1,4 @@
+# shellcheck shell=bash disable=SC2154,SC2034,SC2059  # lib.sh sets the variables; printf formats are built on purpose
 # The hostile sweep's output classes (sourced by scripts/hostile-sweep after tests/hostile/lib.sh):
 # outputs that are not regular files, for every tool that writes (issue 16 item 9), and signals
 # while the preparer puts its files in place (10).
@@ -8,7 +9,7 @@ sweepClass 10 "a signal while the preparer writes: old set or new set, no stagin
 # Special files made inside the case's output folder: never the system's own /dev nodes (as root
 # a failure would destroy them). Each kind: how to make it at $1, and the message expected.
 special_kinds=(fifo directory loop dangling link_to_fifo)
-[ "$is_root" -eq 1 ] && special_kinds+=(char_device)
+[ "$can_mknod" -eq 1 ] && special_kinds+=(char_device)
 [ -n "$socket" ] && special_kinds+=(socket)
 makeSpecial() {  # makeSpecial KIND PATH
   case $1 in
@@ -123,7 +124,7 @@ interruptCase() {  # interruptCase NAME SIGNAL DELAY_SECONDS
   problems=""
   local now
   now=$(cd "$OUT" && md5sum -- * 2>/dev/null | sort)
-  [ "$now" = "$old_set" ] || [ "$now" = "$new_set" ] || problems+=" a mix of old and new files: $(ls "$OUT" | tr '\n' ' ')"
+  [ "$now" = "$old_set" ] || [ "$now" = "$new_set" ] || problems+=" a mix of old and new files: $(find "$OUT" -mindepth 1 -printf '%P ')"
   [ -z "$(find "$OUT" -name '.octopoint-staging-*' -o -name '.*.tmp-*')" ] || problems+=" staging or temporary left"
   awk -v a="$cpu" -v b=10 'BEGIN { exit !(a > b) }' && problems+=" ${cpu} s CPU"
   [ $((SECONDS - start)) -le "$kHangSeconds" ] || problems+=" took $((SECONDS - start)) s"
