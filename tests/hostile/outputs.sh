@@ -124,6 +124,10 @@ interruptCase() {  # interruptCase NAME SIGNAL DELAY_SECONDS
   problems=""
   local now
   now=$(cd "$OUT" && md5sum -- * 2>/dev/null | sort)
+  local which="a mix"
+  [ "$now" = "$old_set" ] && which="the old set"
+  [ "$now" = "$new_set" ] && which="the new set"
+  message="status $status, $which|$message"
   [ "$now" = "$old_set" ] || [ "$now" = "$new_set" ] || problems+=" a mix of old and new files: $(find "$OUT" -mindepth 1 -printf '%P ')"
   [ -z "$(find "$OUT" -name '.octopoint-staging-*' -o -name '.*.tmp-*')" ] || problems+=" staging or temporary left"
   awk -v a="$cpu" -v b=10 'BEGIN { exit !(a > b) }' && problems+=" ${cpu} s CPU"
