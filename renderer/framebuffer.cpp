@@ -5,7 +5,33 @@
 
 namespace octopoint {
 
-void FrameView::clear() { std::fill(pixel_, pixel_ + pixelCount(), kEmpty); }
+void FrameView::clear() {
+  if (drawn_.empty()) return;
+  const auto columns = static_cast<std::size_t>(drawn_.x_end - drawn_.x_begin);
+  std::uint32_t* const first = pixel_ + indexOf(drawn_.x_begin, drawn_.y_begin);
+  const auto rows = static_cast<std::size_t>(drawn_.y_end - drawn_.y_begin);
+  if (columns == static_cast<std::size_t>(width_)) {  // whole rows: one contiguous run
+    std::fill(first, first + columns * rows, kEmpty);
+  } else {
+    for (std::size_t row = 0; row < rows; ++row) {
+      std::uint32_t* const begin = first + row * static_cast<std::size_t>(width_);
+      std::fill(begin, begin + columns, kEmpty);
+    }
+  }
+  drawn_ = PixelRect{};
+}
+
+void FrameView::widenDrawnRect(const PixelRect& bounds) {
+  const PixelRect clipped{std::max<std::int32_t>(bounds.x_begin, 0), std::min(bounds.x_end, width_),
+                          std::max<std::int32_t>(bounds.y_begin, 0), std::min(bounds.y_end, height_)};
+  if (clipped.empty()) return;
+  if (drawn_.empty()) {
+    drawn_ = clipped;
+    return;
+  }
+  drawn_ = PixelRect{std::min(drawn_.x_begin, clipped.x_begin), std::max(drawn_.x_end, clipped.x_end),
+                     std::min(drawn_.y_begin, clipped.y_begin), std::max(drawn_.y_end, clipped.y_end)};
+}
 
 namespace {
 
@@ -19,6 +45,7 @@ Framebuffer::Framebuffer(std::int32_t width, std::int32_t height)
     : FrameView(nullptr, validSize(width, height) ? width : 0, validSize(width, height) ? height : 0),
       storage_(pixelCount(), kEmpty) {
   pixel_ = storage_.data();
+  drawn_ = PixelRect{};  // every pixel starts kEmpty
 }
 
 Framebuffer::Framebuffer(const FrameSetup& setup) : Framebuffer(setup.width, setup.height) {}
@@ -33,6 +60,7 @@ Framebuffer::Framebuffer(Framebuffer&& other) noexcept
   pixel_ = storage_.data();
   other.pixel_ = nullptr;
   other.width_ = other.height_ = 0;
+  other.drawn_ = PixelRect{};
 }
 
 Framebuffer& Framebuffer::operator=(const Framebuffer& other) {
@@ -51,6 +79,7 @@ Framebuffer& Framebuffer::operator=(Framebuffer&& other) noexcept {
     pixel_ = storage_.data();
     other.pixel_ = nullptr;
     other.width_ = other.height_ = 0;
+    other.drawn_ = PixelRect{};
   }
   return *this;
 }

@@ -6,6 +6,13 @@
 // decoders visit, batch and reorder freely and still draw bit-identical frames. One array instead
 // of two halves the memory a plotted point touches. Memory is allocated once, at construction; a
 // frame only clears and writes it, so drawing never allocates.
+//
+// A frame keeps the rectangle its writers may have written since the last clear (drawnRect):
+// every pixel outside it is kEmpty, so clear() empties that rectangle only, and a frame's clear
+// costs what was drawn, not the frame's size (a zoomed-out model on a 1920x1080 frame covers a
+// few percent of it). Writers say where they write: the decoders through PlotTarget with the
+// set-up's bounds (renderer/framebuffer_plot.h), O(1) per frame; pixelData() without bounds makes
+// the whole frame count as drawn. Readers see kEmpty outside, as if every pixel had been cleared.
 
 #include <cstdint>
 #include <span>
@@ -15,6 +22,16 @@
 #include "renderer/model.h"
 
 namespace octopoint {
+
+// Columns [x_begin, x_end) and rows [y_begin, y_end) of a frame; empty when either range is.
+struct PixelRect {
+  std::int32_t x_begin = 0;
+  std::int32_t x_end = 0;
+  std::int32_t y_begin = 0;
+  std::int32_t y_end = 0;
+
+  bool empty() const { return x_begin >= x_end || y_begin >= y_end; }
+};
 
 // A frame's pixels in memory someone else owns: what the decoders, the hole filler and the band
 // renderer (renderer/band_renderer.h) draw into. A band renderer points it at a caller-provided band
@@ -33,13 +50,17 @@ class FrameView {
     return static_cast<std::uint8_t>(word & 0xFF);
   }
 
-  // `pixels` holds width * height words, row-major.
+  // `pixels` holds width * height words, row-major. What they hold is not known, so the whole view
+  // counts as drawn until the first clear.
   FrameView(std::uint32_t* pixels, std::int32_t width, std::int32_t height)
-      : pixel_(pixels), width_(width), height_(height) {}
+      : pixel_(pixels), width_(width), height_(height), drawn_{0, width, 0, height} {}
 
   std::int32_t width() const { return width_; }
   std::int32_t height() const { return height_; }
+  // Empties every pixel, by writing kEmpty over drawnRect() only (the rest already is).
   void clear();
+  // The pixels written since the last clear may lie only in here; every other pixel is kEmpty.
+  const PixelRect& drawnRect() const { return drawn_; }
 
   // Keeps the nearest point per pixel; off-screen points are dropped. `depth_key` <= kMaxDepthKey.
   void plot(std::int32_t x, std::int32_t y, std::uint32_t depth_key, std::uint8_t colour_index) {
@@ -47,6 +68,7 @@ class FrameView {
         static_cast<std::uint32_t>(y) >= static_cast<std::uint32_t>(height_)) {
       return;
     }
+    widenDrawnRect({x, x + 1, y, y + 1});
     std::uint32_t& word = pixel_[indexOf(x, y)];
     const std::uint32_t candidate = pack(depth_key, colour_index);
     if (candidate < word) word = candidate;
@@ -60,8 +82,15 @@ class FrameView {
   }
   // Row-major packed words, kEmpty where nothing was drawn.
   std::span<const std::uint32_t> pixels() const { return {pixel_, pixelCount()}; }
-  // Raw access for the decoders' plotters (renderer/framebuffer_plot.h) and the hole filler.
-  std::uint32_t* pixelData() { return pixel_; }
+  // Raw write access for a writer that writes only inside `bounds` (clipped to the frame here):
+  // the decoders' plotters (renderer/framebuffer_plot.h) with their set-up's bounds, the hole
+  // filler inside drawnRect(). Widens drawnRect() to include them.
+  std::uint32_t* pixelsToDraw(const PixelRect& bounds) {
+    widenDrawnRect(bounds);
+    return pixel_;
+  }
+  // Raw write access anywhere: the whole frame counts as drawn until the next clear.
+  std::uint32_t* pixelData() { return pixelsToDraw({0, width_, 0, height_}); }
 
  protected:
   std::size_t pixelCount() const {
@@ -71,12 +100,15 @@ class FrameView {
     return static_cast<std::size_t>(y) * static_cast<std::size_t>(width_) + static_cast<std::size_t>(x);
   }
 
+  void widenDrawnRect(const PixelRect& bounds);
+
   std::uint32_t* pixel_;
   std::int32_t width_;
   std::int32_t height_;
+  PixelRect drawn_;  // see drawnRect(); empty: the whole frame is kEmpty
 };
 
-// A frame that owns its pixels (allocated once, at construction).
+// A frame that owns its pixels (allocated once, at construction, all kEmpty: nothing drawn yet).
 class Framebuffer : public FrameView {
  public:
   // A frame of width x height pixels, each 1..kMaxViewportSide (renderer/camera.h); any other size

@@ -8,14 +8,18 @@
 
 #include "renderer/camera.h"
 #include "renderer/framebuffer.h"
+#include "renderer/subtree_clip.h"
 
 namespace octopoint {
 
 // What every integer decoder needs to write pixels: the frame's words and size, and the set-up's
-// screen (Q(32-F).F) and depth-key formats.
+// screen (Q(32-F).F) and depth-key formats. Taking them tells the frame where the decoder may
+// write (FrameView::drawnRect): the pixels of the set-up's whole cube, root +- the reach of level
+// 0 widened by the splat (one pixel per leaf lies inside that too: a splat's first pixel offset is
+// <= 0 <= its last's), so the next clear empties no more than that.
 struct PlotTarget {
   PlotTarget(FrameView& frame, const FrameSetup& setup)
-      : pixel(frame.pixelData()),
+      : pixel(frame.pixelsToDraw(SubtreeClip(setup, setup.splat).pixelBounds(0, setup.root))),
         width(frame.width()),
         height(frame.height()),
         fraction_bits(setup.fraction_bits),

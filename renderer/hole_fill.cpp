@@ -87,7 +87,8 @@ HoleFillCounts fillHoleRows(FrameView& window, std::int32_t row_begin, std::int3
   }
   constexpr std::int32_t kRows = kHoleFillHistoryRows;
   constexpr std::int32_t kPad = kHoleFillPadColumns;
-  std::uint32_t* const pixels = window.pixelData();
+  // A pixel is filled only between covered pixels, so inside the window's drawn rectangle.
+  std::uint32_t* const pixels = window.pixelsToDraw(window.drawnRect());
   const std::ptrdiff_t stride = width + 2 * kPad;
   // The original words of rows y - 2 .. y + 2 live in a ring of kRows slots, kPad columns in; rows
   // outside the window and the padding columns are empty, so no read needs a bounds check. The

@@ -16,6 +16,7 @@
 #include <cstdlib>
 
 #include "renderer/camera.h"
+#include "renderer/framebuffer.h"
 
 namespace octopoint {
 
@@ -25,7 +26,8 @@ class SubtreeClip {
  public:
   // `splat`: the footprint the decoder draws (one pixel per leaf by default).
   explicit SubtreeClip(const FrameSetup& setup, const SplatFootprint& splat = SplatFootprint{})
-      : x_end_(std::int64_t{setup.width} << setup.fraction_bits),
+      : fraction_bits_(setup.fraction_bits),
+        x_end_(std::int64_t{setup.width} << setup.fraction_bits),
         y_end_(std::int64_t{setup.height} << setup.fraction_bits),
         low_x_(splat.offset_x),
         low_y_(splat.offset_y),
@@ -76,7 +78,24 @@ class SubtreeClip {
     return Clip::kStraddling;
   }
 
+  // The pixels the leaves of the subtree at `level` centred at `centre` can write (their splats
+  // included), whether on screen or not: from the first pixel of the leftmost possible leaf to
+  // the last of the rightmost, per axis. Unclipped (Framebuffer::pixelsToDraw clips); 64-bit
+  // edges shifted to pixels, saturated to 32 bits.
+  PixelRect pixelBounds(int level, const Vec3& centre) const {
+    const std::int64_t rx = reach_x_[static_cast<std::size_t>(level)];
+    const std::int64_t ry = reach_y_[static_cast<std::size_t>(level)];
+    return PixelRect{toPixel(centre.x - rx + low_x_), toPixel(centre.x + rx + high_x_) + 1,
+                     toPixel(centre.y - ry + low_y_), toPixel(centre.y + ry + high_y_) + 1};
+  }
+
  private:
+  std::int32_t toPixel(std::int64_t position) const {  // floor(position / 2^F), within 32 bits
+    return static_cast<std::int32_t>(std::clamp<std::int64_t>(
+        position >> fraction_bits_, -(std::int64_t{1} << 30), std::int64_t{1} << 30));
+  }
+
+  int fraction_bits_;
   std::int64_t x_end_, y_end_;
   std::int64_t low_x_, low_y_, high_x_, high_y_;
   bool narrow_ = false;  // every bound fits 32 bits: classify in 32-bit arithmetic
