@@ -17,9 +17,10 @@
 // Subtrees straddling the frame's edge, and a model's last leaves (the eight-byte colour load
 // would read past them), use the scalar checked plot; off-screen subtrees are skipped, as in
 // fixed_fast. The abort flag is polled at kAbortCheckLevel.
-// Splats (FrameSetup::splat active): the same walk, instantiated a second time, emits each leaf's
-// splat's first pixel (its position plus the footprint's offset, then shifted), and the batch
-// writes a columns x rows rectangle per point, eight pixels of a row per vector min; the clip's
+// Splats (FrameSetup::splat active): the same walk, instantiated again, emits each leaf's splat
+// from its first pixel (its position plus the footprint's offset, then shifted): up to 2 x 2
+// pixels as single-pixel entries, exactly the splat's pixels (renderer/simd_emit.h), larger ones
+// as rectangles written by a kernel chosen per footprint (renderer/splat_batch.h); the clip's
 // reach includes the splat. Frames equal fixed_fast's, bit for bit.
 #include <algorithm>
 #include <array>
@@ -30,38 +31,32 @@
 #include "renderer/framebuffer_plot.h"
 #include "renderer/render.h"
 #include "renderer/render_check.h"
+#include "renderer/splat_batch.h"
 #include "renderer/splat_plot.h"
 #include "renderer/subtree_clip.h"
 
 #if defined(__x86_64__) && defined(__GNUC__)
 #include <immintrin.h>
 
+#include "renderer/simd_emit.h"
+
 namespace octopoint {
 namespace {
 
-// kKeep[mask]: the lanes of the set bits of `mask`, in order, then zeros: the vpermd control that
-// moves a leaf parent's set children to the front.
-struct LaneOrder {
-  std::uint8_t lane[8];
-};
-constexpr std::array<LaneOrder, 256> makeKeepTable() {
-  std::array<LaneOrder, 256> table{};
-  for (unsigned mask = 0; mask < 256; ++mask) {
-    unsigned kept = 0;
-    for (std::uint8_t child = 0; child < 8; ++child) {
-      if (mask >> child & 1u) table[mask].lane[kept++] = child;
-    }
-  }
-  return table;
-}
-constexpr std::array<LaneOrder, 256> kKeep = makeKeepTable();
+using simd::BoxChildren;
+using simd::Emit;
+using simd::EmitMode;
+using simd::Emitter;
+using simd::LeafLanes;
+using simd::SplatBox;
 
-constexpr int kBatch = 1024;  // points per batch: 8 KiB of indices and words, in L1
+constexpr int kBatch = 2048;  // entries per batch (index and word): 16 KiB
 
 // The most leaves below one node whose subtree the unchecked walk emits in one call: a node three
-// levels above the leaves (8^3). A batch with less room left is plotted first.
+// levels above the leaves (8^3). A batch with less room left is plotted first: one pixel per leaf
+// plots at most 1024 entries at a time, 8 KiB of indices and words, in L1.
 constexpr int kMostLeavesPerCall = 512;
-static_assert(kBatch >= kMostLeavesPerCall);
+constexpr int kPixelBatchLimit = 1024 - kMostLeavesPerCall;
 constexpr std::int64_t kSplatPixelsPerFlush = 1 << 16;
 
 struct SimdFrame {
@@ -84,7 +79,9 @@ struct SimdFrame {
   // (and so between two polls of the abort flag): up to 512 leaves per call while a splat has at
   // most 128 pixels, else one leaf parent's 8 per call.
   int splat_levels_inline = 3;
-  int splat_batch_limit = kBatch - kMostLeavesPerCall;
+  int splat_batch_limit = kPixelBatchLimit;
+  SplatBatchPlot plot_splats = nullptr;  // Emit::kSplatRects: the kernel for this footprint
+  SplatBox box;                          // Emit::kSplatPixels: the footprint's box
   const std::atomic<bool>* abort;
   bool aborted = false;
   const std::uint8_t* leaf_end;
@@ -97,8 +94,9 @@ struct SimdFrame {
   int batched = 0;
   alignas(32) std::uint32_t batch_index[kBatch + 8];
   alignas(32) std::uint32_t batch_word[kBatch + 8];
-  // The splat path only: each point's columns (low 16 bits) and rows (high 16 bits), both <= 8192.
-  alignas(32) std::uint32_t batch_extent[kBatch + 8];
+  // Emit::kSplatRects only: each point's columns (low 16 bits) and rows (high 16 bits), both <=
+  // 8192; such a batch holds at most kPixelBatchLimit + kMostLeavesPerCall points.
+  alignas(32) std::uint32_t batch_extent[kPixelBatchLimit + kMostLeavesPerCall + 8];
 };
 
 __attribute__((target("avx2"))) void plotBatch(SimdFrame& f) {
@@ -121,45 +119,19 @@ __attribute__((target("avx2"))) void plotBatch(SimdFrame& f) {
 }
 
 // The splat path's batch: each point's index is its splat's first pixel, on screen with the whole
-// rectangle (the clip proved it). A row is written eight pixels per vector min. The last, partial
-// chunk of a row is loaded whole, and its lanes outside the rectangle are stored back unchanged
-// (a blend, not a masked store: those are slow on some CPUs), so nothing outside the rectangle
-// changes; only a chunk that would pass the frame's last pixel goes pixel by pixel.
-__attribute__((target("avx2"))) void plotSplatBatch(SimdFrame& f) {
-  std::uint32_t* const pixel = f.target.pixel;
-  const std::size_t width = static_cast<std::size_t>(f.target.width);
-  const std::size_t end = width * static_cast<std::size_t>(f.target.height);
-  const __m256i lane = _mm256_setr_epi32(0, 1, 2, 3, 4, 5, 6, 7);
-  for (int i = 0; i < f.batched; ++i) {
-    const std::uint32_t word_value = f.batch_word[i];
-    const __m256i word = _mm256_set1_epi32(static_cast<std::int32_t>(word_value));
-    const std::int32_t columns = static_cast<std::int32_t>(f.batch_extent[i] & 0xFFFF);
-    const std::int32_t rows = static_cast<std::int32_t>(f.batch_extent[i] >> 16);
-    const std::int32_t full = columns & ~7;
-    const __m256i tail = _mm256_cmpgt_epi32(_mm256_set1_epi32(columns - full), lane);
-    std::size_t at = f.batch_index[i];
-    for (std::int32_t r = 0; r < rows; ++r, at += width) {
-      std::uint32_t* const row = pixel + at;
-      for (std::int32_t x = 0; x < full; x += 8) {
-        auto* chunk = reinterpret_cast<__m256i*>(row + x);
-        _mm256_storeu_si256(chunk, _mm256_min_epu32(_mm256_loadu_si256(chunk), word));
-      }
-      if (full == columns) continue;
-      if (at + static_cast<std::size_t>(full) + 8 <= end) {
-        auto* chunk = reinterpret_cast<__m256i*>(row + full);
-        const __m256i old = _mm256_loadu_si256(chunk);
-        _mm256_storeu_si256(chunk, _mm256_blendv_epi8(old, _mm256_min_epu32(old, word), tail));
-      } else {
-        for (std::int32_t x = full; x < columns; ++x) row[x] = std::min(row[x], word_value);
-      }
-    }
-  }
+// rectangle (the clip proved it); the frame's kernel (renderer/splat_batch.h) writes the
+// rectangles.
+void plotSplatBatch(SimdFrame& f) {
+  f.plot_splats(SplatBatch{
+      f.target.pixel, static_cast<std::size_t>(f.target.width),
+      static_cast<std::size_t>(f.target.width) * static_cast<std::size_t>(f.target.height),
+      f.batch_index, f.batch_word, f.batch_extent, f.batched});
   f.batched = 0;
 }
 
-template <bool kSplat>
+template <EmitMode kEmit>
 void flushBatch(SimdFrame& f) {
-  if constexpr (kSplat) {
+  if constexpr (kEmit.emit == Emit::kSplatRects) {
     plotSplatBatch(f);
   } else {
     plotBatch(f);
@@ -181,26 +153,16 @@ void plotChildrenChecked(const SimdFrame& f, int level, Vec3 c, unsigned mask,
   }
 }
 
-// Where the unchecked walk appends: the batch's two cursors and the next leaf's colour. Locals of
-// the caller, kept in registers: a store to the batch may alias any 32-bit field of SimdFrame.
-struct Emitter {
-  std::uint32_t* index;
-  std::uint32_t* word;
-  const std::uint8_t* colours;
-  std::uint32_t* extent;  // the splat path only
-};
-
-// The frame's formats as vectors, loaded into registers once per call.
-struct LeafLanes {
-  __m256i width;
-  __m128i fraction_bits, depth_shift;
-  __m256i span_x, span_y;  // the splat path only: SplatFootprint::span_x, span_y
-};
-
 __attribute__((target("avx2"))) inline LeafLanes leafLanes(const SimdFrame& f) {
-  return {_mm256_set1_epi32(f.target.width), _mm_cvtsi32_si128(f.target.fraction_bits),
-          _mm_cvtsi32_si128(f.target.depth_shift), _mm256_set1_epi32(f.splat.footprint.span_x),
-          _mm256_set1_epi32(f.splat.footprint.span_y)};
+  return {_mm256_set1_epi32(f.target.width),
+          _mm_cvtsi32_si128(f.target.fraction_bits),
+          _mm_cvtsi32_si128(f.target.depth_shift),
+          _mm256_set1_epi32(f.splat.footprint.span_x),
+          _mm256_set1_epi32(f.splat.footprint.span_y),
+          _mm256_set1_epi32(f.splat.footprint.columns - 1),
+          _mm256_set1_epi32(f.splat.footprint.rows - 1),
+          static_cast<std::uint32_t>(f.target.width),
+          &f.box};
 }
 
 // The centre's z plus the depth bias (PlotTarget::biasedDepth) in every lane: adding a child's
@@ -209,50 +171,9 @@ __attribute__((target("avx2"))) inline __m256i biasedDepthLanes(const SimdFrame&
   return _mm256_set1_epi32(static_cast<std::int32_t>(f.target.biasedDepth(c.z)));
 }
 
-// A leaf parent whose children all land on screen, given its eight children's positions per axis
-// (x, y in Q(32-F).F, plus the splat's offsets when kSplat; z in Q(32-F).F plus the depth bias),
-// appends its set children (`mask`) to the batch, their colours being the next popcount(mask)
-// bytes at out.colours. With kSplat, the index is the splat's first pixel and each point's
-// columns and rows go to out.extent.
-template <bool kSplat>
-__attribute__((target("avx2"), always_inline)) inline void emitChildren(
-    const LeafLanes& lanes, __m256i x, __m256i y, __m256i biased_z, unsigned mask, Emitter& out) {
-  // Pixel column and row: floor(x / 2^F); index = row * width + column (< 2^26).
-  const __m256i column = _mm256_sra_epi32(x, lanes.fraction_bits);
-  const __m256i row = _mm256_sra_epi32(y, lanes.fraction_bits);
-  const __m256i index = _mm256_add_epi32(_mm256_mullo_epi32(row, lanes.width), column);
-  // Depth key (FrameSetup::depthKey): (z + bias) >> shift, unsigned, mod 2^32.
-  const __m256i key = _mm256_srl_epi32(biased_z, lanes.depth_shift);
-  const __m256i keep =
-      _mm256_cvtepu8_epi32(_mm_loadl_epi64(reinterpret_cast<const __m128i*>(&kKeep[mask])));
-  const __m256i colour =
-      _mm256_cvtepu8_epi32(_mm_loadl_epi64(reinterpret_cast<const __m128i*>(out.colours)));
-  const __m256i word =
-      _mm256_or_si256(_mm256_slli_epi32(_mm256_permutevar8x32_epi32(key, keep), 8), colour);
-  _mm256_storeu_si256(reinterpret_cast<__m256i*>(out.index),
-                      _mm256_permutevar8x32_epi32(index, keep));
-  _mm256_storeu_si256(reinterpret_cast<__m256i*>(out.word), word);
-  const int children = std::popcount(mask);
-  if constexpr (kSplat) {
-    // Last column and row (SplatFootprint): (x + span) >> F; count = last - first + 1 (< 2^16).
-    const __m256i columns = _mm256_sub_epi32(
-        _mm256_sra_epi32(_mm256_add_epi32(x, lanes.span_x), lanes.fraction_bits), column);
-    const __m256i rows = _mm256_sub_epi32(
-        _mm256_sra_epi32(_mm256_add_epi32(y, lanes.span_y), lanes.fraction_bits), row);
-    const __m256i one = _mm256_set1_epi32(1);
-    const __m256i extent = _mm256_or_si256(_mm256_add_epi32(columns, one),
-                                           _mm256_slli_epi32(_mm256_add_epi32(rows, one), 16));
-    _mm256_storeu_si256(reinterpret_cast<__m256i*>(out.extent), _mm256_permutevar8x32_epi32(extent, keep));
-    out.extent += children;
-  }
-  out.index += children;
-  out.word += children;
-  out.colours += children;
-}
-
 // The leaf parents below a grandparent at `level`, centred at `c`, with child mask `mask` (already
 // read), whose subtree is on screen: reads their masks from `node` on, returns the node after.
-template <bool kSplat>
+template <EmitMode kEmit>
 __attribute__((target("avx2"), always_inline)) inline const std::uint8_t* emitGrandparent(
     const SimdFrame& f, const LeafLanes& lanes, int level, Vec3 c, unsigned mask,
     const std::uint8_t* node, Emitter& out) {
@@ -262,17 +183,19 @@ __attribute__((target("avx2"), always_inline)) inline const std::uint8_t* emitGr
   const __m256i biased_cz = biasedDepthLanes(f, c);
   for (; mask != 0; mask &= mask - 1) {
     const auto k = static_cast<std::size_t>(std::countr_zero(mask));
-    emitChildren<kSplat>(lanes, _mm256_add_epi32(cx, f.grandchild_lanes[0][l][k]),
-                 _mm256_add_epi32(cy, f.grandchild_lanes[1][l][k]),
-                 _mm256_add_epi32(biased_cz, f.grandchild_lanes[2][l][k]), *node++, out);
+    simd::emitChildren<kEmit>(lanes, _mm256_add_epi32(cx, f.grandchild_lanes[0][l][k]),
+                              _mm256_add_epi32(cy, f.grandchild_lanes[1][l][k]),
+                              _mm256_add_epi32(biased_cz, f.grandchild_lanes[2][l][k]), *node++,
+                              out);
   }
   return node;
 }
 
-template <bool kChecked, bool kSplat>
+template <bool kChecked, EmitMode kEmit>
 __attribute__((target("avx2"))) const std::uint8_t* visit(SimdFrame& f, int level, Vec3 c,
                                                           const std::uint8_t* node,
                                                           const std::uint8_t*& leaf) {
+  constexpr bool kSplat = kEmit.emit != Emit::kPixel;
   if (level <= kAbortCheckLevel && f.abort != nullptr) {
     if (!f.aborted && level == kAbortCheckLevel)
       f.aborted = f.abort->load(std::memory_order_relaxed);
@@ -290,7 +213,7 @@ __attribute__((target("avx2"))) const std::uint8_t* visit(SimdFrame& f, int leve
         skipSubtree(node, leaf, level, f.levels);
         return node;
       case Clip::kInside:
-        return visit<false, kSplat>(f, level, c, node, leaf);
+        return visit<false, kEmit>(f, level, c, node, leaf);
       case Clip::kStraddling:
         break;
     }
@@ -306,10 +229,10 @@ __attribute__((target("avx2"))) const std::uint8_t* visit(SimdFrame& f, int leve
   // Splats: large ones emit a leaf parent per call and flush sooner (SimdFrame::splat_levels_inline,
   // splat_batch_limit), so the pixels written between two polls stay few.
   const int levels_inline = kSplat ? f.splat_levels_inline : 3;
-  const int batch_limit = kSplat ? f.splat_batch_limit : kBatch - kMostLeavesPerCall;
+  const int batch_limit = kSplat ? f.splat_batch_limit : kPixelBatchLimit;
   if (!kChecked && may_inline && levels_below <= levels_inline &&
       f.leaf_end - leaf >= (std::ptrdiff_t{1} << (3 * levels_below))) {
-    if (f.batched > batch_limit) flushBatch<kSplat>(f);
+    if (f.batched > batch_limit) flushBatch<kEmit>(f);
     const LeafLanes lanes = leafLanes(f);
     if constexpr (kSplat) {  // positions shifted to the splat's first pixel (mod 2^32, as lanes add)
       c.x += f.splat.footprint.offset_x;
@@ -318,18 +241,19 @@ __attribute__((target("avx2"))) const std::uint8_t* visit(SimdFrame& f, int leve
     Emitter out{f.batch_index + f.batched, f.batch_word + f.batched, leaf, f.batch_extent + f.batched};
     if (levels_below == 1) {
       const auto l = static_cast<std::size_t>(level);
-      emitChildren<kSplat>(lanes, _mm256_add_epi32(_mm256_set1_epi32(c.x), f.child_lanes[0][l]),
-                   _mm256_add_epi32(_mm256_set1_epi32(c.y), f.child_lanes[1][l]),
-                   _mm256_add_epi32(biasedDepthLanes(f, c), f.child_lanes[2][l]), mask, out);
+      simd::emitChildren<kEmit>(
+          lanes, _mm256_add_epi32(_mm256_set1_epi32(c.x), f.child_lanes[0][l]),
+          _mm256_add_epi32(_mm256_set1_epi32(c.y), f.child_lanes[1][l]),
+          _mm256_add_epi32(biasedDepthLanes(f, c), f.child_lanes[2][l]), mask, out);
     } else if (levels_below == 2) {
-      node = emitGrandparent<kSplat>(f, lanes, level, c, mask, node, out);
+      node = emitGrandparent<kEmit>(f, lanes, level, c, mask, node, out);
     } else {
       const auto& offsets = (*f.offsets)[static_cast<std::size_t>(level)];
       for (; mask != 0; mask &= mask - 1) {
         const unsigned grandparent_mask = *node++;
-        node = emitGrandparent<kSplat>(f, lanes, level + 1,
-                               c + offsets[static_cast<std::size_t>(std::countr_zero(mask))],
-                               grandparent_mask, node, out);
+        node = emitGrandparent<kEmit>(f, lanes, level + 1,
+                                      c + offsets[static_cast<std::size_t>(std::countr_zero(mask))],
+                                      grandparent_mask, node, out);
       }
     }
     f.batched = static_cast<int>(out.index - f.batch_index);
@@ -342,25 +266,66 @@ __attribute__((target("avx2"))) const std::uint8_t* visit(SimdFrame& f, int leve
   }
   const auto& offsets = (*f.offsets)[static_cast<std::size_t>(level)];
   for (; mask != 0; mask &= mask - 1) {
-    node = visit<kChecked, kSplat>(
+    node = visit<kChecked, kEmit>(
         f, level + 1, c + offsets[static_cast<std::size_t>(std::countr_zero(mask))], node, leaf);
     if (kSplat && f.aborted) return node;
   }
   return node;
 }
 
+// The walk for Emit::kSplatPixels: unrolled for the common small boxes (the footprints of a turned
+// model from 2x1 to 3x3 pixels), the frame's box from SimdFrame otherwise.
+void drawBoxes(SimdFrame& f, const FrameSetup& setup, const LevelView& level, std::int32_t columns,
+               std::int32_t rows) {
+  const std::uint8_t* leaf = level.leaves.data();
+  const std::uint8_t* const nodes = level.nodes.data();
+  const auto is = [&](std::int32_t c, std::int32_t r) { return columns == c && rows == r; };
+  if (is(2, 1)) {
+    visit<true, EmitMode{Emit::kSplatPixels, 2, 1}>(f, 0, setup.root, nodes, leaf);
+  } else if (is(1, 2)) {
+    visit<true, EmitMode{Emit::kSplatPixels, 1, 2}>(f, 0, setup.root, nodes, leaf);
+  } else if (is(2, 2)) {
+    visit<true, EmitMode{Emit::kSplatPixels, 2, 2}>(f, 0, setup.root, nodes, leaf);
+  } else {
+    visit<true, EmitMode{Emit::kSplatPixels}>(f, 0, setup.root, nodes, leaf);
+  }
+}
+
+// How this frame's leaves are emitted, and for splats the batch's limits: at most about
+// kSplatPixelsPerFlush pixels are batched between two flushes (and so between two polls of the
+// abort flag), and a call of the unchecked walk never emits more than the batch has room for.
+Emit chooseEmit(const SplatFootprint& splat, std::int32_t width, SimdFrame& f) {
+  if (!splat.active()) return Emit::kPixel;
+  const std::int64_t area = std::int64_t{splat.columns} * splat.rows;
+  if (area <= simd::kMostBoxPixels) {
+    f.box.pixels = static_cast<int>(area);
+    for (std::int32_t r = 0; r < splat.rows; ++r) {
+      for (std::int32_t c = 0; c < splat.columns; ++c) {
+        const auto p = static_cast<std::size_t>(r * splat.columns + c);
+        f.box.offset[p] = static_cast<std::uint32_t>(r * width + c);
+        f.box.edge[p] = static_cast<std::uint8_t>((c + 1 == splat.columns ? 1 : 0) |
+                                                  (r + 1 == splat.rows ? 2 : 0));
+      }
+    }
+    // Up to 512 leaves per call while their boxes fit the batch, else 64.
+    f.splat_levels_inline = kMostLeavesPerCall * area <= kBatch ? 3 : 2;
+    f.splat_batch_limit = kBatch - static_cast<int>(area) * (1 << (3 * f.splat_levels_inline));
+    return Emit::kSplatPixels;
+  }
+  f.splat_levels_inline = area <= 128 ? 3 : 1;
+  f.splat_batch_limit =
+      static_cast<int>(std::clamp<std::int64_t>(kSplatPixelsPerFlush / area, 8, kPixelBatchLimit));
+  f.plot_splats = splatBatchPlot(splat.columns, splat.rows);
+  return Emit::kSplatRects;
+}
+
 __attribute__((target("avx2"))) bool renderAvx2(const LevelView& level, const FrameSetup& setup,
                                                 FrameView& frame,
                                                 const std::atomic<bool>* abort) {
-  // About 22 KiB with the offset vectors and the batch, on the stack: drawing never allocates.
+  // About 34 KiB with the offset vectors and the batch, on the stack: drawing never allocates.
   SimdFrame state(level, setup, frame, abort);
   SimdFrame* const f = &state;
-  if (setup.splat.active()) {
-    const std::int64_t area = std::int64_t{setup.splat.columns} * setup.splat.rows;
-    f->splat_levels_inline = area <= 128 ? 3 : 1;
-    f->splat_batch_limit = static_cast<int>(
-        std::clamp<std::int64_t>(kSplatPixelsPerFlush / area, 8, kBatch - kMostLeavesPerCall));
-  }
+  const Emit emit = chooseEmit(setup.splat, frame.width(), *f);
   const auto depth = static_cast<std::size_t>(setup.depth);
   for (std::size_t l = 0; l < depth; ++l) {
     alignas(32) std::int32_t axis[3][8];
@@ -385,12 +350,19 @@ __attribute__((target("avx2"))) bool renderAvx2(const LevelView& level, const Fr
     }
   }
   const std::uint8_t* leaf = level.leaves.data();
-  if (setup.splat.active()) {
-    visit<true, true>(*f, 0, setup.root, level.nodes.data(), leaf);
-    if (!f->aborted) plotSplatBatch(*f);
-  } else {
-    visit<true, false>(*f, 0, setup.root, level.nodes.data(), leaf);
-    plotBatch(*f);
+  switch (emit) {
+    case Emit::kPixel:
+      visit<true, EmitMode{Emit::kPixel}>(*f, 0, setup.root, level.nodes.data(), leaf);
+      plotBatch(*f);
+      break;
+    case Emit::kSplatPixels:
+      drawBoxes(*f, setup, level, setup.splat.columns, setup.splat.rows);
+      if (!f->aborted) plotBatch(*f);
+      break;
+    case Emit::kSplatRects:
+      visit<true, EmitMode{Emit::kSplatRects}>(*f, 0, setup.root, level.nodes.data(), leaf);
+      if (!f->aborted) plotSplatBatch(*f);
+      break;
   }
   return !f->aborted;
 }

@@ -1,0 +1,218 @@
+#pragma once
+// fixed_simd's emit stage (renderer/render_fixed_simd.cpp, x86-64 with AVX2 only): a leaf parent
+// whose children all land on screen computes its eight children's pixel indices and packed words
+// at once in 32-bit lanes and appends its set children's entries to a batch, with permutations
+// and stores of fixed width instead of a loop over the children.
+//
+// Footprint splats (renderer/splat_footprint.h) take one of two forms here:
+// - Small footprints (at most kMostBoxPixels pixels, measured best up to 2 x 2): each pixel of a
+//   child's splat becomes a single-pixel entry, plotted like one pixel per leaf. A child covers
+//   the footprint's box or one column or row fewer (floor or ceil of its padded extent), so per
+//   pixel of the box the children that have it are kept by the same per-mask permutation: the
+//   batch holds exactly the splat's pixels, with no branch on which child has which.
+// - Larger ones: one entry per child with its splat's first pixel and its columns and rows,
+//   written as rectangles (renderer/splat_batch.h).
+#include <immintrin.h>
+
+#include <array>
+#include <bit>
+#include <cstdint>
+
+namespace octopoint::simd {
+
+// kKeep[mask]: the lanes of the set bits of `mask`, in order, then zeros: the vpermd control that
+// moves a leaf parent's set children to the front.
+struct LaneOrder {
+  std::uint8_t lane[8];
+};
+constexpr std::array<LaneOrder, 256> makeKeepTable() {
+  std::array<LaneOrder, 256> table{};
+  for (unsigned mask = 0; mask < 256; ++mask) {
+    unsigned kept = 0;
+    for (std::uint8_t child = 0; child < 8; ++child) {
+      if (mask >> child & 1u) table[mask].lane[kept++] = child;
+    }
+  }
+  return table;
+}
+inline constexpr std::array<LaneOrder, 256> kKeep = makeKeepTable();
+
+// kSpread[mask]: for each child lane, its place among the set children of `mask` (0 for the
+// others): the vpermd control that moves a leaf parent's colours, read in stream order, back to
+// their children's lanes.
+constexpr std::array<LaneOrder, 256> makeSpreadTable() {
+  std::array<LaneOrder, 256> table{};
+  for (unsigned mask = 0; mask < 256; ++mask) {
+    std::uint8_t place = 0;
+    for (unsigned child = 0; child < 8; ++child) {
+      if (mask >> child & 1u) table[mask].lane[child] = place++;
+    }
+  }
+  return table;
+}
+inline constexpr std::array<LaneOrder, 256> kSpread = makeSpreadTable();
+
+// What the unchecked walk appends per leaf: its one pixel; or, for a footprint of at most
+// kMostBoxPixels pixels, each pixel of its splat as an entry of its own, plotted as single pixels;
+// or, for larger footprints, its splat's rectangle (first pixel, columns and rows).
+enum class Emit { kPixel, kSplatPixels, kSplatRects };
+inline constexpr int kMostBoxPixels = 4;
+// The walk's template parameter: how leaves are emitted, and for kSplatPixels the box when it is
+// one of the common small ones, unrolled at compile time (0 x 0: the frame's SplatBox).
+struct EmitMode {
+  Emit emit;
+  int box_columns = 0;
+  int box_rows = 0;
+};
+
+// Emit::kSplatPixels: the frame's box, each pixel as its offset from the first (row * width +
+// column) and whether it is in the box's last column (bit 0) or last row (bit 1).
+struct SplatBox {
+  int pixels = 0;
+  std::uint32_t offset[kMostBoxPixels] = {};
+  std::uint8_t edge[kMostBoxPixels] = {};
+};
+
+// Where the unchecked walk appends: the batch's two cursors and the next leaf's colour. Locals of
+// the caller, kept in registers: a store to the batch may alias any 32-bit field of SimdFrame.
+struct Emitter {
+  std::uint32_t* index;
+  std::uint32_t* word;
+  const std::uint8_t* colours;
+  std::uint32_t* extent;  // the splat path only
+};
+
+// The frame's formats as vectors, loaded into registers once per call.
+struct LeafLanes {
+  __m256i width;
+  __m128i fraction_bits, depth_shift;
+  __m256i span_x, span_y;  // the splat path only: SplatFootprint::span_x, span_y
+  // Emit::kSplatPixels only: the box's columns and rows less one, the frame's width, its box.
+  __m256i columns_less_one, rows_less_one;
+  std::uint32_t row_pixels;
+  const SplatBox* box;
+};
+
+// The vpermd control of `table` for `mask`.
+__attribute__((target("avx2"), always_inline)) inline __m256i laneControl(
+    const std::array<LaneOrder, 256>& table, unsigned mask) {
+  return _mm256_cvtepu8_epi32(_mm_loadl_epi64(reinterpret_cast<const __m128i*>(&table[mask])));
+}
+
+// One bit per lane: whether the lane is all ones (a comparison's result).
+__attribute__((target("avx2"), always_inline)) inline unsigned lowBits(__m256i lanes) {
+  return static_cast<unsigned>(_mm256_movemask_ps(_mm256_castsi256_ps(lanes)));
+}
+
+// Emit::kSplatPixels: a leaf parent's children in child lanes, with their splats' first pixels and
+// words, and which of them have one column (row) fewer than the footprint's box.
+struct BoxChildren {
+  __m256i first;
+  __m256i word;
+  unsigned mask;
+  unsigned short_columns;
+  unsigned short_rows;
+};
+
+// Appends the pixel `offset` (row * width + column) from each child's first pixel, for the children
+// whose rectangle has it: all set children, less those one column short when the pixel is in the
+// box's last column, less those one row short when it is in its last row. Kept lanes move to the
+// front as in emitChildren: no branch on which children have it.
+__attribute__((target("avx2"), always_inline)) inline void emitBoxPixel(
+    const BoxChildren& box, std::uint32_t offset, bool last_column, bool last_row, Emitter& out) {
+  const unsigned mask =
+      box.mask & ~(last_column ? box.short_columns : 0u) & ~(last_row ? box.short_rows : 0u);
+  const __m256i keep = laneControl(kKeep, mask);
+  const __m256i at =
+      _mm256_add_epi32(box.first, _mm256_set1_epi32(static_cast<std::int32_t>(offset)));
+  _mm256_storeu_si256(reinterpret_cast<__m256i*>(out.index), _mm256_permutevar8x32_epi32(at, keep));
+  _mm256_storeu_si256(reinterpret_cast<__m256i*>(out.word),
+                      _mm256_permutevar8x32_epi32(box.word, keep));
+  const int kept = std::popcount(mask);
+  out.index += kept;
+  out.word += kept;
+}
+
+// The same for a box known at compile time, unrolled.
+template <int kColumns, int kRows>
+__attribute__((target("avx2"), always_inline)) inline void emitBox(const LeafLanes& lanes,
+                                                                   const BoxChildren& box,
+                                                                   Emitter& out) {
+  for (int r = 0; r < kRows; ++r) {
+    for (int c = 0; c < kColumns; ++c) {
+      emitBoxPixel(box,
+                   static_cast<std::uint32_t>(r) * lanes.row_pixels + static_cast<std::uint32_t>(c),
+                   kColumns > 1 && c + 1 == kColumns, kRows > 1 && r + 1 == kRows, out);
+    }
+  }
+}
+
+// A leaf parent whose children all land on screen, given its eight children's positions per axis
+// (x, y in Q(32-F).F, plus the splat's offsets when kSplat; z in Q(32-F).F plus the depth bias),
+// appends its set children (`mask`) to the batch, their colours being the next popcount(mask)
+// bytes at out.colours. Splats (kEmit, renderer/splat_footprint.h): x and y include the footprint's
+// offsets, so the index is the splat's first pixel; each point's columns and rows go to
+// out.extent (kSplatRects), or each pixel of the footprint's box becomes an entry (kSplatPixels).
+template <EmitMode kEmit>
+__attribute__((target("avx2"), always_inline)) inline void emitChildren(
+    const LeafLanes& lanes, __m256i x, __m256i y, __m256i biased_z, unsigned mask, Emitter& out) {
+  // Pixel column and row: floor(x / 2^F); index = row * width + column (< 2^26).
+  const __m256i column = _mm256_sra_epi32(x, lanes.fraction_bits);
+  const __m256i row = _mm256_sra_epi32(y, lanes.fraction_bits);
+  const __m256i index = _mm256_add_epi32(_mm256_mullo_epi32(row, lanes.width), column);
+  // Depth key (FrameSetup::depthKey): (z + bias) >> shift, unsigned, mod 2^32.
+  const __m256i key = _mm256_srl_epi32(biased_z, lanes.depth_shift);
+  const __m256i keep =
+      _mm256_cvtepu8_epi32(_mm_loadl_epi64(reinterpret_cast<const __m128i*>(&kKeep[mask])));
+  const __m256i colour =
+      _mm256_cvtepu8_epi32(_mm_loadl_epi64(reinterpret_cast<const __m128i*>(out.colours)));
+  const __m256i word =
+      _mm256_or_si256(_mm256_slli_epi32(_mm256_permutevar8x32_epi32(key, keep), 8), colour);
+  const int children = std::popcount(mask);
+  out.colours += children;
+  if constexpr (kEmit.emit == Emit::kSplatPixels) {
+    // A child has one column fewer than the box when first + columns - 1 > its last column,
+    // (x + span) >> F (SplatFootprint); the same for rows. As bits, one per child lane.
+    const __m256i last_column =
+        _mm256_sra_epi32(_mm256_add_epi32(x, lanes.span_x), lanes.fraction_bits);
+    const __m256i last_row =
+        _mm256_sra_epi32(_mm256_add_epi32(y, lanes.span_y), lanes.fraction_bits);
+    const BoxChildren box{
+        index,
+        _mm256_or_si256(_mm256_slli_epi32(key, 8),
+                        _mm256_permutevar8x32_epi32(colour, laneControl(kSpread, mask))),
+        mask,
+        lowBits(_mm256_cmpgt_epi32(_mm256_add_epi32(column, lanes.columns_less_one), last_column)),
+        lowBits(_mm256_cmpgt_epi32(_mm256_add_epi32(row, lanes.rows_less_one), last_row))};
+    if constexpr (kEmit.box_columns != 0) {
+      emitBox<kEmit.box_columns, kEmit.box_rows>(lanes, box, out);
+    } else {
+      const SplatBox& frame_box = *lanes.box;
+      for (int p = 0; p < frame_box.pixels; ++p) {
+        emitBoxPixel(box, frame_box.offset[p], (frame_box.edge[p] & 1) != 0,
+                     (frame_box.edge[p] & 2) != 0, out);
+      }
+    }
+    return;
+  }
+  _mm256_storeu_si256(reinterpret_cast<__m256i*>(out.index),
+                      _mm256_permutevar8x32_epi32(index, keep));
+  _mm256_storeu_si256(reinterpret_cast<__m256i*>(out.word), word);
+  if constexpr (kEmit.emit == Emit::kSplatRects) {
+    // Last column and row (SplatFootprint): (x + span) >> F; count = last - first + 1 (< 2^16).
+    const __m256i columns = _mm256_sub_epi32(
+        _mm256_sra_epi32(_mm256_add_epi32(x, lanes.span_x), lanes.fraction_bits), column);
+    const __m256i rows = _mm256_sub_epi32(
+        _mm256_sra_epi32(_mm256_add_epi32(y, lanes.span_y), lanes.fraction_bits), row);
+    const __m256i one = _mm256_set1_epi32(1);
+    const __m256i extent = _mm256_or_si256(_mm256_add_epi32(columns, one),
+                                           _mm256_slli_epi32(_mm256_add_epi32(rows, one), 16));
+    _mm256_storeu_si256(reinterpret_cast<__m256i*>(out.extent),
+                        _mm256_permutevar8x32_epi32(extent, keep));
+    out.extent += children;
+  }
+  out.index += children;
+  out.word += children;
+}
+
+}  // namespace octopoint::simd
