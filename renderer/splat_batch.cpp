@@ -1,5 +1,7 @@
 #include "renderer/splat_batch.h"
 
+#include "renderer/splat_box.h"
+
 #if defined(__x86_64__) && defined(__GNUC__)
 #include <immintrin.h>
 
@@ -26,12 +28,6 @@ void plotExact(const SplatBatch& b, int i) {
   }
 }
 
-// All ones when `count` < `most` (the point has one column or row fewer than the box), else 0.
-template <int kMost>
-std::uint32_t shortOf(std::int32_t count) {
-  return static_cast<std::uint32_t>((count - kMost) >> 31);
-}
-
 // Point i's kColumns x kRows box (see the header): unrolled scalar mins.
 template <int kColumns, int kRows>
 __attribute__((always_inline)) inline void plotBox(const SplatBatch& b, int i) {
@@ -40,17 +36,9 @@ __attribute__((always_inline)) inline void plotBox(const SplatBatch& b, int i) {
     plotExact(b, i);
     return;
   }
-  const std::uint32_t word = b.word[i];
-  const std::uint32_t short_column = shortOf<kColumns>(columnsOf(b.extent[i]));
-  const std::uint32_t short_row = shortOf<kRows>(rowsOf(b.extent[i]));
-  std::uint32_t* row = b.pixel + at;
-  for (int r = 0; r < kRows; ++r, row += b.width) {
-    const std::uint32_t row_word = r + 1 == kRows ? word | short_row : word;
-    for (int x = 0; x < kColumns; ++x) {
-      const std::uint32_t pixel_word = x + 1 == kColumns ? row_word | short_column : row_word;
-      row[x] = std::min(row[x], pixel_word);
-    }
-  }
+  minBox<kColumns, kRows>(b.pixel + at, b.width, b.word[i],
+                          shortOf<kColumns>(columnsOf(b.extent[i])),
+                          shortOf<kRows>(rowsOf(b.extent[i])));
 }
 
 template <int kColumns, int kRows>
@@ -93,7 +81,7 @@ __attribute__((target("avx2"))) void plotWide(const SplatBatch& b) {
   }
 }
 
-constexpr int kMostSmall = 4;
+constexpr int kMostSmall = kMostBoxSide;
 
 template <int... kIndex>
 constexpr std::array<SplatBatchPlot, sizeof...(kIndex)> smallKernels(

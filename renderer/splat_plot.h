@@ -4,19 +4,31 @@
 // z-tested per pixel by the same unsigned min as a single pixel, so the frame still does not
 // depend on the order leaves are drawn in. Two flavours, as FixedPlot: clipped per pixel to the
 // framebuffer it is given (a band of a frame, too), and unchecked for subtrees that SubtreeClip,
-// widened by the splat, proved to lie on screen.
+// widened by the splat, proved to lie on screen. The unchecked flavour writes footprints of up to
+// 4 x 4 pixels as their whole box, unrolled (renderer/splat_box.h): the loops' exits, a leaf's
+// one or two columns, were a coin toss per leaf.
 
 #include <algorithm>
 #include <cassert>
 #include <cstdint>
+#include <utility>
 
 #include "renderer/framebuffer_plot.h"
+#include "renderer/splat_box.h"
 #include "renderer/splat_footprint.h"
 
 namespace octopoint {
 
 struct SplatPlot : PlotTarget {
-  SplatPlot(FrameView& frame, const FrameSetup& setup) : PlotTarget(frame, setup), footprint(setup.splat) {}
+  SplatPlot(FrameView& frame, const FrameSetup& setup)
+      : PlotTarget(frame, setup),
+        footprint(setup.splat),
+        box(setup.splat.columns <= kMostBoxSide && setup.splat.rows <= kMostBoxSide
+                ? (setup.splat.rows - 1) * kMostBoxSide + setup.splat.columns - 1
+                : kNoBox),
+        box_reach(static_cast<std::size_t>(setup.splat.rows - 1) * static_cast<std::size_t>(width) +
+                  static_cast<std::size_t>(setup.splat.columns)),
+        end(static_cast<std::size_t>(width) * static_cast<std::size_t>(height)) {}
 
   // Writes `word` (Framebuffer::pack) over columns [x_begin, x_end) and rows [y_begin, y_end),
   // clipped to the frame when kChecked.
@@ -43,11 +55,45 @@ struct SplatPlot : PlotTarget {
   void plot(const Vec3& p, std::uint8_t palette_index) const {
     const std::int32_t x = p.x + footprint.offset_x;
     const std::int32_t y = p.y + footprint.offset_y;
-    fill<kChecked>(x >> fraction_bits, ((x + footprint.span_x) >> fraction_bits) + 1, y >> fraction_bits,
-                   ((y + footprint.span_y) >> fraction_bits) + 1, Framebuffer::pack(depthKey(p.z), palette_index));
+    const std::int32_t x_begin = x >> fraction_bits,
+                       x_end = ((x + footprint.span_x) >> fraction_bits) + 1;
+    const std::int32_t y_begin = y >> fraction_bits,
+                       y_end = ((y + footprint.span_y) >> fraction_bits) + 1;
+    const std::uint32_t word = Framebuffer::pack(depthKey(p.z), palette_index);
+    if constexpr (!kChecked) {
+      const std::size_t at = static_cast<std::size_t>(y_begin) * static_cast<std::size_t>(width) +
+                             static_cast<std::size_t>(x_begin);
+      // The box may reach one column or row past the leaf's rectangle: not past the frame's end.
+      if (box != kNoBox && at + box_reach <= end) {
+        plotBox(std::make_integer_sequence<int, kMostBoxSide * kMostBoxSide>{}, pixel + at, word,
+                x_end - x_begin, y_end - y_begin);
+        return;
+      }
+    }
+    fill<kChecked>(x_begin, x_end, y_begin, y_end, word);
   }
 
   SplatFootprint footprint;
+
+ private:
+  static constexpr int kNoBox = -1;
+
+  // The box kernel of this frame's footprint: box = (rows - 1) * kMostBoxSide + columns - 1.
+  template <int... kBox>
+  void plotBox(std::integer_sequence<int, kBox...>, std::uint32_t* first, std::uint32_t word,
+               std::int32_t columns, std::int32_t rows) const {
+    const auto width_words = static_cast<std::size_t>(width);
+    (void)((box == kBox ? (minBox<kBox % kMostBoxSide + 1, kBox / kMostBoxSide + 1>(
+                               first, width_words, word, shortOf<kBox % kMostBoxSide + 1>(columns),
+                               shortOf<kBox / kMostBoxSide + 1>(rows)),
+                           true)
+                        : false) ||
+           ...);
+  }
+
+  int box;                // which box kernel, or kNoBox for footprints past 4 x 4
+  std::size_t box_reach;  // from a box's first pixel past its last: (rows - 1) * width + columns
+  std::size_t end;        // width * height
 };
 
 }  // namespace octopoint
