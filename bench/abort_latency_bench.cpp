@@ -1,23 +1,33 @@
 // Abort latency of the fine render (docs/design.md section 5): the time from the abort request (the
-// store to the flag) to renderLevel returning on the rendering thread, for the default model's fine
-// level at 320x240, with the abort at a random point of the frame.
+// store to the flag) to renderLevel returning on the rendering thread, with the abort at a random
+// point of the frame: the default model's finest level at 320x240 one pixel per leaf
+// (fixed_baseline), and the dual-resolution renderer's H frame on a large screen, depth auto with
+// footprint splats (fixed_simd, fixed_fast; 1920x1080 at zoom 4 writes 24x17-pixel splats,
+// 1280x960 at zoom 2 11x8), where a subtree below the poll's level covers much of the screen.
 //
 // Each iteration starts a render on a thread of its own, waits a random time in the first half of
 // the frame time after the render began, takes the time and stores the flag; the thread takes the
 // time when renderLevel returns. Iterations where the frame completed first (on a busy machine the
 // aborting thread is often descheduled) are not samples. The reported time is the mean latency
-// (manual time); the counters give the median, the 99th percentile and the worst one.
+// (manual time); the counters give the median, the 99th percentile and the worst one. On a shared
+// machine the wall-clock latency includes the time the render thread waits for a core; the cpu_*
+// counters give the render thread's own CPU time from the request to its return (its thread CPU
+// clock, read by the aborting thread at the request), which is the decoder's part alone.
 #include <benchmark/benchmark.h>
+#include <pthread.h>
 
 #include <algorithm>
 #include <atomic>
 #include <chrono>
+#include <ctime>
 #include <random>
 #include <string>
 #include <thread>
+#include <utility>
 #include <vector>
 
 #include "models/registry.h"
+#include "renderer/level_of_detail.h"
 #include "renderer/render.h"
 
 namespace octopoint {
@@ -29,19 +39,50 @@ std::int64_t nanosecondsBetween(Clock::time_point from, Clock::time_point to) {
   return std::chrono::duration_cast<std::chrono::nanoseconds>(to - from).count();
 }
 
-void abortLatency(benchmark::State& state, int yaw_degrees, int zoom) {
+std::int64_t cpuNanoseconds(clockid_t clock) {
+  timespec now{};
+  clock_gettime(clock, &now);
+  return std::int64_t{now.tv_sec} * 1'000'000'000 + now.tv_nsec;
+}
+
+// The median, 99th percentile and worst of `samples` (sorted here), as counters in microseconds.
+void setLatencyCounters(benchmark::State& state, const std::string& prefix,
+                        std::vector<std::int64_t>& samples) {
+  std::sort(samples.begin(), samples.end());
+  const auto percentile_us = [&](std::size_t per_mille) {
+    return static_cast<double>(samples[(samples.size() - 1) * per_mille / 1000]) * 1e-3;
+  };
+  state.counters[prefix + "median_us"] = percentile_us(500);
+  state.counters[prefix + "p99_us"] = percentile_us(990);
+  state.counters[prefix + "worst_us"] = static_cast<double>(samples.back()) * 1e-3;
+}
+
+struct Case {
+  Variant variant;
+  std::int32_t width, height;
+  int yaw_degrees, zoom;
+  bool depth_auto;  // else the finest level, one pixel per leaf
+};
+
+void abortLatency(benchmark::State& state, Case c) {
   ModelIssue issue;
   const auto model = ModelView::fromEmbedded(*models::defaultModel(), &issue);
   Camera camera;
-  camera.yaw = Angle::fromDegrees(yaw_degrees);
-  camera.zoom = Q16::fromRaw(zoom * Q16::kOneRaw);
+  camera.width = c.width;
+  camera.height = c.height;
+  camera.yaw = Angle::fromDegrees(c.yaw_degrees);
+  camera.zoom = Q16::fromRaw(c.zoom * Q16::kOneRaw);
+  const LevelView* chosen = !model         ? nullptr
+                            : c.depth_auto ? autoLevel(*model, camera)
+                                           : &model->finestLevel();
   FrameSetup setup;
-  if (!model || buildFrameSetup(camera, model->finestLevel().depth, kDefaultFractionBits, &setup) !=
-                    CameraError::kNone) {
+  if (chosen == nullptr ||
+      buildFrameSetup(camera, chosen->depth, kDefaultFractionBits, &setup) != CameraError::kNone) {
     state.SkipWithError("no model, or camera refused");
     return;
   }
-  const LevelView& level = model->finestLevel();
+  if (!c.depth_auto) setup.splat = SplatFootprint{};
+  const LevelView& level = *chosen;
   Framebuffer frame(camera.width, camera.height);
 
   // The frame time, to spread the abort points over the frame.
@@ -49,7 +90,7 @@ void abortLatency(benchmark::State& state, int yaw_degrees, int zoom) {
   for (int i = 0; i < 21; ++i) {
     frame.clear();
     const Clock::time_point start = Clock::now();
-    renderLevel(Variant::kFixedBaseline, level, setup, frame);
+    renderLevel(c.variant, level, setup, frame);
     frame_ns.push_back(nanosecondsBetween(start, Clock::now()));
   }
   std::nth_element(frame_ns.begin(), frame_ns.begin() + 10, frame_ns.end());
@@ -57,25 +98,31 @@ void abortLatency(benchmark::State& state, int yaw_degrees, int zoom) {
 
   std::mt19937_64 random(42);
   std::uniform_int_distribution<std::int64_t> abort_after_ns(0, median_frame_ns / 2 - 1);
-  std::vector<std::int64_t> latencies_ns;
+  std::vector<std::int64_t> latencies_ns, cpu_latencies_ns;
   std::int64_t completed_first = 0;
   for (auto _ : state) {
     std::atomic<bool> abort{false};
     std::atomic<bool> started{false};
     bool complete = false;
     Clock::time_point returned;
+    std::int64_t returned_cpu_ns = 0;
     std::thread renderer([&] {
       frame.clear();
       started.store(true);
-      complete = renderLevel(Variant::kFixedBaseline, level, setup, frame, &abort);
+      complete = renderLevel(c.variant, level, setup, frame, &abort);
       returned = Clock::now();
+      returned_cpu_ns = cpuNanoseconds(CLOCK_THREAD_CPUTIME_ID);
     });
+    clockid_t renderer_cpu_clock{};
+    const bool cpu_clock =
+        pthread_getcpuclockid(renderer.native_handle(), &renderer_cpu_clock) == 0;
     while (!started.load()) {
     }
     const Clock::time_point abort_at =
         Clock::now() + std::chrono::nanoseconds(abort_after_ns(random));
     while (Clock::now() < abort_at) {
     }
+    const std::int64_t requested_cpu_ns = cpu_clock ? cpuNanoseconds(renderer_cpu_clock) : 0;
     const Clock::time_point requested = Clock::now();
     abort.store(true);
     renderer.join();  // after join, `complete` and `returned` are ours to read
@@ -87,32 +134,42 @@ void abortLatency(benchmark::State& state, int yaw_degrees, int zoom) {
     const std::int64_t latency_ns =
         std::max<std::int64_t>(0, nanosecondsBetween(requested, returned));
     latencies_ns.push_back(latency_ns);
+    if (cpu_clock)
+      cpu_latencies_ns.push_back(std::max<std::int64_t>(0, returned_cpu_ns - requested_cpu_ns));
     state.SetIterationTime(static_cast<double>(latency_ns) * 1e-9);
   }
   if (latencies_ns.empty()) return;
-  std::sort(latencies_ns.begin(), latencies_ns.end());
-  const auto percentile_us = [&](std::size_t per_mille) {
-    return static_cast<double>(latencies_ns[(latencies_ns.size() - 1) * per_mille / 1000]) * 1e-3;
-  };
-  state.counters["median_us"] = percentile_us(500);
-  state.counters["p99_us"] = percentile_us(990);
-  state.counters["worst_us"] = static_cast<double>(latencies_ns.back()) * 1e-3;
+  setLatencyCounters(state, "", latencies_ns);
+  if (!cpu_latencies_ns.empty()) setLatencyCounters(state, "cpu_", cpu_latencies_ns);
   state.counters["samples"] = static_cast<double>(latencies_ns.size());
   state.counters["completed_first"] = static_cast<double>(completed_first);
   state.counters["frame_us"] = static_cast<double>(median_frame_ns) * 1e-3;
+  state.counters["depth"] = level.depth;
+  state.counters["splat_columns"] = setup.splat.columns;
+  state.counters["splat_rows"] = setup.splat.rows;
+}
+
+void add(const std::string& name, Case c) {
+  benchmark::RegisterBenchmark(name.c_str(), abortLatency, c)
+      ->UseManualTime()
+      ->Iterations(3000)
+      ->Unit(benchmark::kMicrosecond);
 }
 
 void registerAll() {
-  struct View {
-    int yaw_degrees, zoom;
-  };
-  for (const View view : {View{0, 1}, View{30, 2}}) {
-    const std::string name = "abort_latency/fixed_baseline/tabletop/depth8/yaw" +
-                             std::to_string(view.yaw_degrees) + "_zoom" + std::to_string(view.zoom);
-    benchmark::RegisterBenchmark(name.c_str(), abortLatency, view.yaw_degrees, view.zoom)
-        ->UseManualTime()
-        ->Iterations(3000)
-        ->Unit(benchmark::kMicrosecond);
+  for (const int yaw : {0, 30}) {
+    const int zoom = yaw == 0 ? 1 : 2;
+    add("abort_latency/fixed_baseline/tabletop/depth8/yaw" + std::to_string(yaw) + "_zoom" +
+            std::to_string(zoom),
+        Case{Variant::kFixedBaseline, 320, 240, yaw, zoom, false});
+  }
+  std::vector<std::pair<Variant, std::string>> variants = {{Variant::kFixedFast, "fixed_fast"}};
+  if (simdDecoderAvailable()) variants.emplace_back(Variant::kFixedSimd, "fixed_simd");
+  for (const auto& [variant, name] : variants) {
+    add("abort_latency/" + name + "/tabletop/depth_auto/1920x1080_yaw30_zoom4",
+        Case{variant, 1920, 1080, 30, 4, true});
+    add("abort_latency/" + name + "/tabletop/depth_auto/1280x960_yaw30_zoom2",
+        Case{variant, 1280, 960, 30, 2, true});
   }
 }
 
