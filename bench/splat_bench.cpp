@@ -47,9 +47,11 @@ std::int64_t pixelsWritten(const FrameSetup& setup) {
       const SplatFootprint& s = setup.splat;
       const int f = setup.fraction_bits;
       const std::int64_t x0 = std::max<std::int64_t>((std::int64_t{x} + s.offset_x) >> f, 0);
-      const std::int64_t x1 = std::min<std::int64_t>((std::int64_t{x} + s.offset_x + s.span_x) >> f, setup.width - 1);
+      const std::int64_t x1 =
+          std::min<std::int64_t>((std::int64_t{x} + s.offset_x + s.span_x) >> f, setup.width - 1);
       const std::int64_t y0 = std::max<std::int64_t>((std::int64_t{y} + s.offset_y) >> f, 0);
-      const std::int64_t y1 = std::min<std::int64_t>((std::int64_t{y} + s.offset_y + s.span_y) >> f, setup.height - 1);
+      const std::int64_t y1 =
+          std::min<std::int64_t>((std::int64_t{y} + s.offset_y + s.span_y) >> f, setup.height - 1);
       if (x1 >= x0 && y1 >= y0) pixels += (x1 - x0 + 1) * (y1 - y0 + 1);
     }
   } count{setup};
@@ -68,7 +70,8 @@ void drawSplats(benchmark::State& state, Variant variant, int zoom_percent, bool
     const auto start = std::chrono::steady_clock::now();
     renderLevel(variant, level, setup, frame);
     benchmark::ClobberMemory();
-    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    const double seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     state.SetIterationTime(seconds);
     decode_seconds += seconds;
   }
@@ -87,14 +90,15 @@ void registerAll() {
   std::vector<std::pair<Variant, std::string>> variants = {{Variant::kFixedFast, "fixed_fast"}};
   if (simdDecoderAvailable()) variants.emplace_back(Variant::kFixedSimd, "fixed_simd");
   // Zoom (percent) -> footprint at 1920x1080, yaw 30, depth 8.
-  const std::pair<int, std::string> zooms[] = {{20, "2x1"}, {25, "2x2"}, {40, "3x2"}, {50, "3x3"},
+  const std::pair<int, std::string> zooms[] = {{20, "2x1"}, {25, "2x2"},  {40, "3x2"}, {50, "3x3"},
                                                {60, "4x3"}, {100, "6x5"}, {125, "8x6"}};
   for (const auto& [zoom, footprint] : zooms) {
     for (const auto& [variant, name] : variants) {
       for (const bool splats : {true, false}) {
         const std::string what = splats ? footprint : footprint + "_as_one_pixel";
-        benchmark::RegisterBenchmark(("splat/" + name + "/tabletop/depth8/1920x1080/" + what).c_str(), drawSplats,
-                                     variant, zoom, splats)
+        benchmark::RegisterBenchmark(
+            ("splat/" + name + "/tabletop/depth8/1920x1080/" + what).c_str(), drawSplats, variant,
+            zoom, splats)
             ->UseManualTime()
             ->Unit(benchmark::kMicrosecond);
       }
