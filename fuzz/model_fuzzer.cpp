@@ -2,7 +2,10 @@
 // ModelView::fromBytes, exactly as octopoint-render --file does with a `.oct` file; a model that
 // validates is drawn at every level with a few cameras by every variant. ASan and UBSan catch a
 // read past the buffers or an overflow; the checks below catch a decoder that walks a different
-// tree than the validator (leaf count) or fixed-point variants that disagree with each other.
+// tree than the validator (leaf count), fixed-point variants that disagree with each other (those
+// that draw footprint splats among themselves, and every fixed variant at one pixel per leaf), and
+// a frame reused from the previous input that holds anything but what a fresh frame holds (its
+// clear empties only the rectangle drawn, renderer/framebuffer.h).
 #include <algorithm>
 #include <array>
 #include <cstddef>
@@ -69,19 +72,36 @@ void drawEveryWay(const LevelView& level) {
     check(walk.run());
     check(counter.count == level.leaves.size());
 
-    std::optional<Framebuffer> first_fixed;
+    FrameSetup one_pixel = setup;
+    one_pixel.splat = SplatFootprint{};
+    const auto same = [](const FrameView& a, const FrameView& b) {
+      return std::ranges::equal(a.pixels(), b.pixels());
+    };
+    // The first frame of each kind: one pixel per leaf, and with the set-up's splats.
+    std::optional<Framebuffer> first_one_pixel, first_splatted;
+    const auto compare = [&](std::optional<Framebuffer>& first, Framebuffer&& frame) {
+      if (first) {
+        check(same(frame, *first));
+      } else {
+        first.emplace(std::move(frame));
+      }
+    };
     for (const VariantInfo& info : allVariants()) {
       Framebuffer frame(cam.width, cam.height);
-      frame.clear();
       check(renderLevel(info.variant, level, setup, frame));
-      if (!info.name.starts_with("fixed_")) continue;  // float references are only close
-      if (!first_fixed) {
-        first_fixed.emplace(std::move(frame));
-        continue;
-      }
-      const auto same = [](auto a, auto b) { return std::equal(a.begin(), a.end(), b.begin(), b.end()); };
-      check(same(frame.pixels(), first_fixed->pixels()));
+      if (!isFixedPoint(info.variant)) continue;  // float references are only close
+      compare(drawsSplats(info.variant) ? first_splatted : first_one_pixel, std::move(frame));
+      if (!drawsSplats(info.variant)) continue;
+      Framebuffer one(cam.width, cam.height);
+      check(renderLevel(info.variant, level, one_pixel, one));
+      compare(first_one_pixel, std::move(one));
     }
+    // The same frame drawn into one kept from the previous inputs, cleared.
+    static std::array<std::optional<Framebuffer>, kCameras.size()> kept;
+    if (!kept[c]) kept[c].emplace(cam.width, cam.height);
+    kept[c]->clear();
+    check(renderLevel(defaultVariant(), level, setup, *kept[c]));
+    check(same(*kept[c], drawsSplats(defaultVariant()) ? *first_splatted : *first_one_pixel));
   }
 }
 
