@@ -129,8 +129,10 @@ TEST_F(DualResolution, BuiltFromAModelHDrawsDepthAutoAndLOneStoredDepthCoarser) 
         },
         kPatience));
     EXPECT_EQ(renderer.status().latest.depth, model_->level(fine_index).depth) << "zoom step " << step;
-    renderer.handle(at(0, ViewEventKind::kZoomOut));
+    // The zoom of the view just drawn, read before the zoom step: once the step is handled, L may
+    // already have shown the new view (a loaded machine lets it finish before this thread reads).
     zoom = renderer.status().latest.view.zoom;
+    renderer.handle(at(0, ViewEventKind::kZoomOut));
     zoom = Q16::fromRaw(static_cast<std::int32_t>(std::int64_t{zoom.raw()} * 4 / 5));
   }
 }
