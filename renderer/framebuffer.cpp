@@ -11,11 +11,11 @@ void FrameView::clear() {
   std::uint32_t* const first = pixel_ + indexOf(drawn_.x_begin, drawn_.y_begin);
   const auto rows = static_cast<std::size_t>(drawn_.y_end - drawn_.y_begin);
   if (columns == static_cast<std::size_t>(width_)) {  // whole rows: one contiguous run
-    std::fill(first, first + columns * rows, kEmpty);
+    fillWords(first, columns * rows, kEmpty);
   } else {
     for (std::size_t row = 0; row < rows; ++row) {
       std::uint32_t* const begin = first + row * static_cast<std::size_t>(width_);
-      std::fill(begin, begin + columns, kEmpty);
+      fillWords(begin, columns, kEmpty);
     }
   }
   drawn_ = PixelRect{};
@@ -31,6 +31,24 @@ void FrameView::widenDrawnRect(const PixelRect& bounds) {
   }
   drawn_ = PixelRect{std::min(drawn_.x_begin, clipped.x_begin), std::max(drawn_.x_end, clipped.x_end),
                      std::min(drawn_.y_begin, clipped.y_begin), std::max(drawn_.y_end, clipped.y_end)};
+}
+
+void fillWords(std::uint32_t* words, std::size_t count, std::uint32_t value) {
+  // Eight stores a step with constant offsets: on a Cortex-M0+ 1.5 instructions a word instead of
+  // 3 (the bare-metal build keeps GCC from turning this into newlib nano's byte-wise memset,
+  // cmake/toolchain-arm-none-eabi.cmake).
+  std::uint32_t* const end = words + count;
+  for (; end - words >= 8; words += 8) {
+    words[0] = value;
+    words[1] = value;
+    words[2] = value;
+    words[3] = value;
+    words[4] = value;
+    words[5] = value;
+    words[6] = value;
+    words[7] = value;
+  }
+  for (; words != end; ++words) *words = value;
 }
 
 namespace {

@@ -108,6 +108,9 @@ class FrameView {
   PixelRect drawn_;  // see drawnRect(); empty: the whole frame is kEmpty
 };
 
+// Sets `count` words to `value`: a frame's clear, also on bare metal (where memset is a byte loop).
+void fillWords(std::uint32_t* words, std::size_t count, std::uint32_t value);
+
 // A frame that owns its pixels (allocated once, at construction, all kEmpty: nothing drawn yet).
 class Framebuffer : public FrameView {
  public:

@@ -20,6 +20,10 @@ constexpr std::uint16_t toRgb565(Rgb colour) {
 struct Rgb565Palette {
   std::array<std::uint16_t, 256> colour{};  // by palette index
   std::uint16_t background = 0;             // for pixels without a point
+  // No leaf names index 255 (the model has at most 255 colours). An empty pixel's word
+  // (FrameView::kEmpty) has 255 in its palette-index byte, so with colour[255] == background the
+  // conversion needs no emptiness test: one table load per pixel (makeRgb565Palette sets both).
+  bool last_index_unused = false;
 };
 
 Rgb565Palette makeRgb565Palette(const ModelView& model, Rgb background);
