@@ -1,7 +1,8 @@
 // The bare-metal band test (docs/device.md), run under qemu-system-arm by scripts/test-mcu:
 //  1. every case of mcu/band_cases.h (three cameras, depths 7 and 8, with and without hole
-//     filling, bands of 1, 7, 8 and 24 rows) drawn by fixed_fast with the level-3 subtree index
-//     into two alternating band buffers, every band's checksum compared with the host's golden;
+//     filling, bands of 1, 7, 8 and 24 rows) drawn by fixed_fast and by fixed_delta with the
+//     level-3 subtree index into two alternating band buffers, every band's checksum compared with
+//     the host's golden;
 //  2. the cost table: every fixed variant, bands of 8, 24 and 120 rows (two or three bands:
 //     almost one walk), without an index and with the level-3 and level-4 ones, at 320x240 and
 //     240x320, depth 8: instructions per frame from qemu's instruction clock (the sink's
@@ -47,6 +48,7 @@ constexpr VariantName kVariants[] = {
     {Variant::kFixedBaseline, "fixed_baseline"}, {Variant::kFixedLeafCall, "fixed_leafcall"},
     {Variant::kFixedUnrolled, "fixed_unrolled"}, {Variant::kFixedSetBits, "fixed_setbits"},
     {Variant::kFixedClipped, "fixed_clipped"},   {Variant::kFixedFast, "fixed_fast"},
+    {Variant::kFixedDelta, "fixed_delta"},
 };
 
 // Draws case `number` (band rows overridden by `rows` when > 0); returns whether every band
@@ -110,11 +112,15 @@ int octopoint::mcu::programMain() {
   int failures = 0;
   std::uint64_t instructions = 0;
 
-  for (int i = 0; i < kCaseCount; ++i) {
-    const BandCase& c = kCases[static_cast<std::size_t>(i)];
-    const bool passed = drawCase(i, Variant::kFixedFast, kIndexLevel, 0, true, &instructions);
+  for (int i = 0; i < 2 * kCaseCount; ++i) {
+    const BandCase& c = kCases[static_cast<std::size_t>(i % kCaseCount)];
+    // fixed_fast (footprint splats where a voxel covers more than a pixel), then fixed_delta (one
+    // pixel per leaf; on ARMv6-M its leaf loop is Thumb-1 assembly, renderer/delta_leaves.h).
+    const Variant variant = i < kCaseCount ? Variant::kFixedFast : Variant::kFixedDelta;
+    const bool passed = drawCase(i % kCaseCount, variant, kIndexLevel, 0, true, &instructions);
     failures += passed ? 0 : 1;
     print(passed ? "pass" : "FAIL");
+    print(i < kCaseCount ? " fixed_fast" : " fixed_delta");
     print(" case camera ");
     printUnsigned(static_cast<std::uint64_t>(c.camera));
     print(" depth ");

@@ -1,6 +1,6 @@
 // The RAM budget images (docs/device.md): the renderer as a device would hold it for a 320x240
 // panel, the default model at depth 8, bands of OCTOPOINT_BAND_ROWS rows (24 or 8), one band
-// buffer, fixed_clipped (the fastest band variant on the M0+, docs/device.md) with the level-3
+// buffer, fixed_delta (the fastest band variant on the M0+, docs/device.md) with the level-3
 // subtree index, no hole filling. Linked with
 // -Wl,--defsym=__ram_budget=N, so the image does not link if its RAM (.data, .bss and the stack
 // reserved for it) exceeds the target; run, it draws two cameras' frames, checks every band
@@ -19,7 +19,7 @@ extern "C" std::uint32_t __data_start[], __stack_bottom[];  // mcu/sections.ld: 
 namespace {
 
 constexpr std::int32_t kWidth = 320;
-constexpr Variant kVariant = Variant::kFixedClipped;
+constexpr Variant kVariant = Variant::kFixedDelta;
 constexpr std::int32_t kRows = OCTOPOINT_BAND_ROWS;
 constexpr std::size_t kIndexCapacity = 120;  // the default model has 398 nodes at tree level 4
 

@@ -9,6 +9,7 @@
 #include "renderer/decode_algorithms.h"
 #include "renderer/framebuffer.h"
 #include "renderer/hole_fill.h"
+#include "renderer/render_fixed_delta.h"
 #include "renderer/subtree_clip.h"
 
 namespace octopoint {
@@ -41,8 +42,11 @@ class IndexedBandWalk {
   // `subtree_setup` is the index-level subtrees' set-up with the window's height: its clip's reach
   // at its level 0 is the reach of an index-level node (widened by the splat, when leaves are drawn
   // as splats), its screen the window.
+  // `delta`: fixed_delta prepared for this window (then `variant` is not used): each subtree is
+  // then one call, without the per-call preparation renderLevel would repeat.
   IndexedBandWalk(const LevelView& level, const FrameSetup& frame, const BandIndex& index,
-                  Variant variant, FrameSetup& subtree_setup, FrameView& window, std::int32_t window_y0)
+                  Variant variant, FrameSetup& subtree_setup, FrameView& window, std::int32_t window_y0,
+                  FixedDeltaDecoder* delta)
       : level_(level),
         frame_(frame),
         index_(index),
@@ -50,7 +54,8 @@ class IndexedBandWalk {
         subtree_(subtree_setup),
         window_(window),
         window_clip_(subtree_setup, subtree_setup.splat),
-        y_shift_(std::int64_t{window_y0} << frame.fraction_bits) {}
+        y_shift_(std::int64_t{window_y0} << frame.fraction_bits),
+        delta_(delta) {}
 
   void run() {
     const std::uint8_t* node = level_.nodes.data();
@@ -79,6 +84,10 @@ class IndexedBandWalk {
     const auto node_begin = static_cast<std::size_t>(node - level_.nodes.data());
     const LevelView subtree{subtree_.depth, level_.nodes.subspan(node_begin, size.nodes),
                             level_.leaves.subspan(leaf, size.leaves)};
+    if (delta_ != nullptr) {
+      delta_->draw(subtree, root);
+      return;
+    }
     subtree_.root = root;
     renderLevel(variant_, subtree, subtree_, window_);
   }
@@ -91,6 +100,7 @@ class IndexedBandWalk {
   FrameView& window_;
   SubtreeClip window_clip_;
   std::int64_t y_shift_;
+  FixedDeltaDecoder* delta_;
   std::size_t entry_ = 0;
 };
 
@@ -180,7 +190,12 @@ BandError renderBands(const LevelView& level, const FrameSetup& setup, const Ban
     } else {
       work.height = window_rows;
       work.camera.height = window_rows;
-      IndexedBandWalk(level, setup, index, config.variant, work, window, window_y0).run();
+      if (config.variant == Variant::kFixedDelta) {
+        FixedDeltaDecoder delta(work, window);
+        IndexedBandWalk(level, setup, index, config.variant, work, window, window_y0, &delta).run();
+      } else {
+        IndexedBandWalk(level, setup, index, config.variant, work, window, window_y0, nullptr).run();
+      }
     }
     const std::int32_t first_row = y0 - window_y0;  // the band's own rows in the window
     if (config.fill) fillHoleRows(window, first_row, first_row + rows, bridge_limit, buffers.fill_history);

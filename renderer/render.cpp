@@ -17,6 +17,9 @@ constexpr std::array kVariants = {
                 "set bits + hierarchical clipping (no bounds checks for subtrees on screen)"},
     VariantInfo{Variant::kFixedFast, "fixed_fast",
                 "clipped, state in registers, no call per leaf parent: the fastest portable one"},
+    VariantInfo{Variant::kFixedDelta, "fixed_delta",
+                "fast's walk, each leaf's pixel from per-child index deltas and packed sub-pixel carries: "
+                "the fastest on few registers (Cortex-M0+)"},
     VariantInfo{Variant::kFixedSimd, "fixed_simd",
                 "clipped walk, three levels per call, eight children at once in AVX2 lanes, branch-free batched plot (x86-64)"},
     VariantInfo{Variant::kFloatBaseline, "float_baseline", "Algorithm 1 in floating point (reference)"},
@@ -58,6 +61,7 @@ bool renderLevel(Variant variant, const LevelView& level, const FrameSetup& setu
     case Variant::kFixedSetBits: return renderFixedSetBits(level, setup, frame, abort);
     case Variant::kFixedClipped: return renderFixedClipped(level, setup, frame, abort);
     case Variant::kFixedFast: return renderFixedFast(level, setup, frame, abort);
+    case Variant::kFixedDelta: return renderFixedDelta(level, setup, frame, abort);
     case Variant::kFixedSimd: return renderFixedSimd(level, setup, frame, abort);
 #ifndef OCTOPOINT_INTEGER_ONLY
     case Variant::kFloatBaseline: return renderFloatBaseline(level, setup, frame, abort);

@@ -23,6 +23,7 @@ enum class Variant {
   kFixedSetBits,   // Algorithm 2 visiting only the set bits of each mask
   kFixedClipped,   // set bits + hierarchical clipping: no bounds checks for subtrees on screen
   kFixedFast,      // clipped, state in registers, no call per leaf parent: the fastest portable one
+  kFixedDelta,     // fast's walk, leaves from per-child pixel-index deltas: the fastest with few registers (Cortex-M0+)
   kFixedSimd,      // clipped walk, three levels per call, eight children at once in AVX2 lanes, batched min plot
   kFloatBaseline,  // floating point reference of Algorithm 1
   kFloatLeafCall,  // floating point reference of Algorithm 2
@@ -64,6 +65,7 @@ bool renderFixedUnrolled(const LevelView&, const FrameSetup&, FrameView&, const 
 bool renderFixedSetBits(const LevelView&, const FrameSetup&, FrameView&, const std::atomic<bool>* abort);
 bool renderFixedClipped(const LevelView&, const FrameSetup&, FrameView&, const std::atomic<bool>* abort);
 bool renderFixedFast(const LevelView&, const FrameSetup&, FrameView&, const std::atomic<bool>* abort);
+bool renderFixedDelta(const LevelView&, const FrameSetup&, FrameView&, const std::atomic<bool>* abort);
 bool renderFixedSimd(const LevelView&, const FrameSetup&, FrameView&, const std::atomic<bool>* abort);
 bool simdDecoderAvailable();  // an x86-64 CPU with AVX2
 bool renderFloatBaseline(const LevelView&, const FrameSetup&, FrameView&, const std::atomic<bool>* abort);

@@ -1,0 +1,45 @@
+#pragma once
+// fixed_delta: the integer decoder for CPUs with few registers (a Cortex-M0+), and the fastest band
+// variant there (docs/device.md). fixed_fast's walk (hierarchical clipping, no call per leaf
+// parent) with the leaves of on-screen leaf parents plotted from per-child pixel-index deltas and
+// packed sub-pixel carries (renderer/delta_leaves.h). One pixel per leaf, as the paper's variants:
+// bit-identical to fixed_baseline.
+//
+// Its preparation is an object, so that band rendering (renderer/band_renderer.h) prepares once per
+// band and then draws each subtree of the band index with a call: the clip's reach and the leaf
+// table are not computed again per subtree.
+
+#include <atomic>
+#include <cstdint>
+
+#include "renderer/camera.h"
+#include "renderer/delta_leaves.h"
+#include "renderer/framebuffer.h"
+#include "renderer/model.h"
+#include "renderer/subtree_clip.h"
+
+namespace octopoint {
+
+class FixedDeltaDecoder {
+ public:
+  // Prepares to draw trees of `setup` (its child offsets, depth, screen and depth-key formats)
+  // into `frame`, which has the set-up's width and height.
+  FixedDeltaDecoder(const FrameSetup& setup, FrameView& frame);
+
+  // Draws `level` (of the set-up's depth) with its root at `root`: the whole tree when `root` is
+  // the set-up's root, or a subtree whose stream and centre those are. Returns false when `abort`
+  // stopped it (polled at tree level kAbortCheckLevel).
+  bool draw(const LevelView& level, const Vec3& root, const std::atomic<bool>* abort = nullptr);
+
+  // The clip the decoder classifies subtrees with (the set-up's, one pixel per leaf).
+  const SubtreeClip& clip() const { return clip_; }
+
+ private:
+  const FrameSetup& setup_;
+  SubtreeClip clip_;
+  DeltaLeaves leaves_;
+  std::int32_t height_;
+  bool packed_;  // deltaLeavesApply(setup)
+};
+
+}  // namespace octopoint
