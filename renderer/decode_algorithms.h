@@ -116,8 +116,12 @@ void visitSetBits(DecodeState<T, Plot>& s, int level, Point3<T> centre) {
 // subtree still costs in a depth-first stream without an index. A loop, not a recursion: its cost
 // is a few instructions per node, and its stack one byte per level (on a microcontroller, stack is
 // RAM). pending[l] counts the nodes of relative level l still to read under the current parent.
-inline void skipSubtree(const std::uint8_t*& node, const std::uint8_t*& leaf, int level, int depth) {
+// The cursors are copied into locals: a byte store into `pending` may alias anything, so cursors
+// kept behind the references would be written back to memory at every step.
+inline void skipSubtree(const std::uint8_t*& node_cursor, const std::uint8_t*& leaf_cursor, int level, int depth) {
   const int node_levels = depth - level;  // the subtree's levels of mask bytes
+  const std::uint8_t* node = node_cursor;
+  const std::uint8_t* leaf = leaf_cursor;
   std::array<std::uint8_t, kMaxRenderDepth> pending;
   int l = 0;
   pending[0] = 1;
@@ -128,10 +132,18 @@ inline void skipSubtree(const std::uint8_t*& node, const std::uint8_t*& leaf, in
       pending[static_cast<std::size_t>(++l)] = static_cast<std::uint8_t>(childCount(mask));
       continue;
     }
-    leaf += childCount(mask);  // a leaf parent, then its remaining siblings
-    for (; pending[static_cast<std::size_t>(l)] != 0; --pending[static_cast<std::size_t>(l)]) leaf += childCount(*node++);
+    // A leaf parent, then its remaining siblings: a count in a register, not in `pending`.
+    leaf += childCount(mask);
+    for (unsigned siblings = pending[static_cast<std::size_t>(l)]; siblings != 0; --siblings) {
+      leaf += childCount(*node++);
+    }
+    pending[static_cast<std::size_t>(l)] = 0;
     do {
-      if (l == 0) return;
+      if (l == 0) {
+        node_cursor = node;
+        leaf_cursor = leaf;
+        return;
+      }
       --l;
     } while (pending[static_cast<std::size_t>(l)] == 0);
   }

@@ -173,7 +173,7 @@ inline PackedCentre packedChild(const DeltaLeaves& leaves, const PackedCentre& p
 
 // Plots the children of an on-screen leaf parent whose packed centre is `parent`: `mask` its child
 // mask (non-zero), `leaf` its first palette index. Returns the next palette index.
-inline const std::uint8_t* plotDeltaLeaves(const DeltaLeaves& leaves, unsigned mask,
+[[gnu::always_inline]] inline const std::uint8_t* plotDeltaLeaves(const DeltaLeaves& leaves, unsigned mask,
                                            const std::uint8_t* leaf, const PackedCentre& parent) {
 #if OCTOPOINT_THUMB1_LEAF_LOOP
   std::uint32_t q = parent.fraction;
@@ -209,7 +209,7 @@ inline const std::uint8_t* plotDeltaLeaves(const DeltaLeaves& leaves, unsigned m
 // packed centre, `mask` its child mask (non-zero); `node` and `leaf` are the stream cursors at its
 // first child's mask and first leaf, advanced past them. The leaf parents' centres come by
 // additions too (packedChild), so a leaf parent costs no shift or multiply either.
-inline void plotDeltaGrandchildren(const DeltaLeaves& leaves, unsigned mask,
+[[gnu::always_inline]] inline void plotDeltaGrandchildren(const DeltaLeaves& leaves, unsigned mask,
                                    const std::uint8_t*& node, const std::uint8_t*& leaf,
                                    const PackedCentre& grandparent) {
 #if OCTOPOINT_THUMB1_LEAF_LOOP

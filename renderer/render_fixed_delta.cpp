@@ -30,7 +30,7 @@ struct DeltaWalk {
   bool aborted = false;
 
   // The children of an on-screen leaf parent at `c` with child mask `mask`.
-  void plotInside(unsigned mask, const Vec3& c) {
+  [[gnu::always_inline]] void plotInside(unsigned mask, const Vec3& c) {
     if (packed) {
       leaf = plotDeltaLeaves(leaves, mask, leaf, packCentre(leaves, c));
       return;
@@ -67,6 +67,34 @@ struct DeltaWalk {
     }
   }
 
+  // An on-screen subtree at `level` centred at `c`: a leaf parent or grandparent plotted here (no
+  // call), a higher node walked by visit<false>. The caller polled the abort flag at this level.
+  [[gnu::always_inline]] void drawInside(int level, const Vec3& c) {
+    if (level + 2 < setup.depth) {
+      visit<false>(level, c);
+      return;
+    }
+    const unsigned mask = *node++;
+    if (level + 1 == setup.depth) {
+      plotInside(mask, c);
+    } else {
+      plotGrandchildren(mask, c);
+    }
+  }
+
+  // The children of an on-screen grandparent at `c` (leaf parents) and theirs (leaves).
+  [[gnu::always_inline]] void plotGrandchildren(unsigned mask, const Vec3& c) {
+    if (packed) {
+      plotDeltaGrandchildren(leaves, mask, node, leaf, packCentre(leaves, c));
+      return;
+    }
+    const auto& offsets = setup.child_offset[static_cast<std::size_t>(setup.depth - 2)];
+    for (; mask != 0; mask &= mask - 1) {
+      const unsigned below = *node++;
+      plotInside(below, c + offsets[lowestChild(mask)]);
+    }
+  }
+
   template <bool kChecked>
   void visit(int level, const Vec3& c) {
     if (level <= kAbortCheckLevel && abort != nullptr) {
@@ -79,7 +107,7 @@ struct DeltaWalk {
           skipSubtree(node, leaf, level, setup.depth);
           return;
         case Clip::kInside:
-          visit<false>(level, c);
+          drawInside(level, c);
           return;
         case Clip::kStraddling:
           break;
@@ -96,14 +124,7 @@ struct DeltaWalk {
       return;
     }
     if (!kChecked && level + 2 == setup.depth) {  // leaf parents below: plotted here, no call each
-      if (packed) {
-        plotDeltaGrandchildren(leaves, mask, node, leaf, packCentre(leaves, c));
-        return;
-      }
-      for (; mask != 0; mask &= mask - 1) {
-        const unsigned below = *node++;
-        plotInside(below, c + offsets[lowestChild(mask)]);
-      }
+      plotGrandchildren(mask, c);
       return;
     }
     for (; mask != 0; mask &= mask - 1) visit<kChecked>(level + 1, c + offsets[lowestChild(mask)]);
