@@ -9,11 +9,10 @@
 //   there is no call per leaf parent.
 #include "renderer/render_fixed_delta.h"
 
-#include <cassert>
-
 #include "renderer/bit_scan.h"
 #include "renderer/decode_algorithms.h"
 #include "renderer/render.h"
+#include "renderer/render_check.h"
 
 namespace octopoint {
 namespace {
@@ -133,18 +132,25 @@ struct DeltaWalk {
 
 }  // namespace
 
+// What a refused decoder prepares from: depth 0, so the clip and the leaf tables read no offset
+// (constexpr: in flash on a microcontroller, not 1 KB of RAM).
+constexpr FrameSetup kRefusedSetup{};
+
 FixedDeltaDecoder::FixedDeltaDecoder(const FrameSetup& setup, FrameView& frame)
-    : setup_(setup),
-      clip_(setup),
-      leaves_(prepareDeltaLeaves(setup, frame.pixelData(), frame.width())),
+    : accepted_(checkFrameSetup(setup) == RenderError::kNone && frame.width() == setup.width &&
+                frame.height() == setup.height),
+      setup_(accepted_ ? setup : kRefusedSetup),
+      clip_(setup_),
+      leaves_(prepareDeltaLeaves(setup_, frame.pixelData(), frame.width())),
       height_(frame.height()),
-      packed_(deltaLeavesApply(setup)) {
-  assert(frame.width() == setup.width && frame.height() == setup.height);
-}
+      packed_(deltaLeavesApply(setup_)) {}
 
 bool FixedDeltaDecoder::draw(const LevelView& level, const Vec3& root,
                              const std::atomic<bool>* abort) {
-  assert(level.depth == setup_.depth);
+  if (!accepted_ || level.depth != setup_.depth ||
+      !plausibleLevelSize(level.depth, level.nodes.size(), level.leaves.size())) {
+    return false;  // refused, nothing drawn
+  }
   DeltaWalk walk{
       setup_, clip_, leaves_, height_, packed_, abort, level.nodes.data(), level.leaves.data()};
   walk.visit<true>(0, root);

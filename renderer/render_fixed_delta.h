@@ -23,19 +23,24 @@ namespace octopoint {
 class FixedDeltaDecoder {
  public:
   // Prepares to draw trees of `setup` (its child offsets, depth, screen and depth-key formats)
-  // into `frame`, which has the set-up's width and height.
+  // into `frame`, which has the set-up's width and height. A set-up checkFrameSetup refuses, or a
+  // frame of another size, is refused here (renderer/render_check.h): every draw then returns
+  // false and draws nothing.
   FixedDeltaDecoder(const FrameSetup& setup, FrameView& frame);
 
   // Draws `level` (of the set-up's depth) with its root at `root`: the whole tree when `root` is
   // the set-up's root, or a subtree whose stream and centre those are. Returns false when `abort`
-  // stopped it (polled at tree level kAbortCheckLevel).
+  // stopped it (polled at tree level kAbortCheckLevel), or, without drawing, when the decoder was
+  // refused or the level's depth or sizes do not fit (checkRender's checks, once per decoder for
+  // the set-up: a band draws each of its subtrees with one decoder).
   bool draw(const LevelView& level, const Vec3& root, const std::atomic<bool>* abort = nullptr);
 
   // The clip the decoder classifies subtrees with (the set-up's, one pixel per leaf).
   const SubtreeClip& clip() const { return clip_; }
 
  private:
-  const FrameSetup& setup_;
+  bool accepted_;             // the set-up and frame passed the checks
+  const FrameSetup& setup_;  // the caller's, or when refused an empty one (nothing to prepare)
   SubtreeClip clip_;
   DeltaLeaves leaves_;
   std::int32_t height_;
