@@ -22,12 +22,17 @@ double ssim(const cv::Mat& reference, const cv::Mat& image) {
   const cv::Mat sigma_a2 = blur(a.mul(a)) - mu_a2;
   const cv::Mat sigma_b2 = blur(b.mul(b)) - mu_b2;
   const cv::Mat sigma_ab = blur(a.mul(b)) - mu_ab;
-  cv::Mat numerator = (2 * mu_ab + kC1).mul(2 * sigma_ab + kC2);
-  cv::Mat denominator = (mu_a2 + mu_b2 + kC1).mul(sigma_a2 + sigma_b2 + kC2);
+  // The constants go to every channel: a plain double added to a cv::Mat is cv::Scalar(c, 0, 0, 0),
+  // which would stabilize the first channel only (and leave 0 / 0 in the others where flat).
+  const cv::Scalar c1 = cv::Scalar::all(kC1), c2 = cv::Scalar::all(kC2);
+  cv::Mat numerator = (2 * mu_ab + c1).mul(2 * sigma_ab + c2);
+  cv::Mat denominator = (mu_a2 + mu_b2 + c1).mul(sigma_a2 + sigma_b2 + c2);
   cv::Mat map;
   cv::divide(numerator, denominator, map);
   const cv::Scalar mean = cv::mean(map);
-  return (mean[0] + mean[1] + mean[2]) / 3;
+  double sum = 0;
+  for (int channel = 0; channel < map.channels(); ++channel) sum += mean[channel];
+  return sum / map.channels();
 }
 
 }  // namespace octopoint::tradeoff

@@ -1,11 +1,16 @@
 # Runs a small octopoint-tradeoff --sweep-views and checks its outputs: a CSV row per cell and
-# configuration with every column, the markdown table with its targets, and the pictures.
+# configuration with every column, the markdown table with its targets, the pictures, and nothing
+# on stderr.
 file(REMOVE_RECURSE ${OUT})
 execute_process(COMMAND ${TRADEOFF} ${SCAN} --sweep-views --sizes 64x48,160x120 --zooms 1,4 --rounds 1
                         --pictures -o ${OUT}
                 RESULT_VARIABLE status ERROR_VARIABLE errors)
 if(NOT status EQUAL 0)
   message(FATAL_ERROR "octopoint-tradeoff failed (${status}): ${errors}")
+endif()
+# stderr is for the one error line: a run that succeeds leaves it empty (no library warnings).
+if(NOT errors STREQUAL "")
+  message(FATAL_ERROR "octopoint-tradeoff succeeded but wrote to stderr: ${errors}")
 endif()
 file(STRINGS ${OUT}/sweep.csv lines)
 list(LENGTH lines count)
