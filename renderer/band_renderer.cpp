@@ -9,6 +9,7 @@
 #include "renderer/decode_algorithms.h"
 #include "renderer/framebuffer.h"
 #include "renderer/hole_fill.h"
+#include "renderer/render_check.h"
 #include "renderer/render_fixed_delta.h"
 #include "renderer/subtree_clip.h"
 
@@ -139,6 +140,7 @@ const char* describe(BandError error) {
     case BandError::kBufferTooSmall: return "band buffer or fill history too small";
     case BandError::kOverflow: return "band coordinates would overflow 32 bits";
     case BandError::kNoSink: return "no flush callback";
+    case BandError::kRefused: return "level, frame set-up or band index do not fit each other";
   }
   return "unknown error";
 }
@@ -149,6 +151,14 @@ BandError renderBands(const LevelView& level, const FrameSetup& setup, const Ban
   if (!supportsBands(config.variant)) return BandError::kUnsupportedVariant;
   if (config.band_rows < 1) return BandError::kBadBandRows;
   if (sink.flush == nullptr) return BandError::kNoSink;
+  // What renderLevel checks on a whole frame, against the frame's own size, and an index level
+  // the level can have: the band walks trust both (they would walk a level of another depth off
+  // its end).
+  const FrameView whole_frame(nullptr, setup.width, setup.height);
+  if (checkRender(level, setup, whole_frame) != RenderError::kNone ||
+      (index.level != 0 && !indexLevelAllowed(level.depth, index.level))) {
+    return BandError::kRefused;
+  }
   const std::int32_t width = setup.width, height = setup.height;
   const std::size_t words = bandBufferWords(width, config);
   if (buffers.first.size() < words || (!buffers.second.empty() && buffers.second.size() < words) ||

@@ -83,6 +83,9 @@ enum class BandError : std::uint8_t {
   kBufferTooSmall,      // a band buffer below bandBufferWords, or the fill history too small
   kOverflow,            // a band's shifted coordinates would leave 32 bits (bandFrameSetup)
   kNoSink,              // no flush callback
+  kRefused,             // what renderLevel refuses (renderer/render_check.h: a level of another
+                        // depth than the set-up's, an implausible level, a set-up buildFrameSetup
+                        // would not make), or an index level no tree of the level's depth has
 };
 
 const char* describe(BandError error);

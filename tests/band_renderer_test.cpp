@@ -8,6 +8,7 @@
 #include <cstdint>
 #include <cstdlib>
 #include <cstring>
+#include <limits>
 #include <numeric>
 #include <vector>
 
@@ -232,6 +233,17 @@ TEST_F(BandRenderer, RefusesWhatItCannotDraw) {
   EXPECT_EQ(bands({Variant::kFixedFast, 8, true, {}}, {buffer, {}, {}}, collected.sink()),  // no history
             BandError::kBufferTooSmall);
   EXPECT_EQ(bands({Variant::kFixedFast, 8, true, {}}, {buffer, {}, history}, BandSink{}), BandError::kNoSink);
+  // A level of another depth than the set-up's, a set-up buildFrameSetup would not make, an index
+  // level the level cannot have: refused before a band is drawn (issue 16, API misuse).
+  const BandConfig config{Variant::kFixedFast, 8, false, {}};
+  const BandBuffers one{buffer, {}, {}};
+  const LevelView& coarsest = model_->level(0);
+  EXPECT_EQ(renderBands(coarsest, setup, config, {}, palette, one, collected.sink()), BandError::kRefused);
+  FrameSetup huge_root = setup;
+  huge_root.root.x = std::numeric_limits<std::int32_t>::max() - 1;
+  EXPECT_EQ(renderBands(level, huge_root, config, {}, palette, one, collected.sink()), BandError::kRefused);
+  const BandIndex leaf_index{level.depth, {}};  // an index level at the leaves: never allowed
+  EXPECT_EQ(renderBands(level, setup, config, leaf_index, palette, one, collected.sink()), BandError::kRefused);
   EXPECT_EQ(collected.flushes, 0);
   FrameSetup band;
   EXPECT_EQ(bandFrameSetup(setup, 40, 9, &band), CameraError::kBadViewport);
