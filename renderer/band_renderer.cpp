@@ -58,21 +58,39 @@ class IndexedBandWalk {
         y_shift_(std::int64_t{window_y0} << frame.fraction_bits),
         delta_(delta) {}
 
-  void run() {
+  // False when the index does not fit the level (built from another level of the same depth):
+  // too few or too many entries, or sizes that pass the end of the stream or do not add up to it.
+  // Found on the first band, which visits every index-level node, before anything is flushed. An
+  // index whose sizes add up but belong to another tree is not found in O(1) per subtree: build
+  // the index from the level you draw (buildBandIndex), as a level comes from a validated model.
+  bool run() {
     const std::uint8_t* node = level_.nodes.data();
     std::uint32_t leaf = 0;
     visit(0, frame_.root, node, leaf);
+    return fits_ && entry_ == index_.sizes.size() && node == level_.nodes.data() + level_.nodes.size() &&
+           leaf == level_.leaves.size();
   }
 
  private:
   void visit(int l, const Vec3& centre, const std::uint8_t*& node, std::uint32_t& leaf) {
+    if (!fits_) return;
     if (l == index_.level) {
+      const auto node_begin = static_cast<std::size_t>(node - level_.nodes.data());
+      if (entry_ == index_.sizes.size() || index_.sizes[entry_].nodes > level_.nodes.size() - node_begin ||
+          index_.sizes[entry_].leaves > level_.leaves.size() - leaf) {
+        fits_ = false;
+        return;
+      }
       const SubtreeSize& size = index_.sizes[entry_++];
       // In window coordinates (bandFrameSetup proved that every shifted coordinate fits 32 bits).
       const Vec3 shifted{centre.x, static_cast<std::int32_t>(centre.y - y_shift_), centre.z};
       if (window_clip_.classify(0, shifted) != Clip::kOutside) draw(shifted, node, leaf, size);
       node += size.nodes;
       leaf += size.leaves;
+      return;
+    }
+    if (node == level_.nodes.data() + level_.nodes.size()) {
+      fits_ = false;
       return;
     }
     const auto& offsets = frame_.child_offset[static_cast<std::size_t>(l)];
@@ -103,6 +121,7 @@ class IndexedBandWalk {
   std::int64_t y_shift_;
   FixedDeltaDecoder* delta_;
   std::size_t entry_ = 0;
+  bool fits_ = true;
 };
 
 }  // namespace
@@ -200,12 +219,14 @@ BandError renderBands(const LevelView& level, const FrameSetup& setup, const Ban
     } else {
       work.height = window_rows;
       work.camera.height = window_rows;
+      bool index_fits = false;
       if (config.variant == Variant::kFixedDelta) {
         FixedDeltaDecoder delta(work, window);
-        IndexedBandWalk(level, setup, index, config.variant, work, window, window_y0, &delta).run();
+        index_fits = IndexedBandWalk(level, setup, index, config.variant, work, window, window_y0, &delta).run();
       } else {
-        IndexedBandWalk(level, setup, index, config.variant, work, window, window_y0, nullptr).run();
+        index_fits = IndexedBandWalk(level, setup, index, config.variant, work, window, window_y0, nullptr).run();
       }
+      if (!index_fits) return BandError::kRefused;  // on the first band: nothing flushed yet
     }
     const std::int32_t first_row = y0 - window_y0;  // the band's own rows in the window
     if (config.fill) fillHoleRows(window, first_row, first_row + rows, bridge_limit, buffers.fill_history);

@@ -85,7 +85,8 @@ enum class BandError : std::uint8_t {
   kNoSink,              // no flush callback
   kRefused,             // what renderLevel refuses (renderer/render_check.h: a level of another
                         // depth than the set-up's, an implausible level, a set-up buildFrameSetup
-                        // would not make), or an index level no tree of the level's depth has
+                        // would not make), or an index no tree of the level's depth has or that
+                        // does not fit the level (its entries or sizes: found on the first band)
 };
 
 const char* describe(BandError error);

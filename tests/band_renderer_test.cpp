@@ -234,17 +234,33 @@ TEST_F(BandRenderer, RefusesWhatItCannotDraw) {
             BandError::kBufferTooSmall);
   EXPECT_EQ(bands({Variant::kFixedFast, 8, true, {}}, {buffer, {}, history}, BandSink{}), BandError::kNoSink);
   // A level of another depth than the set-up's, a set-up buildFrameSetup would not make, an index
-  // level the level cannot have: refused before a band is drawn (issue 16, API misuse).
-  const BandConfig config{Variant::kFixedFast, 8, false, {}};
-  const BandBuffers one{buffer, {}, {}};
-  const LevelView& coarsest = model_->level(0);
-  EXPECT_EQ(renderBands(coarsest, setup, config, {}, palette, one, collected.sink()), BandError::kRefused);
-  FrameSetup huge_root = setup;
-  huge_root.root.x = std::numeric_limits<std::int32_t>::max() - 1;
-  EXPECT_EQ(renderBands(level, huge_root, config, {}, palette, one, collected.sink()), BandError::kRefused);
-  const BandIndex leaf_index{level.depth, {}};  // an index level at the leaves: never allowed
-  EXPECT_EQ(renderBands(level, setup, config, leaf_index, palette, one, collected.sink()), BandError::kRefused);
-  EXPECT_EQ(collected.flushes, 0);
+  // level the level cannot have, an index that does not fit the level: refused before a band is
+  // flushed (issue 16, API misuse), by every variant that draws bands.
+  std::vector<SubtreeSize> storage(4096);
+  const BandIndex index = buildBandIndex(level, 4, storage);
+  ASSERT_EQ(index.level, 4);
+  const BandIndex one_short{index.level, index.sizes.first(index.sizes.size() - 1)};
+  std::vector<SubtreeSize> lying(index.sizes.begin(), index.sizes.end());
+  lying.front().nodes = static_cast<std::uint16_t>(lying.front().nodes + 1);
+  for (const VariantInfo& info : allVariants()) {
+    if (!supportsBands(info.variant)) continue;
+    SCOPED_TRACE(info.name);
+    const BandConfig config{info.variant, 8, false, {}};
+    const BandBuffers one{buffer, {}, {}};
+    ASSERT_EQ(renderBands(level, setup, config, index, palette, one, collected.sink()), BandError::kNone);
+    collected.flushes = 0;
+    const LevelView& coarsest = model_->level(0);
+    EXPECT_EQ(renderBands(coarsest, setup, config, {}, palette, one, collected.sink()), BandError::kRefused);
+    FrameSetup huge_root = setup;
+    huge_root.root.x = std::numeric_limits<std::int32_t>::max() - 1;
+    EXPECT_EQ(renderBands(level, huge_root, config, {}, palette, one, collected.sink()), BandError::kRefused);
+    const BandIndex leaf_index{level.depth, {}};  // an index level at the leaves: never allowed
+    EXPECT_EQ(renderBands(level, setup, config, leaf_index, palette, one, collected.sink()), BandError::kRefused);
+    EXPECT_EQ(renderBands(level, setup, config, one_short, palette, one, collected.sink()), BandError::kRefused);
+    EXPECT_EQ(renderBands(level, setup, config, {index.level, lying}, palette, one, collected.sink()),
+              BandError::kRefused);
+    EXPECT_EQ(collected.flushes, 0);
+  }
   FrameSetup band;
   EXPECT_EQ(bandFrameSetup(setup, 40, 9, &band), CameraError::kBadViewport);
   EXPECT_EQ(bandFrameSetup(setup, -1, 2, &band), CameraError::kBadViewport);
