@@ -1,9 +1,11 @@
 // The cost of each style (docs/styles.md) against the plain frame, in one binary so that the
 // ratios are measured side by side: the default model at depth auto, turned 30 degrees, at 320x240
-// and 1920x1080 (zoom 1). A frame is what an app pays per picture: clear, decode (fixed_fast),
-// and turn into RGB888. "plain" is today's colour frame (resolveToRgb); each style goes through
-// FrameStyler (the colour style too, to show the styler's own overhead). Counter ns_per_px: the
-// whole frame's time per pixel of the frame. bench/style-run prints the ratios to plain.
+// and 1920x1080 (zoom 1). A frame is what an app pays per picture: clear, decode (fixed_fast, the
+// portable decoder, and fixed_simd where the CPU has AVX2: the faster the decoder, the larger a
+// style's share), and turn into RGB888. "plain" is today's colour frame (resolveToRgb); each style
+// goes through FrameStyler (the colour style too, to show the styler's own overhead). Names:
+// style/<style>/<variant>/<width>x<height>. Counter ns_per_px: the whole frame's time per pixel of
+// the frame. bench/style-run prints the ratios to plain.
 #include <benchmark/benchmark.h>
 
 #include <string>
@@ -57,7 +59,7 @@ void setCounters(benchmark::State& state, const Scene& scene, Size size) {
                          benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
 }
 
-void plainFrame(benchmark::State& state, Size size) {
+void plainFrame(benchmark::State& state, Size size, Variant variant) {
   const Scene scene = sceneFor(size);
   if (scene.level == nullptr) {
     state.SkipWithError("camera refused");
@@ -68,7 +70,7 @@ void plainFrame(benchmark::State& state, Size size) {
                                 static_cast<std::size_t>(size.height) * 3);
   for (auto _ : state) {
     frame.clear();
-    renderLevel(Variant::kFixedFast, *scene.level, scene.setup, frame);
+    renderLevel(variant, *scene.level, scene.setup, frame);
     resolveToRgb(frame, model(), kBackground, rgb);
     benchmark::DoNotOptimize(rgb.data());
     benchmark::ClobberMemory();
@@ -76,7 +78,7 @@ void plainFrame(benchmark::State& state, Size size) {
   setCounters(state, scene, size);
 }
 
-void styledFrame(benchmark::State& state, Size size, Style style) {
+void styledFrame(benchmark::State& state, Size size, Variant variant, Style style) {
   const Scene scene = sceneFor(size);
   FrameStyler styler(model());
   StyleOptions options;
@@ -91,7 +93,7 @@ void styledFrame(benchmark::State& state, Size size, Style style) {
                                 static_cast<std::size_t>(size.height) * 3);
   for (auto _ : state) {
     frame.clear(styler.payload());
-    renderLevel(Variant::kFixedFast, *scene.level, scene.setup, frame);
+    renderLevel(variant, *scene.level, scene.setup, frame);
     styler.beginFrame(scene.setup);
     if (styler.resolve(frame, rgb) != StyleError::kNone) state.SkipWithError("resolve refused");
     benchmark::DoNotOptimize(rgb.data());
@@ -101,21 +103,26 @@ void styledFrame(benchmark::State& state, Size size, Style style) {
 }
 
 void registerAll() {
-  for (const Size size : kSizes) {
-    // Appended, not concatenated: GCC 12 warns falsely (-Wrestrict) about "literal" + string.
-    std::string suffix = "/";
-    suffix += std::to_string(size.width);
-    suffix += 'x';
-    suffix += std::to_string(size.height);
-    std::string plain = "style/plain";
-    plain += suffix;
-    benchmark::RegisterBenchmark(plain.c_str(), plainFrame, size)->Unit(benchmark::kMicrosecond);
-    for (const StyleInfo& info : allStyles()) {
-      std::string name = "style/";
-      name += info.name;
-      name += suffix;
-      benchmark::RegisterBenchmark(name.c_str(), styledFrame, size, info.style)
-          ->Unit(benchmark::kMicrosecond);
+  for (const VariantInfo& variant : allVariants()) {
+    if (variant.variant != Variant::kFixedFast && variant.variant != Variant::kFixedSimd) continue;
+    for (const Size size : kSizes) {
+      // Appended, not concatenated: GCC 12 warns falsely (-Wrestrict) about "literal" + string.
+      std::string suffix = "/";
+      suffix += variant.name;
+      suffix += '/';
+      suffix += std::to_string(size.width);
+      suffix += 'x';
+      suffix += std::to_string(size.height);
+      std::string plain = "style/plain";
+      plain += suffix;
+      benchmark::RegisterBenchmark(plain.c_str(), plainFrame, size, variant.variant)->Unit(benchmark::kMicrosecond);
+      for (const StyleInfo& info : allStyles()) {
+        std::string name = "style/";
+        name += info.name;
+        name += suffix;
+        benchmark::RegisterBenchmark(name.c_str(), styledFrame, size, variant.variant, info.style)
+            ->Unit(benchmark::kMicrosecond);
+      }
     }
   }
 }
