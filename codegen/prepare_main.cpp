@@ -40,7 +40,9 @@ and OUTDIR/NAME.oct (the same model as one binary file, for octopoint-render --f
   SCAN                  the scan to read (a regular file of at most 1 GiB); points with a NaN
                         or infinite coordinate are dropped
   -o, --output OUTDIR   where to write (created if missing); all files appear or none do, also
-                        when interrupted (SIGINT, SIGTERM); existing outputs must be regular files
+                        when interrupted (SIGINT, SIGTERM); existing outputs must be regular files.
+                        A rerun replaces NAME's set: NAME_depthD.cpp files of an earlier run that
+                        this one does not write (fewer depths, --single-source) are removed
   --name NAME           the model's name, e.g. milk_carton: a C++ identifier of at most 64
                         letters, digits and single underscores (not at either end), with a
                         lower-case letter, not a C++ keyword
@@ -281,7 +283,8 @@ int run(int argc, char** argv) {
   std::vector<OutputFile> files = emitSources(model, args->emit);
   const std::vector<std::uint8_t> image = args->chunked ? serializeChunkedModel(model, args->chunking, &layout) : serializeModel(model);
   files.push_back({model.name + ".oct", std::string(image.begin(), image.end())});
-  octopoint::cli::writeFilesAtomically(args->output_dir, files);
+  // A rerun replaces the model's whole set: level sources of depths it leaves out go too.
+  octopoint::cli::writeFilesAtomically(args->output_dir, files, staleLevelSources(args->output_dir, model.name, files));
 
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   std::printf("%s: %zu points (%zu dropped as non-finite), %s, %zu palette colours, cube edge %.4g m\n",
