@@ -4,12 +4,14 @@
 // frames follow the window's size.
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <functional>
 #include <optional>
 #include <iostream>
+#include <memory>
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 #include <span>
@@ -162,21 +164,24 @@ InteractiveConfig interactiveConfig(const Options& options, ViewWindow& window) 
 }
 
 // Draws the views of a chunked model as it streams in: the fine frame at the depth the view needs,
-// the coarse one a stored depth coarser; an empty frame until the head has arrived. Both render
-// threads take the stream's lock to draw (the model is not thread-safe).
+// the coarse one a stored depth coarser; an empty frame until the head has arrived. Each render
+// thread draws from its own snapshot of the chunks held, taken under the stream's lock for a copy
+// of one byte per chunk, and draws without the lock: chunks keep arriving while it draws.
 ViewDrawFunction streamDrawer(net::ModelStream& stream) {
   const Variant variant = InteractiveConfig{}.variant;
-  return [&stream, variant](FrameSource source, const Camera& camera, Framebuffer& frame,
-                            const std::atomic<bool>* abort, int* depth) {
-    bool complete = true;
-    stream.withModel([&](ProgressiveModel* model) {
-      if (model == nullptr) return;
-      ProgressiveDrawStats stats;
-      const int coarser = source == FrameSource::kCoarse ? 1 : 0;
-      complete = model->draw(camera, variant, frame, &stats, abort, coarser) || abort == nullptr ||
-                 !abort->load();
-      *depth = stats.drawn_depth;
-    });
+  // One per render thread (FrameSource: L draws kCoarse, H kFine), kept across frames.
+  auto snapshots = std::make_shared<std::array<ProgressiveFrame, 2>>();
+  return [&stream, variant, snapshots](FrameSource source, const Camera& camera,
+                                       Framebuffer& frame, const std::atomic<bool>* abort,
+                                       int* depth) {
+    ProgressiveFrame& snapshot = (*snapshots)[source == FrameSource::kFine ? 1 : 0];
+    const ProgressiveModel* model = stream.snapshot(snapshot);
+    if (model == nullptr) return true;
+    ProgressiveDrawStats stats;
+    const int coarser = source == FrameSource::kCoarse ? 1 : 0;
+    const bool complete = model->draw(snapshot, camera, variant, frame, &stats, abort, coarser) ||
+                          abort == nullptr || !abort->load();
+    *depth = stats.drawn_depth;
     return complete;
   };
 }
@@ -207,15 +212,14 @@ Viewer::Viewer(const Options& options, const ModelView* model, net::ModelStream*
           resolveStyled(frame, info, rgb);
           return;
         }
-        stream_->withModel([&](ProgressiveModel* chunked) {
-          if (chunked != nullptr) {
-            resolveToRgb(frame, chunked->baseModel(), kBackground, rgb);
-            return;
-          }
-          for (std::size_t i = 0; i + 2 < rgb.size(); i += 3) {
-            rgb[i] = kBackground.r, rgb[i + 1] = kBackground.g, rgb[i + 2] = kBackground.b;
-          }
-        });
+        // The palette never changes once the head is in: resolved without the stream's lock.
+        if (const ProgressiveModel* chunked = stream_->model(); chunked != nullptr) {
+          resolveToRgb(frame, chunked->baseModel(), kBackground, rgb);
+          return;
+        }
+        for (std::size_t i = 0; i + 2 < rgb.size(); i += 3) {
+          rgb[i] = kBackground.r, rgb[i + 1] = kBackground.g, rgb[i + 2] = kBackground.b;
+        }
       }) {
   if (model_ != nullptr) {
     StyleOptions style;

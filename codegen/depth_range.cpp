@@ -15,12 +15,8 @@ std::vector<int> defaultDepths() {
 }
 
 std::size_t denseDepthCount(std::span<const std::size_t> voxels_per_depth) {
-  std::size_t kept = std::min<std::size_t>(1, voxels_per_depth.size());
-  while (kept < voxels_per_depth.size() &&
-         voxels_per_depth[kept] >= kDenseGrowth * voxels_per_depth[kept - 1]) {
-    ++kept;
-  }
-  return kept;
+  const std::vector<std::uint64_t> counts(voxels_per_depth.begin(), voxels_per_depth.end());
+  return octopoint::denseDepthCount(counts);  // the renderer's depth auto cuts at the same depth
 }
 
 std::vector<int> neededDepthRange(std::span<const Camera> cameras) {

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "renderer/camera.h"
+#include "renderer/level_of_detail.h"
 
 namespace octopoint::prepare {
 
@@ -19,12 +20,11 @@ inline constexpr int kDefaultCoarsestDepth = 6;
 inline constexpr int kDefaultFinestDepth = 10;
 std::vector<int> defaultDepths();
 
-// A surface sampled densely fills about four times as many voxels at each finer depth (eight for
-// a volume); a depth with fewer than kDenseGrowth times its coarser neighbour's voxels is finer
-// than the scan's point spacing, and draws with cracks between its voxels. For the voxel counts of
-// consecutive ascending depths, how many leading depths to keep: up to (excluding) the first whose
-// count is below kDenseGrowth times the previous one's; always at least one.
-inline constexpr std::size_t kDenseGrowth = 3;
+// The renderer's rule (renderer/level_of_detail.h, denseDepthCount): a depth with fewer than
+// kDenseGrowth times its coarser neighbour's voxels is finer than the scan's point spacing, and
+// draws with cracks between its voxels. For the voxel counts of consecutive ascending depths, how
+// many leading depths to keep; always at least one.
+inline constexpr std::size_t kDenseGrowth = static_cast<std::size_t>(octopoint::kDenseGrowth);
 std::size_t denseDepthCount(std::span<const std::size_t> voxels_per_depth);
 
 // What the views `cameras` need (coarsest to finest, consecutive): from one depth coarser than the

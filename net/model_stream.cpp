@@ -72,6 +72,18 @@ class ModelStream::Impl {
     use(model_ ? &*model_ : nullptr);
   }
 
+  const ProgressiveModel* model() {
+    std::lock_guard<std::mutex> lock(mutex_);
+    return model_ ? &*model_ : nullptr;
+  }
+
+  const ProgressiveModel* snapshot(ProgressiveFrame& frame) {
+    std::lock_guard<std::mutex> lock(mutex_);
+    if (!model_) return nullptr;
+    model_->snapshot(frame);
+    return &*model_;
+  }
+
   void onAccepted(std::function<void(ProgressiveModel&, std::uint64_t)> callback) {
     std::lock_guard<std::mutex> lock(mutex_);
     on_accepted_ = std::move(callback);
@@ -342,6 +354,10 @@ StreamStatus ModelStream::status() { return impl_->status(); }
 void ModelStream::withModel(const std::function<void(ProgressiveModel*)>& use) {
   impl_->withModel(use);
 }
+const ProgressiveModel* ModelStream::snapshot(ProgressiveFrame& frame) {
+  return impl_->snapshot(frame);
+}
+const ProgressiveModel* ModelStream::model() { return impl_->model(); }
 void ModelStream::onAccepted(std::function<void(ProgressiveModel&, std::uint64_t)> callback) {
   impl_->onAccepted(std::move(callback));
 }

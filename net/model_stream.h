@@ -12,8 +12,10 @@
 // are cut off (net/range_client.h). Only a head that is not a chunked model, or a file that changed
 // size, ends it for good.
 //
-// Threads: `connections` workers fetch; the model is touched only under the stream's lock, which
-// callers take through withModel() to draw.
+// Threads: `connections` workers fetch; the model is fed and asked only under the stream's lock.
+// Drawing threads take that lock only to copy a snapshot of which chunks are drawable (snapshot(),
+// one byte per chunk), then draw it without the lock: a frame and the arrival of chunks never wait
+// on each other for longer than that copy, or than accepting one chunk.
 
 #include <chrono>
 #include <condition_variable>
@@ -70,6 +72,14 @@ class ModelStream {
   StreamStatus status();
   // Calls `use(model)` under the stream's lock; `model` is null until the head has arrived.
   void withModel(const std::function<void(ProgressiveModel*)>& use);
+  // Copies which chunks the model holds now into `frame` under the lock (ProgressiveModel::
+  // snapshot) and returns the model to draw it with, model->draw(frame, ...), without the lock;
+  // null until the head has arrived. The model lives as long as the stream; its head and base
+  // model (baseModel(), for the palette) never change.
+  const ProgressiveModel* snapshot(ProgressiveFrame& frame);
+  // The model once the head has arrived (null before), for its head and base model, which never
+  // change; anything else only under withModel.
+  const ProgressiveModel* model();
   // Called under the lock after each table or chunk the model accepted, with the bytes received so
   // far (for measurements).
   void onAccepted(std::function<void(ProgressiveModel&, std::uint64_t bytes_received)> callback);

@@ -16,6 +16,15 @@ std::optional<bool> fitsAPixel(const Camera& camera, int depth) {
 
 }  // namespace
 
+std::size_t denseDepthCount(std::span<const std::uint64_t> voxels_per_depth) {
+  std::size_t kept = std::min<std::size_t>(1, voxels_per_depth.size());
+  while (kept < voxels_per_depth.size() &&
+         voxels_per_depth[kept] >= kDenseGrowth * voxels_per_depth[kept - 1]) {  // counts < 2^62
+    ++kept;
+  }
+  return kept;
+}
+
 std::optional<int> autoDepth(std::span<const int> stored_depths, const Camera& camera) {
   std::optional<int> finest_accepted;
   for (const int depth : stored_depths) {  // coarsest first
@@ -35,9 +44,14 @@ std::optional<int> neededDepth(const Camera& camera) {
 
 const LevelView* autoLevel(const ModelView& model, const Camera& camera) {
   std::array<int, format::kMaxLevels> depths{};
-  const int count = model.levelCount();
-  for (int i = 0; i < count; ++i) depths[static_cast<std::size_t>(i)] = model.level(i).depth;
-  const std::optional<int> depth = autoDepth(std::span<const int>(depths.data(), static_cast<std::size_t>(count)), camera);
+  std::array<std::uint64_t, format::kMaxLevels> voxels{};
+  const auto count = static_cast<std::size_t>(model.levelCount());
+  for (std::size_t i = 0; i < count; ++i) {
+    depths[i] = model.level(static_cast<int>(i)).depth;
+    voxels[i] = model.level(static_cast<int>(i)).leaves.size();
+  }
+  const std::size_t dense = denseDepthCount(std::span(voxels).first(count));
+  const std::optional<int> depth = autoDepth(std::span<const int>(depths.data(), dense), camera);
   return depth ? model.levelOfDepth(*depth) : nullptr;
 }
 

@@ -65,54 +65,67 @@ struct PieceCounter {
 }  // namespace
 
 std::optional<int> ProgressiveModel::wantedDepth(const Camera& camera) const {
-  std::array<int, chunked::kMaxChunkedLevels> depths{};
-  for (int j = 0; j < head_.level_count; ++j) depths[static_cast<std::size_t>(j)] = levelDepth(j);
-  return autoDepth(std::span<const int>(depths.data(), static_cast<std::size_t>(head_.level_count)),
-                   camera);
+  return wantedDepth(tables_, camera);
 }
 
-bool ProgressiveModel::prepareFrame(const Camera& camera, int coarser_levels) {
-  const std::optional<int> wanted = wantedDepth(camera);
+// Depth by projected size over the depths the scan samples densely (renderer/level_of_detail.h,
+// denseDepthCount): the known levels' voxel counts say which those are; a level whose table is not
+// known yet may be dense, so it stays a candidate until its table says otherwise.
+std::optional<int> ProgressiveModel::wantedDepth(const ProgressiveTables& tables,
+                                                 const Camera& camera) const {
+  const auto known = static_cast<std::size_t>(tables.known_levels);
+  const std::size_t dense = denseDepthCount(std::span(tables.points).first(known));
+  const std::size_t candidates = dense < known && !every_stored_depth_
+                                     ? dense
+                                     : static_cast<std::size_t>(head_.level_count);
+  std::array<int, chunked::kMaxChunkedLevels> depths{};
+  for (std::size_t j = 0; j < candidates; ++j) depths[j] = levelDepth(static_cast<int>(j));
+  return autoDepth(std::span<const int>(depths.data(), candidates), camera);
+}
+
+bool ProgressiveModel::prepareFrame(const ProgressiveTables& tables, const Camera& camera,
+                                    int coarser_levels, Setups& frame) const {
+  const std::optional<int> wanted = wantedDepth(tables, camera);
   if (!wanted) return false;
   int drawn = 0;
   while (drawn + 1 < head_.level_count && levelDepth(drawn + 1) <= *wanted) ++drawn;
   drawn = std::max(0, drawn - coarser_levels);
-  frame_.drawn_level = drawn;
-  frame_.wanted_depth = *wanted;
+  frame.drawn_level = drawn;
+  frame.wanted_depth = *wanted;
   // Where a leaf's splat reaches from its position, over every depth that may be drawn.
-  frame_.splat_low = {0, 0, 0};
-  frame_.splat_high = {0, 0, 0};
+  frame.splat_low = {0, 0, 0};
+  frame.splat_high = {0, 0, 0};
   for (int j = 0; j <= drawn; ++j) {
-    FrameSetup& full = frame_.full[static_cast<std::size_t>(j)];
+    FrameSetup& full = frame.full[static_cast<std::size_t>(j)];
     if (buildFrameSetup(camera, levelDepth(j), kDefaultFractionBits, &full) != CameraError::kNone)
       return false;
-    frame_.splat_low.x = std::min(frame_.splat_low.x, full.splat.offset_x);
-    frame_.splat_low.y = std::min(frame_.splat_low.y, full.splat.offset_y);
-    frame_.splat_high.x = std::max(frame_.splat_high.x, full.splat.offset_x + full.splat.span_x);
-    frame_.splat_high.y = std::max(frame_.splat_high.y, full.splat.offset_y + full.splat.span_y);
+    frame.splat_low.x = std::min(frame.splat_low.x, full.splat.offset_x);
+    frame.splat_low.y = std::min(frame.splat_low.y, full.splat.offset_y);
+    frame.splat_high.x = std::max(frame.splat_high.x, full.splat.offset_x + full.splat.span_x);
+    frame.splat_high.y = std::max(frame.splat_high.y, full.splat.offset_y + full.splat.span_y);
   }
-  const FrameSetup& finest = frame_.full[static_cast<std::size_t>(drawn)];
+  frame.width = camera.width;
+  frame.height = camera.height;
+  const FrameSetup& finest = frame.full[static_cast<std::size_t>(drawn)];
   for (int j = 0; j <= drawn; ++j) {
     const auto at = static_cast<std::size_t>(j);
     const int own_level = j == 0 ? 0 : head_.levels[at].region_level;
-    frame_.own[at] = movedToLevel(frame_.full[at], own_level, finest);
-    frame_.own_reach[at] = reachBelow(own_level);
+    frame.own[at] = movedToLevel(frame.full[at], own_level, finest);
+    frame.own_reach[at] = reachBelow(frame, own_level);
     if (j + 1 < head_.level_count) {
-      frame_.restricted[at] =
-          movedToLevel(frame_.full[at], head_.levels[at + 1].region_level, finest);
-      frame_.restricted_reach[at] = reachBelow(head_.levels[at + 1].region_level);
+      frame.restricted[at] =
+          movedToLevel(frame.full[at], head_.levels[at + 1].region_level, finest);
+      frame.restricted_reach[at] = reachBelow(frame, head_.levels[at + 1].region_level);
     }
   }
-  frame_.width = camera.width;
-  frame_.height = camera.height;
   return true;
 }
 
 // Leaves of a node at `tree_level` lie within the sum, over the levels below it down to the finest
 // depth drawn, of the largest child offset per axis (as in renderer/subtree_clip.h). Coarser depths
 // stop earlier, so this bounds them too.
-Vec3 ProgressiveModel::reachBelow(int tree_level) const {
-  const FrameSetup& finest = frame_.full[static_cast<std::size_t>(frame_.drawn_level)];
+Vec3 ProgressiveModel::reachBelow(const Setups& frame, int tree_level) const {
+  const FrameSetup& finest = frame.full[static_cast<std::size_t>(frame.drawn_level)];
   Vec3 reach{0, 0, 0};
   for (int l = tree_level; l < finest.depth; ++l) {
     std::int32_t widest_x = 0, widest_y = 0;
@@ -126,16 +139,16 @@ Vec3 ProgressiveModel::reachBelow(int tree_level) const {
   return reach;
 }
 
-bool ProgressiveModel::offScreen(const Vec3& centre, const Vec3& reach) const {
+bool ProgressiveModel::offScreen(const Setups& frame, const Vec3& centre, const Vec3& reach) {
   const int f = kDefaultFractionBits;
-  const std::int64_t x_end = std::int64_t{frame_.width} << f,
-                     y_end = std::int64_t{frame_.height} << f;
+  const std::int64_t x_end = std::int64_t{frame.width} << f,
+                     y_end = std::int64_t{frame.height} << f;
   return std::int64_t{centre.x} + reach.x < 0 || std::int64_t{centre.x} - reach.x >= x_end ||
          std::int64_t{centre.y} + reach.y < 0 || std::int64_t{centre.y} - reach.y >= y_end;
 }
 
-Vec3 ProgressiveModel::regionCentre(int level, std::uint32_t region) const {
-  const FrameSetup& full = frame_.full[static_cast<std::size_t>(frame_.drawn_level)];
+Vec3 ProgressiveModel::regionCentre(const Setups& frame, int level, std::uint32_t region) const {
+  const FrameSetup& full = frame.full[static_cast<std::size_t>(frame.drawn_level)];
   const int region_level =
       level == 0 ? 0 : head_.levels[static_cast<std::size_t>(level)].region_level;
   Vec3 centre = full.root;
@@ -147,29 +160,35 @@ Vec3 ProgressiveModel::regionCentre(int level, std::uint32_t region) const {
   return centre;
 }
 
+// Reads only what `snapshot` says is published: the tables of its known levels and the streams of
+// its drawable chunks (never a slot's state, which the feeder may be changing).
 template <typename PieceVisitor>
-void ProgressiveModel::visitPieces(int level, std::uint32_t index, PieceVisitor& visitor) {
+void ProgressiveModel::visitPieces(ProgressiveFrame& snapshot, int level, std::uint32_t index,
+                                   PieceVisitor& visitor) const {
   const auto at = static_cast<std::size_t>(level);
-  Slot& slot = levels_[at].slots[index];
-  const Vec3 centre = regionCentre(level, levels_[at].records[index].region);
-  if (offScreen(centre, frame_.own_reach[at])) return;
-  if (level == frame_.drawn_level || !levels_[at + 1].table_known) {
-    visitor(frame_.own[at], centre, slot.nodes, slot.leaves, level < frame_.drawn_level);
+  Setups& frame = snapshot.setups_;
+  const ProgressiveTables& tables = snapshot.tables_;
+  const Slot& slot = levels_[at].slots[index];
+  if (level == 0 && snapshot.drawable_[0] == 0) return;  // the base contradicted level 1's table
+  const Vec3 centre = regionCentre(frame, level, levels_[at].records[index].region);
+  if (offScreen(frame, centre, frame.own_reach[at])) return;
+  if (level == frame.drawn_level || level + 1 >= tables.known_levels) {
+    visitor(frame.own[at], centre, slot.nodes, slot.leaves, level < frame.drawn_level);
     return;
   }
-  Level& finer = levels_[at + 1];
+  const Level& finer = levels_[at + 1];
+  const std::uint8_t* finer_drawable = snapshot.drawable_.data() + tables.first_chunk[at + 1];
   for (std::uint32_t c = slot.child_begin; c < slot.child_end; ++c) {
-    const Slot& child = finer.slots[c];
-    if (child.state == ChunkState::kHeld) {
-      visitPieces(level + 1, c, visitor);
+    if (finer_drawable[c] != 0) {
+      visitPieces(snapshot, level + 1, c, visitor);
       continue;
     }
-    const Vec3 child_centre = regionCentre(level + 1, finer.records[c].region);
-    if (offScreen(child_centre, frame_.restricted_reach[at])) continue;
-    const StreamRange& r =
-        child.in_parent;  // known: the chunk is held and its finer table is known
+    const Vec3 child_centre = regionCentre(frame, level + 1, finer.records[c].region);
+    if (offScreen(frame, child_centre, frame.restricted_reach[at])) continue;
+    // Known: this chunk is drawable and the finer table is known, so linkChildren set it.
+    const StreamRange& r = finer.slots[c].in_parent;
     visitor(
-        frame_.restricted[at], child_centre,
+        frame.restricted[at], child_centre,
         std::span<const std::uint8_t>(slot.nodes).subspan(r.node_begin, r.node_end - r.node_begin),
         std::span<const std::uint8_t>(slot.leaves).subspan(r.leaf_begin, r.leafCount()), true);
   }
@@ -178,31 +197,41 @@ void ProgressiveModel::visitPieces(int level, std::uint32_t index, PieceVisitor&
 bool ProgressiveModel::draw(const Camera& camera, Variant variant, FrameView& frame,
                             ProgressiveDrawStats* stats, const std::atomic<bool>* abort,
                             int coarser_levels) {
-  if (!prepareFrame(camera, coarser_levels)) return false;
+  snapshot(own_frame_);
+  return draw(own_frame_, camera, variant, frame, stats, abort, coarser_levels);
+}
+
+bool ProgressiveModel::draw(ProgressiveFrame& snapshot, const Camera& camera, Variant variant,
+                            FrameView& frame, ProgressiveDrawStats* stats,
+                            const std::atomic<bool>* abort, int coarser_levels) const {
+  if (snapshot.drawable_.empty()) return false;  // never given a snapshot
+  if (!prepareFrame(snapshot.tables_, camera, coarser_levels, snapshot.setups_)) return false;
   PieceDrawer drawer{variant, frame, abort, {}};
-  visitPieces(0, 0, drawer);
+  visitPieces(snapshot, 0, 0, drawer);
   if (stats != nullptr) {
     *stats = drawer.stats;
-    stats->wanted_depth = frame_.wanted_depth;
-    stats->drawn_depth = levelDepth(frame_.drawn_level);
+    stats->wanted_depth = snapshot.setups_.wanted_depth;
+    stats->drawn_depth = levelDepth(snapshot.setups_.drawn_level);
   }
   return !drawer.aborted;
 }
 
 bool ProgressiveModel::viewComplete(const Camera& camera) {
-  if (!prepareFrame(camera)) return false;
+  snapshot(own_frame_);
+  if (!prepareFrame(own_frame_.tables_, camera, 0, own_frame_.setups_)) return false;
   PieceCounter counter;
-  visitPieces(0, 0, counter);
+  visitPieces(own_frame_, 0, 0, counter);
   return counter.stats.coarser_pieces == 0;
 }
 
 std::size_t ProgressiveModel::fetchPriority(const Camera& camera, bool include_invisible,
                                             std::span<FetchItem> out, std::size_t* total) {
   if (total != nullptr) *total = 0;
-  if (!prepareFrame(camera)) return 0;
+  Setups& frame = own_frame_.setups_;
+  if (!prepareFrame(tables_, camera, 0, frame)) return 0;
   priority_scratch_.clear();
   const std::int64_t frame_w = camera.width, frame_h = camera.height;
-  for (int level = 1; level <= frame_.drawn_level; ++level) {
+  for (int level = 1; level <= frame.drawn_level; ++level) {
     const auto at = static_cast<std::size_t>(level);
     // Key, most significant first: invisible (1 bit), level (4 bits), 2^32 - 1 - on-screen area
     // (32 bits; a record table takes 0, before its level's chunks), index (27 bits).
@@ -212,7 +241,7 @@ std::size_t ProgressiveModel::fetchPriority(const Camera& camera, bool include_i
       priority_scratch_.push_back({level_key, recordTableItem(level)});
       continue;
     }
-    const std::int64_t reach_x = frame_.own_reach[at].x, reach_y = frame_.own_reach[at].y;
+    const std::int64_t reach_x = frame.own_reach[at].x, reach_y = frame.own_reach[at].y;
     const int f = kDefaultFractionBits;
     Level& target = levels_[at];
     const Level& coarser = levels_[at - 1];
@@ -221,8 +250,8 @@ std::size_t ProgressiveModel::fetchPriority(const Camera& camera, bool include_i
       const ChunkRecord& rec = target.records[i];
       slot.blocked = slot.state == ChunkState::kUnavailable || coarser.slots[rec.parent].blocked;
       if (slot.state != ChunkState::kMissing || slot.blocked) continue;
-      const Vec3 c = regionCentre(level, rec.region);
-      const bool visible = !offScreen(c, frame_.own_reach[at]);
+      const Vec3 c = regionCentre(frame, level, rec.region);
+      const bool visible = !offScreen(frame, c, frame.own_reach[at]);
       if (!visible && !include_invisible) continue;
       const std::int64_t x0 = std::clamp<std::int64_t>((c.x - reach_x) >> f, 0, frame_w);
       const std::int64_t x1 = std::clamp<std::int64_t>(((c.x + reach_x) >> f) + 1, 0, frame_w);

@@ -42,6 +42,9 @@ std::optional<ProgressiveModel> ProgressiveModel::fromHead(std::span<const std::
   base_slot.state = ChunkState::kHeld;
   base_slot.nodes = model.head_.base_nodes;
   base_slot.leaves = model.head_.base_leaves;
+  model.tables_.points[0] = model.head_.base_leaves.size();
+  model.drawable_.assign(1, 1);
+  model.own_frame_.drawable_.reserve(1);
   model.priority_scratch_.reserve(
       chunked::kMaxChunkedLevels);  // tables asked for before any is known
   return model;
@@ -100,6 +103,16 @@ bool ProgressiveModel::acceptRecordTable(int level, std::span<const std::uint8_t
   target.records = std::move(*records);
   target.slots.resize(target.records.size());
   target.table_known = true;
+  // Published to snapshots from here: the records, slots and the coarser slots' child ranges
+  // below are not written again.
+  tables_.known_levels = level + 1;
+  tables_.first_chunk[static_cast<std::size_t>(level)] =
+      static_cast<std::uint32_t>(drawable_.size());
+  std::uint64_t points = 0;
+  for (const ChunkRecord& r : target.records) points += r.points;
+  tables_.points[static_cast<std::size_t>(level)] = points;
+  drawable_.resize(drawable_.size() + target.records.size(), 0);
+  own_frame_.drawable_.reserve(drawable_.size());
   for (Slot& parent : coarser.slots) parent.child_begin = parent.child_end = 0;
   for (std::uint32_t i = 0; i < target.records.size(); ++i) {
     Slot& parent = coarser.slots[target.records[i].parent];
@@ -169,11 +182,11 @@ void ProgressiveModel::linkChildren(int level, std::uint32_t index) {
   if (!agrees || next != slot.child_end) {
     // The chunk's voxels are not the ones the directory says its finer chunks refine: the file is
     // inconsistent, so no amount of refetching helps. Drop it; its region stays coarser.
+    // Its stream is kept: a frame drawing an earlier snapshot may be reading it.
     for (std::uint32_t c = slot.child_begin; c < slot.child_end; ++c)
       finer.slots[c].range_known = false;
     slot.state = ChunkState::kUnavailable;
-    slot.nodes = {};
-    slot.leaves = {};
+    setDrawable(level, index, false);
     return;
   }
   for (std::uint32_t c = slot.child_begin; c < slot.child_end; ++c) {
@@ -200,7 +213,17 @@ void ProgressiveModel::becomeHeld(int level, std::uint32_t index) {
   slot.raw = {};
   slot.nodes.shrink_to_fit();
   slot.state = ChunkState::kHeld;
+  setDrawable(level, index, true);  // its stream is not written again
   linkChildren(level, index);
+}
+
+void ProgressiveModel::setDrawable(int level, std::uint32_t index, bool drawable) {
+  drawable_[tables_.first_chunk[static_cast<std::size_t>(level)] + index] = drawable ? 1 : 0;
+}
+
+void ProgressiveModel::snapshot(ProgressiveFrame& frame) const {
+  frame.tables_ = tables_;
+  frame.drawable_.assign(drawable_.begin(), drawable_.end());
 }
 
 std::uint64_t ProgressiveModel::acceptBytes(std::uint64_t file_offset,

@@ -18,7 +18,15 @@
 // records. A chunk that arrives before the one it refines waits as its raw bytes. This memory is
 // allocated when bytes arrive; drawing and fetchPriority allocate nothing.
 //
-// Not thread-safe: one thread (or a caller's lock) feeds, asks and draws.
+// Threads: feeding (accept, acceptBytes), asking (fetchPriority, viewComplete, chunkState, ...) and
+// snapshot() need one thread or a caller's lock. Drawing need not hold that lock for a frame's
+// length: a drawing thread takes a snapshot of which chunks are drawable into its own
+// ProgressiveFrame under the lock (a copy of one byte per chunk), then draws that snapshot with
+// draw(ProgressiveFrame&, ...) without the lock, while chunks keep arriving. A chunk's stream is
+// written before the chunk becomes drawable and never changed or freed afterwards, and record
+// tables are written once, before their level becomes known; so a snapshot reads only bytes no
+// feeder writes any more, and draws exactly the model as it was when the snapshot was taken
+// (tested under ThreadSanitizer with real threads).
 
 #include <array>
 #include <cstdint>
@@ -55,12 +63,50 @@ struct FetchItem {
   bool operator==(const FetchItem&) const = default;
 };
 
+// Which levels' record tables a model knows, with each level's voxel count (the base's leaves;
+// a level's: the sum of its chunks' point counts) and where its chunks start in the one-byte-per-
+// chunk drawable table. Levels' tables arrive in order, so the known ones are a prefix.
+struct ProgressiveTables {
+  int known_levels = 1;  // the base and the levels whose tables are known
+  std::array<std::uint64_t, chunked::kMaxChunkedLevels> points{};
+  std::array<std::uint32_t, chunked::kMaxChunkedLevels> first_chunk{};
+};
+
 struct ProgressiveDrawStats {
   int wanted_depth = 0;      // the depth the view needs (renderer/progressive_model.h: wantedDepth)
   int drawn_depth = 0;       // the finest stored depth not finer than that
   int pieces = 0;            // region streams drawn
   int coarser_pieces = 0;    // of those, drawn coarser than drawn_depth because data is missing
   std::uint64_t points = 0;  // leaves in the streams drawn
+};
+
+// What one drawing thread draws from: a snapshot of which chunks a model held when it was taken
+// (ProgressiveModel::snapshot), and the thread's own per-frame set-ups. One per drawing thread;
+// its contents are the model's business.
+class ProgressiveFrame {
+ public:
+  ProgressiveFrame() = default;
+
+ private:
+  friend class ProgressiveModel;
+  // Per frame: set-ups of each level's depth, moved to the level's own regions and to the next
+  // level's regions (drawing a coarser chunk in place of a missing finer one).
+  struct Setups {
+    int wanted_depth = 0;
+    std::int32_t width = 0, height = 0;
+    int drawn_level = 0;  // the finest level whose depth is not finer than wanted_depth
+    std::array<FrameSetup, chunked::kMaxChunkedLevels> full{};  // for whole-model streams
+    std::array<FrameSetup, chunked::kMaxChunkedLevels> own{};
+    std::array<FrameSetup, chunked::kMaxChunkedLevels> restricted{};
+    // Half the on-screen extent (Q(32-F).F) of a region of each level's regions and of the next
+    // level's, reaching down to the finest depth drawn: anything drawn for the region lies within.
+    std::array<Vec3, chunked::kMaxChunkedLevels> own_reach{};
+    std::array<Vec3, chunked::kMaxChunkedLevels> restricted_reach{};
+    Vec3 splat_low{}, splat_high{};  // the widest splat's first and last pixel from a leaf (x, y)
+  };
+  ProgressiveTables tables_;
+  std::vector<std::uint8_t> drawable_;  // per chunk of the known levels: 1 when drawable
+  Setups setups_;
 };
 
 class ProgressiveModel {
@@ -107,6 +153,11 @@ class ProgressiveModel {
   // over the model's depths, the base's included; nullopt for a camera refused at every depth.
   std::optional<int> wantedDepth(const Camera& camera) const;
 
+  // Depth by projected size over every stored depth, dense or not (default: only the depths the
+  // scan samples densely, renderer/level_of_detail.h). For hand-made models whose few voxels
+  // cannot grow kDenseGrowth times per depth.
+  void useEveryStoredDepth(bool every) { every_stored_depth_ = every; }
+
   // What to fetch next for this view, most urgent first: the record tables it needs, then its
   // chunks, visible before invisible (these only with include_invisible), coarse before fine,
   // larger on screen before smaller, then file order. Never a depth finer than the view needs,
@@ -115,6 +166,11 @@ class ProgressiveModel {
   // Allocates nothing. Returns 0 for a camera it refuses.
   std::size_t fetchPriority(const Camera& camera, bool include_invisible, std::span<FetchItem> out,
                             std::size_t* total = nullptr);
+
+  // Copies which chunks are drawable now into `frame` (one byte per chunk of the known levels;
+  // allocates only when the model has learnt a record table since `frame` last took a snapshot).
+  // Needs the feeder's lock; the draw that follows does not.
+  void snapshot(ProgressiveFrame& frame) const;
 
   // Draws the view into `frame` (which it does not clear) with a fixed-point variant (those that
   // draw splats, renderer/render.h drawsSplats, fill coarse voxels' footprints). Returns false,
@@ -125,6 +181,11 @@ class ProgressiveModel {
   bool draw(const Camera& camera, Variant variant, FrameView& frame,
             ProgressiveDrawStats* stats = nullptr, const std::atomic<bool>* abort = nullptr,
             int coarser_levels = 0);
+  // The same from a snapshot: draws the model as it was when `snapshot` was taken, and may run
+  // while another thread accepts chunks (see "Threads" above). Allocates nothing.
+  bool draw(ProgressiveFrame& snapshot, const Camera& camera, Variant variant, FrameView& frame,
+            ProgressiveDrawStats* stats = nullptr, const std::atomic<bool>* abort = nullptr,
+            int coarser_levels = 0) const;
 
   // Whether this view's picture is final: every visible region drawn at the depth the view needs.
   bool viewComplete(const Camera& camera);
@@ -152,21 +213,6 @@ class ProgressiveModel {
     std::vector<ChunkRecord> records;
     std::vector<Slot> slots;
   };
-  // Per frame: set-ups of each level's depth, moved to the level's own regions and to the next
-  // level's regions (drawing a coarser chunk in place of a missing finer one).
-  struct FrameState {
-    int wanted_depth = 0;
-    std::int32_t width = 0, height = 0;
-    int drawn_level = 0;  // the finest level whose depth is not finer than wanted_depth
-    std::array<FrameSetup, chunked::kMaxChunkedLevels> full{};  // for whole-model streams
-    std::array<FrameSetup, chunked::kMaxChunkedLevels> own{};
-    std::array<FrameSetup, chunked::kMaxChunkedLevels> restricted{};
-    // Half the on-screen extent (Q(32-F).F) of a region of each level's regions and of the next
-    // level's, reaching down to the finest depth drawn: anything drawn for the region lies within.
-    std::array<Vec3, chunked::kMaxChunkedLevels> own_reach{};
-    std::array<Vec3, chunked::kMaxChunkedLevels> restricted_reach{};
-    Vec3 splat_low{}, splat_high{};  // the widest splat's first and last pixel from a leaf (x, y)
-  };
   struct Priority {
     std::uint64_t key;  // visibility, level, screen area, order (see fetchPriority)
     FetchItem item;
@@ -177,18 +223,26 @@ class ProgressiveModel {
   ChunkedIssue acceptChunk(int level, std::uint32_t index, std::span<const std::uint8_t> bytes);
   void linkChildren(int level, std::uint32_t index);
   void becomeHeld(int level, std::uint32_t index);
-  bool prepareFrame(const Camera& camera, int coarser_levels = 0);
-  Vec3 regionCentre(int level, std::uint32_t region) const;
-  Vec3 reachBelow(int tree_level) const;
-  bool offScreen(const Vec3& centre, const Vec3& reach) const;
+  using Setups = ProgressiveFrame::Setups;
+  std::optional<int> wantedDepth(const ProgressiveTables& tables, const Camera& camera) const;
+  bool prepareFrame(const ProgressiveTables& tables, const Camera& camera, int coarser_levels,
+                    Setups& frame) const;
+  Vec3 regionCentre(const Setups& frame, int level, std::uint32_t region) const;
+  Vec3 reachBelow(const Setups& frame, int tree_level) const;
+  static bool offScreen(const Setups& frame, const Vec3& centre, const Vec3& reach);
   template <typename PieceVisitor>
-  void visitPieces(int level, std::uint32_t index, PieceVisitor& visitor);
+  void visitPieces(ProgressiveFrame& snapshot, int level, std::uint32_t index,
+                   PieceVisitor& visitor) const;
+  void setDrawable(int level, std::uint32_t index, bool drawable);
 
   ChunkedHead head_;
   std::vector<std::uint8_t> base_palette_;  // 256 x RGB888 for base_view_ (on the heap: movable)
   std::optional<ModelView> base_view_;
   std::array<Level, chunked::kMaxChunkedLevels> levels_{};
-  FrameState frame_{};
+  ProgressiveTables tables_;             // what snapshots copy, with drawable_
+  std::vector<std::uint8_t> drawable_;   // per chunk of the known levels: 1 when drawable
+  bool every_stored_depth_ = false;
+  ProgressiveFrame own_frame_;           // for draw without a snapshot, fetchPriority, viewComplete
   std::vector<Priority> priority_scratch_;
 };
 

@@ -117,6 +117,7 @@ TEST(ChunkedFormat, GoldenDrawsCoarseToFineAsWorkedOutByHand) {
   std::optional<ProgressiveModel> model =
       ProgressiveModel::fromHead(std::span(kGolden).first(kHeadBytes), nullptr);
   ASSERT_TRUE(model.has_value());
+  model->useEveryStoredDepth(true);  // 2, 2 and 1 voxels: no depth samples "densely"
   // An 8 x 8 frame at zoom 1 wants depth 3 (one pixel per voxel). The base alone: its voxels'
   // centres are 2 pixels from the cube's centre (4, 4) on each axis.
   using Lit = std::vector<std::array<int, 3>>;

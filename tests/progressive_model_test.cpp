@@ -12,6 +12,8 @@
 #include <random>
 
 #include "codegen/level_voxels.h"
+#include "codegen/model_writer.h"
+#include "renderer/level_of_detail.h"
 #include "fuzz/model_images.h"
 #include "models/registry.h"
 #include "tests/chunked_test_support.h"
@@ -252,9 +254,16 @@ TEST_P(ProgressiveModelTest, FetchPriorityAsksForWhatTheViewNeedsCoarseFirstAndN
     const std::uint64_t fetched = fetchUntilComplete(model, f.image, camera, &order);
     EXPECT_TRUE(model.viewComplete(camera));
     const int wanted = *model.wantedDepth(camera);
+    int wanted_level = 0;
+    while (wanted_level + 1 < model.levelCount() && model.levelDepth(wanted_level + 1) <= wanted)
+      ++wanted_level;
     int previous_level = 0;
     for (const FetchItem& item : order) {
-      EXPECT_LE(model.levelDepth(item.level), wanted) << "never finer than the view needs";
+      if (item.kind == FetchItem::Kind::kChunk) {
+        EXPECT_LE(model.levelDepth(item.level), wanted) << "never finer than the view needs";
+      } else {  // the table of the level after says whether that level is densely sampled
+        EXPECT_LE(item.level, wanted_level + 1);
+      }
       EXPECT_TRUE(item.visible);
       EXPECT_GE(item.level, previous_level) << "coarse before fine";
       previous_level = item.level;
@@ -304,6 +313,83 @@ TEST_P(ProgressiveModelTest, ACoarserFrameDrawsTheLevelAboveAndAnAbortStopsIt) {
   Framebuffer aborted(camera.width, camera.height);
   aborted.clear();
   EXPECT_FALSE(model->draw(camera, Variant::kFixedFast, aborted, nullptr, &abort));
+}
+
+// A drawing thread draws a snapshot without the feeder's lock: what arrives after the snapshot
+// must not show in it (nor may the snapshot's streams change), and a new snapshot shows it all.
+TEST_P(ProgressiveModelTest, ASnapshotDrawsTheModelAsItWasWhileChunksKeepArriving) {
+  const Fixture& f = fixture();
+  ProgressiveModel whole = f.headOnly();
+  whole.acceptBytes(0, f.image, nullptr);
+  // Up to the middle of the chunks of the level before the finest: coarser than every camera's
+  // complete frame.
+  const ChunkedHead& head = whole.head();
+  const int finest = whole.levelCount() - 1;
+  const std::uint64_t cut =
+      (head.levels[static_cast<std::size_t>(finest - 1)].chunks_offset +
+       head.levels[static_cast<std::size_t>(finest)].chunks_offset) / 2;
+  const std::span<const std::uint8_t> prefix = std::span(f.image).first(cut);
+  int incomplete_views = 0;
+  for (const Camera& camera : cameras()) {
+    if (camera.width < 100) continue;
+    ProgressiveModel model = f.headOnly(), prefix_only = f.headOnly();
+    model.acceptBytes(0, prefix, nullptr);
+    prefix_only.acceptBytes(0, prefix, nullptr);
+    ProgressiveFrame snapshot;
+    model.snapshot(snapshot);
+    model.acceptBytes(0, f.image, nullptr);  // the rest arrives
+    Framebuffer frame(camera.width, camera.height);
+    frame.clear();
+    ASSERT_TRUE(model.draw(snapshot, camera, Variant::kFixedFast, frame));
+    EXPECT_TRUE(octopoint::testing::sameFrame(frame, drawn(prefix_only, camera)));
+    if (!prefix_only.viewComplete(camera)) {
+      ++incomplete_views;
+      EXPECT_FALSE(octopoint::testing::sameFrame(frame, drawn(whole, camera)))
+          << "the rest must draw something the prefix does not";
+    }
+    model.snapshot(snapshot);
+    frame.clear();
+    ASSERT_TRUE(model.draw(snapshot, camera, Variant::kFixedFast, frame));
+    EXPECT_TRUE(octopoint::testing::sameFrame(frame, drawn(whole, camera)));
+  }
+  EXPECT_GE(incomplete_views, 2);
+}
+
+// Depth auto stops at the finest depth the scan samples densely (renderer/level_of_detail.h): the
+// thinned model's depth 8 has fewer than 3x the voxels of its depth 7, so no view draws or fetches
+// it, however closely it looks; the whole model's depth 8 is dense and drawn when zoomed in.
+TEST_P(ProgressiveModelTest, DepthAutoStopsAtTheDenselySampledDepth) {
+  const Fixture& f = fixture();
+  ProgressiveModel model = f.headOnly();
+  const Camera zoomed = makeCamera(15, 5, 8, 320, 240);
+  const int finest_depth = model.levelDepth(model.levelCount() - 1);
+  EXPECT_EQ(model.wantedDepth(zoomed), finest_depth) << "the finest level's table is not known";
+  octopoint::testing::feedTables(model, f.image);
+  std::vector<std::uint64_t> voxels;
+  for (const prepare::PreparedLevel& level : f.streams) voxels.push_back(level.leaves.size());
+  const bool finest_dense = voxels.back() >= 3 * voxels[voxels.size() - 2];
+  EXPECT_EQ(finest_dense, !GetParam());
+  EXPECT_EQ(model.wantedDepth(zoomed), finest_dense ? finest_depth : finest_depth - 1);
+  std::vector<FetchItem> order;
+  fetchUntilComplete(model, f.image, zoomed, &order);
+  for (const FetchItem& item : order)
+    EXPECT_LE(model.levelDepth(item.level), *model.wantedDepth(zoomed));
+  ProgressiveDrawStats stats;
+  Framebuffer frame(zoomed.width, zoomed.height);
+  ASSERT_TRUE(model.draw(zoomed, Variant::kFixedFast, frame, &stats));
+  EXPECT_EQ(stats.drawn_depth, *model.wantedDepth(zoomed));
+  model.useEveryStoredDepth(true);
+  EXPECT_EQ(model.wantedDepth(zoomed), finest_depth);
+
+  // A version-1 file of the same depths: autoLevel stops at the same depth, and the complete
+  // stream draws its frame.
+  const Bytes v1 = prepare::serializeModel(f.prepared);
+  const std::optional<ModelView> file = ModelView::fromBytes(v1, nullptr);
+  ASSERT_TRUE(file.has_value());
+  model.useEveryStoredDepth(false);
+  for (const Camera& camera : {zoomed, makeCamera(0, 0, 1, 320, 240)}) {
+    EXPECT_EQ(autoLevel(*file, camera)->depth, *model.wantedDepth(camera));
+  }
 }
 
 INSTANTIATE_TEST_SUITE_P(WholeAndThinned, ProgressiveModelTest, ::testing::Bool(),
