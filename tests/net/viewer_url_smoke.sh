@@ -60,6 +60,10 @@ while [ "$final" != 0 ] && [ "$n" -lt 41 ]; do
   save "$n"
   final=$(differs "$n")
 done
+# Quit once the whole file is in (7 kB at 2 kB/s after the view's chunks, the rest prefetched): a
+# wake-up the window is sent while it closes can reach the X server after the window is gone
+# (BadWindow from SDL's wake-up event).
+sleep 3
 xdotool key q
 for _ in $(seq 100); do kill -0 "$viewer_pid" 2>/dev/null || break; sleep 0.05; done
 wait "$viewer_pid" || fail "the viewer exited with an error: $(cat "$work/viewer.log")"
