@@ -2,8 +2,11 @@
 // Fitting a scan into the model cube: the axis-aligned bounding box of its points, centred in a
 // cube whose edge is the box's longest side. The cube is then cut into 2^depth voxels per axis.
 
+#include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstdint>
+#include <limits>
 #include <span>
 #include <string>
 
@@ -14,12 +17,43 @@ struct CubeFit {
   double edge = 0;                 // the cube's edge, in scan units
 };
 
+// The bounding box of points seen one at a time (the streamed preparer's first pass).
+struct Bounds {
+  std::array<double, 3> low{kEmpty, kEmpty, kEmpty};
+  std::array<double, 3> high{-kEmpty, -kEmpty, -kEmpty};
+  std::uint64_t count = 0;
+
+  void add(const std::array<double, 3>& p) {
+    for (std::size_t axis = 0; axis < 3; ++axis) {
+      low[axis] = std::min(low[axis], p[axis]);
+      high[axis] = std::max(high[axis], p[axis]);
+    }
+    ++count;
+  }
+  void merge(const Bounds& other) {
+    for (std::size_t axis = 0; axis < 3; ++axis) {
+      low[axis] = std::min(low[axis], other.low[axis]);
+      high[axis] = std::max(high[axis], other.high[axis]);
+    }
+    count += other.count;
+  }
+
+ private:
+  static constexpr double kEmpty = std::numeric_limits<double>::infinity();
+};
+
 // Throws PrepareError naming `path` when the points span no volume along any axis (all points
 // identical), since no cube can be fitted then.
 CubeFit fitCube(std::span<const std::array<float, 3>> positions, const std::string& path);
+CubeFit fitCube(const Bounds& bounds, const std::string& path);
 
 // The voxel index along one axis at `depth`, in 0..2^depth - 1 (the far face of the cube belongs to
-// the last voxel).
-std::uint32_t voxelIndex(double coordinate, double origin, double edge, int depth);
+// the last voxel). Inline because the streamed preparer calls it three times per point; the
+// expression must stay exactly this one, since every path of the preparer computes keys with it.
+inline std::uint32_t voxelIndex(double coordinate, double origin, double edge, int depth) {
+  const double cells = std::ldexp(1.0, depth);
+  const double scaled = std::floor((coordinate - origin) / edge * cells);
+  return static_cast<std::uint32_t>(std::clamp(scaled, 0.0, cells - 1));
+}
 
 }  // namespace octopoint::prepare

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cassert>
 #include <limits>
+#include <utility>
 
 namespace octopoint::prepare {
 namespace {
@@ -129,10 +130,14 @@ void refineLloyd(std::vector<Rgb8>& palette, std::span<const WeightedColour> col
 }  // namespace
 
 Palette Palette::build(std::span<const Rgb8> colours, int max_colours) {
-  assert(max_colours >= 1 && max_colours <= kMaxPaletteColours);
   std::vector<std::uint32_t> packed;
   packed.reserve(colours.size());
   for (const Rgb8& c : colours) packed.push_back(pack(c));
+  return buildPacked(std::move(packed), max_colours);
+}
+
+Palette Palette::buildPacked(std::vector<std::uint32_t> packed, int max_colours) {
+  assert(max_colours >= 1 && max_colours <= kMaxPaletteColours);
   std::sort(packed.begin(), packed.end());
 
   std::vector<WeightedColour> distinct;

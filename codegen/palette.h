@@ -17,6 +17,9 @@ class Palette {
  public:
   // `colours` may repeat; each occurrence counts once in the weighting.
   static Palette build(std::span<const Rgb8> colours, int max_colours = kMaxPaletteColours);
+  // The same from colours packed 0xRRGGBB (which it sorts): what the streamed preparer collects.
+  static Palette buildPacked(std::vector<std::uint32_t> packed,
+                             int max_colours = kMaxPaletteColours);
 
   const std::vector<Rgb8>& colours() const { return colours_; }
   // The index of the palette colour nearest to `colour` (squared RGB distance).
