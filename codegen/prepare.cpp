@@ -1,45 +1,17 @@
 #include "codegen/prepare.h"
 
+#include <algorithm>
 #include <array>
-#include <chrono>
-#include <cmath>
 #include <cstdio>
-#include <limits>
 
 #include "cli/real_numbers.h"
 #include "cli/text.h"
-#include "codegen/cube_fit.h"
-#include "codegen/depth_range.h"
-#include "codegen/octree_encoder.h"
 #include "codegen/outlier_filter.h"
-#include "codegen/palette.h"
+#include "codegen/point_source.h"
 #include "codegen/prepare_error.h"
-#include "codegen/progress.h"
-#include "codegen/visibility.h"
-#include "codegen/voxelizer.h"
+#include "codegen/streamed_prepare.h"
 
 namespace octopoint::prepare {
-namespace {
-
-// Rec. 601 luma in 8.8 fixed point (77 + 150 + 29 = 256).
-Rgb8 toGrey(const Rgb8& c) {
-  const auto grey = static_cast<std::uint8_t>((77 * c[0] + 150 * c[1] + 29 * c[2] + 128) >> 8);
-  return {grey, grey, grey};
-}
-
-// Keeps the voxels with visible[i] != 0, in order.
-VoxelSet keepVisible(const VoxelSet& voxels, const std::vector<std::uint8_t>& visible) {
-  VoxelSet kept;
-  kept.depth = voxels.depth;
-  for (std::size_t i = 0; i < voxels.keys.size(); ++i) {
-    if (!visible[i]) continue;
-    kept.keys.push_back(voxels.keys[i]);
-    kept.colours.push_back(voxels.colours[i]);
-  }
-  return kept;
-}
-
-}  // namespace
 
 Scan cropScan(const Scan& scan, const CropBox& box, const std::string& scan_path) {
   std::vector<std::uint8_t> inside(scan.positions.size());
@@ -89,61 +61,17 @@ Scan modelPoints(const Scan& full_scan, const std::string& scan_path, const Prep
   return scan;
 }
 
-PreparedModel prepareModel(const Scan& full_scan, const std::string& scan_path, const PrepareOptions& options) {
+PreparedModel prepareModel(const Scan& full_scan, const std::string& scan_path,
+                           const PrepareOptions& options, unsigned threads) {
   const Scan scan = modelPoints(full_scan, scan_path, options);
-  const CubeFit fit = fitCube(scan.positions, scan_path);
-
-  std::vector<VoxelSet> voxel_sets;
-  Progress progress("voxelizing", options.depths.size());
-  for (int depth : options.depths) {
-    voxel_sets.push_back(voxelize(scan, fit, depth));
-    progress.update(voxel_sets.size());
-  }
-  std::vector<int> sparse_depths;
-  if (options.stop_at_sparse_depth) {
-    std::vector<std::size_t> counts;
-    for (const VoxelSet& voxels : voxel_sets) counts.push_back(voxels.keys.size());
-    const std::size_t dense = denseDepthCount(counts);
-    for (std::size_t i = dense; i < voxel_sets.size(); ++i) sparse_depths.push_back(voxel_sets[i].depth);
-    voxel_sets.resize(dense);
-  }
-  if (options.greyscale) {
-    for (VoxelSet& voxels : voxel_sets) {
-      for (Rgb8& colour : voxels.colours) colour = toGrey(colour);
-    }
-  }
-  // The palette comes from all voxels, before pruning: pruning then changes no voxel's colour
-  // index, so pruned and unpruned models draw the same pixels at every sampled view.
-  const Palette palette = Palette::build(voxel_sets.back().colours, options.palette_colours);
-
-  PreparedModel model;
-  model.name = options.name;
-  model.source_description = options.source_description;
-  const double edge_um = fit.edge * options.metres_per_scan_unit * 1e6;
-  model.cube_edge_um = static_cast<std::uint32_t>(
-      std::min(std::round(edge_um), double{std::numeric_limits<std::uint32_t>::max()}));
-  model.palette = palette.colours();
-  model.sparse_depths_dropped = sparse_depths;
-  for (VoxelSet& voxels : voxel_sets) {
-    PreparedLevel level;
-    level.depth = voxels.depth;
-    if (!options.visibility_cameras.empty()) {
-      const auto start = std::chrono::steady_clock::now();
-      level.voxels_before_pruning = voxels.keys.size();
-      level.bytes_before_pruning = encodeOctree(voxels.keys, voxels.depth).size() + voxels.keys.size();
-      voxels = keepVisible(voxels, visibleVoxels(voxels.keys, voxels.depth, options.visibility_cameras));
-      if (voxels.keys.empty()) {
-        throw PrepareError(scan_path + ": no voxel at depth " + std::to_string(voxels.depth) +
-                           " is visible from the scene's views");
-      }
-      level.pruning_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    }
-    level.nodes = encodeOctree(voxels.keys, voxels.depth);
-    level.leaves.reserve(voxels.colours.size());
-    for (const Rgb8& colour : voxels.colours) level.leaves.push_back(palette.indexOf(colour));
-    model.levels.push_back(std::move(level));
-  }
-  return model;
+  PrepareOptions streamed = options;  // the points are cropped, cleaned and turned already
+  streamed.crop.reset();
+  streamed.outliers.reset();
+  streamed.axes = ScanAxes::kYDown;
+  StreamOptions stream;
+  stream.threads = threads;
+  stream.memory_bytes = std::max<std::uint64_t>(kDefaultMemoryBytes, 64 * scan.positions.size());
+  return prepareFromSource(*memorySource(scan), scan_path, streamed, stream);
 }
 
 }  // namespace octopoint::prepare

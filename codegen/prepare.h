@@ -67,7 +67,10 @@ CropBox parseCropBox(const std::string& flag, const std::string& text);
 // axes, as `options` asks. prepareModel voxelizes exactly these; a reference render draws them.
 Scan modelPoints(const Scan& scan, const std::string& scan_path, const PrepareOptions& options);
 
-// Throws PrepareError (naming `scan_path`) when the scan cannot be made into a model.
-PreparedModel prepareModel(const Scan& scan, const std::string& scan_path, const PrepareOptions& options);
+// Throws PrepareError (naming `scan_path`) when the scan cannot be made into a model. The scan is
+// in memory already, so it is prepared in memory (codegen/streamed_prepare.h, with a budget that
+// holds it all) on `threads` threads (0: every core); the output does not depend on their number.
+PreparedModel prepareModel(const Scan& scan, const std::string& scan_path,
+                           const PrepareOptions& options, unsigned threads = 0);
 
 }  // namespace octopoint::prepare
