@@ -19,16 +19,19 @@ std::uint32_t pack(const Rgb8& c) {
 
 // Sorts `points` by the low `key_bits` bits of their keys (the rest is the node's common prefix):
 // least significant digit first, 8 bits a pass, one counting read for all passes, and a pass
-// skipped when every key has the same digit there. `scratch` holds as many points.
-void radixSort(std::span<BinnedPoint> points, std::span<BinnedPoint> scratch, int key_bits) {
+// skipped when every key has the same digit there. `scratch` holds as many points. Returns the
+// sorted points, which are in `points` or in `scratch`.
+std::span<BinnedPoint> radixSort(std::span<BinnedPoint> points, std::span<BinnedPoint> scratch,
+                                 int key_bits) {
   const int passes = (key_bits + kRadixBits - 1) / kRadixBits;
-  if (passes == 0 || points.size() < 2) return;
+  if (passes == 0 || points.size() < 2) return points;
   std::vector<std::array<std::uint64_t, kRadixBuckets>> counts(static_cast<std::size_t>(passes));
   for (auto& c : counts) c.fill(0);
   for (const BinnedPoint& p : points) {
     const std::uint64_t key = p.key();
-    for (int pass = 0; pass < passes; ++pass)
+    for (int pass = 0; pass < passes; ++pass) {
       ++counts[static_cast<std::size_t>(pass)][key >> (kRadixBits * pass) & 0xffu];
+    }
   }
   std::span<BinnedPoint> from = points;
   std::span<BinnedPoint> to = scratch.first(points.size());
@@ -41,7 +44,7 @@ void radixSort(std::span<BinnedPoint> points, std::span<BinnedPoint> scratch, in
     for (const BinnedPoint& p : from) to[c[p.key() >> shift & 0xffu]++] = p;
     std::swap(from, to);
   }
-  if (from.data() != points.data()) std::memcpy(points.data(), from.data(), points.size_bytes());
+  return from;
 }
 
 NodeResult emptyNode(const VoxelColouring& colouring) {
@@ -115,18 +118,19 @@ std::uint32_t VoxelColouring::voxelColour(const ColourSum& sum, std::uint64_t ke
   return pack(greyscale ? toGrey(colour) : colour);
 }
 
-NodeResult voxelizeNode(std::span<BinnedPoint> points, int level, const VoxelColouring& colouring,
+NodeResult voxelizeNode(std::span<BinnedPoint> unsorted, int level, const VoxelColouring& colouring,
                         VoxelizerBuffers& buffers) {
-  assert(!points.empty());
+  assert(!unsorted.empty());
   const int finest = colouring.finest();
-  if (buffers.scratch.size() < points.size()) buffers.scratch.resize(points.size());
-  radixSort(points, buffers.scratch, 3 * (finest - level));
+  const std::span<BinnedPoint> points =
+      radixSort(unsorted, buffers.scratch.resize(unsorted.size()), 3 * (finest - level));
   NodeResult node = emptyNode(colouring);
   std::vector<std::uint64_t>& keys = buffers.keys;
   keys.clear();
   for (BinnedPoint& p : points) {
-    if (colouring.payload != VoxelColouring::Payload::kRgb)
+    if (colouring.payload != VoxelColouring::Payload::kRgb) {
       p.payload = colouring.pointColour(p.payload);
+    }
     node.sum.add(p.payload);
     if (keys.empty() || keys.back() != p.key()) keys.push_back(p.key());
   }

@@ -69,12 +69,13 @@ struct NodeResult {
 
 // Scratch space of one worker thread.
 struct VoxelizerBuffers {
-  std::vector<BinnedPoint> points;  // a bin's points
-  std::vector<BinnedPoint> scratch;
+  PointBuffer points;  // a bin's points
+  PointBuffer scratch;
   std::vector<std::uint64_t> keys;
 };
 
-// The node at `level` from all of its points, given in `points` (reordered by the call).
+// The node at `level` from all of its points, given in `points` (the call reorders them, and
+// buffers.scratch).
 NodeResult voxelizeNode(std::span<BinnedPoint> points, int level, const VoxelColouring& colouring,
                         VoxelizerBuffers& buffers);
 

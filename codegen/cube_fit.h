@@ -48,12 +48,15 @@ CubeFit fitCube(std::span<const std::array<float, 3>> positions, const std::stri
 CubeFit fitCube(const Bounds& bounds, const std::string& path);
 
 // The voxel index along one axis at `depth`, in 0..2^depth - 1 (the far face of the cube belongs to
-// the last voxel). Inline because the streamed preparer calls it three times per point; the
-// expression must stay exactly this one, since every path of the preparer computes keys with it.
-inline std::uint32_t voxelIndex(double coordinate, double origin, double edge, int depth) {
-  const double cells = std::ldexp(1.0, depth);
+// the last voxel). Every path of the preparer computes keys with exactly this expression; inline,
+// and with `cells` = 2^depth computed once, because the streamed preparer calls it three times per
+// point (ldexp is exact, so both forms give the same index).
+inline std::uint32_t voxelIndexIn(double coordinate, double origin, double edge, double cells) {
   const double scaled = std::floor((coordinate - origin) / edge * cells);
   return static_cast<std::uint32_t>(std::clamp(scaled, 0.0, cells - 1));
+}
+inline std::uint32_t voxelIndex(double coordinate, double origin, double edge, int depth) {
+  return voxelIndexIn(coordinate, origin, edge, std::ldexp(1.0, depth));
 }
 
 }  // namespace octopoint::prepare

@@ -1,5 +1,6 @@
 #include "codegen/model_assembly.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <limits>
@@ -7,6 +8,7 @@
 #include "codegen/depth_range.h"
 #include "codegen/octree_encoder.h"
 #include "codegen/palette.h"
+#include "codegen/parallel.h"
 #include "codegen/prepare_error.h"
 #include "codegen/visibility.h"
 
@@ -45,7 +47,8 @@ void prune(PreparedLevel& level, const std::vector<Camera>& cameras, const std::
 }  // namespace
 
 PreparedModel assembleModel(std::vector<EncodedLevel> levels, const CubeFit& fit,
-                            const PrepareOptions& options, const std::string& path) {
+                            const PrepareOptions& options, const std::string& path,
+                            unsigned threads) {
   // Depths finer than the scan samples densely are left out when asked (codegen/depth_range.h).
   std::vector<int> sparse_depths;
   if (options.stop_at_sparse_depth) {
@@ -70,9 +73,16 @@ PreparedModel assembleModel(std::vector<EncodedLevel> levels, const CubeFit& fit
     PreparedLevel level;
     level.depth = encoded.depth;
     level.nodes = std::move(encoded.nodes);
-    level.leaves.reserve(encoded.colours.size());
-    for (std::uint32_t colour : encoded.colours)
-      level.leaves.push_back(palette.indexOf(unpack(colour)));
+    // A palette index per leaf: a binary search each, spread over the threads in blocks.
+    constexpr std::size_t kBlock = 1 << 16;
+    const std::vector<std::uint32_t>& colours = encoded.colours;
+    level.leaves.resize(colours.size());
+    parallelFor(threads, (colours.size() + kBlock - 1) / kBlock, [&](std::size_t block, unsigned) {
+      const std::size_t end = std::min(colours.size(), (block + 1) * kBlock);
+      for (std::size_t i = block * kBlock; i < end; ++i) {
+        level.leaves[i] = palette.indexOf(unpack(colours[i]));
+      }
+    });
     encoded.colours = {};
     if (!options.visibility_cameras.empty()) prune(level, options.visibility_cameras, path);
     model.levels.push_back(std::move(level));

@@ -19,9 +19,9 @@ struct EncodedLevel {
   std::vector<std::uint32_t> colours;  // 0xRRGGBB per leaf, in stream order
 };
 
-// `levels` ascending by depth, as options.depths. Throws PrepareError naming `path` when pruning
-// leaves a depth without any voxel.
+// `levels` ascending by depth, as options.depths; uses `threads` threads. Throws PrepareError
+// naming `path` when pruning leaves a depth without any voxel.
 PreparedModel assembleModel(std::vector<EncodedLevel> levels, const CubeFit& fit,
-                            const PrepareOptions& options, const std::string& path);
+                            const PrepareOptions& options, const std::string& path, unsigned threads);
 
 }  // namespace octopoint::prepare

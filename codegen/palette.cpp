@@ -1,6 +1,7 @@
 #include "codegen/palette.h"
 
 #include <algorithm>
+#include <array>
 #include <cassert>
 #include <limits>
 #include <utility>
@@ -110,6 +111,19 @@ std::vector<Rgb8> medianCut(std::vector<WeightedColour> colours, int max_colours
   return palette;
 }
 
+// Sorts colours packed 0xRRGGBB: least significant byte first, three counting passes, so that a
+// model of tens of millions of voxels does not wait on a comparison sort.
+void sortPacked(std::vector<std::uint32_t>& packed) {
+  std::vector<std::uint32_t> scratch(packed.size());
+  for (int shift = 0; shift < 24; shift += 8) {
+    std::array<std::size_t, 257> start{};
+    for (std::uint32_t c : packed) ++start[(c >> shift & 0xffu) + 1];
+    for (std::size_t b = 0; b < 256; ++b) start[b + 1] += start[b];
+    for (std::uint32_t c : packed) scratch[start[c >> shift & 0xffu]++] = c;
+    packed.swap(scratch);
+  }
+}
+
 void refineLloyd(std::vector<Rgb8>& palette, std::span<const WeightedColour> colours) {
   for (int pass = 0; pass < kLloydPasses; ++pass) {
     std::vector<std::array<std::uint64_t, 4>> sums(palette.size());  // r, g, b, weight
@@ -138,7 +152,7 @@ Palette Palette::build(std::span<const Rgb8> colours, int max_colours) {
 
 Palette Palette::buildPacked(std::vector<std::uint32_t> packed, int max_colours) {
   assert(max_colours >= 1 && max_colours <= kMaxPaletteColours);
-  std::sort(packed.begin(), packed.end());
+  sortPacked(packed);
 
   std::vector<WeightedColour> distinct;
   for (std::size_t i = 0; i < packed.size();) {

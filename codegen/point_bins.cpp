@@ -52,16 +52,13 @@ TempFile& SpillFile::get() {
 
 std::uint64_t SpillFile::bytesWritten() const { return file_ ? file_->bytesWritten() : 0; }
 
-BinSpiller::BinSpiller(int bin_shift, std::size_t bin_count, std::size_t capacity,
-                       std::size_t first_capacity, SpillFile& spill)
+BinSpiller::BinSpiller(int bin_shift, std::size_t bin_count, std::size_t capacity, SpillFile& spill)
     : bin_shift_(bin_shift),
       bin_count_(bin_count),
       capacity_(std::max<std::size_t>(capacity, 1)),
-      spill_(spill) {
-  allocated_ = std::clamp<std::size_t>(first_capacity, 1, capacity_);
-  owned_ = std::make_unique<BinnedPoint[]>(allocated_);
-  buffer_ = owned_.get();
-}
+      owned_(std::make_unique_for_overwrite<BinnedPoint[]>(capacity_)),
+      buffer_(owned_.get()),
+      spill_(spill) {}
 
 BinSpiller::BinSpiller(int bin_shift, std::size_t bin_count, std::span<BinnedPoint> buffer,
                        SpillFile& spill)
@@ -69,22 +66,8 @@ BinSpiller::BinSpiller(int bin_shift, std::size_t bin_count, std::span<BinnedPoi
       bin_count_(bin_count),
       capacity_(buffer.size()),
       buffer_(buffer.data()),
-      allocated_(buffer.size()),
       spill_(spill) {
   assert(!buffer.empty());
-}
-
-void BinSpiller::makeRoom() {
-  if (allocated_ < capacity_) {
-    const std::size_t grown = std::min(capacity_, 2 * allocated_);
-    auto bigger = std::make_unique<BinnedPoint[]>(grown);
-    std::memcpy(bigger.get(), buffer_, size_ * sizeof(BinnedPoint));
-    owned_ = std::move(bigger);
-    buffer_ = owned_.get();
-    allocated_ = grown;
-    return;
-  }
-  writeRun();
 }
 
 void BinSpiller::writeRun() {

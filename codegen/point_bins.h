@@ -30,6 +30,27 @@ struct BinnedPoint {
 };
 static_assert(sizeof(BinnedPoint) == 12);
 
+// A buffer of points whose slots are not zeroed when it grows: every slot is written before it is
+// read, and zeroing gigabytes would cost as much as using them.
+class PointBuffer {
+ public:
+  // The first `count` slots; earlier contents are kept only while the buffer does not grow.
+  std::span<BinnedPoint> resize(std::size_t count) {
+    if (count > capacity_) {
+      data_ = std::make_unique_for_overwrite<BinnedPoint[]>(count);
+      capacity_ = count;
+    }
+    size_ = count;
+    return span();
+  }
+  std::span<BinnedPoint> span() const { return {data_.get(), size_}; }
+
+ private:
+  std::unique_ptr<BinnedPoint[]> data_;
+  std::size_t size_ = 0;
+  std::size_t capacity_ = 0;
+};
+
 // Some of a bin's points: `count` of them in memory at `memory`, or in `file` at byte `offset`.
 struct BinPiece {
   const BinnedPoint* memory = nullptr;
@@ -78,14 +99,13 @@ class SpillFile {
 // written to the spill file as one run. One spiller per thread.
 class BinSpiller {
  public:
-  // A buffer of its own, allocated with `first_capacity` points and grown up to `capacity`.
-  BinSpiller(int bin_shift, std::size_t bin_count, std::size_t capacity, std::size_t first_capacity,
-             SpillFile& spill);
+  // A buffer of its own of `capacity` points (allocated, not zeroed: pages are taken as filled).
+  BinSpiller(int bin_shift, std::size_t bin_count, std::size_t capacity, SpillFile& spill);
   // The caller's buffer.
   BinSpiller(int bin_shift, std::size_t bin_count, std::span<BinnedPoint> buffer, SpillFile& spill);
 
   void add(const BinnedPoint& point) {
-    if (size_ == allocated_) makeRoom();
+    if (size_ == capacity_) writeRun();
     buffer_[size_++] = point;
   }
   // Hands every point gathered over to `bins` (bin_count entries): the runs written and, if
@@ -94,7 +114,6 @@ class BinSpiller {
   void finish(bool keep_tail, std::vector<BinContents>& bins);
 
  private:
-  void makeRoom();  // grows the buffer up to the capacity, else writes a run
   void writeRun();
 
   int bin_shift_;
@@ -102,7 +121,6 @@ class BinSpiller {
   std::size_t capacity_;
   std::unique_ptr<BinnedPoint[]> owned_;
   BinnedPoint* buffer_ = nullptr;
-  std::size_t allocated_ = 0;
   std::size_t size_ = 0;
   SpillFile& spill_;
   struct Run {

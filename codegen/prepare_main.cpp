@@ -276,14 +276,15 @@ void checkOutputs(const Arguments& args, const octopoint::prepare::PrepareOption
 // One line on how a streamed scan was read.
 std::string describeStream(const octopoint::prepare::SourceInfo& info, const octopoint::prepare::PrepareSummary& summary,
                            const octopoint::prepare::StreamOptions& stream) {
-  char line[512];
+  const auto& phase = summary.phase_seconds;
+  char line[768];
   std::snprintf(line, sizeof line,
-                "  streamed %s%s%s: %llu points on %u threads in %.2f s (%.2f M points/s), budget %llu MB, %llu MB "
-                "spilled to disk\n",
+                "  streamed %s%s%s: %llu points on %u threads in %.2f s (%.2f M points/s; bounds %.2f s, binning "
+                "%.2f s, voxelizing %.2f s, palette %.2f s), budget %llu MB, %llu MB spilled to disk\n",
                 info.format.c_str(), summary.colour_note.empty() ? "" : ", ", summary.colour_note.c_str(),
                 static_cast<unsigned long long>(summary.points_in_file), summary.threads, summary.seconds,
-                static_cast<double>(summary.points_in_file) / summary.seconds / 1e6,
-                static_cast<unsigned long long>(stream.memory_bytes >> 20),
+                static_cast<double>(summary.points_in_file) / summary.seconds / 1e6, phase[0], phase[1], phase[2],
+                phase[3], static_cast<unsigned long long>(stream.memory_bytes >> 20),
                 static_cast<unsigned long long>(summary.spilled_bytes >> 20));
   return line;
 }
@@ -329,10 +330,12 @@ int run(int argc, char** argv) {
   const std::size_t nesting_added = args->chunked ? nestLevels(model) : 0;
   ChunkedLayout layout;
 
+  const auto writing = std::chrono::steady_clock::now();
   std::vector<OutputFile> files = emitSources(model, args->emit);
   const std::vector<std::uint8_t> image = args->chunked ? serializeChunkedModel(model, args->chunking, &layout) : serializeModel(model);
   files.push_back({model.name + ".oct", std::string(image.begin(), image.end())});
   octopoint::cli::writeFilesAtomically(args->output_dir, files);
+  const double writing_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - writing).count();
 
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   std::printf("%s: %llu points (%llu dropped as non-finite), %s, %zu palette colours, cube edge %.3f m\n",
@@ -372,8 +375,9 @@ int run(int argc, char** argv) {
                   layout.chunks[j], layout.region_levels[j], layout.chunk_bytes[j]);
     }
   }
-  std::printf("wrote %s/%s.{h,cpp,oct} (%zu bytes .oct%s) in %.2f s\n", args->output_dir.c_str(),
-              model.name.c_str(), image.size(), args->chunked ? ", chunked" : "", seconds);
+  std::printf("wrote %s/%s.{h,cpp,oct} (%zu bytes .oct%s) in %.2f s (writing the files %.2f s)\n",
+              args->output_dir.c_str(), model.name.c_str(), image.size(), args->chunked ? ", chunked" : "", seconds,
+              writing_seconds);
   return 0;
 }
 

@@ -1,8 +1,10 @@
 // The C++ sources of a prepared model: const arrays that an app compiles in, so drawing the model
 // needs no file I/O. Bytes are written either as decimal initialiser lists or as string literals
 // (EmitStyle; docs/embedding.md compares their compile time and memory).
+#include <cstdio>
 #include <sstream>
 #include <string_view>
+#include <string>
 
 #include "codegen/model_writer.h"
 #include "renderer/model_format.h"
@@ -12,19 +14,24 @@ namespace {
 
 constexpr std::size_t kLineWidth = 100;
 
+// Both writers build the text in a string and hand it to the stream once: a model of tens of
+// megabytes would otherwise spend seconds in the stream's per-insertion overhead.
 void appendByteList(std::ostringstream& out, const std::vector<std::uint8_t>& bytes) {
+  std::string text = "    ";
+  text.reserve(bytes.size() * 4 + bytes.size() / kLineWidth * 6 + 8);
   std::size_t column = 0;
-  out << "    ";
   for (std::uint8_t byte : bytes) {
-    const std::string item = std::to_string(byte) + ",";
-    if (column + item.size() > kLineWidth) {
-      out << "\n    ";
+    char item[5];
+    const int size = std::snprintf(item, sizeof item, "%u,", static_cast<unsigned>(byte));
+    if (column + static_cast<std::size_t>(size) > kLineWidth) {
+      text += "\n    ";
       column = 0;
     }
-    out << item;
-    column += item.size();
+    text.append(item, static_cast<std::size_t>(size));
+    column += static_cast<std::size_t>(size);
   }
-  out << "\n";
+  text += "\n";
+  out << text;
 }
 
 // One literal piece per line, each far below kMaxLiteralPiece. Printable characters stand for
@@ -32,8 +39,9 @@ void appendByteList(std::ostringstream& out, const std::vector<std::uint8_t>& by
 // read as part of the escape). '?' is escaped too, so no trigraph can form for older compilers.
 void appendStringPieces(std::ostringstream& out, const std::vector<std::uint8_t>& bytes) {
   static_assert(kLineWidth < kMaxLiteralPiece);
+  std::string text = "    \"";
+  text.reserve(bytes.size() * 4 + bytes.size() / kLineWidth * 8 + 8);
   std::size_t column = 0;
-  out << "    \"";
   for (std::uint8_t byte : bytes) {
     char item[5];
     const bool plain = byte >= 0x20 && byte < 0x7f && byte != '"' && byte != '\\' && byte != '?';
@@ -49,13 +57,14 @@ void appendStringPieces(std::ostringstream& out, const std::vector<std::uint8_t>
     }
     const std::size_t size = plain ? 1 : 4;
     if (column + size > kLineWidth) {
-      out << "\"\n    \"";
+      text += "\"\n    \"";
       column = 0;
     }
-    out << item;
+    text.append(item, size);
     column += size;
   }
-  out << "\"\n";
+  text += "\"\n";
+  out << text;
 }
 
 // A string literal carries a terminating NUL, so its array is one byte longer than the data.

@@ -82,6 +82,22 @@ struct FirstPass {
   throw PrepareError(path + ": " + what.str() + " (point " + std::to_string(index) + ")");
 }
 
+// Times the phases one after another into a PrepareSummary.
+class PhaseClock {
+ public:
+  explicit PhaseClock(std::array<double, 4>& seconds) : seconds_(seconds) {}
+  void next() {
+    const auto now = std::chrono::steady_clock::now();
+    seconds_[phase_++] = std::chrono::duration<double>(now - last_).count();
+    last_ = now;
+  }
+
+ private:
+  std::array<double, 4>& seconds_;
+  std::size_t phase_ = 0;
+  std::chrono::steady_clock::time_point last_ = std::chrono::steady_clock::now();
+};
+
 class StreamedPreparer {
  public:
   StreamedPreparer(const PointSource& source, const std::string& path,
@@ -101,26 +117,33 @@ class StreamedPreparer {
   }
 
   PreparedModel run(PrepareSummary& summary) {
+    PhaseClock clock(summary.phase_seconds);
     if (!options_.crop) checkDisk(info_.points);  // every point may be kept: say so before reading
     firstPass();
+    clock.next();
     checkDisk(first_.bounds.count);
     fit_ = fitCube(first_.bounds, path_);
     chooseColouring(summary);
     std::vector<BinContents> bins = secondPass();
+    clock.next();
     NodeResult root = voxelizeBins(bins);
     bins.clear();
     spillers_.clear();
     std::vector<EncodedLevel> levels;
-    for (std::size_t i = 0; i < options_.depths.size(); ++i)
+    for (std::size_t i = 0; i < options_.depths.size(); ++i) {
       levels.push_back(flatten(root.levels[i], options_.depths[i]));
+    }
     root = {};
+    clock.next();
     summary.points_in_file = info_.points + info_.dropped_by_loader;
     summary.finite_points = first_.finite;
     summary.dropped_non_finite = info_.points - first_.finite + info_.dropped_by_loader;
     summary.model_points = first_.bounds.count;
     summary.spilled_bytes = spilled_bytes_.load() + spill_.bytesWritten();
     summary.threads = threads_;
-    return assembleModel(std::move(levels), fit_, options_, path_);
+    PreparedModel model = assembleModel(std::move(levels), fit_, options_, path_, threads_);
+    clock.next();
+    return model;
   }
 
  private:
@@ -239,10 +262,11 @@ class StreamedPreparer {
     bin_level_ = std::min(kBinLevel, finest());
     const std::size_t bin_count = std::size_t{1} << (3 * bin_level_);
     const int bin_shift = 3 * (finest() - bin_level_);
-    const std::uint64_t share = first_.bounds.count / threads_ + 2 * kChunkPoints;
+    // Each thread's buffer can take every point (up to the budget): memory not written is never
+    // touched, so only what the points fill counts, however unevenly the threads share them.
+    const std::uint64_t capacity = std::min<std::uint64_t>(buffer_points_, first_.bounds.count);
     for (unsigned w = 0; w < threads_; ++w) {
-      spillers_.push_back(std::make_unique<BinSpiller>(bin_shift, bin_count, buffer_points_,
-                                                       std::min(share, buffer_points_), spill_));
+      spillers_.push_back(std::make_unique<BinSpiller>(bin_shift, bin_count, capacity, spill_));
     }
     const bool fine_intensity = colouring_.payload == VoxelColouring::Payload::kIntensity;
     std::vector<IntensityPercentiles> intensities;
@@ -250,6 +274,7 @@ class StreamedPreparer {
       intensities.push_back(first_.intensity.forFinePass());
     }
     const int depth = finest();
+    const double cells = std::ldexp(1.0, depth);
     readAllPoints("pass 2 of 3, binning", [&](PointChunk& chunk, std::uint64_t, unsigned worker) {
       BinSpiller& spiller = *spillers_[worker];
       for (std::size_t i = 0; i < chunk.xyz.size(); ++i) {
@@ -257,9 +282,9 @@ class StreamedPreparer {
         if (!isFinite(p)) continue;
         if (fine_intensity) intensities[worker].addFine(chunk.intensity[i]);
         if (!filter_.keep(p)) continue;
-        const std::uint64_t key = mortonKey(voxelIndex(p[0], fit_.origin[0], fit_.edge, depth),
-                                            voxelIndex(p[1], fit_.origin[1], fit_.edge, depth),
-                                            voxelIndex(p[2], fit_.origin[2], fit_.edge, depth), depth);
+        const std::uint64_t key = mortonKey(voxelIndexIn(p[0], fit_.origin[0], fit_.edge, cells),
+                                            voxelIndexIn(p[1], fit_.origin[1], fit_.edge, cells),
+                                            voxelIndexIn(p[2], fit_.origin[2], fit_.edge, cells), depth);
         spiller.add(BinnedPoint::make(key, payloadOf(chunk, i)));
       }
     });
@@ -276,16 +301,16 @@ class StreamedPreparer {
   NodeResult voxelizeBin(const BinContents& bin, int level, std::uint64_t prefix,
                          VoxelizerBuffers& buffers) {
     if (bin.count <= bin_points_) {
-      buffers.points.resize(bin.count);
-      gatherBin(bin, buffers.points);
-      return voxelizeNode(buffers.points, level, colouring_, buffers);
+      const std::span<BinnedPoint> points = buffers.points.resize(bin.count);
+      gatherBin(bin, points);
+      return voxelizeNode(points, level, colouring_, buffers);
     }
     buffers.points.resize(bin_points_);
     buffers.scratch.resize(bin_points_);
     if (level == finest()) {  // one voxel: just sum its points, a buffer at a time
       NodeResult node;
       node.levels.resize(options_.depths.size());
-      forEachBlock(bin, buffers.points, [&](std::span<const BinnedPoint> block) {
+      forEachBlock(bin, buffers.points.span(), [&](std::span<const BinnedPoint> block) {
         for (const BinnedPoint& p : block) node.sum.add(colouring_.pointColour(p.payload));
       });
       return node;
@@ -297,8 +322,8 @@ class StreamedPreparer {
     SpillFile spill(temp_dir_);
     std::vector<BinContents> children(child_count);
     {
-      BinSpiller spiller(3 * (finest() - child_level), child_count, buffers.points, spill);
-      forEachBlock(bin, buffers.scratch, [&](std::span<const BinnedPoint> block) {
+      BinSpiller spiller(3 * (finest() - child_level), child_count, buffers.points.span(), spill);
+      forEachBlock(bin, buffers.scratch.span(), [&](std::span<const BinnedPoint> block) {
         for (const BinnedPoint& p : block) spiller.add(p);
       });
       spiller.finish(false, children);
@@ -338,6 +363,11 @@ class StreamedPreparer {
   static EncodedLevel flatten(SubtreePieces& pieces, int depth) {
     EncodedLevel level;
     level.depth = depth;
+    std::size_t node_bytes = 0, leaves = 0;
+    for (const auto& piece : pieces.nodes) node_bytes += piece.size();
+    for (const auto& piece : pieces.colours) leaves += piece.size();
+    level.nodes.reserve(node_bytes);
+    level.colours.reserve(leaves);
     for (auto& piece : pieces.nodes) {
       level.nodes.insert(level.nodes.end(), piece.begin(), piece.end());
       piece = {};

@@ -15,6 +15,7 @@
 // the buffers filled up, change nothing (tests/streamed_prepare_test.cpp checks budgets and thread
 // counts against each other and against the in-memory reference, codegen/voxelizer.h).
 
+#include <array>
 #include <cstdint>
 #include <filesystem>
 #include <string>
@@ -47,6 +48,8 @@ struct PrepareSummary {
   std::uint64_t spilled_bytes = 0;
   unsigned threads = 0;
   double seconds = 0;
+  // Wall time of: pass 1 (bounds), pass 2 (binning), voxelizing the bins, palette and leaves.
+  std::array<double, 4> phase_seconds{};
 };
 
 // Prepares the model from `source` (named `path` in messages) as prepareModel does from a scan in
