@@ -51,9 +51,13 @@ CubeFit fitCube(const Bounds& bounds, const std::string& path);
 // the last voxel). Every path of the preparer computes keys with exactly this expression; inline,
 // and with `cells` = 2^depth computed once, because the streamed preparer calls it three times per
 // point (ldexp is exact, so both forms give the same index).
+// The index is clamp(floor(scaled), 0, cells - 1); written with comparisons and a truncation, which
+// is the floor of a non-negative number, because x86-64's baseline has no floor instruction.
 inline std::uint32_t voxelIndexIn(double coordinate, double origin, double edge, double cells) {
-  const double scaled = std::floor((coordinate - origin) / edge * cells);
-  return static_cast<std::uint32_t>(std::clamp(scaled, 0.0, cells - 1));
+  const double scaled = (coordinate - origin) / edge * cells;
+  if (!(scaled < cells)) return static_cast<std::uint32_t>(cells) - 1;
+  if (!(scaled >= 0)) return 0;
+  return static_cast<std::uint32_t>(scaled);
 }
 inline std::uint32_t voxelIndex(double coordinate, double origin, double edge, int depth) {
   return voxelIndexIn(coordinate, origin, edge, std::ldexp(1.0, depth));

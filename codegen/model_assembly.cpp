@@ -4,6 +4,7 @@
 #include <chrono>
 #include <cmath>
 #include <limits>
+#include <optional>
 
 #include "codegen/depth_range.h"
 #include "codegen/octree_encoder.h"
@@ -14,6 +15,9 @@
 
 namespace octopoint::prepare {
 namespace {
+
+// Above this many leaves the palette's direct lookup table (18 MB) pays for itself.
+constexpr std::size_t kLookupTableLeaves = std::size_t{1} << 20;
 
 Rgb8 unpack(std::uint32_t c) {
   return {static_cast<std::uint8_t>(c >> 16), static_cast<std::uint8_t>(c >> 8),
@@ -53,14 +57,23 @@ PreparedModel assembleModel(std::vector<EncodedLevel> levels, const CubeFit& fit
   std::vector<int> sparse_depths;
   if (options.stop_at_sparse_depth) {
     std::vector<std::size_t> counts;
-    for (const EncodedLevel& level : levels) counts.push_back(level.colours.size());
+    for (const EncodedLevel& level : levels) counts.push_back(level.leaves);
     const std::size_t dense = denseDepthCount(counts);
     for (std::size_t i = dense; i < levels.size(); ++i) sparse_depths.push_back(levels[i].depth);
     levels.resize(dense);
   }
   // The palette comes from all voxels, before pruning: pruning then changes no voxel's colour
   // index, so pruned and unpruned models draw the same pixels at every sampled view.
-  const Palette palette = Palette::buildPacked(levels.back().colours, options.palette_colours);
+  std::vector<std::uint32_t> finest_colours;
+  finest_colours.reserve(levels.back().leaves);
+  for (const auto& piece : levels.back().colours) {
+    finest_colours.insert(finest_colours.end(), piece.begin(), piece.end());
+  }
+  const Palette palette = Palette::buildPacked(std::move(finest_colours), options.palette_colours);
+  std::size_t leaves = 0;
+  for (const EncodedLevel& level : levels) leaves += level.leaves;
+  std::optional<Palette::Lookup> lookup;
+  if (leaves > kLookupTableLeaves) lookup.emplace(palette);
   PreparedModel model;
   model.name = options.name;
   model.source_description = options.source_description;
@@ -73,14 +86,14 @@ PreparedModel assembleModel(std::vector<EncodedLevel> levels, const CubeFit& fit
     PreparedLevel level;
     level.depth = encoded.depth;
     level.nodes = std::move(encoded.nodes);
-    // A palette index per leaf: a binary search each, spread over the threads in blocks.
-    constexpr std::size_t kBlock = 1 << 16;
-    const std::vector<std::uint32_t>& colours = encoded.colours;
-    level.leaves.resize(colours.size());
-    parallelFor(threads, (colours.size() + kBlock - 1) / kBlock, [&](std::size_t block, unsigned) {
-      const std::size_t end = std::min(colours.size(), (block + 1) * kBlock);
-      for (std::size_t i = block * kBlock; i < end; ++i) {
-        level.leaves[i] = palette.indexOf(unpack(colours[i]));
+    level.leaves.resize(encoded.leaves);
+    // A palette index per leaf, the pieces spread over the threads.
+    std::vector<std::size_t> starts = {0};
+    for (const auto& piece : encoded.colours) starts.push_back(starts.back() + piece.size());
+    parallelFor(threads, encoded.colours.size(), [&](std::size_t p, unsigned) {
+      std::uint8_t* out = level.leaves.data() + starts[p];
+      for (std::uint32_t colour : encoded.colours[p]) {
+        *out++ = lookup ? lookup->indexOf(unpack(colour)) : palette.indexOf(unpack(colour));
       }
     });
     encoded.colours = {};

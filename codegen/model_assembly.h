@@ -16,7 +16,9 @@ namespace octopoint::prepare {
 struct EncodedLevel {
   int depth = 0;
   std::vector<std::uint8_t> nodes;
-  std::vector<std::uint32_t> colours;  // 0xRRGGBB per leaf, in stream order
+  // 0xRRGGBB per leaf, in stream order, in the pieces the bins made (joined only as indices).
+  std::vector<std::vector<std::uint32_t>> colours;
+  std::size_t leaves = 0;
 };
 
 // `levels` ascending by depth, as options.depths; uses `threads` threads. Throws PrepareError

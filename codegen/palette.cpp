@@ -183,6 +183,15 @@ Palette Palette::buildPacked(std::vector<std::uint32_t> packed, int max_colours)
   return palette;
 }
 
+Palette::Lookup::Lookup(const Palette& palette)
+    : palette_(palette), index_(std::size_t{1} << 24, 0), known_((std::size_t{1} << 24) / 64, 0) {
+  for (std::size_t i = 0; i < palette.known_colours_.size(); ++i) {
+    const std::uint32_t p = palette.known_colours_[i];
+    index_[p] = palette.known_index_[i];
+    known_[p >> 6] |= std::uint64_t{1} << (p & 63);
+  }
+}
+
 std::uint8_t Palette::indexOf(const Rgb8& colour) const {
   const std::uint32_t p = pack(colour);
   const auto it = std::lower_bound(known_colours_.begin(), known_colours_.end(), p);

@@ -25,6 +25,23 @@ class Palette {
   // The index of the palette colour nearest to `colour` (squared RGB distance).
   std::uint8_t indexOf(const Rgb8& colour) const;
 
+  // indexOf for millions of colours (a large model's leaves): a direct table over all 2^24
+  // colours (18 MB) answers those build() saw with one read instead of a binary search.
+  class Lookup {
+   public:
+    explicit Lookup(const Palette& palette);
+    std::uint8_t indexOf(const Rgb8& colour) const {
+      const std::uint32_t p =
+          std::uint32_t{colour[0]} << 16 | std::uint32_t{colour[1]} << 8 | colour[2];
+      return (known_[p >> 6] >> (p & 63) & 1u) ? index_[p] : palette_.indexOf(colour);
+    }
+
+   private:
+    const Palette& palette_;
+    std::vector<std::uint8_t> index_;
+    std::vector<std::uint64_t> known_;  // one bit per colour
+  };
+
  private:
   std::vector<Rgb8> colours_;
   // Every distinct colour seen by build, packed 0xRRGGBB and sorted, with its palette index:

@@ -1,10 +1,20 @@
 #include "codegen/point_bins.h"
 
+#include <sys/mman.h>
+
 #include <cassert>
 #include <cstring>
 #include <utility>
 
 namespace octopoint::prepare {
+
+void adviseHugePages(void* data, std::size_t bytes) {
+  constexpr std::uintptr_t kHugePage = std::uintptr_t{2} << 20;
+  const auto start = reinterpret_cast<std::uintptr_t>(data);
+  const std::uintptr_t begin = (start + kHugePage - 1) & ~(kHugePage - 1);
+  const std::uintptr_t end = (start + bytes) & ~(kHugePage - 1);
+  if (end > begin) ::madvise(reinterpret_cast<void*>(begin), end - begin, MADV_HUGEPAGE);
+}
 
 void gatherBin(const BinContents& bin, std::span<BinnedPoint> out) {
   assert(out.size() == bin.count);
@@ -58,7 +68,9 @@ BinSpiller::BinSpiller(int bin_shift, std::size_t bin_count, std::size_t capacit
       capacity_(std::max<std::size_t>(capacity, 1)),
       owned_(std::make_unique_for_overwrite<BinnedPoint[]>(capacity_)),
       buffer_(owned_.get()),
-      spill_(spill) {}
+      spill_(spill) {
+  adviseHugePages(buffer_, capacity_ * sizeof(BinnedPoint));
+}
 
 BinSpiller::BinSpiller(int bin_shift, std::size_t bin_count, std::span<BinnedPoint> buffer,
                        SpillFile& spill)

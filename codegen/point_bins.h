@@ -30,6 +30,10 @@ struct BinnedPoint {
 };
 static_assert(sizeof(BinnedPoint) == 12);
 
+// Asks for 2 MB pages under a large buffer: one page fault instead of 512, which counts in a
+// virtual machine (this one spent a fifth of its time in page faults before).
+void adviseHugePages(void* data, std::size_t bytes);
+
 // A buffer of points whose slots are not zeroed when it grows: every slot is written before it is
 // read, and zeroing gigabytes would cost as much as using them.
 class PointBuffer {
@@ -39,6 +43,7 @@ class PointBuffer {
     if (count > capacity_) {
       data_ = std::make_unique_for_overwrite<BinnedPoint[]>(count);
       capacity_ = count;
+      adviseHugePages(data_.get(), count * sizeof(BinnedPoint));
     }
     size_ = count;
     return span();

@@ -185,26 +185,27 @@ class StreamedPreparer {
   void firstPass() {
     std::vector<FirstPass> workers(threads_);
     const bool count_intensity = info_.payload == PointPayload::kIntensity || info_.has_intensity;
-    readAllPoints("pass 1 of 3, bounds", [&](PointChunk& chunk, std::uint64_t first, unsigned worker) {
-      FirstPass& state = workers[worker];
-      for (std::size_t i = 0; i < chunk.xyz.size(); ++i) {
-        std::array<double, 3>& p = chunk.xyz[i];
-        if (!isFinite(p)) continue;
-        for (std::size_t axis = 0; axis < 3; ++axis) {
-          if (std::fabs(p[axis]) > info_.coordinate_limit) {
-            failAbsurd(path_, p, axis, info_.coordinate_limit, first + i);
-          }
-        }
-        ++state.finite;
-        if (count_intensity) state.intensity.addCoarse(chunk.intensity[i]);
-        if (info_.colour_bits_detected) {
-          for (std::uint16_t channel : chunk.rgb[i]) {
-            state.brightest_channel = std::max(state.brightest_channel, channel);
-          }
-        }
-        if (filter_.keep(p)) state.bounds.add(p);
-      }
-    });
+    readAllPoints("pass 1 of 3, bounds",
+                  [&](PointChunk& chunk, std::uint64_t first, unsigned worker) {
+                    FirstPass& state = workers[worker];
+                    for (std::size_t i = 0; i < chunk.xyz.size(); ++i) {
+                      std::array<double, 3>& p = chunk.xyz[i];
+                      if (!isFinite(p)) continue;
+                      for (std::size_t axis = 0; axis < 3; ++axis) {
+                        if (std::fabs(p[axis]) > info_.coordinate_limit) {
+                          failAbsurd(path_, p, axis, info_.coordinate_limit, first + i);
+                        }
+                      }
+                      ++state.finite;
+                      if (count_intensity) state.intensity.addCoarse(chunk.intensity[i]);
+                      if (info_.colour_bits_detected) {
+                        for (std::uint16_t channel : chunk.rgb[i]) {
+                          state.brightest_channel = std::max(state.brightest_channel, channel);
+                        }
+                      }
+                      if (filter_.keep(p)) state.bounds.add(p);
+                    }
+                  });
     for (std::size_t w = 1; w < workers.size(); ++w) workers[0].merge(workers[w]);
     first_ = std::move(workers[0]);
     if (first_.finite == 0) {
@@ -282,9 +283,10 @@ class StreamedPreparer {
         if (!isFinite(p)) continue;
         if (fine_intensity) intensities[worker].addFine(chunk.intensity[i]);
         if (!filter_.keep(p)) continue;
-        const std::uint64_t key = mortonKey(voxelIndexIn(p[0], fit_.origin[0], fit_.edge, cells),
-                                            voxelIndexIn(p[1], fit_.origin[1], fit_.edge, cells),
-                                            voxelIndexIn(p[2], fit_.origin[2], fit_.edge, cells), depth);
+        const std::uint64_t key =
+            mortonKey(voxelIndexIn(p[0], fit_.origin[0], fit_.edge, cells),
+                      voxelIndexIn(p[1], fit_.origin[1], fit_.edge, cells),
+                      voxelIndexIn(p[2], fit_.origin[2], fit_.edge, cells), depth);
         spiller.add(BinnedPoint::make(key, payloadOf(chunk, i)));
       }
     });
@@ -363,19 +365,15 @@ class StreamedPreparer {
   static EncodedLevel flatten(SubtreePieces& pieces, int depth) {
     EncodedLevel level;
     level.depth = depth;
-    std::size_t node_bytes = 0, leaves = 0;
+    std::size_t node_bytes = 0;
     for (const auto& piece : pieces.nodes) node_bytes += piece.size();
-    for (const auto& piece : pieces.colours) leaves += piece.size();
     level.nodes.reserve(node_bytes);
-    level.colours.reserve(leaves);
     for (auto& piece : pieces.nodes) {
       level.nodes.insert(level.nodes.end(), piece.begin(), piece.end());
       piece = {};
     }
-    for (auto& piece : pieces.colours) {
-      level.colours.insert(level.colours.end(), piece.begin(), piece.end());
-      piece = {};
-    }
+    for (const auto& piece : pieces.colours) level.leaves += piece.size();
+    level.colours = std::move(pieces.colours);
     return level;
   }
 
