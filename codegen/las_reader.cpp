@@ -338,6 +338,7 @@ class LasSource final : public PointSource {
     info_.shading = header_.rgb_offset ? ScanShading::kColour : ScanShading::kIntensity;
     info_.colour_bits_detected = header_.rgb_offset != 0;
     info_.has_intensity = true;
+    info_.float_coordinates = false;
     info_.format = "LAS 1." + std::to_string(header_.version_minor) + ", point format " +
                    std::to_string(header_.point_format) + ", " +
                    std::to_string(header_.record_length) + "-byte records";

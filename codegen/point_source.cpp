@@ -6,8 +6,11 @@
 #include <cctype>
 #include <system_error>
 
+#include "cli/error.h"
+#include "cli/input_file.h"
 #include "codegen/binary_scan_source.h"
 #include "codegen/las_reader.h"
+#include "codegen/prepare_error.h"
 #include "codegen/scan_header_check.h"
 
 namespace octopoint::prepare {
@@ -68,14 +71,14 @@ std::string lowerExtension(const fs::path& path) {
   return extension;
 }
 
-std::uint64_t checkRegularFile(const fs::path& path) {
-  std::error_code error;
-  const fs::file_status status = fs::status(path, error);
-  if (!fs::exists(status)) fail(path, "no such file", "opening the scan");
-  if (fs::is_directory(status)) fail(path, "is a directory, not a scan file", "opening the scan");
-  if (!fs::is_regular_file(status)) fail(path, "is not a regular file", "opening the scan");
-  const std::uint64_t size = fs::file_size(path, error);
-  if (error) fail(path, "cannot read the file size: " + error.message(), "opening the scan");
+// The one input-file check (cli/input_file.h), in the loader's "PATH: what (where)" form.
+std::uint64_t checkScanFile(const fs::path& path) {
+  std::uint64_t size = 0;
+  try {
+    size = cli::checkInputFile(path, kStreamedScanInput);
+  } catch (const cli::Error& error) {
+    throw PrepareError(std::string(error.what()) + " (opening the scan)");
+  }
   if (size == 0) fail(path, "empty file (0 bytes)", "opening the scan");
   return size;
 }
@@ -94,7 +97,7 @@ std::unique_ptr<PointSource> openPointSource(const fs::path& path) {
     fail(path, "unknown extension '" + printable(extension) + "', expected .las, .pcd or .ply",
          "file name");
   }
-  const std::uint64_t size = checkRegularFile(path);
+  const std::uint64_t size = checkScanFile(path);
   if (is_las) return openLasSource(path);
   is_ply ? checkPlyHeader(path, size) : checkPcdHeader(path, size);
   if (auto streamed = openBinaryScanSource(path, size, is_ply)) return streamed;

@@ -16,6 +16,7 @@
 #include <string>
 #include <vector>
 
+#include "cli/input_file.h"
 #include "codegen/scan_loader.h"
 
 namespace octopoint::prepare {
@@ -41,7 +42,8 @@ struct SourceInfo {
   // A finite |coordinate| above this is refused as absurd (codegen/scan_loader.h); LAS coordinates
   // are bounded by their header's scale and offset instead, so it is infinite there.
   double coordinate_limit = std::numeric_limits<double>::infinity();
-  bool organized = false;  // height > 1 (PCD/PLY)
+  bool float_coordinates = true;  // PCD, PLY and scans in memory; LAS coordinates are doubles
+  bool organized = false;         // height > 1 (PCD/PLY)
   bool streamed = true;    // false when the whole scan was loaded through PCL first
   std::string format;      // for the summary line, e.g. "LAS 1.4, point format 7"
 };
@@ -73,6 +75,10 @@ class PointSource {
 // Serves an in-memory scan (already cropped or not; its colours are final 8-bit colours, the
 // intensity already turned grey by loadScan). The scan must outlive the source.
 std::unique_ptr<PointSource> memorySource(const Scan& scan);
+
+// The scan files streamed (LAS, binary PCD/PLY): regular files of at most 4 TiB. Streaming costs
+// the same memory whatever the size; a file that is mostly hole fails on its content.
+inline constexpr cli::InputKind kStreamedScanInput{"scan", 4096 * cli::kGiB};
 
 // Opens a scan file by its extension (.las, .pcd, .ply; .laz is refused by name): LAS and binary
 // PCD/PLY of a plain layout are streamed, anything else is loaded whole with loadScan, which then

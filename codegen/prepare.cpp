@@ -18,8 +18,10 @@ Scan cropScan(const Scan& scan, const CropBox& box, const std::string& scan_path
   for (std::size_t i = 0; i < scan.positions.size(); ++i) {
     const auto& p = scan.positions[i];
     bool in = true;
-    for (std::size_t axis = 0; axis < 3; ++axis)
-      in = in && p[axis] >= box.low[axis] && p[axis] <= box.high[axis];
+    for (std::size_t axis = 0; axis < 3; ++axis) {
+      in = in && p[axis] >= static_cast<float>(box.low[axis]) &&
+           p[axis] <= static_cast<float>(box.high[axis]);
+    }
     inside[i] = in;
   }
   Scan cropped = keepPoints(scan, inside);
@@ -38,11 +40,11 @@ CropBox parseCropBox(const std::string& flag, const std::string& text) {
     if (comma == std::string::npos || (i + 1 == v.size() && text.find(',', at) != std::string::npos)) {
       throw PrepareError(flag + ": " + cli::inQuotes(text) + " is not six comma-separated numbers X0,Y0,Z0,X1,Y1,Z1");
     }
-    v[i] = cli::parseReal(flag, std::string_view(text).substr(at, comma - at), -kMaxAbsCoordinate, kMaxAbsCoordinate);
+    v[i] = cli::parseReal(flag, std::string_view(text).substr(at, comma - at), -kMaxCropCoordinate,
+                          kMaxCropCoordinate);
     at = comma + 1;
   }
-  const CropBox box{{static_cast<float>(v[0]), static_cast<float>(v[1]), static_cast<float>(v[2])},
-                    {static_cast<float>(v[3]), static_cast<float>(v[4]), static_cast<float>(v[5])}};
+  const CropBox box{{v[0], v[1], v[2]}, {v[3], v[4], v[5]}};
   for (std::size_t axis = 0; axis < 3; ++axis) {
     if (!(box.low[axis] < box.high[axis])) {
       throw PrepareError(flag + ": " + cli::inQuotes(text) + " is empty: each lower bound must be below its upper bound");

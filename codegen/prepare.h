@@ -16,10 +16,15 @@ namespace octopoint::prepare {
 
 // An axis-aligned box in scan units; points outside it are dropped before fitting the cube, which
 // removes the far-away junk and the background a range scan sees around its subject.
+// The corners are kept as given: scans of float coordinates (PCD, PLY) are compared with the box
+// rounded to float, as they always were; LAS coordinates, doubles of any size (UTM northings reach
+// 10^7), with the box itself.
 struct CropBox {
-  std::array<float, 3> low{};
-  std::array<float, 3> high{};
+  std::array<double, 3> low{};
+  std::array<double, 3> high{};
 };
+// The largest |corner| a crop box may have: past any LAS coordinate (codegen/las_reader.h).
+inline constexpr double kMaxCropCoordinate = 1e13;
 
 // How the scan's axes are laid out. The model is always stored in the sensor frame: x right, y down,
 // z away from the sensor (what PCL's OpenNI grabber and OpenCV use), so that the identity camera

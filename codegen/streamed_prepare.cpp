@@ -40,19 +40,32 @@ std::size_t chunkCount(std::uint64_t points) {
 // The points that go into the model, turned into its axes: finite (the caller checks), inside
 // the crop box (compared in the scan's own axes, as cropScan does), y-up turned by 180 degrees
 // about x.
-struct PointFilter {
-  const std::optional<CropBox>& crop;
-  ScanAxes axes;
+class PointFilter {
+ public:
+  PointFilter(const std::optional<CropBox>& crop, ScanAxes axes, bool float_coordinates)
+      : crop_(crop.has_value()), axes_(axes) {
+    if (!crop) return;
+    for (std::size_t axis = 0; axis < 3; ++axis) {  // float scans see the box as cropScan does
+      low_[axis] = float_coordinates ? static_cast<float>(crop->low[axis]) : crop->low[axis];
+      high_[axis] = float_coordinates ? static_cast<float>(crop->high[axis]) : crop->high[axis];
+    }
+  }
 
   bool keep(std::array<double, 3>& p) const {
-    if (crop) {
+    if (crop_) {
       for (std::size_t axis = 0; axis < 3; ++axis) {
-        if (!(p[axis] >= crop->low[axis] && p[axis] <= crop->high[axis])) return false;
+        if (!(p[axis] >= low_[axis] && p[axis] <= high_[axis])) return false;
       }
     }
-    if (axes == ScanAxes::kYUp) p = {p[0], -p[1], -p[2]};  // a rotation: no mirror image
+    if (axes_ == ScanAxes::kYUp) p = {p[0], -p[1], -p[2]};  // a rotation: no mirror image
     return true;
   }
+
+ private:
+  bool crop_;
+  ScanAxes axes_;
+  std::array<double, 3> low_{};
+  std::array<double, 3> high_{};
 };
 
 bool isFinite(const std::array<double, 3>& p) {
@@ -106,7 +119,7 @@ class StreamedPreparer {
         info_(source.info()),
         path_(path),
         options_(options),
-        filter_{options.crop, options.axes},
+        filter_(options.crop, options.axes, source.info().float_coordinates),
         threads_(threadCount(stream.threads)),
         temp_dir_(stream.temp_dir.empty() ? fs::temp_directory_path() : stream.temp_dir) {
     const std::uint64_t half = stream.memory_bytes / 2 / threads_;

@@ -7,7 +7,7 @@ target_include_directories(octopoint_scan_tools PUBLIC ${PROJECT_SOURCE_DIR})
 target_compile_features(octopoint_scan_tools PUBLIC cxx_std_20)
 target_link_libraries(octopoint_scan_tools PRIVATE octopoint_warnings)
 add_executable(make_large_scan tools/make_large_scan.cpp)
-target_link_libraries(make_large_scan PRIVATE octopoint_scan_tools octopoint_warnings)
+target_link_libraries(make_large_scan PRIVATE octopoint_scan_tools octopoint_cli octopoint_warnings)
 
 # The streamed preparer against the in-memory reference, across budgets and threads; the LAS
 # reader with every format, corner and damaged header. PCL writes the PCD/PLY files to compare with.

@@ -193,6 +193,34 @@ TEST_F(LasReaderTest, AllZeroColourFallsBackToTheIntensity) {
   EXPECT_EQ(summary.shading, ScanShading::kIntensity);
 }
 
+// LAS coordinates are doubles far beyond float precision (a UTM northing of 4,100,000 m): a crop
+// box there is compared in double, to the millimetre the file stores.
+TEST_F(LasReaderTest, CropBoxWorksInSurveyCoordinates) {
+  LasLayout layout;
+  const fs::path path = write("utm.las", layout, 60000);
+  PrepareOptions options;
+  options.name = "las";
+  options.depths = {8};
+  // Rounded to float (0.5 m apart up there), the y bounds would move by 0.2 m.
+  options.crop = CropBox{{500200.3, 4100300.3, 0}, {500600.3, 4100700.3, 1000}};
+  PrepareSummary summary;
+  prepareFromSource(*openPointSource(path), path.string(), options, StreamOptions{}, &summary);
+  std::uint64_t inside = 0;
+  for (std::size_t i = 0; i < 60000; ++i) {
+    const LandscapePoint p = landscape_.point(i);
+    bool in = true;
+    for (std::size_t axis = 0; axis < 3; ++axis) {
+      const double stored =
+          static_cast<double>(std::lround(p.xyz[axis] / layout.scale[axis])) * layout.scale[axis] +
+          layout.offset[axis];
+      in = in && stored >= options.crop->low[axis] && stored <= options.crop->high[axis];
+    }
+    inside += in ? 1 : 0;
+  }
+  EXPECT_GT(inside, 1000u);
+  EXPECT_EQ(summary.model_points, inside);
+}
+
 // Intensity is turned grey per point before summing; a voxel with more points than a thread's
 // share of the budget is summed a buffer at a time. Both must agree with the all-in-memory run.
 TEST_F(LasReaderTest, IntensityModelIsTheSameWhateverTheBudgetAndThreadCount) {

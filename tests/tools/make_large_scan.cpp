@@ -7,6 +7,10 @@
 #include <stdexcept>
 #include <string>
 
+#include "cli/arguments.h"
+#include "cli/numbers.h"
+#include "cli/real_numbers.h"
+#include "cli/run_tool.h"
 #include "tests/tools/landscape.h"
 #include "tests/tools/las_writer.h"
 
@@ -16,13 +20,15 @@ using octopoint::testing::Landscape;
 using octopoint::testing::LandscapePoint;
 using octopoint::testing::LasLayout;
 
+constexpr std::int64_t kMaxPoints = std::int64_t{1} << 40;
+
 constexpr const char* kUsage =
     R"(usage: make_large_scan --points N --format las|ply [options] -o FILE
 
 Writes N points of a procedural landscape (hills, meadows, rock, a lake, a town of buildings with
 coloured roofs) to FILE, point by point in constant memory; the same options give the same file.
 
-  --points N            how many points (1 or more)
+  --points N            how many points, 1..2^40
   --format las|ply      LAS, or binary little-endian PLY (float x y z, uchar red green blue)
   --las-format F        LAS point format 0..10 (default 2: XYZ, intensity, 16-bit RGB);
                         formats 0, 1, 4, 6 and 9 have no colour, only intensity
@@ -31,22 +37,10 @@ coloured roofs) to FILE, point by point in constant memory; the same options giv
                         the 16-bit fields, as many writers do
   --extra-bytes N       user bytes after each LAS record (0..1000, default 0)
   --vlrs N              VLRs before the points (default 1); --evlrs N: EVLRs after them (1.4)
-  --scale S             LAS coordinate scale in metres (default 0.001)
+  --scale S             LAS coordinate scale in metres, 1e-6..1 (default 0.001)
   --seed N              another landscape of the same kind (default 1)
   -o FILE               where to write
 )";
-
-std::uint64_t number(const std::string& flag, const char* text, std::uint64_t low,
-                     std::uint64_t high) {
-  std::uint64_t value = 0;
-  const char* end = text + std::strlen(text);
-  const auto result = std::from_chars(text, end, value);
-  if (result.ec != std::errc() || result.ptr != end || value < low || value > high) {
-    throw std::runtime_error(flag + ": '" + text + "' is not a whole number in " +
-                             std::to_string(low) + ".." + std::to_string(high));
-  }
-  return value;
-}
 
 void writePly(const std::string& path, std::uint64_t points, const Landscape& landscape) {
   std::ofstream out(path, std::ios::binary | std::ios::trunc);
@@ -79,43 +73,46 @@ int run(int argc, char** argv) {
   std::string format, output;
   LasLayout layout;
   std::uint64_t seed = 1;
-  for (int i = 1; i < argc; ++i) {
-    const std::string arg = argv[i];
-    if (arg == "-h" || arg == "--help") {
+  octopoint::cli::ArgumentReader args(argc, argv);
+  using octopoint::cli::parseInt;
+  while (args.next()) {
+    if (args.is("-h") || args.is("--help")) {
       std::fputs(kUsage, stdout);
       return 0;
     }
-    if (i + 1 >= argc) throw std::runtime_error(arg + ": missing value (see --help)");
-    const char* value = argv[++i];
-    if (arg == "--points")
-      points = number(arg, value, 1, std::uint64_t{1} << 40);
-    else if (arg == "--format")
-      format = value;
-    else if (arg == "--las-format")
-      layout.format = static_cast<int>(number(arg, value, 0, 10));
-    else if (arg == "--las-version") {
-      if (std::strncmp(value, "1.", 2) != 0)
-        throw std::runtime_error("--las-version: expected 1.0 to 1.4");
-      layout.version_minor = static_cast<int>(number(arg, value + 2, 0, 4));
-    } else if (arg == "--colour-bits")
-      layout.colour_16bit = number(arg, value, 8, 16) == 16;
-    else if (arg == "--extra-bytes")
-      layout.extra_bytes = static_cast<int>(number(arg, value, 0, 1000));
-    else if (arg == "--vlrs")
-      layout.vlrs = static_cast<int>(number(arg, value, 0, 1000));
-    else if (arg == "--evlrs")
-      layout.evlrs = static_cast<int>(number(arg, value, 0, 1000));
-    else if (arg == "--scale") {
-      const double scale = std::stod(value);
+    if (args.is("--points")) {
+      points = static_cast<std::uint64_t>(
+          octopoint::cli::parseInteger(args.name(), args.value(), 1, kMaxPoints));
+    } else if (args.is("--format")) {
+      format = octopoint::cli::parseChoice(args.name(), args.value(), {"las", "ply"}) == 0 ? "las"
+                                                                                           : "ply";
+    } else if (args.is("--las-format")) {
+      layout.format = parseInt(args.name(), args.value(), 0, 10);
+    } else if (args.is("--las-version")) {
+      layout.version_minor = static_cast<int>(octopoint::cli::parseChoice(
+          args.name(), args.value(), {"1.0", "1.1", "1.2", "1.3", "1.4"}));
+    } else if (args.is("--colour-bits")) {
+      layout.colour_16bit =
+          octopoint::cli::parseChoice(args.name(), args.value(), {"8", "16"}) == 1;
+    } else if (args.is("--extra-bytes")) {
+      layout.extra_bytes = parseInt(args.name(), args.value(), 0, 1000);
+    } else if (args.is("--vlrs")) {
+      layout.vlrs = parseInt(args.name(), args.value(), 0, 1000);
+    } else if (args.is("--evlrs")) {
+      layout.evlrs = parseInt(args.name(), args.value(), 0, 1000);
+    } else if (args.is("--scale")) {
+      const double scale = octopoint::cli::parseReal(args.name(), args.value(), 1e-6, 1);
       layout.scale = {scale, scale, scale};
-    } else if (arg == "--seed")
-      seed = number(arg, value, 0, UINT64_MAX);
-    else if (arg == "-o")
-      output = value;
-    else
-      throw std::runtime_error("unknown option '" + arg + "' (see --help)");
+    } else if (args.is("--seed")) {
+      seed = static_cast<std::uint64_t>(
+          octopoint::cli::parseInteger(args.name(), args.value(), 0, INT64_MAX));
+    } else if (args.is("-o")) {
+      output = args.value();
+    } else {
+      args.refuseUnknown();
+    }
   }
-  if (points == 0 || output.empty() || (format != "las" && format != "ply")) {
+  if (points == 0 || output.empty() || format.empty()) {
     throw std::runtime_error("need --points N, --format las|ply and -o FILE (see --help)");
   }
   if (layout.evlrs && layout.minor() < 4) throw std::runtime_error("--evlrs needs LAS 1.4");
@@ -133,10 +130,5 @@ int run(int argc, char** argv) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  try {
-    return run(argc, argv);
-  } catch (const std::exception& error) {
-    std::fprintf(stderr, "make_large_scan: %s\n", error.what());
-    return 1;
-  }
+  return octopoint::cli::runTool("make_large_scan", argc, argv, run);
 }
