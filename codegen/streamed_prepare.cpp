@@ -5,6 +5,7 @@
 #include <bit>
 #include <chrono>
 #include <cmath>
+#include <cstdlib>
 #include <optional>
 #include <sstream>
 
@@ -72,6 +73,23 @@ bool isFinite(const std::array<double, 3>& p) {
   return std::isfinite(p[0]) && std::isfinite(p[1]) && std::isfinite(p[2]);
 }
 
+// Where spill files go: --temp-dir, else $TMPDIR, else /tmp.
+fs::path temporaryDirectory(const fs::path& requested) {
+  const char* from_environment = std::getenv("TMPDIR");
+  if (!requested.empty()) return requested;
+  return from_environment && *from_environment ? fs::path(from_environment) : fs::path("/tmp");
+}
+
+// Checked before any work when the points may not fit the budget.
+void checkDirectory(const fs::path& directory) {
+  std::error_code error;
+  if (!fs::is_directory(directory, error)) {
+    throw PrepareError(directory.string() +
+                       ": not a directory, so no temporary files can go there (--temp-dir, "
+                       "or TMPDIR)");
+  }
+}
+
 // What pass 1 learns, per worker and then merged.
 struct FirstPass {
   Bounds bounds;
@@ -121,10 +139,12 @@ class StreamedPreparer {
         options_(options),
         filter_(options.crop, options.axes, source.info().float_coordinates),
         threads_(threadCount(stream.threads)),
-        temp_dir_(stream.temp_dir.empty() ? fs::temp_directory_path() : stream.temp_dir) {
+        temp_dir_(temporaryDirectory(stream.temp_dir)) {
     const std::uint64_t half = stream.memory_bytes / 2 / threads_;
     buffer_points_ = std::max<std::uint64_t>(half / sizeof(BinnedPoint), kMinBinPoints);
     bin_points_ = std::max<std::uint64_t>(half / kBytesPerBinPoint, kMinBinPoints);
+    // A scan that fits the budget never writes a temporary file: it need not have a place for one.
+    if (info_.points > std::min(threads_ * buffer_points_, bin_points_)) checkDirectory(temp_dir_);
     colouring_.depths = options.depths;
     colouring_.greyscale = options.greyscale;
   }

@@ -71,3 +71,21 @@ bad_las_test(offset_nan "absurd Z offset nan" offset_nan.las)
 bad_las_test(vlr_overrun "runs into the point data" vlr_overrun.las)
 bad_las_test(laz "compressed LAZ is not supported; decompress it first" compressed.laz)
 bad_las_test(sparse_1tb "the point data has a hole" sparse_1tb.las)
+
+# The streamed preparer's own options and limits.
+function(stream_error_test name expected)
+  prepare_error_test(${name} "${expected}" ${ARGN})
+  set_tests_properties(cli.prepare.${name} PROPERTIES FIXTURES_REQUIRED las_scans)
+endfunction()
+stream_error_test(temp_dir_missing "not a directory, so no temporary files can go there"
+                  ${las_scans}/budget.las -o ${cli_out}/temp_dir_missing --name m --memory 1
+                  --temp-dir ${cli_out}/no_such_directory)
+stream_error_test(memory_zero "--memory" ${las_scans}/format0.las -o ${cli_out}/memory_zero --name m --memory 0)
+stream_error_test(threads_fraction "--threads" ${las_scans}/format0.las -o ${cli_out}/threads_fraction --name m
+                  --threads 1.5)
+file(WRITE ${CMAKE_CURRENT_BINARY_DIR}/outliers_scene.json
+     "{\"yaw\": [-10, 10], \"framebuffer\": [64, 48], \"depths\": [5],\n"
+     " \"outliers\": {\"method\": \"statistical\", \"neighbours\": 8, \"stddev\": 2}}\n")
+stream_error_test(las_outliers "outlier removal (the scene's \"outliers\") needs the whole scan in memory"
+                  ${las_scans}/format0.las -o ${cli_out}/las_outliers --name m
+                  --scene ${CMAKE_CURRENT_BINARY_DIR}/outliers_scene.json)
