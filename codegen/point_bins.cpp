@@ -106,12 +106,15 @@ void BinSpiller::finish(bool keep_tail, std::vector<BinContents>& bins) {
   }
   runs_.clear();
   if (size_ == 0) return;
-  const std::span<BinnedPoint> points(buffer_, size_);
-  const std::vector<std::uint64_t> starts = partitionByBin(points, bin_shift_, bin_count_);
+  groupTail();
   for (std::size_t b = 0; b < bin_count_; ++b) {
-    const std::uint64_t count = starts[b + 1] - starts[b];
-    if (count) bins[b].add({points.data() + starts[b], nullptr, 0, count});
+    const std::uint64_t count = tail_starts_[b + 1] - tail_starts_[b];
+    if (count) bins[b].add({buffer_ + tail_starts_[b], nullptr, 0, count});
   }
+}
+
+void BinSpiller::groupTail() {
+  if (tail_starts_.empty()) tail_starts_ = partitionByBin({buffer_, size_}, bin_shift_, bin_count_);
 }
 
 }  // namespace octopoint::prepare

@@ -117,6 +117,9 @@ class BinSpiller {
   // keep_tail, the points still buffered (then grouped in place; the spiller must outlive their
   // use), else those written as one more run.
   void finish(bool keep_tail, std::vector<BinContents>& bins);
+  // Groups the points still buffered by bin, which finish(true, ...) does if not done before:
+  // callable on several spillers at once, from different threads.
+  void groupTail();
 
  private:
   void writeRun();
@@ -133,6 +136,7 @@ class BinSpiller {
     std::vector<std::uint64_t> starts;  // per bin, in points from the run's start
   };
   std::vector<Run> runs_;
+  std::vector<std::uint64_t> tail_starts_;  // once grouped
 };
 
 template <typename Visit>

@@ -4,6 +4,7 @@
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
+#include <future>
 #include <iostream>
 #include <memory>
 #include <optional>
@@ -26,9 +27,9 @@
 #include "codegen/prepare_error.h"
 #include "codegen/progress.h"
 #include "codegen/scan_loader.h"
-#include "codegen/streamed_prepare.h"
 #include "codegen/scene.h"
 #include "codegen/scene_views.h"
+#include "codegen/streamed_prepare.h"
 #include "renderer/model_format.h"
 
 namespace {
@@ -331,8 +332,13 @@ int run(int argc, char** argv) {
   ChunkedLayout layout;
 
   const auto writing = std::chrono::steady_clock::now();
+  // The .oct image is made on a second thread while the sources are: both only read the model.
+  std::future<std::vector<std::uint8_t>> image_made =
+      std::async(std::launch::async, [&] {
+        return args->chunked ? serializeChunkedModel(model, args->chunking, &layout) : serializeModel(model);
+      });
   std::vector<OutputFile> files = emitSources(model, args->emit);
-  const std::vector<std::uint8_t> image = args->chunked ? serializeChunkedModel(model, args->chunking, &layout) : serializeModel(model);
+  const std::vector<std::uint8_t> image = image_made.get();
   files.push_back({model.name + ".oct", std::string(image.begin(), image.end())});
   octopoint::cli::writeFilesAtomically(args->output_dir, files);
   const double writing_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - writing).count();

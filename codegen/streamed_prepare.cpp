@@ -328,6 +328,8 @@ class StreamedPreparer {
       colouring_.intensity = first_.intensity.range();
     }
     std::vector<BinContents> bins(bin_count);
+    parallelFor(threads_, spillers_.size(),
+                [&](std::size_t i, unsigned) { spillers_[i]->groupTail(); });
     for (auto& spiller : spillers_) spiller->finish(true, bins);
     return bins;
   }
