@@ -90,6 +90,8 @@ std::unique_ptr<PointSource> memorySource(const Scan& scan) {
 }
 
 std::unique_ptr<PointSource> openPointSource(const fs::path& path) {
+  // What the path is (a FIFO, a directory, too large) before what it is called, as loadScan does.
+  const std::uint64_t size = checkScanFile(path);
   const std::string extension = lowerExtension(path);
   const bool is_las = extension == ".las" || extension == ".laz";
   const bool is_ply = extension == ".ply";
@@ -97,7 +99,6 @@ std::unique_ptr<PointSource> openPointSource(const fs::path& path) {
     fail(path, "unknown extension '" + printable(extension) + "', expected .las, .pcd or .ply",
          "file name");
   }
-  const std::uint64_t size = checkScanFile(path);
   if (is_las) return openLasSource(path);
   is_ply ? checkPlyHeader(path, size) : checkPcdHeader(path, size);
   if (auto streamed = openBinaryScanSource(path, size, is_ply)) return streamed;
