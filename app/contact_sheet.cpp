@@ -3,6 +3,7 @@
 #include <opencv2/imgproc.hpp>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 #include "renderer/framebuffer.h"
 #include "renderer/hole_fill.h"
@@ -17,47 +18,74 @@ void putLabel(cv::Mat& image, const std::string& text, cv::Point at) {
   cv::putText(image, text, at, cv::FONT_HERSHEY_SIMPLEX, 0.45, {40, 40, 40}, 1, cv::LINE_AA);
 }
 
+struct SheetRow {
+  const LevelView* level;  // nullptr: depth auto, per view
+  bool fill;
+  Style style;
+};
+
+std::vector<SheetRow> sheetRows(const ModelView& model, Style style) {
+  std::vector<SheetRow> rows = {{nullptr, false, style}};
+  for (int i = 0; i < model.levelCount(); ++i) {
+    for (const bool fill : {false, true}) rows.push_back({&model.level(i), fill, style});
+  }
+  if (model.hasNormals()) {
+    for (const StyleInfo& info : allStyles()) {
+      if (info.style != style) rows.push_back({nullptr, false, info.style});
+    }
+  }
+  return rows;
+}
+
+std::string label(const SheetRow& row) {
+  std::string text = row.level == nullptr ? "depth auto (by projected size)" : "depth " + std::to_string(row.level->depth);
+  text += row.fill ? ", hole filling" : ", no filling";
+  if (row.style != Style::kColour) text += ", " + std::string(styleName(row.style));
+  return text;
+}
+
 }  // namespace
 
 std::int64_t contactSheetPixels(const ModelView& model, const Camera& camera, int yaw_count) {
-  const std::int64_t rows = 1 + std::int64_t{model.levelCount()} * 2;  // depth auto, then each depth twice
+  const auto rows = static_cast<std::int64_t>(sheetRows(model, Style::kColour).size());
   return rows * (camera.height + kLabelHeight) * yaw_count * std::int64_t{camera.width};
 }
 
 cv::Mat renderContactSheet(const ModelView& model, const Camera& camera, int yaw_count,
-                           Variant variant, Rgb background) {
-  const int rows = 1 + model.levelCount() * 2;
+                           Variant variant, const StyleOptions& style) {
+  const std::vector<SheetRow> rows = sheetRows(model, style.style);
   const int row_height = camera.height + kLabelHeight;
-  cv::Mat sheet(rows * row_height, yaw_count * camera.width, CV_8UC3,
+  const Rgb background = style.background;
+  cv::Mat sheet(static_cast<int>(rows.size()) * row_height, yaw_count * camera.width, CV_8UC3,
                 cv::Scalar(background.b, background.g, background.r));
   Framebuffer frame(camera.width, camera.height);
   HoleFiller filler(camera.width);
+  FrameStyler styler(model);
   cv::Mat rgb(camera.height, camera.width, CV_8UC3), bgr;
-  // One cell: `level` (nullptr: depth auto, per view) from column `column`'s view.
-  auto drawCell = [&](int row, int column, const LevelView* level, bool fill) {
-    Camera view = camera;
-    view.yaw = camera.yaw + Angle::fromTurns16(std::int64_t{column} * Angle::kUnitsPerTurn / yaw_count);
-    const LevelView* drawn = level != nullptr ? level : autoLevel(model, view);
-    FrameSetup setup;
-    const CameraError error = drawn == nullptr ? CameraError::kOverflow
-                                               : buildFrameSetup(view, drawn->depth, kDefaultFractionBits, &setup);
-    if (error != CameraError::kNone) throw std::runtime_error(std::string("camera refused: ") + describe(error));
-    frame.clear();
-    renderLevel(variant, *drawn, setup, frame);
-    if (fill) filler.fill(frame, bridgeDepthLimit(setup));
-    resolveToRgb(frame, model, background, {rgb.data, rgb.total() * 3});
-    cv::cvtColor(rgb, bgr, cv::COLOR_RGB2BGR);
-    bgr.copyTo(sheet(cv::Rect(column * camera.width, row * row_height + kLabelHeight, camera.width, camera.height)));
-  };
-  putLabel(sheet, "depth auto (by projected size), no filling", {4, kLabelHeight - 5});
-  for (int column = 0; column < yaw_count; ++column) drawCell(0, column, nullptr, false);
-  for (int level_index = 0; level_index < model.levelCount(); ++level_index) {
-    const LevelView& level = model.level(level_index);
-    for (const bool fill : {false, true}) {
-      const int row = 1 + level_index * 2 + (fill ? 1 : 0);
-      putLabel(sheet, "depth " + std::to_string(level.depth) + (fill ? ", hole filling" : ", no filling"),
-               {4, row * row_height + kLabelHeight - 5});
-      for (int column = 0; column < yaw_count; ++column) drawCell(row, column, &level, fill);
+  for (std::size_t r = 0; r < rows.size(); ++r) {
+    const SheetRow& row = rows[r];
+    StyleOptions options = style;
+    options.style = row.style;
+    if (const StyleError error = styler.setOptions(options); error != StyleError::kNone) {
+      throw std::runtime_error(describe(error));
+    }
+    const int top = static_cast<int>(r) * row_height;
+    putLabel(sheet, label(row), {4, top + kLabelHeight - 5});
+    for (int column = 0; column < yaw_count; ++column) {
+      Camera view = camera;
+      view.yaw = camera.yaw + Angle::fromTurns16(std::int64_t{column} * Angle::kUnitsPerTurn / yaw_count);
+      const LevelView* drawn = row.level != nullptr ? row.level : autoLevel(model, view);
+      FrameSetup setup;
+      const CameraError error = drawn == nullptr ? CameraError::kOverflow
+                                                 : buildFrameSetup(view, drawn->depth, kDefaultFractionBits, &setup);
+      if (error != CameraError::kNone) throw std::runtime_error(std::string("camera refused: ") + describe(error));
+      frame.clear(styler.payload());
+      renderLevel(variant, *drawn, setup, frame);
+      if (row.fill) filler.fill(frame, bridgeDepthLimit(setup));
+      styler.beginFrame(setup);
+      styler.resolve(frame, {rgb.data, rgb.total() * 3});
+      cv::cvtColor(rgb, bgr, cv::COLOR_RGB2BGR);
+      bgr.copyTo(sheet(cv::Rect(column * camera.width, top + kLabelHeight, camera.width, camera.height)));
     }
   }
   return sheet;

@@ -23,6 +23,7 @@
 #include "cli/text.h"
 #include "models/registry.h"
 #include "renderer/camera.h"
+#include "renderer/frame_styler.h"
 #include "renderer/framebuffer.h"
 #include "renderer/hole_fill.h"
 #include "renderer/level_of_detail.h"
@@ -65,9 +66,18 @@ nor --file nor --url it draws the default model embedded in this binary.
                      else fixed_fast; see --list)
   --fill, --no-fill  scanline hole filling after decoding, as the paper does (default --no-fill:
                      footprint splats leave no holes; docs/holefill.md)
+  --style NAME       colour (default), shaded, lines, toon or outlined (docs/styles.md); all but
+                     colour need a model with normals (octopoint-prepare --normals)
+  --light AZ,EL      where the light of shaded and toon comes from, in degrees relative to the
+                     viewer: azimuth to the right (negative: left), elevation up, each within
+                     +-90; 0,0 is at the viewer's eye (default -30,35)
+  --headlight        add a weaker second light at the viewer's eye (no face is left black)
+  --crease DEG       line styles: neighbouring normals further apart than this are a crease,
+                     1..179 (default 60)
   --sheet N          a contact sheet instead: N yaw angles (1..36) in columns; rows: depth auto,
-                     then each depth of the model unfilled and filled; the whole sheet may have
-                     at most 16777216 pixels
+                     then each depth of the model unfilled and filled, in --style; then, for a
+                     model with normals, depth auto in each other style; the whole sheet may
+                     have at most 16777216 pixels
   -o, --output FILE  the PNG to write (written whole or not at all); if it exists it must be a
                      regular file (a device or FIFO is refused)
   --list             list the embedded models and the decoder variants
@@ -97,7 +107,23 @@ struct Options {
   bool list = false;
   bool fill = false;
   int sheet = 0;  // yaw angles of the contact sheet; 0: a single view
+  StyleOptions style;
 };
+
+// "AZ,EL" in degrees, each within +-90.
+Light parseLight(std::string_view option, std::string_view text) {
+  const std::size_t comma = text.find(',');
+  if (comma == std::string_view::npos) {
+    throw cli::Error(std::string(option) + ": " + cli::inQuotes(text) + " is not AZIMUTH,ELEVATION in degrees");
+  }
+  Light light;
+  const double azimuth = cli::parseReal(option, text.substr(0, comma), -90, 90);
+  const double elevation = cli::parseReal(option, text.substr(comma + 1), -90, 90);
+  // Host side only: the renderer sees the integer angles (1/65536 turn).
+  light.azimuth = Angle::fromMilliDegrees(std::llround(azimuth * 1000));
+  light.elevation = Angle::fromMilliDegrees(std::llround(elevation * 1000));
+  return light;
+}
 
 // Every image this tool writes has at most this many pixels (a frame: 64 MiB of framebuffer,
 // 48 MiB of RGB), whatever its shape; a contact sheet's cells and labels count together.
@@ -157,6 +183,20 @@ Options parseOptions(int argc, char** argv) {
     } else if (args.is("--fill") || args.is("--no-fill")) {
       args.noValue();
       options.fill = args.is("--fill");
+    } else if (args.is("--style")) {
+      const std::size_t choice =
+          cli::parseChoice(args.name(), args.value(), {"colour", "shaded", "lines", "toon", "outlined"});
+      options.style.style = allStyles()[choice].style;
+    } else if (args.is("--light")) {
+      const bool headlight = options.style.light.headlight;
+      options.style.light = parseLight(args.name(), args.value());
+      options.style.light.headlight = headlight;
+    } else if (args.is("--headlight")) {
+      args.noValue();
+      options.style.light.headlight = true;
+    } else if (args.is("--crease")) {
+      options.style.crease_angle =
+          Angle::fromMilliDegrees(std::llround(cli::parseReal(args.name(), args.value(), 1, 179) * 1000));
     } else if (args.is("--sheet")) {
       options.sheet = cli::parseInt(args.name(), args.value(), 1, 36);
     } else if (args.is("-o") || args.is("--output")) {
@@ -250,6 +290,20 @@ int run(int argc, char** argv) {
     throw cli::Error("--depth: " + model_label + " has no depth " + std::to_string(*options.depth) +
                      " (it has" + depths + ")");
   }
+  FrameStyler styler(*model);
+  StyleOptions style = options.style;
+  style.background = kBackground;
+  if (const StyleError error = styler.setOptions(style); error != StyleError::kNone) {
+    throw cli::Error("--style " + std::string(styleName(style.style)) + ": " + model_label + ": " + describe(error));
+  }
+  if (styler.payload() == PixelPayload::kColourNormal && !drawsNormals(options.variant)) {
+    std::string variant_name;
+    for (const VariantInfo& info : allVariants()) {
+      if (info.variant == options.variant) variant_name = info.name;
+    }
+    throw cli::Error("--style " + std::string(styleName(style.style)) + ": --variant " + variant_name +
+                     " draws colour only, not the normals this style needs (use another variant)");
+  }
   cli::checkOutputFile(options.output);  // before drawing: a FIFO, a device or a directory is refused
   if (options.sheet > 0) {
     const std::int64_t sheet_pixels = contactSheetPixels(*model, options.camera, options.sheet);
@@ -261,8 +315,10 @@ int run(int argc, char** argv) {
     }
     try {
       writePng(options.output,
-               renderContactSheet(*model, options.camera, options.sheet, options.variant, kBackground));
+               renderContactSheet(*model, options.camera, options.sheet, options.variant, style));
     } catch (const cv::Exception& error) {
+      throw cli::Error(std::string("contact sheet: ") + error.what());
+    } catch (const std::runtime_error& error) {
       throw cli::Error(std::string("contact sheet: ") + error.what());
     }
     std::printf("%s: contact sheet of %d views -> %s\n", model_label.c_str(), options.sheet,
@@ -275,12 +331,13 @@ int run(int argc, char** argv) {
   if (camera_error != CameraError::kNone) throw cli::Error(std::string("camera refused: ") + describe(camera_error));
 
   Framebuffer frame(options.camera.width, options.camera.height);
-  frame.clear();
+  frame.clear(styler.payload());
   renderLevel(options.variant, *level, setup, frame);
   if (options.fill) HoleFiller(frame.width()).fill(frame, bridgeDepthLimit(setup));
 
   cv::Mat rgb(options.camera.height, options.camera.width, CV_8UC3);
-  resolveToRgb(frame, *model, kBackground, {rgb.data, rgb.total() * 3});
+  styler.beginFrame(setup);
+  styler.resolve(frame, {rgb.data, rgb.total() * 3});
   cv::Mat bgr;
   cv::cvtColor(rgb, bgr, cv::COLOR_RGB2BGR);
   writePng(options.output, bgr);

@@ -4,9 +4,11 @@
 // frames follow the window's size.
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <functional>
+#include <optional>
 #include <iostream>
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
@@ -28,6 +30,7 @@
 #include "net/http_url.h"
 #include "net/model_stream.h"
 #include "renderer/dual_resolution_renderer.h"
+#include "renderer/frame_styler.h"
 #include "renderer/model.h"
 #include "renderer/progressive_model.h"
 
@@ -85,6 +88,11 @@ struct Options {
 };
 
 double degreesOf(Angle angle) { return angle.turns16() * 360.0 / Angle::kUnitsPerTurn; }
+// -180..180: the light's angles are signed.
+double signedDegreesOf(Angle angle) {
+  const double degrees = degreesOf(angle);
+  return degrees > 180 ? degrees - 360 : degrees;
+}
 double zoomOf(Q16 zoom) { return static_cast<double>(zoom.raw()) / Q16::kOneRaw; }
 
 class Viewer {
@@ -110,6 +118,11 @@ class Viewer {
   void streamOverlay(OverlayLines& lines);
   // Tells the stream which view to fetch for: the one on screen, as it changes.
   void followView();
+  // The style keys: the next style, or the light turned by a step (docs/styles.md).
+  void nextStyle();
+  void moveLight(int azimuth_steps, int elevation_steps);
+  void applyStyle(const StyleOptions& options);
+  void resolveStyled(const Framebuffer& frame, const FrameInfo& info, std::span<std::uint8_t> rgb);
 
   const Options options_;
   const ModelView* model_;
@@ -119,6 +132,7 @@ class Viewer {
   std::unique_ptr<DualResolutionRenderer> renderer_;
   KeyBindings keys_;
   Overlay overlay_;
+  std::optional<FrameStyler> styler_;  // none for a stream: the styles need a model with normals
   // Turns a frame into RGB888 for the screen and for `s` (default: its palette colours).
   std::function<void(const Framebuffer&, const FrameInfo&, std::span<std::uint8_t>)> resolve_;
 
@@ -167,6 +181,15 @@ ViewDrawFunction streamDrawer(net::ModelStream& stream) {
   };
 }
 
+// A model with normals is drawn with them, so that the style keys work on every frame.
+InteractiveConfig interactiveConfig(const Options& options, ViewWindow& window, const ModelView& model) {
+  InteractiveConfig config = interactiveConfig(options, window);
+  if (model.hasNormals()) config.payload = PixelPayload::kColourNormal;
+  return config;
+}
+
+constexpr int kLightStepDegrees = 15;
+
 Viewer::Viewer(const Options& options, const ModelView* model, net::ModelStream* stream)
     : options_(options),
       model_(model),
@@ -175,13 +198,13 @@ Viewer::Viewer(const Options& options, const ModelView* model, net::ModelStream*
               kMinFrameSide * options.scale, kMinFrameSide * options.scale),
       renderer_(model != nullptr
                     ? std::make_unique<DualResolutionRenderer>(*model, clock_,
-                                                               interactiveConfig(options, window_))
+                                                               interactiveConfig(options, window_, *model))
                     : std::make_unique<DualResolutionRenderer>(
                           streamDrawer(*stream), clock_, interactiveConfig(options, window_))),
       keys_(keyTable(this)),
-      resolve_([this](const Framebuffer& frame, const FrameInfo&, std::span<std::uint8_t> rgb) {
+      resolve_([this](const Framebuffer& frame, const FrameInfo& info, std::span<std::uint8_t> rgb) {
         if (model_ != nullptr) {
-          resolveToRgb(frame, *model_, kBackground, rgb);
+          resolveStyled(frame, info, rgb);
           return;
         }
         stream_->withModel([&](ProgressiveModel* chunked) {
@@ -194,6 +217,11 @@ Viewer::Viewer(const Options& options, const ModelView* model, net::ModelStream*
           }
         });
       }) {
+  if (model_ != nullptr) {
+    StyleOptions style;
+    style.background = kBackground;
+    styler_.emplace(*model_).setOptions(style);
+  }
   overlay_.add([this](OverlayLines& lines) { defaultOverlay(lines); });
   if (stream_ != nullptr) overlay_.add([this](OverlayLines& lines) { streamOverlay(lines); });
 }
@@ -238,6 +266,56 @@ void Viewer::streamOverlay(OverlayLines& lines) {
   lines.emplace_back(line);
 }
 
+void Viewer::applyStyle(const StyleOptions& options) {
+  if (const StyleError error = styler_->setOptions(options); error != StyleError::kNone) {
+    const std::string message = std::string(styleName(options.style)) + ": " + describe(error);
+    cli::printError("octopoint-view", message.c_str());
+    return;
+  }
+  resolve_again_ = true;
+}
+
+void Viewer::nextStyle() {
+  if (!styler_) {
+    cli::printError("octopoint-view", "styles: a streamed model has no normals; open a model file or an embedded model");
+    return;
+  }
+  StyleOptions options = styler_->options();
+  options.style = octopoint::nextStyle(options.style);
+  applyStyle(options);
+}
+
+void Viewer::moveLight(int azimuth_steps, int elevation_steps) {
+  if (!styler_) return;
+  StyleOptions options = styler_->options();
+  const auto step = [](Angle angle, int steps) {
+    const int degrees =
+        std::clamp(static_cast<int>(std::lround(signedDegreesOf(angle))) + steps * kLightStepDegrees, -90, 90);
+    return Angle::fromDegrees(degrees);
+  };
+  options.light.azimuth = step(options.light.azimuth, azimuth_steps);
+  options.light.elevation = step(options.light.elevation, elevation_steps);
+  applyStyle(options);
+}
+
+void Viewer::resolveStyled(const Framebuffer& frame, const FrameInfo& info, std::span<std::uint8_t> rgb) {
+  Camera camera;
+  camera.yaw = info.view.yaw;
+  camera.pitch = info.view.pitch;
+  camera.zoom = info.view.zoom;
+  camera.width = info.width;
+  camera.height = info.height;
+  FrameSetup setup;
+  const bool styled = styler_->options().style != Style::kColour && info.depth > 0 &&
+                      buildFrameSetup(camera, info.depth, kDefaultFractionBits, &setup) == CameraError::kNone;
+  if (!styled) {
+    resolveToRgb(frame, *model_, kBackground, rgb);
+    return;
+  }
+  styler_->beginFrame(setup);
+  if (styler_->resolve(frame, rgb) != StyleError::kNone) resolveToRgb(frame, *model_, kBackground, rgb);
+}
+
 KeyBindings Viewer::keyTable(Viewer* viewer) {
   KeyBindings keys;
   keys.hold({SDLK_LEFT}, "Left", "hold to turn left", NavigationKey::kYawLeft);
@@ -258,6 +336,13 @@ KeyBindings Viewer::keyTable(Viewer* viewer) {
              [viewer](std::int64_t now) { viewer->send(ViewEventKind::kReset, now); });
   keys.press({SDLK_s}, "s", "save the frame as octopoint-view-N.png in the current directory",
              [viewer](std::int64_t) { viewer->save(); });
+  keys.press({SDLK_c}, "c", "next style: colour, shaded, lines, toon, outlined (a model with normals)",
+             [viewer](std::int64_t) { viewer->nextStyle(); });
+  keys.press({SDLK_j}, "j l i k", "move the light left, right, up, down by 15 degrees (shaded, toon)",
+             [viewer](std::int64_t) { viewer->moveLight(-1, 0); }, kRepeats);
+  keys.press({SDLK_l}, "", "", [viewer](std::int64_t) { viewer->moveLight(1, 0); }, kRepeats);
+  keys.press({SDLK_i}, "", "", [viewer](std::int64_t) { viewer->moveLight(0, 1); }, kRepeats);
+  keys.press({SDLK_k}, "", "", [viewer](std::int64_t) { viewer->moveLight(0, -1); }, kRepeats);
   keys.press({SDLK_q, SDLK_ESCAPE}, "q Esc", "quit",
              [viewer](std::int64_t) { viewer->quit_ = true; });
   return keys;
@@ -392,6 +477,12 @@ void Viewer::defaultOverlay(OverlayLines& lines) const {
                 static_cast<long long>(info.render_us / 100 % 10), info.depth, info.width,
                 info.height, zoomOf(info.view.zoom), info.view.fill ? "  fill" : "");
   lines.emplace_back(line);
+  if (styler_ && styler_->options().style != Style::kColour) {
+    const StyleOptions& style = styler_->options();
+    std::snprintf(line, sizeof line, "%s  light %.0f,%.0f", std::string(styleName(style.style)).c_str(),
+                  signedDegreesOf(style.light.azimuth), signedDegreesOf(style.light.elevation));
+    lines.emplace_back(line);
+  }
   std::snprintf(line, sizeof line, "%llu fps drawn, %llu shown",
                 static_cast<unsigned long long>(drawn_rate_.perSecond()),
                 static_cast<unsigned long long>(shown_rate_.perSecond()));
@@ -415,10 +506,19 @@ void Viewer::save() {
     return;
   }
   const FrameInfo& info = shown_info_;
-  std::printf("saved %s (%s): --size %dx%d --yaw %.2f --pitch %.2f --zoom %.4f --depth %d%s\n",
+  std::string style;
+  if (styler_ && styler_->options().style != Style::kColour) {
+    char text[96];
+    std::snprintf(text, sizeof text, " --style %s --light %.0f,%.0f",
+                  std::string(styleName(styler_->options().style)).c_str(),
+                  signedDegreesOf(styler_->options().light.azimuth),
+                  signedDegreesOf(styler_->options().light.elevation));
+    style = text;
+  }
+  std::printf("saved %s (%s): --size %dx%d --yaw %.2f --pitch %.2f --zoom %.4f --depth %d%s%s\n",
               name.c_str(), info.source == FrameSource::kFine ? "H" : "L", info.width, info.height,
               degreesOf(info.view.yaw), degreesOf(info.view.pitch), zoomOf(info.view.zoom),
-              info.depth, info.view.fill ? " --fill" : "");
+              info.depth, info.view.fill ? " --fill" : "", style.c_str());
   std::fflush(stdout);
 }
 

@@ -168,7 +168,7 @@ std::vector<std::uint8_t> serializeLevels(const PreparedModel& model,
   putU16(out, chunked::kFormatVersion);
   out.push_back(static_cast<std::uint8_t>(level_count));
   out.push_back(0);                                            // flags
-  putU64(out, std::uint64_t{model.cube_edge_um} * 1'000'000);  // picometres, as format version 2
+  putU64(out, model.cube_edge_pm);  // picometres, as format version 2
   putU16(out, static_cast<std::uint32_t>(model.palette.size()));
   putU16(out, 0);  // no normals
   putU32(out, static_cast<std::uint32_t>(head_bytes));
@@ -230,7 +230,7 @@ std::vector<std::uint8_t> serializeChunkedModel(const PreparedModel& model,
   }
   std::vector<LevelVoxels> voxels;
   for (const PreparedLevel& level : model.levels) voxels.push_back(decodeLevel(level));
-  std::size_t version1 = format::kHeaderBytes + format::kLevelRowBytes * model.levels.size();
+  std::size_t version1 = format::v1::kHeaderBytes + format::kLevelRowBytes * model.levels.size();
   for (const PreparedLevel& level : model.levels)
     version1 += level.nodes.size() + level.leaves.size();
 

@@ -1,5 +1,10 @@
 #include "codegen/cube_fit.h"
 
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+
 #include "codegen/prepare_error.h"
 
 namespace octopoint::prepare {
@@ -23,6 +28,20 @@ CubeFit fitCube(const Bounds& bounds, const std::string& path) {
     fit.origin[axis] = (bounds.low[axis] + bounds.high[axis]) / 2 - fit.edge / 2;
   }
   return fit;
+}
+
+std::uint64_t cubeEdgePicometres(const CubeFit& fit, double metres_per_scan_unit, const std::string& path) {
+  const double metres = fit.edge * metres_per_scan_unit;
+  const double picometres = std::round(metres * 1e12);
+  // 2^64 as a double; every double below it converts to u64 exactly.
+  constexpr double kTwoTo64 = 18446744073709551616.0;
+  if (!(metres >= kMinCubeEdgeMetres) || !(picometres < kTwoTo64)) {
+    char edge[32];
+    std::snprintf(edge, sizeof edge, "%.3g", metres);
+    throw PrepareError(path + ": the scan spans " + edge +
+                       " m; the model format records cube edges from 1 nm to 18,446 km");
+  }
+  return static_cast<std::uint64_t>(picometres);
 }
 
 }  // namespace octopoint::prepare

@@ -47,6 +47,16 @@ struct Bounds {
 CubeFit fitCube(std::span<const std::array<float, 3>> positions, const std::string& path);
 CubeFit fitCube(const Bounds& bounds, const std::string& path);
 
+// The smallest cube edge the preparer records: below 1 nm the picometre count of the format
+// (renderer/model_format.h) would round by more than 0.05%.
+inline constexpr double kMinCubeEdgeMetres = 1e-9;
+
+// The cube's edge in picometres, as the model format stores it (a u64: up to 18,446 km, far past
+// the 2,000 km a scan within kMaxAbsCoordinate metres can span), rounded to nearest. Throws
+// PrepareError naming `path` when the edge is below kMinCubeEdgeMetres or above what a u64 holds,
+// so no scan is stored with a wrong size.
+std::uint64_t cubeEdgePicometres(const CubeFit& fit, double metres_per_scan_unit, const std::string& path);
+
 // The voxel index along one axis at `depth`, in 0..2^depth - 1 (the far face of the cube belongs to
 // the last voxel). Every path of the preparer computes keys with exactly this expression; inline,
 // and with `cells` = 2^depth computed once, because the streamed preparer calls it three times per

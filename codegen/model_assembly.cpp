@@ -77,9 +77,7 @@ PreparedModel assembleModel(std::vector<EncodedLevel> levels, const CubeFit& fit
   PreparedModel model;
   model.name = options.name;
   model.source_description = options.source_description;
-  const double edge_um = fit.edge * options.metres_per_scan_unit * 1e6;
-  model.cube_edge_um = static_cast<std::uint32_t>(
-      std::min(std::round(edge_um), double{std::numeric_limits<std::uint32_t>::max()}));
+  model.cube_edge_pm = cubeEdgePicometres(fit, options.metres_per_scan_unit, path);
   model.palette = palette.colours();
   model.sparse_depths_dropped = sparse_depths;
   for (EncodedLevel& encoded : levels) {

@@ -10,19 +10,26 @@ namespace octopoint::prepare {
 std::vector<std::uint8_t> serializeModel(const PreparedModel& model) {
   assert(!model.levels.empty() && model.levels.size() <= format::kMaxLevels);
   assert(!model.palette.empty() && model.palette.size() <= format::kPaletteEntries);
+  assert(model.normal_palette.size() <= format::kMaxNormals);
+  const bool with_normals = !model.normal_palette.empty();
   std::vector<std::uint8_t> out(format::kMagic, format::kMagic + sizeof format::kMagic);
-  putU16(out, format::kFormatVersion);
+  putU16(out, format::kVersion2);
   out.push_back(static_cast<std::uint8_t>(model.levels.size()));
-  out.push_back(0);
-  putU32(out, model.cube_edge_um);
+  out.push_back(static_cast<std::uint8_t>((with_normals ? format::v2::kFlagNormals : 0) |
+                                          (model.synthetic_colour ? format::v2::kFlagSyntheticColour : 0)));
+  putU64(out, model.cube_edge_pm);
   putU16(out, static_cast<std::uint32_t>(model.palette.size()));
-  putU16(out, 0);
+  putU16(out, static_cast<std::uint32_t>(model.normal_palette.size()));
   for (std::size_t i = 0; i < format::kPaletteEntries; ++i) {
     const Rgb8 colour = i < model.palette.size() ? model.palette[i] : Rgb8{};
     out.insert(out.end(), colour.begin(), colour.end());
   }
-  assert(out.size() == format::kHeaderBytes);
+  assert(out.size() == format::v2::kNormalPaletteOffset);
+  for (const auto& normal : model.normal_palette) {
+    for (std::int16_t component : normal) putU16(out, static_cast<std::uint16_t>(component));
+  }
   for (const PreparedLevel& level : model.levels) {
+    assert(level.normals.size() == (with_normals ? level.leaves.size() : 0));
     out.push_back(static_cast<std::uint8_t>(level.depth));
     out.insert(out.end(), 3, std::uint8_t{0});
     putU32(out, static_cast<std::uint32_t>(level.nodes.size()));
@@ -31,6 +38,7 @@ std::vector<std::uint8_t> serializeModel(const PreparedModel& model) {
   for (const PreparedLevel& level : model.levels) {
     out.insert(out.end(), level.nodes.begin(), level.nodes.end());
     out.insert(out.end(), level.leaves.begin(), level.leaves.end());
+    out.insert(out.end(), level.normals.begin(), level.normals.end());
   }
   return out;
 }

@@ -2,14 +2,24 @@
 
 #include <algorithm>
 #include <array>
+#include <chrono>
+#include <cmath>
 #include <cstdio>
+#include <optional>
 
 #include "cli/real_numbers.h"
 #include "cli/text.h"
+#include "codegen/cube_fit.h"
+#include "codegen/depth_range.h"
+#include "codegen/octree_encoder.h"
 #include "codegen/outlier_filter.h"
+#include "codegen/palette.h"
 #include "codegen/point_source.h"
 #include "codegen/prepare_error.h"
+#include "codegen/progress.h"
 #include "codegen/streamed_prepare.h"
+#include "codegen/visibility.h"
+#include "codegen/voxelizer.h"
 
 namespace octopoint::prepare {
 
@@ -53,18 +63,152 @@ CropBox parseCropBox(const std::string& flag, const std::string& text) {
   return box;
 }
 
-Scan modelPoints(const Scan& full_scan, const std::string& scan_path, const PrepareOptions& options) {
+Scan cleanScan(const Scan& full_scan, const std::string& scan_path, const PrepareOptions& options) {
   if (full_scan.positions.empty()) throw PrepareError(scan_path + ": the scan has no usable points");
   Scan scan = options.crop ? cropScan(full_scan, *options.crop, scan_path) : full_scan;
   if (options.outliers) scan = removeOutliers(scan, *options.outliers, scan_path);
-  if (options.axes == ScanAxes::kYUp) {
-    for (auto& p : scan.positions) p = {p[0], -p[1], -p[2]};  // a rotation: no mirror image
-  }
   return scan;
 }
 
+void turnAxes(Scan& scan, ScanAxes axes) {
+  if (axes != ScanAxes::kYUp) return;
+  // A rotation about x (no mirror image), of positions, normals and the sensor alike.
+  const auto turn = [](std::array<float, 3>& p) { p = {p[0], -p[1], -p[2]}; };
+  for (auto& p : scan.positions) turn(p);
+  for (auto& n : scan.normals) turn(n);
+  turn(scan.sensor_origin);
+}
+
+Scan modelPoints(const Scan& full_scan, const std::string& scan_path, const PrepareOptions& options) {
+  Scan scan = cleanScan(full_scan, scan_path, options);
+  turnAxes(scan, options.axes);
+  return scan;
+}
+
+namespace {
+
+// Rec. 601 luma in 8.8 fixed point (77 + 150 + 29 = 256).
+Rgb8 toGrey(const Rgb8& c) {
+  const auto grey = static_cast<std::uint8_t>((77 * c[0] + 150 * c[1] + 29 * c[2] + 128) >> 8);
+  return {grey, grey, grey};
+}
+
+// Keeps the voxels with visible[i] != 0, in order.
+VoxelSet keepVisible(const VoxelSet& voxels, const std::vector<std::uint8_t>& visible) {
+  VoxelSet kept;
+  kept.depth = voxels.depth;
+  for (std::size_t i = 0; i < voxels.keys.size(); ++i) {
+    if (!visible[i]) continue;
+    kept.keys.push_back(voxels.keys[i]);
+    kept.colours.push_back(voxels.colours[i]);
+    if (!voxels.normals.empty()) kept.normals.push_back(voxels.normals[i]);
+  }
+  return kept;
+}
+
+// The whole-scan pipeline, kept for models with normals: estimating a point's normal needs its
+// neighbours, which the streamed preparer's bins do not keep together.
+PreparedModel prepareWithNormals(const Scan& full_scan, const std::string& scan_path, const PrepareOptions& options) {
+  Scan scan = cleanScan(full_scan, scan_path, options);
+  const auto normals_start = std::chrono::steady_clock::now();
+  int normal_neighbours = 0;
+  if (options.normals) {
+    // In the scan's own axes (integral images need the sensor's); turning them moves no extent,
+    // so this fit's edge is the model's.
+    const CubeFit scan_fit = fitCube(scan.positions, scan_path);
+    // The finest depth the model will keep (the same rule as below, on the same voxel counts).
+    std::vector<std::size_t> counts;
+    for (int depth : options.depths) counts.push_back(occupiedVoxels(scan, scan_fit, depth));
+    const std::size_t kept = options.stop_at_sparse_depth ? denseDepthCount(counts) : counts.size();
+    const int finest = options.depths[kept - 1];
+    NormalOptions normal_options = *options.normals;
+    if (normal_options.neighbours == 0) {
+      const auto voxels = static_cast<double>(counts[kept - 1]);
+      normal_options.neighbours = neighboursForDensity(static_cast<double>(scan.positions.size()) / voxels);
+    }
+    normal_neighbours = normal_options.neighbours;
+    scan.normals = estimateNormals(scan, scan_fit.edge / std::ldexp(1.0, finest), normal_options, scan_path);
+  }
+  turnAxes(scan, options.axes);
+  const CubeFit fit = fitCube(scan.positions, scan_path);
+
+  std::vector<VoxelSet> voxel_sets;
+  Progress progress("voxelizing", options.depths.size());
+  for (int depth : options.depths) {
+    voxel_sets.push_back(voxelize(scan, fit, depth));
+    progress.update(voxel_sets.size());
+  }
+  std::vector<int> sparse_depths;
+  if (options.stop_at_sparse_depth) {
+    std::vector<std::size_t> counts;
+    for (const VoxelSet& voxels : voxel_sets) counts.push_back(voxels.keys.size());
+    const std::size_t dense = denseDepthCount(counts);
+    for (std::size_t i = dense; i < voxel_sets.size(); ++i) sparse_depths.push_back(voxel_sets[i].depth);
+    voxel_sets.resize(dense);
+  }
+  if (options.greyscale) {
+    for (VoxelSet& voxels : voxel_sets) {
+      for (Rgb8& colour : voxels.colours) colour = toGrey(colour);
+    }
+  }
+  // The palette comes from all voxels, before pruning: pruning then changes no voxel's colour
+  // index, so pruned and unpruned models draw the same pixels at every sampled view.
+  const Palette palette = Palette::build(voxel_sets.back().colours, options.palette_colours);
+
+  PreparedModel model;
+  model.name = options.name;
+  model.source_description = options.source_description;
+  model.cube_edge_pm = cubeEdgePicometres(fit, options.metres_per_scan_unit, scan_path);
+  model.palette = palette.colours();
+  model.sparse_depths_dropped = sparse_depths;
+  model.synthetic_colour = scan.shading == ScanShading::kNone && !options.greyscale;
+  std::optional<NormalPalette> normal_palette;
+  if (options.normals) {
+    const std::vector<Normal3f>& finest_normals = voxel_sets.back().normals;
+    normal_palette = NormalPalette::build(finest_normals, options.normal_palette, options.normal_palette_entries);
+    model.normal_palette = normal_palette->entries();
+    model.normal_neighbours = normal_neighbours;
+    model.normals_from_integral_images = scan.grid_width > 0;
+    double error_sum = 0;
+    for (const Normal3f& n : finest_normals) {
+      const double error = normal_palette->errorDegrees(n);
+      error_sum += error;
+      model.normal_error_max_deg = std::max(model.normal_error_max_deg, error);
+    }
+    model.normal_error_mean_deg = error_sum / static_cast<double>(finest_normals.size());
+    model.normal_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - normals_start).count();
+  }
+  for (VoxelSet& voxels : voxel_sets) {
+    PreparedLevel level;
+    level.depth = voxels.depth;
+    if (!options.visibility_cameras.empty()) {
+      const auto start = std::chrono::steady_clock::now();
+      level.voxels_before_pruning = voxels.keys.size();
+      level.bytes_before_pruning = encodeOctree(voxels.keys, voxels.depth).size() + voxels.keys.size();
+      voxels = keepVisible(voxels, visibleVoxels(voxels.keys, voxels.depth, options.visibility_cameras));
+      if (voxels.keys.empty()) {
+        throw PrepareError(scan_path + ": no voxel at depth " + std::to_string(voxels.depth) +
+                           " is visible from the scene's views");
+      }
+      level.pruning_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    }
+    level.nodes = encodeOctree(voxels.keys, voxels.depth);
+    level.leaves.reserve(voxels.colours.size());
+    for (const Rgb8& colour : voxels.colours) level.leaves.push_back(palette.indexOf(colour));
+    if (normal_palette) {
+      level.normals.reserve(voxels.normals.size());
+      for (const Normal3f& normal : voxels.normals) level.normals.push_back(normal_palette->indexOf(normal));
+    }
+    model.levels.push_back(std::move(level));
+  }
+  return model;
+}
+
+}  // namespace
+
 PreparedModel prepareModel(const Scan& full_scan, const std::string& scan_path,
                            const PrepareOptions& options, unsigned threads) {
+  if (options.normals) return prepareWithNormals(full_scan, scan_path, options);
   const Scan scan = modelPoints(full_scan, scan_path, options);
   PrepareOptions streamed = options;  // the points are cropped, cleaned and turned already
   streamed.crop.reset();

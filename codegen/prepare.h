@@ -8,6 +8,8 @@
 #include <string>
 #include <vector>
 
+#include "codegen/normal_estimation.h"
+#include "codegen/normal_palette.h"
 #include "codegen/prepared_model.h"
 #include "codegen/scan_loader.h"
 #include "renderer/camera.h"
@@ -55,6 +57,11 @@ struct PrepareOptions {
   ScanAxes axes = ScanAxes::kYDown;
   std::optional<OutlierRemoval> outliers;  // after cropping
   bool greyscale = false;                  // palette of greys (luma) instead of colours
+  // Normals (octopoint-prepare --normals): estimated per point, averaged per voxel, stored per leaf
+  // as an index into a normal palette of `normal_palette_entries` (docs/styles.md).
+  std::optional<NormalOptions> normals;
+  NormalPaletteKind normal_palette = NormalPaletteKind::kAdaptive;
+  int normal_palette_entries = kNormalPaletteEntries;
   // Visibility pruning: when not empty, a voxel is kept only if it wins the z-test at some pixel
   // for at least one of these cameras (codegen/visibility.h). Each camera's size is its frame's.
   std::vector<Camera> visibility_cameras;
@@ -71,10 +78,15 @@ CropBox parseCropBox(const std::string& flag, const std::string& text);
 // The points a model is made of: the scan cropped, cleaned of outliers and turned into the model's
 // axes, as `options` asks. prepareModel voxelizes exactly these; a reference render draws them.
 Scan modelPoints(const Scan& scan, const std::string& scan_path, const PrepareOptions& options);
+// Its two steps: cropping and outlier removal, in the scan's own axes; then turning the axes
+// (positions, normals and the sensor alike). Normals are estimated between the two.
+Scan cleanScan(const Scan& scan, const std::string& scan_path, const PrepareOptions& options);
+void turnAxes(Scan& scan, ScanAxes axes);
 
 // Throws PrepareError (naming `scan_path`) when the scan cannot be made into a model. The scan is
 // in memory already, so it is prepared in memory (codegen/streamed_prepare.h, with a budget that
 // holds it all) on `threads` threads (0: every core); the output does not depend on their number.
+// With normals (options.normals) it runs the whole-scan pipeline normal estimation was written on.
 PreparedModel prepareModel(const Scan& scan, const std::string& scan_path,
                            const PrepareOptions& options, unsigned threads = 0);
 

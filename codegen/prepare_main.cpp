@@ -73,10 +73,16 @@ same byte for byte whatever --memory and --threads (docs/preparer.md).
                         default view is the sensor's
   --scan-unit UNIT      unit of the scan's coordinates: m, cm or mm (default m); only recorded
                         as the model's metric size
+  --normals             estimate surface normals (PCL: integral images on organized scans,
+                        k-nearest-neighbour PCA otherwise; oriented toward the sensor; averaged
+                        per voxel) and store one per voxel, as an index into a palette of 255
+                        directions: one byte per voxel more. Needed by octopoint-render's
+                        shaded, lines, toon and outlined styles (docs/styles.md)
   --scene SCENE.json    (a file of at most 1 MiB) the views the app will show (docs/scene.md): yaw/pitch ranges or
                         viewpoints, zoom range, framebuffer size, depths (or "auto"), palette,
-                        crop box, outlier removal, axes. Voxels no view can see are pruned.
-                        Replaces --depths, --colours, --crop, --axes and --scan-unit
+                        crop box, outlier removal, axes, normals. Voxels no view can see are
+                        pruned. Replaces --depths, --colours, --crop, --axes, --scan-unit and
+                        --normals
   --emit strings|bytes  how the generated sources spell the arrays (default strings): string
                         literals in pieces MSVC accepts, or decimal initialiser lists; strings
                         compile ~10x faster in a quarter of the memory (docs/embedding.md)
@@ -203,6 +209,10 @@ std::optional<Arguments> parseArguments(int argc, char** argv) {
       args.model_flags.push_back(reader.name());
       constexpr double kMetres[] = {1.0, 0.01, 0.001};
       args.options.metres_per_scan_unit = kMetres[octopoint::cli::parseChoice(reader.name(), reader.value(), {"m", "cm", "mm"})];
+    } else if (reader.is("--normals")) {
+      reader.noValue();
+      args.model_flags.push_back(reader.name());
+      args.options.normals = octopoint::prepare::NormalOptions{};
     } else if (reader.isPlain() && args.scan.empty()) {
       args.scan = reader.current();
     } else if (reader.isPlain()) {
@@ -255,6 +265,7 @@ std::string applyScene(const octopoint::prepare::Scene& scene, octopoint::prepar
   options.outliers = scene.outliers;
   options.axes = scene.axes;
   options.metres_per_scan_unit = scene.metres_per_scan_unit;
+  options.normals = scene.normals;
   if (scene.prune) options.visibility_cameras = sceneCameras(scene);
   return reason;
 }
@@ -301,6 +312,10 @@ int run(int argc, char** argv) {
   PrepareOptions options = args->options;
   std::string depth_reason;
   if (!args->scene.empty()) depth_reason = applyScene(loadScene(args->scene), options);
+  if (args->chunked && options.normals) {
+    throw PrepareError("--chunked: the chunked format (version 3) stores no normals; leave out --normals (or the "
+                       "scene's \"normals\") or write a version 2 file");
+  }
   checkOutputs(*args, options);
   // The generated files name the exact command that made them, so anyone can regenerate them.
   options.source_description = std::filesystem::path(args->scan).filename().string() + " by: octopoint-prepare";
@@ -308,13 +323,15 @@ int run(int argc, char** argv) {
   PrepareSummary summary;
   PreparedModel model;
   std::string stream_line;
-  if (options.outliers) {
-    // Outlier removal looks at each point's neighbours, so the scan is loaded whole through PCL.
+  if (options.outliers || options.normals) {
+    // Outlier removal and normal estimation look at each point's neighbours, so the scan is loaded
+    // whole through PCL.
     std::string extension = std::filesystem::path(args->scan).extension().string();
     for (char& c : extension) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
     if (extension == ".las" || extension == ".laz") {
-      throw PrepareError(args->scan + ": outlier removal (the scene's \"outliers\") needs the whole scan in memory, "
-                         "which octopoint-prepare does for .pcd and .ply only");
+      const char* what = options.outliers ? "outlier removal (the scene's \"outliers\")" : "normal estimation (--normals)";
+      throw PrepareError(args->scan + ": " + what + " needs the whole scan in memory, which octopoint-prepare does "
+                         "for .pcd and .ply only");
     }
     const Scan scan = loadScan(args->scan);
     model = prepareModel(scan, args->scan, options, args->stream.threads);
@@ -344,16 +361,24 @@ int run(int argc, char** argv) {
   const double writing_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - writing).count();
 
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  std::printf("%s: %llu points (%llu dropped as non-finite), %s, %zu palette colours, cube edge %.3f m\n",
+  std::printf("%s: %llu points (%llu dropped as non-finite), %s, %zu palette colours, cube edge %.4g m\n",
               args->scan.c_str(), static_cast<unsigned long long>(summary.finite_points),
               static_cast<unsigned long long>(summary.dropped_non_finite), shadingName(summary.shading),
-              model.palette.size(), model.cube_edge_um / 1e6);
+              model.palette.size(), static_cast<double>(model.cube_edge_pm) * 1e-12);
   std::fputs(stream_line.c_str(), stdout);
   if (!depth_reason.empty()) std::printf("%s\n", depth_reason.c_str());
   if (!model.sparse_depths_dropped.empty()) {
     std::printf("  left out depths %s: finer than the scan samples densely (under %zux the voxels of the depth "
                 "before); the renderer splats the finest depth kept\n",
                 describeDepths(model.sparse_depths_dropped).c_str(), kDenseGrowth);
+  }
+  if (!model.normal_palette.empty()) {
+    std::printf("normals: %s, %zu-entry palette, stored with %.1f degrees mean and %.1f worst error (finest depth), "
+                "1 byte per voxel, %.2f s\n",
+                model.normals_from_integral_images ? "integral images over the sensor grid"
+                                                   : ("k-NN PCA, k = " + std::to_string(model.normal_neighbours)).c_str(),
+                model.normal_palette.size(), model.normal_error_mean_deg, model.normal_error_max_deg,
+                model.normal_seconds);
   }
   for (const PreparedLevel& level : model.levels) {
     if (level.voxels_before_pruning == 0) continue;
@@ -366,11 +391,13 @@ int run(int argc, char** argv) {
   }
   for (const PreparedLevel& level : model.levels) {
     const double voxels = static_cast<double>(level.leaves.size());
-    std::printf("  depth %2d: %8zu voxels, %8zu node bytes + %8zu colour bytes = %9zu bytes, "
-                "%.2f bits/point geometry, %.2f with colour\n",
-                level.depth, level.leaves.size(), level.nodes.size(), level.leaves.size(),
-                level.nodes.size() + level.leaves.size(), 8.0 * static_cast<double>(level.nodes.size()) / voxels,
-                8.0 * static_cast<double>(level.nodes.size() + level.leaves.size()) / voxels);
+    const std::size_t bytes = level.nodes.size() + level.leaves.size() + level.normals.size();
+    std::printf("  depth %2d: %8zu voxels, %8zu node bytes + %8zu colour bytes", level.depth, level.leaves.size(),
+                level.nodes.size(), level.leaves.size());
+    if (!level.normals.empty()) std::printf(" + %8zu normal bytes", level.normals.size());
+    std::printf(" = %9zu bytes, %.2f bits/point geometry, %.2f with colour%s\n", bytes,
+                8.0 * static_cast<double>(level.nodes.size()) / voxels, 8.0 * static_cast<double>(bytes) / voxels,
+                level.normals.empty() ? "" : " and normals");
   }
   if (args->chunked) {
     if (nesting_added > 0) std::printf("  nesting the pruned depths added %zu voxels\n", nesting_added);

@@ -201,10 +201,15 @@ Scan loadScan(const fs::path& path) {
 
   silencePcl();
   pcl::PCLPointCloud2 cloud;
+  Eigen::Vector4f origin = Eigen::Vector4f::Zero();
+  Eigen::Quaternionf orientation = Eigen::Quaternionf::Identity();
   int result = -1;
   try {
-    result = is_ply ? pcl::io::loadPLYFile(path.string(), cloud)
-                    : pcl::io::loadPCDFile(path.string(), cloud);
+    if (is_ply) {
+      result = pcl::io::loadPLYFile(path.string(), cloud);
+    } else {
+      result = pcl::io::loadPCDFile(path.string(), cloud, origin, orientation);
+    }
   } catch (const std::exception& e) {  // bad_alloc, or PCL's own exceptions
     fail(path, std::string("PCL's reader threw: ") + printable(e.what()), "reading the data");
   }
@@ -231,6 +236,9 @@ Scan loadScan(const fs::path& path) {
   if (scan.organized) {
     scan.grid_width = cloud.width;
     scan.grid_height = cloud.height;
+  }
+  for (int axis = 0; axis < 3; ++axis) {
+    scan.sensor_origin[static_cast<std::size_t>(axis)] = std::isfinite(origin[axis]) ? origin[axis] : 0.0f;
   }
   scan.shading = pickShading(path, cloud);
   if (scan.shading == ScanShading::kColour) {
@@ -269,10 +277,12 @@ Scan keepPoints(const Scan& scan, const std::vector<std::uint8_t>& keep) {
   kept.organized = scan.organized;
   kept.grid_width = scan.grid_width;
   kept.grid_height = scan.grid_height;
+  kept.sensor_origin = scan.sensor_origin;
   for (std::size_t i = 0; i < scan.positions.size(); ++i) {
     if (!keep[i]) continue;
     kept.positions.push_back(scan.positions[i]);
     if (!scan.colours.empty()) kept.colours.push_back(scan.colours[i]);
+    if (!scan.normals.empty()) kept.normals.push_back(scan.normals[i]);
     if (!scan.grid_index.empty()) kept.grid_index.push_back(scan.grid_index[i]);
   }
   return kept;

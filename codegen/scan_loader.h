@@ -20,20 +20,24 @@ enum class ScanShading { kColour, kIntensity, kNone };
 struct Scan {
   std::vector<std::array<float, 3>> positions;  // finite points only, in the scan's own units
   std::vector<std::array<uint8_t, 3>> colours;  // RGB per position; empty when shading == kNone
+  // Unit surface normals per position, oriented toward the sensor, NaN where none could be
+  // estimated; empty unless estimated (codegen/normal_estimation.h).
+  std::vector<std::array<float, 3>> normals;
   ScanShading shading = ScanShading::kNone;
   std::size_t points_in_file = 0;  // including the dropped ones
   std::size_t dropped_non_finite = 0;
   bool organized = false;  // height > 1 in the file
-  // An organized scan's grid (rows of a depth image) and, per position, the index
-  // row * grid_width + column it was read from, so that a surface can be built from grid
-  // neighbours (app/reference_surface.h). Both stay zero and grid_index empty when not organized.
+  // An organized scan's sensor grid (grid_width x grid_height points, row-major) and, per kept
+  // position, its index in that grid: what integral-image normal estimation walks. Empty and 0
+  // for an unorganized scan.
   std::uint32_t grid_width = 0;
   std::uint32_t grid_height = 0;
   std::vector<std::uint32_t> grid_index;
+  std::array<float, 3> sensor_origin{};  // where the sensor stood (PCD VIEWPOINT), in scan units
 };
 
-// The points of `scan` with keep[i] != 0, in order, with their colours and grid indices; the
-// file's counts and the grid's size are kept. `keep` has one entry per position.
+// The points of `scan` with keep[i] != 0, in order, with their colours, normals and grid indices; the
+// file's counts, the grid's size and the sensor origin are kept. `keep` has one entry per position.
 Scan keepPoints(const Scan& scan, const std::vector<std::uint8_t>& keep);
 
 // A finite coordinate with a larger magnitude is refused as absurd: no range scanner measures a

@@ -189,7 +189,8 @@ Scene parseScene(const std::string& text, const std::string& path) {
   const json root = parseJson(text, path);
   if (!root.is_object()) throw PrepareError(cli::displayPath(path) + ": expected a JSON object at the top level");
   reader.onlyKeys(root, "", {"yaw", "pitch", "roll", "viewpoints", "zoom", "framebuffer", "depths", "palette",
-                             "crop", "outliers", "axes", "scan_unit", "prune", "angle_step", "zoom_step"});
+                             "crop", "outliers", "axes", "scan_unit", "prune", "angle_step", "zoom_step",
+                             "normals"});
 
   Scene scene;
   if (root.contains("viewpoints")) {
@@ -264,6 +265,21 @@ Scene parseScene(const std::string& text, const std::string& path) {
   if (root.contains("prune")) {
     if (!root["prune"].is_boolean()) reader.fail("prune", "expected true or false");
     scene.prune = root["prune"].get<bool>();
+  }
+  if (root.contains("normals")) {
+    const json& normals = root["normals"];
+    if (normals.is_boolean()) {
+      if (normals.get<bool>()) scene.normals = NormalOptions{};
+    } else if (normals.is_object()) {
+      reader.onlyKeys(normals, "normals", {"neighbours"});
+      NormalOptions options;
+      if (normals.contains("neighbours")) {
+        options.neighbours = reader.integer(normals["neighbours"], "normals.neighbours", 3, kMaxNeighbours);
+      }
+      scene.normals = options;
+    } else {
+      reader.fail("normals", "expected true, false or {\"neighbours\": N}");
+    }
   }
   if (root.contains("angle_step")) scene.angle_step_deg = reader.number(root["angle_step"], "angle_step", 0.01, 90);
   if (root.contains("zoom_step")) scene.zoom_step = reader.number(root["zoom_step"], "zoom_step", 1.01, 16);

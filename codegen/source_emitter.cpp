@@ -131,7 +131,9 @@ std::string header(const PreparedModel& model) {
                                   static_cast<double>(level.leaves.size());
     out << "// depth " << level.depth << ": " << level.leaves.size() << " voxels, "
         << level.nodes.size() << " node bytes (" << static_cast<int>(bits_per_point * 100) / 100.0
-        << " bits per point of geometry) + " << level.leaves.size() << " colour bytes\n";
+        << " bits per point of geometry) + " << level.leaves.size() << " colour bytes";
+    if (!level.normals.empty()) out << " + " << level.normals.size() << " normal bytes";
+    out << "\n";
   }
   out << "extern const ::octopoint::EmbeddedModel " << model.name << ";\n\n"
       << "}  // namespace octopoint::models\n";
@@ -143,6 +145,28 @@ void appendLevelArrays(std::string& out, const PreparedModel& model, const Prepa
   appendArray(out, arrayName(model, level, "nodes"), level.nodes, options);
   out += "\n";
   appendArray(out, arrayName(model, level, "leaves"), level.leaves, options);
+  if (!level.normals.empty()) {
+    out += "\n";
+    appendArray(out, arrayName(model, level, "normals"), level.normals, options);
+  }
+}
+
+// The normal palette: Q1.14 components as signed decimal numbers, three per entry.
+void appendNormalPalette(std::ostringstream& out, const PreparedModel& model) {
+  out << "\nconst ::std::int16_t normals_[" << 3 * model.normal_palette.size() << "] = {\n    ";
+  std::size_t column = 0;
+  for (const auto& normal : model.normal_palette) {
+    for (std::int16_t component : normal) {
+      const std::string item = std::to_string(component) + ",";
+      if (column + item.size() > kLineWidth) {
+        out << "\n    ";
+        column = 0;
+      }
+      out << item;
+      column += item.size();
+    }
+  }
+  out << "\n};\n";
 }
 
 std::string descriptorSource(const PreparedModel& model, const EmitOptions& options) {
@@ -160,6 +184,10 @@ std::string descriptorSource(const PreparedModel& model, const EmitOptions& opti
         << storedSize(level.nodes.size(), options) << "];\n"
         << "extern const ::std::uint8_t " << arrayName(model, level, "leaves") << "["
         << storedSize(level.leaves.size(), options) << "];\n";
+    if (!level.normals.empty()) {
+      out << "extern const ::std::uint8_t " << arrayName(model, level, "normals") << "["
+          << storedSize(level.normals.size(), options) << "];\n";
+    }
   }
   std::vector<std::uint8_t> palette_bytes(3 * format::kPaletteEntries, 0);
   for (std::size_t i = 0; i < model.palette.size(); ++i) {
@@ -169,16 +197,26 @@ std::string descriptorSource(const PreparedModel& model, const EmitOptions& opti
   appendByteList(palette_list, palette_bytes);
   out << "\nnamespace {\n\nconst ::std::uint8_t palette_[" << palette_bytes.size() << "] = {\n"
       << palette_list;
-  out << "};\n\nconst ::octopoint::EmbeddedLevel levels_[" << model.levels.size() << "] = {\n";
+  out << "};\n";
+  const bool with_normals = !model.normal_palette.empty();
+  if (with_normals) appendNormalPalette(out, model);
+  out << "\nconst ::octopoint::EmbeddedLevel levels_[" << model.levels.size() << "] = {\n";
   for (const PreparedLevel& level : model.levels) {
     out << "    {" << level.depth << ", " << arrayName(model, level, "nodes") << ", "
         << level.nodes.size() << ", " << arrayName(model, level, "leaves") << ", "
-        << level.leaves.size() << "},\n";
+        << level.leaves.size() << ", "
+        << (with_normals ? arrayName(model, level, "normals") : std::string("nullptr")) << "},\n";
   }
+  const unsigned flags = (with_normals ? format::v2::kFlagNormals : 0u) |
+                         (model.synthetic_colour ? format::v2::kFlagSyntheticColour : 0u);
+  // Field by field as in renderer/embedded_model.h: name, format version, flags, cube edge (pm),
+  // palette count and colours, normal count and palette, levels.
   out << "};\n\n}  // namespace\n\n"
       << "extern const ::octopoint::EmbeddedModel " << model.name << " = {\n"
-      << "    \"" << model.name << "\", " << model.cube_edge_um << ", " << model.palette.size()
-      << ", palette_, " << model.levels.size() << ", levels_};\n\n"
+      << "    \"" << model.name << "\", " << format::kVersion2 << ", " << flags << ", "
+      << model.cube_edge_pm << "u, " << model.palette.size() << ", palette_, "
+      << model.normal_palette.size() << ", " << (with_normals ? "normals_" : "nullptr") << ", "
+      << model.levels.size() << ", levels_};\n\n"
       << "}  // namespace octopoint::models\n";
   return out.str();
 }

@@ -175,6 +175,7 @@ class StreamedPreparer {
     summary.spilled_bytes = spilled_bytes_.load() + spill_.bytesWritten();
     summary.threads = threads_;
     PreparedModel model = assembleModel(std::move(levels), fit_, options_, path_, threads_);
+    model.synthetic_colour = summary.shading == ScanShading::kNone && !options_.greyscale;
     clock.next();
     return model;
   }

@@ -10,6 +10,7 @@
 #include "device/allocation_counter.h"
 #include "fuzz/model_images.h"
 #include "models/registry.h"
+#include "renderer/frame_styler.h"
 #include "renderer/level_of_detail.h"
 #include "renderer/progressive_model.h"
 #include "renderer/render.h"
@@ -177,6 +178,46 @@ TEST(FrameAllocation, ProgressiveFramesAllocateNothing) {
     }
   }
   EXPECT_GT(coarser, 0);  // regions were drawn from coarser chunks
+}
+
+}  // namespace
+}  // namespace octopoint
+
+namespace octopoint {
+namespace {
+
+// Every style (renderer/frame_styler.h): clearing a frame that carries normals, decoding into it,
+// the per-frame tables (beginFrame) and the styling pass allocate nothing; the styler's tables are
+// members, built when the options are set.
+TEST(FrameAllocation, StyledFramesAllocateNothing) {
+  ModelIssue issue;
+  const auto model = ModelView::fromEmbedded(*models::defaultModel(), &issue);
+  ASSERT_TRUE(model.has_value()) << describe(issue.error);
+  ASSERT_TRUE(model->hasNormals());
+  Camera camera;
+  camera.yaw = Angle::fromDegrees(30);
+  Framebuffer frame(camera.width, camera.height);
+  std::vector<std::uint8_t> rgb(static_cast<std::size_t>(camera.width * camera.height) * 3);
+  FrameStyler styler(*model);
+  const LevelView* level = autoLevel(*model, camera);
+  ASSERT_NE(level, nullptr);
+  FrameSetup setup;
+  for (const StyleInfo& info : allStyles()) {
+    StyleOptions options;
+    options.style = info.style;
+    ASSERT_EQ(styler.setOptions(options), StyleError::kNone) << info.name;
+    const long before = heapAllocationCount();
+    const CameraError camera_error = buildFrameSetup(camera, level->depth, kDefaultFractionBits, &setup);
+    frame.clear(styler.payload());
+    const bool complete = renderLevel(defaultVariant(), *level, setup, frame);
+    styler.beginFrame(setup);
+    const StyleError style_error = styler.resolve(frame, rgb);
+    const long allocations = heapAllocationCount() - before;
+    ASSERT_EQ(camera_error, CameraError::kNone);
+    EXPECT_TRUE(complete) << info.name;
+    EXPECT_EQ(style_error, StyleError::kNone) << info.name;
+    EXPECT_EQ(allocations, 0) << info.name;
+  }
 }
 
 }  // namespace

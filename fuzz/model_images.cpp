@@ -9,6 +9,7 @@
 #include "codegen/octree_encoder.h"
 #include "renderer/crc32.h"
 #include "renderer/little_endian.h"
+#include "renderer/model_format.h"
 
 namespace octopoint::fuzzing {
 namespace {
@@ -16,10 +17,15 @@ namespace {
 prepare::PreparedModel preparedShell(const EmbeddedModel& model) {
   prepare::PreparedModel prepared;
   prepared.name = model.name;
-  prepared.cube_edge_um = model.cube_edge_um;
+  prepared.cube_edge_pm = model.cube_edge_pm;
+  prepared.synthetic_colour = (model.flags & format::v2::kFlagSyntheticColour) != 0;
   for (int i = 0; i < model.palette_count; ++i) {
     const std::uint8_t* entry = model.palette_rgb + 3 * static_cast<std::size_t>(i);
     prepared.palette.push_back({entry[0], entry[1], entry[2]});
+  }
+  for (int i = 0; i < model.normal_count; ++i) {
+    const std::int16_t* entry = model.normal_xyz + 3 * static_cast<std::size_t>(i);
+    prepared.normal_palette.push_back({entry[0], entry[1], entry[2]});
   }
   return prepared;
 }
@@ -87,8 +93,10 @@ prepare::PreparedModel preparedModel(const EmbeddedModel& model, const std::vect
   prepare::PreparedModel prepared = preparedShell(model);
   for (int i = 0; i < model.level_count; ++i) {
     const EmbeddedLevel& level = model.levels[i];
-    prepared.levels.push_back({level.depth, {level.nodes, level.nodes + level.node_bytes},
-                               {level.leaves, level.leaves + level.leaf_count}});
+    prepare::PreparedLevel copy{level.depth, {level.nodes, level.nodes + level.node_bytes},
+                                {level.leaves, level.leaves + level.leaf_count}};
+    if (level.normals != nullptr) copy.normals.assign(level.normals, level.normals + level.leaf_count);
+    prepared.levels.push_back(std::move(copy));
   }
   if (!depths.empty()) {
     const prepare::LevelVoxels finest = prepare::decodeLevel(prepared.levels.back());
@@ -98,6 +106,9 @@ prepare::PreparedModel preparedModel(const EmbeddedModel& model, const std::vect
                                              : prepare::encodeLevel(prepare::coarsen(finest, depth, prepared.palette)));
     }
     prepared.levels = std::move(levels);
+    // Coarsened levels have no normals: keep the set consistent (the chunked format carries none).
+    prepared.normal_palette.clear();
+    for (prepare::PreparedLevel& level : prepared.levels) level.normals.clear();
   }
   return prepared;
 }
@@ -118,13 +129,14 @@ std::vector<std::uint8_t> coarsenedOctImage(const EmbeddedModel& model, int dept
   KeyLister lister{finest, 0, {}};
   lister.visit(0, 0);
   const int shift = 3 * (finest.depth - depth);
-  prepare::PreparedLevel coarse{depth, {}, {}};
+  prepare::PreparedLevel coarse{depth, {}, {}, {}};
   std::vector<std::uint64_t> coarse_keys;
   for (std::size_t i = 0; i < lister.keys.size(); ++i) {
     const std::uint64_t key = lister.keys[i] >> shift;
     if (!coarse_keys.empty() && coarse_keys.back() == key) continue;
     coarse_keys.push_back(key);
     coarse.leaves.push_back(finest.leaves[i]);
+    if (finest.normals != nullptr) coarse.normals.push_back(finest.normals[i]);
   }
   coarse.nodes = prepare::encodeOctree(coarse_keys, depth);
   prepare::PreparedModel prepared = preparedShell(model);

@@ -55,7 +55,36 @@ CameraError checkCamera(const Camera& camera, int depth, int fraction_bits) {
   return CameraError::kNone;
 }
 
+// floor(sqrt(value)), bit by bit: integer only.
+std::uint64_t integerSquareRoot(std::uint64_t value) {
+  std::uint64_t root = 0;
+  std::uint64_t bit = std::uint64_t{1} << 62;
+  while (bit > value) bit >>= 2;
+  while (bit != 0) {
+    if (value >= root + bit) {
+      value -= root + bit;
+      root = (root >> 1) + bit;
+    } else {
+      root >>= 1;
+    }
+    bit >>= 2;
+  }
+  return root;
+}
+
 }  // namespace
+
+std::uint64_t voxelEdgeOnScreen(const FrameSetup& setup) {
+  if (setup.depth < 1) return 0;
+  const auto& offsets = setup.child_offset[static_cast<std::size_t>(setup.depth - 1)];
+  std::uint64_t squared = 0;
+  for (const std::int64_t component :
+       {std::int64_t{offsets[4].x} - offsets[0].x, std::int64_t{offsets[4].y} - offsets[0].y,
+        std::int64_t{offsets[4].z} - offsets[0].z}) {
+    squared += static_cast<std::uint64_t>(component * component);  // each < 2^62, sum < 2^64
+  }
+  return integerSquareRoot(squared);
+}
 
 std::optional<SplatFootprint> leafFootprint(const Camera& camera, int depth, int fraction_bits) {
   if (checkCamera(camera, depth, fraction_bits) != CameraError::kNone) return std::nullopt;

@@ -96,6 +96,11 @@ struct FrameSetup {
   }
 };
 
+// The edge of one voxel of the set-up's depth on screen, in Q(32-F).F pixels: the length of the
+// rotated displacement between a leaf parent's children 0 and 4 (one voxel along the model's x
+// axis; the length does not depend on the rotation), an exact integer square root.
+std::uint64_t voxelEdgeOnScreen(const FrameSetup& setup);
+
 // Builds the frame set-up, or refuses the camera (returns the reason) when a coordinate could
 // overflow: the worst case |root| + sum over levels of the largest child offset is checked per
 // axis, so the decoder's additions can never wrap, nor the splat's pixel range (its reach is

@@ -2,8 +2,9 @@
 // The recursive octree decoders of docs/design.md section 4, written once for any position type:
 // instantiated with int32_t positions (Q(32-F).F screen pixels) they are the fixed variants, with a
 // floating point type (only in render_float_*.cpp) the reference variants the paper compares
-// against. Every algorithm walks the same depth-first stream: a node's child-mask byte, then its
-// occupied children's subtrees in order k = 0..7; a leaf takes the next palette index.
+// against. Every algorithm walks the same depth-first stream: a node's child-mask byte, then its occupied
+// children's subtrees in order k = 0..7; a leaf takes the next payload from its cursor (the palette
+// index, and the normal index where the frame carries normals: renderer/leaf_cursor.h).
 //
 // Each algorithm polls the abort flag at tree level kAbortCheckLevel (and, once it was seen,
 // returns at every level above it), so a frame can be stopped within one level-3 subtree.
@@ -11,12 +12,15 @@
 #include <array>
 #include <atomic>
 #include <bit>
+#include <cstddef>
 #include <cstdint>
+#include <type_traits>
 #include <utility>
 
 #include "renderer/bit_scan.h"
 #include "renderer/abort_flag.h"
 #include "renderer/camera.h"
+#include "renderer/leaf_cursor.h"
 
 namespace octopoint {
 
@@ -28,11 +32,12 @@ constexpr Point3<T> operator+(const Point3<T>& a, const Point3<T>& b) {
   return {static_cast<T>(a.x + b.x), static_cast<T>(a.y + b.y), static_cast<T>(a.z + b.z)};
 }
 
-// What one walk reads and writes. `Plot` is called as plot(position, palette_index).
-template <typename T, typename Plot>
+// What one walk reads and writes. `Plot` is called as plot(position, payload), the payload being
+// what `Leaves::next()` returns.
+template <typename T, typename Plot, typename Leaves = ColourLeaves>
 struct DecodeState {
   const std::uint8_t* node;
-  const std::uint8_t* leaf;
+  Leaves leaves;
   const OffsetTable<T>& offsets;  // offsets[l][k]: from a level-l node's centre to child k's
   int depth;
   Plot plot;
@@ -48,11 +53,11 @@ struct DecodeState {
 };
 
 // Algorithm 1: recursion down to the leaf; the leaf itself plots.
-template <typename T, typename Plot>
-void visitBaseline(DecodeState<T, Plot>& s, int level, Point3<T> centre) {
+template <typename T, typename Plot, typename Leaves>
+void visitBaseline(DecodeState<T, Plot, Leaves>& s, int level, Point3<T> centre) {
   if (s.stopsAt(level)) return;
   if (level == s.depth) {
-    s.plot(centre, *s.leaf++);
+    s.plot(centre, s.leaves.next());
     return;
   }
   const std::uint8_t mask = *s.node++;
@@ -63,14 +68,14 @@ void visitBaseline(DecodeState<T, Plot>& s, int level, Point3<T> centre) {
 }
 
 // Algorithm 2: the last recursion level is eliminated; a leaf parent plots its children.
-template <typename T, typename Plot>
-void visitLeafCall(DecodeState<T, Plot>& s, int level, Point3<T> centre) {
+template <typename T, typename Plot, typename Leaves>
+void visitLeafCall(DecodeState<T, Plot, Leaves>& s, int level, Point3<T> centre) {
   if (s.stopsAt(level)) return;
   const std::uint8_t mask = *s.node++;
   const auto& offsets = s.offsets[static_cast<std::size_t>(level)];
   if (level + 1 == s.depth) {
     for (unsigned k = 0; k < 8; ++k) {
-      if (mask & (1u << k)) s.plot(centre + offsets[k], *s.leaf++);
+      if (mask & (1u << k)) s.plot(centre + offsets[k], s.leaves.next());
     }
     return;
   }
@@ -80,14 +85,14 @@ void visitLeafCall(DecodeState<T, Plot>& s, int level, Point3<T> centre) {
 }
 
 // Algorithm 2 with the 8-way child loop unrolled: eight straight tests, constant bit masks.
-template <typename T, typename Plot>
-void visitUnrolled(DecodeState<T, Plot>& s, int level, Point3<T> centre) {
+template <typename T, typename Plot, typename Leaves>
+void visitUnrolled(DecodeState<T, Plot, Leaves>& s, int level, Point3<T> centre) {
   if (s.stopsAt(level)) return;
   const std::uint8_t mask = *s.node++;
   const auto& offsets = s.offsets[static_cast<std::size_t>(level)];
   if (level + 1 == s.depth) {
     [&]<std::size_t... k>(std::index_sequence<k...>) {
-      ((mask & (1u << k) ? s.plot(centre + offsets[k], *s.leaf++) : void()), ...);
+      ((mask & (1u << k) ? s.plot(centre + offsets[k], s.leaves.next()) : void()), ...);
     }(std::make_index_sequence<8>{});
     return;
   }
@@ -98,13 +103,13 @@ void visitUnrolled(DecodeState<T, Plot>& s, int level, Point3<T> centre) {
 
 // Algorithm 2 visiting only the set bits (count-trailing-zeros), so a sparse node costs its
 // children, not eight tests.
-template <typename T, typename Plot>
-void visitSetBits(DecodeState<T, Plot>& s, int level, Point3<T> centre) {
+template <typename T, typename Plot, typename Leaves>
+void visitSetBits(DecodeState<T, Plot, Leaves>& s, int level, Point3<T> centre) {
   if (s.stopsAt(level)) return;
   unsigned mask = *s.node++;
   const auto& offsets = s.offsets[static_cast<std::size_t>(level)];
   if (level + 1 == s.depth) {
-    for (; mask != 0; mask &= mask - 1) s.plot(centre + offsets[lowestChild(mask)], *s.leaf++);
+    for (; mask != 0; mask &= mask - 1) s.plot(centre + offsets[lowestChild(mask)], s.leaves.next());
     return;
   }
   for (; mask != 0; mask &= mask - 1) {
@@ -116,12 +121,15 @@ void visitSetBits(DecodeState<T, Plot>& s, int level, Point3<T> centre) {
 // subtree still costs in a depth-first stream without an index. A loop, not a recursion: its cost
 // is a few instructions per node, and its stack one byte per level (on a microcontroller, stack is
 // RAM). pending[l] counts the nodes of relative level l still to read under the current parent.
-// The cursors are copied into locals: a byte store into `pending` may alias anything, so cursors
-// kept behind the references would be written back to memory at every step.
-inline void skipSubtree(const std::uint8_t*& node_cursor, const std::uint8_t*& leaf_cursor, int level, int depth) {
+// The node cursor is copied into a local and the leaves are counted in one: a byte store into
+// `pending` may alias anything, so cursors kept behind the references would be written back to
+// memory at every step. `leaves` is a leaf cursor (renderer/leaf_cursor.h) or a plain pointer to
+// palette indices; it moves once, by the count, at the end.
+template <typename Leaves>
+void skipSubtree(const std::uint8_t*& node_cursor, Leaves& leaves, int level, int depth) {
   const int node_levels = depth - level;  // the subtree's levels of mask bytes
   const std::uint8_t* node = node_cursor;
-  const std::uint8_t* leaf = leaf_cursor;
+  std::size_t skipped = 0;  // leaves
   std::array<std::uint8_t, kMaxRenderDepth> pending;
   int l = 0;
   pending[0] = 1;
@@ -133,15 +141,19 @@ inline void skipSubtree(const std::uint8_t*& node_cursor, const std::uint8_t*& l
       continue;
     }
     // A leaf parent, then its remaining siblings: a count in a register, not in `pending`.
-    leaf += childCount(mask);
+    skipped += static_cast<std::size_t>(childCount(mask));
     for (unsigned siblings = pending[static_cast<std::size_t>(l)]; siblings != 0; --siblings) {
-      leaf += childCount(*node++);
+      skipped += static_cast<std::size_t>(childCount(*node++));
     }
     pending[static_cast<std::size_t>(l)] = 0;
     do {
       if (l == 0) {
         node_cursor = node;
-        leaf_cursor = leaf;
+        if constexpr (std::is_pointer_v<Leaves>) {
+          leaves += skipped;
+        } else {
+          leaves.skip(skipped);
+        }
         return;
       }
       --l;

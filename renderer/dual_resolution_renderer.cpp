@@ -254,7 +254,7 @@ bool DualResolutionRenderer::draw(Slot& slot, Worker& worker, const std::atomic<
   camera.width = slot.info.width;
   camera.height = slot.info.height;
   FrameSetup setup;
-  slot.frame.clear();
+  slot.frame.clear(config_.payload);
   if (draw_view_) {
     if (!draw_view_(slot.info.source, camera, slot.frame, abort, &slot.info.depth)) return false;
     if (slot.info.view.fill && slot.info.depth > 0 &&

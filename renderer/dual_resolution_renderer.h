@@ -75,6 +75,9 @@ struct InteractiveConfig {
   // display sleep until there is something to show (the viewer posts a window event). Must not
   // call back into the renderer.
   std::function<void()> frame_ready;
+  // What the frames carry besides depth and colour: PixelPayload::kColourNormal lets the display
+  // draw them in any style (renderer/frame_styler.h); it needs a model with normals.
+  PixelPayload payload = PixelPayload::kColour;
 };
 
 enum class FrameSource : std::uint8_t { kCoarse, kFine };  // drawn by L or by H

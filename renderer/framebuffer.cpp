@@ -5,7 +5,8 @@
 
 namespace octopoint {
 
-void FrameView::clear() {
+void FrameView::clear(PixelPayload payload) {
+  payload_ = payload;
   if (drawn_.empty()) return;
   const auto columns = static_cast<std::size_t>(drawn_.x_end - drawn_.x_begin);
   std::uint32_t* const first = pixel_ + indexOf(drawn_.x_begin, drawn_.y_begin);

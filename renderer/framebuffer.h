@@ -1,7 +1,9 @@
 #pragma once
 // A frame of palette indices with its z-buffer, packed into one 32-bit word per pixel: the depth
 // key (FrameSetup::depthKey, 24 bits, smaller is nearer) in the high bits, the palette index in the
-// low 8. Nearest-wins is then one unsigned comparison of whole words, and equal depths go to the
+// low 8. A frame drawn for a style that lights the model (renderer/style.h) also carries each
+// pixel's normal index: PixelPayload::kColourNormal keeps the depth key's top 16 bits, the normal
+// index and the palette index. Nearest-wins is then one unsigned comparison of whole words, and equal depths go to the
 // smaller palette index: the frame is the same whatever order the points arrive in, which lets
 // decoders visit, batch and reorder freely and still draw bit-identical frames. One array instead
 // of two halves the memory a plotted point touches. Memory is allocated once, at construction; a
@@ -33,6 +35,12 @@ struct PixelRect {
   bool empty() const { return x_begin >= x_end || y_begin >= y_end; }
 };
 
+// What a pixel word holds besides the depth (FrameView::clear chooses it for a frame).
+enum class PixelPayload : std::uint8_t {
+  kColour,        // bits 31..8: depth key; 7..0: palette index
+  kColourNormal,  // bits 31..16: the depth key's top 16 bits; 15..8: normal index; 7..0: palette index
+};
+
 // A frame's pixels in memory someone else owns: what the decoders, the hole filler and the band
 // renderer (renderer/band_renderer.h) draw into. A band renderer points it at a caller-provided band
 // buffer, so drawing on a device needs no heap.
@@ -45,9 +53,29 @@ class FrameView {
   static constexpr std::uint32_t pack(std::uint32_t depth_key, std::uint8_t colour_index) {
     return depth_key << 8 | colour_index;
   }
+  // In a kColourNormal frame the key's low 8 bits are the normal index: within 255 of the key.
   static constexpr std::uint32_t depthKeyOf(std::uint32_t word) { return word >> 8; }
   static constexpr std::uint8_t colourIndexOf(std::uint32_t word) {
     return static_cast<std::uint8_t>(word & 0xFF);
+  }
+  // PixelPayload::kColourNormal: the depth key keeps 16 bits (one step is 256 of kColour's), the
+  // normal index takes the freed byte. The word of a leaf with `payload` = palette index | normal
+  // index << 8 is then the key's top 16 bits above the payload: one mask, no extra shift. Normal
+  // indices stop at 254 (format::kMaxNormals), so no word equals kEmpty.
+  static constexpr std::uint32_t kColourNormalKeyMask = 0xFFFF'0000;
+  static constexpr std::uint32_t packColourNormal(std::uint32_t depth_key, std::uint32_t payload) {
+    return (depth_key << 8 & kColourNormalKeyMask) | payload;
+  }
+  // The word of a leaf whose payload (palette index, and normal index << 8 where the frame
+  // carries normals) is `payload`, for a frame of payload `kPayload`.
+  template <PixelPayload kPayload>
+  static constexpr std::uint32_t packLeaf(std::uint32_t depth_key, std::uint32_t payload) {
+    if constexpr (kPayload == PixelPayload::kColour) return depth_key << 8 | payload;
+    return packColourNormal(depth_key, payload);
+  }
+  // Only meaningful in a PixelPayload::kColourNormal frame.
+  static constexpr std::uint8_t normalIndexOf(std::uint32_t word) {
+    return static_cast<std::uint8_t>(word >> 8 & 0xFF);
   }
 
   // `pixels` holds width * height words, row-major. What they hold is not known, so the whole view
@@ -57,8 +85,12 @@ class FrameView {
 
   std::int32_t width() const { return width_; }
   std::int32_t height() const { return height_; }
-  // Empties every pixel, by writing kEmpty over drawnRect() only (the rest already is).
-  void clear();
+  // Empties every pixel, by writing kEmpty over drawnRect() only (the rest already is), and sets
+  // what the next drawing writes besides the depth: a frame that is to be lit or outlined with
+  // creases (renderer/style.h) needs kColourNormal, and a model with normals
+  // (ModelView::hasNormals) to draw into it.
+  void clear(PixelPayload payload = PixelPayload::kColour);
+  PixelPayload payload() const { return payload_; }
   // The pixels written since the last clear may lie only in here; every other pixel is kEmpty.
   const PixelRect& drawnRect() const { return drawn_; }
 
@@ -79,6 +111,9 @@ class FrameView {
   std::uint32_t depthKeyAt(std::int32_t x, std::int32_t y) const { return depthKeyOf(pixelAt(x, y)); }
   std::uint8_t colourIndexAt(std::int32_t x, std::int32_t y) const {
     return colourIndexOf(pixelAt(x, y));
+  }
+  std::uint8_t normalIndexAt(std::int32_t x, std::int32_t y) const {  // kColourNormal frames
+    return normalIndexOf(pixelAt(x, y));
   }
   // Row-major packed words, kEmpty where nothing was drawn.
   std::span<const std::uint32_t> pixels() const { return {pixel_, pixelCount()}; }
@@ -106,6 +141,7 @@ class FrameView {
   std::int32_t width_;
   std::int32_t height_;
   PixelRect drawn_;  // see drawnRect(); empty: the whole frame is kEmpty
+  PixelPayload payload_ = PixelPayload::kColour;
 };
 
 // Sets `count` words to `value`: a frame's clear, also on bare metal (where memset is a byte loop).

@@ -38,12 +38,14 @@ struct PlotTarget {
   int depth_shift;
 };
 
-template <bool kChecked>
+template <bool kChecked, PixelPayload kPayload = PixelPayload::kColour>
 struct FixedPlot : PlotTarget {
   using PlotTarget::PlotTarget;
+  explicit FixedPlot(const PlotTarget& target) : PlotTarget(target) {}
 
-  // `p` in Q(32-F).F screen pixels; the pixel is p >> F (floor).
-  void operator()(const Vec3& p, std::uint8_t palette_index) const {
+  // `p` in Q(32-F).F screen pixels; the pixel is p >> F (floor). `payload`: the palette index
+  // (and normal index << 8 for kColourNormal), as the leaf cursor gives it.
+  void operator()(const Vec3& p, std::uint32_t payload) const {
     const std::int32_t x = p.x >> fraction_bits;
     const std::int32_t y = p.y >> fraction_bits;
     if constexpr (kChecked) {
@@ -56,7 +58,7 @@ struct FixedPlot : PlotTarget {
     }
     const std::size_t at = static_cast<std::size_t>(y) * static_cast<std::size_t>(width) +
                            static_cast<std::size_t>(x);
-    const std::uint32_t word = Framebuffer::pack(depthKey(p.z), palette_index);
+    const std::uint32_t word = Framebuffer::packLeaf<kPayload>(depthKey(p.z), payload);
     if (word < pixel[at]) pixel[at] = word;
   }
 };

@@ -9,23 +9,6 @@ namespace {
 
 constexpr std::uint32_t kEmpty = Framebuffer::kEmpty;
 
-// floor(sqrt(value)), bit by bit: integer only.
-std::uint64_t integerSquareRoot(std::uint64_t value) {
-  std::uint64_t root = 0;
-  std::uint64_t bit = std::uint64_t{1} << 62;
-  while (bit > value) bit >>= 2;
-  while (bit != 0) {
-    if (value >= root + bit) {
-      value -= root + bit;
-      root = (root >> 1) + bit;
-    } else {
-      root >>= 1;
-    }
-    bit >>= 2;
-  }
-  return root;
-}
-
 // Two covered pixels (packed words) whose depth keys are at most `limit` apart: a surface, not a
 // step.
 bool bridgeable(std::uint32_t a, std::uint32_t b, std::uint32_t limit) {
@@ -45,15 +28,7 @@ std::uint32_t bridgeDepthLimit(const FrameSetup& setup) {
   if (setup.depth < 1 || setup.depth > kMaxRenderDepth || setup.depth_shift < 0 || setup.depth_shift > 63) {
     return 0;  // not a set-up buildFrameSetup makes: bridge nothing
   }
-  // Children 4 and 0 of a leaf-parent differ by one voxel edge along the model's x axis, rotated.
-  const auto& offsets = setup.child_offset[static_cast<std::size_t>(setup.depth - 1)];
-  std::uint64_t squared = 0;
-  for (const std::int64_t component :
-       {std::int64_t{offsets[4].x} - offsets[0].x, std::int64_t{offsets[4].y} - offsets[0].y,
-        std::int64_t{offsets[4].z} - offsets[0].z}) {
-    squared += static_cast<std::uint64_t>(component * component);  // each < 2^62, sum < 2^64
-  }
-  const std::uint64_t edge = integerSquareRoot(squared);  // Q(32-F).F screen pixels
+  const std::uint64_t edge = voxelEdgeOnScreen(setup);  // Q(32-F).F screen pixels
   // In depth-key units (FrameSetup::depthKey): keys are depths shifted right by depth_shift.
   const std::uint64_t limit = (edge * static_cast<std::uint64_t>(kBridgeDepthVoxelEdges)) >> setup.depth_shift;
   return static_cast<std::uint32_t>(std::min<std::uint64_t>(limit, Framebuffer::kMaxDepthKey));

@@ -3,26 +3,14 @@
 #include <bit>
 #include <cstring>
 
+#include "renderer/model_bytes.h"
+
 namespace octopoint {
-namespace {
 
-std::uint32_t readU32(const std::uint8_t* p) {
-  return static_cast<std::uint32_t>(p[0]) | static_cast<std::uint32_t>(p[1]) << 8 |
-         static_cast<std::uint32_t>(p[2]) << 16 | static_cast<std::uint32_t>(p[3]) << 24;
-}
-
-std::uint16_t readU16(const std::uint8_t* p) {
-  return static_cast<std::uint16_t>(p[0] | p[1] << 8);
-}
-
-// A problem of the file's header or level table: its offset is in the file.
-bool fail(ModelIssue* issue, ModelError error, std::size_t offset, int depth = 0) {
-  if (issue != nullptr) *issue = ModelIssue{error, offset, depth, true};
-  return false;
-}
-
-
-}  // namespace
+using model_bytes::fail;
+using model_bytes::readI16;
+using model_bytes::readU16;
+using model_bytes::readU32;
 
 const char* describe(ModelError error) {
   switch (error) {
@@ -43,6 +31,9 @@ const char* describe(ModelError error) {
     case ModelError::kLeafCountMismatch: return "leaf count does not match the tree";
     case ModelError::kLeafOutsidePalette: return "leaf colour index outside the palette";
     case ModelError::kImplausibleLevelSize: return "node bytes and leaf count impossible for the depth";
+    case ModelError::kBadNormalCount: return "bad normal count";
+    case ModelError::kBadNormalVector: return "normal palette entry is not a unit vector";
+    case ModelError::kNormalOutsidePalette: return "leaf normal index outside the normal palette";
   }
   return "unknown error";
 }
@@ -65,7 +56,7 @@ bool plausibleLevelSize(int depth, std::uint64_t nodes, std::uint64_t leaves) {
   return true;
 }
 
-ModelIssue validateLevelStream(const LevelView& level, int palette_count) {
+ModelIssue validateLevelStream(const LevelView& level, int palette_count, int normal_count) {
   const int depth = level.depth;
   if (depth < 1 || depth > format::kMaxDepth) return {ModelError::kBadDepth, 0, depth};
   if (level.nodes.empty() || level.leaves.empty()) return {ModelError::kEmptyLevel, 0, depth};
@@ -105,6 +96,16 @@ ModelIssue validateLevelStream(const LevelView& level, int palette_count) {
   for (std::size_t i = 0; i < level.leaves.size(); ++i) {
     if (level.leaves[i] >= palette_count) return {ModelError::kLeafOutsidePalette, i, depth};
   }
+  if (normal_count == 0) {
+    if (!level.normals.empty()) return {ModelError::kBadNormalCount, 0, depth};
+    return {};
+  }
+  if (level.normals.size() != level.leaves.size()) {
+    return {ModelError::kLeafCountMismatch, level.normals.size(), depth};
+  }
+  for (std::size_t i = 0; i < level.normals.size(); ++i) {
+    if (level.normals[i] >= normal_count) return {ModelError::kNormalOutsidePalette, i, depth};
+  }
   return {};
 }
 
@@ -112,8 +113,9 @@ namespace {
 
 // Where level `index`'s problem lies in a whole model image starting at `file`: in its node
 // stream, its leaves, or its row of the level table (depth, then node bytes, then leaf count).
-std::size_t fileOffsetOf(const ModelIssue& issue, const LevelView& level, int index, const std::uint8_t* file) {
-  const std::size_t row = format::kHeaderBytes + format::kLevelRowBytes * static_cast<std::size_t>(index);
+std::size_t fileOffsetOf(const ModelIssue& issue, const LevelView& level, int index, const std::uint8_t* file,
+                         std::size_t table_at) {
+  const std::size_t row = table_at + format::kLevelRowBytes * static_cast<std::size_t>(index);
   switch (issue.error) {
     case ModelError::kEmptyNode:
     case ModelError::kStreamTruncated:
@@ -121,6 +123,8 @@ std::size_t fileOffsetOf(const ModelIssue& issue, const LevelView& level, int in
       return static_cast<std::size_t>(level.nodes.data() - file) + issue.offset;
     case ModelError::kLeafOutsidePalette:
       return static_cast<std::size_t>(level.leaves.data() - file) + issue.offset;
+    case ModelError::kNormalOutsidePalette:
+      return static_cast<std::size_t>(level.normals.data() - file) + issue.offset;
     case ModelError::kLeafCountMismatch: return row + 8;
     case ModelError::kEmptyLevel:
     case ModelError::kImplausibleLevelSize: return row + 4;
@@ -130,7 +134,7 @@ std::size_t fileOffsetOf(const ModelIssue& issue, const LevelView& level, int in
 
 }  // namespace
 
-bool ModelView::validateLevels(ModelView& view, ModelIssue* issue, const std::uint8_t* file) {
+bool ModelView::validateLevels(ModelView& view, ModelIssue* issue, const std::uint8_t* file, std::size_t table_at) {
   int previous_depth = 0;
   for (int i = 0; i < view.level_count_; ++i) {
     const LevelView& level = view.level(i);
@@ -140,12 +144,12 @@ bool ModelView::validateLevels(ModelView& view, ModelIssue* issue, const std::ui
     } else if (level.depth <= previous_depth) {
       found = {ModelError::kDepthsNotAscending, 0, level.depth};
     } else {
-      found = validateLevelStream(level, view.palette_count_);
+      found = validateLevelStream(level, view.palette_count_, view.normal_count_);
     }
     previous_depth = level.depth;
     if (found.error != ModelError::kNone) {
       if (file != nullptr) {
-        found.offset = fileOffsetOf(found, level, i, file);
+        found.offset = fileOffsetOf(found, level, i, file, table_at);
         found.offset_in_file = true;
       }
       if (issue != nullptr) *issue = found;
@@ -155,85 +159,88 @@ bool ModelView::validateLevels(ModelView& view, ModelIssue* issue, const std::ui
   return true;
 }
 
-std::optional<ModelView> ModelView::fromBytes(std::span<const std::uint8_t> bytes,
-                                              ModelIssue* issue) {
-  if (bytes.size() < format::kHeaderBytes) {
-    fail(issue, ModelError::kTruncatedHeader, bytes.size());
-    return std::nullopt;
-  }
-  const std::uint8_t* p = bytes.data();
-  if (std::memcmp(p, format::kMagic, sizeof format::kMagic) != 0) {
-    fail(issue, ModelError::kBadMagic, 0);
-    return std::nullopt;
-  }
-  if (readU16(p + 4) != format::kFormatVersion) {
-    fail(issue, ModelError::kUnsupportedVersion, 4);
-    return std::nullopt;
-  }
-  ModelView view;
-  view.level_count_ = p[6];
-  if (view.level_count_ < 1 || view.level_count_ > format::kMaxLevels) {
-    fail(issue, ModelError::kBadLevelCount, 6);
-    return std::nullopt;
-  }
-  if (p[7] != 0 || readU16(p + 14) != 0) {
-    fail(issue, ModelError::kBadReservedField, p[7] != 0 ? 7 : 14);
-    return std::nullopt;
-  }
-  view.cube_edge_um_ = readU32(p + 8);
-  view.palette_count_ = readU16(p + 12);
-  if (view.palette_count_ < 1 || view.palette_count_ > format::kPaletteEntries) {
-    fail(issue, ModelError::kBadPaletteCount, 12);
-    return std::nullopt;
-  }
-  view.palette_rgb_ = p + format::kPaletteOffset;
-  // Entries past the count are reserved: zero, so that a later version may give them a meaning.
-  for (std::size_t at = format::kPaletteOffset + 3 * static_cast<std::size_t>(view.palette_count_);
-       at < format::kHeaderBytes; ++at) {
-    if (p[at] != 0) {
-      fail(issue, ModelError::kBadReservedField, at);
-      return std::nullopt;
+bool ModelView::validateNormalPalette(const ModelView& view, ModelIssue* issue, std::size_t offset) {
+  constexpr std::int64_t kOneSquared = std::int64_t{format::kNormalOne} * format::kNormalOne;
+  for (int i = 0; i < view.normal_count_; ++i) {
+    const NormalQ14 n = view.normal(i);
+    const std::int64_t squared = std::int64_t{n.x} * n.x + std::int64_t{n.y} * n.y + std::int64_t{n.z} * n.z;
+    if (squared < kOneSquared - format::kNormalLengthTolerance ||
+        squared > kOneSquared + format::kNormalLengthTolerance) {
+      return fail(issue, ModelError::kBadNormalVector,
+                  offset + format::v2::kNormalEntryBytes * static_cast<std::size_t>(i));
     }
   }
+  return true;
+}
 
-  const std::size_t table_end =
-      format::kHeaderBytes + format::kLevelRowBytes * static_cast<std::size_t>(view.level_count_);
-  if (bytes.size() < table_end) {
-    fail(issue, ModelError::kTruncatedHeader, bytes.size());
-    return std::nullopt;
-  }
-  // Sizes are added in 64 bits: two u32 counts per level cannot overflow it, so a hostile
+bool ModelView::readLevels(std::span<const std::uint8_t> bytes, std::size_t table_at, ModelView& view,
+                           ModelIssue* issue) {
+  const std::uint8_t* p = bytes.data();
+  const std::size_t table_end = table_at + format::kLevelRowBytes * static_cast<std::size_t>(view.level_count_);
+  if (bytes.size() < table_end) return fail(issue, ModelError::kTruncatedHeader, bytes.size());
+  const bool with_normals = view.normal_count_ > 0;
+  // Sizes are added in 64 bits: three u32 counts per level cannot overflow it, so a hostile
   // header cannot wrap the sum around to the real length.
   std::uint64_t data_at = table_end;
   for (int i = 0; i < view.level_count_; ++i) {
-    const std::uint8_t* row = p + format::kHeaderBytes + format::kLevelRowBytes * static_cast<std::size_t>(i);
+    const std::uint8_t* row = p + table_at + format::kLevelRowBytes * static_cast<std::size_t>(i);
     if (row[1] != 0 || row[2] != 0 || row[3] != 0) {
-      fail(issue, ModelError::kBadReservedField, static_cast<std::size_t>(row - p) + 1);
-      return std::nullopt;
+      return fail(issue, ModelError::kBadReservedField, static_cast<std::size_t>(row - p) + 1);
     }
     const std::uint64_t node_bytes = readU32(row + 4);
     const std::uint64_t leaf_count = readU32(row + 8);
-    if (data_at + node_bytes + leaf_count > bytes.size()) {
-      fail(issue, ModelError::kSizeMismatch, bytes.size(), row[0]);
-      return std::nullopt;
+    const std::uint64_t normal_bytes = with_normals ? leaf_count : 0;
+    if (data_at + node_bytes + leaf_count + normal_bytes > bytes.size()) {
+      return fail(issue, ModelError::kSizeMismatch, bytes.size(), row[0]);
     }
     LevelView& level = view.levels_[static_cast<std::size_t>(i)];
+    const auto at = [&](std::uint64_t offset, std::uint64_t size) {
+      return bytes.subspan(static_cast<std::size_t>(offset), static_cast<std::size_t>(size));
+    };
     level.depth = row[0];
-    level.nodes = bytes.subspan(static_cast<std::size_t>(data_at), static_cast<std::size_t>(node_bytes));
-    level.leaves = bytes.subspan(static_cast<std::size_t>(data_at + node_bytes),
-                                 static_cast<std::size_t>(leaf_count));
-    data_at += node_bytes + leaf_count;
+    level.nodes = at(data_at, node_bytes);
+    level.leaves = at(data_at + node_bytes, leaf_count);
+    level.normals = at(data_at + node_bytes + leaf_count, normal_bytes);
+    data_at += node_bytes + leaf_count + normal_bytes;
   }
-  if (data_at != bytes.size()) {
-    fail(issue, ModelError::kSizeMismatch, static_cast<std::size_t>(data_at));
+  if (data_at != bytes.size()) return fail(issue, ModelError::kSizeMismatch, static_cast<std::size_t>(data_at));
+  return true;
+}
+
+std::optional<ModelView> ModelView::fromBytes(std::span<const std::uint8_t> bytes, ModelIssue* issue) {
+  // Magic and version first: they decide how every other byte is read.
+  if (bytes.size() < 6) {
+    fail(issue, ModelError::kTruncatedHeader, bytes.size());
     return std::nullopt;
   }
-  if (!validateLevels(view, issue, p)) return std::nullopt;
+  if (std::memcmp(bytes.data(), format::kMagic, sizeof format::kMagic) != 0) {
+    fail(issue, ModelError::kBadMagic, 0);
+    return std::nullopt;
+  }
+  ModelView view;
+  std::size_t table_at = 0;
+  switch (readU16(bytes.data() + 4)) {
+    case format::kVersion1: table_at = readHeaderV1(bytes, view, issue); break;
+    case format::kVersion2: table_at = readHeaderV2(bytes, view, issue); break;
+    default: fail(issue, ModelError::kUnsupportedVersion, 4); return std::nullopt;
+  }
+  if (table_at == 0 || !readLevels(bytes, table_at, view, issue) ||
+      !validateLevels(view, issue, bytes.data(), table_at)) {
+    return std::nullopt;
+  }
   if (issue != nullptr) *issue = {};
   return view;
 }
 
 std::optional<ModelView> ModelView::fromEmbedded(const EmbeddedModel& model, ModelIssue* issue) {
+  if (model.format_version != format::kVersion2) {
+    fail(issue, ModelError::kUnsupportedVersion, 0);
+    return std::nullopt;
+  }
+  if ((model.flags & ~format::v2::kKnownFlags) != 0) {
+    fail(issue, ModelError::kBadReservedField, 0);
+    return std::nullopt;
+  }
   if (model.level_count < 1 || model.level_count > format::kMaxLevels || model.levels == nullptr) {
     fail(issue, ModelError::kBadLevelCount, 0);
     return std::nullopt;
@@ -243,21 +250,35 @@ std::optional<ModelView> ModelView::fromEmbedded(const EmbeddedModel& model, Mod
     fail(issue, ModelError::kBadPaletteCount, 0);
     return std::nullopt;
   }
+  const bool with_normals = (model.flags & format::v2::kFlagNormals) != 0;
+  if (with_normals != (model.normal_count > 0) || model.normal_count > format::kMaxNormals ||
+      with_normals != (model.normal_xyz != nullptr)) {
+    fail(issue, ModelError::kBadNormalCount, 0);
+    return std::nullopt;
+  }
   ModelView view;
-  view.cube_edge_um_ = model.cube_edge_um;
+  view.format_version_ = model.format_version;
+  view.cube_edge_pm_ = model.cube_edge_pm;
   view.palette_count_ = model.palette_count;
   view.palette_rgb_ = model.palette_rgb;
+  view.colour_is_synthetic_ = (model.flags & format::v2::kFlagSyntheticColour) != 0;
+  view.normal_count_ = model.normal_count;
+  view.normal_values_ = model.normal_xyz;
+  if (!validateNormalPalette(view, issue, 0)) return std::nullopt;
   view.level_count_ = model.level_count;
   for (int i = 0; i < view.level_count_; ++i) {
     const EmbeddedLevel& source = model.levels[i];
-    if (source.nodes == nullptr || source.leaves == nullptr) {
+    if (source.nodes == nullptr || source.leaves == nullptr || with_normals != (source.normals != nullptr)) {
       fail(issue, ModelError::kEmptyLevel, 0, source.depth);
       return std::nullopt;
     }
     view.levels_[static_cast<std::size_t>(i)] = LevelView{
-        source.depth, {source.nodes, source.node_bytes}, {source.leaves, source.leaf_count}};
+        source.depth,
+        {source.nodes, source.node_bytes},
+        {source.leaves, source.leaf_count},
+        with_normals ? std::span<const std::uint8_t>{source.normals, source.leaf_count} : std::span<const std::uint8_t>{}};
   }
-  if (!validateLevels(view, issue, nullptr)) return std::nullopt;
+  if (!validateLevels(view, issue, nullptr, 0)) return std::nullopt;
   if (issue != nullptr) *issue = {};
   return view;
 }
@@ -265,6 +286,13 @@ std::optional<ModelView> ModelView::fromEmbedded(const EmbeddedModel& model, Mod
 Rgb ModelView::paletteColour(int index) const {
   const std::uint8_t* entry = palette_rgb_ + 3 * static_cast<std::size_t>(index);
   return {entry[0], entry[1], entry[2]};
+}
+
+NormalQ14 ModelView::normal(int index) const {
+  const auto at = 3 * static_cast<std::size_t>(index);
+  if (normal_values_ != nullptr) return {normal_values_[at], normal_values_[at + 1], normal_values_[at + 2]};
+  const std::uint8_t* entry = normal_bytes_ + 2 * at;
+  return {readI16(entry), readI16(entry + 2), readI16(entry + 4)};
 }
 
 const LevelView* ModelView::levelOfDepth(int depth) const {

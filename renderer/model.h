@@ -33,6 +33,9 @@ enum class ModelError : std::uint8_t {
   kLeafCountMismatch,    // the tree has a different number of leaves than declared
   kLeafOutsidePalette,   // a leaf names a colour past the palette count
   kImplausibleLevelSize, // node bytes and leaf count no tree of that depth can have
+  kBadNormalCount,       // normals flagged without entries, entries without the flag, or > 255
+  kBadNormalVector,      // a normal palette entry that is not a unit vector in Q1.14
+  kNormalOutsidePalette, // a leaf names a normal past the normal palette count
 };
 
 // A short, stable English description of an error, for one-line messages.
@@ -56,20 +59,36 @@ struct Rgb {
 struct LevelView {
   int depth = 0;
   std::span<const std::uint8_t> nodes;
-  std::span<const std::uint8_t> leaves;  // one palette index per leaf, in depth-first order
+  std::span<const std::uint8_t> leaves;   // one palette index per leaf, in depth-first order
+  std::span<const std::uint8_t> normals{};  // one normal index per leaf, or empty (no normals)
+};
+
+// A normal palette entry: a unit vector in Q1.14 (format::kNormalOne is 1.0), in the model's axes
+// (x right, y down, z away from the sensor).
+struct NormalQ14 {
+  std::int16_t x = 0, y = 0, z = 0;
+  bool operator==(const NormalQ14&) const = default;
 };
 
 class ModelView {
  public:
-  // Validates a model image in the format of model_format.h (a whole `.oct` file). The view points
-  // into `bytes`, which must outlive it.
+  // Validates a model image in the format of model_format.h (a whole `.oct` file, version 1 or 2).
+  // The view points into `bytes`, which must outlive it.
   static std::optional<ModelView> fromBytes(std::span<const std::uint8_t> bytes, ModelIssue* issue);
   // Validates a model compiled into the app by the preparer's generated sources.
   static std::optional<ModelView> fromEmbedded(const EmbeddedModel& model, ModelIssue* issue);
 
-  std::uint32_t cubeEdgeMicrometres() const { return cube_edge_um_; }
+  int formatVersion() const { return format_version_; }
+  // The model cube's edge in picometres (0: not recorded). Version 1 files stored micrometres.
+  std::uint64_t cubeEdgePicometres() const { return cube_edge_pm_; }
   int paletteCount() const { return palette_count_; }
   Rgb paletteColour(int index) const;
+  // True when the scan had no colour and the palette is a shade the preparer made up (a depth
+  // shade): styles that light the model then draw it grey.
+  bool colourIsSynthetic() const { return colour_is_synthetic_; }
+  bool hasNormals() const { return normal_count_ > 0; }
+  int normalCount() const { return normal_count_; }  // 0 without normals
+  NormalQ14 normal(int index) const;
   int levelCount() const { return level_count_; }
   const LevelView& level(int i) const { return levels_[static_cast<std::size_t>(i)]; }
   // The level of exactly this depth, or nullptr.
@@ -78,12 +97,27 @@ class ModelView {
 
  private:
   ModelView() = default;
-  // `file`: the start of the image for fromBytes, so that offsets are the file's; else nullptr.
-  static bool validateLevels(ModelView& view, ModelIssue* issue, const std::uint8_t* file);
+  // One header reader per format version (renderer/model_read_v1.cpp, model_read_v2.cpp): each
+  // checks its header and returns where the level table starts, or 0 after recording the issue.
+  static std::size_t readHeaderV1(std::span<const std::uint8_t> bytes, ModelView& view, ModelIssue* issue);
+  static std::size_t readHeaderV2(std::span<const std::uint8_t> bytes, ModelView& view, ModelIssue* issue);
+  // The level table and the level data that follow it (the same in both versions, with the normal
+  // indices only where the header announced normals).
+  static bool readLevels(std::span<const std::uint8_t> bytes, std::size_t table_at, ModelView& view,
+                         ModelIssue* issue);
+  // `file`: the start of the image for fromBytes (whose level table starts at `table_at`), so that
+  // offsets are the file's; else nullptr.
+  static bool validateLevels(ModelView& view, ModelIssue* issue, const std::uint8_t* file, std::size_t table_at);
+  static bool validateNormalPalette(const ModelView& view, ModelIssue* issue, std::size_t offset);
 
-  std::uint32_t cube_edge_um_ = 0;
+  int format_version_ = 0;
+  std::uint64_t cube_edge_pm_ = 0;
   int palette_count_ = 0;
   const std::uint8_t* palette_rgb_ = nullptr;  // format::kPaletteEntries x RGB888
+  bool colour_is_synthetic_ = false;
+  int normal_count_ = 0;
+  const std::uint8_t* normal_bytes_ = nullptr;   // .oct: normal_count_ x 3 little-endian i16
+  const std::int16_t* normal_values_ = nullptr;  // embedded: normal_count_ x 3 i16
   int level_count_ = 0;
   std::array<LevelView, format::kMaxLevels> levels_{};
 };
@@ -91,8 +125,10 @@ class ModelView {
 // Walks one level's stream without drawing and checks that it is exactly as long as declared:
 // first, in constant time, that the declared sizes are possible for the depth at all; then
 // no zero mask byte, no truncation, no trailing bytes, the leaf count as declared, every leaf
-// inside the palette. Exposed for tests and tools; ModelView runs it on every level.
-ModelIssue validateLevelStream(const LevelView& level, int palette_count);
+// inside the palette and, when `normal_count` > 0, one normal index per leaf, each below it (with
+// `normal_count` 0 the level must have no normals). Exposed for tests and tools; ModelView runs it
+// on every level.
+ModelIssue validateLevelStream(const LevelView& level, int palette_count, int normal_count = 0);
 
 // The constant-time part of that: whether some tree of `depth` levels has `nodes` node bytes and
 // `leaves` leaves (depth <= nodes <= depth * leaves, leaves <= 8 * nodes, and a full tree's

@@ -18,13 +18,15 @@ std::optional<ProgressiveModel> ProgressiveModel::fromHead(std::span<const std::
       static_cast<std::uint8_t>(model.head_.levels[0].depth), model.head_.base_nodes.data(),
       static_cast<std::uint32_t>(model.head_.base_nodes.size()), model.head_.base_leaves.data(),
       static_cast<std::uint32_t>(model.head_.base_leaves.size())};
-  // EmbeddedModel's metric size is in micrometres (format version 1): only what is shown, if
-  // anything.
+  // Field by field as renderer/embedded_model.h (format version 2, no normals).
   const EmbeddedModel base{"chunked model base",
-                           static_cast<std::uint32_t>(std::min<std::uint64_t>(
-                               model.head_.cube_edge_pm / 1'000'000, UINT32_MAX)),
+                           format::kVersion2,
+                           0,
+                           model.head_.cube_edge_pm,
                            static_cast<std::uint16_t>(model.head_.palette_count),
                            model.base_palette_.data(),
+                           0,
+                           nullptr,
                            1,
                            &base_level};
   ModelIssue base_issue;

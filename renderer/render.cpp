@@ -51,6 +51,8 @@ Variant defaultVariant() { return simdDecoderAvailable() ? Variant::kFixedSimd :
 
 bool drawsSplats(Variant variant) { return variant == Variant::kFixedFast || variant == Variant::kFixedSimd; }
 
+bool drawsNormals(Variant variant) { return variant != Variant::kFixedDelta; }
+
 bool renderLevel(Variant variant, const LevelView& level, const FrameSetup& setup,
                  FrameView& frame, const std::atomic<bool>* abort) {
   if (checkRender(level, setup, frame) != RenderError::kNone) return false;  // refused, nothing drawn

@@ -44,6 +44,10 @@ std::optional<Variant> variantFromName(std::string_view name);
 Variant defaultVariant();
 // Whether a variant draws the set-up's footprint splats; the others set one pixel per leaf.
 bool drawsSplats(Variant variant);
+// Whether the variant draws frames that carry normals (PixelPayload::kColourNormal, for the lit and
+// creased styles of renderer/style.h): all but fixed_delta, which draws colour frames only and
+// refuses the others (nothing drawn, false).
+bool drawsNormals(Variant variant);
 
 // Draws `level` with the set-up of one frame into `frame` (which it does not clear, so several
 // models can share a frame). The frame must have the set-up's width and height (make it with

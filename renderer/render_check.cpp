@@ -14,6 +14,7 @@ const char* describe(RenderError error) {
     case RenderError::kFrameSizeMismatch: return "framebuffer size differs from the frame set-up's";
     case RenderError::kDepthMismatch: return "level depth differs from the frame set-up's";
     case RenderError::kImplausibleLevel: return "level sizes impossible for its depth";
+    case RenderError::kLevelWithoutNormals: return "frame carries normals and the level has none";
   }
   return "unknown error";
 }
@@ -58,6 +59,9 @@ RenderError checkRender(const LevelView& level, const FrameSetup& setup, const F
   if (level.depth != setup.depth) return RenderError::kDepthMismatch;
   if (!plausibleLevelSize(level.depth, level.nodes.size(), level.leaves.size())) {
     return RenderError::kImplausibleLevel;
+  }
+  if (frame.payload() == PixelPayload::kColourNormal && level.normals.size() != level.leaves.size()) {
+    return RenderError::kLevelWithoutNormals;
   }
   return RenderError::kNone;
 }

@@ -22,6 +22,8 @@ enum class RenderError : std::uint8_t {
   kFrameSizeMismatch,  // the framebuffer's width or height differs from the set-up's
   kDepthMismatch,      // the level's depth differs from the set-up's
   kImplausibleLevel,   // no nodes or leaves, or node bytes and leaf count no tree of its depth has
+  kLevelWithoutNormals,  // the frame was cleared to carry normals (PixelPayload::kColourNormal) and
+                         // the level has none
 };
 
 // A short, stable English description, for one-line messages.

@@ -138,7 +138,7 @@ constexpr FrameSetup kRefusedSetup{};
 
 FixedDeltaDecoder::FixedDeltaDecoder(const FrameSetup& setup, FrameView& frame)
     : accepted_(checkFrameSetup(setup) == RenderError::kNone && frame.width() == setup.width &&
-                frame.height() == setup.height),
+                frame.height() == setup.height && frame.payload() == PixelPayload::kColour),
       setup_(accepted_ ? setup : kRefusedSetup),
       clip_(setup_),
       leaves_(prepareDeltaLeaves(setup_, frame.pixelData(), frame.width())),

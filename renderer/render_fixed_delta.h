@@ -8,6 +8,9 @@
 // Its preparation is an object, so that band rendering (renderer/band_renderer.h) prepares once per
 // band and then draws each subtree of the band index with a call: the clip's reach and the leaf
 // table are not computed again per subtree.
+//
+// It draws colour frames only (PixelPayload::kColour): its Thumb-1 leaf loop has no register left
+// for a second leaf cursor. A frame cleared for normals (a lit or creased style) is refused.
 
 #include <atomic>
 #include <cstdint>
@@ -23,9 +26,9 @@ namespace octopoint {
 class FixedDeltaDecoder {
  public:
   // Prepares to draw trees of `setup` (its child offsets, depth, screen and depth-key formats)
-  // into `frame`, which has the set-up's width and height. A set-up checkFrameSetup refuses, or a
-  // frame of another size, is refused here (renderer/render_check.h): every draw then returns
-  // false and draws nothing.
+  // into `frame`, which has the set-up's width and height. A set-up checkFrameSetup refuses, a
+  // frame of another size, or a frame that carries normals, is refused here
+  // (renderer/render_check.h): every draw then returns false and draws nothing.
   FixedDeltaDecoder(const FrameSetup& setup, FrameView& frame);
 
   // Draws `level` (of the set-up's depth) with its root at `root`: the whole tree when `root` is

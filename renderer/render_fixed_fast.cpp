@@ -29,9 +29,10 @@
 namespace octopoint {
 namespace {
 
+template <typename Leaves>
 struct Cursor {
   const std::uint8_t* node;
-  const std::uint8_t* leaf;
+  Leaves leaves;  // renderer/leaf_cursor.h: the palette (and normal) indices
 };
 
 struct FastFrame {
@@ -46,15 +47,16 @@ struct FastFrame {
 
 // A leaf parent at tree level `level` centred at `c` plots its children: one pixel each, or (kSplat)
 // each its footprint splat.
-template <bool kChecked, bool kSplat>
-Cursor plotChildren(const FastFrame& f, int level, Vec3 c, Cursor at) {
+template <bool kChecked, bool kSplat, typename Leaves>
+Cursor<Leaves> plotChildren(const FastFrame& f, int level, Vec3 c, Cursor<Leaves> at) {
   if constexpr (kSplat) {
     const auto& offsets = (*f.offsets)[static_cast<std::size_t>(level)];
-    const std::uint8_t* leaf = at.leaf;
-    for (unsigned mask = *at.node; mask != 0; mask &= mask - 1, ++leaf) {
-      f.splat.plot<kChecked>(c + offsets[lowestChild(mask)], *leaf);
+    Leaves leaves = at.leaves;
+    for (unsigned mask = *at.node; mask != 0; mask &= mask - 1) {
+      f.splat.plot<kChecked, Leaves::kPayload>(c + offsets[lowestChild(mask)],
+                                               leaves.next());
     }
-    return {at.node + 1, leaf};
+    return {at.node + 1, leaves};
   }
   std::uint32_t* const pixel = f.target.pixel;
   const std::int32_t width = f.target.width;
@@ -63,9 +65,10 @@ Cursor plotChildren(const FastFrame& f, int level, Vec3 c, Cursor at) {
   const std::uint32_t depth_bias = f.target.depth_bias;
   const int depth_shift = f.target.depth_shift;
   const auto& offsets = (*f.offsets)[static_cast<std::size_t>(level)];
-  const std::uint8_t* leaf = at.leaf;
-  for (unsigned mask = *at.node; mask != 0; mask &= mask - 1, ++leaf) {
+  Leaves leaves = at.leaves;
+  for (unsigned mask = *at.node; mask != 0; mask &= mask - 1) {
     const Vec3& d = offsets[lowestChild(mask)];
+    const std::uint32_t payload = leaves.next();
     const std::int32_t x = (c.x + d.x) >> shift;  // Q(32-F).F -> pixel (floor)
     const std::int32_t y = (c.y + d.y) >> shift;
     if constexpr (kChecked) {
@@ -80,13 +83,13 @@ Cursor plotChildren(const FastFrame& f, int level, Vec3 c, Cursor at) {
     const std::uint32_t key = (static_cast<std::uint32_t>(c.z + d.z) + depth_bias) >> depth_shift;
     // Branch-free z-test: whether a point is nearer is a coin toss at depth 8 (about half are),
     // and a mispredicted branch cost more than the unconditional store (bench/render_bench.cpp).
-    pixel[index] = std::min(pixel[index], Framebuffer::pack(key, *leaf));
+    pixel[index] = std::min(pixel[index], Framebuffer::packLeaf<Leaves::kPayload>(key, payload));
   }
-  return {at.node + 1, leaf};
+  return {at.node + 1, leaves};
 }
 
-template <bool kChecked, bool kSplat>
-Cursor visit(const FastFrame& f, int level, Vec3 c, Cursor at) {
+template <bool kChecked, bool kSplat, typename Leaves>
+Cursor<Leaves> visit(const FastFrame& f, int level, Vec3 c, Cursor<Leaves> at) {
   if (level <= kAbortCheckLevel && f.abort != nullptr) {
     if (!f.aborted && level == kAbortCheckLevel) f.aborted = f.abort->load(std::memory_order_relaxed);
     if (f.aborted) return at;
@@ -100,24 +103,24 @@ Cursor visit(const FastFrame& f, int level, Vec3 c, Cursor at) {
   if constexpr (kChecked) {
     switch (f.clip.classify(level, c)) {
       case Clip::kOutside:
-        skipSubtree(at.node, at.leaf, level, f.levels);
+        skipSubtree(at.node, at.leaves, level, f.levels);
         return at;
-      case Clip::kInside: return visit<false, kSplat>(f, level, c, at);
+      case Clip::kInside: return visit<false, kSplat, Leaves>(f, level, c, at);
       case Clip::kStraddling: break;
     }
   }
-  if (level + 1 == f.levels) return plotChildren<kChecked, kSplat>(f, level, c, at);
+  if (level + 1 == f.levels) return plotChildren<kChecked, kSplat, Leaves>(f, level, c, at);
   const auto& offsets = (*f.offsets)[static_cast<std::size_t>(level)];
   unsigned mask = *at.node++;
   if (!kChecked && level + 2 == f.levels) {  // leaf parents below: plot them here, no call each
     for (; mask != 0; mask &= mask - 1) {
-      at = plotChildren<false, kSplat>(f, level + 1, c + offsets[lowestChild(mask)], at);
+      at = plotChildren<false, kSplat, Leaves>(f, level + 1, c + offsets[lowestChild(mask)], at);
       if (kSplat && f.abort != nullptr && (f.aborted = f.abort->load(std::memory_order_relaxed))) return at;
     }
     return at;
   }
   for (; mask != 0; mask &= mask - 1) {
-    at = visit<kChecked, kSplat>(f, level + 1, c + offsets[lowestChild(mask)], at);
+    at = visit<kChecked, kSplat, Leaves>(f, level + 1, c + offsets[lowestChild(mask)], at);
     if (kSplat && f.aborted) return at;
   }
   return at;
@@ -131,13 +134,15 @@ bool renderFixedFast(const LevelView& level, const FrameSetup& setup, FrameView&
   const bool splat = setup.splat.active();
   FastFrame f{PlotTarget(frame, setup), setup.depth, &setup.child_offset,
               splat ? SubtreeClip(setup, setup.splat) : SubtreeClip(setup), abort, false, SplatPlot(frame, setup)};
-  const Cursor root{level.nodes.data(), level.leaves.data()};
-  if (splat) {
-    visit<true, true>(f, 0, setup.root, root);
-  } else {
-    visit<true, false>(f, 0, setup.root, root);
-  }
-  return !f.aborted;
+  return withLeafCursor(level, frame, [&]<typename Leaves>(Leaves leaves) {
+    const Cursor<Leaves> root{level.nodes.data(), leaves};
+    if (splat) {
+      visit<true, true, Leaves>(f, 0, setup.root, root);
+    } else {
+      visit<true, false, Leaves>(f, 0, setup.root, root);
+    }
+    return !f.aborted;
+  });
 }
 
 }  // namespace octopoint

@@ -139,16 +139,16 @@ void flushBatch(SimdFrame& f) {
 }
 
 // The scalar plot with bounds checks: for leaf parents on the frame's edge.
-template <bool kSplat>
-void plotChildrenChecked(const SimdFrame& f, int level, Vec3 c, unsigned mask,
-                         const std::uint8_t*& leaf) {
+template <bool kSplat, typename Leaves>
+void plotChildrenChecked(const SimdFrame& f, int level, Vec3 c, unsigned mask, Leaves& leaves) {
   const auto& offsets = (*f.offsets)[static_cast<std::size_t>(level)];
+  const FixedPlot<true, Leaves::kPayload> plot(f.target);
   for (; mask != 0; mask &= mask - 1) {
     const Vec3 p = c + offsets[static_cast<std::size_t>(std::countr_zero(mask))];
     if constexpr (kSplat) {
-      f.splat.plot<true>(p, *leaf++);
+      f.splat.plot<true, Leaves::kPayload>(p, leaves.next());
     } else {
-      f.target(p, *leaf++);
+      plot(p, leaves.next());
     }
   }
 }
@@ -173,10 +173,10 @@ __attribute__((target("avx2"))) inline __m256i biasedDepthLanes(const SimdFrame&
 
 // The leaf parents below a grandparent at `level`, centred at `c`, with child mask `mask` (already
 // read), whose subtree is on screen: reads their masks from `node` on, returns the node after.
-template <EmitMode kEmit>
+template <EmitMode kEmit, typename Leaves>
 __attribute__((target("avx2"), always_inline)) inline const std::uint8_t* emitGrandparent(
     const SimdFrame& f, const LeafLanes& lanes, int level, Vec3 c, unsigned mask,
-    const std::uint8_t* node, Emitter& out) {
+    const std::uint8_t* node, Emitter<Leaves>& out) {
   const auto l = static_cast<std::size_t>(level);
   const __m256i cx = _mm256_set1_epi32(c.x);
   const __m256i cy = _mm256_set1_epi32(c.y);
@@ -191,10 +191,9 @@ __attribute__((target("avx2"), always_inline)) inline const std::uint8_t* emitGr
   return node;
 }
 
-template <bool kChecked, EmitMode kEmit>
+template <bool kChecked, EmitMode kEmit, typename Leaves>
 __attribute__((target("avx2"))) const std::uint8_t* visit(SimdFrame& f, int level, Vec3 c,
-                                                          const std::uint8_t* node,
-                                                          const std::uint8_t*& leaf) {
+                                                          const std::uint8_t* node, Leaves& leaves) {
   constexpr bool kSplat = kEmit.emit != Emit::kPixel;
   if (level <= kAbortCheckLevel && f.abort != nullptr) {
     if (!f.aborted && level == kAbortCheckLevel)
@@ -210,10 +209,10 @@ __attribute__((target("avx2"))) const std::uint8_t* visit(SimdFrame& f, int leve
   if constexpr (kChecked) {
     switch (f.clip.classify(level, c)) {
       case Clip::kOutside:
-        skipSubtree(node, leaf, level, f.levels);
+        skipSubtree(node, leaves, level, f.levels);
         return node;
       case Clip::kInside:
-        return visit<false, kEmit>(f, level, c, node, leaf);
+        return visit<false, kEmit, Leaves>(f, level, c, node, leaves);
       case Clip::kStraddling:
         break;
     }
@@ -223,22 +222,23 @@ __attribute__((target("avx2"))) const std::uint8_t* visit(SimdFrame& f, int leve
   // Emitting several levels in one call skips the polls of the levels below: only from the poll's
   // level on, or when nobody can abort.
   const bool may_inline = level >= kAbortCheckLevel || f.abort == nullptr;
-  // The unchecked emit loads eight colour bytes per leaf parent, from its first leaf on: for the
-  // subtree's last leaf parent that ends at most 8^(levels below) bytes from `leaf`, which must
-  // still be in the stream.
+  // The unchecked emit loads eight colour (and normal) bytes per leaf parent, from its first leaf
+  // on: for the subtree's last leaf parent that ends at most 8^(levels below) bytes from the
+  // cursor, which must still be in the stream (a normal array is as long as the colours).
   // Splats: large ones emit a leaf parent per call and flush sooner (SimdFrame::splat_levels_inline,
   // splat_batch_limit), so the pixels written between two polls stay few.
   const int levels_inline = kSplat ? f.splat_levels_inline : 3;
   const int batch_limit = kSplat ? f.splat_batch_limit : kPixelBatchLimit;
   if (!kChecked && may_inline && levels_below <= levels_inline &&
-      f.leaf_end - leaf >= (std::ptrdiff_t{1} << (3 * levels_below))) {
+      f.leaf_end - leaves.colour >= (std::ptrdiff_t{1} << (3 * levels_below))) {
     if (f.batched > batch_limit) flushBatch<kEmit>(f);
     const LeafLanes lanes = leafLanes(f);
     if constexpr (kSplat) {  // positions shifted to the splat's first pixel (mod 2^32, as lanes add)
       c.x += f.splat.footprint.offset_x;
       c.y += f.splat.footprint.offset_y;
     }
-    Emitter out{f.batch_index + f.batched, f.batch_word + f.batched, leaf, f.batch_extent + f.batched};
+    Emitter<Leaves> out{f.batch_index + f.batched, f.batch_word + f.batched, leaves,
+                        f.batch_extent + f.batched};
     if (levels_below == 1) {
       const auto l = static_cast<std::size_t>(level);
       simd::emitChildren<kEmit>(
@@ -246,28 +246,28 @@ __attribute__((target("avx2"))) const std::uint8_t* visit(SimdFrame& f, int leve
           _mm256_add_epi32(_mm256_set1_epi32(c.y), f.child_lanes[1][l]),
           _mm256_add_epi32(biasedDepthLanes(f, c), f.child_lanes[2][l]), mask, out);
     } else if (levels_below == 2) {
-      node = emitGrandparent<kEmit>(f, lanes, level, c, mask, node, out);
+      node = emitGrandparent<kEmit, Leaves>(f, lanes, level, c, mask, node, out);
     } else {
       const auto& offsets = (*f.offsets)[static_cast<std::size_t>(level)];
       for (; mask != 0; mask &= mask - 1) {
         const unsigned grandparent_mask = *node++;
-        node = emitGrandparent<kEmit>(f, lanes, level + 1,
+        node = emitGrandparent<kEmit, Leaves>(f, lanes, level + 1,
                                       c + offsets[static_cast<std::size_t>(std::countr_zero(mask))],
                                       grandparent_mask, node, out);
       }
     }
     f.batched = static_cast<int>(out.index - f.batch_index);
-    leaf = out.colours;
+    leaves = out.leaves;
     return node;
   }
   if (levels_below == 1) {
-    plotChildrenChecked<kSplat>(f, level, c, mask, leaf);
+    plotChildrenChecked<kSplat, Leaves>(f, level, c, mask, leaves);
     return node;
   }
   const auto& offsets = (*f.offsets)[static_cast<std::size_t>(level)];
   for (; mask != 0; mask &= mask - 1) {
-    node = visit<kChecked, kEmit>(
-        f, level + 1, c + offsets[static_cast<std::size_t>(std::countr_zero(mask))], node, leaf);
+    node = visit<kChecked, kEmit, Leaves>(
+        f, level + 1, c + offsets[static_cast<std::size_t>(std::countr_zero(mask))], node, leaves);
     if (kSplat && f.aborted) return node;
   }
   return node;
@@ -275,19 +275,19 @@ __attribute__((target("avx2"))) const std::uint8_t* visit(SimdFrame& f, int leve
 
 // The walk for Emit::kSplatPixels: unrolled for the common small boxes (the footprints of a turned
 // model from 2x1 to 3x3 pixels), the frame's box from SimdFrame otherwise.
-void drawBoxes(SimdFrame& f, const FrameSetup& setup, const LevelView& level, std::int32_t columns,
-               std::int32_t rows) {
-  const std::uint8_t* leaf = level.leaves.data();
+template <typename Leaves>
+void drawBoxes(SimdFrame& f, const FrameSetup& setup, const LevelView& level, Leaves leaf,
+               std::int32_t columns, std::int32_t rows) {
   const std::uint8_t* const nodes = level.nodes.data();
   const auto is = [&](std::int32_t c, std::int32_t r) { return columns == c && rows == r; };
   if (is(2, 1)) {
-    visit<true, EmitMode{Emit::kSplatPixels, 2, 1}>(f, 0, setup.root, nodes, leaf);
+    visit<true, EmitMode{Emit::kSplatPixels, 2, 1}, Leaves>(f, 0, setup.root, nodes, leaf);
   } else if (is(1, 2)) {
-    visit<true, EmitMode{Emit::kSplatPixels, 1, 2}>(f, 0, setup.root, nodes, leaf);
+    visit<true, EmitMode{Emit::kSplatPixels, 1, 2}, Leaves>(f, 0, setup.root, nodes, leaf);
   } else if (is(2, 2)) {
-    visit<true, EmitMode{Emit::kSplatPixels, 2, 2}>(f, 0, setup.root, nodes, leaf);
+    visit<true, EmitMode{Emit::kSplatPixels, 2, 2}, Leaves>(f, 0, setup.root, nodes, leaf);
   } else {
-    visit<true, EmitMode{Emit::kSplatPixels}>(f, 0, setup.root, nodes, leaf);
+    visit<true, EmitMode{Emit::kSplatPixels}, Leaves>(f, 0, setup.root, nodes, leaf);
   }
 }
 
@@ -349,22 +349,23 @@ __attribute__((target("avx2"))) bool renderAvx2(const LevelView& level, const Fr
           _mm256_add_epi32(_mm256_set1_epi32(d.z), f->child_lanes[2][l + 1]);
     }
   }
-  const std::uint8_t* leaf = level.leaves.data();
-  switch (emit) {
-    case Emit::kPixel:
-      visit<true, EmitMode{Emit::kPixel}>(*f, 0, setup.root, level.nodes.data(), leaf);
-      plotBatch(*f);
-      break;
-    case Emit::kSplatPixels:
-      drawBoxes(*f, setup, level, setup.splat.columns, setup.splat.rows);
-      if (!f->aborted) plotBatch(*f);
-      break;
-    case Emit::kSplatRects:
-      visit<true, EmitMode{Emit::kSplatRects}>(*f, 0, setup.root, level.nodes.data(), leaf);
-      if (!f->aborted) plotSplatBatch(*f);
-      break;
-  }
-  return !f->aborted;
+  return withLeafCursor(level, frame, [&]<typename Leaves>(Leaves leaf) {
+    switch (emit) {
+      case Emit::kPixel:
+        visit<true, EmitMode{Emit::kPixel}, Leaves>(*f, 0, setup.root, level.nodes.data(), leaf);
+        plotBatch(*f);
+        break;
+      case Emit::kSplatPixels:
+        drawBoxes(*f, setup, level, leaf, setup.splat.columns, setup.splat.rows);
+        if (!f->aborted) plotBatch(*f);
+        break;
+      case Emit::kSplatRects:
+        visit<true, EmitMode{Emit::kSplatRects}, Leaves>(*f, 0, setup.root, level.nodes.data(), leaf);
+        if (!f->aborted) plotSplatBatch(*f);
+        break;
+    }
+    return !f->aborted;
+  });
 }
 
 }  // namespace

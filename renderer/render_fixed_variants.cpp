@@ -10,31 +10,35 @@
 namespace octopoint {
 namespace {
 
-using CheckedPlot = FixedPlot<true>;
-using InsidePlot = FixedPlot<false>;
+template <typename Leaves>
+using CheckedPlot = FixedPlot<true, Leaves::kPayload>;
+template <typename Leaves>
+using InsidePlot = FixedPlot<false, Leaves::kPayload>;
 
 template <typename Visit>
 bool renderWith(Visit visit, const LevelView& level, const FrameSetup& setup, FrameView& frame,
                 const std::atomic<bool>* abort) {
   if (checkRender(level, setup, frame) != RenderError::kNone) return false;  // refused, nothing drawn
-  DecodeState<std::int32_t, CheckedPlot> state{level.nodes.data(), level.leaves.data(),
-                                               setup.child_offset, setup.depth,
-                                               CheckedPlot(frame, setup), abort};
-  visit(state, 0, setup.root);
-  return !state.aborted;
+  return withLeafCursor(level, frame, [&]<typename Leaves>(Leaves leaves) {
+    DecodeState<std::int32_t, CheckedPlot<Leaves>, Leaves> state{
+        level.nodes.data(), leaves, setup.child_offset, setup.depth, CheckedPlot<Leaves>(frame, setup), abort};
+    visit(state, 0, setup.root);
+    return !state.aborted;
+  });
 }
 
 // Hierarchical clipping (renderer/subtree_clip.h): a subtree whose leaves all lie on screen is
 // drawn without per-pixel bounds checks; one whose leaves all lie off screen is skipped (its bytes
 // still have to be stepped over); only subtrees straddling an edge test each leaf.
+template <typename Leaves>
 class ClippedWalk {
  public:
-  ClippedWalk(const LevelView& level, const FrameSetup& setup, FrameView& frame,
+  ClippedWalk(const LevelView& level, Leaves leaves, const FrameSetup& setup, FrameView& frame,
               const std::atomic<bool>* abort)
-      : checked_{level.nodes.data(), level.leaves.data(), setup.child_offset, setup.depth,
-                 CheckedPlot(frame, setup), abort},
-        inside_{level.nodes.data(), level.leaves.data(), setup.child_offset, setup.depth,
-                InsidePlot(frame, setup), abort},
+      : checked_{level.nodes.data(), leaves, setup.child_offset, setup.depth,
+                 CheckedPlot<Leaves>(frame, setup), abort},
+        inside_{level.nodes.data(), leaves, setup.child_offset, setup.depth,
+                InsidePlot<Leaves>(frame, setup), abort},
         clip_(setup) {}
 
   bool run(const Vec3& root) {
@@ -47,7 +51,7 @@ class ClippedWalk {
     if (checked_.stopsAt(level)) return;
     const Clip clip = clip_.classify(level, centre);
     if (clip == Clip::kOutside) {
-      skipSubtree(checked_.node, checked_.leaf, level, checked_.depth);
+      skipSubtree(checked_.node, checked_.leaves, level, checked_.depth);
       return;
     }
     if (clip == Clip::kInside) {
@@ -55,11 +59,11 @@ class ClippedWalk {
       // three stores, where building a state per subtree copied its plotter (a memcpy call on
       // Thumb-1, docs/device.md).
       inside_.node = checked_.node;
-      inside_.leaf = checked_.leaf;
+      inside_.leaves = checked_.leaves;
       inside_.aborted = checked_.aborted;
       visitSetBits(inside_, level, centre);
       checked_.node = inside_.node;
-      checked_.leaf = inside_.leaf;
+      checked_.leaves = inside_.leaves;
       checked_.aborted = inside_.aborted;
       return;
     }
@@ -67,15 +71,15 @@ class ClippedWalk {
     const auto& offsets = checked_.offsets[static_cast<std::size_t>(level)];
     if (level + 1 == checked_.depth) {
       for (; mask != 0; mask &= mask - 1) {
-        checked_.plot(centre + offsets[lowestChild(mask)], *checked_.leaf++);
+        checked_.plot(centre + offsets[lowestChild(mask)], checked_.leaves.next());
       }
       return;
     }
     for (; mask != 0; mask &= mask - 1) visit(level + 1, centre + offsets[lowestChild(mask)]);
   }
 
-  DecodeState<std::int32_t, CheckedPlot> checked_;
-  DecodeState<std::int32_t, InsidePlot> inside_;
+  DecodeState<std::int32_t, CheckedPlot<Leaves>, Leaves> checked_;
+  DecodeState<std::int32_t, InsidePlot<Leaves>, Leaves> inside_;
   SubtreeClip clip_;
 };
 
@@ -104,7 +108,9 @@ bool renderFixedSetBits(const LevelView& level, const FrameSetup& setup, FrameVi
 bool renderFixedClipped(const LevelView& level, const FrameSetup& setup, FrameView& frame,
                         const std::atomic<bool>* abort) {
   if (checkRender(level, setup, frame) != RenderError::kNone) return false;  // refused, nothing drawn
-  return ClippedWalk(level, setup, frame, abort).run(setup.root);
+  return withLeafCursor(level, frame, [&]<typename Leaves>(Leaves leaves) {
+    return ClippedWalk<Leaves>(level, leaves, setup, frame, abort).run(setup.root);
+  });
 }
 
 }  // namespace octopoint

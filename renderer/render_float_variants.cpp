@@ -61,6 +61,7 @@ FloatFrame floatFrameFrom(const FrameSetup& setup) {
 
 // Pixel = floor of the position; z becomes the fixed variants' depth key (FrameSetup::depthKey),
 // clamped to the range they can produce, which rounding here may overshoot by a hair.
+template <PixelPayload kPayload>
 struct FloatPlot {
   std::uint32_t* pixel;
   std::int32_t width;
@@ -68,7 +69,7 @@ struct FloatPlot {
   float z_scale;
   float z_limit;
   const FrameSetup* setup;
-  void operator()(const Point3<float>& p, std::uint8_t palette_index) const {
+  void operator()(const Point3<float>& p, std::uint32_t payload) const {
     if (!(p.x >= 0.0f && p.y >= 0.0f)) return;
     const auto x = static_cast<std::int32_t>(p.x);
     const auto y = static_cast<std::int32_t>(p.y);
@@ -76,7 +77,7 @@ struct FloatPlot {
     const std::size_t at = static_cast<std::size_t>(y) * static_cast<std::size_t>(width) +
                            static_cast<std::size_t>(x);
     const auto z = static_cast<std::int32_t>(std::clamp(p.z * z_scale, -z_limit, z_limit));
-    const std::uint32_t word = Framebuffer::pack(setup->depthKey(z), palette_index);
+    const std::uint32_t word = Framebuffer::packLeaf<kPayload>(setup->depthKey(z), payload);
     if (word < pixel[at]) pixel[at] = word;
   }
 };
@@ -88,12 +89,14 @@ bool renderFloatWith(Visit visit, const LevelView& level, const FrameSetup& setu
   const FloatFrame float_frame = floatFrameFrom(setup);
   // The largest float not above depth_bias: its conversion to int32 stays within the bias.
   const float z_limit = std::nextafter(static_cast<float>(setup.depth_bias), 0.0f);
-  const FloatPlot plot{frame.pixelData(), frame.width(), frame.height(),
-                       std::ldexp(1.0f, setup.fraction_bits), z_limit, &setup};
-  DecodeState<float, FloatPlot> state{level.nodes.data(), level.leaves.data(), float_frame.offsets,
-                                      setup.depth, plot, abort};
-  visit(state, 0, float_frame.root);
-  return !state.aborted;
+  return withLeafCursor(level, frame, [&]<typename Leaves>(Leaves leaves) {
+    const FloatPlot<Leaves::kPayload> plot{frame.pixelData(), frame.width(), frame.height(),
+                                           std::ldexp(1.0f, setup.fraction_bits), z_limit, &setup};
+    DecodeState<float, FloatPlot<Leaves::kPayload>, Leaves> state{level.nodes.data(), leaves, float_frame.offsets,
+                                                                  setup.depth, plot, abort};
+    visit(state, 0, float_frame.root);
+    return !state.aborted;
+  });
 }
 
 }  // namespace

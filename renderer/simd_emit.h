@@ -18,6 +18,9 @@
 #include <bit>
 #include <cstdint>
 
+#include "renderer/framebuffer.h"
+#include "renderer/leaf_cursor.h"
+
 namespace octopoint::simd {
 
 // kKeep[mask]: the lanes of the set bits of `mask`, in order, then zeros: the vpermd control that
@@ -73,14 +76,38 @@ struct SplatBox {
   std::uint8_t edge[kMostBoxPixels] = {};
 };
 
-// Where the unchecked walk appends: the batch's two cursors and the next leaf's colour. Locals of
-// the caller, kept in registers: a store to the batch may alias any 32-bit field of SimdFrame.
+// Where the unchecked walk appends: the batch's two cursors and the next leaf's payload (its
+// colour, and its normal where the frame carries normals: renderer/leaf_cursor.h). Locals of the
+// caller, kept in registers: a store to the batch may alias any 32-bit field of SimdFrame.
+template <typename Leaves>
 struct Emitter {
   std::uint32_t* index;
   std::uint32_t* word;
-  const std::uint8_t* colours;
+  Leaves leaves;
   std::uint32_t* extent;  // the splat path only
 };
+
+// Eight leaves' payloads, one per lane, from the cursor (which is not advanced): the palette index,
+// and for kColourNormal the normal index << 8 (Framebuffer::packLeaf).
+__attribute__((target("avx2"), always_inline)) inline __m256i payloadLanes(const ColourLeaves& leaves) {
+  return _mm256_cvtepu8_epi32(_mm_loadl_epi64(reinterpret_cast<const __m128i*>(leaves.colour)));
+}
+__attribute__((target("avx2"), always_inline)) inline __m256i payloadLanes(const ColourNormalLeaves& leaves) {
+  const __m256i colour = _mm256_cvtepu8_epi32(_mm_loadl_epi64(reinterpret_cast<const __m128i*>(leaves.colour)));
+  const __m256i normal = _mm256_cvtepu8_epi32(_mm_loadl_epi64(reinterpret_cast<const __m128i*>(leaves.normal)));
+  return _mm256_or_si256(colour, _mm256_slli_epi32(normal, 8));
+}
+
+// Depth keys moved above a leaf's payload (Framebuffer::packLeaf): << 8, and for kColourNormal
+// only the key's top 16 bits.
+template <PixelPayload kPayload>
+__attribute__((target("avx2"), always_inline)) inline __m256i keyBits(__m256i key) {
+  const __m256i shifted = _mm256_slli_epi32(key, 8);
+  if constexpr (kPayload == PixelPayload::kColourNormal) {
+    return _mm256_and_si256(shifted, _mm256_set1_epi32(static_cast<std::int32_t>(FrameView::kColourNormalKeyMask)));
+  }
+  return shifted;
+}
 
 // The frame's formats as vectors, loaded into registers once per call.
 struct LeafLanes {
@@ -118,8 +145,9 @@ struct BoxChildren {
 // whose rectangle has it: all set children, less those one column short when the pixel is in the
 // box's last column, less those one row short when it is in its last row. Kept lanes move to the
 // front as in emitChildren: no branch on which children have it.
+template <typename Out>
 __attribute__((target("avx2"), always_inline)) inline void emitBoxPixel(
-    const BoxChildren& box, std::uint32_t offset, bool last_column, bool last_row, Emitter& out) {
+    const BoxChildren& box, std::uint32_t offset, bool last_column, bool last_row, Out& out) {
   const unsigned mask =
       box.mask & ~(last_column ? box.short_columns : 0u) & ~(last_row ? box.short_rows : 0u);
   const __m256i keep = laneControl(kKeep, mask);
@@ -134,10 +162,10 @@ __attribute__((target("avx2"), always_inline)) inline void emitBoxPixel(
 }
 
 // The same for a box known at compile time, unrolled.
-template <int kColumns, int kRows>
+template <int kColumns, int kRows, typename Out>
 __attribute__((target("avx2"), always_inline)) inline void emitBox(const LeafLanes& lanes,
                                                                    const BoxChildren& box,
-                                                                   Emitter& out) {
+                                                                   Out& out) {
   for (int r = 0; r < kRows; ++r) {
     for (int c = 0; c < kColumns; ++c) {
       emitBoxPixel(box,
@@ -149,13 +177,13 @@ __attribute__((target("avx2"), always_inline)) inline void emitBox(const LeafLan
 
 // A leaf parent whose children all land on screen, given its eight children's positions per axis
 // (x, y in Q(32-F).F, plus the splat's offsets when kSplat; z in Q(32-F).F plus the depth bias),
-// appends its set children (`mask`) to the batch, their colours being the next popcount(mask)
-// bytes at out.colours. Splats (kEmit, renderer/splat_footprint.h): x and y include the footprint's
+// appends its set children (`mask`) to the batch, their payloads being the next popcount(mask) of
+// out.leaves. Splats (kEmit, renderer/splat_footprint.h): x and y include the footprint's
 // offsets, so the index is the splat's first pixel; each point's columns and rows go to
 // out.extent (kSplatRects), or each pixel of the footprint's box becomes an entry (kSplatPixels).
-template <EmitMode kEmit>
+template <EmitMode kEmit, typename Leaves>
 __attribute__((target("avx2"), always_inline)) inline void emitChildren(
-    const LeafLanes& lanes, __m256i x, __m256i y, __m256i biased_z, unsigned mask, Emitter& out) {
+    const LeafLanes& lanes, __m256i x, __m256i y, __m256i biased_z, unsigned mask, Emitter<Leaves>& out) {
   // Pixel column and row: floor(x / 2^F); index = row * width + column (< 2^26).
   const __m256i column = _mm256_sra_epi32(x, lanes.fraction_bits);
   const __m256i row = _mm256_sra_epi32(y, lanes.fraction_bits);
@@ -164,12 +192,11 @@ __attribute__((target("avx2"), always_inline)) inline void emitChildren(
   const __m256i key = _mm256_srl_epi32(biased_z, lanes.depth_shift);
   const __m256i keep =
       _mm256_cvtepu8_epi32(_mm_loadl_epi64(reinterpret_cast<const __m128i*>(&kKeep[mask])));
-  const __m256i colour =
-      _mm256_cvtepu8_epi32(_mm_loadl_epi64(reinterpret_cast<const __m128i*>(out.colours)));
+  const __m256i colour = payloadLanes(out.leaves);
   const __m256i word =
-      _mm256_or_si256(_mm256_slli_epi32(_mm256_permutevar8x32_epi32(key, keep), 8), colour);
+      _mm256_or_si256(keyBits<Leaves::kPayload>(_mm256_permutevar8x32_epi32(key, keep)), colour);
   const int children = std::popcount(mask);
-  out.colours += children;
+  out.leaves.skip(static_cast<std::size_t>(children));
   if constexpr (kEmit.emit == Emit::kSplatPixels) {
     // A child has one column fewer than the box when first + columns - 1 > its last column,
     // (x + span) >> F (SplatFootprint); the same for rows. As bits, one per child lane.
@@ -179,7 +206,7 @@ __attribute__((target("avx2"), always_inline)) inline void emitChildren(
         _mm256_sra_epi32(_mm256_add_epi32(y, lanes.span_y), lanes.fraction_bits);
     const BoxChildren box{
         index,
-        _mm256_or_si256(_mm256_slli_epi32(key, 8),
+        _mm256_or_si256(keyBits<Leaves::kPayload>(key),
                         _mm256_permutevar8x32_epi32(colour, laneControl(kSpread, mask))),
         mask,
         lowBits(_mm256_cmpgt_epi32(_mm256_add_epi32(column, lanes.columns_less_one), last_column)),

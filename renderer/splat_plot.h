@@ -30,7 +30,7 @@ struct SplatPlot : PlotTarget {
                   static_cast<std::size_t>(setup.splat.columns)),
         end(static_cast<std::size_t>(width) * static_cast<std::size_t>(height)) {}
 
-  // Writes `word` (Framebuffer::pack) over columns [x_begin, x_end) and rows [y_begin, y_end),
+  // Writes `word` (Framebuffer::packLeaf) over columns [x_begin, x_end) and rows [y_begin, y_end),
   // clipped to the frame when kChecked.
   template <bool kChecked>
   void fill(std::int32_t x_begin, std::int32_t x_end, std::int32_t y_begin, std::int32_t y_end,
@@ -49,17 +49,17 @@ struct SplatPlot : PlotTarget {
     }
   }
 
-  // The splat of a leaf at `p` (Q(32-F).F). buildFrameSetup checked that p + offset + span fits
-  // 32 bits.
-  template <bool kChecked>
-  void plot(const Vec3& p, std::uint8_t palette_index) const {
+  // The splat of a leaf at `p` (Q(32-F).F) whose payload (renderer/leaf_cursor.h) is `payload`.
+  // buildFrameSetup checked that p + offset + span fits 32 bits.
+  template <bool kChecked, PixelPayload kPayload = PixelPayload::kColour>
+  void plot(const Vec3& p, std::uint32_t payload) const {
     const std::int32_t x = p.x + footprint.offset_x;
     const std::int32_t y = p.y + footprint.offset_y;
     const std::int32_t x_begin = x >> fraction_bits,
                        x_end = ((x + footprint.span_x) >> fraction_bits) + 1;
     const std::int32_t y_begin = y >> fraction_bits,
                        y_end = ((y + footprint.span_y) >> fraction_bits) + 1;
-    const std::uint32_t word = Framebuffer::pack(depthKey(p.z), palette_index);
+    const std::uint32_t word = Framebuffer::packLeaf<kPayload>(depthKey(p.z), payload);
     if constexpr (!kChecked) {
       const std::size_t at = static_cast<std::size_t>(y_begin) * static_cast<std::size_t>(width) +
                              static_cast<std::size_t>(x_begin);

@@ -44,7 +44,7 @@ TEST(ChunkedWriter, ASingleDepthIsLargerByItsBaseAndDirectoryOnly) {
   const Bytes image = prepare::serializeChunkedModel(prepared, {}, &layout);
   EXPECT_EQ(layout.chunks, std::vector<std::size_t>{1});  // made as few as possible
   EXPECT_GT(image.size(), version1);
-  EXPECT_LE(image.size(), version1 + layout.head_bytes - format::kHeaderBytes + 64);
+  EXPECT_LE(image.size(), version1 + layout.head_bytes - format::v1::kHeaderBytes + 64);
 }
 
 TEST(ChunkedWriter, TheBaseIsTheFinestDepthWhoseHeadFits) {

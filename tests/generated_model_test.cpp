@@ -48,7 +48,7 @@ TEST(GeneratedModel, EmbeddedSourcesDecodeToTheSameLeavesAsTheOctFile) {
   ASSERT_TRUE(embedded) << describe(issue.error);
 
   EXPECT_STREQ(models::synthetic_sphere.name, "synthetic_sphere");
-  EXPECT_EQ(embedded->cubeEdgeMicrometres(), from_file->cubeEdgeMicrometres());
+  EXPECT_EQ(embedded->cubeEdgePicometres(), from_file->cubeEdgePicometres());
   ASSERT_EQ(embedded->paletteCount(), from_file->paletteCount());
   for (int i = 0; i < embedded->paletteCount(); ++i) {
     EXPECT_EQ(embedded->paletteColour(i).g, from_file->paletteColour(i).g);

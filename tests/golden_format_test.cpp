@@ -1,4 +1,5 @@
-// Golden models: small `.oct` images written out byte by byte, frozen here. They must validate and
+// Golden models of format version 1: small `.oct` images written out byte by byte, frozen here
+// (version 2: golden_format_v2_test.cpp). They must validate and
 // decode to exactly the leaves and pixels worked out by hand below, so that any change of the
 // format (docs/format.md) breaks this file and has to be made deliberately, with a new version.
 // Nothing here is built with the library's own constants or writer: every offset and size is a
@@ -16,11 +17,14 @@
 #include "renderer/framebuffer.h"
 #include "renderer/model.h"
 #include "renderer/render.h"
+#include "tests/golden_support.h"
 
 namespace octopoint {
 namespace {
 
 using Bytes = std::vector<std::uint8_t>;
+using testing::identitySetup;
+using testing::validated;
 
 // The image of a version 1 model: the 16 header bytes, the palette entries given (the rest of the
 // 768 palette bytes are zero, up to byte 784), then the level table and the streams.
@@ -85,29 +89,6 @@ struct LeafList {
   }
 };
 
-// The validated view of a golden image; a refusal fails the test (gtest reports the exception).
-ModelView validated(const Bytes& image) {
-  ModelIssue issue;
-  const std::optional<ModelView> model = ModelView::fromBytes(image, &issue);
-  if (!model) {
-    throw std::runtime_error(std::string("golden model refused: ") + describe(issue.error) +
-                             " at byte " + std::to_string(issue.offset));
-  }
-  return *model;
-}
-
-// The identity camera on an 8 x 8 frame: the cube spans 8 pixels around the centre (4, 4), so a
-// child at tree level l sits +-8 / 2^(l + 2) pixels from its parent on each axis.
-FrameSetup identitySetup(int depth) {
-  Camera camera;
-  camera.width = 8;
-  camera.height = 8;
-  FrameSetup setup;
-  EXPECT_EQ(buildFrameSetup(camera, depth, 15, &setup), CameraError::kNone);
-  setup.splat = SplatFootprint{};  // one pixel per leaf: the positions, as every fixed variant draws them
-  return setup;
-}
-
 std::vector<Leaf> walk(const LevelView& level) {
   const FrameSetup setup = identitySetup(level.depth);
   LeafList list;
@@ -141,7 +122,9 @@ void expectPixels(const LevelView& level, const std::vector<std::string>& expect
 TEST(GoldenFormat, CornersModelHasTheFrozenHeaderFields) {
   ASSERT_EQ(kCornersDepth1.size(), 784u + 12u + 3u);
   const ModelView model = validated(kCornersDepth1);
-  EXPECT_EQ(model.cubeEdgeMicrometres(), 1000000u);
+  EXPECT_EQ(model.formatVersion(), 1);
+  EXPECT_EQ(model.cubeEdgePicometres(), 1'000'000'000'000u);  // 1,000,000 um
+  EXPECT_FALSE(model.hasNormals());
   EXPECT_EQ(model.paletteCount(), 2);
   EXPECT_EQ(model.paletteColour(0), (Rgb{0xff, 0, 0}));
   EXPECT_EQ(model.paletteColour(1), (Rgb{0, 0, 0xff}));
@@ -160,7 +143,7 @@ TEST(GoldenFormat, CornersModelDecodesToTwoOppositeLeaves) {
 TEST(GoldenFormat, TwoLevelModelDecodesBothDepths) {
   const ModelView model = validated(kOcclusionDepths1And2);
   ASSERT_EQ(model.levelCount(), 2);
-  EXPECT_EQ(model.cubeEdgeMicrometres(), 1000u);
+  EXPECT_EQ(model.cubeEdgePicometres(), 1'000'000'000u);  // 1,000 um
   EXPECT_EQ(model.paletteColour(3), (Rgb{0xa0, 0xb0, 0xc0}));
   EXPECT_EQ(walk(*model.levelOfDepth(1)), (std::vector<Leaf>{{px(2), px(2), px(-2), 3}}));
   const std::vector<Leaf> depth2 = {{px(1), px(1), px(-3), 1},
@@ -190,7 +173,7 @@ TEST(GoldenFormat, FullPaletteModelReachesTheLastColour) {
 }
 
 TEST(GoldenFormat, AnyOtherVersionIsRefused) {
-  for (const std::uint8_t version : {0, 2, 255}) {
+  for (const std::uint8_t version : {0, 3, 255}) {
     Bytes image = kCornersDepth1;
     image[4] = version;
     ModelIssue issue;

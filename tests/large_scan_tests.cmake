@@ -98,3 +98,5 @@ file(WRITE ${CMAKE_CURRENT_BINARY_DIR}/outliers_scene.json
 stream_error_test(las_outliers "outlier removal (the scene's \"outliers\") needs the whole scan in memory"
                   ${las_scans}/format0.las -o ${cli_out}/las_outliers --name m
                   --scene ${CMAKE_CURRENT_BINARY_DIR}/outliers_scene.json)
+stream_error_test(las_normals "normal estimation (--normals) needs the whole scan in memory"
+                  ${las_scans}/format0.las -o ${cli_out}/las_normals --name m --normals)

@@ -2,7 +2,12 @@
 get_filename_component(out_dir ${OUT} DIRECTORY)
 file(MAKE_DIRECTORY ${out_dir})
 file(REMOVE ${OUT})
-execute_process(COMMAND ${RENDER} --size 160x120 -o ${OUT} RESULT_VARIABLE status)
+# STYLE (optional): draw it in that style (docs/styles.md).
+set(style_args)
+if(DEFINED STYLE)
+  set(style_args --style ${STYLE})
+endif()
+execute_process(COMMAND ${RENDER} --size 160x120 ${style_args} -o ${OUT} RESULT_VARIABLE status)
 if(NOT status EQUAL 0)
   message(FATAL_ERROR "octopoint-render failed: ${status}")
 endif()

@@ -67,22 +67,31 @@ class RenderVariants : public ::testing::Test {
 // Draws `level` with every fixed variant (with and without an abort flag to poll) and checks each
 // frame: at one pixel per leaf (`setup`'s splat reset) against fixed_baseline's, with the set-up's
 // own footprint against the splat's definition for the variants that draw splats.
-void expectEveryFixedVariantMatches(const LevelView& level, const FrameSetup& natural, const std::string& label) {
+// With `payload` kColourNormal the frames carry the leaves' normal indices too.
+void expectEveryFixedVariantMatches(const LevelView& level, const FrameSetup& natural, const std::string& label,
+                                    PixelPayload payload = PixelPayload::kColour) {
   static const std::atomic<bool> never_set{false};
   FrameSetup one_pixel = natural;
   one_pixel.splat = SplatFootprint{};
   Framebuffer baseline(natural.width, natural.height), splatted(natural.width, natural.height);
   Framebuffer candidate(natural.width, natural.height);
-  baseline.clear();
+  baseline.clear(payload);
   ASSERT_TRUE(renderLevel(Variant::kFixedBaseline, level, one_pixel, baseline));
-  splatted.clear();
+  splatted.clear(payload);
   testing_support::ReferenceSplat::draw(level, natural, splatted);
   for (const VariantInfo& info : allVariants()) {
     if (!isFixedPoint(info.variant)) continue;
+    if (payload == PixelPayload::kColourNormal && !drawsNormals(info.variant)) {  // fixed_delta: refused
+      candidate.clear(payload);
+      EXPECT_FALSE(renderLevel(info.variant, level, natural, candidate)) << info.name << " " << label;
+      EXPECT_TRUE(std::ranges::all_of(candidate.pixels(), [](std::uint32_t word) { return word == Framebuffer::kEmpty; }))
+          << info.name << " drew into a frame it refused, " << label;
+      continue;
+    }
     for (const FrameSetup* setup : {static_cast<const FrameSetup*>(&one_pixel), &natural}) {
       const Framebuffer& expected = setup == &natural && drawsSplats(info.variant) ? splatted : baseline;
       for (const std::atomic<bool>* abort : {static_cast<const std::atomic<bool>*>(nullptr), &never_set}) {
-        candidate.clear();
+        candidate.clear(payload);
         ASSERT_TRUE(renderLevel(info.variant, level, *setup, candidate, abort));
         ASSERT_TRUE(std::ranges::equal(candidate.pixels(), expected.pixels()))
             << info.name << " " << label << (setup == &natural ? " with its splats " : " one pixel per leaf ")
@@ -110,18 +119,35 @@ TEST_F(RenderVariants, EveryFixedVariantDrawsTheBaselineFrameBitForBit) {
   EXPECT_LT(splatting, frames - frames / 10);
 }
 
+// The same with the normal indices in the frame (PixelPayload::kColourNormal): the default model
+// has normals, and every fixed variant must draw the same words from them too.
+TEST_F(RenderVariants, EveryFixedVariantDrawsTheBaselineFrameWithNormalsBitForBit) {
+  ASSERT_TRUE(model_->hasNormals());
+  const std::vector<Camera> cameras = manyCameras();
+  for (int i = 0; i < model_->levelCount(); ++i) {
+    const LevelView& level = model_->level(i);
+    for (std::size_t c = 0; c < cameras.size(); c += 2) {
+      FrameSetup setup;
+      ASSERT_EQ(buildFrameSetup(cameras[c], level.depth, kDefaultFractionBits, &setup), CameraError::kNone);
+      expectEveryFixedVariantMatches(level, setup, "normals, depth " + std::to_string(level.depth) + " camera " + std::to_string(c),
+                                     PixelPayload::kColourNormal);
+    }
+  }
+}
+
 // A random valid level of `depth` with about `leaves_wanted` leaves: each child of each node is
 // present with the same probability (a node keeps at least one), and every leaf has a random
 // palette index.
 struct RandomLevel {
-  std::vector<std::uint8_t> nodes, leaves;
-  LevelView view(int depth) const { return LevelView{depth, nodes, leaves}; }
+  std::vector<std::uint8_t> nodes, leaves, normals;
+  LevelView view(int depth) const { return LevelView{depth, nodes, leaves, normals}; }
 };
 
 RandomLevel randomLevel(int depth, double leaves_wanted, std::mt19937& random) {
   const double children_per_node = std::min(8.0, std::pow(leaves_wanted, 1.0 / depth));
   std::bernoulli_distribution present(children_per_node / 8.0);
   std::uniform_int_distribution<int> colour(0, 255);
+  std::uniform_int_distribution<int> normal(0, 254);
   RandomLevel level;
   auto grow = [&](auto& self, int level_index) -> void {
     unsigned mask = 0;
@@ -132,6 +158,7 @@ RandomLevel randomLevel(int depth, double leaves_wanted, std::mt19937& random) {
     for (int child = std::popcount(mask); child > 0; --child) {
       if (level_index + 1 == depth) {
         level.leaves.push_back(static_cast<std::uint8_t>(colour(random)));
+        level.normals.push_back(static_cast<std::uint8_t>(normal(random)));
       } else {
         self(self, level_index + 1);
       }
@@ -141,6 +168,7 @@ RandomLevel randomLevel(int depth, double leaves_wanted, std::mt19937& random) {
   // Buffers that end at the last byte: under ASan, a decoder reading past the stream fails.
   level.nodes.shrink_to_fit();
   level.leaves.shrink_to_fit();
+  level.normals.shrink_to_fit();
   return level;
 }
 
@@ -154,14 +182,17 @@ TEST_F(RenderVariants, EveryFixedVariantDrawsTheBaselineFrameOfRandomTreesOfEver
     for (const double leaves_wanted : {6.0, 70.0, 600.0, 5000.0}) {
       const RandomLevel tree = randomLevel(depth, leaves_wanted, random);
       const LevelView level = tree.view(depth);
-      ASSERT_EQ(validateLevelStream(level, 256).error, ModelError::kNone);
+      ASSERT_EQ(validateLevelStream(level, 256, 255).error, ModelError::kNone);
       for (std::size_t c = 0; c < cameras.size(); c += 6) {
         const Camera& camera = cameras[c];
         FrameSetup setup;
         ASSERT_EQ(buildFrameSetup(camera, depth, kDefaultFractionBits, &setup), CameraError::kNone);
-        expectEveryFixedVariantMatches(level, setup, "depth " + std::to_string(depth) + " leaves " +
-                                                         std::to_string(tree.leaves.size()) + " camera " +
-                                                         std::to_string(c));
+        for (const PixelPayload payload : {PixelPayload::kColour, PixelPayload::kColourNormal}) {
+          expectEveryFixedVariantMatches(level, setup,
+                                         "depth " + std::to_string(depth) + " leaves " +
+                                             std::to_string(tree.leaves.size()) + " camera " + std::to_string(c),
+                                         payload);
+        }
       }
     }
   }

@@ -20,8 +20,12 @@ class ReferenceSplat {
     splat_ = setup.splat.extent_x > one || setup.splat.extent_y > one;
   }
 
-  void operator()(std::int32_t x, std::int32_t y, std::int32_t z, std::uint8_t colour) {
-    const std::uint32_t word = Framebuffer::pack(setup_.depthKey(z), colour);
+  // `payload`: the palette index, or (in a PixelPayload::kColourNormal frame) palette index |
+  // normal index << 8.
+  void operator()(std::int32_t x, std::int32_t y, std::int32_t z, std::uint32_t payload) {
+    const std::uint32_t word = frame_.payload() == PixelPayload::kColourNormal
+                                   ? Framebuffer::packColourNormal(setup_.depthKey(z), payload)
+                                   : Framebuffer::pack(setup_.depthKey(z), static_cast<std::uint8_t>(payload));
     const auto [x0, x1] = pixelRange(x, setup_.splat.extent_x);
     const auto [y0, y1] = pixelRange(y, setup_.splat.extent_y);
     for (std::int64_t py = std::max<std::int64_t>(y0, 0); py <= std::min<std::int64_t>(y1, frame_.height() - 1); ++py) {
@@ -33,10 +37,14 @@ class ReferenceSplat {
     }
   }
 
-  // Draws a whole level.
+  // Draws a whole level (with its normals when `frame` carries them).
   static void draw(const LevelView& level, const FrameSetup& setup, Framebuffer& frame) {
     ReferenceSplat sink(setup, frame);
-    BaselineWalk<ReferenceSplat>(level, setup, sink).run();
+    if (frame.payload() == PixelPayload::kColourNormal) {
+      BaselineWalk<ReferenceSplat, true>(level, setup, sink).run();
+    } else {
+      BaselineWalk<ReferenceSplat>(level, setup, sink).run();
+    }
   }
 
  private:

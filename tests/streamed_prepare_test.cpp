@@ -48,9 +48,8 @@ std::vector<std::uint8_t> referenceImage(const Scan& full_scan, const PrepareOpt
   const Palette palette = Palette::build(sets.back().colours, options.palette_colours);
   PreparedModel model;
   model.name = options.name;
-  model.cube_edge_um =
-      static_cast<std::uint32_t>(std::min(std::round(fit.edge * options.metres_per_scan_unit * 1e6),
-                                          double{std::numeric_limits<std::uint32_t>::max()}));
+  model.cube_edge_pm = cubeEdgePicometres(fit, options.metres_per_scan_unit, "reference");
+  model.synthetic_colour = scan.shading == ScanShading::kNone && !options.greyscale;
   model.palette = palette.colours();
   for (const VoxelSet& set : sets) {
     PreparedLevel level;

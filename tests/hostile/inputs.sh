@@ -59,8 +59,15 @@ patchBytes() {  # patchBytes FILE OFFSET BYTES...: a copy of good.oct with bytes
   cp "$IN/good.oct" "$1"
   printf "$3" | dd of="$1" bs=1 seek="$2" conv=notrunc status=none
 }
-patchBytes "$I1/huge_level.oct" $((784 + 4)) '\377\377\377\377'
-patchBytes "$I1/huge_leaves.oct" $((784 + 8)) '\377\377\377\377'
+levelTable() {  # levelTable FILE: the offset of a .oct's level table (docs/format.md)
+  if [ "$(od -An -tu2 -j4 -N2 "$1" | tr -d ' ')" = 1 ]; then
+    echo 784
+  else  # version 2: 788 bytes, then 6 per normal palette entry
+    echo $((788 + 6 * $(od -An -tu2 -j18 -N2 "$1" | tr -d ' ')))
+  fi
+}
+patchBytes "$I1/huge_level.oct" $(($(levelTable "$IN/good.oct") + 4)) '\377\377\377\377'
+patchBytes "$I1/huge_leaves.oct" $(($(levelTable "$IN/good.oct") + 8)) '\377\377\377\377'
 patchBytes "$I1/many_levels.oct" 6 '\377'
 refuse 1 q:oct_huge_level "huge_level.oct" "$RENDER" --file "$I1/huge_level.oct" -o "$W/work/out/x.png"
 refuse 1 oct_huge_leaves "huge_leaves.oct" "$RENDER" --file "$I1/huge_leaves.oct" -o "$W/work/out/x.png"
@@ -140,7 +147,8 @@ refuse 5 tradeoff_word "line 12" "$TRADEOFF" "$I5/word.pcd" -o "$W/work/out/t"
 
 # --- 6: a scan larger than the model's size field or smaller than its unit ---------------------
 # Passes when refused as above, or when prepared (exit 0) with the cube edge printed and stored
-# (a version 1 .oct keeps micrometres in bytes 8..11) within 1% of the scan's.
+# (a version 1 .oct keeps micrometres in bytes 8..11, version 2 picometres in bytes 8..15) within 1%
+# of the scan's.
 metricCase() {  # metricCase NAME EDGE_METRES SCAN
   local name=$1 edge=$2 scan=$3
   selected "$name" || return 0
@@ -158,6 +166,10 @@ metricCase() {  # metricCase NAME EDGE_METRES SCAN
       stored=$(od -An -tu4 -j8 -N4 "$OUT/m/m.oct" | tr -d ' ')
       awk -v s="$stored" -v e="$edge" 'BEGIN { exit !(s > 0.99e6 * e && s < 1.01e6 * e) }' ||
         problems+=" stored ${stored} um, the scan's edge is $edge m"
+    else
+      stored=$(od -An -tu8 -j8 -N8 "$OUT/m/m.oct" | tr -d ' ')
+      awk -v s="$stored" -v e="$edge" 'BEGIN { exit !(s > 0.99e12 * e && s < 1.01e12 * e) }' ||
+        problems+=" stored ${stored} pm, the scan's edge is $edge m"
     fi
     rm -rf "$OUT/m"
     before=$(snapshot)  # a model written on purpose is not a leftover

@@ -139,8 +139,8 @@ refuse 12 name_limit_stated "is 300 characters long, at most 64" "$PREPARE" "$IN
 refuse 12 long_path_cut "no such file" "$RENDER" --file "$IN/$(printf 'd/%.0s' $(seq 1 2000))m.oct" -o "$X_PNG"
 refuse 12 q:directory_not_missing "is a directory, not a model file" "$RENDER" --file "$IN" -o "$X_PNG"
 # A level error names its byte in the file: the first node byte of the first level, set to 0 (an
-# inner node without children), sits after the 784-byte header and one 12-byte row per level.
+# inner node without children), sits after the level table, one 12-byte row per level.
 levels=$(od -An -tu1 -j6 -N1 "$IN/good.oct" | tr -d ' ')
-first_node=$((784 + 12 * levels))
+first_node=$(($(levelTable "$IN/good.oct") + 12 * levels))
 patchBytes "$IN/empty_node.oct" "$first_node" '\000'
 refuse 12 q:level_error_file_byte "file byte $first_node" "$RENDER" --file "$IN/empty_node.oct" -o "$X_PNG"

@@ -61,7 +61,10 @@ TEST(TruncationSweep, TheWholeDefaultModelValidates) {
 
 TEST(TruncationSweep, EveryPrefixOfTheDefaultModelIsRefused) {
   const std::vector<std::uint8_t>& image = defaultModelImage();
-  const std::size_t table_end = 784 + 12 * std::size_t{image[6]};
+  // Version 2: 788 header bytes, 6 per normal palette entry (count at byte 18), 12 per level row.
+  ASSERT_EQ(image[4], 2);
+  const std::size_t normal_count = image[18] | std::size_t{image[19]} << 8;
+  const std::size_t table_end = 788 + 6 * normal_count + 12 * std::size_t{image[6]};
   GrowingPrefix buffer(image);
   std::size_t accepted = 0;
   for (std::size_t length = 0; length < buffer.fullSize(); ++length) {

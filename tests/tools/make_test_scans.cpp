@@ -114,6 +114,8 @@ int main(int argc, char** argv) {
   write(out / "bad" / "all_nan.pcd", asciiPcd({{nan, nan, nan, 0}, {nan, 1, 2, 0}, {3, nan, 1, 0}}));
   write(out / "bad" / "identical.pcd", asciiPcd({{1, 2, 3, 0}, {1, 2, 3, 0}, {1, 2, 3, 0}}));
   write(out / "bad" / "absurd.pcd", asciiPcd({{0, 0, 0, 0}, {1, 1, 1, 0}, {1e30f, 0, 0, 0}}));
+  // Distinct points 0.1 nm apart (in metres): smaller than the model format's 1 nm cube.
+  write(out / "bad" / "sub_nanometre.pcd", asciiPcd({{0, 0, 0, 0}, {1e-10f, 0, 0, 0}, {0, 5e-11f, 0, 0}}));
   write(out / "bad" / "good_small.pcd", asciiPcd({{0, 0, 0, 0}, {1, 1, 1, 0}, {0.5f, 0.2f, 0.1f, 0}}));
   fs::create_directories(out / "bad" / "directory.pcd");
   return 0;

@@ -1,0 +1,110 @@
+#pragma once
+// The line pass of the line styles (docs/styles.md): after decoding, each covered pixel is compared
+// with its four neighbours, O(pixels), integer only.
+// - Silhouette: a neighbour is background, or lies farther by more than `jump`
+//   (kSilhouetteVoxelEdges voxel edges, or pixels where a voxel is smaller than a pixel): the
+//   object's outline and the outline of whatever stands in front of something else. Only the
+//   nearer pixel of such a pair is marked, so the line is one pixel wide.
+// - Crease: a neighbour is no silhouette, but the normals of the two pixels differ by more than
+//   the crease angle (a table of 255 x 255 bits built once per model and angle, so the test is one
+//   look-up, not a dot product). Again only one pixel of the pair is marked: the nearer, or the
+//   left (upper) one of a pair at equal depth.
+// Neighbours outside the frame are ignored: no line along the frame's edge.
+//
+// Bands (drawing a frame a few rows at a time): a row's result depends on the rows above and
+// below it. `forEachStyledPixel` styles rows [first_row, end_row) of a frame and reads rows
+// first_row - 1 and end_row where the frame has them; a band drawn one row taller at each inner
+// edge therefore styles exactly as the whole frame does.
+
+#include <array>
+#include <cstdint>
+#include <span>
+
+#include "fixedpoint/angle.h"
+#include "renderer/camera.h"
+#include "renderer/framebuffer.h"
+#include "renderer/model.h"
+
+namespace octopoint {
+
+inline constexpr std::uint32_t kSilhouetteVoxelEdges = 4;
+
+enum class Edge : std::uint8_t { kNone, kCrease, kSilhouette };
+
+class CreaseTable {
+ public:
+  // Pairs of `model`'s normal palette entries more than `angle` apart (0 to 180 degrees).
+  void build(const ModelView& model, Angle angle);
+  bool crease(std::uint32_t a, std::uint32_t b) const {
+    return (bits_[a * 8 + (b >> 5)] >> (b & 31)) & 1u;
+  }
+
+ private:
+  std::array<std::uint32_t, 256 * 8> bits_{};  // row a, bit b: 8 KiB
+};
+
+// What the line pass needs of a frame: how far apart neighbouring depths may be, in the units of
+// (word >> key_shift).
+struct EdgeRule {
+  std::uint32_t jump = 0;
+  int key_shift = 8;
+  const CreaseTable* creases = nullptr;  // nullptr: silhouettes only
+};
+
+// The rule for a frame set up by `setup` whose words carry `payload`.
+EdgeRule edgeRuleFor(const FrameSetup& setup, PixelPayload payload, const CreaseTable* creases);
+
+// The class of pixel x of `row` (covered), given the rows above and below (nullptr outside the
+// frame).
+inline Edge classifyPixel(const std::uint32_t* above, const std::uint32_t* row,
+                          const std::uint32_t* below, std::int32_t x, std::int32_t width,
+                          const EdgeRule& rule) {
+  const std::uint32_t word = row[x];
+  const std::uint32_t depth = word >> rule.key_shift;
+  bool crease = false;
+  // Neighbour q of p: is it background or farther by more than the jump (a silhouette at p), and
+  // is the pair a crease that p draws (p nearer, or as near and q to its right or below)?
+  const auto look = [&](std::uint32_t neighbour, bool p_draws_ties) {
+    if (neighbour == Framebuffer::kEmpty) return true;
+    const std::uint32_t other = neighbour >> rule.key_shift;
+    if (other > depth + rule.jump) return true;
+    if (depth > other + rule.jump || rule.creases == nullptr) return false;
+    if (other > depth || (other == depth && p_draws_ties)) {
+      crease = crease || rule.creases->crease(Framebuffer::normalIndexOf(word),
+                                              Framebuffer::normalIndexOf(neighbour));
+    }
+    return false;
+  };
+  if ((x > 0 && look(row[x - 1], false)) || (x + 1 < width && look(row[x + 1], true)) ||
+      (above != nullptr && look(above[x], false)) || (below != nullptr && look(below[x], true))) {
+    return Edge::kSilhouette;
+  }
+  return crease ? Edge::kCrease : Edge::kNone;
+}
+
+// Calls paint(word, edge) for every pixel of rows [first_row, end_row) of `frame` (edge kNone for
+// background pixels, whose word is Framebuffer::kEmpty) and stores the RGB888 it returns (packed
+// 0xRRGGBB) into `rgb`, row first_row first.
+template <typename Paint>
+void forEachStyledPixel(const FrameView& frame, std::int32_t first_row, std::int32_t end_row,
+                        const EdgeRule& rule, std::span<std::uint8_t> rgb, Paint paint) {
+  const std::int32_t width = frame.width();
+  const std::uint32_t* pixels = frame.pixels().data();
+  std::uint8_t* out = rgb.data();
+  for (std::int32_t y = first_row; y < end_row; ++y) {
+    const std::uint32_t* row = pixels + static_cast<std::ptrdiff_t>(y) * width;
+    const std::uint32_t* above = y > 0 ? row - width : nullptr;
+    const std::uint32_t* below = y + 1 < frame.height() ? row + width : nullptr;
+    for (std::int32_t x = 0; x < width; ++x, out += 3) {
+      const std::uint32_t word = row[x];
+      const std::uint32_t colour = paint(
+          word, word == Framebuffer::kEmpty ? Edge::kNone
+                                            : classifyPixel(above, row, below, x, width, rule));
+      out[0] = static_cast<std::uint8_t>(colour >> 16);
+      out[1] = static_cast<std::uint8_t>(colour >> 8);
+      out[2] = static_cast<std::uint8_t>(colour);
+    }
+  }
+}
+
+}  // namespace octopoint

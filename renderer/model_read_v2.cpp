@@ -1,0 +1,53 @@
+// The header of a version 2 `.oct` file (renderer/model_format.h): the validator of that version.
+// Version 2 widens the metric size to picometres in 64 bits and may carry normals.
+#include "renderer/model.h"
+#include "renderer/model_bytes.h"
+
+namespace octopoint {
+
+using model_bytes::readU16;
+using model_bytes::readU64;
+using model_bytes::refuse;
+
+std::size_t ModelView::readHeaderV2(std::span<const std::uint8_t> bytes, ModelView& view,
+                                    ModelIssue* issue) {
+  namespace v2 = format::v2;
+  if (bytes.size() < v2::kFixedHeaderBytes)
+    return refuse(issue, ModelError::kTruncatedHeader, bytes.size());
+  const std::uint8_t* p = bytes.data();
+  view.format_version_ = format::kVersion2;
+  view.level_count_ = p[6];
+  if (view.level_count_ < 1 || view.level_count_ > format::kMaxLevels) {
+    return refuse(issue, ModelError::kBadLevelCount, 6);
+  }
+  const std::uint8_t flags = p[7];
+  // Unknown flags are reserved: a later version may give them a meaning.
+  if ((flags & ~v2::kKnownFlags) != 0) return refuse(issue, ModelError::kBadReservedField, 7);
+  view.colour_is_synthetic_ = (flags & v2::kFlagSyntheticColour) != 0;
+  view.cube_edge_pm_ = readU64(p + 8);
+  view.palette_count_ = readU16(p + 16);
+  if (view.palette_count_ < 1 || view.palette_count_ > format::kPaletteEntries) {
+    return refuse(issue, ModelError::kBadPaletteCount, 16);
+  }
+  const int normal_count = readU16(p + 18);
+  const bool with_normals = (flags & v2::kFlagNormals) != 0;
+  if (with_normals != (normal_count > 0) || normal_count > format::kMaxNormals) {
+    return refuse(issue, ModelError::kBadNormalCount, 18);
+  }
+  view.palette_rgb_ = p + v2::kPaletteOffset;
+  const std::size_t unused_from =
+      v2::kPaletteOffset + 3 * static_cast<std::size_t>(view.palette_count_);
+  const std::size_t non_zero = model_bytes::firstNonZero(p, unused_from, v2::kNormalPaletteOffset);
+  if (non_zero != v2::kNormalPaletteOffset)
+    return refuse(issue, ModelError::kBadReservedField, non_zero);
+
+  const std::size_t normals_end =
+      v2::kNormalPaletteOffset + v2::kNormalEntryBytes * static_cast<std::size_t>(normal_count);
+  if (bytes.size() < normals_end) return refuse(issue, ModelError::kTruncatedHeader, bytes.size());
+  view.normal_count_ = normal_count;
+  view.normal_bytes_ = normal_count > 0 ? p + v2::kNormalPaletteOffset : nullptr;
+  if (!validateNormalPalette(view, issue, v2::kNormalPaletteOffset)) return 0;
+  return normals_end;
+}
+
+}  // namespace octopoint
