@@ -110,6 +110,19 @@ Published publish(const fs::path& staged, const fs::path& final_path, const fs::
   return done;
 }
 
+// Moves a file of the earlier set that the new set does not hold aside, with the set's displaced
+// files (unpublish puts it back). Nothing there, or not a regular file or link: nothing to do.
+Published takeOut(const fs::path& final_path, const fs::path& displaced) {
+  std::error_code error;
+  Published done{final_path, displaced, false};
+  const fs::file_status existing = fs::symlink_status(final_path, error);
+  if (!fs::is_regular_file(existing) && !fs::is_symlink(existing)) return done;
+  fs::rename(final_path, displaced, error);
+  if (error) fail(final_path, "cannot take out the earlier file (" + error.message() + ")");
+  done.had_previous = true;
+  return done;
+}
+
 // Takes the new files out again and puts the earlier ones back, newest first.
 void unpublish(const std::vector<Published>& published) {
   std::error_code ignored;
@@ -205,7 +218,8 @@ void writeFileAtomically(const fs::path& path, std::string_view bytes) {
   }
 }
 
-void writeFilesAtomically(const fs::path& directory, const std::vector<OutputFile>& files) {
+void writeFilesAtomically(const fs::path& directory, const std::vector<OutputFile>& files,
+                          const std::vector<std::string>& obsolete) {
   checkOutputDirectory(directory);
   std::error_code error;
   const bool existed = fs::exists(directory, error);
@@ -231,6 +245,10 @@ void writeFilesAtomically(const fs::path& directory, const std::vector<OutputFil
     }
     for (const OutputFile& file : files) {
       published.push_back(publish(staging / file.name, directory / file.name, displaced / file.name));
+    }
+    for (const std::string& name : obsolete) {
+      const Published taken = takeOut(directory / name, displaced / name);
+      if (taken.had_previous) published.push_back(taken);  // else nothing to put back on failure
     }
   } catch (...) {  // also bad_alloc: nothing may stay behind
     unpublish(published);

@@ -34,10 +34,13 @@ struct OutputFile {
 };
 
 // Creates `directory` if needed and puts every file in it, all together or none (see above).
-// Staging folders that killed runs (SIGKILL, power loss) left in `directory` are removed first.
-// Throws cli::Error naming the file or directory at fault; the directory then holds what it held
-// before (a directory this call created is removed again).
-void writeFilesAtomically(const std::filesystem::path& directory, const std::vector<OutputFile>& files);
+// `obsolete` names files of an earlier set that this one replaces without writing them again (the
+// preparer's level sources of depths this run leaves out): each that is there is taken out with
+// the set, and put back when the set fails. Staging folders that killed runs (SIGKILL, power loss)
+// left in `directory` are removed first. Throws cli::Error naming the file or directory at fault;
+// the directory then holds what it held before (a directory this call created is removed again).
+void writeFilesAtomically(const std::filesystem::path& directory, const std::vector<OutputFile>& files,
+                          const std::vector<std::string>& obsolete = {});
 
 // The prefix of the staging folders: ".octopoint-staging-" followed by the writer's process id.
 inline constexpr std::string_view kStagingPrefix = ".octopoint-staging-";

@@ -70,19 +70,30 @@ class BodyChecker {
 
   void finish() {
     endValue();
+    const std::size_t end_line = line_;  // the last line, or the empty one after a final newline
     endLine(true);
     if (element_ < elements_.size()) {
       const AsciiElement& element = elements_[element_];
-      fail(path_,
-           "truncated: header declares " + std::to_string(element.count) + " " + element.plural +
-               " but the ascii data has " + std::to_string(item_) + " lines" +
-               (element_ > 0 ? " of them (after the earlier elements)" : ""),
-           "line " + std::to_string(line_));
+      const std::string declared = "header declares " + std::to_string(element.count) + " " + element.plural +
+                                   " but the ascii data has " + counted(item_, "data line") +
+                                   (element_ > 0 ? " of them (after the earlier elements)" : "");
+      // Blank lines are skipped (PCL skips them too): when there were some, the data may be whole
+      // and a blank line stand where a point was meant; the first is the place to look.
+      if (blank_lines_ > 0) {
+        const char* verb = blank_lines_ == 1 ? ", which holds no " : ", which hold no ";
+        fail(path_, declared + " and " + counted(blank_lines_, "blank line") + verb + element.name,
+             (blank_lines_ == 1 ? "line " : "the first at line ") + std::to_string(first_blank_line_));
+      }
+      fail(path_, "truncated: " + declared, "line " + std::to_string(end_line));
     }
   }
 
  private:
   std::string where() const { return "line " + std::to_string(line_); }
+
+  static std::string counted(std::uint64_t n, const std::string& what) {
+    return std::to_string(n) + " " + what + (n == 1 ? "" : "s");
+  }
 
   void skipFinishedElements() {
     while (element_ < elements_.size() && item_ == elements_[element_].count) {
@@ -145,6 +156,8 @@ class BodyChecker {
       }
       ++item_;
       skipFinishedElements();
+    } else if (!at_end_of_file && element_ < elements_.size()) {
+      if (blank_lines_++ == 0) first_blank_line_ = line_;
     }
     values_in_line_ = 0;
     property_ = 0;
@@ -163,6 +176,8 @@ class BodyChecker {
   std::uint64_t in_property_ = 0;
   bool list_started_ = false;
   std::uint64_t list_items_ = 0;
+  std::uint64_t blank_lines_ = 0;  // lines without a value among the data, skipped
+  std::size_t first_blank_line_ = 0;
   std::string token_;
 };
 

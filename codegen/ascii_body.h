@@ -40,7 +40,9 @@ struct AsciiElement {
 
 // Reads the body from `body_offset` (line `first_line` of the file) and throws PrepareError
 // "PATH: what (line N)" at the first line that does not parse, or "truncated: ..." when the data
-// ends before every declared item. Blank lines are skipped, as PCL does.
+// ends before every declared item. Blank lines are skipped, as PCL does; when the data is short
+// and held blank lines, the message counts them and names the first instead (a blank line where
+// a point was meant is not a truncated file).
 void checkAsciiBody(const std::filesystem::path& path, std::uint64_t body_offset, std::size_t first_line,
                     const std::vector<AsciiElement>& elements);
 

@@ -35,4 +35,14 @@ struct EmitOptions {
 std::vector<std::uint8_t> serializeModel(const PreparedModel& model);
 std::vector<OutputFile> emitSources(const PreparedModel& model, const EmitOptions& options = {});
 
+// The level sources NAME_depthD.cpp of model `name` that an earlier run left in `directory` and
+// `files` does not hold: what a rerun with fewer depths, or with --single-source (whose NAME.cpp
+// defines the same arrays: both compiled in would not link), must take out so that the directory
+// holds exactly this run's set (cli::writeFilesAtomically's `obsolete`). Only a regular file that
+// reads as the preparer's level source of that model and depth counts (its banner, then the
+// array NAME_depthD_nodes): never a file of one's own, nor another model's (a model named
+// NAME_depthD writes a NAME_depthD.cpp too).
+std::vector<std::string> staleLevelSources(const std::filesystem::path& directory, const std::string& name,
+                                           const std::vector<OutputFile>& files);
+
 }  // namespace octopoint::prepare

@@ -54,7 +54,9 @@ same byte for byte whatever --memory and --threads (docs/preparer.md).
                         dropped. LAS colour is used when the format has it and it is not all 0
                         (8- or 16-bit, detected), else the intensity; compressed LAZ is refused
   -o, --output OUTDIR   where to write (created if missing); all files appear or none do, also
-                        when interrupted (SIGINT, SIGTERM); existing outputs must be regular files
+                        when interrupted (SIGINT, SIGTERM); existing outputs must be regular files.
+                        A rerun replaces NAME's set: NAME_depthD.cpp files of an earlier run that
+                        this one does not write (fewer depths, --single-source) are removed
   --name NAME           the model's name, e.g. milk_carton: a C++ identifier of at most 64
                         letters, digits and single underscores (not at either end), with a
                         lower-case letter, not a C++ keyword
@@ -357,7 +359,8 @@ int run(int argc, char** argv) {
   std::vector<OutputFile> files = emitSources(model, args->emit);
   const std::vector<std::uint8_t> image = image_made.get();
   files.push_back({model.name + ".oct", std::string(image.begin(), image.end())});
-  octopoint::cli::writeFilesAtomically(args->output_dir, files);
+  // A rerun replaces the model's whole set: level sources of depths it leaves out go too.
+  octopoint::cli::writeFilesAtomically(args->output_dir, files, staleLevelSources(args->output_dir, model.name, files));
   const double writing_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - writing).count();
 
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

@@ -84,6 +84,19 @@ TEST_F(ScanDataLinesTest, AsciiPcdLinesOfTheWrongLengthOrNumberAreRefused) {
             "more data lines than the header declares (line 12)");
   EXPECT_EQ(errorOf("cut.pcd", pcd(kXyz, 2, "ascii", "1 2 3\n4 5")),
             "truncated: a data line of 2 values, short of what the header declares for a point item (line 12)");
+  EXPECT_EQ(errorOf("few.pcd", pcd(kXyz, 3, "ascii", "1 2 3\n4 5 6\n")),
+            "truncated: header declares 3 points but the ascii data has 2 data lines (line 13)");
+}
+
+// Blank lines are skipped (PCL skips them too), so a blank line where a point was meant leaves
+// the data a point short: that is not a truncated file, and the first blank line is named.
+TEST_F(ScanDataLinesTest, ABlankLineWhereAPointWasMeantIsNamedNotCalledTruncated) {
+  EXPECT_EQ(errorOf("blank.pcd", pcd(kXyz, 3, "ascii", "1 2 3\n\n7 8 9\n")),
+            "header declares 3 points but the ascii data has 2 data lines and 1 blank line, which holds no point "
+            "(line 12)");
+  EXPECT_EQ(errorOf("blanks.pcd", pcd(kXyz, 4, "ascii", "1 2 3\n  \n7 8 9\r\n\r\n\n")),
+            "header declares 4 points but the ascii data has 2 data lines and 3 blank lines, which hold no point "
+            "(the first at line 12)");
 }
 
 TEST_F(ScanDataLinesTest, GoodAsciiPcdWithBlankLinesAndNanIsRead) {

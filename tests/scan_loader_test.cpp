@@ -452,7 +452,7 @@ TEST_F(ScanLoaderTest, HugeDeclaredPointCountWithLittleDataIsRefusedQuickly) {
                                                 std::string(120, '\0')),
               "truncated: header declares 4000000000 points needing 48000000000 bytes");
   expectError(writeBytes("huge_ascii.pcd", pcdHeader(kXyzFields, huge, "ascii") + "1 2 3\n"),
-              "truncated: header declares 4000000000 points but the ascii data has 1 lines");
+              "truncated: header declares 4000000000 points but the ascii data has 1 data line");
   std::string compressed_body(8 + 4, '\0');
   compressed_body[0] = 4;  // 4 compressed bytes, 12 uncompressed: one point's worth
   compressed_body[4] = 12;

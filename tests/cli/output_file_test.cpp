@@ -107,6 +107,32 @@ TEST_F(OutputFileTest, AFailedWriteLeavesAnExistingDirectoryAsItWas) {
   EXPECT_EQ(contentsOf(dir_ / "a.txt"), "old a");
 }
 
+// Files of the earlier set that the new one leaves out go with it (the preparer's level sources of
+// depths a rerun does not make); what is not a regular file is never touched.
+TEST_F(OutputFileTest, ObsoleteFilesOfTheEarlierSetAreTakenOutWithIt) {
+  writeFilesAtomically(dir_, {{"a.txt", "old a"}, {"b.txt", "old b"}, {"c.txt", "old c"}});
+  ASSERT_EQ(::mkfifo((dir_ / "fifo.txt").c_str(), 0600), 0);
+  writeFilesAtomically(dir_, {{"a.txt", "new a"}}, {"b.txt", "c.txt", "absent.txt", "fifo.txt"});
+  EXPECT_EQ(entries(), (std::set<std::string>{"a.txt", "fifo.txt"}));
+  EXPECT_EQ(contentsOf(dir_ / "a.txt"), "new a");
+}
+
+// A failure while writing, or while taking the obsolete files out, leaves the earlier set whole.
+TEST_F(OutputFileTest, AFailureKeepsTheObsoleteFilesOfTheEarlierSet) {
+  writeFilesAtomically(dir_, {{"a.txt", "old a"}, {"b.txt", "old b"}});
+  fs::create_directories(dir_ / "sub");
+  put(dir_ / "sub" / "c.txt", "old c");
+  EXPECT_THROW(writeFilesAtomically(dir_, {{"a.txt", "new a"}, {"missing/x.txt", "x"}}, {"b.txt"}), Error);
+  EXPECT_EQ(entries(), (std::set<std::string>{"a.txt", "b.txt", "sub"}));
+  // b.txt is taken out first; sub/c.txt cannot be moved aside (no "sub" among the displaced
+  // files), so everything is put back.
+  EXPECT_THROW(writeFilesAtomically(dir_, {{"a.txt", "new a"}}, {"b.txt", "sub/c.txt"}), Error);
+  EXPECT_EQ(entries(), (std::set<std::string>{"a.txt", "b.txt", "sub"}));
+  EXPECT_EQ(contentsOf(dir_ / "a.txt"), "old a");
+  EXPECT_EQ(contentsOf(dir_ / "b.txt"), "old b");
+  EXPECT_EQ(contentsOf(dir_ / "sub" / "c.txt"), "old c");
+}
+
 // A run killed with SIGKILL leaves its staging folder; the next run removes it (its process is
 // gone), but never the folder of a writer that still runs.
 TEST_F(OutputFileTest, StagingFoldersOfDeadWritersAreRemoved) {

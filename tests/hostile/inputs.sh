@@ -136,11 +136,11 @@ asciiWith nul "$(printf '1 2 \0013')"
 { printf 'ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\n'
   printf 'end_header\n1 2 3\n4 5 6\n'; } >"$I5/ply_fewer_lines.ply"
 refuse 5 q:word "line 12" "$PREPARE" "$I5/word.pcd" -o "$W/work/out/p" --name m
-refuse 5 empty_line "empty_line.pcd" "$PREPARE" "$I5/empty_line.pcd" -o "$W/work/out/p" --name m
+refuse 5 empty_line "1 blank line, which holds no point (line 12)" "$PREPARE" "$I5/empty_line.pcd" -o "$W/work/out/p" --name m
 for scan in missing_column extra_column hex comma_decimal trailing_junk nul; do
   refuse 5 "$scan" "line 12" "$PREPARE" "$I5/$scan.pcd" -o "$W/work/out/p" --name m
 done
-refuse 5 fewer_lines "fewer_lines.pcd" "$PREPARE" "$I5/fewer_lines.pcd" -o "$W/work/out/p" --name m
+refuse 5 fewer_lines "truncated: header declares 5 points but the ascii data has 2 data lines" "$PREPARE" "$I5/fewer_lines.pcd" -o "$W/work/out/p" --name m
 refuse 5 ply_word "ply_word.ply" "$PREPARE" "$I5/ply_word.ply" -o "$W/work/out/p" --name m
 refuse 5 ply_fewer_lines "ply_fewer_lines.ply" "$PREPARE" "$I5/ply_fewer_lines.ply" -o "$W/work/out/p" --name m
 refuse 5 tradeoff_word "line 12" "$TRADEOFF" "$I5/word.pcd" -o "$W/work/out/t"

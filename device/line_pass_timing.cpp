@@ -1,0 +1,166 @@
+// line_pass_timing: the line pass of the line styles (renderer/edges.h, docs/styles.md) in integer
+// arithmetic against the same pass written in float, as Hekmatzada et al. compared their fixed and
+// float line drawings on a PDA without FPU. Built for the `armel` preset it runs under qemu-arm, an
+// ARMv5TE without FPU, where every float operation is a libgcc soft-float call (docs/device.md).
+//
+// The float pass is a reference written as a float program would be: each pixel's depth in
+// float (the depth key times its unit), the silhouette jump in float, and the crease test as the
+// dot product of the two pixels' unit normals (floats) against cos(crease angle). The integer pass
+// is FrameStyler's: keys compared as integers, the crease a bit of a table built once per model.
+// Both paint the lines style (white paper, black silhouettes, grey creases) into RGB888 and the
+// tool prints how many pixels differ (the crease test's rounding at the threshold may differ).
+// This file is a float reference by design: it is not part of the integer libraries.
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <ctime>
+#include <optional>
+#include <vector>
+
+#include "models/registry.h"
+#include "renderer/edges.h"
+#include "renderer/frame_styler.h"
+#include "renderer/render.h"
+
+namespace octopoint {
+namespace {
+
+constexpr int kRuns = 5;  // the reported time is the median over runs
+constexpr std::int64_t kRunNs = 200'000'000;
+
+std::int64_t threadCpuNs() {
+  timespec now{};
+  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &now);
+  return std::int64_t{now.tv_sec} * 1'000'000'000 + now.tv_nsec;
+}
+
+template <typename Pass>
+std::int64_t medianNs(Pass pass) {
+  pass();  // warm-up: caches, page faults, qemu's translation
+  std::array<std::int64_t, kRuns> per_pass{};
+  for (std::int64_t& result : per_pass) {
+    const std::int64_t start = threadCpuNs();
+    std::int64_t passes = 0;
+    do {
+      pass();
+      ++passes;
+    } while (threadCpuNs() - start < kRunNs / kRuns);
+    result = (threadCpuNs() - start) / passes;
+  }
+  std::sort(per_pass.begin(), per_pass.end());
+  return per_pass[kRuns / 2];
+}
+
+struct FloatNormal {
+  float x, y, z;
+};
+
+// The float line pass over a kColourNormal frame: what renderer/edges.h computes, in float.
+struct FloatLinePass {
+  std::vector<FloatNormal> normals;  // unit vectors
+  float depth_unit = 1.0f;           // a key step, in the float depth's unit
+  float jump = 0.0f;                 // the silhouette jump, in the same unit
+  float cos_crease = 0.5f;
+
+  float depthOf(std::uint32_t word) const { return static_cast<float>(word >> 16) * depth_unit; }
+  bool crease(std::uint32_t a, std::uint32_t b) const {
+    const FloatNormal& n = normals[Framebuffer::normalIndexOf(a)];
+    const FloatNormal& m = normals[Framebuffer::normalIndexOf(b)];
+    return std::fabs(n.x * m.x + n.y * m.y + n.z * m.z) < cos_crease;
+  }
+
+  Edge classify(const std::uint32_t* above, const std::uint32_t* row, const std::uint32_t* below,
+                std::int32_t x, std::int32_t width) const {
+    const std::uint32_t word = row[x];
+    const float depth = depthOf(word);
+    bool is_crease = false;
+    const auto look = [&](std::uint32_t neighbour, bool p_draws_ties) {
+      if (neighbour == Framebuffer::kEmpty) return true;
+      const float other = depthOf(neighbour);
+      if (other > depth + jump) return true;
+      if (is_crease || depth > other + jump) return false;
+      if (other > depth || (other == depth && p_draws_ties)) {
+        is_crease = Framebuffer::normalIndexOf(word) != Framebuffer::normalIndexOf(neighbour) && crease(word, neighbour);
+      }
+      return false;
+    };
+    if ((x > 0 && look(row[x - 1], false)) || (x + 1 < width && look(row[x + 1], true)) ||
+        (above != nullptr && look(above[x], false)) || (below != nullptr && look(below[x], true))) {
+      return Edge::kSilhouette;
+    }
+    return is_crease ? Edge::kCrease : Edge::kNone;
+  }
+
+  void run(const FrameView& frame, std::uint8_t* rgb) const {
+    const std::int32_t width = frame.width();
+    const std::uint32_t* pixels = frame.pixels().data();
+    for (std::int32_t y = 0; y < frame.height(); ++y) {
+      const std::uint32_t* row = pixels + static_cast<std::ptrdiff_t>(y) * width;
+      const std::uint32_t* above = y > 0 ? row - width : nullptr;
+      const std::uint32_t* below = y + 1 < frame.height() ? row + width : nullptr;
+      for (std::int32_t x = 0; x < width; ++x, rgb += 3) {
+        const Edge edge = row[x] == Framebuffer::kEmpty ? Edge::kNone : classify(above, row, below, x, width);
+        const std::uint8_t grey = edge == Edge::kSilhouette ? 0x00 : edge == Edge::kCrease ? 0x80 : 0xFF;
+        rgb[0] = rgb[1] = rgb[2] = grey;
+      }
+    }
+  }
+};
+
+int run() {
+  ModelIssue issue;
+  const std::optional<ModelView> model = ModelView::fromEmbedded(*models::defaultModel(), &issue);
+  if (!model || !model->hasNormals()) {
+    std::fprintf(stderr, "line_pass_timing: the default model is invalid or has no normals\n");
+    return 1;
+  }
+  Camera camera;  // 320x240
+  camera.yaw = Angle::fromDegrees(30);
+  const LevelView& level = model->finestLevel();
+  FrameSetup setup;
+  if (buildFrameSetup(camera, level.depth, kDefaultFractionBits, &setup) != CameraError::kNone) {
+    std::fprintf(stderr, "line_pass_timing: camera refused\n");
+    return 1;
+  }
+  FrameStyler styler(*model);
+  StyleOptions options;
+  options.style = Style::kLines;
+  if (styler.setOptions(options) != StyleError::kNone) return 1;
+  Framebuffer frame(camera.width, camera.height);
+  frame.clear(styler.payload());
+  renderLevel(defaultVariant(), level, setup, frame);
+  styler.beginFrame(setup);
+
+  FloatLinePass float_pass;
+  for (int i = 0; i < model->normalCount(); ++i) {
+    const NormalQ14 n = model->normal(i);
+    const float one = 1.0f / 16384.0f;  // Q1.14
+    float_pass.normals.push_back({n.x * one, n.y * one, n.z * one});
+  }
+  const EdgeRule rule = edgeRuleFor(setup, PixelPayload::kColourNormal, nullptr);
+  float_pass.depth_unit = 1.0f / 256.0f;  // any unit: the float pass's depths are float multiples of it
+  float_pass.jump = static_cast<float>(rule.jump) * float_pass.depth_unit;
+  float_pass.cos_crease = std::cos(static_cast<float>(kDefaultCreaseDegrees) * 3.14159265f / 180.0f);
+
+  const std::size_t bytes = static_cast<std::size_t>(camera.width) * static_cast<std::size_t>(camera.height) * 3;
+  std::vector<std::uint8_t> fixed_rgb(bytes), float_rgb(bytes);
+  const std::int64_t fixed_ns = medianNs([&] { styler.resolve(frame, fixed_rgb); });
+  const std::int64_t float_ns = medianNs([&] { float_pass.run(frame, float_rgb.data()); });
+  std::size_t differing = 0;
+  for (std::size_t i = 0; i < bytes; i += 3) differing += fixed_rgb[i] != float_rgb[i] ? 1 : 0;
+  const double pixels = static_cast<double>(camera.width) * camera.height;
+  std::printf("line pass, default model depth %d, 320x240, yaw 30 (CPU time, median of %d runs)\n", level.depth,
+              kRuns);
+  std::printf("  integer: %.1f us (%.1f ns per pixel)\n", fixed_ns / 1e3, fixed_ns / pixels);
+  std::printf("  float:   %.1f us (%.1f ns per pixel)\n", float_ns / 1e3, float_ns / pixels);
+  std::printf("  float / integer: %.2fx; pixels that differ: %zu of %.0f\n", static_cast<double>(float_ns) / fixed_ns,
+              differing, pixels);
+  return 0;
+}
+
+}  // namespace
+}  // namespace octopoint
+
+int main() { return octopoint::run(); }
