@@ -10,24 +10,22 @@
 namespace octopoint::prepare {
 
 CubeFit fitCube(std::span<const std::array<float, 3>> positions, const std::string& path) {
-  std::array<double, 3> low;
-  std::array<double, 3> high;
-  low.fill(std::numeric_limits<double>::infinity());
-  high.fill(-std::numeric_limits<double>::infinity());
-  for (const auto& p : positions) {
-    for (std::size_t axis = 0; axis < 3; ++axis) {
-      low[axis] = std::min(low[axis], static_cast<double>(p[axis]));
-      high[axis] = std::max(high[axis], static_cast<double>(p[axis]));
-    }
-  }
+  Bounds bounds;
+  for (const auto& p : positions) bounds.add({p[0], p[1], p[2]});
+  return fitCube(bounds, path);
+}
+
+CubeFit fitCube(const Bounds& bounds, const std::string& path) {
   CubeFit fit;
-  for (std::size_t axis = 0; axis < 3; ++axis) fit.edge = std::max(fit.edge, high[axis] - low[axis]);
-  if (positions.empty() || !(fit.edge > 0)) {
-    throw PrepareError(path + ": all " + std::to_string(positions.size()) +
+  for (std::size_t axis = 0; axis < 3; ++axis) {
+    fit.edge = std::max(fit.edge, bounds.high[axis] - bounds.low[axis]);
+  }
+  if (bounds.count == 0 || !(fit.edge > 0)) {
+    throw PrepareError(path + ": all " + std::to_string(bounds.count) +
                        " points are at the same position, so they span no volume to voxelize");
   }
   for (std::size_t axis = 0; axis < 3; ++axis) {
-    fit.origin[axis] = (low[axis] + high[axis]) / 2 - fit.edge / 2;
+    fit.origin[axis] = (bounds.low[axis] + bounds.high[axis]) / 2 - fit.edge / 2;
   }
   return fit;
 }
@@ -44,12 +42,6 @@ std::uint64_t cubeEdgePicometres(const CubeFit& fit, double metres_per_scan_unit
                        " m; the model format records cube edges from 1 nm to 18,446 km");
   }
   return static_cast<std::uint64_t>(picometres);
-}
-
-std::uint32_t voxelIndex(double coordinate, double origin, double edge, int depth) {
-  const double cells = std::ldexp(1.0, depth);
-  const double scaled = std::floor((coordinate - origin) / edge * cells);
-  return static_cast<std::uint32_t>(std::clamp(scaled, 0.0, cells - 1));
 }
 
 }  // namespace octopoint::prepare

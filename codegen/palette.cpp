@@ -1,8 +1,10 @@
 #include "codegen/palette.h"
 
 #include <algorithm>
+#include <array>
 #include <cassert>
 #include <limits>
+#include <utility>
 
 namespace octopoint::prepare {
 namespace {
@@ -109,6 +111,19 @@ std::vector<Rgb8> medianCut(std::vector<WeightedColour> colours, int max_colours
   return palette;
 }
 
+// Sorts colours packed 0xRRGGBB: least significant byte first, three counting passes, so that a
+// model of tens of millions of voxels does not wait on a comparison sort.
+void sortPacked(std::vector<std::uint32_t>& packed) {
+  std::vector<std::uint32_t> scratch(packed.size());
+  for (int shift = 0; shift < 24; shift += 8) {
+    std::array<std::size_t, 257> start{};
+    for (std::uint32_t c : packed) ++start[(c >> shift & 0xffu) + 1];
+    for (std::size_t b = 0; b < 256; ++b) start[b + 1] += start[b];
+    for (std::uint32_t c : packed) scratch[start[c >> shift & 0xffu]++] = c;
+    packed.swap(scratch);
+  }
+}
+
 void refineLloyd(std::vector<Rgb8>& palette, std::span<const WeightedColour> colours) {
   for (int pass = 0; pass < kLloydPasses; ++pass) {
     std::vector<std::array<std::uint64_t, 4>> sums(palette.size());  // r, g, b, weight
@@ -129,11 +144,15 @@ void refineLloyd(std::vector<Rgb8>& palette, std::span<const WeightedColour> col
 }  // namespace
 
 Palette Palette::build(std::span<const Rgb8> colours, int max_colours) {
-  assert(max_colours >= 1 && max_colours <= kMaxPaletteColours);
   std::vector<std::uint32_t> packed;
   packed.reserve(colours.size());
   for (const Rgb8& c : colours) packed.push_back(pack(c));
-  std::sort(packed.begin(), packed.end());
+  return buildPacked(std::move(packed), max_colours);
+}
+
+Palette Palette::buildPacked(std::vector<std::uint32_t> packed, int max_colours) {
+  assert(max_colours >= 1 && max_colours <= kMaxPaletteColours);
+  sortPacked(packed);
 
   std::vector<WeightedColour> distinct;
   for (std::size_t i = 0; i < packed.size();) {
@@ -162,6 +181,15 @@ Palette Palette::build(std::span<const Rgb8> colours, int max_colours) {
     palette.known_index_.push_back(static_cast<std::uint8_t>(nearest(palette.colours_, c.rgb)));
   }
   return palette;
+}
+
+Palette::Lookup::Lookup(const Palette& palette)
+    : palette_(palette), index_(std::size_t{1} << 24, 0), known_((std::size_t{1} << 24) / 64, 0) {
+  for (std::size_t i = 0; i < palette.known_colours_.size(); ++i) {
+    const std::uint32_t p = palette.known_colours_[i];
+    index_[p] = palette.known_index_[i];
+    known_[p >> 6] |= std::uint64_t{1} << (p & 63);
+  }
 }
 
 std::uint8_t Palette::indexOf(const Rgb8& colour) const {

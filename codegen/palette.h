@@ -17,10 +17,30 @@ class Palette {
  public:
   // `colours` may repeat; each occurrence counts once in the weighting.
   static Palette build(std::span<const Rgb8> colours, int max_colours = kMaxPaletteColours);
+  // The same from colours packed 0xRRGGBB (which it sorts): what the streamed preparer collects.
+  static Palette buildPacked(std::vector<std::uint32_t> packed,
+                             int max_colours = kMaxPaletteColours);
 
   const std::vector<Rgb8>& colours() const { return colours_; }
   // The index of the palette colour nearest to `colour` (squared RGB distance).
   std::uint8_t indexOf(const Rgb8& colour) const;
+
+  // indexOf for millions of colours (a large model's leaves): a direct table over all 2^24
+  // colours (18 MB) answers those build() saw with one read instead of a binary search.
+  class Lookup {
+   public:
+    explicit Lookup(const Palette& palette);
+    std::uint8_t indexOf(const Rgb8& colour) const {
+      const std::uint32_t p =
+          std::uint32_t{colour[0]} << 16 | std::uint32_t{colour[1]} << 8 | colour[2];
+      return (known_[p >> 6] >> (p & 63) & 1u) ? index_[p] : palette_.indexOf(colour);
+    }
+
+   private:
+    const Palette& palette_;
+    std::vector<std::uint8_t> index_;
+    std::vector<std::uint64_t> known_;  // one bit per colour
+  };
 
  private:
   std::vector<Rgb8> colours_;

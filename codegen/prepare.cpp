@@ -1,10 +1,11 @@
 #include "codegen/prepare.h"
 
+#include <algorithm>
 #include <array>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
-#include <limits>
+#include <optional>
 
 #include "cli/real_numbers.h"
 #include "cli/text.h"
@@ -13,42 +14,24 @@
 #include "codegen/octree_encoder.h"
 #include "codegen/outlier_filter.h"
 #include "codegen/palette.h"
+#include "codegen/point_source.h"
 #include "codegen/prepare_error.h"
 #include "codegen/progress.h"
+#include "codegen/streamed_prepare.h"
 #include "codegen/visibility.h"
 #include "codegen/voxelizer.h"
 
 namespace octopoint::prepare {
-namespace {
-
-// Rec. 601 luma in 8.8 fixed point (77 + 150 + 29 = 256).
-Rgb8 toGrey(const Rgb8& c) {
-  const auto grey = static_cast<std::uint8_t>((77 * c[0] + 150 * c[1] + 29 * c[2] + 128) >> 8);
-  return {grey, grey, grey};
-}
-
-// Keeps the voxels with visible[i] != 0, in order.
-VoxelSet keepVisible(const VoxelSet& voxels, const std::vector<std::uint8_t>& visible) {
-  VoxelSet kept;
-  kept.depth = voxels.depth;
-  for (std::size_t i = 0; i < voxels.keys.size(); ++i) {
-    if (!visible[i]) continue;
-    kept.keys.push_back(voxels.keys[i]);
-    kept.colours.push_back(voxels.colours[i]);
-    if (!voxels.normals.empty()) kept.normals.push_back(voxels.normals[i]);
-  }
-  return kept;
-}
-
-}  // namespace
 
 Scan cropScan(const Scan& scan, const CropBox& box, const std::string& scan_path) {
   std::vector<std::uint8_t> inside(scan.positions.size());
   for (std::size_t i = 0; i < scan.positions.size(); ++i) {
     const auto& p = scan.positions[i];
     bool in = true;
-    for (std::size_t axis = 0; axis < 3; ++axis)
-      in = in && p[axis] >= box.low[axis] && p[axis] <= box.high[axis];
+    for (std::size_t axis = 0; axis < 3; ++axis) {
+      in = in && p[axis] >= static_cast<float>(box.low[axis]) &&
+           p[axis] <= static_cast<float>(box.high[axis]);
+    }
     inside[i] = in;
   }
   Scan cropped = keepPoints(scan, inside);
@@ -67,11 +50,11 @@ CropBox parseCropBox(const std::string& flag, const std::string& text) {
     if (comma == std::string::npos || (i + 1 == v.size() && text.find(',', at) != std::string::npos)) {
       throw PrepareError(flag + ": " + cli::inQuotes(text) + " is not six comma-separated numbers X0,Y0,Z0,X1,Y1,Z1");
     }
-    v[i] = cli::parseReal(flag, std::string_view(text).substr(at, comma - at), -kMaxAbsCoordinate, kMaxAbsCoordinate);
+    v[i] = cli::parseReal(flag, std::string_view(text).substr(at, comma - at), -kMaxCropCoordinate,
+                          kMaxCropCoordinate);
     at = comma + 1;
   }
-  const CropBox box{{static_cast<float>(v[0]), static_cast<float>(v[1]), static_cast<float>(v[2])},
-                    {static_cast<float>(v[3]), static_cast<float>(v[4]), static_cast<float>(v[5])}};
+  const CropBox box{{v[0], v[1], v[2]}, {v[3], v[4], v[5]}};
   for (std::size_t axis = 0; axis < 3; ++axis) {
     if (!(box.low[axis] < box.high[axis])) {
       throw PrepareError(flag + ": " + cli::inQuotes(text) + " is empty: each lower bound must be below its upper bound");
@@ -102,7 +85,30 @@ Scan modelPoints(const Scan& full_scan, const std::string& scan_path, const Prep
   return scan;
 }
 
-PreparedModel prepareModel(const Scan& full_scan, const std::string& scan_path, const PrepareOptions& options) {
+namespace {
+
+// Rec. 601 luma in 8.8 fixed point (77 + 150 + 29 = 256).
+Rgb8 toGrey(const Rgb8& c) {
+  const auto grey = static_cast<std::uint8_t>((77 * c[0] + 150 * c[1] + 29 * c[2] + 128) >> 8);
+  return {grey, grey, grey};
+}
+
+// Keeps the voxels with visible[i] != 0, in order.
+VoxelSet keepVisible(const VoxelSet& voxels, const std::vector<std::uint8_t>& visible) {
+  VoxelSet kept;
+  kept.depth = voxels.depth;
+  for (std::size_t i = 0; i < voxels.keys.size(); ++i) {
+    if (!visible[i]) continue;
+    kept.keys.push_back(voxels.keys[i]);
+    kept.colours.push_back(voxels.colours[i]);
+    if (!voxels.normals.empty()) kept.normals.push_back(voxels.normals[i]);
+  }
+  return kept;
+}
+
+// The whole-scan pipeline, kept for models with normals: estimating a point's normal needs its
+// neighbours, which the streamed preparer's bins do not keep together.
+PreparedModel prepareWithNormals(const Scan& full_scan, const std::string& scan_path, const PrepareOptions& options) {
   Scan scan = cleanScan(full_scan, scan_path, options);
   const auto normals_start = std::chrono::steady_clock::now();
   int normal_neighbours = 0;
@@ -196,6 +202,22 @@ PreparedModel prepareModel(const Scan& full_scan, const std::string& scan_path, 
     model.levels.push_back(std::move(level));
   }
   return model;
+}
+
+}  // namespace
+
+PreparedModel prepareModel(const Scan& full_scan, const std::string& scan_path,
+                           const PrepareOptions& options, unsigned threads) {
+  if (options.normals) return prepareWithNormals(full_scan, scan_path, options);
+  const Scan scan = modelPoints(full_scan, scan_path, options);
+  PrepareOptions streamed = options;  // the points are cropped, cleaned and turned already
+  streamed.crop.reset();
+  streamed.outliers.reset();
+  streamed.axes = ScanAxes::kYDown;
+  StreamOptions stream;
+  stream.threads = threads;
+  stream.memory_bytes = std::max<std::uint64_t>(kDefaultMemoryBytes, 64 * scan.positions.size());
+  return prepareFromSource(*memorySource(scan), scan_path, streamed, stream);
 }
 
 }  // namespace octopoint::prepare

@@ -18,10 +18,15 @@ namespace octopoint::prepare {
 
 // An axis-aligned box in scan units; points outside it are dropped before fitting the cube, which
 // removes the far-away junk and the background a range scan sees around its subject.
+// The corners are kept as given: scans of float coordinates (PCD, PLY) are compared with the box
+// rounded to float, as they always were; LAS coordinates, doubles of any size (UTM northings reach
+// 10^7), with the box itself.
 struct CropBox {
-  std::array<float, 3> low{};
-  std::array<float, 3> high{};
+  std::array<double, 3> low{};
+  std::array<double, 3> high{};
 };
+// The largest |corner| a crop box may have: past any LAS coordinate (codegen/las_reader.h).
+inline constexpr double kMaxCropCoordinate = 1e13;
 
 // How the scan's axes are laid out. The model is always stored in the sensor frame: x right, y down,
 // z away from the sensor (what PCL's OpenNI grabber and OpenCV use), so that the identity camera
@@ -78,7 +83,11 @@ Scan modelPoints(const Scan& scan, const std::string& scan_path, const PrepareOp
 Scan cleanScan(const Scan& scan, const std::string& scan_path, const PrepareOptions& options);
 void turnAxes(Scan& scan, ScanAxes axes);
 
-// Throws PrepareError (naming `scan_path`) when the scan cannot be made into a model.
-PreparedModel prepareModel(const Scan& scan, const std::string& scan_path, const PrepareOptions& options);
+// Throws PrepareError (naming `scan_path`) when the scan cannot be made into a model. The scan is
+// in memory already, so it is prepared in memory (codegen/streamed_prepare.h, with a budget that
+// holds it all) on `threads` threads (0: every core); the output does not depend on their number.
+// With normals (options.normals) it runs the whole-scan pipeline normal estimation was written on.
+PreparedModel prepareModel(const Scan& scan, const std::string& scan_path,
+                           const PrepareOptions& options, unsigned threads = 0);
 
 }  // namespace octopoint::prepare

@@ -1,9 +1,12 @@
 // octopoint-prepare: a range scan in, a model out (C++ sources to compile in, and a `.oct` file).
 #include <algorithm>
+#include <cctype>
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
+#include <future>
 #include <iostream>
+#include <memory>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -19,26 +22,37 @@
 #include "codegen/level_voxels.h"
 #include "codegen/model_name.h"
 #include "codegen/model_writer.h"
+#include "codegen/point_source.h"
 #include "codegen/prepare.h"
 #include "codegen/prepare_error.h"
+#include "codegen/progress.h"
 #include "codegen/scan_loader.h"
 #include "codegen/scene.h"
 #include "codegen/scene_views.h"
+#include "codegen/streamed_prepare.h"
 #include "renderer/model_format.h"
 
 namespace {
 
 using octopoint::prepare::PrepareError;
 
+constexpr std::int64_t kMaxMemoryMegabytes = std::int64_t{1} << 20;  // a terabyte
+constexpr int kMaxThreads = 1024;
+
 constexpr const char* kUsage = R"(usage: octopoint-prepare SCAN -o OUTDIR --name NAME [options]
        octopoint-prepare SCAN --scene SCENE.json -o OUTDIR --name NAME
 
-Turns a range scan (.pcd or .ply: XYZ, XYZRGB/RGBA or XYZI, organized or not) into an octopoint
-model: OUTDIR/NAME.h, OUTDIR/NAME.cpp and OUTDIR/NAME_depthD.cpp (const arrays an app compiles in)
-and OUTDIR/NAME.oct (the same model as one binary file, for octopoint-render --file).
+Turns a range scan (.las, .pcd or .ply: XYZ, XYZRGB/RGBA or XYZI, organized or not) into an
+octopoint model: OUTDIR/NAME.h, OUTDIR/NAME.cpp and OUTDIR/NAME_depthD.cpp (const arrays an app
+compiles in) and OUTDIR/NAME.oct (the same model as one binary file, for octopoint-render --file).
+LAS (1.0 to 1.4, point formats 0 to 10) and binary PCD/PLY are streamed: any number of points in
+bounded memory, on every core; other PCD/PLY files are loaded whole through PCL. The output is the
+same byte for byte whatever --memory and --threads (docs/preparer.md).
 
-  SCAN                  the scan to read (a regular file of at most 1 GiB); points with a NaN
-                        or infinite coordinate are dropped
+  SCAN                  the scan to read: a regular file, streamed ones of at most 4 TiB, those
+                        PCL loads of at most 1 GiB; points with a NaN or infinite coordinate are
+                        dropped. LAS colour is used when the format has it and it is not all 0
+                        (8- or 16-bit, detected), else the intensity; compressed LAZ is refused
   -o, --output OUTDIR   where to write (created if missing); all files appear or none do, also
                         when interrupted (SIGINT, SIGTERM); existing outputs must be regular files.
                         A rerun replaces NAME's set: NAME_depthD.cpp files of an earlier run that
@@ -84,6 +98,14 @@ and OUTDIR/NAME.oct (the same model as one binary file, for octopoint-render --f
   --chunk-bytes N       with --chunked: cut each depth into chunks of about N bytes or more on
                         average, 256..16777216 (default 2048, measured in docs/streaming.md);
                         larger when needed to keep the file within the version-1 size
+  --memory MB           memory budget for the points in flight (default 1024, 1..1048576):
+                        beyond it they go to temporary files; the model itself comes on top
+  --threads N           threads to use (default: every core; 1..1024)
+  --temp-dir DIR        where the temporary files go (default: $TMPDIR, else /tmp); they are
+                        deleted as soon as they are made, so nothing is left behind
+  --progress            show progress on stderr (phase, points done, points/s, time left) even
+                        when stderr is not a terminal; on a terminal it shows by itself for
+                        steps longer than a second
   -h, --help            show this help
 
 Prints, per depth: voxels, node bytes, colour bytes and bits per point; with a scene also the
@@ -98,6 +120,7 @@ struct Arguments {
   octopoint::prepare::EmitOptions emit;
   bool chunked = false;
   octopoint::prepare::ChunkedOptions chunking;
+  octopoint::prepare::StreamOptions stream;
   std::vector<std::string> model_flags;  // flags a scene file replaces, to refuse them beside --scene
   octopoint::prepare::PrepareOptions options = defaultOptions();
 
@@ -159,6 +182,16 @@ std::optional<Arguments> parseArguments(int argc, char** argv) {
     } else if (reader.is("--chunk-bytes")) {
       args.chunking.target_chunk_bytes =
           static_cast<std::size_t>(octopoint::cli::parseInteger(reader.name(), reader.value(), 256, 1 << 24));
+    } else if (reader.is("--memory")) {
+      args.stream.memory_bytes = static_cast<std::uint64_t>(
+          octopoint::cli::parseInteger(reader.name(), reader.value(), 1, kMaxMemoryMegabytes)) << 20;
+    } else if (reader.is("--threads")) {
+      args.stream.threads = static_cast<unsigned>(octopoint::cli::parseInt(reader.name(), reader.value(), 1, kMaxThreads));
+    } else if (reader.is("--temp-dir")) {
+      args.stream.temp_dir = reader.value();
+    } else if (reader.is("--progress")) {
+      reader.noValue();
+      octopoint::prepare::Progress::force(true);
     } else if (reader.is("--depths")) {
       args.model_flags.push_back(reader.name());
       args.options.depths = parseDepths(reader.name(), reader.value());
@@ -254,6 +287,22 @@ void checkOutputs(const Arguments& args, const octopoint::prepare::PrepareOption
   for (const std::string& name : names) octopoint::cli::checkOutputFile(directory / name);
 }
 
+// One line on how a streamed scan was read.
+std::string describeStream(const octopoint::prepare::SourceInfo& info, const octopoint::prepare::PrepareSummary& summary,
+                           const octopoint::prepare::StreamOptions& stream) {
+  const auto& phase = summary.phase_seconds;
+  char line[768];
+  std::snprintf(line, sizeof line,
+                "  streamed %s%s%s: %llu points on %u threads in %.2f s (%.2f M points/s; bounds %.2f s, binning "
+                "%.2f s, voxelizing %.2f s, palette %.2f s), budget %llu MB, %llu MB spilled to disk\n",
+                info.format.c_str(), summary.colour_note.empty() ? "" : ", ", summary.colour_note.c_str(),
+                static_cast<unsigned long long>(summary.points_in_file), summary.threads, summary.seconds,
+                static_cast<double>(summary.points_in_file) / summary.seconds / 1e6, phase[0], phase[1], phase[2],
+                phase[3], static_cast<unsigned long long>(stream.memory_bytes >> 20),
+                static_cast<unsigned long long>(summary.spilled_bytes >> 20));
+  return line;
+}
+
 int run(int argc, char** argv) {
   const auto start = std::chrono::steady_clock::now();
   const std::optional<Arguments> args = parseArguments(argc, argv);
@@ -270,26 +319,56 @@ int run(int argc, char** argv) {
                        "scene's \"normals\") or write a version 2 file");
   }
   checkOutputs(*args, options);
-  const Scan scan = loadScan(args->scan);
   // The generated files name the exact command that made them, so anyone can regenerate them.
   options.source_description = std::filesystem::path(args->scan).filename().string() + " by: octopoint-prepare";
   for (int i = 1; i < argc; ++i) options.source_description += std::string(" ") + argv[i];
-  PreparedModel model = prepareModel(scan, args->scan, options);
+  PrepareSummary summary;
+  PreparedModel model;
+  std::string stream_line;
+  if (options.outliers || options.normals) {
+    // Outlier removal and normal estimation look at each point's neighbours, so the scan is loaded
+    // whole through PCL.
+    std::string extension = std::filesystem::path(args->scan).extension().string();
+    for (char& c : extension) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    if (extension == ".las" || extension == ".laz") {
+      const char* what = options.outliers ? "outlier removal (the scene's \"outliers\")" : "normal estimation (--normals)";
+      throw PrepareError(args->scan + ": " + what + " needs the whole scan in memory, which octopoint-prepare does "
+                         "for .pcd and .ply only");
+    }
+    const Scan scan = loadScan(args->scan);
+    model = prepareModel(scan, args->scan, options, args->stream.threads);
+    summary.finite_points = scan.positions.size();
+    summary.dropped_non_finite = scan.dropped_non_finite;
+    summary.shading = scan.shading;
+  } else {
+    const std::unique_ptr<PointSource> source = openPointSource(args->scan);
+    model = prepareFromSource(*source, args->scan, options, args->stream, &summary);
+    if (source->info().streamed) stream_line = describeStream(source->info(), summary, args->stream);
+  }
   // A chunked file refines each depth from the one above it, so its depths must be nested; the
   // sources get the same voxels, so that both draw alike.
   const std::size_t nesting_added = args->chunked ? nestLevels(model) : 0;
   ChunkedLayout layout;
 
+  const auto writing = std::chrono::steady_clock::now();
+  // The .oct image is made on a second thread while the sources are: both only read the model.
+  std::future<std::vector<std::uint8_t>> image_made =
+      std::async(std::launch::async, [&] {
+        return args->chunked ? serializeChunkedModel(model, args->chunking, &layout) : serializeModel(model);
+      });
   std::vector<OutputFile> files = emitSources(model, args->emit);
-  const std::vector<std::uint8_t> image = args->chunked ? serializeChunkedModel(model, args->chunking, &layout) : serializeModel(model);
+  const std::vector<std::uint8_t> image = image_made.get();
   files.push_back({model.name + ".oct", std::string(image.begin(), image.end())});
   // A rerun replaces the model's whole set: level sources of depths it leaves out go too.
   octopoint::cli::writeFilesAtomically(args->output_dir, files, staleLevelSources(args->output_dir, model.name, files));
+  const double writing_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - writing).count();
 
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  std::printf("%s: %zu points (%zu dropped as non-finite), %s, %zu palette colours, cube edge %.4g m\n",
-              args->scan.c_str(), scan.positions.size(), scan.dropped_non_finite,
-              shadingName(scan.shading), model.palette.size(), static_cast<double>(model.cube_edge_pm) * 1e-12);
+  std::printf("%s: %llu points (%llu dropped as non-finite), %s, %zu palette colours, cube edge %.4g m\n",
+              args->scan.c_str(), static_cast<unsigned long long>(summary.finite_points),
+              static_cast<unsigned long long>(summary.dropped_non_finite), shadingName(summary.shading),
+              model.palette.size(), static_cast<double>(model.cube_edge_pm) * 1e-12);
+  std::fputs(stream_line.c_str(), stdout);
   if (!depth_reason.empty()) std::printf("%s\n", depth_reason.c_str());
   if (!model.sparse_depths_dropped.empty()) {
     std::printf("  left out depths %s: finer than the scan samples densely (under %zux the voxels of the depth "
@@ -332,8 +411,9 @@ int run(int argc, char** argv) {
                   layout.chunks[j], layout.region_levels[j], layout.chunk_bytes[j]);
     }
   }
-  std::printf("wrote %s/%s.{h,cpp,oct} (%zu bytes .oct%s) in %.2f s\n", args->output_dir.c_str(),
-              model.name.c_str(), image.size(), args->chunked ? ", chunked" : "", seconds);
+  std::printf("wrote %s/%s.{h,cpp,oct} (%zu bytes .oct%s) in %.2f s (writing the files %.2f s)\n",
+              args->output_dir.c_str(), model.name.c_str(), image.size(), args->chunked ? ", chunked" : "", seconds,
+              writing_seconds);
   return 0;
 }
 

@@ -340,6 +340,8 @@ ValueType plyType(std::string_view type) {
 
 }  // namespace
 
+std::uint64_t plyTypeBytes(std::string_view type) { return plyType(type).size; }
+
 // PLY: http://paulbourke.net/dataformats/ply/
 // Returns the declared vertex count after checking the body can hold every declared element
 // (lists counted at their smallest, zero items, which still bounds what PCL may allocate).
@@ -440,6 +442,16 @@ std::uint64_t checkPlyHeader(const fs::path& path, std::uint64_t file_size) {
          data_where);
   }
   return vertex->count;
+}
+
+HeaderWords readHeaderWords(const fs::path& path, std::uint64_t file_size,
+                            std::string_view last_keyword) {
+  HeaderWords words;
+  const std::string head = readHead(path, file_size);  // the lines' words point into it
+  for (const HeaderLine& line : headerLines(path, head, last_keyword, words.body_offset)) {
+    words.lines.emplace_back(line.words.begin(), line.words.end());
+  }
+  return words;
 }
 
 }  // namespace octopoint::prepare

@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <string>
 #include <string_view>
+#include <vector>
 
 namespace octopoint::prepare {
 
@@ -23,5 +24,18 @@ std::string printable(std::string_view text);
 // malformed or declares more data than the file of `file_size` bytes can hold.
 std::uint64_t checkPcdHeader(const std::filesystem::path& path, std::uint64_t file_size);
 std::uint64_t checkPlyHeader(const std::filesystem::path& path, std::uint64_t file_size);
+
+// The bytes of a PLY scalar type ("float", "uchar", ...); 0 for an unknown name.
+std::uint64_t plyTypeBytes(std::string_view type);
+
+// The words of every header line up to and including the one whose first word is `last_keyword`
+// ("DATA" for PCD, "end_header" for PLY), and the byte where the body starts: for the streamed
+// readers (codegen/binary_scan_source.cpp), once the check above has accepted the header.
+struct HeaderWords {
+  std::vector<std::vector<std::string>> lines;
+  std::uint64_t body_offset = 0;
+};
+HeaderWords readHeaderWords(const std::filesystem::path& path, std::uint64_t file_size,
+                            std::string_view last_keyword);
 
 }  // namespace octopoint::prepare

@@ -17,8 +17,8 @@
 #include "codegen/scan_loader.h"
 
 #include <pcl/PCLPointCloud2.h>
-#include <pcl/conversions.h>
 #include <pcl/console/print.h>
+#include <pcl/conversions.h>
 #include <pcl/io/pcd_io.h>
 #include <pcl/io/ply_io.h>
 #include <pcl/point_cloud.h>
@@ -39,6 +39,7 @@
 #include <system_error>
 
 #include "cli/input_file.h"
+#include "codegen/intensity_grey.h"
 #include "codegen/prepare_error.h"
 #include "codegen/scan_header_check.h"
 
@@ -120,37 +121,29 @@ std::array<std::uint8_t, 3> unpackRgb(std::uint32_t rgba) {
           static_cast<std::uint8_t>(rgba)};
 }
 
-// Nearest-rank percentile of `values` (which it reorders), q in [0, 1].
+// Nearest-rank quantile of `values` (which it reorders), q in [0, 1].
 float percentile(std::vector<float>& values, double q) {
-  const auto rank = static_cast<std::size_t>(q * static_cast<double>(values.size() - 1) + 0.5);
+  const auto rank = static_cast<std::size_t>(quantileRank(values.size(), q));
   std::nth_element(values.begin(), values.begin() + static_cast<std::ptrdiff_t>(rank), values.end());
   return values[rank];
 }
 
-// Intensity to grey: 1st..99th percentile -> 0..255, clamped (a few hot returns would otherwise
-// squeeze everything else into the dark end). Non-finite intensities become black.
+// Intensity to grey (codegen/intensity_grey.h), with the percentiles found by sorting.
 std::vector<std::array<std::uint8_t, 3>> intensityToGrey(const std::vector<float>& intensities) {
   std::vector<float> finite;
   finite.reserve(intensities.size());
   for (float v : intensities) {
     if (std::isfinite(v)) finite.push_back(v);
   }
-  float low = 0.0f;
-  float high = 0.0f;
+  IntensityRange range;
   if (!finite.empty()) {
-    low = percentile(finite, 0.01);
-    high = percentile(finite, 0.99);
+    range.low = percentile(finite, kLowIntensityQuantile);
+    range.high = percentile(finite, kHighIntensityQuantile);
   }
   std::vector<std::array<std::uint8_t, 3>> greys;
   greys.reserve(intensities.size());
   for (float v : intensities) {
-    double grey = 0.0;
-    if (std::isfinite(v)) {
-      // A constant intensity carries no shading: show it mid-grey rather than black.
-      grey = high > low ? (static_cast<double>(v) - low) / (static_cast<double>(high) - low) * 255.0
-                        : 128.0;
-    }
-    const auto level = static_cast<std::uint8_t>(std::lround(std::clamp(grey, 0.0, 255.0)));
+    const std::uint8_t level = intensityGrey(v, range);
     greys.push_back({level, level, level});
   }
   return greys;

@@ -78,11 +78,11 @@ class SceneReader {
   std::string path_;
 };
 
-std::array<float, 3> point(const SceneReader& reader, const json& value, const std::string& key) {
+std::array<double, 3> point(const SceneReader& reader, const json& value, const std::string& key) {
   if (!value.is_array() || value.size() != 3) reader.fail(key, "expected [x, y, z]");
-  std::array<float, 3> p{};
+  std::array<double, 3> p{};
   for (std::size_t i = 0; i < 3; ++i) {
-    p[i] = static_cast<float>(reader.number(value[i], key, -kMaxAbsCoordinate, kMaxAbsCoordinate));
+    p[i] = reader.number(value[i], key, -kMaxCropCoordinate, kMaxCropCoordinate);
   }
   return p;
 }

@@ -1,8 +1,10 @@
 // The C++ sources of a prepared model: const arrays that an app compiles in, so drawing the model
 // needs no file I/O. Bytes are written either as decimal initialiser lists or as string literals
 // (EmitStyle; docs/embedding.md compares their compile time and memory).
+#include <cstdio>
 #include <sstream>
 #include <string_view>
+#include <string>
 
 #include "codegen/model_writer.h"
 #include "renderer/model_format.h"
@@ -12,50 +14,60 @@ namespace {
 
 constexpr std::size_t kLineWidth = 100;
 
-void appendByteList(std::ostringstream& out, const std::vector<std::uint8_t>& bytes) {
+// The arrays are written into strings reserved up front, not through a stream: a model of tens of
+// megabytes would otherwise spend seconds growing and copying the stream's buffer.
+void appendByteList(std::string& text, const std::vector<std::uint8_t>& bytes) {
+  text.reserve(text.size() + bytes.size() * 4 + bytes.size() / kLineWidth * 6 + 8);
+  text += "    ";
   std::size_t column = 0;
-  out << "    ";
   for (std::uint8_t byte : bytes) {
-    const std::string item = std::to_string(byte) + ",";
-    if (column + item.size() > kLineWidth) {
-      out << "\n    ";
+    char item[5];
+    const int size = std::snprintf(item, sizeof item, "%u,", static_cast<unsigned>(byte));
+    if (column + static_cast<std::size_t>(size) > kLineWidth) {
+      text += "\n    ";
       column = 0;
     }
-    out << item;
-    column += item.size();
+    text.append(item, static_cast<std::size_t>(size));
+    column += static_cast<std::size_t>(size);
   }
-  out << "\n";
+  text += "\n";
 }
 
 // One literal piece per line, each far below kMaxLiteralPiece. Printable characters stand for
 // themselves; the rest are three-digit octal escapes (a fixed length, so a following digit is never
 // read as part of the escape). '?' is escaped too, so no trigraph can form for older compilers.
-void appendStringPieces(std::ostringstream& out, const std::vector<std::uint8_t>& bytes) {
+void appendStringPieces(std::string& text, const std::vector<std::uint8_t>& bytes) {
   static_assert(kLineWidth < kMaxLiteralPiece);
+  // Written through a pointer into room made beforehand: at most 4 characters per byte, and a
+  // 7-character line break every kLineWidth - 4 or more characters.
+  const std::size_t start = text.size();
+  const std::size_t most = bytes.size() * 4;
+  text.resize(start + most + (most / (kLineWidth - 4) + 2) * 7 + 8);
+  char* out = text.data() + start;
+  const auto put = [&out](const char* chars, std::size_t n) {
+    for (std::size_t i = 0; i < n; ++i) *out++ = chars[i];
+  };
+  put("    \"", 5);
   std::size_t column = 0;
-  out << "    \"";
   for (std::uint8_t byte : bytes) {
-    char item[5];
     const bool plain = byte >= 0x20 && byte < 0x7f && byte != '"' && byte != '\\' && byte != '?';
-    if (plain) {
-      item[0] = static_cast<char>(byte);
-      item[1] = '\0';
-    } else {
-      item[0] = '\\';
-      item[1] = static_cast<char>('0' + (byte >> 6));
-      item[2] = static_cast<char>('0' + ((byte >> 3) & 7));
-      item[3] = static_cast<char>('0' + (byte & 7));
-      item[4] = '\0';
-    }
     const std::size_t size = plain ? 1 : 4;
     if (column + size > kLineWidth) {
-      out << "\"\n    \"";
+      put("\"\n    \"", 7);
       column = 0;
     }
-    out << item;
+    if (plain) {
+      *out++ = static_cast<char>(byte);
+    } else {
+      const char escape[4] = {'\\', static_cast<char>('0' + (byte >> 6)),
+                              static_cast<char>('0' + ((byte >> 3) & 7)),
+                              static_cast<char>('0' + (byte & 7))};
+      put(escape, 4);
+    }
     column += size;
   }
-  out << "\"\n";
+  put("\"\n", 2);
+  text.resize(static_cast<std::size_t>(out - text.data()));
 }
 
 // A string literal carries a terminating NUL, so its array is one byte longer than the data.
@@ -63,17 +75,18 @@ std::size_t storedSize(std::size_t bytes, const EmitOptions& options) {
   return options.style == EmitStyle::kStrings ? bytes + 1 : bytes;
 }
 
-void appendArray(std::ostringstream& out, const std::string& name, const std::vector<std::uint8_t>& bytes,
+void appendArray(std::string& out, const std::string& name, const std::vector<std::uint8_t>& bytes,
                  const EmitOptions& options) {
-  out << "extern const ::std::uint8_t " << name << "[" << storedSize(bytes.size(), options) << "] =";
+  out += "extern const ::std::uint8_t " + name + "[" +
+         std::to_string(storedSize(bytes.size(), options)) + "] =";
   if (options.style == EmitStyle::kStrings) {
-    out << "\n";
+    out += "\n";
     appendStringPieces(out, bytes);
-    out << "    ;\n";
+    out += "    ;\n";
   } else {
-    out << " {\n";
+    out += " {\n";
     appendByteList(out, bytes);
-    out << "};\n";
+    out += "};\n";
   }
 }
 
@@ -127,13 +140,13 @@ std::string header(const PreparedModel& model) {
   return out.str();
 }
 
-void appendLevelArrays(std::ostringstream& out, const PreparedModel& model, const PreparedLevel& level,
+void appendLevelArrays(std::string& out, const PreparedModel& model, const PreparedLevel& level,
                        const EmitOptions& options) {
   appendArray(out, arrayName(model, level, "nodes"), level.nodes, options);
-  out << "\n";
+  out += "\n";
   appendArray(out, arrayName(model, level, "leaves"), level.leaves, options);
   if (!level.normals.empty()) {
-    out << "\n";
+    out += "\n";
     appendArray(out, arrayName(model, level, "normals"), level.normals, options);
   }
 }
@@ -162,8 +175,9 @@ std::string descriptorSource(const PreparedModel& model, const EmitOptions& opti
       << "namespace octopoint::models {\n\n";
   for (const PreparedLevel& level : model.levels) {
     if (options.single_source) {
-      appendLevelArrays(out, model, level, options);
-      out << "\n";
+      std::string arrays;
+      appendLevelArrays(arrays, model, level, options);
+      out << arrays << "\n";
       continue;
     }
     out << "extern const ::std::uint8_t " << arrayName(model, level, "nodes") << "["
@@ -179,8 +193,10 @@ std::string descriptorSource(const PreparedModel& model, const EmitOptions& opti
   for (std::size_t i = 0; i < model.palette.size(); ++i) {
     for (std::size_t ch = 0; ch < 3; ++ch) palette_bytes[3 * i + ch] = model.palette[i][ch];
   }
-  out << "\nnamespace {\n\nconst ::std::uint8_t palette_[" << palette_bytes.size() << "] = {\n";
-  appendByteList(out, palette_bytes);
+  std::string palette_list;
+  appendByteList(palette_list, palette_bytes);
+  out << "\nnamespace {\n\nconst ::std::uint8_t palette_[" << palette_bytes.size() << "] = {\n"
+      << palette_list;
   out << "};\n";
   const bool with_normals = !model.normal_palette.empty();
   if (with_normals) appendNormalPalette(out, model);
@@ -206,11 +222,10 @@ std::string descriptorSource(const PreparedModel& model, const EmitOptions& opti
 }
 
 std::string levelSource(const PreparedModel& model, const PreparedLevel& level, const EmitOptions& options) {
-  std::ostringstream out;
-  out << banner(model) << "#include <cstdint>\n\nnamespace octopoint::models {\n\n";
+  std::string out = banner(model) + "#include <cstdint>\n\nnamespace octopoint::models {\n\n";
   appendLevelArrays(out, model, level, options);
-  out << "\n}  // namespace octopoint::models\n";
-  return out.str();
+  out += "\n}  // namespace octopoint::models\n";
+  return out;
 }
 
 }  // namespace

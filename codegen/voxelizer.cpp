@@ -20,11 +20,8 @@ void applyDepthShade(VoxelSet& voxels) {
     near = std::min(near, z);
     far = std::max(far, z);
   }
-  const std::uint32_t span = std::max<std::uint32_t>(far - near, 1);
   for (std::size_t i = 0; i < voxels.keys.size(); ++i) {
-    const std::uint32_t z = mortonDecode(voxels.keys[i], voxels.depth)[2];
-    const auto grey = static_cast<std::uint8_t>(
-        kNearShade - static_cast<int>((z - near) * static_cast<std::uint64_t>(kNearShade - kFarShade) / span));
+    const std::uint8_t grey = depthShade(mortonDecode(voxels.keys[i], voxels.depth)[2], near, far);
     voxels.colours[i] = {grey, grey, grey};
   }
 }
@@ -79,13 +76,11 @@ Vec3f voxelNormal(const std::vector<Vec3f>& normals, const Vec3f& fallback) {
 
 }  // namespace
 
-std::uint64_t mortonKey(std::uint32_t x, std::uint32_t y, std::uint32_t z, int depth) {
-  std::uint64_t key = 0;
-  for (int bit = depth - 1; bit >= 0; --bit) {
-    const std::uint64_t digit = ((x >> bit) & 1u) << 2 | ((y >> bit) & 1u) << 1 | ((z >> bit) & 1u);
-    key = key << 3 | digit;
-  }
-  return key;
+std::uint8_t depthShade(std::uint32_t z, std::uint32_t near, std::uint32_t far) {
+  const std::uint32_t span = std::max<std::uint32_t>(far - near, 1);
+  return static_cast<std::uint8_t>(
+      kNearShade -
+      static_cast<int>((z - near) * static_cast<std::uint64_t>(kNearShade - kFarShade) / span));
 }
 
 std::array<std::uint32_t, 3> mortonDecode(std::uint64_t key, int depth) {

@@ -6,6 +6,8 @@
 //  - chunked: the default model as chunked files (format version 3) of a few depth sets, read
 //    whole (first byte 0), and splices into the harness's own model at the head, a record table
 //    and a chunk (first byte 3: spliced, CRCs recomputed). See fuzz/chunked_fuzzer.cpp.
+//  - las: a small LAS file of every point format, and 1.0, 1.1 and 1.4 with VLRs, EVLRs and extra
+//    bytes (tests/tools/las_writer.h), so the fuzzer starts from every layout the reader knows.
 // usage: make_fuzz_corpus OUTDIR
 #include <cstdio>
 #include <cstring>
@@ -15,6 +17,8 @@
 #include <vector>
 
 #include "fuzz/model_images.h"
+#include "tests/tools/landscape.h"
+#include "tests/tools/las_writer.h"
 #include "models/registry.h"
 
 namespace {
@@ -93,6 +97,32 @@ void writeChunkedSeeds(const fs::path& dir, const octopoint::EmbeddedModel& mode
   }
 }
 
+void writeLasSeeds(const fs::path& dir) {
+  using octopoint::testing::LasLayout;
+  const octopoint::testing::Landscape landscape;
+  auto las = [&](const std::string& name, const LasLayout& layout) {
+    octopoint::testing::LasWriter writer(dir / name, layout);
+    for (std::uint64_t i = 0; i < 12; ++i) writer.add(landscape.point(i));
+    writer.finish();
+  };
+  for (int format = 0; format <= 10; ++format) {
+    LasLayout layout;
+    layout.format = format;
+    layout.vlrs = 0;
+    las("format" + std::to_string(format) + ".las", layout);
+  }
+  LasLayout old;
+  old.format = 1;
+  old.version_minor = 0;
+  las("v10.las", old);
+  LasLayout rich;
+  rich.format = 7;
+  rich.vlrs = 2;
+  rich.evlrs = 1;
+  rich.extra_bytes = 3;
+  las("rich.las", rich);
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -104,6 +134,7 @@ int main(int argc, char** argv) {
     const fs::path out = argv[1];
     fs::create_directories(out / "model");
     fs::create_directories(out / "scan_header");
+    fs::create_directories(out / "las");
     const octopoint::EmbeddedModel& model = *octopoint::models::defaultModel();
     write(out / "model" / (std::string(model.name) + ".oct"), octopoint::fuzzing::octImage(model));
     const int finest = model.levels[model.level_count - 1].depth;
@@ -113,6 +144,7 @@ int main(int argc, char** argv) {
     }
     writeScanHeaders(out / "scan_header");
     writeChunkedSeeds(out / "chunked", model);
+    writeLasSeeds(out / "las");
   } catch (const std::exception& error) {
     std::fprintf(stderr, "make_fuzz_corpus: %s\n", error.what());
     return 1;

@@ -333,8 +333,10 @@ TEST_F(ScanLoaderTest, OrganizedScanKeepsItsGridAndEachPointsPlaceInIt) {
 
     // Cropping keeps each survivor's place in the grid.
     CropBox box;
-    box.low = positionOf(1);
-    box.high = positionOf(3);
+    for (std::size_t axis = 0; axis < 3; ++axis) {
+      box.low[axis] = positionOf(1)[axis];
+      box.high[axis] = positionOf(3)[axis];
+    }
     const Scan cropped = cropScan(scan, box, "organized.pcd");
     EXPECT_EQ(cropped.grid_width, 3u);
     EXPECT_EQ(cropped.grid_index, (std::vector<std::uint32_t>{1, 2, 3}));

@@ -1,0 +1,383 @@
+// LAS header checks and point decoding (codegen/las_reader.h). Layouts from the ASPRS LAS 1.4
+// specification (R15): the public header block is 227 bytes in 1.0 to 1.2, 235 in 1.3 (start of
+// the waveform data packet record) and 375 in 1.4 (EVLRs and the 64-bit point counts); a VLR header
+// is 54 bytes with a 16-bit payload length, an EVLR header 60 bytes with a 64-bit one.
+
+#include "codegen/las_reader.h"
+
+#include <algorithm>
+#include <bit>
+#include <cmath>
+#include <cstring>
+#include <limits>
+#include <sstream>
+#include <string_view>
+#include <vector>
+
+#include "codegen/scan_header_check.h"
+
+namespace octopoint::prepare {
+namespace {
+
+constexpr std::uint64_t kVlrHeaderBytes = 54;
+constexpr std::uint64_t kEvlrHeaderBytes = 60;
+constexpr std::uint64_t kSignatureBytes = 4;
+constexpr std::uint64_t kLegacyHeaderBytes = 227;  // 1.0 to 1.2
+constexpr std::array<std::uint64_t, 5> kHeaderBytes = {227, 227, 227, 235,
+                                                       375};  // by minor version
+// Offsets of the red channel in the formats that have colour (0 = none).
+constexpr std::array<std::uint16_t, 11> kRgbOffset = {0, 0, 20, 28, 0, 28, 0, 30, 30, 0, 30};
+// LASzip marks compressed point data in the format byte (bit 7; bit 6 for its 1.4 "native" layers)
+// and with a VLR of this user ID.
+constexpr std::uint8_t kLazFormatBits = 0xc0;
+constexpr std::string_view kLazVlrUser = "laszip encoded";
+constexpr const char* kLazAdvice =
+    "compressed LAZ is not supported; decompress it first, e.g. with `laszip -i IN.laz -o OUT.las` "
+    "or `pdal translate IN.laz OUT.las`";
+
+template <typename T>
+T readLittle(const std::uint8_t* bytes) {
+  T value;
+  std::memcpy(&value, bytes, sizeof value);  // LAS is little-endian, like every host we build for
+  static_assert(std::endian::native == std::endian::little);
+  return value;
+}
+
+std::string byteWhere(std::uint64_t offset) { return "header byte " + std::to_string(offset); }
+
+// A small read window over the file for walking the header records, so that thousands of tiny VLRs
+// cost one read per 64 KiB rather than one per record.
+class ByteWindow {
+ public:
+  explicit ByteWindow(const InputFile& file) : file_(file) {}
+
+  // `n` (at most kWindow) bytes at `offset`, which the caller has checked lie inside the file.
+  const std::uint8_t* at(std::uint64_t offset, std::size_t n, const std::string& what) {
+    if (offset < start_ || offset + n > start_ + bytes_.size()) {
+      const std::uint64_t length = std::min<std::uint64_t>(kWindow, file_.size() - offset);
+      bytes_.resize(static_cast<std::size_t>(length));
+      file_.readAt(offset, bytes_, what);
+      start_ = offset;
+    }
+    return bytes_.data() + (offset - start_);
+  }
+
+ private:
+  static constexpr std::size_t kWindow = 1 << 16;
+  const InputFile& file_;
+  std::vector<std::uint8_t> bytes_;
+  std::uint64_t start_ = 0;
+};
+
+void checkScaleAndOffset(const InputFile& file, const LasHeader& header) {
+  for (std::size_t axis = 0; axis < 3; ++axis) {
+    const double scale = header.scale[axis];
+    const double offset = header.offset[axis];
+    const char name = "XYZ"[axis];
+    if (!(scale >= kMinLasScale && scale <= kMaxLasScale)) {  // also refuses NaN
+      std::ostringstream what;
+      what << "absurd " << name << " scale factor " << scale << " (expected " << kMinLasScale
+           << " to " << kMaxLasScale << ")";
+      fail(file.path(), what.str(), byteWhere(131 + 8 * axis));
+    }
+    if (!(std::fabs(offset) <= kMaxLasOffset)) {
+      std::ostringstream what;
+      what << "absurd " << name << " offset " << offset << " (expected a finite value within +-"
+           << kMaxLasOffset << ")";
+      fail(file.path(), what.str(), byteWhere(155 + 8 * axis));
+    }
+  }
+}
+
+// Walks the VLRs between the header and the point data; refuses LAZ by its VLR.
+void walkVlrs(const InputFile& file, ByteWindow& window, std::uint64_t header_bytes,
+              const LasHeader& header) {
+  const std::uint64_t room = header.point_offset - header_bytes;
+  if (header.vlr_count > room / kVlrHeaderBytes) {
+    fail(file.path(),
+         "header declares " + std::to_string(header.vlr_count) + " VLRs, but only " +
+             std::to_string(room) + " bytes lie between the header and the point data",
+         byteWhere(100));
+  }
+  std::uint64_t at = header_bytes;
+  for (std::uint32_t i = 0; i < header.vlr_count; ++i) {
+    const std::string where = "VLR " + std::to_string(i + 1) + " of " +
+                              std::to_string(header.vlr_count) + " at byte " + std::to_string(at);
+    if (at + kVlrHeaderBytes > header.point_offset) {
+      fail(file.path(),
+           "VLR header runs into the point data at byte " + std::to_string(header.point_offset),
+           where);
+    }
+    const std::uint8_t* record = window.at(at, kVlrHeaderBytes, where);
+    const std::string_view user(reinterpret_cast<const char*>(record + 2), 16);
+    if (user.substr(0, user.find('\0')) == kLazVlrUser) fail(file.path(), kLazAdvice, where);
+    const std::uint64_t length = readLittle<std::uint16_t>(record + 20);
+    at += kVlrHeaderBytes + length;
+    if (at > header.point_offset) {
+      fail(file.path(),
+           "VLR of " + std::to_string(length) + " bytes runs into the point data at byte " +
+               std::to_string(header.point_offset),
+           where);
+    }
+  }
+}
+
+// Walks `count` extended records (EVLRs, or the 1.3 waveform record) from `start`; returns their
+// end.
+std::uint64_t walkExtendedRecords(const InputFile& file, ByteWindow& window, std::uint64_t start,
+                                  std::uint64_t count, const std::string& kind) {
+  const std::uint64_t room = file.size() - std::min(start, file.size());
+  if (start > file.size() || count > room / kEvlrHeaderBytes) {
+    fail(file.path(),
+         "header declares " + std::to_string(count) + " " + kind + "s from byte " +
+             std::to_string(start) + ", more than the " + std::to_string(room) +
+             " bytes there can hold",
+         "LAS header");
+  }
+  std::uint64_t at = start;
+  for (std::uint64_t i = 0; i < count; ++i) {
+    const std::string where = kind + " " + std::to_string(i + 1) + " of " + std::to_string(count) +
+                              " at byte " + std::to_string(at);
+    if (at > file.size() || file.size() - at < kEvlrHeaderBytes) {
+      fail(file.path(), "truncated: the file ends inside the record header", where);
+    }
+    const std::uint64_t length =
+        readLittle<std::uint64_t>(window.at(at, kEvlrHeaderBytes, where) + 20);
+    if (length > file.size() - at - kEvlrHeaderBytes) {
+      fail(file.path(),
+           "truncated: the record declares " + std::to_string(length) + " bytes, the file ends " +
+               std::to_string(file.size() - at - kEvlrHeaderBytes) + " bytes after its header",
+           where);
+    }
+    at += kEvlrHeaderBytes + length;
+  }
+  return at;
+}
+
+// Reads the fixed part of the header; fails on what it alone can tell.
+LasHeader readFixedHeader(const InputFile& file, std::vector<std::uint8_t>& head,
+                          std::uint64_t& header_bytes) {
+  const auto& path = file.path();
+  const std::uint64_t size = file.size();
+  head.assign(static_cast<std::size_t>(std::min<std::uint64_t>(size, kHeaderBytes.back())), 0);
+  file.readAt(0, head, "LAS header");
+  if (size < kSignatureBytes || std::memcmp(head.data(), "LASF", kSignatureBytes) != 0) {
+    fail(path, "not a LAS file: it does not start with 'LASF'", "byte 0");
+  }
+  if (size < kLegacyHeaderBytes) {
+    fail(path, "truncated: a LAS header has at least 227 bytes, the file " + std::to_string(size),
+         "LAS header");
+  }
+  const int major = head[24];
+  const int minor = head[25];
+  if (major != 1 || minor > 4) {
+    fail(path,
+         "LAS version " + std::to_string(major) + "." + std::to_string(minor) +
+             " is not supported (1.0 to 1.4)",
+         byteWhere(24));
+  }
+  const std::uint8_t format_byte = head[104];
+  if (format_byte & kLazFormatBits)
+    fail(path, kLazAdvice, "point format byte " + std::to_string(format_byte));
+
+  LasHeader header;
+  header.version_minor = minor;
+  header.point_format = format_byte;
+  header_bytes = readLittle<std::uint16_t>(&head[94]);
+  const std::uint64_t minimum = kHeaderBytes[static_cast<std::size_t>(minor)];
+  if (header_bytes < minimum) {
+    fail(path,
+         "header size " + std::to_string(header_bytes) + " is below LAS 1." +
+             std::to_string(minor) + "'s " + std::to_string(minimum) + " bytes",
+         byteWhere(94));
+  }
+  if (size < minimum) {
+    fail(path,
+         "truncated: a LAS 1." + std::to_string(minor) + " header has " + std::to_string(minimum) +
+             " bytes, the file " + std::to_string(size),
+         "LAS header");
+  }
+  if (header.point_format >= static_cast<int>(kLasFormatBytes.size())) {
+    fail(path, "unknown point format " + std::to_string(header.point_format) + " (LAS has 0 to 10)",
+         byteWhere(104));
+  }
+  if (header.point_format > 5 && minor < 4) {
+    fail(path,
+         "point format " + std::to_string(header.point_format) +
+             " needs LAS 1.4, the file is LAS 1." + std::to_string(minor),
+         byteWhere(104));
+  }
+  header.record_length = readLittle<std::uint16_t>(&head[105]);
+  const std::uint16_t needed = kLasFormatBytes[static_cast<std::size_t>(header.point_format)];
+  if (header.record_length < needed) {
+    fail(path,
+         "point records of " + std::to_string(header.record_length) +
+             " bytes are shorter than format " + std::to_string(header.point_format) + "'s " +
+             std::to_string(needed),
+         byteWhere(105));
+  }
+  header.rgb_offset = kRgbOffset[static_cast<std::size_t>(header.point_format)];
+  header.point_offset = readLittle<std::uint32_t>(&head[96]);
+  header.vlr_count = readLittle<std::uint32_t>(&head[100]);
+  for (std::size_t axis = 0; axis < 3; ++axis) {
+    header.scale[axis] = readLittle<double>(&head[131 + 8 * axis]);
+    header.offset[axis] = readLittle<double>(&head[155 + 8 * axis]);
+  }
+  const std::uint64_t legacy_count = readLittle<std::uint32_t>(&head[107]);
+  header.point_count = legacy_count;
+  if (minor >= 4) {
+    header.point_count = readLittle<std::uint64_t>(&head[247]);
+    header.evlr_count = readLittle<std::uint32_t>(&head[243]);
+    if (legacy_count != 0 && legacy_count != header.point_count) {
+      fail(path,
+           "the legacy point count " + std::to_string(legacy_count) +
+               " differs from the 1.4 point count " + std::to_string(header.point_count),
+           byteWhere(107));
+    }
+  }
+  return header;
+}
+
+}  // namespace
+
+LasHeader readLasHeader(const InputFile& file) {
+  const auto& path = file.path();
+  const std::uint64_t size = file.size();
+  std::vector<std::uint8_t> head;
+  std::uint64_t header_bytes = 0;
+  LasHeader header = readFixedHeader(file, head, header_bytes);
+
+  if (header.point_offset < header_bytes) {
+    fail(path,
+         "the point data at byte " + std::to_string(header.point_offset) +
+             " would start inside the " + std::to_string(header_bytes) + "-byte header",
+         byteWhere(96));
+  }
+  if (header.point_offset > size) {
+    fail(path,
+         "truncated: the point data should start at byte " + std::to_string(header.point_offset) +
+             ", the file has " + std::to_string(size) + " bytes",
+         byteWhere(96));
+  }
+  ByteWindow window(file);
+  walkVlrs(file, window, header_bytes, header);
+  if (header.point_count == 0) fail(path, "empty cloud (0 points)", "LAS header point count");
+  checkScaleAndOffset(file, header);
+
+  const std::uint64_t point_bytes = saturatingMul(header.point_count, header.record_length);
+  const std::uint64_t available = size - header.point_offset;
+  if (point_bytes > available) {
+    fail(path,
+         "truncated: header declares " + std::to_string(header.point_count) + " points of " +
+             std::to_string(header.record_length) + " bytes, but " + std::to_string(available) +
+             " bytes follow the start of the point data",
+         "point data at byte " + std::to_string(header.point_offset));
+  }
+  const std::uint64_t points_end = header.point_offset + point_bytes;
+  std::uint64_t accounted_end = points_end;
+  if (header.evlr_count > 0) {
+    const std::uint64_t evlr_start = readLittle<std::uint64_t>(&head[235]);
+    if (evlr_start < points_end) {
+      fail(path,
+           "the first EVLR at byte " + std::to_string(evlr_start) +
+               " lies inside the point data, which ends at byte " + std::to_string(points_end),
+           byteWhere(235));
+    }
+    if (evlr_start - points_end >=
+        header.record_length) {  // a count too small, like trailing bytes below
+      fail(path,
+           std::to_string(evlr_start - points_end) + " bytes lie between the last of the " +
+               std::to_string(header.point_count) +
+               " points and the first EVLR: the point count is too small?",
+           "byte " + std::to_string(points_end));
+    }
+    accounted_end = std::max(
+        accounted_end, walkExtendedRecords(file, window, evlr_start, header.evlr_count, "EVLR"));
+  }
+  const std::uint16_t global_encoding = readLittle<std::uint16_t>(&head[6]);
+  const std::uint64_t waveform_start =
+      header.version_minor >= 3 ? readLittle<std::uint64_t>(&head[227]) : 0;
+  if (header.version_minor == 3 && (global_encoding & 2u) &&
+      waveform_start != 0) {  // 1.4: one of the EVLRs
+    if (waveform_start < points_end) {
+      fail(path,
+           "the waveform data at byte " + std::to_string(waveform_start) +
+               " lies inside the point data",
+           byteWhere(227));
+    }
+    accounted_end = std::max(
+        accounted_end, walkExtendedRecords(file, window, waveform_start, 1, "waveform record"));
+  }
+  // A count too small (a 1.2 file past 2^32 points, a header that lies) leaves points unread:
+  // refuse rather than silently drop them. Less than one record is padding some writers add.
+  if (size - accounted_end >= header.record_length) {
+    fail(path,
+         std::to_string(size - accounted_end) + " bytes follow the last of the " +
+             std::to_string(header.point_count) +
+             " points the header declares, and no EVLR accounts for them",
+         "byte " + std::to_string(accounted_end));
+  }
+  // Every point record has a return number of at least 1, so no record is all zero bytes: a hole
+  // in the point data (a sparse file) is not point data.
+  const std::uint64_t hole = file.nextHole(header.point_offset);
+  if (hole < points_end) {
+    fail(path, "the point data has a hole (a sparse file): LAS points are never all zero bytes",
+         "byte " + std::to_string(hole));
+  }
+  return header;
+}
+
+namespace {
+
+class LasSource final : public PointSource {
+ public:
+  explicit LasSource(const std::filesystem::path& path)
+      : file_(path), header_(readLasHeader(file_)) {
+    info_.points = header_.point_count;
+    info_.payload = header_.rgb_offset ? PointPayload::kRgb : PointPayload::kIntensity;
+    info_.shading = header_.rgb_offset ? ScanShading::kColour : ScanShading::kIntensity;
+    info_.colour_bits_detected = header_.rgb_offset != 0;
+    info_.has_intensity = true;
+    info_.float_coordinates = false;
+    info_.format = "LAS 1." + std::to_string(header_.version_minor) + ", point format " +
+                   std::to_string(header_.point_format) + ", " +
+                   std::to_string(header_.record_length) + "-byte records";
+    file_.adviseSequential();
+  }
+
+  const SourceInfo& info() const override { return info_; }
+
+  void read(std::uint64_t first, std::size_t count, PointChunk& chunk) const override {
+    thread_local std::vector<std::uint8_t> bytes;
+    const std::size_t stride = header_.record_length;
+    bytes.resize(count * stride);
+    file_.readAt(header_.point_offset + first * stride, bytes, "point " + std::to_string(first));
+    chunk.resize(count, info_);
+    const std::uint8_t* record = bytes.data();
+    for (std::size_t i = 0; i < count; ++i, record += stride) {
+      for (std::size_t axis = 0; axis < 3; ++axis) {
+        const auto raw = readLittle<std::int32_t>(record + 4 * axis);
+        chunk.xyz[i][axis] = static_cast<double>(raw) * header_.scale[axis] + header_.offset[axis];
+      }
+      chunk.intensity[i] = readLittle<std::uint16_t>(record + 12);
+      if (header_.rgb_offset) {
+        for (std::size_t ch = 0; ch < 3; ++ch) {
+          chunk.rgb[i][ch] = readLittle<std::uint16_t>(record + header_.rgb_offset + 2 * ch);
+        }
+      }
+    }
+  }
+
+ private:
+  InputFile file_;
+  LasHeader header_;
+  SourceInfo info_;
+};
+
+}  // namespace
+
+std::unique_ptr<PointSource> openLasSource(const std::filesystem::path& path) {
+  return std::make_unique<LasSource>(path);
+}
+
+}  // namespace octopoint::prepare

@@ -1,0 +1,53 @@
+#pragma once
+// LAS 1.0 to 1.4 (ASPRS), read by hand: Debian ships no LAS library. Point formats 0 to 10, the
+// coordinates as int32 * scale + offset in double, intensity, RGB where the format has it, the
+// 64-bit point count of 1.4, VLRs and EVLRs (walked and checked, their contents skipped), records
+// longer than their format (user "extra bytes", skipped). LAZ (compressed) is refused by name.
+//
+// Every count, offset and length in the header is checked against the file size before anything is
+// read or allocated, so a header that lies costs nothing: readLasHeader throws one PrepareError
+// line "PATH: what (where)".
+
+#include <array>
+#include <cstdint>
+#include <filesystem>
+#include <memory>
+#include <string>
+
+#include "codegen/file_io.h"
+#include "codegen/point_source.h"
+
+namespace octopoint::prepare {
+
+// The bytes of one point record that each format defines (LAS 1.4 R15, "Point Data Records").
+inline constexpr std::array<std::uint16_t, 11> kLasFormatBytes = {20, 28, 26, 34, 57, 63,
+                                                                  30, 36, 38, 59, 67};
+
+// Sane bounds for scale and offset: with them every int32 coordinate maps to a finite double of at
+// most ~3e12 units, far beyond any survey, so no point can overflow the cube fit. A scale of 0, a
+// negative one, 1e300 or NaN is refused.
+inline constexpr double kMinLasScale = 1e-9;
+inline constexpr double kMaxLasScale = 1e3;
+inline constexpr double kMaxLasOffset = 1e12;
+
+struct LasHeader {
+  int version_minor = 0;  // major is always 1
+  int point_format = 0;
+  std::uint16_t record_length = 0;
+  std::uint64_t point_count = 0;
+  std::uint64_t point_offset = 0;  // the first point record
+  std::array<double, 3> scale{};
+  std::array<double, 3> offset{};
+  std::uint32_t vlr_count = 0;
+  std::uint32_t evlr_count = 0;
+  std::uint16_t rgb_offset = 0;  // byte of red in the record; 0 when the format has no colour
+};
+
+// Reads and checks the header, every VLR and every EVLR of `file`.
+LasHeader readLasHeader(const InputFile& file);
+
+// A LAS file as a point source: payload kRgb with colour_bits_detected (and the intensity beside
+// it) for formats with colour, else kIntensity.
+std::unique_ptr<PointSource> openLasSource(const std::filesystem::path& path);
+
+}  // namespace octopoint::prepare

@@ -1,0 +1,88 @@
+#pragma once
+// Where the streamed preparer's points come from: a file read in chunks of records, any chunk at
+// any time from any thread, so that several threads decode one file at once and no pass ever holds
+// the whole scan. LAS files (codegen/las_reader.h) and binary PCD/PLY files of a plain layout
+// (codegen/binary_scan_source.cpp) are read this way; everything else is loaded whole through PCL
+// (codegen/scan_loader.h) and then served from memory by the same interface.
+//
+// No PCL in this header or in the streamed sources.
+
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <filesystem>
+#include <limits>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "cli/input_file.h"
+#include "codegen/scan_loader.h"
+
+namespace octopoint::prepare {
+
+// What a source's points carry besides their position.
+enum class PointPayload {
+  kRgb,        // a colour per point (8-bit, or 16-bit for LAS: see colour_bits_detected)
+  kIntensity,  // an intensity per point, shown as grey (codegen/intensity_grey.h)
+  kNone,       // nothing: the voxels get a depth shade
+};
+
+struct SourceInfo {
+  std::uint64_t points = 0;             // records served, the non-finite ones included
+  std::uint64_t dropped_by_loader = 0;  // non-finite points a loader dropped before serving them
+  PointPayload payload = PointPayload::kNone;
+  // What the colours mean, for the summary: a loaded scan's intensity arrives as grey kRgb.
+  ScanShading shading = ScanShading::kNone;
+  // LAS stores 16-bit colour channels, yet many writers put 8-bit values in them: the preparer
+  // decides from the whole file (all channels <= 255: 8-bit) and falls back to the intensity when
+  // every channel of every point is 0.
+  bool colour_bits_detected = false;
+  bool has_intensity = false;  // besides the colour (LAS): the fallback for all-zero colours
+  // A finite |coordinate| above this is refused as absurd (codegen/scan_loader.h); LAS coordinates
+  // are bounded by their header's scale and offset instead, so it is infinite there.
+  double coordinate_limit = std::numeric_limits<double>::infinity();
+  bool float_coordinates = true;  // PCD, PLY and scans in memory; LAS coordinates are doubles
+  bool organized = false;         // height > 1 (PCD/PLY)
+  bool streamed = true;    // false when the whole scan was loaded through PCL first
+  std::string format;      // for the summary line, e.g. "LAS 1.4, point format 7"
+};
+
+// One chunk of consecutive records, decoded. Positions are in scan units; a non-finite one marks a
+// point to drop (PCD/PLY store NaN for "no return"). rgb is filled for kRgb sources, intensity for
+// kIntensity ones and for has_intensity.
+struct PointChunk {
+  std::vector<std::array<double, 3>> xyz;
+  std::vector<std::array<std::uint16_t, 3>> rgb;
+  std::vector<float> intensity;
+
+  void resize(std::size_t count, const SourceInfo& info) {
+    xyz.resize(count);
+    rgb.resize(info.payload == PointPayload::kRgb ? count : 0);
+    intensity.resize(info.payload == PointPayload::kIntensity || info.has_intensity ? count : 0);
+  }
+};
+
+class PointSource {
+ public:
+  virtual ~PointSource() = default;
+  virtual const SourceInfo& info() const = 0;
+  // Decodes records [first, first + count) into `chunk` (resized to count). Safe to call from
+  // several threads at once. Throws PrepareError on a read error.
+  virtual void read(std::uint64_t first, std::size_t count, PointChunk& chunk) const = 0;
+};
+
+// Serves an in-memory scan (already cropped or not; its colours are final 8-bit colours, the
+// intensity already turned grey by loadScan). The scan must outlive the source.
+std::unique_ptr<PointSource> memorySource(const Scan& scan);
+
+// The scan files streamed (LAS, binary PCD/PLY): regular files of at most 4 TiB. Streaming costs
+// the same memory whatever the size; a file that is mostly hole fails on its content.
+inline constexpr cli::InputKind kStreamedScanInput{"scan", 4096 * cli::kGiB};
+
+// Opens a scan file by its extension (.las, .pcd, .ply; .laz is refused by name): LAS and binary
+// PCD/PLY of a plain layout are streamed, anything else is loaded whole with loadScan, which then
+// stays in memory. Throws PrepareError with one line for every failure.
+std::unique_ptr<PointSource> openPointSource(const std::filesystem::path& path);
+
+}  // namespace octopoint::prepare
