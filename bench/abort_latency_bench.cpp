@@ -26,6 +26,7 @@
 #include <utility>
 #include <vector>
 
+#include "bench/register_benchmarks.h"
 #include "models/registry.h"
 #include "renderer/level_of_detail.h"
 #include "renderer/render.h"
@@ -156,6 +157,8 @@ void add(const std::string& name, Case c) {
       ->Unit(benchmark::kMicrosecond);
 }
 
+}  // namespace
+
 void registerAll() {
   for (const int yaw : {0, 30}) {
     const int zoom = yaw == 0 ? 1 : 2;
@@ -173,14 +176,4 @@ void registerAll() {
   }
 }
 
-}  // namespace
 }  // namespace octopoint
-
-int main(int argc, char** argv) {
-  octopoint::registerAll();
-  benchmark::Initialize(&argc, argv);
-  if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
-  benchmark::RunSpecifiedBenchmarks();
-  benchmark::Shutdown();
-  return 0;
-}

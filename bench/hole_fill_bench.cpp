@@ -6,6 +6,7 @@
 
 #include <string>
 
+#include "bench/register_benchmarks.h"
 #include "models/registry.h"
 #include "renderer/hole_fill.h"
 #include "renderer/render.h"
@@ -48,6 +49,8 @@ void fillDefaultModel(benchmark::State& state, int depth, int yaw_degrees, int z
   state.counters["filled_pixels"] = counts.total();
 }
 
+}  // namespace
+
 void registerAll() {
   struct View {
     int depth, yaw_degrees, zoom;
@@ -61,14 +64,4 @@ void registerAll() {
   }
 }
 
-}  // namespace
 }  // namespace octopoint
-
-int main(int argc, char** argv) {
-  octopoint::registerAll();
-  benchmark::Initialize(&argc, argv);
-  if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
-  benchmark::RunSpecifiedBenchmarks();
-  benchmark::Shutdown();
-  return 0;
-}

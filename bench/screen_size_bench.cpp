@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "bench/pcl_peer.h"
+#include "bench/register_benchmarks.h"
 #include "models/registry.h"
 #include "renderer/level_of_detail.h"
 #include "renderer/render.h"
@@ -94,6 +95,8 @@ std::string zoomName(int zoom_quarters) {
   }
 }
 
+}  // namespace
+
 void registerAll() {
   std::vector<Variant> variants = {Variant::kFixedFast};
   if (simdDecoderAvailable()) variants.push_back(Variant::kFixedSimd);
@@ -122,14 +125,4 @@ void registerAll() {
   }
 }
 
-}  // namespace
 }  // namespace octopoint
-
-int main(int argc, char** argv) {
-  octopoint::registerAll();
-  benchmark::Initialize(&argc, argv);
-  if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
-  benchmark::RunSpecifiedBenchmarks();
-  benchmark::Shutdown();
-  return 0;
-}

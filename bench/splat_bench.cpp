@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "bench/register_benchmarks.h"
 #include "models/registry.h"
 #include "renderer/decode_baseline.h"
 #include "renderer/render.h"
@@ -86,6 +87,8 @@ void drawSplats(benchmark::State& state, Variant variant, int zoom_percent, bool
   state.counters["splat_rows"] = setup.splat.rows;
 }
 
+}  // namespace
+
 void registerAll() {
   std::vector<std::pair<Variant, std::string>> variants = {{Variant::kFixedFast, "fixed_fast"}};
   if (simdDecoderAvailable()) variants.emplace_back(Variant::kFixedSimd, "fixed_simd");
@@ -106,14 +109,4 @@ void registerAll() {
   }
 }
 
-}  // namespace
 }  // namespace octopoint
-
-int main(int argc, char** argv) {
-  octopoint::registerAll();
-  benchmark::Initialize(&argc, argv);
-  if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
-  benchmark::RunSpecifiedBenchmarks();
-  benchmark::Shutdown();
-  return 0;
-}

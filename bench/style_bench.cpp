@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "bench/register_benchmarks.h"
 #include "models/registry.h"
 #include "renderer/frame_styler.h"
 #include "renderer/level_of_detail.h"
@@ -102,6 +103,8 @@ void styledFrame(benchmark::State& state, Size size, Variant variant, Style styl
   setCounters(state, scene, size);
 }
 
+}  // namespace
+
 void registerAll() {
   for (const VariantInfo& variant : allVariants()) {
     if (variant.variant != Variant::kFixedFast && variant.variant != Variant::kFixedSimd) continue;
@@ -127,14 +130,4 @@ void registerAll() {
   }
 }
 
-}  // namespace
 }  // namespace octopoint
-
-int main(int argc, char** argv) {
-  octopoint::registerAll();
-  benchmark::Initialize(&argc, argv);
-  if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
-  benchmark::RunSpecifiedBenchmarks();
-  benchmark::Shutdown();
-  return 0;
-}
