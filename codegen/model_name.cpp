@@ -48,6 +48,16 @@ constexpr std::string_view kHeaderNames[] = {
 bool isLetter(char c) { return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z'); }
 bool isDigit(char c) { return c >= '0' && c <= '9'; }
 
+// Model m writes its depth-3 level as m_depth3.cpp, which is also the descriptor of a model called
+// m_depth3: prepared into one folder, either would overwrite the other's source.
+bool endsLikeALevelSource(std::string_view name) {
+  constexpr std::string_view kLevelMark = "_depth";
+  const std::size_t digits_begin = name.find_last_not_of("0123456789") + 1;
+  if (digits_begin == name.size()) return false;
+  const std::string_view before_digits = name.substr(0, digits_begin);
+  return before_digits.size() > kLevelMark.size() && before_digits.ends_with(kLevelMark);
+}
+
 }  // namespace
 
 std::string modelNameProblem(std::string_view name) {
@@ -73,6 +83,10 @@ std::string modelNameProblem(std::string_view name) {
   }
   if (std::find(std::begin(kHeaderNames), std::end(kHeaderNames), name) != std::end(kHeaderNames)) {
     return "is the name of a standard header (" + std::string(name) + ".h would hide <" + std::string(name) + ".h>)";
+  }
+  if (endsLikeALevelSource(name)) {
+    return "ends in _depth and a number, the name the preparer gives another model's level source (" +
+           std::string(name) + ".cpp would be that model's)";
   }
   if (std::none_of(name.begin(), name.end(), [](char c) { return c >= 'a' && c <= 'z'; })) {
     return "has no lower-case letter (names in capitals are left to macros)";

@@ -6,7 +6,8 @@
 // leaves such names to the generator), at most kMaxModelNameLength
 // characters, not a C++ keyword or alternative token (class, and, ...), not a macro a compiler
 // predefines (linux, unix in GNU mode), not the name of a standard C or POSIX header (NAME.h
-// would hide it), and with at least one lower-case letter (the standard headers' macros, INT8_MAX
+// would hide it), not ending in "_depth" and digits (NAME_depthD.cpp is model NAME's level source),
+// and with at least one lower-case letter (the standard headers' macros, INT8_MAX
 // and the like, are all capitals).
 
 #include <cstddef>

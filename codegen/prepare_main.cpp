@@ -59,7 +59,8 @@ same byte for byte whatever --memory and --threads (docs/preparer.md).
                         this one does not write (fewer depths, --single-source) are removed
   --name NAME           the model's name, e.g. milk_carton: a C++ identifier of at most 64
                         letters, digits and single underscores (not at either end), with a
-                        lower-case letter, not a C++ keyword
+                        lower-case letter, not a C++ keyword, not ending in _depthD (another
+                        model's level source name)
   --depths LIST         comma-separated octree depths, strictly ascending, each 1..16, at most 8
                         of them, or a range A..B (default 6..10, cut where the scan stops
                         sampling densely: a depth with fewer than 3x the voxels of the depth
