@@ -138,8 +138,13 @@ NodeResult voxelizeNode(std::span<BinnedPoint> unsorted, int level, const VoxelC
     const int depth = colouring.depths[i];
     if (depth <= level) continue;
     SubtreePieces& part = node.levels[i];
-    encodeSubtree(keys, level, depth, finest, part.nodes.emplace_back());
+    // Room for what the finest depth needs (a node byte per voxel at most, on average much
+    // less): no copy as they grow.
+    std::vector<std::uint8_t>& nodes = part.nodes.emplace_back();
+    nodes.reserve(depth == finest ? keys.size() : 0);
+    encodeSubtree(keys, level, depth, finest, nodes);
     std::vector<std::uint32_t>& colours = part.colours.emplace_back();
+    colours.reserve(depth == finest ? keys.size() : 0);
     const int shift = 3 * (finest - depth);
     ColourSum sum;
     for (std::size_t p = 0; p < points.size(); ++p) {

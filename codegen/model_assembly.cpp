@@ -7,6 +7,7 @@
 #include <optional>
 
 #include "codegen/depth_range.h"
+#include "codegen/huge_pages.h"
 #include "codegen/octree_encoder.h"
 #include "codegen/palette.h"
 #include "codegen/parallel.h"
@@ -64,12 +65,8 @@ PreparedModel assembleModel(std::vector<EncodedLevel> levels, const CubeFit& fit
   }
   // The palette comes from all voxels, before pruning: pruning then changes no voxel's colour
   // index, so pruned and unpruned models draw the same pixels at every sampled view.
-  std::vector<std::uint32_t> finest_colours;
-  finest_colours.reserve(levels.back().leaves);
-  for (const auto& piece : levels.back().colours) {
-    finest_colours.insert(finest_colours.end(), piece.begin(), piece.end());
-  }
-  const Palette palette = Palette::buildPacked(std::move(finest_colours), options.palette_colours);
+  const Palette palette =
+      Palette::buildFromPieces(levels.back().colours, options.palette_colours, threads);
   std::size_t leaves = 0;
   for (const EncodedLevel& level : levels) leaves += level.leaves;
   std::optional<Palette::Lookup> lookup;
@@ -84,6 +81,8 @@ PreparedModel assembleModel(std::vector<EncodedLevel> levels, const CubeFit& fit
     PreparedLevel level;
     level.depth = encoded.depth;
     level.nodes = std::move(encoded.nodes);
+    level.leaves.reserve(encoded.leaves);
+    adviseHugePages(level.leaves.data(), encoded.leaves);
     level.leaves.resize(encoded.leaves);
     // A palette index per leaf, the pieces spread over the threads.
     std::vector<std::size_t> starts = {0};

@@ -30,6 +30,8 @@ struct EmitOptions {
   // Everything in NAME.h + NAME.cpp, instead of one NAME_depthD.cpp per level as well: file names
   // that do not depend on the depths, for build rules that must name their outputs in advance.
   bool single_source = false;
+  // Threads spelling the bytes (0: every core); the text is the same for any number.
+  unsigned threads = 0;
 };
 
 std::vector<std::uint8_t> serializeModel(const PreparedModel& model);

@@ -6,6 +6,10 @@
 #include <limits>
 #include <utility>
 
+#include "codegen/colour_counts.h"
+#include "codegen/huge_pages.h"
+#include "codegen/parallel.h"
+
 namespace octopoint::prepare {
 namespace {
 
@@ -111,19 +115,6 @@ std::vector<Rgb8> medianCut(std::vector<WeightedColour> colours, int max_colours
   return palette;
 }
 
-// Sorts colours packed 0xRRGGBB: least significant byte first, three counting passes, so that a
-// model of tens of millions of voxels does not wait on a comparison sort.
-void sortPacked(std::vector<std::uint32_t>& packed) {
-  std::vector<std::uint32_t> scratch(packed.size());
-  for (int shift = 0; shift < 24; shift += 8) {
-    std::array<std::size_t, 257> start{};
-    for (std::uint32_t c : packed) ++start[(c >> shift & 0xffu) + 1];
-    for (std::size_t b = 0; b < 256; ++b) start[b + 1] += start[b];
-    for (std::uint32_t c : packed) scratch[start[c >> shift & 0xffu]++] = c;
-    packed.swap(scratch);
-  }
-}
-
 void refineLloyd(std::vector<Rgb8>& palette, std::span<const WeightedColour> colours) {
   for (int pass = 0; pass < kLloydPasses; ++pass) {
     std::vector<std::array<std::uint64_t, 4>> sums(palette.size());  // r, g, b, weight
@@ -151,18 +142,22 @@ Palette Palette::build(std::span<const Rgb8> colours, int max_colours) {
 }
 
 Palette Palette::buildPacked(std::vector<std::uint32_t> packed, int max_colours) {
-  assert(max_colours >= 1 && max_colours <= kMaxPaletteColours);
-  sortPacked(packed);
+  return buildFromPieces({&packed, 1}, max_colours, 1);
+}
 
+Palette Palette::buildFromPieces(std::span<const std::vector<std::uint32_t>> pieces,
+                                 int max_colours, unsigned threads) {
+  assert(max_colours >= 1 && max_colours <= kMaxPaletteColours);
   std::vector<WeightedColour> distinct;
-  for (std::size_t i = 0; i < packed.size();) {
-    std::size_t j = i;
-    while (j < packed.size() && packed[j] == packed[i]) ++j;
-    const std::uint32_t p = packed[i];
-    distinct.push_back({Rgb8{static_cast<std::uint8_t>(p >> 16), static_cast<std::uint8_t>(p >> 8),
-                             static_cast<std::uint8_t>(p)},
-                        static_cast<std::uint32_t>(j - i)});
-    i = j;
+  {
+    const std::vector<ColourCount> counts = countColours(pieces, threads);
+    distinct.reserve(counts.size());
+    for (const ColourCount& c : counts) {
+      const std::uint32_t p = c.packed;
+      distinct.push_back({Rgb8{static_cast<std::uint8_t>(p >> 16), static_cast<std::uint8_t>(p >> 8),
+                               static_cast<std::uint8_t>(p)},
+                          c.count});
+    }
   }
 
   Palette palette;
@@ -176,15 +171,23 @@ Palette Palette::buildPacked(std::vector<std::uint32_t> packed, int max_colours)
     palette.colours_ = medianCut(distinct, max_colours);
     refineLloyd(palette.colours_, distinct);
   }
-  for (const WeightedColour& c : distinct) {
-    palette.known_colours_.push_back(pack(c.rgb));
-    palette.known_index_.push_back(static_cast<std::uint8_t>(nearest(palette.colours_, c.rgb)));
-  }
+  palette.known_colours_.resize(distinct.size());
+  palette.known_index_.resize(distinct.size());
+  constexpr std::size_t kBlock = 4096;  // distinct colours matched by one task
+  parallelFor(threads, (distinct.size() + kBlock - 1) / kBlock, [&](std::size_t block, unsigned) {
+    const std::size_t end = std::min(distinct.size(), (block + 1) * kBlock);
+    for (std::size_t i = block * kBlock; i < end; ++i) {
+      palette.known_colours_[i] = pack(distinct[i].rgb);
+      palette.known_index_[i] = static_cast<std::uint8_t>(nearest(palette.colours_, distinct[i].rgb));
+    }
+  });
   return palette;
 }
 
 Palette::Lookup::Lookup(const Palette& palette)
-    : palette_(palette), index_(std::size_t{1} << 24, 0), known_((std::size_t{1} << 24) / 64, 0) {
+    : palette_(palette), pages_(zeroedPages((std::size_t{1} << 24) + (std::size_t{1} << 24) / 8)) {
+  index_ = static_cast<std::uint8_t*>(pages_.get());
+  known_ = reinterpret_cast<std::uint64_t*>(index_ + (std::size_t{1} << 24));
   for (std::size_t i = 0; i < palette.known_colours_.size(); ++i) {
     const std::uint32_t p = palette.known_colours_[i];
     index_[p] = palette.known_index_[i];

@@ -4,6 +4,7 @@
 // voxels have each colour, refined by a few Lloyd (k-means) passes.
 
 #include <cstdint>
+#include <memory>
 #include <span>
 #include <vector>
 
@@ -20,6 +21,10 @@ class Palette {
   // The same from colours packed 0xRRGGBB (which it sorts): what the streamed preparer collects.
   static Palette buildPacked(std::vector<std::uint32_t> packed,
                              int max_colours = kMaxPaletteColours);
+  // The same from the colours of all the pieces, on `threads` threads (the same palette for any
+  // number): a large model's colours without joining them first.
+  static Palette buildFromPieces(std::span<const std::vector<std::uint32_t>> pieces,
+                                 int max_colours, unsigned threads);
 
   const std::vector<Rgb8>& colours() const { return colours_; }
   // The index of the palette colour nearest to `colour` (squared RGB distance).
@@ -38,8 +43,11 @@ class Palette {
 
    private:
     const Palette& palette_;
-    std::vector<std::uint8_t> index_;
-    std::vector<std::uint64_t> known_;  // one bit per colour
+    // Zeroed pages (codegen/huge_pages.h): only the parts of the tables a colour falls in are
+    // ever touched.
+    std::shared_ptr<void> pages_;
+    std::uint8_t* index_;    // 2^24 entries
+    std::uint64_t* known_;   // one bit per colour
   };
 
  private:

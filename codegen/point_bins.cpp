@@ -1,20 +1,10 @@
 #include "codegen/point_bins.h"
 
-#include <sys/mman.h>
-
 #include <cassert>
 #include <cstring>
 #include <utility>
 
 namespace octopoint::prepare {
-
-void adviseHugePages(void* data, std::size_t bytes) {
-  constexpr std::uintptr_t kHugePage = std::uintptr_t{2} << 20;
-  const auto start = reinterpret_cast<std::uintptr_t>(data);
-  const std::uintptr_t begin = (start + kHugePage - 1) & ~(kHugePage - 1);
-  const std::uintptr_t end = (start + bytes) & ~(kHugePage - 1);
-  if (end > begin) ::madvise(reinterpret_cast<void*>(begin), end - begin, MADV_HUGEPAGE);
-}
 
 void gatherBin(const BinContents& bin, std::span<BinnedPoint> out) {
   assert(out.size() == bin.count);

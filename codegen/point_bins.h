@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "codegen/file_io.h"
+#include "codegen/huge_pages.h"
 
 namespace octopoint::prepare {
 
@@ -29,10 +30,6 @@ struct BinnedPoint {
   std::uint64_t key() const { return std::uint64_t{key_high} << 32 | key_low; }
 };
 static_assert(sizeof(BinnedPoint) == 12);
-
-// Asks for 2 MB pages under a large buffer: one page fault instead of 512, which counts in a
-// virtual machine (this one spent a fifth of its time in page faults before).
-void adviseHugePages(void* data, std::size_t bytes);
 
 // A buffer of points whose slots are not zeroed when it grows: every slot is written before it is
 // read, and zeroing gigabytes would cost as much as using them.

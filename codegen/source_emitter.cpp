@@ -6,88 +6,40 @@
 #include <string_view>
 #include <string>
 
+#include "codegen/byte_text.h"
+#include "codegen/huge_pages.h"
 #include "codegen/model_writer.h"
+#include "codegen/parallel.h"
 #include "renderer/model_format.h"
 
 namespace octopoint::prepare {
 namespace {
 
-constexpr std::size_t kLineWidth = 100;
+// A byte array's definition: its declaration, its bytes as text, and the closing.
+struct ArrayText {
+  std::string head;
+  ByteText bytes;
+  std::string_view tail;
 
-// The arrays are written into strings reserved up front, not through a stream: a model of tens of
-// megabytes would otherwise spend seconds growing and copying the stream's buffer.
-void appendByteList(std::string& text, const std::vector<std::uint8_t>& bytes) {
-  text.reserve(text.size() + bytes.size() * 4 + bytes.size() / kLineWidth * 6 + 8);
-  text += "    ";
-  std::size_t column = 0;
-  for (std::uint8_t byte : bytes) {
-    char item[5];
-    const int size = std::snprintf(item, sizeof item, "%u,", static_cast<unsigned>(byte));
-    if (column + static_cast<std::size_t>(size) > kLineWidth) {
-      text += "\n    ";
-      column = 0;
-    }
-    text.append(item, static_cast<std::size_t>(size));
-    column += static_cast<std::size_t>(size);
+  std::size_t size() const { return head.size() + bytes.size() + tail.size(); }
+  void appendTo(std::string& out, unsigned threads) const {
+    out += head;
+    bytes.appendTo(out, threads);
+    out += tail;
   }
-  text += "\n";
-}
-
-// One literal piece per line, each far below kMaxLiteralPiece. Printable characters stand for
-// themselves; the rest are three-digit octal escapes (a fixed length, so a following digit is never
-// read as part of the escape). '?' is escaped too, so no trigraph can form for older compilers.
-void appendStringPieces(std::string& text, const std::vector<std::uint8_t>& bytes) {
-  static_assert(kLineWidth < kMaxLiteralPiece);
-  // Written through a pointer into room made beforehand: at most 4 characters per byte, and a
-  // 7-character line break every kLineWidth - 4 or more characters.
-  const std::size_t start = text.size();
-  const std::size_t most = bytes.size() * 4;
-  text.resize(start + most + (most / (kLineWidth - 4) + 2) * 7 + 8);
-  char* out = text.data() + start;
-  const auto put = [&out](const char* chars, std::size_t n) {
-    for (std::size_t i = 0; i < n; ++i) *out++ = chars[i];
-  };
-  put("    \"", 5);
-  std::size_t column = 0;
-  for (std::uint8_t byte : bytes) {
-    const bool plain = byte >= 0x20 && byte < 0x7f && byte != '"' && byte != '\\' && byte != '?';
-    const std::size_t size = plain ? 1 : 4;
-    if (column + size > kLineWidth) {
-      put("\"\n    \"", 7);
-      column = 0;
-    }
-    if (plain) {
-      *out++ = static_cast<char>(byte);
-    } else {
-      const char escape[4] = {'\\', static_cast<char>('0' + (byte >> 6)),
-                              static_cast<char>('0' + ((byte >> 3) & 7)),
-                              static_cast<char>('0' + (byte & 7))};
-      put(escape, 4);
-    }
-    column += size;
-  }
-  put("\"\n", 2);
-  text.resize(static_cast<std::size_t>(out - text.data()));
-}
+};
 
 // A string literal carries a terminating NUL, so its array is one byte longer than the data.
 std::size_t storedSize(std::size_t bytes, const EmitOptions& options) {
   return options.style == EmitStyle::kStrings ? bytes + 1 : bytes;
 }
 
-void appendArray(std::string& out, const std::string& name, const std::vector<std::uint8_t>& bytes,
-                 const EmitOptions& options) {
-  out += "extern const ::std::uint8_t " + name + "[" +
-         std::to_string(storedSize(bytes.size(), options)) + "] =";
-  if (options.style == EmitStyle::kStrings) {
-    out += "\n";
-    appendStringPieces(out, bytes);
-    out += "    ;\n";
-  } else {
-    out += " {\n";
-    appendByteList(out, bytes);
-    out += "};\n";
-  }
+ArrayText arrayText(const std::string& name, const std::vector<std::uint8_t>& bytes,
+                    const EmitOptions& options) {
+  const bool strings = options.style == EmitStyle::kStrings;
+  return {"extern const ::std::uint8_t " + name + "[" +
+              std::to_string(storedSize(bytes.size(), options)) + "] =" + (strings ? "\n" : " {\n"),
+          ByteText(bytes, options.style), strings ? "    ;\n" : "};\n"};
 }
 
 // Every identifier the generator adds ends in '_', which no model name may (codegen/model_name.h):
@@ -140,14 +92,22 @@ std::string header(const PreparedModel& model) {
   return out.str();
 }
 
+// The level's arrays (nodes, leaves, normals), one blank line apart, written into room reserved
+// once for them and `more` characters after them.
 void appendLevelArrays(std::string& out, const PreparedModel& model, const PreparedLevel& level,
-                       const EmitOptions& options) {
-  appendArray(out, arrayName(model, level, "nodes"), level.nodes, options);
-  out += "\n";
-  appendArray(out, arrayName(model, level, "leaves"), level.leaves, options);
+                       const EmitOptions& options, std::size_t more = 0) {
+  std::vector<ArrayText> arrays;
+  arrays.push_back(arrayText(arrayName(model, level, "nodes"), level.nodes, options));
+  arrays.push_back(arrayText(arrayName(model, level, "leaves"), level.leaves, options));
   if (!level.normals.empty()) {
-    out += "\n";
-    appendArray(out, arrayName(model, level, "normals"), level.normals, options);
+    arrays.push_back(arrayText(arrayName(model, level, "normals"), level.normals, options));
+  }
+  std::size_t size = out.size() + more;
+  for (const ArrayText& array : arrays) size += array.size() + 1;
+  reserveOnHugePages(out, size);
+  for (std::size_t i = 0; i < arrays.size(); ++i) {
+    if (i > 0) out += "\n";
+    arrays[i].appendTo(out, options.threads);
   }
 }
 
@@ -194,7 +154,7 @@ std::string descriptorSource(const PreparedModel& model, const EmitOptions& opti
     for (std::size_t ch = 0; ch < 3; ++ch) palette_bytes[3 * i + ch] = model.palette[i][ch];
   }
   std::string palette_list;
-  appendByteList(palette_list, palette_bytes);
+  ByteText(palette_bytes, EmitStyle::kBytes).appendTo(palette_list, 1);
   out << "\nnamespace {\n\nconst ::std::uint8_t palette_[" << palette_bytes.size() << "] = {\n"
       << palette_list;
   out << "};\n";
@@ -222,15 +182,18 @@ std::string descriptorSource(const PreparedModel& model, const EmitOptions& opti
 }
 
 std::string levelSource(const PreparedModel& model, const PreparedLevel& level, const EmitOptions& options) {
+  constexpr std::string_view kEnd = "\n}  // namespace octopoint::models\n";
   std::string out = banner(model) + "#include <cstdint>\n\nnamespace octopoint::models {\n\n";
-  appendLevelArrays(out, model, level, options);
-  out += "\n}  // namespace octopoint::models\n";
+  appendLevelArrays(out, model, level, options, kEnd.size());
+  out += kEnd;
   return out;
 }
 
 }  // namespace
 
-std::vector<OutputFile> emitSources(const PreparedModel& model, const EmitOptions& options) {
+std::vector<OutputFile> emitSources(const PreparedModel& model, const EmitOptions& emit) {
+  EmitOptions options = emit;
+  options.threads = threadCount(emit.threads);
   std::vector<OutputFile> files = {{model.name + ".h", header(model)},
                                    {model.name + ".cpp", descriptorSource(model, options)}};
   if (options.single_source) return files;

@@ -404,6 +404,7 @@ class StreamedPreparer {
     std::size_t node_bytes = 0;
     for (const auto& piece : pieces.nodes) node_bytes += piece.size();
     level.nodes.reserve(node_bytes);
+    adviseHugePages(level.nodes.data(), node_bytes);
     for (auto& piece : pieces.nodes) {
       level.nodes.insert(level.nodes.end(), piece.begin(), piece.end());
       piece = {};
