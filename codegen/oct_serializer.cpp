@@ -2,6 +2,7 @@
 #include <cassert>
 
 #include "codegen/byte_output.h"
+#include "codegen/huge_pages.h"
 #include "codegen/model_writer.h"
 #include "renderer/model_format.h"
 
@@ -12,7 +13,14 @@ std::vector<std::uint8_t> serializeModel(const PreparedModel& model) {
   assert(!model.palette.empty() && model.palette.size() <= format::kPaletteEntries);
   assert(model.normal_palette.size() <= format::kMaxNormals);
   const bool with_normals = !model.normal_palette.empty();
-  std::vector<std::uint8_t> out(format::kMagic, format::kMagic + sizeof format::kMagic);
+  std::size_t size = format::v2::kNormalPaletteOffset + 6 * model.normal_palette.size();
+  for (const PreparedLevel& level : model.levels) {
+    size += 12 + level.nodes.size() + level.leaves.size() + level.normals.size();
+  }
+  std::vector<std::uint8_t> out;
+  out.reserve(size);  // megabytes for a large model: written once, on huge pages
+  adviseHugePages(out.data(), size);
+  out.insert(out.end(), format::kMagic, format::kMagic + sizeof format::kMagic);
   putU16(out, format::kVersion2);
   out.push_back(static_cast<std::uint8_t>(model.levels.size()));
   out.push_back(static_cast<std::uint8_t>((with_normals ? format::v2::kFlagNormals : 0) |
@@ -40,6 +48,7 @@ std::vector<std::uint8_t> serializeModel(const PreparedModel& model) {
     out.insert(out.end(), level.leaves.begin(), level.leaves.end());
     out.insert(out.end(), level.normals.begin(), level.normals.end());
   }
+  assert(out.size() == size);
   return out;
 }
 

@@ -1,32 +1,11 @@
 #include "codegen/octree_encoder.h"
 
+#include <array>
+#include <bit>
 #include <cassert>
 
 namespace octopoint::prepare {
 namespace {
-
-// Writes the subtree of the keys in [begin, end), which share their first `level` octal digits:
-// this node's mask, then each occupied child's subtree in order k = 0..7. Keys are at `key_depth`.
-void encodeNode(std::span<const std::uint64_t> keys, std::size_t begin, std::size_t end, int level,
-                int depth, int key_depth, std::vector<std::uint8_t>& out) {
-  const int shift = 3 * (key_depth - 1 - level);  // the child digit of this node's level
-  std::size_t child_begin[9];
-  int child_count = 0;
-  std::uint8_t mask = 0;
-  for (std::size_t i = begin; i < end; ++i) {
-    const auto digit = static_cast<unsigned>(keys[i] >> shift) & 7u;
-    if (i == begin || digit != (static_cast<unsigned>(keys[i - 1] >> shift) & 7u)) {
-      child_begin[child_count++] = i;
-      mask = static_cast<std::uint8_t>(mask | 1u << digit);
-    }
-  }
-  child_begin[child_count] = end;
-  out.push_back(mask);
-  if (level + 1 == depth) return;  // a leaf parent: its children are leaves, with no byte
-  for (int c = 0; c < child_count; ++c) {
-    encodeNode(keys, child_begin[c], child_begin[c + 1], level + 1, depth, key_depth, out);
-  }
-}
 
 // Reads the node at `at` (at `level`, key prefix `prefix`) and its subtree; returns the byte after.
 std::size_t decodeNode(std::span<const std::uint8_t> nodes, std::size_t at, int level, int depth,
@@ -52,10 +31,38 @@ std::vector<std::uint8_t> encodeOctree(std::span<const std::uint64_t> sorted_key
   return nodes;
 }
 
+// One pass over the keys. The stream is the nodes in depth-first (pre-)order, which is the order in
+// which ascending keys first reach them: a node's byte is placed when its first key arrives, and
+// the later keys under it only set bits in it. Each key opens the nodes below the highest octal
+// digit in which it differs from the key before, so the work is one step per node and per key.
 void encodeSubtree(std::span<const std::uint64_t> sorted_keys, int level, int depth, int key_depth,
                    std::vector<std::uint8_t>& out) {
   assert(level >= 0 && level < depth && depth <= key_depth && !sorted_keys.empty());
-  encodeNode(sorted_keys, 0, sorted_keys.size(), level, depth, key_depth, out);
+  const auto digit = [&](std::uint64_t key, int l) {
+    return static_cast<unsigned>(key >> (3 * (key_depth - 1 - l))) & 7u;
+  };
+  std::array<std::size_t, 64> open{};  // where the open node of each level has its byte
+  const auto openFrom = [&](std::uint64_t key, int first) {
+    for (int l = first; l < depth; ++l) {
+      open[static_cast<std::size_t>(l)] = out.size();
+      out.push_back(static_cast<std::uint8_t>(1u << digit(key, l)));
+    }
+  };
+  openFrom(sorted_keys[0], level);
+  const int below_depth = 3 * (key_depth - depth);  // the bits of digits finer than `depth`
+  std::uint64_t previous = sorted_keys[0];
+  for (std::size_t i = 1; i < sorted_keys.size(); ++i) {
+    const std::uint64_t key = sorted_keys[i];
+    const std::uint64_t differ = (key ^ previous) >> below_depth;
+    if (differ == 0) continue;  // the same voxel at this depth
+    previous = key;
+    // The level whose child digit is the highest that differs: that node stays open and gains a
+    // child; every node below it is new.
+    const int split = depth - 1 - (63 - std::countl_zero(differ)) / 3;
+    assert(split >= level);  // all keys share the first `level` digits
+    out[open[static_cast<std::size_t>(split)]] |= static_cast<std::uint8_t>(1u << digit(key, split));
+    openFrom(key, split + 1);
+  }
 }
 
 std::vector<std::uint64_t> decodeLeafKeys(std::span<const std::uint8_t> nodes, int depth) {

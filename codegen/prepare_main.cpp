@@ -19,6 +19,7 @@
 #include "cli/text.h"
 #include "codegen/chunked_writer.h"
 #include "codegen/depth_range.h"
+#include "codegen/huge_pages.h"
 #include "codegen/level_voxels.h"
 #include "codegen/model_name.h"
 #include "codegen/model_writer.h"
@@ -188,6 +189,7 @@ std::optional<Arguments> parseArguments(int argc, char** argv) {
           octopoint::cli::parseInteger(reader.name(), reader.value(), 1, kMaxMemoryMegabytes)) << 20;
     } else if (reader.is("--threads")) {
       args.stream.threads = static_cast<unsigned>(octopoint::cli::parseInt(reader.name(), reader.value(), 1, kMaxThreads));
+      args.emit.threads = args.stream.threads;
     } else if (reader.is("--temp-dir")) {
       args.stream.temp_dir = reader.value();
     } else if (reader.is("--progress")) {
@@ -359,7 +361,10 @@ int run(int argc, char** argv) {
       });
   std::vector<OutputFile> files = emitSources(model, args->emit);
   const std::vector<std::uint8_t> image = image_made.get();
-  files.push_back({model.name + ".oct", std::string(image.begin(), image.end())});
+  std::string image_text;
+  reserveOnHugePages(image_text, image.size());
+  image_text.assign(image.begin(), image.end());
+  files.push_back({model.name + ".oct", std::move(image_text)});
   // A rerun replaces the model's whole set: level sources of depths it leaves out go too.
   octopoint::cli::writeFilesAtomically(args->output_dir, files, staleLevelSources(args->output_dir, model.name, files));
   const double writing_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - writing).count();
