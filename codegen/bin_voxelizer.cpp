@@ -55,7 +55,7 @@ NodeResult emptyNode(const VoxelColouring& colouring) {
 
 // The node at `level` from its children at level + 1.
 NodeResult joinChildren(int level, std::vector<std::pair<std::uint64_t, NodeResult>>& children,
-                        const VoxelColouring& colouring) {
+                        const VoxelColouring& colouring, ColourStore& store) {
   NodeResult node = emptyNode(colouring);
   std::uint8_t mask = 0;
   for (const auto& [prefix, child] : children) {
@@ -68,15 +68,16 @@ NodeResult joinChildren(int level, std::vector<std::pair<std::uint64_t, NodeResu
     SubtreePieces& part = node.levels[i];
     part.nodes.push_back({mask});
     if (depth == level + 1) {  // the children are this depth's voxels
-      std::vector<std::uint32_t>& colours = part.colours.emplace_back();
+      std::uint32_t* colours = store.reserve(children.size());
       for (const auto& [prefix, child] : children)
-        colours.push_back(colouring.voxelColour(child.sum, prefix, depth));
+        *colours++ = colouring.voxelColour(child.sum, prefix, depth);
+      part.colours.push_back(store.commit(children.size()));
       continue;
     }
     for (auto& [prefix, child] : children) {
       SubtreePieces& below = child.levels[i];
       for (auto& piece : below.nodes) part.nodes.push_back(std::move(piece));
-      for (auto& piece : below.colours) part.colours.push_back(std::move(piece));
+      for (const auto& piece : below.colours) part.colours.push_back(piece);
     }
   }
   return node;
@@ -119,7 +120,7 @@ std::uint32_t VoxelColouring::voxelColour(const ColourSum& sum, std::uint64_t ke
 }
 
 NodeResult voxelizeNode(std::span<BinnedPoint> unsorted, int level, const VoxelColouring& colouring,
-                        VoxelizerBuffers& buffers) {
+                        VoxelizerBuffers& buffers, ColourStore& store) {
   assert(!unsorted.empty());
   const int finest = colouring.finest();
   const std::span<BinnedPoint> points =
@@ -143,27 +144,28 @@ NodeResult voxelizeNode(std::span<BinnedPoint> unsorted, int level, const VoxelC
     std::vector<std::uint8_t>& nodes = part.nodes.emplace_back();
     nodes.reserve(depth == finest ? keys.size() : 0);
     encodeSubtree(keys, level, depth, finest, nodes);
-    std::vector<std::uint32_t>& colours = part.colours.emplace_back();
-    colours.reserve(depth == finest ? keys.size() : 0);
+    std::uint32_t* const colours = store.reserve(keys.size());  // at most a voxel per key
+    std::size_t voxels = 0;
     const int shift = 3 * (finest - depth);
     ColourSum sum;
     for (std::size_t p = 0; p < points.size(); ++p) {
       sum.add(points[p].payload);
       const std::uint64_t key = points[p].key() >> shift;
       if (p + 1 == points.size() || points[p + 1].key() >> shift != key) {
-        colours.push_back(colouring.voxelColour(sum, key, depth));
+        colours[voxels++] = colouring.voxelColour(sum, key, depth);
         sum = {};
       }
     }
+    part.colours.push_back(store.commit(voxels));
   }
   return node;
 }
 
 NodeResult combineNodes(int level, int child_level,
                         std::vector<std::pair<std::uint64_t, NodeResult>> children,
-                        const VoxelColouring& colouring) {
+                        const VoxelColouring& colouring, ColourStore& store) {
   assert(child_level > level && !children.empty());
-  if (child_level == level + 1) return joinChildren(level, children, colouring);
+  if (child_level == level + 1) return joinChildren(level, children, colouring, store);
   // Group the descendants by the node at level + 1 they lie in, join each group, then join those.
   const int shift = 3 * (child_level - level - 1);
   std::vector<std::pair<std::uint64_t, NodeResult>> middle;
@@ -175,10 +177,10 @@ NodeResult combineNodes(int level, int child_level,
       group.push_back(std::move(children[end++]));
     }
     middle.emplace_back(middle_prefix,
-                        combineNodes(level + 1, child_level, std::move(group), colouring));
+                        combineNodes(level + 1, child_level, std::move(group), colouring, store));
     begin = end;
   }
-  return joinChildren(level, middle, colouring);
+  return joinChildren(level, middle, colouring, store);
 }
 
 }  // namespace octopoint::prepare

@@ -12,6 +12,7 @@
 #include <utility>
 #include <vector>
 
+#include "codegen/colour_store.h"
 #include "codegen/intensity_grey.h"
 #include "codegen/point_bins.h"
 #include "codegen/prepared_model.h"
@@ -56,7 +57,7 @@ struct VoxelColouring {
 // are joined only once at the end.
 struct SubtreePieces {
   std::vector<std::vector<std::uint8_t>> nodes;
-  std::vector<std::vector<std::uint32_t>> colours;  // 0xRRGGBB per leaf
+  std::vector<std::span<const std::uint32_t>> colours;  // 0xRRGGBB per leaf, in a ColourStore
 };
 
 // What a node of the octree (a bin) contributes: the colour sum of all its points, and for each of
@@ -75,15 +76,15 @@ struct VoxelizerBuffers {
 };
 
 // The node at `level` from all of its points, given in `points` (the call reorders them, and
-// buffers.scratch).
+// buffers.scratch). Leaf colours go into `store`, which must outlive the result.
 NodeResult voxelizeNode(std::span<BinnedPoint> points, int level, const VoxelColouring& colouring,
-                        VoxelizerBuffers& buffers);
+                        VoxelizerBuffers& buffers, ColourStore& store);
 
 // A node at `level` from its descendants at `child_level` (their key prefixes ascending and all
-// inside that one node).
+// inside that one node); the colours of the voxels it makes go into `store`.
 NodeResult combineNodes(int level, int child_level,
                         std::vector<std::pair<std::uint64_t, NodeResult>> children,
-                        const VoxelColouring& colouring);
+                        const VoxelColouring& colouring, ColourStore& store);
 
 // Rec. 601 luma in 8.8 fixed point (77 + 150 + 29 = 256): the --scene "greyscale" palette.
 Rgb8 toGrey(const Rgb8& colour);

@@ -42,7 +42,7 @@ void countRed(std::span<std::uint32_t> colours, std::vector<std::uint32_t>& tabl
 
 }  // namespace
 
-std::vector<ColourCount> countColours(std::span<const std::vector<std::uint32_t>> pieces,
+std::vector<ColourCount> countColours(std::span<const std::span<const std::uint32_t>> pieces,
                                       unsigned threads) {
   // The pieces in `threads` runs of about equal colour counts; each run counts its reds, then
   // scatters its colours to where the runs before it leave room: the grouped order is fixed.

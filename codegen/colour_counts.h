@@ -16,7 +16,7 @@ struct ColourCount {
 };
 
 // Every colour of every piece, counted; ascending by colour, whatever the pieces and threads.
-std::vector<ColourCount> countColours(std::span<const std::vector<std::uint32_t>> pieces,
+std::vector<ColourCount> countColours(std::span<const std::span<const std::uint32_t>> pieces,
                                       unsigned threads);
 
 }  // namespace octopoint::prepare

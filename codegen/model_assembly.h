@@ -4,6 +4,7 @@
 // the options ask for it.
 
 #include <cstdint>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -16,8 +17,9 @@ namespace octopoint::prepare {
 struct EncodedLevel {
   int depth = 0;
   std::vector<std::uint8_t> nodes;
-  // 0xRRGGBB per leaf, in stream order, in the pieces the bins made (joined only as indices).
-  std::vector<std::vector<std::uint32_t>> colours;
+  // 0xRRGGBB per leaf, in stream order, in the pieces the bins made (joined only as indices;
+  // the memory is the preparer's, codegen/colour_store.h).
+  std::vector<std::span<const std::uint32_t>> colours;
   std::size_t leaves = 0;
 };
 

@@ -142,10 +142,11 @@ Palette Palette::build(std::span<const Rgb8> colours, int max_colours) {
 }
 
 Palette Palette::buildPacked(std::vector<std::uint32_t> packed, int max_colours) {
-  return buildFromPieces({&packed, 1}, max_colours, 1);
+  const std::span<const std::uint32_t> piece(packed);
+  return buildFromPieces({&piece, 1}, max_colours, 1);
 }
 
-Palette Palette::buildFromPieces(std::span<const std::vector<std::uint32_t>> pieces,
+Palette Palette::buildFromPieces(std::span<const std::span<const std::uint32_t>> pieces,
                                  int max_colours, unsigned threads) {
   assert(max_colours >= 1 && max_colours <= kMaxPaletteColours);
   std::vector<WeightedColour> distinct;

@@ -23,7 +23,7 @@ class Palette {
                              int max_colours = kMaxPaletteColours);
   // The same from the colours of all the pieces, on `threads` threads (the same palette for any
   // number): a large model's colours without joining them first.
-  static Palette buildFromPieces(std::span<const std::vector<std::uint32_t>> pieces,
+  static Palette buildFromPieces(std::span<const std::span<const std::uint32_t>> pieces,
                                  int max_colours, unsigned threads);
 
   const std::vector<Rgb8>& colours() const { return colours_; }

@@ -363,7 +363,7 @@ int run(int argc, char** argv) {
   const std::vector<std::uint8_t> image = image_made.get();
   std::string image_text;
   reserveOnHugePages(image_text, image.size());
-  image_text.assign(image.begin(), image.end());
+  image_text.append(reinterpret_cast<const char*>(image.data()), image.size());
   files.push_back({model.name + ".oct", std::move(image_text)});
   // A rerun replaces the model's whole set: level sources of depths it leaves out go too.
   octopoint::cli::writeFilesAtomically(args->output_dir, files, staleLevelSources(args->output_dir, model.name, files));

@@ -337,11 +337,11 @@ class StreamedPreparer {
 
   // The node of the bin at `level` with key `prefix`, from its points.
   NodeResult voxelizeBin(const BinContents& bin, int level, std::uint64_t prefix,
-                         VoxelizerBuffers& buffers) {
+                         VoxelizerBuffers& buffers, ColourStore& store) {
     if (bin.count <= bin_points_) {
       const std::span<BinnedPoint> points = buffers.points.resize(bin.count);
       gatherBin(bin, points);
-      return voxelizeNode(points, level, colouring_, buffers);
+      return voxelizeNode(points, level, colouring_, buffers, store);
     }
     buffers.points.resize(bin_points_);
     buffers.scratch.resize(bin_points_);
@@ -371,10 +371,10 @@ class StreamedPreparer {
       if (children[c].count == 0) continue;
       const std::uint64_t child_prefix = prefix << (3 * (child_level - level)) | c;
       results.emplace_back(child_prefix,
-                           voxelizeBin(children[c], child_level, child_prefix, buffers));
+                           voxelizeBin(children[c], child_level, child_prefix, buffers, store));
     }
     spilled_bytes_ += spill.bytesWritten();
-    return combineNodes(level, child_level, std::move(results), colouring_);
+    return combineNodes(level, child_level, std::move(results), colouring_, store);
   }
 
   NodeResult voxelizeBins(const std::vector<BinContents>& bins) {
@@ -383,19 +383,29 @@ class StreamedPreparer {
       if (bins[b].count) occupied.push_back(b);
     }
     std::vector<std::pair<std::uint64_t, NodeResult>> results(occupied.size());
+    // Each thread's buffers as large as the largest bin (up to its share of the budget) from the
+    // start: grown bin by bin, they were fresh memory again and again.
+    std::uint64_t largest = 0;
+    for (std::size_t bin : occupied) largest = std::max(largest, bins[bin].count);
     std::vector<VoxelizerBuffers> buffers(threads_);
+    for (VoxelizerBuffers& b : buffers) {
+      b.points.resize(std::min(largest, bin_points_));
+      b.scratch.resize(std::min(largest, bin_points_));
+    }
+    colour_stores_.resize(threads_);  // kept until the model is assembled
     std::atomic<std::uint64_t> done{0};
     Progress progress("pass 3 of 3, voxelizing", first_.bounds.count, "points");
     parallelFor(
         threads_, occupied.size(),
         [&](std::size_t i, unsigned worker) {
           const std::size_t bin = occupied[i];
-          results[i] = {bin, voxelizeBin(bins[bin], bin_level_, bin, buffers[worker])};
+          results[i] = {bin, voxelizeBin(bins[bin], bin_level_, bin, buffers[worker],
+                                         colour_stores_[worker])};
           done += bins[bin].count;
         },
         [&] { progress.update(done.load()); });
     buffers.clear();
-    return combineNodes(0, bin_level_, std::move(results), colouring_);
+    return combineNodes(0, bin_level_, std::move(results), colouring_, colour_stores_[0]);
   }
 
   static EncodedLevel flatten(SubtreePieces& pieces, int depth) {
@@ -430,6 +440,7 @@ class StreamedPreparer {
   int bin_level_ = 0;
   SpillFile spill_{temp_dir_};
   std::vector<std::unique_ptr<BinSpiller>> spillers_;
+  std::vector<ColourStore> colour_stores_;  // per thread: the voxels' colours
   std::atomic<std::uint64_t> spilled_bytes_{0};
 };
 
