@@ -31,6 +31,8 @@ install(TARGETS ${octopoint_exported} octopoint_warnings EXPORT octopointTargets
         ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR})
 if(TARGET octopoint-prepare)
   install(TARGETS octopoint-prepare EXPORT octopointTargets RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
+  # Not exported: octopoint-prepare runs it from its own directory (codegen/whole_scan.h).
+  install(TARGETS octopoint-prepare-pcl RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
 endif()
 install(EXPORT octopointTargets NAMESPACE octopoint:: DESTINATION ${octopoint_cmake_dir})
 configure_package_config_file(${PROJECT_SOURCE_DIR}/cmake/octopointConfig.cmake.in

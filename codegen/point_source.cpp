@@ -89,7 +89,7 @@ std::unique_ptr<PointSource> memorySource(const Scan& scan) {
   return std::make_unique<MemorySource>(scan);
 }
 
-std::unique_ptr<PointSource> openPointSource(const fs::path& path) {
+std::unique_ptr<PointSource> openStreamedSource(const fs::path& path) {
   // What the path is (a FIFO, a directory, too large) before what it is called, as loadScan does.
   const std::uint64_t size = checkScanFile(path);
   const std::string extension = lowerExtension(path);
@@ -101,9 +101,12 @@ std::unique_ptr<PointSource> openPointSource(const fs::path& path) {
   }
   if (is_las) return openLasSource(path);
   is_ply ? checkPlyHeader(path, size) : checkPcdHeader(path, size);
-  if (auto streamed = openBinaryScanSource(path, size, is_ply)) return streamed;
-  return std::make_unique<LoadedScanSource>(loadScan(path),
-                                            is_ply ? "PLY through PCL" : "PCD through PCL");
+  return openBinaryScanSource(path, size, is_ply);
+}
+
+std::unique_ptr<PointSource> loadedScanSource(Scan scan, const fs::path& path) {
+  return std::make_unique<LoadedScanSource>(
+      std::move(scan), lowerExtension(path) == ".ply" ? "PLY through PCL" : "PCD through PCL");
 }
 
 }  // namespace octopoint::prepare

@@ -85,4 +85,11 @@ inline constexpr cli::InputKind kStreamedScanInput{"scan", 4096 * cli::kGiB};
 // stays in memory. Throws PrepareError with one line for every failure.
 std::unique_ptr<PointSource> openPointSource(const std::filesystem::path& path);
 
+// openPointSource's checks and streamed readers alone: nullptr for a file that loadScan must read
+// (defined apart from openPointSource, which links PCL; codegen/whole_scan.h).
+std::unique_ptr<PointSource> openStreamedSource(const std::filesystem::path& path);
+
+// A scan PCL loaded from `path`, served from memory and owned by the source.
+std::unique_ptr<PointSource> loadedScanSource(Scan scan, const std::filesystem::path& path);
+
 }  // namespace octopoint::prepare

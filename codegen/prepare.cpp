@@ -42,27 +42,6 @@ Scan cropScan(const Scan& scan, const CropBox& box, const std::string& scan_path
   return cropped;
 }
 
-CropBox parseCropBox(const std::string& flag, const std::string& text) {
-  std::array<double, 6> v{};
-  std::size_t at = 0;
-  for (std::size_t i = 0; i < v.size(); ++i) {
-    const std::size_t comma = i + 1 < v.size() ? text.find(',', at) : text.size();
-    if (comma == std::string::npos || (i + 1 == v.size() && text.find(',', at) != std::string::npos)) {
-      throw PrepareError(flag + ": " + cli::inQuotes(text) + " is not six comma-separated numbers X0,Y0,Z0,X1,Y1,Z1");
-    }
-    v[i] = cli::parseReal(flag, std::string_view(text).substr(at, comma - at), -kMaxCropCoordinate,
-                          kMaxCropCoordinate);
-    at = comma + 1;
-  }
-  const CropBox box{{v[0], v[1], v[2]}, {v[3], v[4], v[5]}};
-  for (std::size_t axis = 0; axis < 3; ++axis) {
-    if (!(box.low[axis] < box.high[axis])) {
-      throw PrepareError(flag + ": " + cli::inQuotes(text) + " is empty: each lower bound must be below its upper bound");
-    }
-  }
-  return box;
-}
-
 Scan cleanScan(const Scan& full_scan, const std::string& scan_path, const PrepareOptions& options) {
   if (full_scan.positions.empty()) throw PrepareError(scan_path + ": the scan has no usable points");
   Scan scan = options.crop ? cropScan(full_scan, *options.crop, scan_path) : full_scan;

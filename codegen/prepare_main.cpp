@@ -31,6 +31,7 @@
 #include "codegen/scene.h"
 #include "codegen/scene_views.h"
 #include "codegen/streamed_prepare.h"
+#include "codegen/whole_scan.h"
 #include "renderer/model_format.h"
 
 namespace {
@@ -328,25 +329,15 @@ int run(int argc, char** argv) {
   PrepareSummary summary;
   PreparedModel model;
   std::string stream_line;
-  if (options.outliers || options.normals) {
-    // Outlier removal and normal estimation look at each point's neighbours, so the scan is loaded
-    // whole through PCL.
-    std::string extension = std::filesystem::path(args->scan).extension().string();
-    for (char& c : extension) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-    if (extension == ".las" || extension == ".laz") {
-      const char* what = options.outliers ? "outlier removal (the scene's \"outliers\")" : "normal estimation (--normals)";
-      throw PrepareError(args->scan + ": " + what + " needs the whole scan in memory, which octopoint-prepare does "
-                         "for .pcd and .ply only");
-    }
-    const Scan scan = loadScan(args->scan);
-    model = prepareModel(scan, args->scan, options, args->stream.threads);
-    summary.finite_points = scan.positions.size();
-    summary.dropped_non_finite = scan.dropped_non_finite;
-    summary.shading = scan.shading;
+  // Streamed when the file allows it and no option needs the whole scan; else read whole through
+  // PCL, by octopoint-prepare-pcl (codegen/whole_scan.h).
+  std::unique_ptr<PointSource> streamed;
+  if (!options.outliers && !options.normals) streamed = openStreamedSource(args->scan);
+  if (streamed) {
+    model = prepareFromSource(*streamed, args->scan, options, args->stream, &summary);
+    if (streamed->info().streamed) stream_line = describeStream(streamed->info(), summary, args->stream);
   } else {
-    const std::unique_ptr<PointSource> source = openPointSource(args->scan);
-    model = prepareFromSource(*source, args->scan, options, args->stream, &summary);
-    if (source->info().streamed) stream_line = describeStream(source->info(), summary, args->stream);
+    model = prepareWholeScan(args->scan, options, args->stream, summary, argv);
   }
   // A chunked file refines each depth from the one above it, so its depths must be nested; the
   // sources get the same voxels, so that both draw alike.

@@ -53,6 +53,12 @@ add_test(NAME cli.prepare.same_output_any_budget
                  -DOUT=${cli_out}/same_output -P ${CMAKE_CURRENT_SOURCE_DIR}/same_output_any_budget.cmake)
 set_tests_properties(cli.prepare.same_output_any_budget PROPERTIES FIXTURES_REQUIRED las_scans)
 
+add_test(NAME cli.prepare.starts_without_pcl
+         COMMAND ${CMAKE_COMMAND} -DPREPARE=$<TARGET_FILE:octopoint-prepare> -DLAS=${las_scans}/budget.las
+                 -DPCD=${PROJECT_SOURCE_DIR}/data/scans/bun0.pcd -DOUT=${cli_out}/without_pcl
+                 -P ${CMAKE_CURRENT_SOURCE_DIR}/prepare_without_pcl.cmake)
+set_tests_properties(cli.prepare.starts_without_pcl PROPERTIES FIXTURES_REQUIRED las_scans)
+
 # Bad LAS files: one line, exit 1, no output; under a 1 GiB address-space limit, which a header
 # that made the reader allocate what it declares would exceed at once. AddressSanitizer reserves
 # terabytes of shadow address space, so its builds cap each allocation at 1 GiB instead.
