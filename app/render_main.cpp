@@ -83,11 +83,12 @@ nor --file nor --url it draws the default model embedded in this binary.
   --list             list the embedded models and the decoder variants
   -h, --help         show this help
 
-Depth auto (docs/splats.md): a leaf's footprint W is the larger of its projected extents along
-screen x and y (voxel edge in pixels times the rotation row's |r0|+|r1|+|r2|). Auto draws the
-coarsest stored depth with W <= 1 pixel; if even the finest has W > 1 pixel, the finest with
-footprint splats (fixed_fast and fixed_simd cover each leaf's projected footprint, z-tested per
-pixel; the paper's variants set one pixel per leaf).
+Depth auto (docs/splats.md): a voxel of depth d has an edge of e = zoom * min(W, H) / 2^d
+pixels on a WxH frame. Auto draws the coarsest stored depth with e <= 1 pixel, among the depths
+the scan samples densely; if even the finest has e > 1 pixel, the finest. Where a leaf's projected
+footprint (e times the rotation row's |r0|+|r1|+|r2|, up to 1.73 e when turned) is wider than a
+pixel, fixed_fast and fixed_simd cover it with a footprint splat, z-tested per pixel (the paper's
+variants set one pixel per leaf).
 
 Numbers are parsed whole and range-checked. On any error prints one line on stderr and exits
 with status 1, writing nothing.

@@ -14,8 +14,9 @@ namespace octopoint::prepare {
 
 // The default --depths: 6..10 serves screens from 176x208 zoomed out to 0.25 (depth 6: a 44-pixel
 // cube, voxels under a pixel; the dual-resolution renderer's coarse frame one depth coarser) up to
-// 1280x960 at zoom 1 (depth 10: 0.94 pixel per voxel head-on), each cut short where the scan
-// stops sampling densely (denseDepthCount); past the finest depth kept, the renderer splats.
+// 1280x960 at zoom 1 (depth 10: a 0.94-pixel voxel edge, at any rotation), each cut short where
+// the scan stops sampling densely (denseDepthCount); past the finest depth kept, the renderer
+// splats.
 inline constexpr int kDefaultCoarsestDepth = 6;
 inline constexpr int kDefaultFinestDepth = 10;
 std::vector<int> defaultDepths();

@@ -112,7 +112,7 @@ DepthChoice chooseDepths(const Scene& scene) {
   char reason[320];
   std::snprintf(reason, sizeof reason,
                 "depths auto: %s, what the scene's %zu views need by projected size on %dx%d at zoom %g..%g "
-                "(the coarsest depth whose voxel footprint is at most one pixel, per view; one coarser for "
+                "(the coarsest depth whose voxel edge is at most one pixel, per view; one coarser for "
                 "moving views), cut where the scan stops sampling densely",
                 describeDepths(choice.depths).c_str(), cameras.size(), scene.width, scene.height, scene.zoom.low,
                 scene.zoom.high);

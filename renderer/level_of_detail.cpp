@@ -6,12 +6,15 @@
 namespace octopoint {
 namespace {
 
-// Whether a leaf of `depth` covers at most one pixel per axis for `camera`; nullopt if refused.
-std::optional<bool> fitsAPixel(const Camera& camera, int depth) {
-  const std::optional<SplatFootprint> footprint = leafFootprint(camera, depth, kDefaultFractionBits);
-  if (!footprint) return std::nullopt;
-  constexpr std::int32_t kOnePixel = std::int32_t{1} << kDefaultFractionBits;
-  return std::max(footprint->extent_x, footprint->extent_y) <= kOnePixel;
+// Whether a voxel of `depth` has an edge of at most one pixel for `camera`; nullopt if the camera
+// is refused at that depth. The edge is zoom * min(width, height) / 2^depth pixels (at zoom 1 the
+// cube's edge spans the shorter side), whatever the rotation; with the zoom in Q16.16 the test
+// zoom_raw * min(width, height) <= 2^(16 + depth) is exact (both sides below 2^48).
+std::optional<bool> edgeFitsAPixel(const Camera& camera, int depth) {
+  if (!leafFootprint(camera, depth, kDefaultFractionBits)) return std::nullopt;
+  const auto shorter_side = static_cast<std::uint64_t>(std::min(camera.width, camera.height));
+  const auto zoom_raw = static_cast<std::uint64_t>(camera.zoom.raw());  // > 0: accepted above
+  return zoom_raw * shorter_side <= std::uint64_t{1} << (Q16::kFractionBits + depth);
 }
 
 }  // namespace
@@ -28,7 +31,7 @@ std::size_t denseDepthCount(std::span<const std::uint64_t> voxels_per_depth) {
 std::optional<int> autoDepth(std::span<const int> stored_depths, const Camera& camera) {
   std::optional<int> finest_accepted;
   for (const int depth : stored_depths) {  // coarsest first
-    const std::optional<bool> fits = fitsAPixel(camera, depth);
+    const std::optional<bool> fits = edgeFitsAPixel(camera, depth);
     if (!fits) continue;
     if (*fits) return depth;
     finest_accepted = depth;

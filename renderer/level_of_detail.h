@@ -3,16 +3,20 @@
 // draw for a camera (its framebuffer size, zoom and rotation), so that a frame's cost follows the
 // pixels it covers rather than the model.
 //
-// The rule, exactly: let W(d) be the footprint of a leaf of depth d, the larger of its projected
-// extents along screen x and y (FrameSetup::splat.extent_x/extent_y, Q(32-F).F at
-// F = kDefaultFractionBits; W = voxel edge in pixels times the largest row sum
-// |r_0| + |r_1| + |r_2| of the rotation's first two rows). Depth auto draws the COARSEST stored
-// depth with W(d) <= 1 pixel: no depth coarser than it fits a voxel into a pixel, and one finer
-// would put up to eight leaves on a pixel. With consecutive stored depths W halves per depth, so
-// the drawn footprint lies in (1/2, 1] pixel: voxels are not much smaller than a pixel. When even
-// the finest stored depth has W > 1 pixel, the finest is drawn with footprint splats of that
-// footprint; when even the coarsest has W <= 1/2 pixel, the coarsest is drawn. Depths at which
-// the camera is refused (coordinates over 32 bits) are passed over. Integer only.
+// The rule, exactly: let e(d) = zoom * min(width, height) / 2^d be the edge of a voxel of depth d
+// in pixels (at zoom 1 the cube's edge spans the framebuffer's shorter side; orthographic, so the
+// edge does not depend on the rotation). Depth auto draws the COARSEST stored depth with
+// e(d) <= 1 pixel, tested exactly in integers as zoom_raw * min(width, height) <= 2^(16 + d) (the
+// zoom in Q16.16). No coarser depth has voxels as small as a pixel, and one finer would put about
+// four leaves of a surface on each pixel. With consecutive stored depths e halves per depth, so
+// the drawn edge lies in (1/2, 1] pixel: voxels not much smaller than a pixel. Turned, a voxel's
+// projected footprint (FrameSetup::splat.extent_x/extent_y: e times the largest row sum
+// |r_0| + |r_1| + |r_2| of the rotation's first two rows, up to sqrt(3) e) may exceed a pixel;
+// the decoders then draw it as a footprint splat (at most 2 pixels per axis at the drawn depth),
+// hole-free at a quarter of the leaves of the next finer depth. When even the finest stored depth
+// has e > 1 pixel, the finest is drawn with footprint splats; when even the coarsest has
+// e <= 1/2 pixel, the coarsest is drawn. Depths at which the camera is refused (coordinates over
+// 32 bits) are passed over. Integer only.
 //
 // Only depths the scan samples densely are candidates (denseDepthCount): a model prepared with an
 // explicit --depths list may store depths finer than its scan's point spacing, and drawn, such a
@@ -45,7 +49,7 @@ std::size_t denseDepthCount(std::span<const std::uint64_t> voxels_per_depth);
 std::optional<int> autoDepth(std::span<const int> stored_depths, const Camera& camera);
 
 // The depth a model would need for this camera if it stored every depth 1..format::kMaxDepth:
-// the coarsest whose leaf footprint is at most one pixel (what a preparer should store as the
+// the coarsest whose voxel edge is at most one pixel (what a preparer should store as the
 // finest depth). nullopt when the camera is refused at every depth.
 std::optional<int> neededDepth(const Camera& camera);
 

@@ -161,9 +161,11 @@ TEST(SceneViews, AutoDepthsSpanWhatTheViewsNeedByProjectedSizeAndOneCoarser) {
   EXPECT_EQ(chooseDepths(scene).depths, (std::vector<int>{7, 8}));
   scene.zoom = {0.25, 1};  // 60 px: depth 6, one coarser for moving views
   EXPECT_EQ(chooseDepths(scene).depths, (std::vector<int>{5, 6, 7, 8}));
-  scene.yaw_deg = Range{0, 30};  // turned 30 degrees a voxel is 1.37 times as wide on screen
+  scene.yaw_deg = Range{0, 30};  // turned, the voxel's edge is the same (its splat is wider)
+  scene.pitch_deg = Range{0, 35};
   scene.zoom = {1, 1};
-  EXPECT_EQ(chooseDepths(scene).depths, (std::vector<int>{7, 8, 9}));
+  EXPECT_EQ(chooseDepths(scene).depths, (std::vector<int>{7, 8}));
+  scene.pitch_deg = Range{0, 0};
   scene.yaw_deg = Range{0, 0};
   scene.zoom = {0.001, 0.001};  // under one pixel: depth 1 alone
   EXPECT_EQ(chooseDepths(scene).depths, (std::vector<int>{1}));

@@ -245,48 +245,66 @@ TEST(Splats, BandsOfAFrameConcatenateToTheWholeFrame) {
 std::optional<int> autoDepthOf(std::vector<int> depths, const Camera& camera) { return autoDepth(depths, camera); }
 
 // The rule (renderer/level_of_detail.h) at its boundaries. Frontal on a 256 x 256 frame at zoom 1
-// a depth-8 voxel is exactly one pixel: depth 8 is drawn, one pixel per leaf; a zoom 2^-15 larger
-// (the least the Q17.15 positions resolve here: half a voxel is zoom * 128 pixels) makes it wider
-// than a pixel, so depth 9 is drawn, or depth 8 with splats when it is the finest.
-TEST(DepthByProjectedSize, FootprintOfExactlyOnePixelIsDrawnWithoutSplats) {
+// a depth-8 voxel's edge is exactly one pixel: depth 8 is drawn, one pixel per leaf; a zoom one
+// unit of Q16.16 larger (2^-16) makes the edge longer than a pixel, so depth 9 is drawn, or depth
+// 8 with splats when it is the finest.
+TEST(DepthByProjectedSize, EdgeOfExactlyOnePixelIsDrawnWithoutSplats) {
   Camera camera = cameraOf(256, 256, 1, 0, 0);
   EXPECT_EQ(autoDepthOf({6, 7, 8, 9, 10}, camera), 8);
   EXPECT_FALSE(leafFootprint(camera, 8, kDefaultFractionBits)->active());
   EXPECT_EQ(leafFootprint(camera, 8, kDefaultFractionBits)->extent_x, 1 << kDefaultFractionBits);
-  camera.zoom = Q16::fromRaw(Q16::kOneRaw + 1);  // 2^-16 larger: below the positions' resolution
-  EXPECT_EQ(autoDepthOf({6, 7, 8, 9, 10}, camera), 8);
-  camera.zoom = Q16::fromRaw(Q16::kOneRaw + 2);
+  camera.zoom = Q16::fromRaw(Q16::kOneRaw + 1);  // edge 1 + 2^-16 pixel
   EXPECT_EQ(autoDepthOf({6, 7, 8, 9, 10}, camera), 9);
   EXPECT_EQ(autoDepthOf({6, 7, 8}, camera), 8);
+  camera.zoom = Q16::fromRaw(Q16::kOneRaw + 2);
   const SplatFootprint finest = *leafFootprint(camera, 8, kDefaultFractionBits);
   EXPECT_TRUE(finest.active());
   EXPECT_EQ(finest.columns, 2);
   EXPECT_EQ(finest.rows, 2);
   camera.zoom = Q16::fromRaw(Q16::kOneRaw / 2);  // a depth-7 voxel is one pixel
   EXPECT_EQ(autoDepthOf({6, 7, 8, 9, 10}, camera), 7);
-  camera.zoom = Q16::fromRaw(Q16::kOneRaw / 2 + 2);
+  camera.zoom = Q16::fromRaw(Q16::kOneRaw / 2 + 1);
   EXPECT_EQ(autoDepthOf({6, 7, 8, 9, 10}, camera), 8);
+  // The shorter side decides: 256 x 1000 is a 256-pixel cube at zoom 1, as is 1000 x 256.
+  camera = cameraOf(256, 1000, 1, 0, 0);
+  EXPECT_EQ(autoDepthOf({6, 7, 8, 9, 10}, camera), 8);
+  camera = cameraOf(1000, 257, 1, 0, 0);
+  EXPECT_EQ(autoDepthOf({6, 7, 8, 9, 10}, camera), 9);
 }
 
-TEST(DepthByProjectedSize, ZoomedOutDrawsTheCoarsestAndZoomedInTheFinestWithSplats) {
+// Turned, the rule looks at the voxel's edge, not at its footprint: a depth whose edge is at most a
+// pixel is drawn even where its turned footprint is wider than a pixel, then with footprint splats.
+TEST(DepthByProjectedSize, TurnedViewsDrawTheDepthOfTheEdgeWithSplats) {
   Camera camera = cameraOf(320, 240, 0.25, 30, 0);  // a 60-pixel cube
-  // W(d) = 60 / 2^d * (cos 30 + sin 30): 1.28 pixels at depth 6, 0.64 at depth 7.
-  EXPECT_EQ(autoDepthOf({1, 2, 3, 4, 5, 6, 7, 8}, camera), 7);
-  EXPECT_EQ(autoDepthOf({1, 2, 3, 4, 5, 6}, camera), 6);
-  EXPECT_EQ(autoDepthOf({8, 9}, camera), 8);
+  // e(d) = 60 / 2^d: 0.94 pixel at depth 6 (footprint 0.94 * (cos 30 + sin 30) = 1.28 pixels).
+  EXPECT_EQ(autoDepthOf({1, 2, 3, 4, 5, 6, 7, 8}, camera), 6);
+  EXPECT_EQ(autoDepthOf({1, 2, 3, 4, 5}, camera), 5);
+  EXPECT_EQ(autoDepthOf({7, 8, 9}, camera), 7);
+  FrameSetup setup;
+  ASSERT_EQ(buildFrameSetup(camera, 6, kDefaultFractionBits, &setup), CameraError::kNone);
+  EXPECT_GT(setup.splat.extent_x, 1 << kDefaultFractionBits);
+  EXPECT_EQ(setup.splat.columns, 2);
+  EXPECT_EQ(setup.splat.rows, 1);
+  // Turned about two axes the footprint is widest, up to sqrt(3) edges: still two pixels per axis.
+  camera = cameraOf(256, 256, 1, 45, 35);
+  EXPECT_EQ(autoDepthOf({6, 7, 8, 9, 10}, camera), 8);
+  ASSERT_EQ(buildFrameSetup(camera, 8, kDefaultFractionBits, &setup), CameraError::kNone);
+  EXPECT_EQ(setup.splat.columns, 2);
+  EXPECT_EQ(setup.splat.rows, 2);
   camera.zoom = Q16::fromRaw(8 * Q16::kOneRaw);
   EXPECT_EQ(autoDepthOf({7, 8}, camera), 8);
-  FrameSetup setup;
+  camera = cameraOf(320, 240, 8, 30, 0);
   ASSERT_EQ(buildFrameSetup(camera, 8, kDefaultFractionBits, &setup), CameraError::kNone);
   // 1920 / 256 = 7.5 pixels per voxel; x spans 7.5 * (cos 30 + sin 30) = 10.2, y 7.5.
   EXPECT_EQ(setup.splat.columns, 11);
   EXPECT_EQ(setup.splat.rows, 8);
 }
 
-TEST(DepthByProjectedSize, TurningTheModelWidensTheFootprint) {
-  const Camera frontal = cameraOf(1280, 960, 1, 0, 0);
-  EXPECT_EQ(neededDepth(frontal), 10);  // 960 / 1024 pixels per voxel
-  EXPECT_EQ(neededDepth(cameraOf(1280, 960, 1, 30, 0)), 11);  // 0.94 * 1.37 > 1
+TEST(DepthByProjectedSize, TheNeededDepthDoesNotDependOnTheRotation) {
+  EXPECT_EQ(neededDepth(cameraOf(1280, 960, 1, 0, 0)), 10);  // 960 / 1024 pixels per voxel
+  EXPECT_EQ(neededDepth(cameraOf(1280, 960, 1, 30, 0)), 10);
+  EXPECT_EQ(neededDepth(cameraOf(1280, 960, 1, 45, 35)), 10);
+  EXPECT_EQ(neededDepth(cameraOf(1280, 960, 1.07, 30, 0)), 11);  // 1027 pixels: 1.003 per voxel
   EXPECT_EQ(neededDepth(cameraOf(320, 240, 1, 0, 0)), 8);
   EXPECT_EQ(neededDepth(cameraOf(176, 208, 0.25, 0, 0)), 6);
 }
