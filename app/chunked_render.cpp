@@ -51,8 +51,9 @@ cv::Mat renderFromUrl(const std::string& url_text, const Camera& camera, Variant
   cv::Mat image;
   ProgressiveDrawStats stats;
   stream.withModel([&](ProgressiveModel* model) {
-    if (model != nullptr)
-      image = renderChunkedView(*model, camera, variant, fill, background, &stats);
+    if (model == nullptr) return;
+    model->setPointBudget(options.point_budget);
+    image = renderChunkedView(*model, camera, variant, fill, background, &stats);
   });
   if (image.empty()) {
     throw ModelLoadError(url->text() + ": the head did not arrive" +
@@ -67,9 +68,15 @@ cv::Mat renderFromUrl(const std::string& url_text, const Camera& camera, Variant
               (status.view_complete ? "view complete"
                                     : std::to_string(status.chunks_pending) + " still wanted") +
               ", depth " + std::to_string(stats.drawn_depth) + " drawn, " +
-              std::to_string(stats.coarser_pieces) + " regions coarser";
+              std::to_string(stats.coarser_pieces) + " regions coarser" + overBudgetNote(stats);
   }
   return image;
+}
+
+std::string overBudgetNote(const ProgressiveDrawStats& stats) {
+  if (stats.over_budget_chunks == 0) return {};
+  return ", " + std::to_string(stats.over_budget_chunks) +
+         " chunks one depth coarser for the point budget";
 }
 
 }  // namespace octopoint

@@ -19,9 +19,13 @@ cv::Mat renderChunkedView(ProgressiveModel& model, const Camera& camera, Variant
                           Rgb background, ProgressiveDrawStats* stats);
 
 struct UrlFetchOptions {
-  std::uint64_t bytes = 0;   // stop after this many bytes (0: whatever the view needs)
-  int timeout_seconds = 60;  // give up waiting after this long, and draw what arrived
+  std::uint64_t bytes = 0;         // stop after this many bytes (0: whatever the view needs)
+  int timeout_seconds = 60;        // give up waiting after this long, and draw what arrived
+  std::uint64_t point_budget = 0;  // draw at most about this many points (0: no budget)
 };
+
+// ", N chunks one depth coarser for the point budget" when the budget drew any so, else "".
+std::string overBudgetNote(const ProgressiveDrawStats& stats);
 
 // Streams `url` for `camera`, then draws what arrived. With a byte budget the client uses one
 // connection, so that the same N bytes always arrive in the same order. Throws ModelLoadError (one

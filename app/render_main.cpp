@@ -51,6 +51,10 @@ nor --file nor --url it draws the default model embedded in this binary.
   --bytes N          with --url: stop after N bytes and draw what they give (one connection, so
                      the same N bytes every time)
   --timeout S        with --url: draw what arrived after S seconds at most, 1..86400 (default 60)
+  --point-budget N   a chunked model (--url, or --file of a chunked file): draw at most about N
+                     points, 1..2^40 (default: no budget). When the view's visible chunks hold
+                     more at the depth it needs, those largest on screen, then nearest, keep it
+                     and the rest are drawn one depth coarser (docs/streaming.md, "Point budget")
   --yaw DEG          turn about the vertical axis, |DEG| <= 1e6 (default 0; the scan as its
                      sensor saw it)
   --pitch DEG        turn about the horizontal axis (default 0)
@@ -146,6 +150,9 @@ Options parseOptions(int argc, char** argv) {
       options.model_file = args.value();
     } else if (args.is("--url")) {
       options.url = args.value();
+    } else if (args.is("--point-budget")) {
+      options.fetch.point_budget =
+          static_cast<std::uint64_t>(cli::parseInteger(args.name(), args.value(), 1, std::int64_t{1} << 40));
     } else if (args.is("--bytes")) {
       options.fetch.bytes = static_cast<std::uint64_t>(cli::parseInteger(args.name(), args.value(), 1, std::int64_t{1} << 50));
     } else if (args.is("--timeout")) {
@@ -269,12 +276,16 @@ int run(int argc, char** argv) {
       throw cli::Error(loaded->label + ": a chunked model is drawn at the depth the view needs: --depth and --sheet do not apply");
     }
     ProgressiveDrawStats stats;
+    loaded->chunked->setPointBudget(options.fetch.point_budget);
     writePng(options.output, renderChunkedView(*loaded->chunked, options.camera, options.variant, options.fill,
                                                kBackground, &stats));
-    std::printf("%s: chunked, depth %d, %llu points -> %s (%dx%d)\n", loaded->label.c_str(), stats.drawn_depth,
-                static_cast<unsigned long long>(stats.points), options.output.c_str(), options.camera.width,
-                options.camera.height);
+    std::printf("%s: chunked, depth %d, %llu points%s -> %s (%dx%d)\n", loaded->label.c_str(), stats.drawn_depth,
+                static_cast<unsigned long long>(stats.points), overBudgetNote(stats).c_str(), options.output.c_str(),
+                options.camera.width, options.camera.height);
     return 0;
+  }
+  if (options.fetch.point_budget > 0) {
+    throw cli::Error(loaded->label + ": --point-budget applies to a chunked model (octopoint-prepare --chunked)");
   }
   const ModelView* model = &*loaded->view;
   const std::string& model_label = loaded->label;

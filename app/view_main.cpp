@@ -41,7 +41,8 @@ namespace {
 using namespace octopoint;
 
 constexpr const char* kUsage =
-    R"(usage: octopoint-view [--model NAME | --file M.oct | --url URL] [--size WxH] [--scale N] [--speed DEG]
+    R"(usage: octopoint-view [--model NAME | --file M.oct | --url URL [--point-budget N]] [--size WxH] [--scale N]
+                     [--speed DEG]
 
 Shows an octopoint model in a resizable window. While an arrow key is held the view turns at a
 fixed speed, drawn coarse (thread L); once the last key is let go the fine frame is drawn at the
@@ -54,6 +55,10 @@ size.
                  requests, http://HOST:PORT/NAME.oct (octopoint-serve, nginx, ...): the view
                  sharpens as its chunks arrive, those it shows first, coarse before fine; turning
                  or zooming asks for what the new view needs (docs/streaming.md)
+  --point-budget N  with --url: draw at most about N points a frame, 1..2^40 (default: no
+                 budget). When the view's visible chunks hold more at the depth it needs, those
+                 largest on screen, then nearest, keep it and the rest are drawn one depth
+                 coarser (docs/streaming.md, "Point budget")
   --size WxH     the initial frame, each side 16..4096 (default 640x480)
   --scale N      each frame pixel is shown as NxN window pixels, 1..8 (default 1): the frame is
                  the window's size divided by N
@@ -87,6 +92,7 @@ struct Options {
   int height = 480;
   int scale = 1;
   int degrees_per_second = 90;
+  std::uint64_t point_budget = 0;  // with --url; 0: none
 };
 
 double degreesOf(Angle angle) { return angle.turns16() * 360.0 / Angle::kUnitsPerTurn; }
@@ -167,10 +173,11 @@ InteractiveConfig interactiveConfig(const Options& options, ViewWindow& window) 
 // the coarse one a stored depth coarser; an empty frame until the head has arrived. Each render
 // thread draws from its own snapshot of the chunks held, taken under the stream's lock for a copy
 // of one byte per chunk, and draws without the lock: chunks keep arriving while it draws.
-ViewDrawFunction streamDrawer(net::ModelStream& stream) {
+ViewDrawFunction streamDrawer(net::ModelStream& stream, std::uint64_t point_budget) {
   const Variant variant = InteractiveConfig{}.variant;
   // One per render thread (FrameSource: L draws kCoarse, H kFine), kept across frames.
   auto snapshots = std::make_shared<std::array<ProgressiveFrame, 2>>();
+  for (ProgressiveFrame& snapshot : *snapshots) snapshot.setPointBudget(point_budget);
   return [&stream, variant, snapshots](FrameSource source, const Camera& camera,
                                        Framebuffer& frame, const std::atomic<bool>* abort,
                                        int* depth) {
@@ -205,7 +212,7 @@ Viewer::Viewer(const Options& options, const ModelView* model, net::ModelStream*
                     ? std::make_unique<DualResolutionRenderer>(*model, clock_,
                                                                interactiveConfig(options, window_, *model))
                     : std::make_unique<DualResolutionRenderer>(
-                          streamDrawer(*stream), clock_, interactiveConfig(options, window_))),
+                          streamDrawer(*stream, options.point_budget), clock_, interactiveConfig(options, window_))),
       keys_(keyTable(this)),
       resolve_([this](const Framebuffer& frame, const FrameInfo& info, std::span<std::uint8_t> rgb) {
         if (model_ != nullptr) {
@@ -539,6 +546,9 @@ Options parseOptions(int argc, char** argv) {
       options.model_file = args.value();
     } else if (args.is("--url")) {
       options.url = args.value();
+    } else if (args.is("--point-budget")) {
+      options.point_budget =
+          static_cast<std::uint64_t>(cli::parseInteger(args.name(), args.value(), 1, std::int64_t{1} << 40));
     } else if (args.is("--size")) {
       const cli::FrameSize size =
           cli::parseFrameSize(args.name(), args.value(), kMinFrameSide, kMaxFrameSide);
@@ -555,6 +565,7 @@ Options parseOptions(int argc, char** argv) {
   if (!options.model_name.empty() + !options.model_file.empty() + !options.url.empty() > 1) {
     throw cli::Error("give one of --model, --file and --url");
   }
+  if (options.point_budget > 0 && options.url.empty()) throw cli::Error("--point-budget needs --url");
   return options;
 }
 

@@ -5,6 +5,7 @@
 // usage: large_model_bench --large=LARGE.oct [benchmark flags]
 #include <benchmark/benchmark.h>
 
+#include <cmath>
 #include <cstdio>
 #include <cstring>
 #include <fstream>
@@ -47,7 +48,25 @@ std::optional<ProgressiveModel> loadChunked(const std::string& path,
   return model;
 }
 
-void drawProgressive(benchmark::State& state, const std::string& path) {
+// PSNR (dB) of `frame`'s pixels against `reference`'s, both resolved through the same palette
+// (a frame's quality next to its time: what a point budget gives up). Double is fine here: this is
+// the bench, not the renderer.
+double psnrAgainst(const Framebuffer& frame, const Framebuffer& reference,
+                   const ModelView& palette) {
+  const std::size_t pixels = static_cast<std::size_t>(frame.width()) * frame.height();
+  std::vector<std::uint8_t> a(pixels * 3), b(pixels * 3);
+  resolveToRgb(frame, palette, Rgb{0, 0, 0}, a);
+  resolveToRgb(reference, palette, Rgb{0, 0, 0}, b);
+  double sum = 0;
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    const double d = static_cast<double>(a[i]) - static_cast<double>(b[i]);
+    sum += d * d;
+  }
+  if (sum == 0) return 99.0;  // identical
+  return 10.0 * std::log10(255.0 * 255.0 * static_cast<double>(a.size()) / sum);
+}
+
+void drawProgressive(benchmark::State& state, const std::string& path, std::uint64_t budget = 0) {
   if (path.empty()) {
     state.SkipWithError("no model path given");
     return;
@@ -61,6 +80,7 @@ void drawProgressive(benchmark::State& state, const std::string& path) {
   const Camera camera = screen(static_cast<int>(state.range(0)));
   Framebuffer frame(camera.width, camera.height);
   ProgressiveDrawStats stats;
+  model->setPointBudget(budget);
   for (auto _ : state) {
     frame.clear();
     model->draw(camera, defaultVariant(), frame, &stats);
@@ -69,9 +89,21 @@ void drawProgressive(benchmark::State& state, const std::string& path) {
   state.counters["depth"] = stats.drawn_depth;
   state.counters["points"] = static_cast<double>(stats.points);
   state.counters["pieces"] = stats.pieces;
+  if (budget != 0) {  // against the frame without a budget
+    Framebuffer full(camera.width, camera.height);
+    full.clear();
+    model->setPointBudget(0);
+    model->draw(camera, defaultVariant(), full);
+    state.counters["coarser_chunks"] = stats.over_budget_chunks;
+    state.counters["psnr_dB"] = psnrAgainst(frame, full, model->baseModel());
+  }
 }
 
 void BM_LargeModel(benchmark::State& state) { drawProgressive(state, g_large_path); }
+// The same under a point budget: args zoom, budget in thousands of points.
+void BM_LargeModelBudget(benchmark::State& state) {
+  drawProgressive(state, g_large_path, static_cast<std::uint64_t>(state.range(1)) * 1000);
+}
 void BM_Depth8ModelChunked(benchmark::State& state) {
   drawProgressive(state, g_default_chunked_path);
 }
@@ -96,6 +128,9 @@ void BM_Depth8Model(benchmark::State& state) {
 BENCHMARK(BM_Depth8Model)->Arg(1)->Arg(4)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_Depth8ModelChunked)->Arg(1)->Arg(4)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_LargeModel)->Arg(1)->Arg(4)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_LargeModelBudget)
+    ->ArgsProduct({{1, 4}, {100, 150, 200, 400, 800}})
+    ->Unit(benchmark::kMillisecond);
 
 }  // namespace
 

@@ -145,8 +145,8 @@ TEST(FrameAllocation, RgbRendererAllocatesOnlyWhenTheSizeChanges) {
 }
 
 // A progressive model (renderer/progressive_model.h) holding part of a chunked file: asking what
-// to fetch, drawing, and asking whether the view is complete allocate nothing; only taking bytes
-// may.
+// to fetch, drawing (with and without a point budget), and asking whether the view is complete
+// allocate nothing; only taking bytes may.
 TEST(FrameAllocation, ProgressiveFramesAllocateNothing) {
   const std::vector<std::uint8_t> image = fuzzing::chunkedImage(*models::defaultModel(), {5, 6, 7, 8}, {1024, 1500});
   std::optional<ProgressiveModel> model =
@@ -167,10 +167,16 @@ TEST(FrameAllocation, ProgressiveFramesAllocateNothing) {
       const std::size_t count = model->fetchPriority(camera, true, wanted);
       frame.clear();
       const bool drawn = model->draw(camera, info.variant, frame, &stats);
+      model->setPointBudget(stats.points / 2);  // some chunks one depth coarser
+      ProgressiveDrawStats budget_stats;
+      const bool drawn_within_budget = model->draw(camera, info.variant, frame, &budget_stats);
+      model->setPointBudget(0);
       const bool complete = model->viewComplete(camera);
       resolveToRgb(frame, model->baseModel(), Rgb{}, rgb);
       const long allocations = heapAllocationCount() - before;
       EXPECT_TRUE(drawn);
+      EXPECT_TRUE(drawn_within_budget);
+      EXPECT_GT(budget_stats.over_budget_chunks, 0u) << info.name << " at zoom " << zoom;
       EXPECT_FALSE(complete);
       EXPECT_GT(count, 0u);
       EXPECT_EQ(allocations, 0) << info.name << " at zoom " << zoom;

@@ -92,6 +92,7 @@ bool ProgressiveModel::prepareFrame(const ProgressiveTables& tables, const Camer
   drawn = std::max(0, drawn - coarser_levels);
   frame.drawn_level = drawn;
   frame.wanted_depth = *wanted;
+  frame.budget_level = 0;
   // Where a leaf's splat reaches from its position, over every depth that may be drawn.
   frame.splat_low = {0, 0, 0};
   frame.splat_high = {0, 0, 0};
@@ -147,6 +148,19 @@ bool ProgressiveModel::offScreen(const Setups& frame, const Vec3& centre, const 
          std::int64_t{centre.y} + reach.y < 0 || std::int64_t{centre.y} - reach.y >= y_end;
 }
 
+// The part of a region's bounds that lies on screen, in Q(64-2F).2F square pixels: exact (sides
+// below 2^28), so that regions wholly on screen at one level compare equal whatever their
+// sub-pixel position.
+std::uint64_t ProgressiveModel::screenArea(const Setups& frame, const Vec3& c, const Vec3& reach) {
+  const int f = kDefaultFractionBits;
+  const std::int64_t w = std::int64_t{frame.width} << f, h = std::int64_t{frame.height} << f;
+  const std::int64_t x0 = std::clamp<std::int64_t>(std::int64_t{c.x} - reach.x, 0, w);
+  const std::int64_t x1 = std::clamp<std::int64_t>(std::int64_t{c.x} + reach.x, 0, w);
+  const std::int64_t y0 = std::clamp<std::int64_t>(std::int64_t{c.y} - reach.y, 0, h);
+  const std::int64_t y1 = std::clamp<std::int64_t>(std::int64_t{c.y} + reach.y, 0, h);
+  return static_cast<std::uint64_t>((x1 - x0) * (y1 - y0));
+}
+
 Vec3 ProgressiveModel::regionCentre(const Setups& frame, int level, std::uint32_t region) const {
   const FrameSetup& full = frame.full[static_cast<std::size_t>(frame.drawn_level)];
   const int region_level =
@@ -178,8 +192,9 @@ void ProgressiveModel::visitPieces(ProgressiveFrame& snapshot, int level, std::u
   }
   const Level& finer = levels_[at + 1];
   const std::uint8_t* finer_drawable = snapshot.drawable_.data() + tables.first_chunk[at + 1];
+  const bool budget_splits = level + 1 == frame.budget_level;
   for (std::uint32_t c = slot.child_begin; c < slot.child_end; ++c) {
-    if (finer_drawable[c] != 0) {
+    if (finer_drawable[c] != 0 && (!budget_splits || snapshot.kept_[c] != 0)) {
       visitPieces(snapshot, level + 1, c, visitor);
       continue;
     }
@@ -194,6 +209,67 @@ void ProgressiveModel::visitPieces(ProgressiveFrame& snapshot, int level, std::u
   }
 }
 
+// The points of the visible chunks of `level` (its table known) at their depth and one coarser.
+ProgressiveModel::BudgetCost ProgressiveModel::visibleCost(const ProgressiveFrame& snapshot,
+                                                           int level) const {
+  const Setups& frame = snapshot.setups_;
+  const auto at = static_cast<std::size_t>(level);
+  BudgetCost cost;
+  for (const ChunkRecord& rec : levels_[at].records) {
+    if (offScreen(frame, regionCentre(frame, level, rec.region), frame.own_reach[at])) continue;
+    cost.own += rec.points;
+    cost.coarser += rec.coarse_points;
+  }
+  return cost;
+}
+
+// The point budget (see draw): after prepareFrame, chooses the level it splits and which of its
+// visible chunks keep their depth (snapshot.kept_). Returns false for a camera prepareFrame
+// refuses at a coarser level.
+bool ProgressiveModel::applyPointBudget(ProgressiveFrame& snapshot, const Camera& camera,
+                                        int coarser_levels) const {
+  const std::uint64_t budget = snapshot.point_budget_;
+  Setups& frame = snapshot.setups_;
+  if (budget == 0) return true;
+  int level = 0;
+  BudgetCost cost;
+  for (;;) {
+    level = std::min(frame.drawn_level, snapshot.tables_.known_levels - 1);
+    if (level < 1) return true;  // the base alone: nothing coarser to draw
+    cost = visibleCost(snapshot, level);
+    if (cost.own <= budget) return true;  // the view fits
+    if (cost.coarser <= budget || level == 1) break;
+    // Even one depth coarser everywhere is over the budget: the level above is the one to split.
+    coarser_levels += frame.drawn_level - level + 1;
+    if (!prepareFrame(snapshot.tables_, camera, coarser_levels, frame)) return false;
+  }
+  const auto at = static_cast<std::size_t>(level);
+  const std::vector<ChunkRecord>& records = levels_[at].records;
+  std::vector<ProgressiveFrame::BudgetEntry>& order = snapshot.budget_order_;
+  order.clear();  // capacity: every chunk of the largest known level (snapshot)
+  for (std::uint32_t i = 0; i < records.size(); ++i) {
+    const Vec3 centre = regionCentre(frame, level, records[i].region);
+    const bool visible = !offScreen(frame, centre, frame.own_reach[at]);
+    snapshot.kept_[i] = visible ? 0 : 1;  // an invisible chunk draws nothing either way
+    if (visible) order.push_back({screenArea(frame, centre, frame.own_reach[at]), centre.z, i});
+  }
+  std::sort(order.begin(), order.end(), [](const auto& a, const auto& b) {
+    if (a.area != b.area) return a.area > b.area;
+    if (a.z != b.z) return a.z < b.z;
+    return a.index < b.index;
+  });
+  std::uint64_t total = cost.coarser;  // every visible chunk one depth coarser
+  for (const ProgressiveFrame::BudgetEntry& entry : order) {
+    const ChunkRecord& rec = records[entry.index];
+    const std::uint64_t with_it = total - rec.coarse_points + rec.points;
+    if (with_it > budget) break;  // the rest, smaller or farther, stay coarser
+    total = with_it;
+    snapshot.kept_[entry.index] = 1;
+  }
+  frame.budget_level = level;
+  return true;
+}
+
 bool ProgressiveModel::draw(const Camera& camera, Variant variant, FrameView& frame,
                             ProgressiveDrawStats* stats, const std::atomic<bool>* abort,
                             int coarser_levels) {
@@ -206,10 +282,16 @@ bool ProgressiveModel::draw(ProgressiveFrame& snapshot, const Camera& camera, Va
                             const std::atomic<bool>* abort, int coarser_levels) const {
   if (snapshot.drawable_.empty()) return false;  // never given a snapshot
   if (!prepareFrame(snapshot.tables_, camera, coarser_levels, snapshot.setups_)) return false;
+  if (!applyPointBudget(snapshot, camera, coarser_levels)) return false;
   PieceDrawer drawer{variant, frame, abort, {}};
   visitPieces(snapshot, 0, 0, drawer);
   if (stats != nullptr) {
     *stats = drawer.stats;
+    const int split = snapshot.setups_.budget_level;
+    if (split != 0) {
+      for (std::uint32_t i = 0; i < chunkCount(split); ++i)
+        stats->over_budget_chunks += snapshot.kept_[i] == 0;
+    }
     stats->wanted_depth = snapshot.setups_.wanted_depth;
     stats->drawn_depth = levelDepth(snapshot.setups_.drawn_level);
   }

@@ -113,6 +113,9 @@ bool ProgressiveModel::acceptRecordTable(int level, std::span<const std::uint8_t
   tables_.points[static_cast<std::size_t>(level)] = points;
   drawable_.resize(drawable_.size() + target.records.size(), 0);
   own_frame_.drawable_.reserve(drawable_.size());
+  if (own_frame_.kept_.size() < target.records.size())
+    own_frame_.kept_.resize(target.records.size());
+  own_frame_.budget_order_.reserve(target.records.size());
   for (Slot& parent : coarser.slots) parent.child_begin = parent.child_end = 0;
   for (std::uint32_t i = 0; i < target.records.size(); ++i) {
     Slot& parent = coarser.slots[target.records[i].parent];
@@ -224,6 +227,12 @@ void ProgressiveModel::setDrawable(int level, std::uint32_t index, bool drawable
 void ProgressiveModel::snapshot(ProgressiveFrame& frame) const {
   frame.tables_ = tables_;
   frame.drawable_.assign(drawable_.begin(), drawable_.end());
+  // The point budget's per-frame scratch: one entry per chunk of the largest known level.
+  std::size_t most = 0;
+  for (int level = 1; level < tables_.known_levels; ++level)
+    most = std::max<std::size_t>(most, chunkCount(level));
+  if (frame.kept_.size() < most) frame.kept_.resize(most);
+  frame.budget_order_.reserve(most);
 }
 
 std::uint64_t ProgressiveModel::acceptBytes(std::uint64_t file_offset,

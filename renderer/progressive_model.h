@@ -74,10 +74,13 @@ struct ProgressiveTables {
 
 struct ProgressiveDrawStats {
   int wanted_depth = 0;      // the depth the view needs (renderer/progressive_model.h: wantedDepth)
-  int drawn_depth = 0;       // the finest stored depth not finer than that
+  int drawn_depth = 0;       // the finest stored depth drawn (coarser under a point budget)
   int pieces = 0;            // region streams drawn
-  int coarser_pieces = 0;    // of those, drawn coarser than drawn_depth because data is missing
+  int coarser_pieces = 0;    // of those, drawn coarser than drawn_depth (data missing, or budget)
   std::uint64_t points = 0;  // leaves in the streams drawn
+  // Under a point budget (ProgressiveFrame::setPointBudget): the visible chunks of the drawn
+  // depth's level drawn one depth coarser to keep within it (0 when the view fits the budget).
+  std::uint32_t over_budget_chunks = 0;
 };
 
 // What one drawing thread draws from: a snapshot of which chunks a model held when it was taken
@@ -87,8 +90,24 @@ class ProgressiveFrame {
  public:
   ProgressiveFrame() = default;
 
+  // The most points (leaves) a frame drawn from this snapshot should draw; 0 (the default): no
+  // budget. See ProgressiveModel::draw, "Point budget".
+  void setPointBudget(std::uint64_t points) { point_budget_ = points; }
+  std::uint64_t pointBudget() const { return point_budget_; }
+  // After a draw: whether the budget drew chunk `index` of `level` one depth coarser.
+  bool overBudget(int level, std::uint32_t index) const {
+    return level == setups_.budget_level && index < kept_.size() && kept_[index] == 0;
+  }
+
  private:
   friend class ProgressiveModel;
+  // A visible chunk of the level the budget splits, ranked by what it shows (see
+  // ProgressiveModel::applyPointBudget).
+  struct BudgetEntry {
+    std::uint64_t area;   // on-screen pixels of its region's bounds (clipped to the frame)
+    std::int32_t z;       // its region's centre: smaller is nearer
+    std::uint32_t index;  // in its level
+  };
   // Per frame: set-ups of each level's depth, moved to the level's own regions and to the next
   // level's regions (drawing a coarser chunk in place of a missing finer one).
   struct Setups {
@@ -103,10 +122,16 @@ class ProgressiveFrame {
     std::array<Vec3, chunked::kMaxChunkedLevels> own_reach{};
     std::array<Vec3, chunked::kMaxChunkedLevels> restricted_reach{};
     Vec3 splat_low{}, splat_high{};  // the widest splat's first and last pixel from a leaf (x, y)
+    int budget_level = 0;  // the level whose chunks a point budget splits (kept_); 0: none
   };
   ProgressiveTables tables_;
   std::vector<std::uint8_t> drawable_;  // per chunk of the known levels: 1 when drawable
   Setups setups_;
+  std::uint64_t point_budget_ = 0;
+  // Per frame under a budget, per chunk of the level it splits: 1 when drawn at its own depth.
+  // Sized by snapshot(), so that drawing allocates nothing.
+  std::vector<std::uint8_t> kept_;
+  std::vector<BudgetEntry> budget_order_;
 };
 
 class ProgressiveModel {
@@ -178,6 +203,18 @@ class ProgressiveModel {
   // `abort` became true while drawing (polled as renderLevel polls it). `coarser_levels` draws that
   // many stored levels coarser than the view needs (a quick frame while the view moves).
   // Allocates nothing.
+  //
+  // Point budget (ProgressiveFrame::setPointBudget; setPointBudget here for the draw without a
+  // snapshot): depth by projected size bounds a voxel's size on screen, not how many there are,
+  // so a model filling the screen at a fine depth costs its millions of points. With a budget B,
+  // the frame draws at most B points where it can: counted from the record tables over the
+  // visible chunks of the level drawn (each chunk's points at its depth, or its coarse count one
+  // depth coarser), while even the coarser counts exceed B the level drawn moves one coarser (not
+  // past level 1); then the visible chunks of that level, largest on screen first, then nearest,
+  // then in file order, keep their depth while the total stays within B, and the rest are drawn
+  // one depth coarser (their coarser chunk's part, with splats), as if they had not arrived. The
+  // choice depends only on the view, the budget and the record tables known, never on which chunks
+  // have arrived: integer only, deterministic, no allocation.
   bool draw(const Camera& camera, Variant variant, FrameView& frame,
             ProgressiveDrawStats* stats = nullptr, const std::atomic<bool>* abort = nullptr,
             int coarser_levels = 0);
@@ -187,7 +224,11 @@ class ProgressiveModel {
             ProgressiveDrawStats* stats = nullptr, const std::atomic<bool>* abort = nullptr,
             int coarser_levels = 0) const;
 
-  // Whether this view's picture is final: every visible region drawn at the depth the view needs.
+  // The point budget of draw(camera, ...) (0, the default: none); see draw.
+  void setPointBudget(std::uint64_t points) { own_frame_.setPointBudget(points); }
+
+  // Whether this view's picture is final: every visible region drawn at the depth the view needs
+  // (whatever the point budget).
   bool viewComplete(const Camera& camera);
 
   // Bytes held for chunks (assembled streams, waiting chunks) and records.
@@ -230,6 +271,12 @@ class ProgressiveModel {
   Vec3 regionCentre(const Setups& frame, int level, std::uint32_t region) const;
   Vec3 reachBelow(const Setups& frame, int tree_level) const;
   static bool offScreen(const Setups& frame, const Vec3& centre, const Vec3& reach);
+  static std::uint64_t screenArea(const Setups& frame, const Vec3& centre, const Vec3& reach);
+  struct BudgetCost {
+    std::uint64_t own = 0, coarser = 0;  // visible chunks' points at their depth, one coarser
+  };
+  BudgetCost visibleCost(const ProgressiveFrame& snapshot, int level) const;
+  bool applyPointBudget(ProgressiveFrame& snapshot, const Camera& camera, int coarser_levels) const;
   template <typename PieceVisitor>
   void visitPieces(ProgressiveFrame& snapshot, int level, std::uint32_t index,
                    PieceVisitor& visitor) const;

@@ -6,6 +6,7 @@ add_executable(chunked_tests
   chunked_format_test.cpp
   chunked_test_support.cpp
   chunked_writer_test.cpp
+  point_budget_test.cpp
   progressive_model_test.cpp
   ${PROJECT_SOURCE_DIR}/fuzz/model_images.cpp
   ${codegen}/chunked_writer.cpp

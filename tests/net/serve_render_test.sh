@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # End to end through the real programs: a scan prepared --chunked, served by octopoint-serve on a
 # free port of 127.0.0.1, drawn by octopoint-render --url. The whole view equals the file's picture;
-# --bytes N gives the same picture every time; bad URLs fail with one line.
+# --bytes N gives the same picture every time; --point-budget draws the same coarser picture from
+# both; bad URLs fail with one line.
 # usage: serve_render_test.sh PREPARE SERVE RENDER SCAN WORKDIR
 set -euo pipefail
 prepare=$1 serve=$2 render=$3 scan=$4 work=$5
@@ -23,10 +24,19 @@ done
 cmp -s "$work/bytes_a.png" "$work/bytes_b.png" || fail "--bytes 3000 drew two different pictures"
 "$render" --url "$url" -o "$work/all.png" >/dev/null
 cmp -s "$work/bytes_a.png" "$work/all.png" && fail "3000 bytes drew the complete picture"
+# A point budget: the file and the stream draw the same, coarser picture, and say so.
+"$render" --file "$work/models/sphere.oct" --point-budget 3000 -o "$work/budget_file.png" >"$work/budget.out"
+grep -q "one depth coarser for the point budget" "$work/budget.out" || fail "--point-budget 3000: $(cat "$work/budget.out")"
+"$render" --url "$url" --point-budget 3000 -o "$work/budget_url.png" >/dev/null
+cmp -s "$work/budget_file.png" "$work/budget_url.png" || fail "--point-budget: --url and --file differ"
+"$render" --file "$work/models/sphere.oct" -o "$work/file.png" >/dev/null
+cmp -s "$work/budget_file.png" "$work/file.png" && fail "--point-budget 3000 drew the whole picture"
+message=$("$render" --point-budget 3000 -o "$work/bad.png" 2>&1 >/dev/null) && fail "--point-budget on a version-1 model did not fail"
+case "$message" in *"applies to a chunked model"*) ;; *) fail "--point-budget on a version-1 model: '$message'";; esac
 for bad in "http://127.0.0.1:$SERVE_PORT/nothere.oct|404" "http://127.0.0.1:$SERVE_PORT/../etc/passwd|403" \
            "ftp://127.0.0.1/x.oct|not an http:// URL"; do
   message=$("$render" --url "${bad%|*}" -o "$work/bad.png" 2>&1 >/dev/null) && fail "${bad%|*} did not fail"
   case "$message" in *"${bad#*|}"*) ;; *) fail "${bad%|*}: '$message' does not say '${bad#*|}'";; esac
   [ ! -e "$work/bad.png" ] || fail "${bad%|*} left a PNG"
 done
-echo "ok: octopoint-serve on port $SERVE_PORT, --url matches --file, --bytes is repeatable"
+echo "ok: octopoint-serve on port $SERVE_PORT, --url matches --file, --bytes is repeatable, --point-budget"
