@@ -1,9 +1,9 @@
 #include "renderer/chunk_stream.h"
 
 #include <array>
-#include <bit>
 #include <cassert>
 
+#include "renderer/bit_scan.h"
 #include "renderer/crc32.h"
 #include "renderer/decode_algorithms.h"
 #include "renderer/model_format.h"
@@ -37,7 +37,7 @@ class Refiner {
     out_.push_back(0);
     unsigned kept = 0;
     for (unsigned mask = *coarse++; mask != 0; mask &= mask - 1) {
-      const unsigned child = static_cast<unsigned>(std::countr_zero(mask));
+      const unsigned child = static_cast<unsigned>(lowestChild(mask));
       const bool has_voxels =
           level + 1 == levels ? refineVoxel() : refineNode(coarse, level + 1, levels);
       if (has_voxels) kept |= 1u << child;
@@ -55,7 +55,7 @@ class Refiner {
     const unsigned mask = masks_[at_++];
     out_.push_back(static_cast<std::uint8_t>(mask));
     if (level + 1 == gap_) return;
-    for (int child = std::popcount(mask); child > 0; --child) copySubtree(level + 1);
+    for (int child = childCount(mask); child > 0; --child) copySubtree(level + 1);
   }
 
   std::span<const std::uint8_t> masks_;
@@ -79,7 +79,7 @@ void visitSubregions(const std::uint8_t*& node, const std::uint8_t*& leaf,
     return;
   }
   for (unsigned mask = *node++; mask != 0; mask &= mask - 1) {
-    const auto child = static_cast<std::uint32_t>(std::countr_zero(mask));
+    const auto child = static_cast<std::uint32_t>(lowestChild(mask));
     visitSubregions(node, leaf, node_base, leaf_base, level + 1, levels, level_below,
                     code << 3 | child, visit);
   }
@@ -103,11 +103,11 @@ ChunkedIssue validateChunk(std::span<const std::uint8_t> bytes, const ChunkRecor
     const unsigned first = masks[at++];
     if (first == 0) continue;  // nothing at the finer depth
     if (gap == 1) {
-      leaves += static_cast<unsigned>(std::popcount(first));
+      leaves += static_cast<unsigned>(childCount(first));
       continue;
     }
     int top = 1;
-    pending[1] = std::popcount(first);
+    pending[1] = childCount(first);
     while (top >= 1) {
       if (pending[static_cast<std::size_t>(top)] == 0) {
         --top;
@@ -119,10 +119,10 @@ ChunkedIssue validateChunk(std::span<const std::uint8_t> bytes, const ChunkRecor
       if (mask == 0) return issueAt(ChunkedError::kChunkEmptyNode, at);
       ++at;
       if (top + 1 == gap) {
-        leaves += static_cast<unsigned>(std::popcount(mask));
+        leaves += static_cast<unsigned>(childCount(mask));
       } else {
         ++top;
-        pending[static_cast<std::size_t>(top)] = std::popcount(mask);
+        pending[static_cast<std::size_t>(top)] = childCount(mask);
       }
     }
   }

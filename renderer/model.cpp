@@ -3,6 +3,7 @@
 #include <bit>
 #include <cstring>
 
+#include "renderer/bit_scan.h"
 #include "renderer/model_bytes.h"
 
 namespace octopoint {
@@ -81,7 +82,7 @@ ModelIssue validateLevelStream(const LevelView& level, int palette_count, int no
     const std::uint8_t mask = level.nodes[node_at];
     if (mask == 0) return {ModelError::kEmptyNode, node_at, depth};
     ++node_at;
-    const int children = std::popcount(mask);
+    const int children = childCount(mask);
     if (top + 1 == depth) {
       leaf_total += static_cast<std::size_t>(children);  // leaf parent: its children are leaves
     } else {
