@@ -337,6 +337,10 @@ bool ModelServer::bind(std::string* error) {
   impl_->set_read_timeout(impl_->options_.request_seconds);
   impl_->set_write_timeout(impl_->options_.write_timeout_seconds);
   impl_->set_payload_max_length(0);
+  // A response is its headers, then its body in slices: with Nagle's algorithm a slice waits for
+  // the client's (delayed, up to 40 ms) acknowledgement of the headers, which on a fast link costs
+  // more than the transfer (a 4 KB range took 70-100 ms at 1 MB/s + 20 ms instead of 24 ms).
+  impl_->set_tcp_nodelay(true);
   impl_->set_keep_alive_max_count(kRequestsPerConnection);  // what the Keep-Alive header announces
   impl_->set_keep_alive_timeout(impl_->options_.keep_alive_seconds);
   if (impl_->options_.port == 0) {

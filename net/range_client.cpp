@@ -60,6 +60,7 @@ class RangeClient::Impl {
     client_.set_read_timeout(timeouts.read_seconds);
     client_.set_write_timeout(timeouts.read_seconds);
     client_.set_keep_alive(true);
+    client_.set_tcp_nodelay(true);  // a request goes out whole at once, never behind an ACK
     client_.set_decompress(false);
     client_.set_follow_location(false);
   }
