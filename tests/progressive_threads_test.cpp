@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <atomic>
+#include <chrono>
 #include <mutex>
 #include <optional>
 #include <thread>
@@ -63,9 +64,18 @@ TEST(ProgressiveThreads, ChunksArriveWhileTwoThreadsDrawSnapshotsWithoutTheLock)
   std::mutex mutex;
   std::size_t accepted = 0;  // under mutex
   std::atomic<std::size_t> accepted_now{0};
+  std::atomic<int> redraws{0};  // redraws of a snapshot, by both drawers
 
   std::thread feeder([&] {
     for (std::size_t i = 0; i < items.size(); ++i) {
+      if (i == items.size() / 2) {
+        // On a loaded machine the feeder could otherwise accept every item before a drawer runs
+        // at all. Halfway, it waits until a drawer redraws a snapshot (it goes on redrawing while
+        // the next 8 items arrive); bounded, so a drawer that never gets there fails, not hangs.
+        const auto give_up = std::chrono::steady_clock::now() + std::chrono::seconds(30);
+        while (redraws.load() == 0 && std::chrono::steady_clock::now() < give_up)
+          std::this_thread::yield();
+      }
       {
         const std::lock_guard lock(mutex);
         EXPECT_EQ(model->accept(items[i], bytesOf(items[i])).error, ChunkedError::kNone);
@@ -98,6 +108,7 @@ TEST(ProgressiveThreads, ChunksArriveWhileTwoThreadsDrawSnapshotsWithoutTheLock)
           model->draw(snapshot, camera, Variant::kFixedFast, again, nullptr, nullptr, coarser);
           EXPECT_TRUE(samePixels(again, d.frame)) << "a snapshot changed while it was drawn";
           ++d.repeats_while_feeding;
+          ++redraws;
         }
         const bool last = d.items == items.size();
         if (drawn.empty() || drawn.back().items != d.items) drawn.push_back(std::move(d));
