@@ -19,7 +19,7 @@ void CreaseTable::build(const ModelView& model, Angle angle) {
     for (int b = 0; b < model.normalCount(); ++b) {
       const NormalQ14 m = model.normal(b);
       const std::int32_t dot = std::abs(n.x * m.x + n.y * m.y + n.z * m.z);
-      if (dot < limit)
+      if (dot < limit && a != b)
         bits_[static_cast<std::size_t>(a) * 8 + (static_cast<std::size_t>(b) >> 5)] |= 1u
                                                                                        << (b & 31);
     }

@@ -12,9 +12,9 @@
 // Neighbours outside the frame are ignored: no line along the frame's edge.
 //
 // Bands (drawing a frame a few rows at a time): a row's result depends on the rows above and
-// below it. `forEachStyledPixel` styles rows [first_row, end_row) of a frame and reads rows
-// first_row - 1 and end_row where the frame has them; a band drawn one row taller at each inner
-// edge therefore styles exactly as the whole frame does.
+// below it. `forEachStyledPixel` (renderer/styled_rows.h) styles rows [first_row, end_row) of a
+// frame and reads rows first_row - 1 and end_row where the frame has them; a band drawn one row
+// taller at each inner edge therefore styles exactly as the whole frame does.
 
 #include <array>
 #include <cstdint>
@@ -33,7 +33,9 @@ enum class Edge : std::uint8_t { kNone, kCrease, kSilhouette };
 
 class CreaseTable {
  public:
-  // Pairs of `model`'s normal palette entries more than `angle` apart (0 to 180 degrees).
+  // Pairs of `model`'s normal palette entries more than `angle` apart (0 to 180 degrees). An
+  // entry is never a crease with itself, whatever the rounding of its dot product at angle 0: the
+  // line pass then needs no test for equal indices.
   void build(const ModelView& model, Angle angle);
   bool crease(std::uint32_t a, std::uint32_t b) const {
     return (bits_[a * 8 + (b >> 5)] >> (b & 31)) & 1u;
@@ -54,10 +56,11 @@ struct EdgeRule {
 // The rule for a frame set up by `setup` whose words carry `payload`.
 EdgeRule edgeRuleFor(const FrameSetup& setup, PixelPayload payload, const CreaseTable* creases);
 
-// Neighbour q of a covered pixel whose word is `word` and depth `depth` (word >> key_shift): whether
-// q makes p a silhouette (q is background or farther by more than the jump); and, when p draws the
-// pair's crease (p nearer, or as near and `p_draws_ties`: q to its right or below), whether their
-// normals make one, or'ed into `crease`. Equal normal indices are never a crease: no look-up.
+// Neighbour q of a covered pixel whose word is `word` and depth `depth` (word >> key_shift):
+// whether q makes p a silhouette (q is background or farther by more than the jump); and, when p
+// draws the pair's crease (p nearer, or as near and `p_draws_ties`: q to its right or below),
+// whether their normals make one, or'ed into `crease`. Equal normal indices are never a crease: no
+// look-up.
 inline bool silhouetteOrCrease(std::uint32_t word, std::uint32_t depth, std::uint32_t neighbour,
                                bool p_draws_ties, const EdgeRule& rule, bool& crease) {
   if (neighbour == Framebuffer::kEmpty) return true;
@@ -65,81 +68,29 @@ inline bool silhouetteOrCrease(std::uint32_t word, std::uint32_t depth, std::uin
   if (other > depth + rule.jump) return true;
   if (crease || depth > other + rule.jump || rule.creases == nullptr) return false;
   if (other > depth || (other == depth && p_draws_ties)) {
-    const std::uint32_t n = Framebuffer::normalIndexOf(word), m = Framebuffer::normalIndexOf(neighbour);
+    const std::uint32_t n = Framebuffer::normalIndexOf(word),
+                        m = Framebuffer::normalIndexOf(neighbour);
     crease = n != m && rule.creases->crease(n, m);
   }
   return false;
 }
 
-// The class of pixel x of `row` (covered), given the rows above and below (nullptr outside the
-// frame).
-inline Edge classifyPixel(const std::uint32_t* above, const std::uint32_t* row,
-                          const std::uint32_t* below, std::int32_t x, std::int32_t width,
+// The class of pixel (x, y) of `frame`, covered: the definition of the line pass. Reads the
+// pixel's four neighbours where the frame has them.
+inline Edge classifyPixel(const FrameView& frame, std::int32_t x, std::int32_t y,
                           const EdgeRule& rule) {
-  const std::uint32_t word = row[x];
+  const std::uint32_t word = frame.pixelAt(x, y);
   const std::uint32_t depth = word >> rule.key_shift;
   bool crease = false;
-  if ((x > 0 && silhouetteOrCrease(word, depth, row[x - 1], false, rule, crease)) ||
-      (x + 1 < width && silhouetteOrCrease(word, depth, row[x + 1], true, rule, crease)) ||
-      (above != nullptr && silhouetteOrCrease(word, depth, above[x], false, rule, crease)) ||
-      (below != nullptr && silhouetteOrCrease(word, depth, below[x], true, rule, crease))) {
+  if ((x > 0 && silhouetteOrCrease(word, depth, frame.pixelAt(x - 1, y), false, rule, crease)) ||
+      (x + 1 < frame.width() &&
+       silhouetteOrCrease(word, depth, frame.pixelAt(x + 1, y), true, rule, crease)) ||
+      (y > 0 && silhouetteOrCrease(word, depth, frame.pixelAt(x, y - 1), false, rule, crease)) ||
+      (y + 1 < frame.height() &&
+       silhouetteOrCrease(word, depth, frame.pixelAt(x, y + 1), true, rule, crease))) {
     return Edge::kSilhouette;
   }
   return crease ? Edge::kCrease : Edge::kNone;
-}
-
-// The same for a pixel with all four neighbours in the frame: no bounds tests.
-inline Edge classifyInnerPixel(const std::uint32_t* above, const std::uint32_t* row,
-                               const std::uint32_t* below, std::int32_t x, const EdgeRule& rule) {
-  const std::uint32_t word = row[x];
-  const std::uint32_t depth = word >> rule.key_shift;
-  bool crease = false;
-  if (silhouetteOrCrease(word, depth, row[x - 1], false, rule, crease) ||
-      silhouetteOrCrease(word, depth, row[x + 1], true, rule, crease) ||
-      silhouetteOrCrease(word, depth, above[x], false, rule, crease) ||
-      silhouetteOrCrease(word, depth, below[x], true, rule, crease)) {
-    return Edge::kSilhouette;
-  }
-  return crease ? Edge::kCrease : Edge::kNone;
-}
-
-// Calls paint(word, edge) for every pixel of rows [first_row, end_row) of `frame` (edge kNone for
-// background pixels, whose word is Framebuffer::kEmpty) and stores the RGB888 it returns (packed
-// 0xRRGGBB) into `rgb`, row first_row first. The frame's first and last rows and columns are
-// classified with bounds tests, every other pixel without.
-template <typename Paint>
-void forEachStyledPixel(const FrameView& frame, std::int32_t first_row, std::int32_t end_row,
-                        const EdgeRule& rule, std::span<std::uint8_t> rgb, Paint paint) {
-  const std::int32_t width = frame.width();
-  const std::uint32_t* pixels = frame.pixels().data();
-  std::uint8_t* out = rgb.data();
-  const auto store = [&out](std::uint32_t colour) {
-    out[0] = static_cast<std::uint8_t>(colour >> 16);
-    out[1] = static_cast<std::uint8_t>(colour >> 8);
-    out[2] = static_cast<std::uint8_t>(colour);
-    out += 3;
-  };
-  for (std::int32_t y = first_row; y < end_row; ++y) {
-    const std::uint32_t* row = pixels + static_cast<std::ptrdiff_t>(y) * width;
-    const std::uint32_t* above = y > 0 ? row - width : nullptr;
-    const std::uint32_t* below = y + 1 < frame.height() ? row + width : nullptr;
-    const auto edgePixel = [&](std::int32_t x) {
-      const std::uint32_t word = row[x];
-      store(paint(word, word == Framebuffer::kEmpty ? Edge::kNone
-                                                    : classifyPixel(above, row, below, x, width, rule)));
-    };
-    if (above == nullptr || below == nullptr || width < 3) {
-      for (std::int32_t x = 0; x < width; ++x) edgePixel(x);
-      continue;
-    }
-    edgePixel(0);
-    for (std::int32_t x = 1; x + 1 < width; ++x) {
-      const std::uint32_t word = row[x];
-      store(paint(word, word == Framebuffer::kEmpty ? Edge::kNone
-                                                    : classifyInnerPixel(above, row, below, x, rule)));
-    }
-    edgePixel(width - 1);
-  }
 }
 
 }  // namespace octopoint

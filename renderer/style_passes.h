@@ -11,6 +11,7 @@
 
 #include "renderer/edges.h"
 #include "renderer/framebuffer.h"
+#include "renderer/styled_rows.h"
 
 namespace octopoint {
 
@@ -39,12 +40,6 @@ inline std::uint32_t scaledRgb(std::uint32_t rgb, std::uint32_t factor_q8) {
   const std::uint32_t red_blue = ((rgb & 0xFF00FFu) * factor_q8 >> 8) & 0xFF00FFu;
   const std::uint32_t green = ((rgb & 0x00FF00u) * factor_q8 >> 8) & 0x00FF00u;
   return red_blue | green;
-}
-
-inline void storeRgb(std::uint8_t* out, std::uint32_t rgb) {
-  out[0] = static_cast<std::uint8_t>(rgb >> 16);
-  out[1] = static_cast<std::uint8_t>(rgb >> 8);
-  out[2] = static_cast<std::uint8_t>(rgb);
 }
 
 }  // namespace octopoint

@@ -54,9 +54,7 @@ std::vector<std::string> classes(const Framebuffer& frame, const EdgeRule& rule)
         row += ' ';
         continue;
       }
-      const Edge edge = classifyPixel(y > 0 ? line - frame.width() : nullptr, line,
-                                      y + 1 < frame.height() ? line + frame.width() : nullptr, x,
-                                      frame.width(), rule);
+      const Edge edge = classifyPixel(frame, x, y, rule);
       row += edge == Edge::kSilhouette ? 'S' : edge == Edge::kCrease ? 'C' : '.';
     }
     rows.push_back(row);
