@@ -124,7 +124,8 @@ void forEachStyledPixel(const FrameView& frame, std::int32_t first_row, std::int
   const std::uint32_t* pixels = frame.pixels().data();
   const std::uint32_t background = paint(Framebuffer::kEmpty, Edge::kNone);
   const PixelRect& drawn = frame.drawnRect();
-  const std::int32_t x_begin = std::max(drawn.x_begin, 0), x_end = std::min(drawn.x_end, width);
+  const std::int32_t x_begin = std::max<std::int32_t>(drawn.x_begin, 0);
+  const std::int32_t x_end = std::min<std::int32_t>(drawn.x_end, width);
   // The whole-word comparisons hold for kColourNormal words only (key in the top 16 bits).
   const bool words_compare = rule.key_shift == 16 && frame.payload() == PixelPayload::kColourNormal;
   for (std::int32_t y = first_row; y < end_row; ++y) {
@@ -150,7 +151,7 @@ void forEachStyledPixel(const FrameView& frame, std::int32_t first_row, std::int
       continue;
     }
     if (x == 0) onePixel(x++);
-    const std::int32_t inner_end = std::min(x_end, width - 1);
+    const std::int32_t inner_end = std::min<std::int32_t>(x_end, width - 1);
     if (x < inner_end) {
       if (rule.creases != nullptr) {
         styled_rows_detail::paintInnerRun<true>(row, width, x, inner_end, rule, background, out,
