@@ -71,37 +71,39 @@ struct FloatLinePass {
     return std::fabs(n.x * m.x + n.y * m.y + n.z * m.z) < cos_crease;
   }
 
-  Edge classify(const std::uint32_t* above, const std::uint32_t* row, const std::uint32_t* below,
-                std::int32_t x, std::int32_t width) const {
-    const std::uint32_t word = row[x];
-    const float depth = depthOf(word);
-    bool is_crease = false;
-    const auto look = [&](std::uint32_t neighbour, bool p_draws_ties) {
-      if (neighbour == Framebuffer::kEmpty) return true;
-      const float other = depthOf(neighbour);
-      if (other > depth + jump) return true;
-      if (is_crease || depth > other + jump) return false;
-      if (other > depth || (other == depth && p_draws_ties)) {
-        is_crease = Framebuffer::normalIndexOf(word) != Framebuffer::normalIndexOf(neighbour) && crease(word, neighbour);
-      }
-      return false;
+  // Whether covered pixel (x, y) has a neighbour that is background or farther than the jump.
+  bool silhouette(const FrameView& frame, std::int32_t x, std::int32_t y) const {
+    const float farthest = depthOf(frame.pixelAt(x, y)) + jump;
+    const auto outlines = [&](std::int32_t qx, std::int32_t qy) {
+      const std::uint32_t q = frame.pixelAt(qx, qy);
+      return q == Framebuffer::kEmpty || depthOf(q) > farthest;
     };
-    if ((x > 0 && look(row[x - 1], false)) || (x + 1 < width && look(row[x + 1], true)) ||
-        (above != nullptr && look(above[x], false)) || (below != nullptr && look(below[x], true))) {
-      return Edge::kSilhouette;
-    }
+    return (x > 0 && outlines(x - 1, y)) || (x + 1 < frame.width() && outlines(x + 1, y)) ||
+           (y > 0 && outlines(x, y - 1)) || (y + 1 < frame.height() && outlines(x, y + 1));
+  }
+
+  Edge classify(const FrameView& frame, std::int32_t x, std::int32_t y) const {
+    if (silhouette(frame, x, y)) return Edge::kSilhouette;
+    const std::uint32_t word = frame.pixelAt(x, y);
+    const float depth = depthOf(word);
+    const auto creaseWith = [&](std::int32_t qx, std::int32_t qy, bool p_draws_ties) {
+      const std::uint32_t q = frame.pixelAt(qx, qy);
+      const float other = depthOf(q);
+      return (other > depth || (other == depth && p_draws_ties)) &&
+             Framebuffer::normalIndexOf(word) != Framebuffer::normalIndexOf(q) && crease(word, q) &&
+             !silhouette(frame, qx, qy);
+    };
+    const bool is_crease = (x > 0 && creaseWith(x - 1, y, false)) ||
+                           (x + 1 < frame.width() && creaseWith(x + 1, y, true)) ||
+                           (y > 0 && creaseWith(x, y - 1, false)) ||
+                           (y + 1 < frame.height() && creaseWith(x, y + 1, true));
     return is_crease ? Edge::kCrease : Edge::kNone;
   }
 
   void run(const FrameView& frame, std::uint8_t* rgb) const {
-    const std::int32_t width = frame.width();
-    const std::uint32_t* pixels = frame.pixels().data();
     for (std::int32_t y = 0; y < frame.height(); ++y) {
-      const std::uint32_t* row = pixels + static_cast<std::ptrdiff_t>(y) * width;
-      const std::uint32_t* above = y > 0 ? row - width : nullptr;
-      const std::uint32_t* below = y + 1 < frame.height() ? row + width : nullptr;
-      for (std::int32_t x = 0; x < width; ++x, rgb += 3) {
-        const Edge edge = row[x] == Framebuffer::kEmpty ? Edge::kNone : classify(above, row, below, x, width);
+      for (std::int32_t x = 0; x < frame.width(); ++x, rgb += 3) {
+        const Edge edge = frame.pixelAt(x, y) == Framebuffer::kEmpty ? Edge::kNone : classify(frame, x, y);
         const std::uint8_t grey = edge == Edge::kSilhouette ? 0x00 : edge == Edge::kCrease ? 0x80 : 0xFF;
         rgb[0] = rgb[1] = rgb[2] = grey;
       }

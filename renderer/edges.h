@@ -8,13 +8,14 @@
 // - Crease: a neighbour is no silhouette, but the normals of the two pixels differ by more than
 //   the crease angle (a table of 255 x 255 bits built once per model and angle, so the test is one
 //   look-up, not a dot product). Again only one pixel of the pair is marked: the nearer, or the
-//   left (upper) one of a pair at equal depth.
+//   left (upper) one of a pair at equal depth; and none where the other pixel is a silhouette
+//   pixel, whose line is already there (classifyPixel).
 // Neighbours outside the frame are ignored: no line along the frame's edge.
 //
-// Bands (drawing a frame a few rows at a time): a row's result depends on the rows above and
+// Bands (drawing a frame a few rows at a time): a row's result depends on the two rows above and
 // below it. `forEachStyledPixel` (renderer/styled_rows.h) styles rows [first_row, end_row) of a
-// frame and reads rows first_row - 1 and end_row where the frame has them; a band drawn one row
-// taller at each inner edge therefore styles exactly as the whole frame does.
+// frame and reads rows first_row - 2 to end_row + 1 where the frame has them; a band drawn two
+// rows taller at each inner edge therefore styles exactly as the whole frame does.
 
 #include <array>
 #include <cstdint>
@@ -56,40 +57,44 @@ struct EdgeRule {
 // The rule for a frame set up by `setup` whose words carry `payload`.
 EdgeRule edgeRuleFor(const FrameSetup& setup, PixelPayload payload, const CreaseTable* creases);
 
-// Neighbour q of a covered pixel whose word is `word` and depth `depth` (word >> key_shift):
-// whether q makes p a silhouette (q is background or farther by more than the jump); and, when p
-// draws the pair's crease (p nearer, or as near and `p_draws_ties`: q to its right or below),
-// whether their normals make one, or'ed into `crease`. Equal normal indices are never a crease: no
-// look-up.
-inline bool silhouetteOrCrease(std::uint32_t word, std::uint32_t depth, std::uint32_t neighbour,
-                               bool p_draws_ties, const EdgeRule& rule, bool& crease) {
-  if (neighbour == Framebuffer::kEmpty) return true;
-  const std::uint32_t other = neighbour >> rule.key_shift;
-  if (other > depth + rule.jump) return true;
-  if (crease || depth > other + rule.jump || rule.creases == nullptr) return false;
-  if (other > depth || (other == depth && p_draws_ties)) {
-    const std::uint32_t n = Framebuffer::normalIndexOf(word),
-                        m = Framebuffer::normalIndexOf(neighbour);
-    crease = n != m && rule.creases->crease(n, m);
-  }
-  return false;
+// Whether covered pixel (x, y) of `frame` has a neighbour in the frame that is background or lies
+// farther than the jump: a silhouette pixel.
+inline bool hasSilhouetteNeighbour(const FrameView& frame, std::int32_t x, std::int32_t y,
+                                   const EdgeRule& rule) {
+  const std::uint32_t farthest = (frame.pixelAt(x, y) >> rule.key_shift) + rule.jump;
+  const auto outlines = [&](std::int32_t qx, std::int32_t qy) {
+    const std::uint32_t q = frame.pixelAt(qx, qy);
+    return q == Framebuffer::kEmpty || (q >> rule.key_shift) > farthest;
+  };
+  return (x > 0 && outlines(x - 1, y)) || (x + 1 < frame.width() && outlines(x + 1, y)) ||
+         (y > 0 && outlines(x, y - 1)) || (y + 1 < frame.height() && outlines(x, y + 1));
 }
 
-// The class of pixel (x, y) of `frame`, covered: the definition of the line pass. Reads the
-// pixel's four neighbours where the frame has them.
+// The class of pixel (x, y) of `frame`, covered: the definition of the line pass.
+// - kSilhouette when hasSilhouetteNeighbour.
+// - Else kCrease when a neighbour q that p draws the pair's crease for (q farther than p, or as
+//   far and to its right or below) has a normal index more than the crease angle from p's, and q
+//   is no silhouette pixel itself. A crease whose other pixel is a silhouette is left to the
+//   silhouette: where an outline is also an edge between two faces (a box seen past its edge, the
+//   outermost pixel showing the face turned away), the line is drawn once, on the outline, not a
+//   second time one pixel inside it.
+// Reads the pixels within two rows and columns of (x, y) where the frame has them.
 inline Edge classifyPixel(const FrameView& frame, std::int32_t x, std::int32_t y,
                           const EdgeRule& rule) {
+  if (hasSilhouetteNeighbour(frame, x, y, rule)) return Edge::kSilhouette;
+  if (rule.creases == nullptr) return Edge::kNone;
   const std::uint32_t word = frame.pixelAt(x, y);
-  const std::uint32_t depth = word >> rule.key_shift;
-  bool crease = false;
-  if ((x > 0 && silhouetteOrCrease(word, depth, frame.pixelAt(x - 1, y), false, rule, crease)) ||
-      (x + 1 < frame.width() &&
-       silhouetteOrCrease(word, depth, frame.pixelAt(x + 1, y), true, rule, crease)) ||
-      (y > 0 && silhouetteOrCrease(word, depth, frame.pixelAt(x, y - 1), false, rule, crease)) ||
-      (y + 1 < frame.height() &&
-       silhouetteOrCrease(word, depth, frame.pixelAt(x, y + 1), true, rule, crease))) {
-    return Edge::kSilhouette;
-  }
+  const std::uint32_t depth = word >> rule.key_shift, n = Framebuffer::normalIndexOf(word);
+  const auto creaseWith = [&](std::int32_t qx, std::int32_t qy, bool p_draws_ties) {
+    const std::uint32_t q = frame.pixelAt(qx, qy), other = q >> rule.key_shift;
+    const std::uint32_t m = Framebuffer::normalIndexOf(q);
+    return (other > depth || (other == depth && p_draws_ties)) && n != m &&
+           rule.creases->crease(n, m) && !hasSilhouetteNeighbour(frame, qx, qy, rule);
+  };
+  const bool crease = (x > 0 && creaseWith(x - 1, y, false)) ||
+                      (x + 1 < frame.width() && creaseWith(x + 1, y, true)) ||
+                      (y > 0 && creaseWith(x, y - 1, false)) ||
+                      (y + 1 < frame.height() && creaseWith(x, y + 1, true));
   return crease ? Edge::kCrease : Edge::kNone;
 }
 

@@ -11,8 +11,8 @@
 //     styler.resolve(frame, rgb);                    // width * height * 3 bytes
 //
 // Integer only; allocates nothing (its tables are members, about 10 KiB). resolveRows styles a
-// range of rows for band rendering: it reads one row above and below the range where the frame
-// has them, so bands drawn one row taller at each inner edge give the whole frame's pixels.
+// range of rows for band rendering: it reads two rows above and below the range where the frame
+// has them, so bands drawn two rows taller at each inner edge give the whole frame's pixels.
 
 #include <cstdint>
 #include <span>

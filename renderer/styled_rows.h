@@ -50,8 +50,8 @@ inline std::uint32_t creaseBit(const CreaseTable* creases, std::uint32_t n,
   }
 }
 
-// Pixels [x, x_end) of an inner row of a kColourNormal frame (1 <= x, x_end <= width - 1, rows
-// above and below present: row[-stride] and row[stride]), painted. What classifyPixel decides,
+// Pixels [x, x_end) of inner row y of a kColourNormal frame (1 <= x, x_end <= width - 1, rows
+// above and below present), painted. What classifyPixel decides,
 // with the words compared whole:
 // - A neighbour's key (word >> 16) exceeds depth + jump exactly when its word exceeds
 //   (depth + jump) << 16 | 0xFFFF. Where depth + jump reaches 0xFFFF no key exceeds it, and the
@@ -63,11 +63,15 @@ inline std::uint32_t creaseBit(const CreaseTable* creases, std::uint32_t n,
 //   and lower neighbours have p's normal index (most pixels where splats cover several), only
 //   the right pair can be a crease (CreaseTable: none with itself); otherwise the look-ups and
 //   side tests go without branches. A pair's look-up is symmetric: the one with the right
-//   neighbour is kept for the next pixel's left pair.
+//   neighbour is kept for the next pixel's left pair. A pixel these find a crease for (under 1%
+//   of the covered pixels) goes through classifyPixel, which also asks whether the pair's other
+//   pixel is a silhouette.
 template <bool kCreases, typename Paint>
-void paintInnerRun(const std::uint32_t* row, std::ptrdiff_t stride, std::int32_t x,
-                   std::int32_t x_end, const EdgeRule& rule, std::uint32_t background,
-                   std::uint8_t* out, Paint& paint) {
+void paintInnerRun(const FrameView& frame, std::int32_t y, std::int32_t x, std::int32_t x_end,
+                   const EdgeRule& rule, std::uint32_t background, std::uint8_t* out,
+                   Paint& paint) {
+  const std::ptrdiff_t stride = frame.width();
+  const std::uint32_t* const row = frame.pixels().data() + y * stride;
   const CreaseTable* creases = rule.creases;
   const std::uint32_t* const above = row - stride;
   const std::uint32_t* const below = row + stride;
@@ -101,9 +105,9 @@ void paintInnerRun(const std::uint32_t* row, std::ptrdiff_t stride, std::int32_t
             (right_pair & static_cast<std::uint32_t>(r >= as_far)) |
             (creaseBit<kCreases>(creases, n, a) & static_cast<std::uint32_t>(a > farther)) |
             (creaseBit<kCreases>(creases, n, b) & static_cast<std::uint32_t>(b >= as_far));
-        if (crease != 0) edge = Edge::kCrease;
+        if (crease != 0) edge = classifyPixel(frame, x, y, rule);
       } else if (right_pair != 0 && r >= (word & 0xFFFF'0000u)) {
-        edge = Edge::kCrease;
+        edge = classifyPixel(frame, x, y, rule);
       }
     }
     left_pair = right_pair;
@@ -154,10 +158,10 @@ void forEachStyledPixel(const FrameView& frame, std::int32_t first_row, std::int
     const std::int32_t inner_end = std::min<std::int32_t>(x_end, width - 1);
     if (x < inner_end) {
       if (rule.creases != nullptr) {
-        styled_rows_detail::paintInnerRun<true>(row, width, x, inner_end, rule, background, out,
+        styled_rows_detail::paintInnerRun<true>(frame, y, x, inner_end, rule, background, out,
                                                 paint);
       } else {
-        styled_rows_detail::paintInnerRun<false>(row, width, x, inner_end, rule, background, out,
+        styled_rows_detail::paintInnerRun<false>(frame, y, x, inner_end, rule, background, out,
                                                  paint);
       }
       x = inner_end;

@@ -1,6 +1,7 @@
 // The line pass (renderer/edges.h) on frames built by hand: silhouettes exactly where a depth step
 // or the object's outline is, one pixel wide on the nearer side; creases between normals further
-// apart than the angle and nowhere else; rows styled in bands exactly as in one piece.
+// apart than the angle and nowhere else, and not beside a silhouette that already draws them; rows
+// styled in bands exactly as in one piece.
 #include "renderer/edges.h"
 
 #include <gtest/gtest.h>
@@ -128,6 +129,26 @@ TEST(Edges, TheNearerPixelOfACreaseDrawsIt) {
   frame.pixelData()[0] = frame.pixelData()[1] = word(1000, 0);
   frame.pixelData()[2] = frame.pixelData()[3] = word(990, 1);  // nearer, other normal
   EXPECT_EQ(classes(frame, {kJump, 16, &creases}), (std::vector<std::string>{"..C."}));
+}
+
+TEST(Edges, ACreaseWhoseOtherPixelIsASilhouetteIsLeftToTheSilhouette) {
+  const ThreeNormals normals;
+  CreaseTable creases;
+  creases.build(normals.view(), Angle::fromDegrees(60));
+  // A face (normal 1) whose outermost pixel, at (1, 1), shows a voxel of the face turned away
+  // (normal 0, 90 degrees off, a little farther): that pixel is the outline; its crease with the
+  // face is not drawn again beside it. The same pair away from the outline is a crease.
+  Framebuffer frame(6, 3);
+  frame.clear(PixelPayload::kColourNormal);
+  std::uint32_t* pixels = frame.pixelData();
+  for (std::size_t i = 0; i < 18; ++i) pixels[i] = word(1000, 1);
+  pixels[6] = Framebuffer::kEmpty;
+  pixels[7] = word(1005, 0);
+  EXPECT_EQ(classes(frame, {kJump, 16, &creases}),
+            (std::vector<std::string>{"S.....", " S....", "S....."}));
+  pixels[6] = word(1000, 1);  // no outline there any more: the pixel is a crease's other pixel
+  EXPECT_EQ(classes(frame, {kJump, 16, &creases}),
+            (std::vector<std::string>{".C....", "C.C...", ".C...."}));
 }
 
 TEST(Edges, StylingRowsInBandsGivesTheWholeFramesPixels) {

@@ -168,9 +168,11 @@ TEST(StyleGeometry, CreasesRunAlongAllTwelveEdgesOfACubeAndNowhereElse) {
       }
     }
     // The target (issue 13): every crease pixel within one pixel of an edge, i.e. the edge crosses
-    // the 3 x 3 pixels around it. Measured (docs/styles.md): 2 to 3.5% of the crease pixels lie
-    // one pixel further, at most 2.05 pixels from an edge, so the test holds what is reached (at
-    // most 4% beyond one pixel, none beyond two) and the page states the miss.
+    // the 3 x 3 pixels around it. Measured (docs/styles.md): 0 to 2 crease pixels a view (at most
+    // 1%) lie a little further, 1.51 to 2.05 pixels from an edge, at the cube's corners, where
+    // three faces meet; so the test holds what is reached (at most 2% beyond one pixel, none beyond
+    // two). Before a crease beside a silhouette was left to the silhouette (renderer/edges.h), 2 to
+    // 3.2% lay beside the outline, one pixel inside it.
     std::size_t beyond_one = 0, beyond_two = 0;
     double farthest = 0;
     for (const auto& p : creases) {
@@ -184,7 +186,7 @@ TEST(StyleGeometry, CreasesRunAlongAllTwelveEdgesOfACubeAndNowhereElse) {
         "yaw %4.0f: %zu crease pixels, %zu beyond one pixel of an edge, farthest %.2f pixels "
         "(Chebyshev)\n",
         yaw, creases.size(), beyond_one, farthest);
-    EXPECT_LE(beyond_one * 25, creases.size())
+    EXPECT_LE(beyond_one * 50, creases.size())
         << "yaw " << yaw << ": " << beyond_one << " of " << creases.size()
         << " crease pixels more than one pixel off the edges";
     EXPECT_EQ(beyond_two, 0u) << "yaw " << yaw << ": " << beyond_two
