@@ -173,7 +173,7 @@ class BinaryScanSource final : public PointSource {
   const SourceInfo& info() const override { return info_; }
 
   void read(std::uint64_t first, std::size_t count, PointChunk& chunk) const override {
-    thread_local std::vector<std::uint8_t> bytes;
+    std::vector<std::uint8_t>& bytes = chunk.raw;
     const std::size_t stride = static_cast<std::size_t>(layout_.stride);
     bytes.resize(count * stride);
     file_.readAt(layout_.body_offset + first * stride, bytes, "point " + std::to_string(first));

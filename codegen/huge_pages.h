@@ -4,14 +4,24 @@
 // of tens of megabytes (points, colours, generated text). Asking for huge pages before the buffer
 // is first written makes that one fault per 2 MB (transparent huge pages in "madvise" mode).
 
+#include <sys/mman.h>
+
 #include <cstddef>
+#include <cstdint>
 #include <memory>
 #include <string>
 
 namespace octopoint::prepare {
 
 // Advises huge pages for the whole 2 MB pages inside [data, data + bytes); a hint, never an error.
-void adviseHugePages(void* data, std::size_t bytes);
+// Inline: sources that some tests compile on their own (oct_serializer.cpp) use it too.
+inline void adviseHugePages(void* data, std::size_t bytes) {
+  constexpr std::uintptr_t kHugePage = std::uintptr_t{2} << 20;
+  const auto start = reinterpret_cast<std::uintptr_t>(data);
+  const std::uintptr_t begin = (start + kHugePage - 1) & ~(kHugePage - 1);
+  const std::uintptr_t end = (start + bytes) & ~(kHugePage - 1);
+  if (end > begin) ::madvise(reinterpret_cast<void*>(begin), end - begin, MADV_HUGEPAGE);
+}
 
 // text.reserve(bytes) on huge pages when that allocates (before anything is written there).
 void reserveOnHugePages(std::string& text, std::size_t bytes);

@@ -348,7 +348,7 @@ class LasSource final : public PointSource {
   const SourceInfo& info() const override { return info_; }
 
   void read(std::uint64_t first, std::size_t count, PointChunk& chunk) const override {
-    thread_local std::vector<std::uint8_t> bytes;
+    std::vector<std::uint8_t>& bytes = chunk.raw;
     const std::size_t stride = header_.record_length;
     bytes.resize(count * stride);
     file_.readAt(header_.point_offset + first * stride, bytes, "point " + std::to_string(first));

@@ -2,6 +2,7 @@
 #include <cassert>
 
 #include "codegen/byte_output.h"
+#include "codegen/huge_pages.h"
 #include "codegen/model_writer.h"
 #include "renderer/model_format.h"
 
@@ -17,7 +18,8 @@ std::vector<std::uint8_t> serializeModel(const PreparedModel& model) {
     size += 12 + level.nodes.size() + level.leaves.size() + level.normals.size();
   }
   std::vector<std::uint8_t> out(format::kMagic, format::kMagic + sizeof format::kMagic);
-  out.reserve(size);  // megabytes for a large model: no copy as it grows
+  out.reserve(size);  // megabytes for a large model: no copy as it grows, on huge pages
+  adviseHugePages(out.data() + out.size(), size - out.size());
   putU16(out, format::kVersion2);
   out.push_back(static_cast<std::uint8_t>(model.levels.size()));
   out.push_back(static_cast<std::uint8_t>((with_normals ? format::v2::kFlagNormals : 0) |

@@ -1,10 +1,15 @@
 #include "codegen/point_bins.h"
 
+#include <bit>
 #include <cassert>
 #include <cstring>
 #include <utility>
 
 namespace octopoint::prepare {
+
+namespace {
+constexpr int kFlagSortBits = 8;  // at most 256 groups in one pass
+}  // namespace
 
 void gatherBin(const BinContents& bin, std::span<BinnedPoint> out) {
   assert(out.size() == bin.count);
@@ -19,9 +24,11 @@ void gatherBin(const BinContents& bin, std::span<BinnedPoint> out) {
   }
 }
 
-std::vector<std::uint64_t> partitionByBin(std::span<BinnedPoint> points, int bin_shift,
-                                          std::size_t bin_count) {
-  assert((bin_count & (bin_count - 1)) == 0);
+namespace {
+
+// One pass of partitionByBin: American flag sort into `bin_count` groups.
+std::vector<std::uint64_t> flagSort(std::span<BinnedPoint> points, int bin_shift,
+                                    std::size_t bin_count) {
   const auto binOf = [&](const BinnedPoint& p) {
     return static_cast<std::size_t>(p.key() >> bin_shift) & (bin_count - 1);
   };
@@ -42,6 +49,30 @@ std::vector<std::uint64_t> partitionByBin(std::span<BinnedPoint> points, int bin
       }
     }
   }
+  return starts;
+}
+
+}  // namespace
+
+std::vector<std::uint64_t> partitionByBin(std::span<BinnedPoint> points, int bin_shift,
+                                          std::size_t bin_count) {
+  assert((bin_count & (bin_count - 1)) == 0);
+  // Thousands of bins at once send each swap to a far place in a buffer of tens of megabytes; a
+  // pass into 2^high groups by the upper digits, then one per group into 2^low bins, keeps each
+  // pass's write positions few enough to stay in the cache. (A bin's points may come out in
+  // another order within it: the voxelizer sorts them by key and sums colours as integers.)
+  const int bits = std::countr_zero(bin_count);
+  if (bits <= kFlagSortBits) return flagSort(points, bin_shift, bin_count);
+  const int low = bits / 2;
+  const std::size_t low_count = std::size_t{1} << low;
+  const std::vector<std::uint64_t> groups = flagSort(points, bin_shift + low, bin_count >> low);
+  std::vector<std::uint64_t> starts(bin_count + 1, 0);
+  for (std::size_t g = 0; g + 1 < groups.size(); ++g) {
+    const std::vector<std::uint64_t> within =
+        flagSort(points.subspan(groups[g], groups[g + 1] - groups[g]), bin_shift, low_count);
+    for (std::size_t b = 0; b < low_count; ++b) starts[g * low_count + b] = groups[g] + within[b];
+  }
+  starts[bin_count] = points.size();
   return starts;
 }
 

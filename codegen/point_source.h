@@ -55,6 +55,7 @@ struct PointChunk {
   std::vector<std::array<double, 3>> xyz;
   std::vector<std::array<std::uint16_t, 3>> rgb;
   std::vector<float> intensity;
+  std::vector<std::uint8_t> raw;  // the records as read, for the sources that decode them
 
   void resize(std::size_t count, const SourceInfo& info) {
     xyz.resize(count);

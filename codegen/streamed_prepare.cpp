@@ -200,7 +200,8 @@ class StreamedPreparer {
   // Reads every record once, in chunks spread over the threads: visit(chunk, first record, worker).
   template <typename Visit>
   void readAllPoints(const char* label, Visit visit) {
-    std::vector<PointChunk> chunks(threads_);
+    std::vector<PointChunk>& chunks = chunks_;  // kept for the next pass: already paged in
+    chunks.resize(threads_);
     std::atomic<std::uint64_t> done{0};
     Progress progress(label, info_.points, "points");
     parallelFor(
@@ -441,6 +442,7 @@ class StreamedPreparer {
   SpillFile spill_{temp_dir_};
   std::vector<std::unique_ptr<BinSpiller>> spillers_;
   std::vector<ColourStore> colour_stores_;  // per thread: the voxels' colours
+  std::vector<PointChunk> chunks_;          // per thread: the records being read
   std::atomic<std::uint64_t> spilled_bytes_{0};
 };
 
