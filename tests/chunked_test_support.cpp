@@ -136,4 +136,16 @@ bool sameFrame(const Framebuffer& a, const Framebuffer& b) {
   return differ == 0;
 }
 
+Camera makeCamera(int yaw, int pitch, double zoom, int width, int height, int pan_x, int pan_y) {
+  Camera camera;
+  camera.yaw = Angle::fromDegrees(yaw);
+  camera.pitch = Angle::fromDegrees(pitch);
+  camera.zoom = Q16::fromRaw(static_cast<std::int32_t>(zoom * Q16::kOneRaw));
+  camera.width = width;
+  camera.height = height;
+  camera.pan_x_px = pan_x;
+  camera.pan_y_px = pan_y;
+  return camera;
+}
+
 }  // namespace octopoint::testing

@@ -43,4 +43,9 @@ void feed(ProgressiveModel& model, std::span<const std::uint8_t> image, const Fe
 
 bool sameFrame(const Framebuffer& a, const Framebuffer& b);
 
+// A camera of `width` x `height` pixels turned by `yaw` and `pitch` degrees at `zoom`, panned by
+// whole pixels.
+Camera makeCamera(int yaw, int pitch, double zoom, int width, int height, int pan_x = 0,
+                  int pan_y = 0);
+
 }  // namespace octopoint::testing

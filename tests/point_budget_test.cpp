@@ -18,16 +18,7 @@ namespace octopoint {
 namespace {
 
 using octopoint::testing::Bytes;
-
-Camera makeCamera(int yaw, int pitch, double zoom, int width, int height) {
-  Camera camera;
-  camera.yaw = Angle::fromDegrees(yaw);
-  camera.pitch = Angle::fromDegrees(pitch);
-  camera.zoom = Q16::fromRaw(static_cast<std::int32_t>(zoom * Q16::kOneRaw));
-  camera.width = width;
-  camera.height = height;
-  return camera;
-}
+using octopoint::testing::makeCamera;
 
 // The default model at depths 4..8 in small chunks (as tests/progressive_model_test.cpp).
 struct Fixture {

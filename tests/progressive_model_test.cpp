@@ -22,19 +22,7 @@ namespace octopoint {
 namespace {
 
 using octopoint::testing::Bytes;
-
-Camera makeCamera(int yaw, int pitch, double zoom, int width, int height, int pan_x = 0,
-                  int pan_y = 0) {
-  Camera camera;
-  camera.yaw = Angle::fromDegrees(yaw);
-  camera.pitch = Angle::fromDegrees(pitch);
-  camera.zoom = Q16::fromRaw(static_cast<std::int32_t>(zoom * Q16::kOneRaw));
-  camera.width = width;
-  camera.height = height;
-  camera.pan_x_px = pan_x;
-  camera.pan_y_px = pan_y;
-  return camera;
-}
+using octopoint::testing::makeCamera;
 
 // The default model at depths 4..8 (4 and 5 coarsened from its finest level), small chunks so
 // that there are many of them. The "thinned" one lacks depth-8 voxels under a sixth of the depth-4
