@@ -55,7 +55,7 @@ set_tests_properties(cli.prepare.same_output_any_budget PROPERTIES FIXTURES_REQU
 
 add_test(NAME cli.prepare.starts_without_pcl
          COMMAND ${CMAKE_COMMAND} -DPREPARE=$<TARGET_FILE:octopoint-prepare> -DLAS=${las_scans}/budget.las
-                 -DPCD=${PROJECT_SOURCE_DIR}/data/scans/bun0.pcd -DOUT=${cli_out}/without_pcl
+                 -DPCD=${PROJECT_SOURCE_DIR}/data/scans/milk.pcd -DOUT=${cli_out}/without_pcl
                  -P ${CMAKE_CURRENT_SOURCE_DIR}/prepare_without_pcl.cmake)
 set_tests_properties(cli.prepare.starts_without_pcl PROPERTIES FIXTURES_REQUIRED las_scans)
 
