@@ -11,11 +11,11 @@
 #include <unistd.h>
 
 #include <cerrno>
-#include <csignal>
 #include <cstring>
 #include <system_error>
 
 #include "cli/error.h"
+#include "cli/file_size_signal.h"
 #include "cli/signals.h"
 #include "cli/text.h"
 
@@ -27,20 +27,6 @@ namespace fs = std::filesystem;
 [[noreturn]] void fail(const fs::path& path, const std::string& what) {
   throw Error(displayPath(path) + ": " + what);
 }
-
-// Under a file size limit (RLIMIT_FSIZE, `ulimit -f`) a write past it raises SIGXFSZ, which kills
-// the process before it can clean up. Ignored, the write fails with EFBIG instead and we report it
-// like a full disk. The previous disposition comes back when the output is done.
-class FileSizeSignalIgnored {
- public:
-  FileSizeSignalIgnored() : previous_(std::signal(SIGXFSZ, SIG_IGN)) {}
-  ~FileSizeSignalIgnored() { std::signal(SIGXFSZ, previous_); }
-  FileSizeSignalIgnored(const FileSizeSignalIgnored&) = delete;
-  FileSizeSignalIgnored& operator=(const FileSizeSignalIgnored&) = delete;
-
- private:
-  void (*previous_)(int);
-};
 
 void throwIfInterrupted(const fs::path& path) {
   if (const int signal_number = TerminationSignalsHeld::interrupted()) {

@@ -4,7 +4,6 @@
 // the memory budget. Every failure is a PrepareError naming the file.
 
 #include <atomic>
-#include <csignal>
 #include <cstddef>
 #include <cstdint>
 #include <filesystem>
@@ -56,20 +55,6 @@ class TempFile {
   std::filesystem::path directory_;
   int fd_ = -1;
   std::atomic<std::uint64_t> end_{0};
-};
-
-// Under a file size limit (RLIMIT_FSIZE, `ulimit -f`) a write past it raises SIGXFSZ, which kills
-// the process before it can clean up. Ignored, the write fails with EFBIG instead and we report it
-// like a full disk. The previous disposition comes back at the end of the scope.
-class FileSizeSignalIgnored {
- public:
-  FileSizeSignalIgnored() : previous_(std::signal(SIGXFSZ, SIG_IGN)) {}
-  ~FileSizeSignalIgnored() { std::signal(SIGXFSZ, previous_); }
-  FileSizeSignalIgnored(const FileSizeSignalIgnored&) = delete;
-  FileSizeSignalIgnored& operator=(const FileSizeSignalIgnored&) = delete;
-
- private:
-  void (*previous_)(int);
 };
 
 // Free bytes for an unprivileged user on the file system holding `directory` (0 if unknown).

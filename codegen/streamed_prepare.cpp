@@ -9,6 +9,7 @@
 #include <optional>
 #include <sstream>
 
+#include "cli/file_size_signal.h"
 #include "codegen/bin_voxelizer.h"
 #include "codegen/cube_fit.h"
 #include "codegen/file_io.h"
@@ -458,7 +459,7 @@ PreparedModel prepareFromSource(const PointSource& source, const std::string& pa
   }
   const auto start = std::chrono::steady_clock::now();
   PrepareSummary local;
-  const FileSizeSignalIgnored file_size_signal;  // a spill past `ulimit -f`: an error, not a kill
+  const cli::FileSizeSignalIgnored file_size_signal;  // a spill past `ulimit -f`: an error, not a kill
   PreparedModel model = StreamedPreparer(source, path, options, stream).run(local);
   local.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   if (summary) *summary = local;
