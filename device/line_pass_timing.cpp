@@ -4,9 +4,11 @@
 // ARMv5TE without FPU, where every float operation is a libgcc soft-float call (docs/device.md).
 //
 // The float pass is a reference written as a float program would be: each pixel's depth in
-// float (the depth key times its unit), the silhouette jump in float, and the crease test as the
-// dot product of the two pixels' unit normals (floats) against cos(crease angle). The integer pass
-// is FrameStyler's: keys compared as integers, the crease a bit of a table built once per model.
+// float (the depth key times its unit), the silhouette jump in float, each normal's slope slack
+// from its float normal turned by the float rotation, and the crease test as the dot product of
+// the two pixels' unit normals (floats) against cos(crease angle). The integer pass is
+// FrameStyler's: keys compared as integers, the slack and the crease tables built once per frame
+// and per model.
 // Both paint the lines style (white paper, black silhouettes, grey creases) into RGB888 and the
 // tool prints how many pixels differ (the crease test's rounding at the threshold may differ).
 // This file is a float reference by design: it is not part of the integer libraries.
@@ -19,6 +21,7 @@
 #include <optional>
 #include <vector>
 
+#include "fixedpoint/rotation.h"
 #include "models/registry.h"
 #include "renderer/edges.h"
 #include "renderer/frame_styler.h"
@@ -60,9 +63,26 @@ struct FloatNormal {
 // The float line pass over a kColourNormal frame: what renderer/edges.h computes, in float.
 struct FloatLinePass {
   std::vector<FloatNormal> normals;  // unit vectors
+  std::vector<float> slack;          // per normal: how far its surface recedes beyond the jump
   float depth_unit = 1.0f;           // a key step, in the float depth's unit
   float jump = 0.0f;                 // the silhouette jump, in the same unit
   float cos_crease = 0.5f;
+
+  // SurfaceSlopes (renderer/edges.h) in float: (|v_x| reach_x + |v_y| reach_y + (1 - |v_z|) e)
+  // / |v_z| pixels of depth for the normal v in view axes, capped.
+  void buildSlack(const float (&rotation)[3][3], float reach_x, float reach_y, float edge,
+                  float pixel) {
+    const float most = static_cast<float>(kMaxSurfaceSlope) * (std::max(reach_x, reach_y) + edge);
+    slack.clear();
+    for (const FloatNormal& n : normals) {
+      float v[3];
+      for (int row = 0; row < 3; ++row)
+        v[row] =
+            std::fabs(rotation[row][0] * n.x + rotation[row][1] * n.y + rotation[row][2] * n.z);
+      const float rise = v[0] * reach_x + v[1] * reach_y + (1.0f - std::min(v[2], 1.0f)) * edge;
+      slack.push_back((rise >= most * v[2] ? most : rise / v[2]) * pixel);
+    }
+  }
 
   float depthOf(std::uint32_t word) const { return static_cast<float>(word >> 16) * depth_unit; }
   bool crease(std::uint32_t a, std::uint32_t b) const {
@@ -73,10 +93,14 @@ struct FloatLinePass {
 
   // Whether covered pixel (x, y) has a neighbour that is background or farther than the jump.
   bool silhouette(const FrameView& frame, std::int32_t x, std::int32_t y) const {
-    const float farthest = depthOf(frame.pixelAt(x, y)) + jump;
+    const std::uint32_t word = frame.pixelAt(x, y);
+    const float farthest = depthOf(word) + jump;
     const auto outlines = [&](std::int32_t qx, std::int32_t qy) {
       const std::uint32_t q = frame.pixelAt(qx, qy);
-      return q == Framebuffer::kEmpty || depthOf(q) > farthest;
+      if (q == Framebuffer::kEmpty) return true;
+      const float allowed =
+          std::min(slack[Framebuffer::normalIndexOf(word)], slack[Framebuffer::normalIndexOf(q)]);
+      return depthOf(q) > farthest + allowed;
     };
     return (x > 0 && outlines(x - 1, y)) || (x + 1 < frame.width() && outlines(x + 1, y)) ||
            (y > 0 && outlines(x, y - 1)) || (y + 1 < frame.height() && outlines(x, y + 1));
@@ -103,8 +127,11 @@ struct FloatLinePass {
   void run(const FrameView& frame, std::uint8_t* rgb) const {
     for (std::int32_t y = 0; y < frame.height(); ++y) {
       for (std::int32_t x = 0; x < frame.width(); ++x, rgb += 3) {
-        const Edge edge = frame.pixelAt(x, y) == Framebuffer::kEmpty ? Edge::kNone : classify(frame, x, y);
-        const std::uint8_t grey = edge == Edge::kSilhouette ? 0x00 : edge == Edge::kCrease ? 0x80 : 0xFF;
+        const Edge edge =
+            frame.pixelAt(x, y) == Framebuffer::kEmpty ? Edge::kNone : classify(frame, x, y);
+        const std::uint8_t grey = edge == Edge::kSilhouette ? 0x00
+                                  : edge == Edge::kCrease   ? 0x80
+                                                            : 0xFF;
         rgb[0] = rgb[1] = rgb[2] = grey;
       }
     }
@@ -141,24 +168,43 @@ int run() {
     const float one = 1.0f / 16384.0f;  // Q1.14
     float_pass.normals.push_back({n.x * one, n.y * one, n.z * one});
   }
-  const EdgeRule rule = edgeRuleFor(setup, PixelPayload::kColourNormal, nullptr);
-  float_pass.depth_unit = 1.0f / 256.0f;  // any unit: the float pass's depths are float multiples of it
+  const EdgeRule rule = edgeRuleFor(setup, PixelPayload::kColourNormal, nullptr, nullptr);
+  float_pass.depth_unit =
+      1.0f / 256.0f;  // any unit: the float pass's depths are float multiples of it
   float_pass.jump = static_cast<float>(rule.jump) * float_pass.depth_unit;
-  float_pass.cos_crease = std::cos(static_cast<float>(kDefaultCreaseDegrees) * 3.14159265f / 180.0f);
+  {
+    const Rotation rotation = rotationFromYawPitchRoll(camera.yaw, camera.pitch, camera.roll);
+    float turn[3][3];
+    for (std::size_t row = 0; row < 3; ++row) {
+      for (std::size_t col = 0; col < 3; ++col)
+        turn[row][col] = static_cast<float>(rotation.m_q30[row][col]) / 1073741824.0f;
+    }
+    const float one_pixel = static_cast<float>(1 << setup.fraction_bits);
+    // A pixel of depth in the float depth's unit: 2^(F - depth_shift) key units, the word's key
+    // the top 16 of its 24 bits.
+    const float pixel = static_cast<float>((1 << setup.fraction_bits) >> setup.depth_shift) /
+                        256.0f * float_pass.depth_unit;
+    float_pass.buildSlack(turn, static_cast<float>(setup.splat.columns + 1),
+                          static_cast<float>(setup.splat.rows + 1),
+                          static_cast<float>(voxelEdgeOnScreen(setup)) / one_pixel, pixel);
+  }
+  float_pass.cos_crease =
+      std::cos(static_cast<float>(kDefaultCreaseDegrees) * 3.14159265f / 180.0f);
 
-  const std::size_t bytes = static_cast<std::size_t>(camera.width) * static_cast<std::size_t>(camera.height) * 3;
+  const std::size_t bytes =
+      static_cast<std::size_t>(camera.width) * static_cast<std::size_t>(camera.height) * 3;
   std::vector<std::uint8_t> fixed_rgb(bytes), float_rgb(bytes);
   const std::int64_t fixed_ns = medianNs([&] { styler.resolve(frame, fixed_rgb); });
   const std::int64_t float_ns = medianNs([&] { float_pass.run(frame, float_rgb.data()); });
   std::size_t differing = 0;
   for (std::size_t i = 0; i < bytes; i += 3) differing += fixed_rgb[i] != float_rgb[i] ? 1 : 0;
   const double pixels = static_cast<double>(camera.width) * camera.height;
-  std::printf("line pass, default model depth %d, 320x240, yaw 30 (CPU time, median of %d runs)\n", level.depth,
-              kRuns);
+  std::printf("line pass, default model depth %d, 320x240, yaw 30 (CPU time, median of %d runs)\n",
+              level.depth, kRuns);
   std::printf("  integer: %.1f us (%.1f ns per pixel)\n", fixed_ns / 1e3, fixed_ns / pixels);
   std::printf("  float:   %.1f us (%.1f ns per pixel)\n", float_ns / 1e3, float_ns / pixels);
-  std::printf("  float / integer: %.2fx; pixels that differ: %zu of %.0f\n", static_cast<double>(float_ns) / fixed_ns,
-              differing, pixels);
+  std::printf("  float / integer: %.2fx; pixels that differ: %zu of %.0f\n",
+              static_cast<double>(float_ns) / fixed_ns, differing, pixels);
   return 0;
 }
 

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cstdlib>
 
+#include "fixedpoint/rotation.h"
 #include "fixedpoint/trig.h"
 
 namespace octopoint {
@@ -26,10 +27,49 @@ void CreaseTable::build(const ModelView& model, Angle angle) {
   }
 }
 
-EdgeRule edgeRuleFor(const FrameSetup& setup, PixelPayload payload, const CreaseTable* creases) {
-  // A depth step of kSilhouetteVoxelEdges voxels, or pixels where a voxel is smaller than one: a
-  // surface seen obliquely recedes by up to a few voxels per pixel, and where voxels are smaller
-  // than pixels, by up to a few pixels per pixel; neither is an outline.
+void SurfaceSlopes::build(const ModelView& model, const FrameSetup& setup) {
+  slack_.fill(0);
+  const Rotation rotation =
+      rotationFromYawPitchRoll(setup.camera.yaw, setup.camera.pitch, setup.camera.roll);
+  // The reach along each axis, footprint + 1 pixels, in 24-bit depth key units: a pixel of depth
+  // is 2^F units of z and 2^(F - depth_shift) of the key (< 2^32 while buildFrameSetup accepted
+  // the splat's reach). A kColourNormal word keeps the key's top 16 bits: >> 8 at the end.
+  const auto reach = [&](std::int32_t footprint) {
+    return (std::uint64_t{static_cast<std::uint32_t>(footprint) + 1} << setup.fraction_bits) >>
+           setup.depth_shift;
+  };
+  const std::uint64_t reach_x = reach(setup.splat.columns), reach_y = reach(setup.splat.rows);
+  const std::uint64_t edge = voxelEdgeOnScreen(setup) >> setup.depth_shift;  // key units
+  const std::uint64_t most = kMaxSurfaceSlope * (std::max(reach_x, reach_y) + edge);
+  for (int i = 0; i < model.normalCount(); ++i) {
+    const NormalQ14 n = model.normal(i);
+    std::array<std::uint64_t, 3> view{};  // |R n| per view axis, Q1.14 (<= 2^14 + a few)
+    for (std::size_t row = 0; row < 3; ++row) {
+      const std::int64_t sum = std::int64_t{rotation.m_q30[row][0]} * n.x +
+                               std::int64_t{rotation.m_q30[row][1]} * n.y +
+                               std::int64_t{rotation.m_q30[row][2]} * n.z;  // Q2.44, < 2^47
+      view[row] = static_cast<std::uint64_t>(sum < 0 ? -sum : sum) >> 30;
+    }
+    // (|v_x| reach_x + |v_y| reach_y + (1 - |v_z|) edge) / |v_z|, at most `most` (also where
+    // v_z is 0). The last term: voxel centres lie up to about a voxel edge off the surface (the
+    // voxel's extent along the normal, and the scan's noise), which shifts their depth by that
+    // over |v_z|; the jump already allows one voxel edge for it where the surface faces the
+    // viewer. Numerator and most * |v_z| stay below 2^15 * 2^35.
+    const std::uint64_t rise =
+        view[0] * reach_x + view[1] * reach_y +
+        ((std::uint64_t{1} << 14) - std::min<std::uint64_t>(view[2], 1 << 14)) * edge;
+    const std::uint64_t key_units = rise >= most * view[2] ? most : rise / view[2];
+    slack_[static_cast<std::size_t>(i)] = static_cast<std::uint32_t>(
+        std::min<std::uint64_t>(key_units >> 8, Framebuffer::kMaxDepthKey));
+  }
+}
+
+EdgeRule edgeRuleFor(const FrameSetup& setup, PixelPayload payload, const CreaseTable* creases,
+                     const SurfaceSlopes* slopes) {
+  // A depth step of kSilhouetteVoxelEdges voxels, or pixels where a voxel is smaller than one: the
+  // voxel centres of a surface lie up to about a voxel off it, and where voxels are smaller than
+  // pixels, neighbouring pixels' voxels lie up to a pixel apart. What a surface seen obliquely
+  // recedes beyond that is the slopes' slack.
   const std::uint64_t one_pixel = std::uint64_t{1} << setup.fraction_bits;
   const std::uint64_t step = std::max(voxelEdgeOnScreen(setup), one_pixel) * kSilhouetteVoxelEdges;
   const std::uint64_t key_units =
@@ -40,7 +80,11 @@ EdgeRule edgeRuleFor(const FrameSetup& setup, PixelPayload payload, const Crease
   rule.key_shift = payload == PixelPayload::kColourNormal ? 16 : 8;
   rule.jump = static_cast<std::uint32_t>(payload == PixelPayload::kColourNormal ? key_units >> 8
                                                                                 : key_units);
-  if (payload != PixelPayload::kColourNormal) rule.creases = nullptr;  // no normals to compare
+  rule.slopes = slopes;
+  if (payload != PixelPayload::kColourNormal) {  // no normals to compare
+    rule.creases = nullptr;
+    rule.slopes = nullptr;
+  }
   return rule;
 }
 

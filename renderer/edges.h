@@ -1,10 +1,11 @@
 #pragma once
 // The line pass of the line styles (docs/styles.md): after decoding, each covered pixel is compared
 // with its four neighbours, O(pixels), integer only.
-// - Silhouette: a neighbour is background, or lies farther by more than `jump`
-//   (kSilhouetteVoxelEdges voxel edges, or pixels where a voxel is smaller than a pixel): the
-//   object's outline and the outline of whatever stands in front of something else. Only the
-//   nearer pixel of such a pair is marked, so the line is one pixel wide.
+// - Silhouette: a neighbour is background, or lies farther than its own surface explains: by more
+//   than `jump` (kSilhouetteVoxelEdges voxel edges, or pixels where a voxel is smaller than a
+//   pixel) plus the slack of the pair's surface slope (SurfaceSlopes): the object's outline and
+//   the outline of whatever stands in front of something else. Only the nearer pixel of such a
+//   pair is marked, so the line is one pixel wide.
 // - Crease: a neighbour is no silhouette, but the normals of the two pixels differ by more than
 //   the crease angle (a table of 255 x 255 bits built once per model and angle, so the test is one
 //   look-up, not a dot product). Again only one pixel of the pair is marked: the nearer, or the
@@ -17,6 +18,7 @@
 // frame and reads rows first_row - 2 to end_row + 1 where the frame has them; a band drawn two
 // rows taller at each inner edge therefore styles exactly as the whole frame does.
 
+#include <algorithm>
 #include <array>
 #include <cstdint>
 #include <span>
@@ -29,6 +31,11 @@
 namespace octopoint {
 
 inline constexpr std::uint32_t kSilhouetteVoxelEdges = 4;
+// The most SurfaceSlopes credits a surface with: the slack of a surface whose depth recedes by
+// kMaxSurfaceSlope pixels per pixel across the screen (about 83 degrees from facing the viewer),
+// kMaxSurfaceSlope times (the larger reach + a voxel edge). A surface seen more nearly edge-on
+// covers few pixels, and two such surfaces one behind the other keep their outline.
+inline constexpr std::uint32_t kMaxSurfaceSlope = 8;
 
 enum class Edge : std::uint8_t { kNone, kCrease, kSilhouette };
 
@@ -46,25 +53,59 @@ class CreaseTable {
   std::array<std::uint32_t, 256 * 8> bits_{};  // row a, bit b: 8 KiB
 };
 
+// How much farther than the jump a neighbour on the same surface may lie, per normal palette entry,
+// for one frame (a kColourNormal frame's key units, word >> 16). A surface seen obliquely recedes
+// by |n_x / n_z| pixels of depth per pixel along x and |n_y / n_z| along y (n the entry's normal in
+// view axes), and two neighbouring pixels show the nearest of the voxels whose splats cover them:
+// voxels whose centres lie up to a footprint plus one pixel apart along each axis, whichever way
+// the two pixels neighbour each other; and each voxel centre lies up to about a voxel edge e off
+// the surface, e / |n_z| in depth. So the depths of neighbours on one surface differ by up to
+// (|n_x| (columns + 1) + |n_y| (rows + 1) + (1 - |n_z|) e) / |n_z| pixels beyond the jump (which
+// allows for e where the surface faces the viewer): the slack. Without it, a steep surface
+// drawn with splats is hatched with silhouettes wherever the steps between its rows of splats
+// exceed the jump (docs/styles.md). The slack is capped (kMaxSurfaceSlope). A pair's slack is the
+// smaller of its two pixels': where a steep surface stands in front of another one, their normals
+// differ and the outline stays.
+class SurfaceSlopes {
+ public:
+  // For frames of `setup` (its rotation, splat footprint and depth key scale).
+  void build(const ModelView& model, const FrameSetup& setup);
+  std::uint32_t slack(std::uint32_t normal_a, std::uint32_t normal_b) const {
+    return std::min(slack_[normal_a], slack_[normal_b]);
+  }
+
+ private:
+  std::array<std::uint32_t, 256> slack_{};  // 0 past the palette
+};
+
 // What the line pass needs of a frame: how far apart neighbouring depths may be, in the units of
 // (word >> key_shift).
 struct EdgeRule {
   std::uint32_t jump = 0;
   int key_shift = 8;
-  const CreaseTable* creases = nullptr;  // nullptr: silhouettes only
+  const CreaseTable* creases = nullptr;   // nullptr: silhouettes only
+  const SurfaceSlopes* slopes = nullptr;  // nullptr: no slack beyond the jump
 };
 
-// The rule for a frame set up by `setup` whose words carry `payload`.
-EdgeRule edgeRuleFor(const FrameSetup& setup, PixelPayload payload, const CreaseTable* creases);
+// The rule for a frame set up by `setup` whose words carry `payload` (creases and slopes apply to
+// kColourNormal frames only; `slopes` built for the same set-up).
+EdgeRule edgeRuleFor(const FrameSetup& setup, PixelPayload payload, const CreaseTable* creases,
+                     const SurfaceSlopes* slopes);
 
 // Whether covered pixel (x, y) of `frame` has a neighbour in the frame that is background or lies
-// farther than the jump: a silhouette pixel.
+// farther than the jump plus the pair's slope slack: a silhouette pixel.
 inline bool hasSilhouetteNeighbour(const FrameView& frame, std::int32_t x, std::int32_t y,
                                    const EdgeRule& rule) {
-  const std::uint32_t farthest = (frame.pixelAt(x, y) >> rule.key_shift) + rule.jump;
+  const std::uint32_t word = frame.pixelAt(x, y);
+  const std::uint32_t farthest = (word >> rule.key_shift) + rule.jump;
   const auto outlines = [&](std::int32_t qx, std::int32_t qy) {
     const std::uint32_t q = frame.pixelAt(qx, qy);
-    return q == Framebuffer::kEmpty || (q >> rule.key_shift) > farthest;
+    if (q == Framebuffer::kEmpty) return true;
+    const std::uint32_t key = q >> rule.key_shift;
+    if (key <= farthest) return false;
+    return rule.slopes == nullptr ||
+           key - farthest >
+               rule.slopes->slack(Framebuffer::normalIndexOf(word), Framebuffer::normalIndexOf(q));
   };
   return (x > 0 && outlines(x - 1, y)) || (x + 1 < frame.width() && outlines(x + 1, y)) ||
          (y > 0 && outlines(x, y - 1)) || (y + 1 < frame.height() && outlines(x, y + 1));

@@ -66,6 +66,9 @@ void FrameStyler::beginFrame(const FrameSetup& setup) {
     shading_.build(model_, rotationFromYawPitchRoll(camera.yaw, camera.pitch, camera.roll),
                    options_.light);
   }
+  const bool lines = options_.style == Style::kLines || options_.style == Style::kToon ||
+                     options_.style == Style::kOutlined;
+  if (model_.hasNormals() && lines) slopes_.build(model_, setup);
 }
 
 StyleError FrameStyler::resolveRows(const FrameView& frame, std::int32_t first_row,
@@ -81,7 +84,7 @@ StyleError FrameStyler::resolveRows(const FrameView& frame, std::int32_t first_r
   }
   if (frame.payload() != PixelPayload::kColourNormal) return StyleError::kFrameWithoutNormals;
   StylePass pass = pass_;
-  pass.rule = edgeRuleFor(setup_, frame.payload(), &creases_);
+  pass.rule = edgeRuleFor(setup_, frame.payload(), &creases_, &slopes_);
   switch (options_.style) {
     case Style::kShaded:
       shadedRows(pass, frame, first_row, end_row, rgb);

@@ -10,7 +10,7 @@
 //     styler.beginFrame(setup);                      // the light in the model's axes: 255 entries
 //     styler.resolve(frame, rgb);                    // width * height * 3 bytes
 //
-// Integer only; allocates nothing (its tables are members, about 10 KiB). resolveRows styles a
+// Integer only; allocates nothing (its tables are members, about 12 KiB). resolveRows styles a
 // range of rows for band rendering: it reads two rows above and below the range where the frame
 // has them, so bands drawn two rows taller at each inner edge give the whole frame's pixels.
 
@@ -54,7 +54,7 @@ class FrameStyler {
   PixelPayload payload() const;
 
   // Per frame, before resolving: the intensities of the normals under the light for this camera,
-  // and the depth step that counts as a silhouette.
+  // and the depth step that counts as a silhouette (with each normal's slope on screen).
   void beginFrame(const FrameSetup& setup);
 
   StyleError resolve(const FrameView& frame, std::span<std::uint8_t> rgb) const {
@@ -72,6 +72,7 @@ class FrameStyler {
   CreaseTable creases_;
   bool creases_built_ = false;
   ShadingTable shading_;
+  SurfaceSlopes slopes_;  // the silhouettes' slack on steep surfaces, per frame
   FrameSetup setup_{};
   StylePass pass_;
 };

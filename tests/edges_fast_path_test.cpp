@@ -121,7 +121,7 @@ TEST(EdgesFastPath, RandomFramesClassifyAsTheDefinitionSays) {
   CreaseTable creases;
   creases.build(model, Angle::fromDegrees(40));
   std::mt19937 random(13);
-  std::size_t silhouettes = 0, crease_pixels = 0;
+  std::size_t silhouettes = 0, crease_pixels = 0, explained_steps = 0;
   for (int round = 0; round < 60; ++round) {
     const std::int32_t width = 1 + static_cast<std::int32_t>(random() % 40);
     const std::int32_t height = 1 + static_cast<std::int32_t>(random() % 30);
@@ -146,9 +146,30 @@ TEST(EdgesFastPath, RandomFramesClassifyAsTheDefinitionSays) {
         pixels[static_cast<std::size_t>(y * width + x)] = key << 16 | normal << 8 | colour;
       }
     }
+    // Slopes of a turned set-up with one-pixel voxels: a pair's slack, 2 pixels (256 key units)
+    // times its slope, is below the keys' spread for the steeper normals and above for the others.
+    Camera camera;
+    camera.width = camera.height = 16;
+    camera.yaw = Angle::fromDegrees(static_cast<std::int32_t>(random() % 360));
+    camera.pitch = Angle::fromDegrees(static_cast<std::int32_t>(random() % 180) - 90);
+    FrameSetup setup;
+    ASSERT_EQ(buildFrameSetup(camera, 1, kDefaultFractionBits, &setup), CameraError::kNone);
+    SurfaceSlopes slopes;
+    slopes.build(model, setup);
     for (const std::uint32_t jump : {0u, 1u, 8u, 40u, 0xFFFFu}) {
-      const EdgeRule rule{jump, 16, round % 5 == 4 ? nullptr : &creases};
+      const EdgeRule rule{jump, 16, round % 5 == 4 ? nullptr : &creases,
+                          round % 3 == 1 ? nullptr : &slopes};
       expectLoopMatchesDefinition(frame, rule, "random frame");
+      if (rule.slopes != nullptr) {
+        for (std::int32_t y = 0; y < height; ++y) {
+          for (std::int32_t x = 0; x < width; ++x) {
+            const EdgeRule without{jump, 16, rule.creases, nullptr};
+            explained_steps += frame.pixelAt(x, y) != Framebuffer::kEmpty &&
+                               hasSilhouetteNeighbour(frame, x, y, without) &&
+                               !hasSilhouetteNeighbour(frame, x, y, rule);
+          }
+        }
+      }
       for (const std::uint32_t c : loopClasses(frame, 0, height, rule)) {
         silhouettes += c != 0xFFFFFFu && (c & 3) == static_cast<std::uint32_t>(Edge::kSilhouette);
         crease_pixels += c != 0xFFFFFFu && (c & 3) == static_cast<std::uint32_t>(Edge::kCrease);
@@ -158,6 +179,7 @@ TEST(EdgesFastPath, RandomFramesClassifyAsTheDefinitionSays) {
   // The frames exercise both kinds of line.
   EXPECT_GT(silhouettes, 1000u);
   EXPECT_GT(crease_pixels, 1000u);
+  EXPECT_GT(explained_steps, 1000u);  // steps over the jump that the pair's slope explains
 }
 
 TEST(EdgesFastPath, TheDefaultModelsFramesClassifyAsTheDefinitionSays) {
@@ -184,8 +206,12 @@ TEST(EdgesFastPath, TheDefaultModelsFramesClassifyAsTheDefinitionSays) {
     Framebuffer frame(setup);
     frame.clear(PixelPayload::kColourNormal);
     ASSERT_TRUE(renderLevel(Variant::kFixedFast, *level, setup, frame));
-    expectLoopMatchesDefinition(frame, edgeRuleFor(setup, PixelPayload::kColourNormal, &creases),
-                                "default model");
+    SurfaceSlopes slopes;
+    slopes.build(model, setup);
+    expectLoopMatchesDefinition(
+        frame, edgeRuleFor(setup, PixelPayload::kColourNormal, &creases, &slopes), "default model");
+    expectLoopMatchesDefinition(
+        frame, edgeRuleFor(setup, PixelPayload::kColourNormal, &creases, nullptr), "default model");
   }
 }
 

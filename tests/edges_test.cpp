@@ -6,7 +6,9 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -96,6 +98,59 @@ TEST(Edges, ADepthChangeWithinTheJumpIsNoSilhouette) {
   EXPECT_EQ(classes(frame, {kJump, 16, nullptr}), (std::vector<std::string>{"...."}));
   frame.pixelData()[2] = word(1000 + kJump + 1, 0);  // one more: a step
   EXPECT_EQ(classes(frame, {kJump, 16, nullptr}), (std::vector<std::string>{".S.."}));
+}
+
+TEST(Edges, ASteepSurfaceRecedesByItsSlopeWithoutSilhouettesAndAStepBeyondIsOne) {
+  const ThreeNormals normals;
+  const ModelView model = normals.view();
+  Camera camera;  // yaw 0: view axes are the model's, normal 2 recedes tan 30 pixels per pixel in x
+  camera.width = 40;
+  camera.height = 30;
+  FrameSetup setup;
+  ASSERT_EQ(buildFrameSetup(camera, 3, kDefaultFractionBits, &setup), CameraError::kNone);
+  ASSERT_TRUE(setup.splat.active());  // 30 / 2^3 = 3.75-pixel voxels
+  SurfaceSlopes slopes;
+  slopes.build(model, setup);
+  // One pixel of depth in the units of word >> 16, and the reach: footprint + 1 pixels.
+  const double pixel = static_cast<double>((1 << setup.fraction_bits) >> setup.depth_shift) / 256;
+  const double reach_x = (setup.splat.columns + 1) * pixel;
+  const double reach = std::max(setup.splat.columns, setup.splat.rows) * pixel + pixel;
+  const double edge = static_cast<double>(voxelEdgeOnScreen(setup) >> setup.depth_shift) / 256;
+  const double cos30 = std::cos(3.14159265358979 / 6);  // normal 2: 30 degrees from the view axis
+  EXPECT_NEAR(slopes.slack(2, 2), (0.5 * reach_x + (1 - cos30) * edge) / cos30, 1.0);
+  EXPECT_NEAR(slopes.slack(1, 1), kMaxSurfaceSlope * (reach + edge), 1.0);  // edge-on: capped
+  EXPECT_EQ(slopes.slack(0, 0), 0u);                                        // facing the viewer
+  EXPECT_EQ(slopes.slack(0, 2), 0u);  // a pair has the smaller slack of its two pixels
+  EXPECT_EQ(slopes.slack(1, 2), slopes.slack(2, 2));
+
+  const EdgeRule rule = edgeRuleFor(setup, PixelPayload::kColourNormal, nullptr, &slopes);
+  const std::uint32_t slack = slopes.slack(2, 2);
+  ASSERT_GT(slack, 10u);
+  // A row of normal-2 pixels receding by exactly jump + slack per pixel: a surface, no line; the
+  // same steps on a surface facing the viewer (normal 0) outline every pixel but the last.
+  Framebuffer frame(4, 1);
+  for (const std::uint32_t n : {2u, 0u}) {
+    frame.clear(PixelPayload::kColourNormal);
+    for (std::uint32_t x = 0; x < 4; ++x)
+      frame.pixelData()[x] = word(1000 + x * (rule.jump + slack), n);
+    EXPECT_EQ(classes(frame, rule), (std::vector<std::string>{n == 2 ? "...." : "SSS."}))
+        << "normal " << n;
+  }
+  // One key more than the slope explains is a step.
+  frame.clear(PixelPayload::kColourNormal);
+  frame.pixelData()[0] = frame.pixelData()[1] = word(1000, 2);
+  frame.pixelData()[2] = frame.pixelData()[3] = word(1000 + rule.jump + slack + 1, 2);
+  EXPECT_EQ(classes(frame, rule), (std::vector<std::string>{".S.."}));
+  // Along y too (the voxels two pixels show may lie apart along x whichever way they neighbour).
+  Framebuffer column(1, 3);
+  column.clear(PixelPayload::kColourNormal);
+  column.pixelData()[0] = word(1000, 2);
+  column.pixelData()[1] = word(1000 + rule.jump + slack, 2);
+  column.pixelData()[2] = word(1000 + 2 * (rule.jump + slack) + 1, 2);
+  EXPECT_EQ(classes(column, rule), (std::vector<std::string>{".", "S", "."}));
+  // Without slopes (colour frames, or a rule built without them) the jump alone decides.
+  frame.pixelData()[2] = frame.pixelData()[3] = word(1000 + rule.jump + 1, 2);
+  EXPECT_EQ(classes(frame, {rule.jump, 16, nullptr, nullptr}), (std::vector<std::string>{".S.."}));
 }
 
 TEST(Edges, TheOutlineAgainstTheBackgroundIsOnePixelInsideAndTheFrameEdgeIsNone) {

@@ -9,6 +9,7 @@
 #include <cstdlib>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "codegen/model_writer.h"
@@ -47,8 +48,10 @@ Prepared prepareWithNormals(const prepare::Scan& scan) {
   return prepared;
 }
 
-// The lines style of `model` seen by `camera`: one packed 0xRRGGBB per pixel.
-std::vector<std::uint32_t> linesPicture(const ModelView& model, const Camera& camera) {
+// The lines style of `model` seen by `camera`: one packed 0xRRGGBB per pixel; and, when
+// `covered` is given, whether each pixel shows the model (white paper does not tell).
+std::vector<std::uint32_t> linesPicture(const ModelView& model, const Camera& camera,
+                                        std::vector<bool>* covered = nullptr) {
   FrameSetup setup;
   EXPECT_EQ(buildFrameSetup(camera, kDepth, kDefaultFractionBits, &setup), CameraError::kNone);
   FrameStyler styler(model);
@@ -57,6 +60,10 @@ std::vector<std::uint32_t> linesPicture(const ModelView& model, const Camera& ca
   Framebuffer frame(camera.width, camera.height);
   frame.clear(styler.payload());
   EXPECT_TRUE(renderLevel(Variant::kFixedFast, model.finestLevel(), setup, frame));
+  if (covered != nullptr) {
+    covered->clear();
+    for (const std::uint32_t word : frame.pixels()) covered->push_back(word != Framebuffer::kEmpty);
+  }
   styler.beginFrame(setup);
   std::vector<std::uint8_t> rgb(static_cast<std::size_t>(camera.width * camera.height) * 3);
   EXPECT_EQ(styler.resolve(frame, rgb), StyleError::kNone);
@@ -67,9 +74,9 @@ std::vector<std::uint32_t> linesPicture(const ModelView& model, const Camera& ca
   return picture;
 }
 
-Camera camera(double yaw, double pitch, double zoom) {
+Camera camera(double yaw, double pitch, double zoom, std::int32_t side = kSide) {
   Camera c;
-  c.width = c.height = kSide;
+  c.width = c.height = side;
   c.yaw = Angle::fromMilliDegrees(std::llround(yaw * 1000));
   c.pitch = Angle::fromMilliDegrees(std::llround(pitch * 1000));
   c.zoom = Q16::fromRaw(static_cast<std::int32_t>(std::lround(zoom * 65536)));
@@ -242,6 +249,48 @@ TEST(StyleGeometry, APlaneHasNoCrease) {
   const testing::Surface plane{
       testing::Surface::Kind::kPlane, {0.0, 0.0, 2.0}, 0, {0.36, -0.48, -0.8}, 0.5};
   expectNoCreases(testing::scatteredScan(plane, 60000, 0.5 / 64, 12), "plane");
+}
+
+TEST(StyleGeometry, ASteepPlaneDrawnWithSplatsHasNoSilhouetteInsideItsOutline) {
+  // A plane facing the sensor, seen nearly edge-on (70 to 80 degrees off the viewing axis, about x
+  // and about y) with voxels of 1, 2 and 4 pixels: its depth recedes by 2.7 to 5.7 pixels per
+  // pixel, and neighbouring pixels show voxels up to a splat apart, so steps between them exceed
+  // the jump (4 voxel edges). They are the surface's own slope (SurfaceSlopes), not outlines: the
+  // only silhouette pixels are those beside the background, and the outline is all there.
+  const testing::Surface plane{
+      testing::Surface::Kind::kPlane, {0.0, 0.0, 2.0}, 0, {0.0, 0.0, -1.0}, 0.5};
+  const Prepared shape = prepareWithNormals(testing::scatteredScan(plane, 60000, 0.5 / 64, 13));
+  ASSERT_TRUE(shape.model.has_value());
+  std::size_t outline_pixels = 0;
+  // Voxels of 1, 2 and 4 pixels (depth 6: zoom x side / 64), the plane 64 to 256 pixels wide.
+  for (const auto& [side, zoom] : std::vector<std::pair<std::int32_t, double>>{
+           {kSide, 0.5}, {2 * kSide, 0.5}, {2 * kSide, 1.0}}) {
+    for (const auto& [yaw, pitch] : std::vector<std::array<double, 2>>{
+             {0, 70}, {30, 75}, {-20, -78}, {75, 0}, {-72, 15}, {80, -10}}) {
+      std::vector<bool> covered;
+      const std::vector<std::uint32_t> picture =
+          linesPicture(*shape.model, camera(yaw, pitch, zoom, side), &covered);
+      std::size_t inner = 0, outline = 0, pixels = 0;
+      for (std::int32_t y = 0; y < side; ++y) {
+        for (std::int32_t x = 0; x < side; ++x) {
+          const std::size_t i = static_cast<std::size_t>(y * side + x);
+          if (!covered[i]) continue;
+          ++pixels;
+          const bool beside_background =
+              (x > 0 && !covered[i - 1]) || (x + 1 < side && !covered[i + 1]) ||
+              (y > 0 && !covered[i - side]) || (y + 1 < side && !covered[i + side]);
+          if (picture[i] != 0x000000) continue;
+          (beside_background ? outline : inner) += 1;
+        }
+      }
+      EXPECT_EQ(inner, 0u) << "yaw " << yaw << ", pitch " << pitch << ", zoom " << zoom << ": "
+                           << inner << " of " << pixels
+                           << " covered pixels are silhouettes inside the plane's outline";
+      EXPECT_GT(pixels, 200u) << "yaw " << yaw << ", pitch " << pitch << ", zoom " << zoom;
+      outline_pixels += outline;
+    }
+  }
+  EXPECT_GT(outline_pixels, 1000u);
 }
 
 }  // namespace
