@@ -74,35 +74,48 @@ void meshGrid(const prepare::Scan& points, ReferenceSurface& surface) {
   }
 }
 
-void splatRadii(const prepare::Scan& points, ReferenceSurface& surface) {
-  const std::size_t count = points.positions.size();
-  surface.splat_radius.assign(count, 0.0f);
-  if (count < 2) return;
+}  // namespace
+
+std::vector<float> neighbourDistances(const std::vector<std::array<float, 3>>& positions,
+                                      int neighbour) {
+  const std::size_t count = positions.size();
+  std::vector<float> distance(count, 0.0f);
+  if (count < 2 || neighbour < 1) return distance;
   auto cloud = std::make_shared<pcl::PointCloud<pcl::PointXYZ>>();
   cloud->reserve(count);
-  for (const auto& p : points.positions) cloud->push_back({p[0], p[1], p[2]});
+  for (const auto& p : positions) cloud->push_back({p[0], p[1], p[2]});
   pcl::KdTreeFLANN<pcl::PointXYZ> tree;
   tree.setInputCloud(cloud);
   // The point itself comes back first (distance 0): ask for one more.
-  const int wanted = static_cast<int>(std::min<std::size_t>(kSplatNeighbour, count - 1)) + 1;
+  const int wanted =
+      static_cast<int>(std::min<std::size_t>(static_cast<std::size_t>(neighbour), count - 1)) + 1;
   pcl::Indices found;
   std::vector<float> squared;
   for (std::size_t i = 0; i < count; ++i) {
     tree.nearestKSearch((*cloud)[i], wanted, found, squared);
-    surface.splat_radius[i] = squared.empty() ? 0.0f : std::sqrt(squared.back());
+    distance[i] = squared.empty() ? 0.0f : std::sqrt(squared.back());
   }
-  // Far from everything else a point samples no surface: no splat wider than the quantile.
-  std::vector<float> sorted = surface.splat_radius;
-  const auto rank = static_cast<std::size_t>(kMaxSplatQuantile * static_cast<double>(count - 1));
-  std::nth_element(sorted.begin(), sorted.begin() + static_cast<std::ptrdiff_t>(rank),
-                   sorted.end());
-  const float limit = sorted[rank];
-  for (float& radius : surface.splat_radius) radius = std::min(radius, limit);
+  return distance;
 }
 
-}  // namespace
+std::vector<float> splatRadii(const std::vector<float>& neighbour_distance, const SplatRule& rule) {
+  std::vector<float> radius(neighbour_distance.size(), 0.0f);
+  if (radius.empty()) return radius;
+  // The cap: the rule's quantile of the neighbour distances (nth_element on a copy).
+  std::vector<float> sorted = neighbour_distance;
+  const auto rank =
+      static_cast<std::size_t>(rule.cap_quantile * static_cast<double>(sorted.size() - 1));
+  std::nth_element(sorted.begin(), sorted.begin() + static_cast<std::ptrdiff_t>(rank),
+                   sorted.end());
+  const double limit = sorted[rank];
+  for (std::size_t i = 0; i < radius.size(); ++i) {
+    radius[i] = static_cast<float>(rule.scale *
+                                   std::min(static_cast<double>(neighbour_distance[i]), limit));
+  }
+  return radius;
+}
 
-ReferenceSurface buildReferenceSurface(const prepare::Scan& points) {
+ReferenceSurface buildReferenceSurface(const prepare::Scan& points, const SplatRule& rule) {
   ReferenceSurface surface;
   surface.positions = points.positions;
   surface.colours = points.colours;
@@ -112,7 +125,7 @@ ReferenceSurface buildReferenceSurface(const prepare::Scan& points) {
   if (gridded)
     meshGrid(points, surface);
   else
-    splatRadii(points, surface);
+    surface.splat_radius = splatRadii(neighbourDistances(points.positions, rule.neighbour), rule);
   return surface;
 }
 

@@ -5,10 +5,10 @@
 // - Organized scan (a depth image: Scan::grid_width x grid_height): the grid is triangulated with
 //   PCL's OrganizedFastMesh, neighbours in the grid joined by triangles, except across a depth
 //   discontinuity (an edge longer than kMaxEdgeGridSteps grid steps).
-// - Unorganized scan: every point becomes a disc facing the viewer whose radius is the distance to
-//   its kSplatNeighbour-th nearest neighbour (PCL k-d tree), at most the kMaxSplatQuantile
-//   quantile of that distance over the scan, so that the discs of an evenly sampled surface
-//   overlap without gaps.
+// - Unorganized scan: every point becomes a disc facing the viewer whose radius is kSplatRule:
+//   0.7 x the distance to its 8th nearest neighbour (PCL k-d tree), that distance at most its 90%
+//   quantile over the scan: the smallest discs that close the reference's own surface
+//   (app/reference_closure.h measures it).
 //
 // Building it is view-independent and done once per scan; app/reference_render.h draws it per view.
 // This file's .cpp is the only one under app/ that includes PCL headers (they compile slowly).
@@ -26,14 +26,20 @@ namespace octopoint::tradeoff {
 // jump in depth, not a surface: a surface seen at up to acos(1/8) = 83 degrees from face-on, or a
 // depth camera's quantized depth (a Kinect's step is about 1.7 grid steps at 1 m), stays joined.
 inline constexpr double kMaxEdgeGridSteps = 8;
-// Which nearest neighbour's distance is a splat's radius. On a square grid of spacing h the 5th
-// and 6th nearest lie at sqrt(2) h (h / sqrt(2) closes the grid's gaps); on a jittered grid (one
-// point anywhere in each cell) the 5th is the least that leaves no hole
-// (tests/reference_render_test.cpp), the 6th leaves a margin.
-inline constexpr int kSplatNeighbour = 6;
-// A point whose neighbours are far (stray returns, the sparse floor of a laser scan) samples no
-// surface: no splat is wider than this quantile of the scan's splat radii.
-inline constexpr double kMaxSplatQuantile = 0.9;
+// How an unorganized scan's points become discs (docs/tradeoff.md, "The reference render"): a
+// point's radius is `scale` x the distance to its `neighbour`-th nearest neighbour, that distance
+// capped at its `cap_quantile` quantile over the scan (a stray return far from everything samples
+// no surface, and gets no wider disc than 90% of the scan's points). kSplatRule: of the neighbour
+// counts 4..16, each with the smallest scale (steps of 0.05) that closes a jittered plane at every
+// size and zoom, the 8th at 0.7 gives the smallest discs; on lms400 it leaves 0.023% of the
+// covered pixels as holes inside the surface, where 0.6 leaves 0.036% and 0.5 0.093%, and a 75%
+// cap 0.031% (scripts/reference-closure prints the whole measurement).
+struct SplatRule {
+  int neighbour = 8;
+  double scale = 0.7;
+  double cap_quantile = 0.9;
+};
+inline constexpr SplatRule kSplatRule{};
 
 struct ReferenceSurface {
   // The points (model axes, scan units) and their colours, as given.
@@ -47,8 +53,18 @@ struct ReferenceSurface {
 
 // Builds the surface of `points` (the model's points, prepare::modelPoints). An organized scan
 // whose sensor sat at the origin of its own frame (true of depth-camera clouds; the model's axes
-// only turn about that origin) is meshed; any other is splatted (with fewer than kSplatNeighbour +
+// only turn about that origin) is meshed; any other is splatted (with fewer than rule.neighbour +
 // 1 points, the farthest other point gives the radius; a single point has radius 0).
-ReferenceSurface buildReferenceSurface(const prepare::Scan& points);
+ReferenceSurface buildReferenceSurface(const prepare::Scan& points,
+                                       const SplatRule& rule = kSplatRule);
+
+// Each position's distance to its `neighbour`-th nearest other position (PCL k-d tree; with fewer
+// others, the farthest; 0 for a single position).
+std::vector<float> neighbourDistances(const std::vector<std::array<float, 3>>& positions,
+                                      int neighbour);
+
+// The disc radii `rule` gives for those distances: rule.scale x min(distance, the rule's quantile
+// of the distances).
+std::vector<float> splatRadii(const std::vector<float>& neighbour_distance, const SplatRule& rule);
 
 }  // namespace octopoint::tradeoff
