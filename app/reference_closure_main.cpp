@@ -3,6 +3,7 @@
 // reference alone (app/reference_closure.h). scripts/reference-closure runs it on lms400.
 #include <algorithm>
 #include <cstdio>
+#include <filesystem>
 #include <iostream>
 #include <string>
 #include <vector>
@@ -38,8 +39,9 @@ scan's (app/reference_surface.h):
    pixels of the closing near its outline), per k, cap quantile and scale.
 
   --yaw DEG         the view's yaw, |DEG| <= 1e6 (default 30)
-  --pictures DIR    instead, write DIR/WxH_zoomZ_holes.png per view of table 2 (covered white,
-                    holes red, empty near the outline orange) for one rule, and print its shares
+  --pictures DIR    instead, for one rule, write WxH_zoomZ_holes.png per view of table 2 into
+                    the directory DIR (covered white, holes red, empty near the outline
+                    orange) and print its shares
   --rule K,SCALE,QUANTILE  that rule (default the reference's: 8,0.7,0.9); K 1..64, SCALE
                     0.1..4, QUANTILE 0..1
   -h, --help        show this help
@@ -157,6 +159,9 @@ int run(int argc, char** argv) {
     }
   }
   if (scan_path.empty()) throw cli::Error("no SCAN given (see --help)");
+  std::error_code error;
+  if (!pictures.empty() && !std::filesystem::is_directory(pictures, error))
+    throw cli::Error("--pictures: " + cli::inQuotes(pictures) + " is not a directory");
   ScanSurface scan;
   scan.points = prepare::modelPoints(prepare::loadScan(scan_path), scan_path, {});
   if (scan.points.positions.size() < 2) throw cli::Error(scan_path + ": fewer than 2 points");
