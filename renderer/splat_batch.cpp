@@ -41,6 +41,8 @@ __attribute__((always_inline)) inline void plotBox(const SplatBatch& b, int i) {
                           shortOf<kRows>(rowsOf(b.extent[i])));
 }
 
+// Footprints of 1 or 2 columns and up to 4 rows (fixed_simd emits those of up to 4 pixels as
+// single pixels: this writes 2 x 3 and 2 x 4).
 template <int kColumns, int kRows>
 void plotSmall(const SplatBatch& b) {
   const int half = b.count / 2;
@@ -51,7 +53,67 @@ void plotSmall(const SplatBatch& b) {
   if (b.count % 2 != 0) plotBox<kColumns, kRows>(b, b.count - 1);
 }
 
-// Footprints wider or taller than 4: eight pixels of a row per vector min.
+// Footprints of 3 or 4 columns and up to 4 rows: point i's box of four columns and kRows rows,
+// one four-pixel vector min per row; the lanes at or past the point's columns, and its last row
+// when it has one fewer, get kEmpty. Overlapping vectors of neighbours (see the header) still cost
+// less than four scalar mins per row: docs/splats.md "Small footprints".
+template <int kRows>
+__attribute__((target("avx2"), always_inline)) inline void plotQuadBox(const SplatBatch& b, int i,
+                                                                       __m128i lane) {
+  const std::size_t at = b.index[i];
+  if (at + (kRows - 1) * b.width + 4 > b.end) {
+    plotExact(b, i);
+    return;
+  }
+  const __m128i word =
+      _mm_or_si128(_mm_set1_epi32(static_cast<std::int32_t>(b.word[i])),
+                   _mm_cmpgt_epi32(lane, _mm_set1_epi32(columnsOf(b.extent[i]) - 1)));
+  const __m128i last_word = _mm_or_si128(
+      word, _mm_set1_epi32(static_cast<std::int32_t>(shortOf<kRows>(rowsOf(b.extent[i])))));
+  std::uint32_t* row = b.pixel + at;
+  for (int r = 0; r < kRows; ++r, row += b.width) {
+    auto* chunk = reinterpret_cast<__m128i*>(row);
+    _mm_storeu_si128(chunk,
+                     _mm_min_epu32(_mm_loadu_si128(chunk), r + 1 == kRows ? last_word : word));
+  }
+}
+
+template <int kRows>
+__attribute__((target("avx2"))) void plotQuad(const SplatBatch& b) {
+  const __m128i lane = _mm_setr_epi32(0, 1, 2, 3);
+  const int half = b.count / 2;
+  for (int i = 0; i < half; ++i) {  // the two halves in turn: two independent chains
+    plotQuadBox<kRows>(b, i, lane);
+    plotQuadBox<kRows>(b, half + i, lane);
+  }
+  if (b.count % 2 != 0) plotQuadBox<kRows>(b, b.count - 1, lane);
+}
+
+// Footprints of 5 to 8 columns, or taller than 4: one eight-pixel vector min per row, no loop over
+// the row's chunks (plotWide's per-row loop and tail test cost about 20 instructions a row); the
+// lanes at or past the point's columns get kEmpty. A point whose last row's vector would reach
+// past the frame's last pixel is written exactly.
+__attribute__((target("avx2"))) void plotEightWide(const SplatBatch& b) {
+  const __m256i lane = _mm256_setr_epi32(0, 1, 2, 3, 4, 5, 6, 7);
+  for (int i = 0; i < b.count; ++i) {
+    const std::int32_t columns = columnsOf(b.extent[i]);
+    const std::int32_t rows = rowsOf(b.extent[i]);
+    const std::size_t at = b.index[i];
+    if (at + static_cast<std::size_t>(rows - 1) * b.width + 8 > b.end) {
+      plotExact(b, i);
+      continue;
+    }
+    const __m256i word = _mm256_or_si256(_mm256_set1_epi32(static_cast<std::int32_t>(b.word[i])),
+                                         _mm256_cmpgt_epi32(lane, _mm256_set1_epi32(columns - 1)));
+    std::uint32_t* row = b.pixel + at;
+    for (std::int32_t r = 0; r < rows; ++r, row += b.width) {
+      auto* chunk = reinterpret_cast<__m256i*>(row);
+      _mm256_storeu_si256(chunk, _mm256_min_epu32(_mm256_loadu_si256(chunk), word));
+    }
+  }
+}
+
+// Footprints wider than 8: eight pixels of a row per vector min, the row's chunks in a loop.
 __attribute__((target("avx2"))) void plotWide(const SplatBatch& b) {
   const __m256i lane = _mm256_setr_epi32(0, 1, 2, 3, 4, 5, 6, 7);
   for (int i = 0; i < b.count; ++i) {
@@ -81,22 +143,27 @@ __attribute__((target("avx2"))) void plotWide(const SplatBatch& b) {
   }
 }
 
-constexpr int kMostSmall = kMostBoxSide;
+constexpr int kMostScalar = 2;  // columns of the scalar boxes; up to kMostBoxSide rows
 
 template <int... kIndex>
-constexpr std::array<SplatBatchPlot, sizeof...(kIndex)> smallKernels(
+constexpr std::array<SplatBatchPlot, sizeof...(kIndex)> scalarKernels(
     std::integer_sequence<int, kIndex...>) {
-  return {&plotSmall<kIndex % kMostSmall + 1, kIndex / kMostSmall + 1>...};
+  return {&plotSmall<kIndex % kMostScalar + 1, kIndex / kMostScalar + 1>...};
 }
-// kSmall[(rows - 1) * 4 + columns - 1]
-constexpr auto kSmall = smallKernels(std::make_integer_sequence<int, kMostSmall * kMostSmall>{});
+// kScalar[(rows - 1) * kMostScalar + columns - 1]
+constexpr auto kScalar =
+    scalarKernels(std::make_integer_sequence<int, kMostScalar * kMostBoxSide>{});
+constexpr std::array<SplatBatchPlot, kMostBoxSide> kQuad = {&plotQuad<1>, &plotQuad<2>,
+                                                            &plotQuad<3>, &plotQuad<4>};
 
 }  // namespace
 
 SplatBatchPlot splatBatchPlot(std::int32_t columns, std::int32_t rows) {
   assert(columns >= 1 && rows >= 1);
-  if (columns > kMostSmall || rows > kMostSmall) return &plotWide;
-  return kSmall[static_cast<std::size_t>((rows - 1) * kMostSmall + columns - 1)];
+  if (columns > 8) return &plotWide;
+  if (columns > kMostBoxSide || rows > kMostBoxSide) return &plotEightWide;
+  if (columns > kMostScalar) return kQuad[static_cast<std::size_t>(rows - 1)];
+  return kScalar[static_cast<std::size_t>((rows - 1) * kMostScalar + columns - 1)];
 }
 
 }  // namespace octopoint

@@ -8,15 +8,20 @@
 // A frame's footprint is at most `columns` x `rows` pixels (SplatFootprint); a point covers that
 // many or one fewer per axis (floor or ceil of the padded extent). One kernel per frame, chosen by
 // the footprint, writes the batch:
-// - Small footprints (up to 4 x 4): the whole columns x rows box, unrolled, one scalar min per
-//   pixel; the pixels of the box outside a point's own rectangle (its last column or row when it
-//   has one fewer) get the min with kEmpty, which leaves them as they are. Scalar, because the
-//   rectangles of neighbouring points overlap: a wide store followed by a load of an overlapping
-//   but different range cannot be forwarded and waits for the store to reach the cache, while
-//   equal 4-byte addresses forward. Points are taken from the batch's two halves in turn, two
-//   independent chains of stores and loads (neighbours often share pixels).
-// - Larger ones: eight pixels of a row per vector min, the row's last partial chunk with the
-//   columns past the rectangle set to kEmpty (not stored back blended, no masked store).
+// - Up to 2 columns and 4 rows: the whole columns x rows box, unrolled, one scalar min per pixel;
+//   the pixels of the box outside a point's own rectangle (its last column or row when it has one
+//   fewer) get the min with kEmpty, which leaves them as they are. Points are taken from the
+//   batch's two halves in turn, two independent chains of stores and loads (neighbours often share
+//   pixels). (fixed_simd plots footprints of up to 4 pixels as single-pixel entries instead: a
+//   64-bit min per row of a 2 x 2 box was about 1.5x slower than those, bench/splat_bench.)
+// - 3 or 4 columns, up to 4 rows: one four-pixel vector min per row of the box, the lanes past the
+//   point's rectangle kEmpty, the two halves in turn. The rectangles of neighbouring points
+//   overlap, and a wide store followed by a load of an overlapping but different range cannot be
+//   forwarded; measured, that still costs less than four scalar mins per row (docs/splats.md,
+//   "Small footprints").
+// - Up to 8 columns (or taller than 4 rows): one eight-pixel vector min per row, same masking.
+// - Wider: eight pixels of a row per vector min, the row's last partial chunk with the columns
+//   past the rectangle set to kEmpty (not stored back blended, no masked store).
 // A box or chunk that would reach past the frame's last pixel is written pixel by pixel, exactly.
 
 #include <cstddef>

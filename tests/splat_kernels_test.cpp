@@ -1,5 +1,6 @@
 // Each footprint shape has its own code in fixed_simd (a splat's pixels as single-pixel entries
-// up to 2 x 2, renderer/simd_emit.h; an unrolled box kernel up to 4 x 4 and eight-pixel rows
+// up to 2 x 2, renderer/simd_emit.h; an unrolled box kernel up to 2 x 4, one four-pixel vector per
+// row for 3 or 4 columns up to 4 rows, one eight-pixel vector per row up to 8 columns, several
 // beyond, renderer/splat_batch.h) and is drawn by fixed_fast's rectangle loop. For every shape from
 // 1 x 2 to 5 x 5 and some wider and taller ones, with points that cover the whole box and points
 // one column or row short, both must draw the splat's definition (tests/splat_reference.h) bit
@@ -39,7 +40,8 @@ std::vector<std::pair<int, int>> shapes() {
       if (columns > 1 || rows > 1) list.emplace_back(columns, rows);
     }
   }
-  for (const auto& shape : {std::pair{8, 3}, std::pair{9, 9}, std::pair{12, 5}, std::pair{2, 17}})
+  for (const auto& shape : {std::pair{8, 3}, std::pair{6, 7}, std::pair{7, 2}, std::pair{4, 9},
+                            std::pair{9, 9}, std::pair{12, 5}, std::pair{2, 17}})
     list.push_back(shape);
   return list;
 }
