@@ -1,8 +1,14 @@
 // Issue 12: a large model's frame cost follows the screen. At 1280x960, the large chunked model
 // (>= 10 million voxels, scripts/measure-large makes it) drawn complete by the progressive model
-// at depth auto, against the default model (finest depth 8) drawn at depth auto, as a version-1
-// level and as a chunked file, side by side in one binary; frame clear included.
-// usage: large_model_bench --large=LARGE.oct [benchmark flags]
+// at depth auto, side by side in one binary, against
+//  - the same scene prepared with depths up to 8 (--large-depth8, chunked, and --large-depth8-flat,
+//    a single-file model): the fair comparison, the same pixels covered by a depth-8 model;
+//  - the default model (finest depth 8), compiled in and as a chunked file (--default-chunked):
+//    a smaller scene, so also compared per covered pixel.
+// Frame clear included. Each case counts the frame's covered pixels and the CPU time per covered
+// pixel (per_covered_px, seconds).
+// usage: large_model_bench --large=LARGE.oct [--large-depth8=L8.oct] [--large-depth8-flat=L8.oct]
+//          [--default-chunked=DEFAULT.oct] [benchmark flags]
 #include <benchmark/benchmark.h>
 
 #include <cmath>
@@ -24,6 +30,8 @@ namespace {
 using namespace octopoint;
 
 std::string g_large_path;
+std::string g_large_depth8_path;       // the large model's scene, depths up to 8, chunked
+std::string g_large_depth8_flat_path;  // the same as a single-file (not chunked) model
 std::string g_default_chunked_path;
 
 Camera screen(int zoom) {
@@ -34,14 +42,18 @@ Camera screen(int zoom) {
   return camera;
 }
 
-std::optional<ProgressiveModel> loadChunked(const std::string& path,
-                                            std::vector<std::uint8_t>& bytes) {
+bool readFile(const std::string& path, std::vector<std::uint8_t>& bytes) {
   std::ifstream in(path, std::ios::binary | std::ios::ate);
-  if (!in) return std::nullopt;
+  if (!in) return false;
   bytes.resize(static_cast<std::size_t>(in.tellg()));
   in.seekg(0);
-  if (!in.read(reinterpret_cast<char*>(bytes.data()), static_cast<std::streamsize>(bytes.size())))
-    return std::nullopt;
+  return static_cast<bool>(
+      in.read(reinterpret_cast<char*>(bytes.data()), static_cast<std::streamsize>(bytes.size())));
+}
+
+std::optional<ProgressiveModel> loadChunked(const std::string& path,
+                                            std::vector<std::uint8_t>& bytes) {
+  if (!readFile(path, bytes)) return std::nullopt;
   ChunkedIssue issue;
   std::optional<ProgressiveModel> model = progressiveModelFromPrefix(bytes, &issue);
   if (model && issue.error != ChunkedError::kNone) model.reset();
@@ -64,6 +76,17 @@ double psnrAgainst(const Framebuffer& frame, const Framebuffer& reference,
   }
   if (sum == 0) return 99.0;  // identical
   return 10.0 * std::log10(255.0 * 255.0 * static_cast<double>(a.size()) / sum);
+}
+
+// The pixels a frame covers, and the frame's CPU time per covered pixel (seconds; a cost that
+// follows the screen is a constant here, whatever the model).
+void countCoveredPixels(benchmark::State& state, const FrameView& frame) {
+  std::uint64_t covered = 0;
+  for (const std::uint32_t word : frame.pixels()) covered += word != FrameView::kEmpty;
+  state.counters["covered_px"] = static_cast<double>(covered);
+  state.counters["per_covered_px"] = benchmark::Counter(
+      static_cast<double>(covered),
+      benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
 }
 
 void drawProgressive(benchmark::State& state, const std::string& path, std::uint64_t budget = 0) {
@@ -89,6 +112,7 @@ void drawProgressive(benchmark::State& state, const std::string& path, std::uint
   state.counters["depth"] = stats.drawn_depth;
   state.counters["points"] = static_cast<double>(stats.points);
   state.counters["pieces"] = stats.pieces;
+  countCoveredPixels(state, frame);
   if (budget != 0) {  // against the frame without a budget
     Framebuffer full(camera.width, camera.height);
     full.clear();
@@ -107,12 +131,19 @@ void BM_LargeModelBudget(benchmark::State& state) {
 void BM_Depth8ModelChunked(benchmark::State& state) {
   drawProgressive(state, g_default_chunked_path);
 }
+// The large model's own scene with depths up to 8: what it costs when the same screen is covered.
+void BM_LargeSceneDepth8Chunked(benchmark::State& state) {
+  drawProgressive(state, g_large_depth8_path);
+}
 
-void BM_Depth8Model(benchmark::State& state) {
-  ModelIssue issue;
-  const std::optional<ModelView> model = ModelView::fromEmbedded(*models::defaultModel(), &issue);
+// A single-file model drawn at depth auto by renderLevel, as octopoint-render --file draws it.
+void drawLevelModel(benchmark::State& state, const ModelView& model) {
   const Camera camera = screen(static_cast<int>(state.range(0)));
-  const LevelView* level = autoLevel(*model, camera);
+  const LevelView* level = autoLevel(model, camera);
+  if (level == nullptr) {
+    state.SkipWithError("no depth for this view");
+    return;
+  }
   FrameSetup setup;
   buildFrameSetup(camera, level->depth, kDefaultFractionBits, &setup);
   Framebuffer frame(camera.width, camera.height);
@@ -123,10 +154,32 @@ void BM_Depth8Model(benchmark::State& state) {
   }
   state.counters["depth"] = level->depth;
   state.counters["points"] = static_cast<double>(level->leaves.size());
+  countCoveredPixels(state, frame);
+}
+
+void BM_Depth8Model(benchmark::State& state) {
+  ModelIssue issue;
+  const std::optional<ModelView> model = ModelView::fromEmbedded(*models::defaultModel(), &issue);
+  drawLevelModel(state, *model);
+}
+
+void BM_LargeSceneDepth8Flat(benchmark::State& state) {
+  std::vector<std::uint8_t> bytes;
+  ModelIssue issue;
+  std::optional<ModelView> model;
+  if (!g_large_depth8_flat_path.empty() && readFile(g_large_depth8_flat_path, bytes))
+    model = ModelView::fromBytes(bytes, &issue);
+  if (!model) {
+    state.SkipWithError("cannot read the single-file depth-8 model (--large-depth8-flat)");
+    return;
+  }
+  drawLevelModel(state, *model);
 }
 
 BENCHMARK(BM_Depth8Model)->Arg(1)->Arg(4)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_Depth8ModelChunked)->Arg(1)->Arg(4)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_LargeSceneDepth8Flat)->Arg(1)->Arg(4)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_LargeSceneDepth8Chunked)->Arg(1)->Arg(4)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_LargeModel)->Arg(1)->Arg(4)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_LargeModelBudget)
     ->ArgsProduct({{1, 4}, {100, 150, 200, 400, 800}})
@@ -139,6 +192,10 @@ int main(int argc, char** argv) {
   for (int i = 0; i < argc; ++i) {
     if (std::strncmp(argv[i], "--large=", 8) == 0) {
       g_large_path = argv[i] + 8;
+    } else if (std::strncmp(argv[i], "--large-depth8=", 15) == 0) {
+      g_large_depth8_path = argv[i] + 15;
+    } else if (std::strncmp(argv[i], "--large-depth8-flat=", 20) == 0) {
+      g_large_depth8_flat_path = argv[i] + 20;
     } else if (std::strncmp(argv[i], "--default-chunked=", 18) == 0) {
       g_default_chunked_path = argv[i] + 18;
     } else {
