@@ -3,6 +3,7 @@
 // 12 edges of a point-sampled cube and nowhere else, none on a sphere or a plane, within one pixel.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdio>
@@ -12,6 +13,7 @@
 #include <utility>
 #include <vector>
 
+#include "codegen/cube_fit.h"
 #include "codegen/model_writer.h"
 #include "codegen/prepare.h"
 #include "fixedpoint/rotation.h"
@@ -98,14 +100,21 @@ std::array<double, 2> project(const Camera& c, const Vec3d& p) {
 
 // How many pixels (Chebyshev: the larger of the column and row distance) the pixel whose centre
 // is `p` lies from the segment a-b: 1.5 or less when the segment crosses the 3 x 3 pixels around
-// it, which is what "within one pixel" means here.
+// it, which is what "within one pixel" means here. Exact: along the segment, a + t (b - a), the
+// distance max(|u(t)|, |v(t)|) is convex and piecewise linear in t, so its least value is at an
+// end or where u or v is 0 or |u| = |v|.
 double pixelsToSegment(const std::array<double, 2>& p, const std::array<double, 2>& a,
                        const std::array<double, 2>& b) {
-  const double length = std::hypot(b[0] - a[0], b[1] - a[1]);
-  double nearest = 1e9;
-  for (double t = 0; t <= 1.0; t += 0.02 / length) {
-    const double x = a[0] + t * (b[0] - a[0]), y = a[1] + t * (b[1] - a[1]);
-    nearest = std::min(nearest, std::max(std::fabs(p[0] - x), std::fabs(p[1] - y)));
+  const double u0 = p[0] - a[0], v0 = p[1] - a[1], du = b[0] - a[0], dv = b[1] - a[1];
+  const auto at = [&](double t) {
+    t = std::clamp(t, 0.0, 1.0);
+    return std::max(std::fabs(u0 - t * du), std::fabs(v0 - t * dv));
+  };
+  double nearest = std::min(at(0), at(1));
+  // u0 - t du = 0, v0 - t dv = 0, u0 - t du = +-(v0 - t dv)
+  for (const auto& [num, den] : std::vector<std::array<double, 2>>{
+           {u0, du}, {v0, dv}, {u0 - v0, du - dv}, {u0 + v0, du + dv}}) {
+    if (den != 0) nearest = std::min(nearest, at(num / den));
   }
   return nearest;
 }
@@ -140,9 +149,33 @@ Vec3d nearestCorner(const Camera& view) {
 TEST(StyleGeometry, CreasesRunAlongAllTwelveEdgesOfACubeAndNowhereElse) {
   // A cube of edge 1 at 2 units from the sensor, 12,000 points a face, noise a fifth of a voxel
   // (depth 6).
-  const prepare::Scan scan = testing::pointSampledCube({0, 0, 2}, 1.0, 12000, 0.2 / 64, 7);
+  const Vec3d centre = {0, 0, 2};
+  const prepare::Scan scan = testing::pointSampledCube(centre, 1.0, 12000, 0.2 / 64, 7);
   const Prepared cube = prepareWithNormals(scan);
   ASSERT_TRUE(cube.model.has_value());
+  // Where the cube's corners lie in the model cube: the preparer fits the model cube around the
+  // points' bounding box, which the noise makes larger than the cube (by about 2.5% here), so a
+  // corner (+-0.5 from the centre in cube edges) is at +-0.5 / fit.edge, not +-0.5, of it: at the
+  // outline's corners, 32 to 45 pixels from the middle of the picture, about a pixel further in.
+  const prepare::CubeFit fit = prepare::fitCube(scan.positions, "cube");
+  const auto inModelCube = [&](const Vec3d& corner) {
+    Vec3d p{};
+    for (std::size_t axis = 0; axis < 3; ++axis)
+      p[axis] = (centre[axis] + corner[axis] - fit.origin[axis]) / fit.edge - 0.5;
+    return p;
+  };
+  // The model stores the faces as voxels of 1 / 64 of the model cube, drawn at their centres: a
+  // face lies up to half a voxel from where its voxels are drawn (0.38 voxel here).
+  double face_offset = 0;  // in voxels, one voxel a pixel in these views
+  for (const double side : {-0.5, 0.5}) {
+    for (std::size_t axis = 0; axis < 3; ++axis) {
+      const double voxels = (inModelCube({side, side, side})[axis] + 0.5) * (1 << kDepth);
+      face_offset = std::max(face_offset, std::fabs(voxels - (std::floor(voxels) + 0.5)));
+    }
+  }
+  std::printf(
+      "model cube edge %.4f (cube edge 1); faces up to %.2f voxel from their voxels' centres\n",
+      fit.edge, face_offset);
   // Four views, each toward a corner of one tetrahedron of the cube's corners: each shows the three
   // edges meeting at its corner as creases (the others are its outline), twelve in all.
   const double tilt = std::atan(1 / std::sqrt(2.0)) * 180 / 3.14159265358979;
@@ -162,7 +195,7 @@ TEST(StyleGeometry, CreasesRunAlongAllTwelveEdgesOfACubeAndNowhereElse) {
     for (std::size_t axis = 0; axis < 3; ++axis) {
       Vec3d other = corner;
       other[axis] = -other[axis];
-      edges[axis] = {project(view, corner), project(view, other)};
+      edges[axis] = {project(view, inModelCube(corner)), project(view, inModelCube(other))};
     }
     std::vector<std::array<std::array<double, 2>, 2>> all_edges;
     for (int k = 0; k < 8; ++k) {
@@ -171,33 +204,40 @@ TEST(StyleGeometry, CreasesRunAlongAllTwelveEdgesOfACubeAndNowhereElse) {
         if (a[axis] > 0) continue;
         Vec3d b = a;
         b[axis] = 0.5;
-        all_edges.push_back({project(view, a), project(view, b)});
+        all_edges.push_back({project(view, inModelCube(a)), project(view, inModelCube(b))});
       }
     }
     // The target (issue 13): every crease pixel within one pixel of an edge, i.e. the edge crosses
-    // the 3 x 3 pixels around it. Measured (docs/styles.md): 0 to 2 crease pixels a view (at most
-    // 1%) lie a little further, 1.51 to 2.05 pixels from an edge, at the cube's corners, where
-    // three faces meet; so the test holds what is reached (at most 2% beyond one pixel, none beyond
-    // two). Before a crease beside a silhouette was left to the silhouette (renderer/edges.h), 2 to
-    // 3.2% lay beside the outline, one pixel inside it.
-    std::size_t beyond_one = 0, beyond_two = 0;
+    // the 3 x 3 pixels around it (1.5 pixels, Chebyshev). Measured (docs/styles.md): 829 of the
+    // 830 crease pixels of the four views are (farthest 1.48), one is 1.51 pixels from its edge:
+    // a pair of pixels at equal depth across the edge, whose crease the left one draws, and the
+    // voxel on the edge took the other face's normal. Faces lie up to `face_offset` voxels (here
+    // pixels) from where their voxels are drawn; so the test holds the target to within that:
+    // none beyond 1.5 + face_offset pixels, at most one pixel a view beyond 1.5. (Before the
+    // projection took the preparer's cube fit, 0.5 to 1% of them seemed 1.51 to 2.05 pixels off,
+    // at the outline's corners: the cube was drawn 2.7% smaller than the test assumed.)
+    std::size_t beyond_one = 0, beyond_tolerance = 0;
     double farthest = 0;
     for (const auto& p : creases) {
       double nearest = 1e9;
       for (const auto& e : all_edges) nearest = std::min(nearest, pixelsToSegment(p, e[0], e[1]));
+      if (nearest > 1.5) {
+        std::printf("  crease pixel (%.1f, %.1f): %.3f pixels from the nearest edge\n", p[0], p[1],
+                    nearest);
+      }
       beyond_one += nearest > 1.5;
-      beyond_two += nearest > 2.5;
+      beyond_tolerance += nearest > 1.5 + face_offset;
       farthest = std::max(farthest, nearest);
     }
     std::printf(
         "yaw %4.0f: %zu crease pixels, %zu beyond one pixel of an edge, farthest %.2f pixels "
         "(Chebyshev)\n",
         yaw, creases.size(), beyond_one, farthest);
-    EXPECT_LE(beyond_one * 50, creases.size())
-        << "yaw " << yaw << ": " << beyond_one << " of " << creases.size()
-        << " crease pixels more than one pixel off the edges";
-    EXPECT_EQ(beyond_two, 0u) << "yaw " << yaw << ": " << beyond_two
-                              << " crease pixels more than two pixels off";
+    EXPECT_LE(beyond_one, 1u) << "yaw " << yaw << ": " << beyond_one << " of " << creases.size()
+                              << " crease pixels more than one pixel off the edges";
+    EXPECT_EQ(beyond_tolerance, 0u)
+        << "yaw " << yaw << ": " << beyond_tolerance << " crease pixels more than 1.5 + "
+        << face_offset << " pixels off the edges";
     // And every edge is drawn: each point of its inner 90% lies within the 3 x 3 pixels around a
     // crease pixel.
     for (std::size_t axis = 0; axis < 3; ++axis) {
