@@ -17,6 +17,7 @@
 // splat; the walk is the same, instantiated a second time so the one-pixel path stays as it was.
 #include <algorithm>
 #include <bit>
+#include <type_traits>
 
 #include "renderer/bit_scan.h"
 #include "renderer/decode_algorithms.h"
@@ -35,6 +36,18 @@ struct Cursor {
   Leaves leaves;  // renderer/leaf_cursor.h: the palette (and normal) indices
 };
 
+// A frame's normal indices, read beside the palette indices: the cursor carries the palette
+// index pointer alone and the frame the two arrays' starts, so a cursor is two pointers (the node
+// and the palette index) and travels in registers; with a third pointer (ColourNormalLeaves) it was
+// returned through memory from every call, and normal frames took 30% longer to decode instead of
+// the 13% more instructions they need (docs/styles.md, "Cost").
+struct NormalBesideColourLeaves {
+  static constexpr PixelPayload kPayload = PixelPayload::kColourNormal;
+  const std::uint8_t* colour;
+
+  void skip(std::size_t count) { colour += count; }
+};
+
 struct FastFrame {
   PlotTarget target;
   int levels;  // the model depth
@@ -42,8 +55,20 @@ struct FastFrame {
   SubtreeClip clip;
   const std::atomic<bool>* abort;
   mutable bool aborted;
-  SplatPlot splat;  // used by the splat path only
+  SplatPlot splat;                        // used by the splat path only
+  const std::uint8_t* colours = nullptr;  // NormalBesideColourLeaves: the level's palette indices
+  const std::uint8_t* normals = nullptr;  // and its normal indices, one each per leaf
 };
+
+// The next leaf's payload (Framebuffer::packLeaf), and the cursor one leaf on.
+template <typename Leaves>
+std::uint32_t nextLeaf(const FastFrame&, Leaves& leaves) {
+  return leaves.next();
+}
+inline std::uint32_t nextLeaf(const FastFrame& f, NormalBesideColourLeaves& leaves) {
+  const std::uint8_t* const colour = leaves.colour++;
+  return std::uint32_t{*colour} | std::uint32_t{f.normals[colour - f.colours]} << 8;
+}
 
 // A leaf parent at tree level `level` centred at `c` plots its children: one pixel each, or (kSplat)
 // each its footprint splat.
@@ -53,8 +78,7 @@ Cursor<Leaves> plotChildren(const FastFrame& f, int level, Vec3 c, Cursor<Leaves
     const auto& offsets = (*f.offsets)[static_cast<std::size_t>(level)];
     Leaves leaves = at.leaves;
     for (unsigned mask = *at.node; mask != 0; mask &= mask - 1) {
-      f.splat.plot<kChecked, Leaves::kPayload>(c + offsets[lowestChild(mask)],
-                                               leaves.next());
+      f.splat.plot<kChecked, Leaves::kPayload>(c + offsets[lowestChild(mask)], nextLeaf(f, leaves));
     }
     return {at.node + 1, leaves};
   }
@@ -68,7 +92,7 @@ Cursor<Leaves> plotChildren(const FastFrame& f, int level, Vec3 c, Cursor<Leaves
   Leaves leaves = at.leaves;
   for (unsigned mask = *at.node; mask != 0; mask &= mask - 1) {
     const Vec3& d = offsets[lowestChild(mask)];
-    const std::uint32_t payload = leaves.next();
+    const std::uint32_t payload = nextLeaf(f, leaves);
     const std::int32_t x = (c.x + d.x) >> shift;  // Q(32-F).F -> pixel (floor)
     const std::int32_t y = (c.y + d.y) >> shift;
     if constexpr (kChecked) {
@@ -134,8 +158,13 @@ bool renderFixedFast(const LevelView& level, const FrameSetup& setup, FrameView&
   const bool splat = setup.splat.active();
   FastFrame f{PlotTarget(frame, setup), setup.depth, &setup.child_offset,
               splat ? SubtreeClip(setup, setup.splat) : SubtreeClip(setup), abort, false, SplatPlot(frame, setup)};
-  return withLeafCursor(level, frame, [&]<typename Leaves>(Leaves leaves) {
-    const Cursor<Leaves> root{level.nodes.data(), leaves};
+  return withLeafCursor(level, frame, [&]<typename Given>(Given given) {
+    // A normal frame's cursor: the palette index pointer alone (NormalBesideColourLeaves).
+    using Leaves = std::conditional_t<std::is_same_v<Given, ColourNormalLeaves>,
+                                      NormalBesideColourLeaves, Given>;
+    f.colours = level.leaves.data();
+    f.normals = level.normals.data();
+    const Cursor<Leaves> root{level.nodes.data(), Leaves{given.colour}};
     if (splat) {
       visit<true, true, Leaves>(f, 0, setup.root, root);
     } else {
