@@ -11,7 +11,8 @@
 // - The level above the leaf parents plots its grandchildren itself (in the on-screen case), so
 //   there is no call per leaf parent: calls were a third of the instructions per point.
 // - Hierarchical clipping as in fixed_clipped: subtrees proven on screen plot without bounds
-//   checks, subtrees proven off screen are stepped over without computing positions.
+//   checks, subtrees proven off screen are stepped over without computing positions, a
+//   grandparent's leaf parents at a time (renderer/skip_runs.h).
 // When a voxel of the drawn depth projects to more than one pixel (FrameSetup::splat), each leaf
 // covers its footprint splat instead (renderer/splat_plot.h), and the clip's reach includes the
 // splat; the walk is the same, instantiated a second time so the one-pixel path stays as it was.
@@ -24,6 +25,7 @@
 #include "renderer/framebuffer_plot.h"
 #include "renderer/render.h"
 #include "renderer/render_check.h"
+#include "renderer/skip_runs.h"
 #include "renderer/splat_plot.h"
 #include "renderer/subtree_clip.h"
 
@@ -58,6 +60,7 @@ struct FastFrame {
   SplatPlot splat;                        // used by the splat path only
   const std::uint8_t* colours = nullptr;  // NormalBesideColourLeaves: the level's palette indices
   const std::uint8_t* normals = nullptr;  // and its normal indices, one each per leaf
+  const std::uint8_t* node_end = nullptr;  // the level's node stream's end (skip_runs.h)
 };
 
 // The next leaf's payload (Framebuffer::packLeaf), and the cursor one leaf on.
@@ -127,7 +130,7 @@ Cursor<Leaves> visit(const FastFrame& f, int level, Vec3 c, Cursor<Leaves> at) {
   if constexpr (kChecked) {
     switch (f.clip.classify(level, c)) {
       case Clip::kOutside:
-        skipSubtree(at.node, at.leaves, level, f.levels);
+        skipSubtreeByRuns(at.node, at.leaves, level, f.levels, f.node_end);
         return at;
       case Clip::kInside: return visit<false, kSplat, Leaves>(f, level, c, at);
       case Clip::kStraddling: break;
@@ -164,6 +167,7 @@ bool renderFixedFast(const LevelView& level, const FrameSetup& setup, FrameView&
                                       NormalBesideColourLeaves, Given>;
     f.colours = level.leaves.data();
     f.normals = level.normals.data();
+    f.node_end = level.nodes.data() + level.nodes.size();
     const Cursor<Leaves> root{level.nodes.data(), Leaves{given.colour}};
     if (splat) {
       visit<true, true, Leaves>(f, 0, setup.root, root);

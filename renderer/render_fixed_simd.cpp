@@ -31,6 +31,7 @@
 #include "renderer/framebuffer_plot.h"
 #include "renderer/render.h"
 #include "renderer/render_check.h"
+#include "renderer/skip_runs.h"
 #include "renderer/splat_batch.h"
 #include "renderer/splat_plot.h"
 #include "renderer/subtree_clip.h"
@@ -68,7 +69,8 @@ struct SimdFrame {
         clip(setup.splat.active() ? SubtreeClip(setup, setup.splat) : SubtreeClip(setup)),
         splat(frame, setup),
         abort(abort_flag),
-        leaf_end(level.leaves.data() + level.leaves.size()) {}
+        leaf_end(level.leaves.data() + level.leaves.size()),
+        node_end(level.nodes.data() + level.nodes.size()) {}
 
   FixedPlot<true> target;  // also the checked plot of leaf parents on the frame's edge
   int levels;              // the model depth
@@ -85,6 +87,7 @@ struct SimdFrame {
   const std::atomic<bool>* abort;
   bool aborted = false;
   const std::uint8_t* leaf_end;
+  const std::uint8_t* node_end;  // off-screen subtrees are stepped over by runs (skip_runs.h)
   // Set by renderAvx2, per axis, in Q(32-F).F:
   // child_lanes[a][l]: the offsets of a level-l node's eight children, one per lane;
   // grandchild_lanes[a][l][k]: offset[l][k] plus child_lanes[a][l + 1], so that the eight children
@@ -209,7 +212,7 @@ __attribute__((target("avx2"))) const std::uint8_t* visit(SimdFrame& f, int leve
   if constexpr (kChecked) {
     switch (f.clip.classify(level, c)) {
       case Clip::kOutside:
-        skipSubtree(node, leaves, level, f.levels);
+        skipSubtreeByRuns(node, leaves, level, f.levels, f.node_end);
         return node;
       case Clip::kInside:
         return visit<false, kEmit, Leaves>(f, level, c, node, leaves);
