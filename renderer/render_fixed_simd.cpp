@@ -276,6 +276,12 @@ __attribute__((target("avx2"))) const std::uint8_t* visit(SimdFrame& f, int leve
   return node;
 }
 
+// A 2 x 2 footprint whose padded height is at most 1 + 1/8 pixel (span_y, Q(32-F).F) reaches its
+// second row for at most one leaf in eight, so most leaf parents have no child there: the
+// default model at 1920x1080 zoom 0.25 (depth 8 at 1.05-pixel voxels) and lms400 at 1920x1080
+// zoom 0.5 (depth 9). Q8.24 here, shifted to the frame's F.
+constexpr std::int32_t kRareLastRowSpan = std::int32_t{1} << (kMaxFractionBits - 3);
+
 // The walk for Emit::kSplatPixels: unrolled for the common small boxes (the footprints of a turned
 // model from 2x1 to 3x3 pixels), the frame's box from SimdFrame otherwise.
 template <typename Leaves>
@@ -287,6 +293,8 @@ void drawBoxes(SimdFrame& f, const FrameSetup& setup, const LevelView& level, Le
     visit<true, EmitMode{Emit::kSplatPixels, 2, 1}, Leaves>(f, 0, setup.root, nodes, leaf);
   } else if (is(1, 2)) {
     visit<true, EmitMode{Emit::kSplatPixels, 1, 2}, Leaves>(f, 0, setup.root, nodes, leaf);
+  } else if (is(2, 2) && setup.splat.span_y <= kRareLastRowSpan >> (kMaxFractionBits - setup.fraction_bits)) {
+    visit<true, EmitMode{Emit::kSplatPixels, 2, 2, true}, Leaves>(f, 0, setup.root, nodes, leaf);
   } else if (is(2, 2)) {
     visit<true, EmitMode{Emit::kSplatPixels, 2, 2}, Leaves>(f, 0, setup.root, nodes, leaf);
   } else {

@@ -66,6 +66,11 @@ struct EmitMode {
   Emit emit;
   int box_columns = 0;
   int box_rows = 0;
+  // A box known at compile time whose last row few children reach (SplatFootprint::span_y small:
+  // the footprint's extent just over a whole number of rows): a leaf parent none of whose
+  // children reaches it skips that row's entries, a branch taken rarely, instead of keeping no
+  // lane of them.
+  bool rare_last_row = false;
 };
 
 // Emit::kSplatPixels: the frame's box, each pixel as its offset from the first (row * width +
@@ -161,12 +166,13 @@ __attribute__((target("avx2"), always_inline)) inline void emitBoxPixel(
   out.word += kept;
 }
 
-// The same for a box known at compile time, unrolled.
-template <int kColumns, int kRows, typename Out>
+// The same for a box known at compile time, unrolled (kRareLastRow: EmitMode::rare_last_row).
+template <int kColumns, int kRows, bool kRareLastRow, typename Out>
 __attribute__((target("avx2"), always_inline)) inline void emitBox(const LeafLanes& lanes,
                                                                    const BoxChildren& box,
                                                                    Out& out) {
   for (int r = 0; r < kRows; ++r) {
+    if (kRareLastRow && r + 1 == kRows && (box.mask & ~box.short_rows) == 0) return;
     for (int c = 0; c < kColumns; ++c) {
       emitBoxPixel(box,
                    static_cast<std::uint32_t>(r) * lanes.row_pixels + static_cast<std::uint32_t>(c),
@@ -212,7 +218,7 @@ __attribute__((target("avx2"), always_inline)) inline void emitChildren(
         lowBits(_mm256_cmpgt_epi32(_mm256_add_epi32(column, lanes.columns_less_one), last_column)),
         lowBits(_mm256_cmpgt_epi32(_mm256_add_epi32(row, lanes.rows_less_one), last_row))};
     if constexpr (kEmit.box_columns != 0) {
-      emitBox<kEmit.box_columns, kEmit.box_rows>(lanes, box, out);
+      emitBox<kEmit.box_columns, kEmit.box_rows, kEmit.rare_last_row>(lanes, box, out);
     } else {
       const SplatBox& frame_box = *lanes.box;
       for (int p = 0; p < frame_box.pixels; ++p) {
