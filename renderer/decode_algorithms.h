@@ -117,6 +117,17 @@ void visitSetBits(DecodeState<T, Plot, Leaves>& s, int level, Point3<T> centre) 
   }
 }
 
+// Moves a leaf cursor (renderer/leaf_cursor.h) or a plain pointer to palette indices `count`
+// leaves on: what stepping over a subtree does with the leaves it counted.
+template <typename Leaves>
+void skipLeaves(Leaves& leaves, std::size_t count) {
+  if constexpr (std::is_pointer_v<Leaves>) {
+    leaves += count;
+  } else {
+    leaves.skip(count);
+  }
+}
+
 // Advances the stream past a subtree without computing a single position: what a clipped-away
 // subtree still costs in a depth-first stream without an index. A loop, not a recursion: its cost
 // is a few instructions per node, and its stack one byte per level (on a microcontroller, stack is
@@ -149,11 +160,7 @@ void skipSubtree(const std::uint8_t*& node_cursor, Leaves& leaves, int level, in
     do {
       if (l == 0) {
         node_cursor = node;
-        if constexpr (std::is_pointer_v<Leaves>) {
-          leaves += skipped;
-        } else {
-          leaves.skip(skipped);
-        }
+        skipLeaves(leaves, skipped);
         return;
       }
       --l;

@@ -83,11 +83,7 @@ void skipSubtreeByRuns(const std::uint8_t*& node_cursor, Leaves& leaves, int lev
     while (pending[static_cast<std::size_t>(l)] == 0) {
       if (l == 0) {
         node_cursor = node;
-        if constexpr (std::is_pointer_v<Leaves>) {
-          leaves += skipped;
-        } else {
-          leaves.skip(skipped);
-        }
+        skipLeaves(leaves, skipped);
         return;
       }
       --l;
