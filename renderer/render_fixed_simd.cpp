@@ -8,12 +8,14 @@
 //   32-bit lanes (add the offsets, shift by F, row * width + column), packs its colours in, and
 //   keeps the lanes of its set children by a per-mask permutation, appended to a batch with a
 //   store of fixed width: no loop over the children, no branch on the mask.
-// - Walk: the lowest three levels of a subtree on screen are two nested set-bit loops in one call,
-//   not a call per node. A grandparent's eight possible children's offsets are precomputed per
-//   axis as vectors (its own offset plus its child's eight), so a leaf parent's lanes are one add
-//   per axis from the grandparent's centre.
+// - Walk: the lowest three levels of a subtree on screen are two nested set-bit loops in one call
+//   (emitSubtree), not a call per node, and the level above them loops over its children in the
+//   same call. A grandparent's eight possible children's offsets are precomputed per axis as
+//   vectors (its own offset plus its child's eight), so a leaf parent's lanes are one add per axis
+//   from the grandparent's centre, itself one add from its parent's, all in lanes.
 // - Plot: the batch is written with an unsigned min per point (Framebuffer's packed word makes the
-//   z-test a min, and makes the result independent of the order points are drawn in).
+//   z-test a min, and makes the result independent of the order points are drawn in), four
+//   instructions per point.
 // Subtrees straddling the frame's edge, and a model's last leaves (the eight-byte colour load
 // would read past them), use the scalar checked plot; off-screen subtrees are skipped, as in
 // fixed_fast. The abort flag is polled at kAbortCheckLevel.
@@ -90,10 +92,13 @@ struct SimdFrame {
   const std::uint8_t* node_end;  // off-screen subtrees are stepped over by runs (skip_runs.h)
   // Set by renderAvx2, per axis, in Q(32-F).F:
   // child_lanes[a][l]: the offsets of a level-l node's eight children, one per lane;
-  // grandchild_lanes[a][l][k]: offset[l][k] plus child_lanes[a][l + 1], so that the eight children
-  // of a level-l node's child k are one add from the level-l centre.
+  // grandchild_lanes[l][k][a]: offset[l][k] plus child_lanes[a][l + 1], so that the eight children
+  // of a level-l node's child k are one add from the level-l centre (a level-l node's 24 vectors
+  // side by side: k's three are one address).
   __m256i child_lanes[3][kMaxRenderDepth];
-  __m256i grandchild_lanes[3][kMaxRenderDepth][8];
+  __m256i grandchild_lanes[kMaxRenderDepth][8][3];
+  // grandchild_at[l][k]: grandchild_lanes[l][k], a load away from the child's number.
+  const __m256i* grandchild_at[kMaxRenderDepth][8];
   int batched = 0;
   alignas(32) std::uint32_t batch_index[kBatch + 8];
   alignas(32) std::uint32_t batch_word[kBatch + 8];
@@ -102,22 +107,34 @@ struct SimdFrame {
   alignas(32) std::uint32_t batch_extent[kPixelBatchLimit + kMostLeavesPerCall + 8];
 };
 
+// One entry: the pixel keeps the min of its word and the entry's. The word is read as the low lane
+// of a four-word load (the batch has room past its last entry), so that the min takes it straight
+// from memory: four instructions per entry (index, pixel, min, store).
+__attribute__((target("avx2"), always_inline)) inline void plotEntry(std::uint32_t* pixel,
+                                                                    std::uint32_t at,
+                                                                    const std::uint32_t* word) {
+  const __m128i kept = _mm_min_epu32(_mm_cvtsi32_si128(static_cast<std::int32_t>(pixel[at])),
+                                     _mm_loadu_si128(reinterpret_cast<const __m128i*>(word)));
+  pixel[at] = static_cast<std::uint32_t>(_mm_cvtsi128_si32(kept));
+}
+
 __attribute__((target("avx2"))) void plotBatch(SimdFrame& f) {
   std::uint32_t* const pixel = f.target.pixel;
   const std::uint32_t* const index = f.batch_index;
   const std::uint32_t* const word = f.batch_word;
   const int count = f.batched;
   // Unconditional store of the min: the branch "is it nearer" would be a coin toss. Neighbouring
-  // points often share a pixel, and each min then waits for the store before it; the batch's two
-  // halves, interleaved, are two independent chains (measured: 4% of the frame at depth 8).
-  const int half = count / 2;
-  for (int i = 0; i < half; ++i) {
-    const std::uint32_t first = index[i];
-    const std::uint32_t second = index[half + i];
-    pixel[first] = std::min(pixel[first], word[i]);
-    pixel[second] = std::min(pixel[second], word[half + i]);
+  // points often share a pixel, and each min then waits for the store before it; the batch's four
+  // quarters, interleaved, are four independent chains (two measured 4% of the frame at depth 8),
+  // and the loop's own count and test are paid once per four entries.
+  const int quarter = count / 4;
+  for (int i = 0; i < quarter; ++i) {
+    plotEntry(pixel, index[i], word + i);
+    plotEntry(pixel, index[quarter + i], word + quarter + i);
+    plotEntry(pixel, index[2 * quarter + i], word + 2 * quarter + i);
+    plotEntry(pixel, index[3 * quarter + i], word + 3 * quarter + i);
   }
-  if (count % 2 != 0) pixel[index[count - 1]] = std::min(pixel[index[count - 1]], word[count - 1]);
+  for (int i = 4 * quarter; i < count; ++i) plotEntry(pixel, index[i], word + i);
   f.batched = 0;
 }
 
@@ -174,23 +191,67 @@ __attribute__((target("avx2"))) inline __m256i biasedDepthLanes(const SimdFrame&
   return _mm256_set1_epi32(static_cast<std::int32_t>(f.target.biasedDepth(c.z)));
 }
 
-// The leaf parents below a grandparent at `level`, centred at `c`, with child mask `mask` (already
-// read), whose subtree is on screen: reads their masks from `node` on, returns the node after.
+// The leaf parents below a grandparent at `level` whose centre is `cx`, `cy`, `biased_cz` in every
+// lane, with child mask `mask` (already read), whose subtree is on screen: reads their masks from
+// `node` on, returns the node after.
 template <EmitMode kEmit, typename Leaves>
 __attribute__((target("avx2"), always_inline)) inline const std::uint8_t* emitGrandparent(
-    const SimdFrame& f, const LeafLanes& lanes, int level, Vec3 c, unsigned mask,
-    const std::uint8_t* node, Emitter<Leaves>& out) {
-  const auto l = static_cast<std::size_t>(level);
-  const __m256i cx = _mm256_set1_epi32(c.x);
-  const __m256i cy = _mm256_set1_epi32(c.y);
-  const __m256i biased_cz = biasedDepthLanes(f, c);
+    const SimdFrame& f, const LeafLanes& lanes, int level, __m256i cx, __m256i cy,
+    __m256i biased_cz, unsigned mask, const std::uint8_t* node, Emitter<Leaves>& out) {
+  const __m256i* const* const below = f.grandchild_at[static_cast<std::size_t>(level)];
   for (; mask != 0; mask &= mask - 1) {
-    const auto k = static_cast<std::size_t>(std::countr_zero(mask));
-    simd::emitChildren<kEmit>(lanes, _mm256_add_epi32(cx, f.grandchild_lanes[0][l][k]),
-                              _mm256_add_epi32(cy, f.grandchild_lanes[1][l][k]),
-                              _mm256_add_epi32(biased_cz, f.grandchild_lanes[2][l][k]), *node++,
-                              out);
+    const __m256i* const k = below[std::countr_zero(mask)];
+    simd::emitChildren<kEmit>(lanes, _mm256_add_epi32(cx, k[0]), _mm256_add_epi32(cy, k[1]),
+                              _mm256_add_epi32(biased_cz, k[2]), *node++, out);
   }
+  return node;
+}
+
+// The subtree below a node at `level` centred at `c`, with child mask `mask` (already read), one to
+// three levels above its leaves and on screen, into the batch in one go (flushed first when it may
+// not have room): reads its masks from `node` on, returns the node after. The unchecked emit loads
+// eight colour (and normal) bytes per leaf parent, from its first leaf on: the caller checked that
+// 8^(levels below) bytes are left in the stream (a normal array is as long as the colours).
+template <EmitMode kEmit, typename Leaves>
+__attribute__((target("avx2"), always_inline)) inline const std::uint8_t* emitSubtree(
+    SimdFrame& f, const LeafLanes& lanes, int level, Vec3 c, unsigned mask,
+    const std::uint8_t* node, Leaves& leaves) {
+  constexpr bool kSplat = kEmit.emit != Emit::kPixel;
+  if (f.batched > (kSplat ? f.splat_batch_limit : kPixelBatchLimit)) flushBatch<kEmit>(f);
+  if constexpr (kSplat) {  // positions shifted to the splat's first pixel (mod 2^32, as lanes add)
+    c.x += f.splat.footprint.offset_x;
+    c.y += f.splat.footprint.offset_y;
+  }
+  Emitter<Leaves> out{f.batch_index, f.batch_word, leaves, f.batch_extent,
+                      static_cast<std::size_t>(f.batched)};
+  const int levels_below = f.levels - level;
+  const auto l = static_cast<std::size_t>(level);
+  if (levels_below == 1) {
+    simd::emitChildren<kEmit>(lanes, _mm256_add_epi32(_mm256_set1_epi32(c.x), f.child_lanes[0][l]),
+                              _mm256_add_epi32(_mm256_set1_epi32(c.y), f.child_lanes[1][l]),
+                              _mm256_add_epi32(biasedDepthLanes(f, c), f.child_lanes[2][l]), mask,
+                              out);
+  } else if (levels_below == 2) {
+    node = emitGrandparent<kEmit, Leaves>(f, lanes, level, _mm256_set1_epi32(c.x),
+                                          _mm256_set1_epi32(c.y), biasedDepthLanes(f, c), mask,
+                                          node, out);
+  } else {
+    // The grandparents' centres in every lane, one add from this node's: no scalar centre.
+    const auto& offsets = (*f.offsets)[l];
+    const __m256i cx = _mm256_set1_epi32(c.x);
+    const __m256i cy = _mm256_set1_epi32(c.y);
+    const __m256i biased_cz = biasedDepthLanes(f, c);
+    for (; mask != 0; mask &= mask - 1) {
+      const unsigned grandparent_mask = *node++;
+      const Vec3& d = offsets[static_cast<unsigned>(std::countr_zero(mask))];
+      node = emitGrandparent<kEmit, Leaves>(
+          f, lanes, level + 1, _mm256_add_epi32(cx, _mm256_set1_epi32(d.x)),
+          _mm256_add_epi32(cy, _mm256_set1_epi32(d.y)),
+          _mm256_add_epi32(biased_cz, _mm256_set1_epi32(d.z)), grandparent_mask, node, out);
+    }
+  }
+  f.batched = static_cast<int>(out.count);
+  leaves = out.leaves;
   return node;
 }
 
@@ -225,43 +286,33 @@ __attribute__((target("avx2"))) const std::uint8_t* visit(SimdFrame& f, int leve
   // Emitting several levels in one call skips the polls of the levels below: only from the poll's
   // level on, or when nobody can abort.
   const bool may_inline = level >= kAbortCheckLevel || f.abort == nullptr;
-  // The unchecked emit loads eight colour (and normal) bytes per leaf parent, from its first leaf
-  // on: for the subtree's last leaf parent that ends at most 8^(levels below) bytes from the
-  // cursor, which must still be in the stream (a normal array is as long as the colours).
-  // Splats: large ones emit a leaf parent per call and flush sooner (SimdFrame::splat_levels_inline,
+  // The subtree in one go (emitSubtree) where the stream has its 8^(levels below) bytes left.
+  // Splats: large ones emit a leaf parent at a time and flush sooner (SimdFrame::splat_levels_inline,
   // splat_batch_limit), so the pixels written between two polls stay few.
   const int levels_inline = kSplat ? f.splat_levels_inline : 3;
-  const int batch_limit = kSplat ? f.splat_batch_limit : kPixelBatchLimit;
-  if (!kChecked && may_inline && levels_below <= levels_inline &&
-      f.leaf_end - leaves.colour >= (std::ptrdiff_t{1} << (3 * levels_below))) {
-    if (f.batched > batch_limit) flushBatch<kEmit>(f);
+  if (!kChecked && may_inline && levels_below <= levels_inline + 1) {
     const LeafLanes lanes = leafLanes(f);
-    if constexpr (kSplat) {  // positions shifted to the splat's first pixel (mod 2^32, as lanes add)
-      c.x += f.splat.footprint.offset_x;
-      c.y += f.splat.footprint.offset_y;
-    }
-    Emitter<Leaves> out{f.batch_index + f.batched, f.batch_word + f.batched, leaves,
-                        f.batch_extent + f.batched};
-    if (levels_below == 1) {
-      const auto l = static_cast<std::size_t>(level);
-      simd::emitChildren<kEmit>(
-          lanes, _mm256_add_epi32(_mm256_set1_epi32(c.x), f.child_lanes[0][l]),
-          _mm256_add_epi32(_mm256_set1_epi32(c.y), f.child_lanes[1][l]),
-          _mm256_add_epi32(biasedDepthLanes(f, c), f.child_lanes[2][l]), mask, out);
-    } else if (levels_below == 2) {
-      node = emitGrandparent<kEmit, Leaves>(f, lanes, level, c, mask, node, out);
+    if (levels_below <= levels_inline) {
+      if (f.leaf_end - leaves.colour >= (std::ptrdiff_t{1} << (3 * levels_below)))
+        return emitSubtree<kEmit, Leaves>(f, lanes, level, c, mask, node, leaves);
     } else {
+      // One level above: each child as visit would draw it (its poll, its subtree in one go), in
+      // this call: a call per child and its set-up cost as much as a grandparent's leaf parents.
       const auto& offsets = (*f.offsets)[static_cast<std::size_t>(level)];
+      const std::ptrdiff_t most_leaves = std::ptrdiff_t{1} << (3 * levels_inline);
       for (; mask != 0; mask &= mask - 1) {
-        const unsigned grandparent_mask = *node++;
-        node = emitGrandparent<kEmit, Leaves>(f, lanes, level + 1,
-                                      c + offsets[static_cast<std::size_t>(std::countr_zero(mask))],
-                                      grandparent_mask, node, out);
+        if (kSplat && f.abort != nullptr && (f.aborted = f.abort->load(std::memory_order_relaxed)))
+          return node;
+        const Vec3 child = c + offsets[static_cast<unsigned>(std::countr_zero(mask))];
+        if (f.leaf_end - leaves.colour >= most_leaves) {
+          const unsigned child_mask = *node++;
+          node = emitSubtree<kEmit, Leaves>(f, lanes, level + 1, child, child_mask, node, leaves);
+        } else {  // the model's last leaves: the scalar plot
+          node = visit<false, kEmit, Leaves>(f, level + 1, child, node, leaves);
+        }
       }
+      return node;
     }
-    f.batched = static_cast<int>(out.index - f.batch_index);
-    leaves = out.leaves;
-    return node;
   }
   if (levels_below == 1) {
     plotChildrenChecked<kSplat, Leaves>(f, level, c, mask, leaves);
@@ -333,7 +384,7 @@ Emit chooseEmit(const SplatFootprint& splat, std::int32_t width, SimdFrame& f) {
 __attribute__((target("avx2"))) bool renderAvx2(const LevelView& level, const FrameSetup& setup,
                                                 FrameView& frame,
                                                 const std::atomic<bool>* abort) {
-  // About 34 KiB with the offset vectors and the batch, on the stack: drawing never allocates.
+  // About 35 KiB with the offset vectors and the batch, on the stack: drawing never allocates.
   SimdFrame state(level, setup, frame, abort);
   SimdFrame* const f = &state;
   const Emit emit = chooseEmit(setup.splat, frame.width(), *f);
@@ -352,12 +403,13 @@ __attribute__((target("avx2"))) bool renderAvx2(const LevelView& level, const Fr
     for (std::size_t k = 0; k < 8; ++k) {
       const Vec3& d = setup.child_offset[l][k];
       // Lanes add mod 2^32, so c + (d + e) is the scalar walk's (c + d) + e, bit for bit.
-      f->grandchild_lanes[0][l][k] =
+      f->grandchild_lanes[l][k][0] =
           _mm256_add_epi32(_mm256_set1_epi32(d.x), f->child_lanes[0][l + 1]);
-      f->grandchild_lanes[1][l][k] =
+      f->grandchild_lanes[l][k][1] =
           _mm256_add_epi32(_mm256_set1_epi32(d.y), f->child_lanes[1][l + 1]);
-      f->grandchild_lanes[2][l][k] =
+      f->grandchild_lanes[l][k][2] =
           _mm256_add_epi32(_mm256_set1_epi32(d.z), f->child_lanes[2][l + 1]);
+      f->grandchild_at[l][k] = f->grandchild_lanes[l][k];
     }
   }
   return withLeafCursor(level, frame, [&]<typename Leaves>(Leaves leaf) {

@@ -16,6 +16,7 @@
 
 #include <array>
 #include <bit>
+#include <cstddef>
 #include <cstdint>
 
 #include "renderer/framebuffer.h"
@@ -81,15 +82,27 @@ struct SplatBox {
   std::uint8_t edge[kMostBoxPixels] = {};
 };
 
-// Where the unchecked walk appends: the batch's two cursors and the next leaf's payload (its
-// colour, and its normal where the frame carries normals: renderer/leaf_cursor.h). Locals of the
-// caller, kept in registers: a store to the batch may alias any 32-bit field of SimdFrame.
+// Where the unchecked walk appends: the batch's arrays, how many entries they hold, and the next
+// leaf's payload (its colour, and its normal where the frame carries normals:
+// renderer/leaf_cursor.h). Locals of the caller, kept in registers: a store to the batch may
+// alias any 32-bit field of SimdFrame. One count for all arrays, so that a leaf parent's stores
+// share one index register and advance it with one add.
 template <typename Leaves>
 struct Emitter {
   std::uint32_t* index;
   std::uint32_t* word;
   Leaves leaves;
   std::uint32_t* extent;  // the splat path only
+  std::size_t count;
+
+  // Stores eight lanes of each array at the end (the batch has room past its last entry) and
+  // keeps the first `kept` of them.
+  __attribute__((target("avx2"), always_inline)) void append(__m256i index_lanes, __m256i word_lanes,
+                                                            unsigned kept) {
+    _mm256_storeu_si256(reinterpret_cast<__m256i*>(index + count), index_lanes);
+    _mm256_storeu_si256(reinterpret_cast<__m256i*>(word + count), word_lanes);
+    count += kept;
+  }
 };
 
 // Eight leaves' payloads, one per lane, from the cursor (which is not advanced): the palette index,
@@ -158,12 +171,8 @@ __attribute__((target("avx2"), always_inline)) inline void emitBoxPixel(
   const __m256i keep = laneControl(kKeep, mask);
   const __m256i at =
       _mm256_add_epi32(box.first, _mm256_set1_epi32(static_cast<std::int32_t>(offset)));
-  _mm256_storeu_si256(reinterpret_cast<__m256i*>(out.index), _mm256_permutevar8x32_epi32(at, keep));
-  _mm256_storeu_si256(reinterpret_cast<__m256i*>(out.word),
-                      _mm256_permutevar8x32_epi32(box.word, keep));
-  const int kept = std::popcount(mask);
-  out.index += kept;
-  out.word += kept;
+  out.append(_mm256_permutevar8x32_epi32(at, keep), _mm256_permutevar8x32_epi32(box.word, keep),
+             static_cast<unsigned>(std::popcount(mask)));
 }
 
 // The same for a box known at compile time, unrolled (kRareLastRow: EmitMode::rare_last_row).
@@ -228,9 +237,6 @@ __attribute__((target("avx2"), always_inline)) inline void emitChildren(
     }
     return;
   }
-  _mm256_storeu_si256(reinterpret_cast<__m256i*>(out.index),
-                      _mm256_permutevar8x32_epi32(index, keep));
-  _mm256_storeu_si256(reinterpret_cast<__m256i*>(out.word), word);
   if constexpr (kEmit.emit == Emit::kSplatRects) {
     // Last column and row (SplatFootprint): (x + span) >> F; count = last - first + 1 (< 2^16).
     const __m256i columns = _mm256_sub_epi32(
@@ -240,12 +246,10 @@ __attribute__((target("avx2"), always_inline)) inline void emitChildren(
     const __m256i one = _mm256_set1_epi32(1);
     const __m256i extent = _mm256_or_si256(_mm256_add_epi32(columns, one),
                                            _mm256_slli_epi32(_mm256_add_epi32(rows, one), 16));
-    _mm256_storeu_si256(reinterpret_cast<__m256i*>(out.extent),
+    _mm256_storeu_si256(reinterpret_cast<__m256i*>(out.extent + out.count),
                         _mm256_permutevar8x32_epi32(extent, keep));
-    out.extent += children;
   }
-  out.index += children;
-  out.word += children;
+  out.append(_mm256_permutevar8x32_epi32(index, keep), word, static_cast<unsigned>(children));
 }
 
 }  // namespace octopoint::simd
