@@ -2,6 +2,7 @@
 
 #include <bit>
 #include <cstring>
+#include <utility>
 
 #include "renderer/bit_scan.h"
 #include "renderer/model_bytes.h"
@@ -229,6 +230,7 @@ std::optional<ModelView> ModelView::fromBytes(std::span<const std::uint8_t> byte
       !validateLevels(view, issue, bytes.data(), table_at)) {
     return std::nullopt;
   }
+  view.indexSubtrees();
   if (issue != nullptr) *issue = {};
   return view;
 }
@@ -280,8 +282,25 @@ std::optional<ModelView> ModelView::fromEmbedded(const EmbeddedModel& model, Mod
         with_normals ? std::span<const std::uint8_t>{source.normals, source.leaf_count} : std::span<const std::uint8_t>{}};
   }
   if (!validateLevels(view, issue, nullptr, 0)) return std::nullopt;
+  view.indexSubtrees();
   if (issue != nullptr) *issue = {};
   return view;
+}
+
+void ModelView::indexSubtrees() {
+#if !defined(OCTOPOINT_BARE_METAL)
+  std::size_t total = 0;
+  for (int i = 0; i < level_count_; ++i) total += skipIndexEntries(levels_[static_cast<std::size_t>(i)]);
+  if (total == 0) return;
+  auto ends = std::make_shared<std::vector<SubtreeEnd>>(total);
+  std::span<SubtreeEnd> free = *ends;
+  for (int i = 0; i < level_count_; ++i) {
+    LevelView& level = levels_[static_cast<std::size_t>(i)];
+    level.skip = buildSkipIndex(level, free);
+    free = free.subspan(level.skip.ends.size());
+  }
+  skip_ends_ = std::move(ends);
+#endif
 }
 
 Rgb ModelView::paletteColour(int index) const {

@@ -2,16 +2,23 @@
 // A validated, read-only view of a model: the palette and one octree stream per depth. The bytes
 // belong to someone else (const arrays compiled into the app, or a file buffer); the view never
 // copies them. A ModelView can only be made by validation, so the decoders may trust it: every
-// walk of a level reads exactly its node bytes and its leaf indices, never past them.
+// walk of a level reads exactly its node bytes and its leaf indices, never past them. What it
+// owns is derived from them once, at validation: each level's skip index (renderer/skip_index.h),
+// shared by the view's copies (hosted builds).
 
 #include <array>
 #include <cstddef>
 #include <cstdint>
 #include <optional>
 #include <span>
+#if !defined(OCTOPOINT_BARE_METAL)
+#include <memory>
+#include <vector>
+#endif
 
 #include "renderer/embedded_model.h"
 #include "renderer/model_format.h"
+#include "renderer/skip_index.h"
 
 namespace octopoint {
 
@@ -61,6 +68,9 @@ struct LevelView {
   std::span<const std::uint8_t> nodes;
   std::span<const std::uint8_t> leaves;   // one palette index per leaf, in depth-first order
   std::span<const std::uint8_t> normals{};  // one normal index per leaf, or empty (no normals)
+  // Where the subtrees of one tree level end (renderer/skip_index.h), or none: ModelView sets it.
+  // It must describe exactly this stream; fixed_fast and fixed_simd trust it as they trust nodes.
+  SkipIndex skip{};
 };
 
 // A normal palette entry: a unit vector in Q1.14 (format::kNormalOne is 1.0), in the model's axes
@@ -109,6 +119,9 @@ class ModelView {
   // offsets are the file's; else nullptr.
   static bool validateLevels(ModelView& view, ModelIssue* issue, const std::uint8_t* file, std::size_t table_at);
   static bool validateNormalPalette(const ModelView& view, ModelIssue* issue, std::size_t offset);
+  // After validation: builds every level's skip index (LevelView::skip) into one allocation the
+  // view shares with its copies. A bare-metal build has no heap: its levels keep no index.
+  void indexSubtrees();
 
   int format_version_ = 0;
   std::uint64_t cube_edge_pm_ = 0;
@@ -120,6 +133,9 @@ class ModelView {
   const std::int16_t* normal_values_ = nullptr;  // embedded: normal_count_ x 3 i16
   int level_count_ = 0;
   std::array<LevelView, format::kMaxLevels> levels_{};
+#if !defined(OCTOPOINT_BARE_METAL)
+  std::shared_ptr<const std::vector<SubtreeEnd>> skip_ends_;  // what levels_[i].skip point into
+#endif
 };
 
 // Walks one level's stream without drawing and checks that it is exactly as long as declared:

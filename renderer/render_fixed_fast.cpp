@@ -60,7 +60,7 @@ struct FastFrame {
   SplatPlot splat;                        // used by the splat path only
   const std::uint8_t* colours = nullptr;  // NormalBesideColourLeaves: the level's palette indices
   const std::uint8_t* normals = nullptr;  // and its normal indices, one each per leaf
-  const std::uint8_t* node_end = nullptr;  // the level's node stream's end (skip_runs.h)
+  mutable OffScreenSkip off_screen;        // steps over off-screen subtrees (skip_runs.h)
 };
 
 // The next leaf's payload (Framebuffer::packLeaf), and the cursor one leaf on.
@@ -130,10 +130,14 @@ Cursor<Leaves> visit(const FastFrame& f, int level, Vec3 c, Cursor<Leaves> at) {
   if constexpr (kChecked) {
     switch (f.clip.classify(level, c)) {
       case Clip::kOutside:
-        skipSubtreeByRuns(at.node, at.leaves, level, f.levels, f.node_end);
+        f.off_screen.skip(at.node, at.leaves, level);
         return at;
-      case Clip::kInside: return visit<false, kSplat, Leaves>(f, level, c, at);
-      case Clip::kStraddling: break;
+      case Clip::kInside:
+        f.off_screen.enter(level);
+        return visit<false, kSplat, Leaves>(f, level, c, at);
+      case Clip::kStraddling:
+        f.off_screen.enter(level);
+        break;
     }
   }
   if (level + 1 == f.levels) return plotChildren<kChecked, kSplat, Leaves>(f, level, c, at);
@@ -146,6 +150,7 @@ Cursor<Leaves> visit(const FastFrame& f, int level, Vec3 c, Cursor<Leaves> at) {
     }
     return at;
   }
+  if (!kChecked) f.off_screen.enterChildren(level, mask);  // a checked child counts itself
   for (; mask != 0; mask &= mask - 1) {
     at = visit<kChecked, kSplat, Leaves>(f, level + 1, c + offsets[lowestChild(mask)], at);
     if (kSplat && f.aborted) return at;
@@ -160,14 +165,12 @@ bool renderFixedFast(const LevelView& level, const FrameSetup& setup, FrameView&
   if (checkRender(level, setup, frame) != RenderError::kNone) return false;  // refused, nothing drawn
   const bool splat = setup.splat.active();
   FastFrame f{PlotTarget(frame, setup), setup.depth, &setup.child_offset,
-              splat ? SubtreeClip(setup, setup.splat) : SubtreeClip(setup), abort, false, SplatPlot(frame, setup)};
+              splat ? SubtreeClip(setup, setup.splat) : SubtreeClip(setup), abort, false, SplatPlot(frame, setup),
+              level.leaves.data(), level.normals.data(), OffScreenSkip(level)};
   return withLeafCursor(level, frame, [&]<typename Given>(Given given) {
     // A normal frame's cursor: the palette index pointer alone (NormalBesideColourLeaves).
     using Leaves = std::conditional_t<std::is_same_v<Given, ColourNormalLeaves>,
                                       NormalBesideColourLeaves, Given>;
-    f.colours = level.leaves.data();
-    f.normals = level.normals.data();
-    f.node_end = level.nodes.data() + level.nodes.size();
     const Cursor<Leaves> root{level.nodes.data(), Leaves{given.colour}};
     if (splat) {
       visit<true, true, Leaves>(f, 0, setup.root, root);

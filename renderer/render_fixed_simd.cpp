@@ -72,7 +72,7 @@ struct SimdFrame {
         splat(frame, setup),
         abort(abort_flag),
         leaf_end(level.leaves.data() + level.leaves.size()),
-        node_end(level.nodes.data() + level.nodes.size()) {}
+        off_screen(level) {}
 
   FixedPlot<true> target;  // also the checked plot of leaf parents on the frame's edge
   int levels;              // the model depth
@@ -89,7 +89,7 @@ struct SimdFrame {
   const std::atomic<bool>* abort;
   bool aborted = false;
   const std::uint8_t* leaf_end;
-  const std::uint8_t* node_end;  // off-screen subtrees are stepped over by runs (skip_runs.h)
+  OffScreenSkip off_screen;  // steps over off-screen subtrees (skip_runs.h)
   // Set by renderAvx2, per axis, in Q(32-F).F:
   // child_lanes[a][l]: the offsets of a level-l node's eight children, one per lane;
   // grandchild_lanes[l][k][a]: offset[l][k] plus child_lanes[a][l + 1], so that the eight children
@@ -273,11 +273,13 @@ __attribute__((target("avx2"))) const std::uint8_t* visit(SimdFrame& f, int leve
   if constexpr (kChecked) {
     switch (f.clip.classify(level, c)) {
       case Clip::kOutside:
-        skipSubtreeByRuns(node, leaves, level, f.levels, f.node_end);
+        f.off_screen.skip(node, leaves, level);
         return node;
       case Clip::kInside:
+        f.off_screen.enter(level);
         return visit<false, kEmit, Leaves>(f, level, c, node, leaves);
       case Clip::kStraddling:
+        f.off_screen.enter(level);
         break;
     }
   }
@@ -319,6 +321,7 @@ __attribute__((target("avx2"))) const std::uint8_t* visit(SimdFrame& f, int leve
     return node;
   }
   const auto& offsets = (*f.offsets)[static_cast<std::size_t>(level)];
+  if (!kChecked) f.off_screen.enterChildren(level, mask);  // a checked child counts itself
   for (; mask != 0; mask &= mask - 1) {
     node = visit<kChecked, kEmit, Leaves>(
         f, level + 1, c + offsets[static_cast<std::size_t>(std::countr_zero(mask))], node, leaves);

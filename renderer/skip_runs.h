@@ -10,16 +10,20 @@
 // as one run of popcount(grandparent) bytes in a depth-first stream, are counted at once: their
 // leaves are the set bits of those bytes, one 8-byte load masked to the run and counted without a
 // branch. The walk then branches per great-grandparent, not per leaf parent.
+// Where the level has a skip index (renderer/skip_index.h, ModelView builds it), a subtree at or
+// above the indexed level is not read at all below that level: skipSubtreeIndexed.
 
 #include <array>
 #include <bit>
 #include <cstddef>
 #include <cstdint>
 #include <cstring>
+#include <type_traits>
 
 #include "renderer/bit_scan.h"
 #include "renderer/camera.h"
 #include "renderer/decode_algorithms.h"
+#include "renderer/skip_index.h"
 
 namespace octopoint {
 
@@ -90,5 +94,94 @@ void skipSubtreeByRuns(const std::uint8_t*& node_cursor, Leaves& leaves, int lev
     }
   }
 }
+
+// The first leaf a leaf cursor (renderer/leaf_cursor.h) or a plain pointer to palette indices
+// points at.
+template <typename Leaves>
+const std::uint8_t* leafPosition(const Leaves& leaves) {
+  if constexpr (std::is_pointer_v<Leaves>) {
+    return leaves;
+  } else {
+    return leaves.colour;
+  }
+}
+
+// skipSubtree's result, through `index`, for the subtree whose root (at tree `level`, at most
+// index.level) is at `node_cursor`; `node_begin` and `leaf_begin` are the level's streams, whose
+// offsets the index holds. `next` is the ordinal of the first index-level node at or after the
+// root, and is left at the first one after the subtree: the walk counts the index-level nodes it
+// passes. Only the subtree's masks above the index level are read: the children of a node just
+// above it are consecutive entries, stepped over at once to the last one's end.
+template <typename Leaves>
+void skipSubtreeIndexed(const std::uint8_t*& node_cursor, Leaves& leaves, std::size_t& next, int level,
+                        const SkipIndex& index, const std::uint8_t* node_begin, const std::uint8_t* leaf_begin) {
+  std::size_t ordinal = next;  // the index-level nodes passed, at the end the next one's ordinal
+  if (level == index.level) {
+    ++ordinal;
+  } else {
+    const int parents = index.level - level - 1;  // the index level's parents, relative to the root
+    const std::uint8_t* node = node_cursor;
+    // pending[l]: the nodes of relative level l still to read under the current parent.
+    std::array<std::uint8_t, kMaxRenderDepth> pending;
+    int l = 0;
+    pending[0] = 1;
+    for (;;) {
+      const unsigned mask = *node++;
+      --pending[static_cast<std::size_t>(l)];
+      if (l < parents) {  // above the index level's parents: its first child is next
+        pending[static_cast<std::size_t>(++l)] = static_cast<std::uint8_t>(childCount(mask));
+        continue;
+      }
+      ordinal += static_cast<std::size_t>(childCount(mask));  // its children, indexed: past them
+      node = node_begin + index.ends[ordinal - 1].node;
+      while (pending[static_cast<std::size_t>(l)] == 0 && l > 0) --l;
+      if (pending[static_cast<std::size_t>(l)] == 0) break;
+    }
+  }
+  const SubtreeEnd& end = index.ends[ordinal - 1];
+  node_cursor = node_begin + end.node;
+  skipLeaves(leaves, static_cast<std::size_t>(leaf_begin + end.leaf - leafPosition(leaves)));
+  next = ordinal;
+}
+
+// How fixed_fast and fixed_simd step over the off-screen subtrees of one level's stream: through
+// its skip index at and above the indexed level, by runs below it or without an index. The walk
+// tells it which index-level nodes it draws (enter, enterChildren), so that it knows the entry
+// of the next one it skips.
+class OffScreenSkip {
+ public:
+  explicit OffScreenSkip(const LevelView& level)
+      : index_(level.skip),
+        node_begin_(level.nodes.data()),
+        node_end_(level.nodes.data() + level.nodes.size()),
+        leaf_begin_(level.leaves.data()),
+        depth_(level.depth) {}
+
+  // The walk draws the node at `level` (it reads its mask itself).
+  void enter(int level) {
+    if (level == index_.level) ++next_;
+  }
+  // The walk draws every child of the node at `level` whose child mask is `mask`.
+  void enterChildren(int level, unsigned mask) {
+    if (level + 1 == index_.level) next_ += static_cast<std::size_t>(childCount(mask));
+  }
+  // Moves both cursors past the subtree at `level` whose root is at `node`.
+  template <typename Leaves>
+  void skip(const std::uint8_t*& node, Leaves& leaves, int level) {
+    if (index_.level == 0 || level > index_.level) {
+      skipSubtreeByRuns(node, leaves, level, depth_, node_end_);
+    } else {
+      skipSubtreeIndexed(node, leaves, next_, level, index_, node_begin_, leaf_begin_);
+    }
+  }
+
+ private:
+  SkipIndex index_;
+  const std::uint8_t* node_begin_;
+  const std::uint8_t* node_end_;
+  const std::uint8_t* leaf_begin_;
+  int depth_;
+  std::size_t next_ = 0;  // the ordinal of the next index-level node the walk reaches
+};
 
 }  // namespace octopoint

@@ -15,6 +15,7 @@
 
 #include "models/registry.h"
 #include "renderer/render.h"
+#include "renderer/skip_index.h"
 #include "tests/splat_reference.h"
 
 namespace octopoint {
@@ -196,6 +197,69 @@ TEST_F(RenderVariants, EveryFixedVariantDrawsTheBaselineFrameOfRandomTreesOfEver
       }
     }
   }
+}
+
+// fixed_fast and fixed_simd step over off-screen subtrees through the level's skip index
+// (renderer/skip_index.h) where it has one. Zoomed in and panned, so that most subtrees are off
+// screen (some frames wholly), on the default model (ModelView's index) and on random trees of
+// depth 4 to 9, each frame equals the one drawn without the index (the byte walk), bit for bit:
+// with the set-up's splats and one pixel per leaf, colour and normals.
+TEST_F(RenderVariants, FastAndSimdDrawTheSameFrameWithTheSkipIndexAsWithout) {
+  std::mt19937 random(31);
+  std::uniform_int_distribution<int> angle(-400, 400);
+  std::uniform_int_distribution<int> zoom_quarters(4, 64);
+  std::uniform_int_distribution<int> pan(-800, 800);
+  const std::pair<int, int> sizes[] = {{176, 208}, {320, 240}, {64, 48}};
+  std::vector<Camera> cameras;
+  for (int i = 0; i < 24; ++i) {
+    Camera camera;
+    camera.yaw = Angle::fromDegrees(angle(random));
+    camera.pitch = Angle::fromDegrees(angle(random));
+    camera.zoom = Q16::fromRaw(zoom_quarters(random) * (Q16::kOneRaw / 4));
+    camera.pan_x_px = i % 4 == 0 ? 0 : pan(random);
+    camera.pan_y_px = i % 4 == 0 ? 0 : pan(random);
+    camera.width = sizes[i % 3].first;
+    camera.height = sizes[i % 3].second;
+    cameras.push_back(camera);
+  }
+  int frames = 0;
+  const auto expectSameFrames = [&](const LevelView& indexed, const std::string& label) {
+    ASSERT_GT(indexed.skip.level, 0) << label;
+    LevelView plain = indexed;
+    plain.skip = SkipIndex{};
+    for (const Camera& camera : cameras) {
+      FrameSetup natural;
+      ASSERT_EQ(buildFrameSetup(camera, indexed.depth, kDefaultFractionBits, &natural), CameraError::kNone);
+      FrameSetup one_pixel = natural;
+      one_pixel.splat = SplatFootprint{};
+      Framebuffer expected(camera.width, camera.height), candidate(camera.width, camera.height);
+      for (const FrameSetup* setup : {&natural, &one_pixel}) {
+        for (const PixelPayload payload : {PixelPayload::kColour, PixelPayload::kColourNormal}) {
+          for (const Variant variant : {Variant::kFixedFast, Variant::kFixedSimd}) {
+            expected.clear(payload);
+            ASSERT_TRUE(renderLevel(variant, plain, *setup, expected));
+            candidate.clear(payload);
+            ASSERT_TRUE(renderLevel(variant, indexed, *setup, candidate));
+            ASSERT_TRUE(std::ranges::equal(candidate.pixels(), expected.pixels()))
+                << label << ", variant " << static_cast<int>(variant) << (setup == &natural ? ", splats" : ", one pixel")
+                << ", zoom " << camera.zoom.raw() << ", pan " << camera.pan_x_px << "," << camera.pan_y_px;
+            ++frames;
+          }
+        }
+      }
+    }
+  };
+  for (int i = 0; i < model_->levelCount(); ++i) {
+    expectSameFrames(model_->level(i), "default model depth " + std::to_string(model_->level(i).depth));
+  }
+  for (int depth = 4; depth <= 9; ++depth) {
+    const RandomLevel tree = randomLevel(depth, 5000.0, random);
+    LevelView level = tree.view(depth);
+    std::vector<SubtreeEnd> storage(skipIndexEntries(level));
+    level.skip = buildSkipIndex(level, storage);
+    expectSameFrames(level, "random tree depth " + std::to_string(depth));
+  }
+  EXPECT_EQ(frames, (3 + 6) * 24 * 8);
 }
 
 // The floating point variants land each leaf on the fixed pixel or one beside it (their positions
