@@ -70,7 +70,7 @@ struct LevelView {
   std::span<const std::uint8_t> normals{};  // one normal index per leaf, or empty (no normals)
   // Where the subtrees of one tree level end (renderer/skip_index.h), or none: ModelView sets it.
   // It must describe exactly this stream; fixed_fast and fixed_simd trust it as they trust nodes.
-  SkipIndex skip{};
+  [[no_unique_address]] SkipIndex skip{};
 };
 
 // A normal palette entry: a unit vector in Q1.14 (format::kNormalOne is 1.0), in the model's axes

@@ -28,10 +28,19 @@ struct SubtreeEnd {
   std::uint32_t leaf;  // leaf offset just past it (its last leaf's index + 1)
 };
 
+#if !defined(OCTOPOINT_BARE_METAL)
 struct SkipIndex {
   int level = 0;                      // the indexed tree level, >= 1; 0: no index
   std::span<const SubtreeEnd> ends;   // one per node at `level`, in stream order
 };
+#else
+// A bare-metal build has no index: an empty type, which costs a LevelView no RAM
+// ([[no_unique_address]]); the decoders' indexed branch is never taken.
+struct SkipIndex {
+  static constexpr int level = 0;
+  static constexpr std::span<const SubtreeEnd> ends{};
+};
+#endif
 
 // The tree level ModelView indexes in a level of `depth`: the leaves' great-grandparents
 // (depth - 3), or 0 (none) for depths below 4, whose subtrees are a few bytes.

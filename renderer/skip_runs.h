@@ -176,7 +176,7 @@ class OffScreenSkip {
   }
 
  private:
-  SkipIndex index_;
+  [[no_unique_address]] SkipIndex index_;
   const std::uint8_t* node_begin_;
   const std::uint8_t* node_end_;
   const std::uint8_t* leaf_begin_;
