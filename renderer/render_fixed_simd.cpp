@@ -284,6 +284,8 @@ __attribute__((target("avx2"))) const std::uint8_t* visit(SimdFrame& f, int leve
     }
   }
   unsigned mask = *node++;
+  // Every path below draws all the children: the skip index's count (a checked child counts itself).
+  if (!kChecked) f.off_screen.enterChildren(level, mask);
   const int levels_below = f.levels - level;  // 1: a leaf parent, 2: a grandparent, 3: above that
   // Emitting several levels in one call skips the polls of the levels below: only from the poll's
   // level on, or when nobody can abort.
@@ -321,7 +323,6 @@ __attribute__((target("avx2"))) const std::uint8_t* visit(SimdFrame& f, int leve
     return node;
   }
   const auto& offsets = (*f.offsets)[static_cast<std::size_t>(level)];
-  if (!kChecked) f.off_screen.enterChildren(level, mask);  // a checked child counts itself
   for (; mask != 0; mask &= mask - 1) {
     node = visit<kChecked, kEmit, Leaves>(
         f, level + 1, c + offsets[static_cast<std::size_t>(std::countr_zero(mask))], node, leaves);
