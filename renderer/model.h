@@ -70,6 +70,9 @@ struct LevelView {
   std::span<const std::uint8_t> normals{};  // one normal index per leaf, or empty (no normals)
   // Where the subtrees of one tree level end (renderer/skip_index.h), or none: ModelView sets it.
   // It must describe exactly this stream; fixed_fast and fixed_simd trust it as they trust nodes.
+  // It points into the ModelView's own memory (shared by its copies): a LevelView taken from a
+  // ModelView must not outlive the last copy of that view. A view of part of a stream (a band
+  // renderer's subtree, a chunk) is built without it.
   [[no_unique_address]] SkipIndex skip{};
 };
 

@@ -11,9 +11,12 @@
 // subtree at that level is then one look-up, one above it costs only its nodes above that level.
 //
 // It depends on the model only, not on the camera: ModelView builds it once when it validates a
-// model (hosted builds; a bare-metal build has no heap and keeps the byte walk), 8 bytes per node
-// of the indexed level, the great-grandparents of the leaves (about 2% of the nodes, 3 to 4% of
-// a model's bytes). Frames are the same bit for bit with the index or without it.
+// model, on the heap (hosted builds; a bare-metal build has none and keeps the byte walk), 8 bytes
+// per node of the indexed level, the leaves' great-grandparents. Each of those has at least 3 mask
+// bytes below and at it, so the index is at most 8/3 of a level's node bytes; measured, 6% of the
+// nodes: 55 KB for lms400 at depths 6..9 (a 404 KB file), 16 KB for the default model (125 KB).
+// It is built from a validated stream only, so a corrupt one fails validation before. Frames are
+// the same bit for bit with the index or without it.
 
 #include <cstddef>
 #include <cstdint>
