@@ -44,6 +44,32 @@ inline unsigned runBitCount(const std::uint8_t* run, unsigned bytes) {
 #endif
 }
 
+// Reads the masks of the subtree whose root is at `node` down to its nodes `bottom` levels below
+// the root (0: the root itself) and hands each of those to `past(mask, node)`, which steps over
+// the rest of that node's subtree (its mask is read) and returns the stream after it. Returns the
+// stream after the whole subtree. pending[l] counts the nodes of relative level l still to read
+// under the current parent (as skipSubtree; locals, so that no store through a byte pointer may
+// alias the cursors).
+template <typename Past>
+const std::uint8_t* walkDownTo(const std::uint8_t* node, int bottom, Past past) {
+  std::array<std::uint8_t, kMaxRenderDepth> pending;
+  int l = 0;
+  pending[0] = 1;
+  for (;;) {
+    const unsigned mask = *node++;
+    --pending[static_cast<std::size_t>(l)];
+    if (l < bottom) {  // above the bottom: its first child is next
+      pending[static_cast<std::size_t>(++l)] = static_cast<std::uint8_t>(childCount(mask));
+      continue;
+    }
+    node = past(mask, node);
+    while (pending[static_cast<std::size_t>(l)] == 0) {
+      if (l == 0) return node;
+      --l;
+    }
+  }
+}
+
 // skipSubtree's result for the subtree whose root (at tree `level` of a `depth`-level tree) is at
 // `node_cursor`; `node_end` is the end of the level's node stream (no load reaches past it).
 template <typename Leaves>
@@ -60,21 +86,9 @@ void skipSubtreeByRuns(const std::uint8_t*& node_cursor, Leaves& leaves, int lev
     skipSubtree(node_cursor, leaves, level, depth);
     return;
   }
-  const std::uint8_t* node = node_cursor;
   std::size_t skipped = 0;  // leaves
-  // pending[l]: the nodes of relative level l still to read under the current parent (as
-  // skipSubtree; locals, so that no store through a byte pointer may alias the cursors).
-  std::array<std::uint8_t, kMaxRenderDepth> pending;
-  int l = 0;
-  pending[0] = 1;
-  for (;;) {
-    const unsigned mask = *node++;
-    --pending[static_cast<std::size_t>(l)];
-    if (l < great_grandparents) {  // above the great-grandparents: its first child is next
-      pending[static_cast<std::size_t>(++l)] = static_cast<std::uint8_t>(childCount(mask));
-      continue;
-    }
-    // A great-grandparent: each of its grandparents is a mask followed by its leaf parents' masks.
+  // A great-grandparent: each of its grandparents is a mask followed by its leaf parents' masks.
+  node_cursor = walkDownTo(node_cursor, great_grandparents, [&](unsigned mask, const std::uint8_t* node) {
     for (int grandparents = childCount(mask); grandparents != 0; --grandparents) {
       const auto parents = static_cast<unsigned>(childCount(*node++));
       if (node_end - node >= 8) {
@@ -84,15 +98,9 @@ void skipSubtreeByRuns(const std::uint8_t*& node_cursor, Leaves& leaves, int lev
         for (unsigned k = 0; k < parents; ++k) skipped += static_cast<std::size_t>(childCount(*node++));
       }
     }
-    while (pending[static_cast<std::size_t>(l)] == 0) {
-      if (l == 0) {
-        node_cursor = node;
-        skipLeaves(leaves, skipped);
-        return;
-      }
-      --l;
-    }
-  }
+    return node;
+  });
+  skipLeaves(leaves, skipped);
 }
 
 // The first leaf a leaf cursor (renderer/leaf_cursor.h) or a plain pointer to palette indices
@@ -118,25 +126,11 @@ void skipSubtreeIndexed(const std::uint8_t*& node_cursor, Leaves& leaves, std::s
   std::size_t ordinal = next;  // the index-level nodes passed, at the end the next one's ordinal
   if (level == index.level) {
     ++ordinal;
-  } else {
-    const int parents = index.level - level - 1;  // the index level's parents, relative to the root
-    const std::uint8_t* node = node_cursor;
-    // pending[l]: the nodes of relative level l still to read under the current parent.
-    std::array<std::uint8_t, kMaxRenderDepth> pending;
-    int l = 0;
-    pending[0] = 1;
-    for (;;) {
-      const unsigned mask = *node++;
-      --pending[static_cast<std::size_t>(l)];
-      if (l < parents) {  // above the index level's parents: its first child is next
-        pending[static_cast<std::size_t>(++l)] = static_cast<std::uint8_t>(childCount(mask));
-        continue;
-      }
-      ordinal += static_cast<std::size_t>(childCount(mask));  // its children, indexed: past them
-      node = node_begin + index.ends[ordinal - 1].node;
-      while (pending[static_cast<std::size_t>(l)] == 0 && l > 0) --l;
-      if (pending[static_cast<std::size_t>(l)] == 0) break;
-    }
+  } else {  // down to the index level's parents; their children are indexed: past them at once
+    walkDownTo(node_cursor, index.level - level - 1, [&](unsigned mask, const std::uint8_t*) {
+      ordinal += static_cast<std::size_t>(childCount(mask));
+      return node_begin + index.ends[ordinal - 1].node;
+    });
   }
   const SubtreeEnd& end = index.ends[ordinal - 1];
   node_cursor = node_begin + end.node;
