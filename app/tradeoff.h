@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "app/error_regions.h"
 #include "app/reference_surface.h"
 #include "cli/output_file.h"
 #include "codegen/cube_fit.h"
@@ -50,15 +51,15 @@ struct Reference {
 };
 Reference referenceFor(const Scene& scene, const Camera& camera);
 
-inline constexpr int kInteriorMargin = 2;
-
 struct Quality {
   double psnr = 0;         // dB, cv::PSNR against the reference over all pixels
   double ssim = 0;         // mean over B, G, R (app/image_quality.h)
   double empty_share = 0;  // share of the reference's silhouette pixels the frame leaves empty
-  // The same inside the silhouette's interior: its pixels at least kInteriorMargin pixels from
-  // its outline (a 5x5 square of silhouette around them), which tells holes from edge effects.
+  // The same inside the silhouette's interior (Region::kInterior: its pixels at least kBandWidth
+  // pixels from its outline), which tells holes from edge effects.
   double interior_empty_share = 0;
+  // The frame's squared error by region of the silhouette (app/error_regions.h).
+  RegionError error_by_region;
 };
 // The frame resolved to BGR (palette colours, kBackground where empty).
 cv::Mat toImage(const Framebuffer& frame, const ModelView& model);

@@ -72,7 +72,7 @@ std::vector<Verdict> checkTargets(const std::vector<SweepCell>& cells) {
     v.met = v.checked && over.empty();
     v.numbers = "worst " + format("%.2f%%", 100 * worst) + " (" + where + ")" +
                 (over.empty() ? "" : "; above 1%: " + over) + "; in the interior (" +
-                std::to_string(kInteriorMargin) + " pixels in from the outline) worst " +
+                std::to_string(kBandWidth) + " pixels in from the outline) worst " +
                 format("%.2f%%", 100 * worst_interior) + " (" + interior_where + ")";
     verdicts.push_back(v);
   }
@@ -82,7 +82,7 @@ std::vector<Verdict> checkTargets(const std::vector<SweepCell>& cells) {
     Verdict gain{"PSNR at 640x480 and larger >= today's renderer with filling + 6 dB"};
     Verdict drop{"PSNR at 640x480 and larger >= the 320x240 zoom 1 figure - 3 dB"};
     double least_gain = 1e9, least_psnr = 1e9;
-    std::string gain_at, psnr_at, gain_fail, drop_fail;
+    std::string gain_at, psnr_at, gain_fail, drop_fail, above_ceiling;
     for (const SweepCell& cell : cells) {
       const SweepResult* after = cell.find(Config::kAfter);
       const SweepResult* filled = cell.find(Config::kBeforeFilled);
@@ -92,6 +92,11 @@ std::vector<Verdict> checkTargets(const std::vector<SweepCell>& cells) {
       if (delta < 6)
         gain_fail +=
             (gain_fail.empty() ? "" : ", ") + cellName(cell) + format(" (%+.1f dB)", delta);
+      if (filled->quality.psnr + 6 > after->palette_ceiling_psnr) {
+        above_ceiling += (above_ceiling.empty() ? "" : ", ") + cellName(cell) +
+                         format(" (%.1f", filled->quality.psnr + 6) +
+                         format(" > %.1f dB)", after->palette_ceiling_psnr);
+      }
       if (after->quality.psnr < least_psnr)
         least_psnr = after->quality.psnr, psnr_at = cellName(cell);
       if (base_after && after->quality.psnr < base_after->quality.psnr - 3) {
@@ -102,7 +107,10 @@ std::vector<Verdict> checkTargets(const std::vector<SweepCell>& cells) {
     gain.checked = least_gain < 1e9;
     gain.met = gain.checked && gain_fail.empty();
     gain.numbers = "least gain " + format("%+.1f dB", least_gain) + " (" + gain_at + ")" +
-                   (gain_fail.empty() ? "" : "; under +6 dB: " + gain_fail);
+                   (gain_fail.empty() ? "" : "; under +6 dB: " + gain_fail) +
+                   "; filled + 6 dB above the after model's palette ceiling (no frame of it can "
+                   "reach it): " +
+                   (above_ceiling.empty() ? std::string("none") : above_ceiling);
     drop.checked = gain.checked && base_after;
     drop.met = drop.checked && drop_fail.empty();
     if (drop.checked) {
@@ -183,6 +191,47 @@ std::vector<Verdict> checkTargets(const std::vector<SweepCell>& cells) {
   return verdicts;
 }
 
+// Per cell: each model's palette ceiling against the filled before frame and the after frame,
+// and where those two frames' squared error lies (app/error_regions.h).
+std::string ceilingTable(const std::vector<SweepCell>& cells) {
+  std::ostringstream md;
+  md << "Palette ceiling (the reference in the model's palette colours and the background: no "
+        "frame of that model scores more) and where each frame's squared error lies, by region "
+        "of the reference's silhouette: its interior, the "
+     << kBandWidth << "-pixel bands inside and outside its outline, the rest:\n\n"
+     << "| size | zoom | palette ceiling dB | PSNR dB | squared error: interior / inner band / "
+        "outer band / rest | interior MSE |\n"
+     << "|---|---|---|---|---|---|\n";
+  // "a / b" of one measure over before + fill and after.
+  auto pair = [](const SweepCell& cell,
+                 const std::function<std::string(const SweepResult&)>& show) {
+    const SweepResult* filled = cell.find(Config::kBeforeFilled);
+    const SweepResult* after = cell.find(Config::kAfter);
+    return (filled ? show(*filled) : "-") + " / " + (after ? show(*after) : "-");
+  };
+  auto shares = [](const SweepResult& r) {
+    std::string text;
+    for (int region = 0; region < kRegionCount; ++region) {
+      text += (text.empty() ? "" : ", ") +
+              format("%.0f%%", 100 * r.quality.error_by_region.share(Region(region)));
+    }
+    return text;
+  };
+  for (const SweepCell& cell : cells) {
+    md << "| " << cell.width << "x" << cell.height << " | " << format("%g", cell.zoom) << " | "
+       << pair(cell, [](const SweepResult& r) { return format("%.1f", r.palette_ceiling_psnr); })
+       << " | " << pair(cell, [](const SweepResult& r) { return format("%.2f", r.quality.psnr); })
+       << " | " << pair(cell, shares) << " | "
+       << pair(cell,
+               [](const SweepResult& r) {
+                 return format("%.0f", r.quality.error_by_region.mse(Region::kInterior));
+               })
+       << " |\n";
+  }
+  md << "\nEach cell: before with hole filling (the before model's ceiling) / after.\n";
+  return md.str();
+}
+
 }  // namespace
 
 const char* configName(Config config) {
@@ -207,14 +256,22 @@ const SweepResult* SweepCell::find(Config config) const {
 std::string sweepCsv(const std::string& label, const std::vector<SweepCell>& cells) {
   std::string csv =
       "scan,width,height,zoom,config,depth,splat_columns,splat_rows,ms_per_frame,empty_share,"
-      "interior_empty_share,psnr_db,ssim\n";
+      "interior_empty_share,psnr_db,ssim,palette_ceiling_psnr_db";
+  for (int region = 0; region < kRegionCount; ++region)
+    csv += std::string(",sse_share_") + regionName(Region(region));
+  csv += "\n";
   for (const SweepCell& cell : cells) {
     for (const SweepResult& r : cell.results) {
-      char line[256];
-      std::snprintf(line, sizeof line, "%s,%d,%d,%g,%s,%d,%d,%d,%.4f,%.5f,%.5f,%.3f,%.4f\n",
+      const RegionError& error = r.quality.error_by_region;
+      char line[384];
+      std::snprintf(line, sizeof line,
+                    "%s,%d,%d,%g,%s,%d,%d,%d,%.4f,%.5f,%.5f,%.3f,%.4f,%.3f,%.4f,%.4f,%.4f,%.4f\n",
                     label.c_str(), cell.width, cell.height, cell.zoom, configName(r.config),
                     r.depth, r.splat_columns, r.splat_rows, r.ms_per_frame, r.quality.empty_share,
-                    r.quality.interior_empty_share, r.quality.psnr, r.quality.ssim);
+                    r.quality.interior_empty_share, r.quality.psnr, r.quality.ssim,
+                    r.palette_ceiling_psnr, error.share(Region::kInterior),
+                    error.share(Region::kInnerBand), error.share(Region::kOuterBand),
+                    error.share(Region::kRest));
       csv += line;
     }
   }
@@ -247,6 +304,7 @@ std::string sweepMarkdown(const std::string& label, const std::string& models,
        << " | " << triple(cell, [](const SweepResult& r) { return format("%.2f", r.quality.ssim); })
        << " |\n";
   }
+  md << "\n" << ceilingTable(cells);
   md << "\nTargets (issue 11), from the numbers above:\n\n";
   for (const Verdict& v : checkTargets(cells)) {
     md << "- " << v.statement << ": "

@@ -25,6 +25,9 @@ struct SweepResult {
   int splat_rows = 1;     // and along y
   double ms_per_frame = 0;
   Quality quality;
+  // PSNR of the reference in the colours of the model this configuration draws
+  // (app/palette_ceiling.h): no frame of that model can score more.
+  double palette_ceiling_psnr = 0;
 };
 
 struct SweepCell {

@@ -24,13 +24,13 @@ Scene loadScene(const std::string& scan_path, const prepare::PrepareOptions& opt
   scene.surface = buildReferenceSurface(points);
   if (scene.surface.splat_radius.empty()) {
     std::printf("reference surface: %zu triangles over %zu points\n",
-                 scene.surface.triangles.size(), points.positions.size());
+                scene.surface.triangles.size(), points.positions.size());
   } else {
     std::vector<float> radius = scene.surface.splat_radius;
     std::nth_element(radius.begin(),
                      radius.begin() + static_cast<std::ptrdiff_t>(radius.size() / 2), radius.end());
     std::printf("reference surface: %zu splats, median radius %.3g (cube edge %.3g)\n",
-        radius.size(), static_cast<double>(radius[radius.size() / 2]), scene.fit.edge);
+                radius.size(), static_cast<double>(radius[radius.size() / 2]), scene.fit.edge);
   }
   std::fflush(stdout);
   return scene;
@@ -74,28 +74,25 @@ cv::Mat toImage(const Framebuffer& frame, const ModelView& model) {
 
 Quality measure(const Reference& reference, const Framebuffer& frame, const ModelView& model) {
   const cv::Mat drawn = toImage(frame, model);
-  cv::Mat interior;  // outside the frame counts as outside the silhouette
-  cv::erode(
-      reference.silhouette, interior,
-      cv::getStructuringElement(cv::MORPH_RECT, {2 * kInteriorMargin + 1, 2 * kInteriorMargin + 1}),
-      {-1, -1}, 1, cv::BORDER_CONSTANT, cv::Scalar(0));
+  const cv::Mat regions = silhouetteRegions(reference.silhouette);
   std::int64_t object = 0, empty = 0, inner = 0, inner_empty = 0;
   for (int y = 0; y < frame.height(); ++y) {
     const std::uint8_t* inside = reference.silhouette.ptr<std::uint8_t>(y);
-    const std::uint8_t* deep = interior.ptr<std::uint8_t>(y);
+    const std::uint8_t* region = regions.ptr<std::uint8_t>(y);
     for (int x = 0; x < frame.width(); ++x) {
       const bool hole = !frame.covered(x, y);
+      const bool deep = region[x] == static_cast<std::uint8_t>(Region::kInterior);
       object += inside[x] != 0;
       empty += inside[x] != 0 && hole;
-      inner += deep[x] != 0;
-      inner_empty += deep[x] != 0 && hole;
+      inner += deep;
+      inner_empty += deep && hole;
     }
   }
   auto share = [](std::int64_t part, std::int64_t whole) {
     return whole == 0 ? 0.0 : static_cast<double>(part) / static_cast<double>(whole);
   };
   return {psnr(reference.image, drawn), ssim(reference.image, drawn), share(empty, object),
-          share(inner_empty, inner)};
+          share(inner_empty, inner), splitSquaredError(reference.image, drawn, regions)};
 }
 
 }  // namespace octopoint::tradeoff

@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "app/palette_ceiling.h"
 #include "app/tradeoff.h"
 #include "app/tradeoff_report.h"
 #include "cli/error.h"
@@ -178,7 +179,10 @@ std::vector<cli::OutputFile> runViewSweep(const Scene& scene, const ViewSweepOpt
       throw cli::Error(cli::displayPath(pictures_dir) + ": cannot create it: " + error.message());
   }
 
-  // Quality: one frame of each configuration per cell against the reference.
+  // Quality: one frame of each configuration per cell against the reference, and the best any
+  // frame of each model could do (its palette ceiling).
+  const std::vector<cv::Vec3b> before_colours = frameColours(*before_model->view, kBackground);
+  const std::vector<cv::Vec3b> after_colours = frameColours(*after_model->view, kBackground);
   std::vector<SweepCell> cells;
   for (const auto& [width, height] : options.sizes) {
     Framebuffer frame(width, height);
@@ -187,12 +191,15 @@ std::vector<cli::OutputFile> runViewSweep(const Scene& scene, const ViewSweepOpt
       SweepCell cell{width, height, zoom, {}};
       const Camera camera = cameraOf(options, cell);
       const Reference reference = referenceFor(scene, camera);
+      const double before_ceiling = paletteCeilingPsnr(reference.image, before_colours);
+      const double after_ceiling = paletteCeilingPsnr(reference.image, after_colours);
       cv::Mat pictures[3], after_empty;
       for (std::size_t k = 0; k < 3; ++k) {
         drawer.draw(kConfigs[k], camera, frame, filler);
         const SplatFootprint& splat = drawer.setup().splat;
         cell.results.push_back({kConfigs[k], drawer.setup().depth, splat.columns, splat.rows, 0,
-                                measure(reference, frame, drawer.model(kConfigs[k]))});
+                                measure(reference, frame, drawer.model(kConfigs[k])),
+                                kConfigs[k] == Config::kAfter ? after_ceiling : before_ceiling});
         if (options.pictures) {
           pictures[k] = toImage(frame, drawer.model(kConfigs[k]));
           if (kConfigs[k] == Config::kAfter) markEmpty(reference, frame, &after_empty);

@@ -1,8 +1,11 @@
 # The tradeoff reference (included from tests/CMakeLists.txt): the surface reference against
-# synthetic scans with exact answers, PSNR and SSIM against closed forms, and a small
-# octopoint-tradeoff --sweep-views run.
-add_executable(reference_tests reference_render_test.cpp image_quality_test.cpp)
-target_link_libraries(reference_tests PRIVATE octopoint_reference GTest::gtest_main octopoint_warnings)
+# synthetic scans with exact answers, PSNR and SSIM against closed forms, the palette ceiling and
+# the error's regions against known answers, and a small octopoint-tradeoff
+# --sweep-views run.
+add_executable(reference_tests reference_render_test.cpp image_quality_test.cpp
+               error_regions_test.cpp palette_ceiling_test.cpp)
+target_link_libraries(reference_tests PRIVATE octopoint_reference octopoint_models opencv_imgproc
+                      GTest::gtest_main octopoint_warnings)
 gtest_discover_tests(reference_tests DISCOVERY_MODE PRE_TEST)
 
 # The view sweep through the real CLI, small: the synthetic ball seen by a depth camera (organized:

@@ -1,6 +1,6 @@
 # Runs a small octopoint-tradeoff --sweep-views and checks its outputs: a CSV row per cell and
-# configuration with every column, the markdown table with its targets, the pictures, and nothing
-# on stderr.
+# configuration with every column and no PSNR above its palette ceiling, the markdown tables with
+# the targets, the pictures, and nothing on stderr.
 file(REMOVE_RECURSE ${OUT})
 execute_process(COMMAND ${TRADEOFF} ${SCAN} --sweep-views --sizes 64x48,160x120 --zooms 1,4 --rounds 1
                         --pictures -o ${OUT}
@@ -20,12 +20,18 @@ endif()
 foreach(line IN LISTS lines)
   string(REPLACE "," ";" fields "${line}")
   list(LENGTH fields field_count)
-  if(NOT field_count EQUAL 13)
-    message(FATAL_ERROR "sweep.csv line '${line}' has ${field_count} fields, expected 13")
+  if(NOT field_count EQUAL 18)
+    message(FATAL_ERROR "sweep.csv line '${line}' has ${field_count} fields, expected 18")
+  endif()
+  # No frame of a model beats its palette ceiling (app/palette_ceiling.h), real frames included.
+  list(GET fields 11 psnr)
+  list(GET fields 13 ceiling)
+  if(NOT psnr STREQUAL "psnr_db" AND psnr GREATER ceiling)
+    message(FATAL_ERROR "sweep.csv line '${line}': PSNR ${psnr} above its palette ceiling ${ceiling}")
   endif()
 endforeach()
 file(READ ${OUT}/sweep.md page)
-foreach(expected "| 160x120 | 4 |" "Targets (issue 11)" "Empty share of the silhouette")
+foreach(expected "| 160x120 | 4 |" "Targets (issue 11)" "Empty share of the silhouette" "Palette ceiling")
   string(FIND "${page}" "${expected}" at)
   if(at EQUAL -1)
     message(FATAL_ERROR "sweep.md lacks '${expected}'")
