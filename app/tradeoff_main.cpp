@@ -36,8 +36,10 @@ OUTDIR/tradeoff.csv, OUTDIR/tradeoff.png and OUTDIR/tradeoff_reference.png.
 
 With --sweep-views: for every frame size and zoom it draws today's renderer (the finest depth of
 the 7,8 model, one pixel per voxel, hole filling off and on) and octopoint's current one (depth
-auto, footprint splats), and records time, depth, splat size, empty share of the silhouette, PSNR
-and SSIM. Writes OUTDIR/sweep.csv and OUTDIR/sweep.md (the table and the issue's targets).
+auto, footprint splats), and records time, depth, splat size, empty share of the silhouette, PSNR,
+SSIM, each model's palette ceiling (the best PSNR any frame of it can reach) and the share of the
+squared error in the silhouette's interior, the 2-pixel bands inside and outside its outline and
+the rest. Writes OUTDIR/sweep.csv and OUTDIR/sweep.md (the tables and the issue's targets).
 
   --axes y-down|y-up     the scan's axes (as octopoint-prepare; default y-down)
   --crop X0,Y0,Z0,X1,Y1,Z1  keep the points inside this box (as octopoint-prepare)
