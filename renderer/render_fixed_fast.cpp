@@ -19,6 +19,7 @@
 #include <algorithm>
 #include <bit>
 #include <type_traits>
+#include <utility>
 
 #include "renderer/bit_scan.h"
 #include "renderer/decode_algorithms.h"
@@ -115,6 +116,106 @@ Cursor<Leaves> plotChildren(const FastFrame& f, int level, Vec3 c, Cursor<Leaves
   return {at.node + 1, leaves};
 }
 
+// The kernel of plotGrandparent for one pixel per leaf; a splat frame's is its box kernel
+// (SplatPlot::boxKernel).
+constexpr int kOnePixel = SplatPlot::kNoBox - 1;
+
+// A grandparent at tree level `level` centred at `c`, whose subtree is on screen, plots its
+// grandchildren in one call: no call per leaf parent, and the frame's values the loops read held
+// in locals (a pixel store may alias any 32-bit field of the frame, which would then be reloaded
+// after every leaf). Per leaf parent, its centre (a splat's: plus the footprint's offset) and its
+// biased depth (PlotTarget::biasedDepth) are made once, so a leaf is one add per axis from them;
+// all wrap mod 2^32 as the scalar sums would, and the leaf's own sums fit 32 bits
+// (buildFrameSetup). A splat frame polls the abort flag after every leaf parent, as plotting them
+// one call each did.
+template <int kKernel, typename Leaves>
+__attribute__((always_inline)) inline Cursor<Leaves> plotGrandchildren(const FastFrame& f, int level, Vec3 c,
+                                                                      Cursor<Leaves> at) {
+  constexpr bool kSplat = kKernel != kOnePixel;
+  const SplatPlot splat = f.splat;  // the splat's kernel reads its copy
+  std::uint32_t* const pixel = f.target.pixel;
+  const auto width = static_cast<std::uint32_t>(f.target.width);
+  const int shift = f.target.fraction_bits;
+  const int depth_shift = f.target.depth_shift;
+  const auto& parent_offsets = (*f.offsets)[static_cast<std::size_t>(level)];
+  const auto& leaf_offsets = (*f.offsets)[static_cast<std::size_t>(level) + 1];
+  auto cx = static_cast<std::uint32_t>(c.x);
+  auto cy = static_cast<std::uint32_t>(c.y);
+  const std::uint32_t biased_cz = f.target.biasedDepth(c.z);
+  if constexpr (kSplat) {
+    cx += static_cast<std::uint32_t>(splat.footprint.offset_x);
+    cy += static_cast<std::uint32_t>(splat.footprint.offset_y);
+  }
+  const std::uint8_t* node = at.node;
+  Leaves leaves = at.leaves;
+  for (unsigned mask = *node++; mask != 0; mask &= mask - 1) {
+    const Vec3& d = parent_offsets[lowestChild(mask)];
+    const std::uint32_t px = cx + static_cast<std::uint32_t>(d.x);
+    const std::uint32_t py = cy + static_cast<std::uint32_t>(d.y);
+    const std::uint32_t pz = biased_cz + static_cast<std::uint32_t>(d.z);
+    for (unsigned leaf_mask = *node++; leaf_mask != 0; leaf_mask &= leaf_mask - 1) {
+      const Vec3& e = leaf_offsets[lowestChild(leaf_mask)];
+      const std::int32_t x = static_cast<std::int32_t>(px + static_cast<std::uint32_t>(e.x));
+      const std::int32_t y = static_cast<std::int32_t>(py + static_cast<std::uint32_t>(e.y));
+      // FrameSetup::depthKey: (z + bias) >> shift, mod 2^32.
+      const std::uint32_t word = Framebuffer::packLeaf<Leaves::kPayload>(
+          (pz + static_cast<std::uint32_t>(e.z)) >> depth_shift, nextLeaf(f, leaves));
+      if constexpr (kSplat) {
+        splat.plotUnchecked<kKernel>(x, y, word);
+      } else {
+        // The pixel (Q(32-F).F -> pixel, floor); on screen, so its index fits 32 bits (8192^2).
+        std::uint32_t& kept = pixel[static_cast<std::uint32_t>(y >> shift) * width +
+                                    static_cast<std::uint32_t>(x >> shift)];
+        kept = std::min(kept, word);  // branch-free z-test, as plotChildren
+      }
+    }
+    if (kSplat && f.abort != nullptr && (f.aborted = f.abort->load(std::memory_order_relaxed))) break;
+  }
+  return {node, leaves};
+}
+
+// A node three levels above the leaves (a great-grandparent) at `level`, on screen, plots its
+// subtree in one call: its grandparents as visit would (a splat frame polls at each, and stops when
+// the flag is seen), without a call each. Only where the grandparents do not poll otherwise
+// (below kAbortCheckLevel, or nobody can abort; visit checks).
+template <int kKernel, typename Leaves>
+__attribute__((always_inline)) inline Cursor<Leaves> plotGreatGrandchildren(const FastFrame& f, int level, Vec3 c,
+                                                                           Cursor<Leaves> at) {
+  constexpr bool kSplat = kKernel != kOnePixel;
+  const auto& offsets = (*f.offsets)[static_cast<std::size_t>(level)];
+  unsigned mask = *at.node++;
+  f.off_screen.enterChildren(level, mask);
+  for (; mask != 0; mask &= mask - 1) {
+    if (kSplat && f.abort != nullptr && (f.aborted = f.abort->load(std::memory_order_relaxed))) break;
+    at = plotGrandchildren<kKernel, Leaves>(f, level + 1, c + offsets[lowestChild(mask)], at);
+    if (kSplat && f.aborted) break;
+  }
+  return at;
+}
+
+// The subtree of an on-screen node `levels_below` (2 or 3) levels above the leaves, in one call,
+// with the frame's leaf kernel: one pixel, or the splat's box kernel (SplatPlot::boxKernel, chosen
+// per call: a jump, not a test per leaf).
+template <int kKernel, typename Leaves>
+Cursor<Leaves> plotSubtreeWith(const FastFrame& f, int level, int levels_below, Vec3 c, Cursor<Leaves> at) {
+  if (levels_below == 2) return plotGrandchildren<kKernel, Leaves>(f, level, c, at);
+  return plotGreatGrandchildren<kKernel, Leaves>(f, level, c, at);
+}
+template <bool kSplat, typename Leaves, int... kBox>
+__attribute__((noinline)) Cursor<Leaves> plotSubtree(const FastFrame& f, int level, int levels_below, Vec3 c,
+                                                     Cursor<Leaves> at, std::integer_sequence<int, kBox...>) {
+  if constexpr (!kSplat) {
+    return plotSubtreeWith<kOnePixel, Leaves>(f, level, levels_below, c, at);
+  } else {
+    const int box = f.splat.boxKernel();
+    if (!((box == kBox ? (at = plotSubtreeWith<kBox, Leaves>(f, level, levels_below, c, at), true) : false) ||
+          ...)) {
+      at = plotSubtreeWith<SplatPlot::kNoBox, Leaves>(f, level, levels_below, c, at);
+    }
+    return at;
+  }
+}
+
 template <bool kChecked, bool kSplat, typename Leaves>
 Cursor<Leaves> visit(const FastFrame& f, int level, Vec3 c, Cursor<Leaves> at) {
   if (level <= kAbortCheckLevel && f.abort != nullptr) {
@@ -141,15 +242,16 @@ Cursor<Leaves> visit(const FastFrame& f, int level, Vec3 c, Cursor<Leaves> at) {
     }
   }
   if (level + 1 == f.levels) return plotChildren<kChecked, kSplat, Leaves>(f, level, c, at);
+  // Two or three levels above the leaves: the subtree in one call (plotSubtree), three only where
+  // the level below would not poll.
+  const int levels_below = f.levels - level;
+  if (!kChecked && (levels_below == 2 ||
+                    (levels_below == 3 && (level + 1 > kAbortCheckLevel || f.abort == nullptr)))) {
+    return plotSubtree<kSplat, Leaves>(f, level, levels_below, c, at,
+                                       std::make_integer_sequence<int, kMostBoxSide * kMostBoxSide>{});
+  }
   const auto& offsets = (*f.offsets)[static_cast<std::size_t>(level)];
   unsigned mask = *at.node++;
-  if (!kChecked && level + 2 == f.levels) {  // leaf parents below: plot them here, no call each
-    for (; mask != 0; mask &= mask - 1) {
-      at = plotChildren<false, kSplat, Leaves>(f, level + 1, c + offsets[lowestChild(mask)], at);
-      if (kSplat && f.abort != nullptr && (f.aborted = f.abort->load(std::memory_order_relaxed))) return at;
-    }
-    return at;
-  }
   if (!kChecked) f.off_screen.enterChildren(level, mask);  // a checked child counts itself
   for (; mask != 0; mask &= mask - 1) {
     at = visit<kChecked, kSplat, Leaves>(f, level + 1, c + offsets[lowestChild(mask)], at);

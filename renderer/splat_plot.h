@@ -55,40 +55,50 @@ struct SplatPlot : PlotTarget {
   void plot(const Vec3& p, std::uint32_t payload) const {
     const std::int32_t x = p.x + footprint.offset_x;
     const std::int32_t y = p.y + footprint.offset_y;
-    const std::int32_t x_begin = x >> fraction_bits,
-                       x_end = ((x + footprint.span_x) >> fraction_bits) + 1;
-    const std::int32_t y_begin = y >> fraction_bits,
-                       y_end = ((y + footprint.span_y) >> fraction_bits) + 1;
     const std::uint32_t word = Framebuffer::packLeaf<kPayload>(depthKey(p.z), payload);
-    if constexpr (!kChecked) {
+    if constexpr (kChecked) {
+      fill<true>(x >> fraction_bits, ((x + footprint.span_x) >> fraction_bits) + 1, y >> fraction_bits,
+                 ((y + footprint.span_y) >> fraction_bits) + 1, word);
+    } else {
+      plotBox(std::make_integer_sequence<int, kMostBoxSide * kMostBoxSide>{}, x, y, word);
+    }
+  }
+
+  // Which kernel writes this frame's unchecked splats (plotUnchecked): the box of the footprint,
+  // box = (rows - 1) * kMostBoxSide + columns - 1, or kNoBox for footprints past 4 x 4.
+  static constexpr int kNoBox = -1;
+  int boxKernel() const { return box; }
+
+  // The unchecked splat whose first pixel is at (x, y), Q(32-F).F (a leaf's position plus the
+  // footprint's offset), of packed word `word`, by kernel kBox (boxKernel(): the caller chooses it
+  // once, not per leaf).
+  template <int kBox>
+  __attribute__((always_inline)) void plotUnchecked(std::int32_t x, std::int32_t y, std::uint32_t word) const {
+    const std::int32_t x_begin = x >> fraction_bits, x_end = ((x + footprint.span_x) >> fraction_bits) + 1;
+    const std::int32_t y_begin = y >> fraction_bits, y_end = ((y + footprint.span_y) >> fraction_bits) + 1;
+    if constexpr (kBox != kNoBox) {
       const std::size_t at = static_cast<std::size_t>(y_begin) * static_cast<std::size_t>(width) +
                              static_cast<std::size_t>(x_begin);
       // The box may reach one column or row past the leaf's rectangle: not past the frame's end.
-      if (box != kNoBox && at + box_reach <= end) {
-        plotBox(std::make_integer_sequence<int, kMostBoxSide * kMostBoxSide>{}, pixel + at, word,
-                x_end - x_begin, y_end - y_begin);
+      if (at + box_reach <= end) {
+        constexpr int kColumns = kBox % kMostBoxSide + 1, kRows = kBox / kMostBoxSide + 1;
+        minBox<kColumns, kRows>(pixel + at, static_cast<std::size_t>(width), word,
+                                shortOf<kColumns>(x_end - x_begin), shortOf<kRows>(y_end - y_begin));
         return;
       }
     }
-    fill<kChecked>(x_begin, x_end, y_begin, y_end, word);
+    fill<false>(x_begin, x_end, y_begin, y_end, word);
   }
 
   SplatFootprint footprint;
 
  private:
-  static constexpr int kNoBox = -1;
-
-  // The box kernel of this frame's footprint: box = (rows - 1) * kMostBoxSide + columns - 1.
+  // plotUnchecked by this frame's kernel, chosen per leaf.
   template <int... kBox>
-  void plotBox(std::integer_sequence<int, kBox...>, std::uint32_t* first, std::uint32_t word,
-               std::int32_t columns, std::int32_t rows) const {
-    const auto width_words = static_cast<std::size_t>(width);
-    (void)((box == kBox ? (minBox<kBox % kMostBoxSide + 1, kBox / kMostBoxSide + 1>(
-                               first, width_words, word, shortOf<kBox % kMostBoxSide + 1>(columns),
-                               shortOf<kBox / kMostBoxSide + 1>(rows)),
-                           true)
-                        : false) ||
-           ...);
+  void plotBox(std::integer_sequence<int, kBox...>, std::int32_t x, std::int32_t y, std::uint32_t word) const {
+    if (!((box == kBox ? (plotUnchecked<kBox>(x, y, word), true) : false) || ...)) {
+      plotUnchecked<kNoBox>(x, y, word);
+    }
   }
 
   int box;                // which box kernel, or kNoBox for footprints past 4 x 4
