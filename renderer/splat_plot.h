@@ -26,9 +26,7 @@ struct SplatPlot : PlotTarget {
         box(setup.splat.columns <= kMostBoxSide && setup.splat.rows <= kMostBoxSide
                 ? (setup.splat.rows - 1) * kMostBoxSide + setup.splat.columns - 1
                 : kNoBox),
-        box_reach(static_cast<std::size_t>(setup.splat.rows - 1) * static_cast<std::size_t>(width) +
-                  static_cast<std::size_t>(setup.splat.columns)),
-        end(static_cast<std::size_t>(width) * static_cast<std::size_t>(height)) {}
+        box_last_first(width * height - ((setup.splat.rows - 1) * width + setup.splat.columns)) {}
 
   // Writes `word` (Framebuffer::packLeaf) over columns [x_begin, x_end) and rows [y_begin, y_end),
   // clipped to the frame when kChecked.
@@ -77,10 +75,11 @@ struct SplatPlot : PlotTarget {
     const std::int32_t x_begin = x >> fraction_bits, x_end = ((x + footprint.span_x) >> fraction_bits) + 1;
     const std::int32_t y_begin = y >> fraction_bits, y_end = ((y + footprint.span_y) >> fraction_bits) + 1;
     if constexpr (kBox != kNoBox) {
-      const std::size_t at = static_cast<std::size_t>(y_begin) * static_cast<std::size_t>(width) +
-                             static_cast<std::size_t>(x_begin);
+      // On screen: the index fits 32 bits (at most 8192^2 pixels).
+      const std::uint32_t at = static_cast<std::uint32_t>(y_begin) * static_cast<std::uint32_t>(width) +
+                               static_cast<std::uint32_t>(x_begin);
       // The box may reach one column or row past the leaf's rectangle: not past the frame's end.
-      if (at + box_reach <= end) {
+      if (static_cast<std::int32_t>(at) <= box_last_first) {
         constexpr int kColumns = kBox % kMostBoxSide + 1, kRows = kBox / kMostBoxSide + 1;
         minBox<kColumns, kRows>(pixel + at, static_cast<std::size_t>(width), word,
                                 shortOf<kColumns>(x_end - x_begin), shortOf<kRows>(y_end - y_begin));
@@ -102,8 +101,9 @@ struct SplatPlot : PlotTarget {
   }
 
   int box;                // which box kernel, or kNoBox for footprints past 4 x 4
-  std::size_t box_reach;  // from a box's first pixel past its last: (rows - 1) * width + columns
-  std::size_t end;        // width * height
+  // The last first pixel whose box ends inside the frame: width * height minus the box's reach,
+  // (rows - 1) * width + columns; below 0 when no box fits.
+  std::int32_t box_last_first;
 };
 
 }  // namespace octopoint
