@@ -9,7 +9,9 @@
 //   not in a struct in memory: a pixel store may alias any 32-bit field of such a struct, so state
 //   kept in memory would be reloaded after every plotted leaf.
 // - The level above the leaf parents plots its grandchildren itself (in the on-screen case), so
-//   there is no call per leaf parent: calls were a third of the instructions per point.
+//   there is no call per leaf parent: calls were a third of the instructions per point. The level
+//   above that loops over its children in the same call where they do not poll (plotSubtree), and
+//   a splat frame's box kernel is chosen per such call, not per leaf (docs/splats.md, "Cost").
 // - Hierarchical clipping as in fixed_clipped: subtrees proven on screen plot without bounds
 //   checks, subtrees proven off screen are stepped over without computing positions, a
 //   grandparent's leaf parents at a time (renderer/skip_runs.h).
