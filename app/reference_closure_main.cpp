@@ -10,6 +10,7 @@
 
 #include "app/reference_closure.h"
 #include "app/reference_surface.h"
+#include "app/splat_rule_flag.h"
 #include "cli/arguments.h"
 #include "cli/error.h"
 #include "cli/numbers.h"
@@ -42,8 +43,9 @@ scan's (app/reference_surface.h):
   --pictures DIR    instead, for one rule, write WxH_zoomZ_holes.png per view of table 2 into
                     the directory DIR (covered white, holes red, empty near the outline
                     orange) and print its shares
-  --rule K,SCALE,QUANTILE  that rule (default the reference's: 8,0.7,0.9); K 1..64, SCALE
-                    0.1..4, QUANTILE 0..1
+  --rule K,SCALE,QUANTILE[,EDGE_OFFSET,EDGE_SCALE]  that rule (default the reference's,
+                    kSplatRule); K 1..64, SCALE 0.1..4, QUANTILE 0..1, EDGE_OFFSET 0..1,
+                    EDGE_SCALE 0..4 (app/reference_surface.h SplatRule)
   -h, --help        show this help
 
 On any error prints one line on stderr and exits with status 1.
@@ -56,15 +58,6 @@ double median(std::vector<float> values) {
   const auto middle = values.begin() + static_cast<std::ptrdiff_t>(values.size() / 2);
   std::nth_element(values.begin(), middle, values.end());
   return *middle;
-}
-
-SplatRule parseRule(const std::string& name, const std::string& text) {
-  const std::size_t first = text.find(','), second = text.find(',', first + 1);
-  if (first == std::string::npos || second == std::string::npos)
-    throw cli::Error(name + ": " + cli::inQuotes(text) + " is not K,SCALE,QUANTILE");
-  return {cli::parseInt(name, text.substr(0, first), 1, 64),
-          cli::parseReal(name, text.substr(first + 1, second - first - 1), 0.1, 4.0),
-          cli::parseReal(name, text.substr(second + 1), 0.0, 1.0)};
 }
 
 void printJitteredPlaneTable() {
@@ -93,7 +86,10 @@ tradeoff::Closure closureOf(const ScanSurface& scan, const std::vector<float>& d
                             const SplatRule& rule, Angle yaw, const std::string& pictures = {}) {
   tradeoff::ReferenceSurface surface;
   surface.positions = scan.points.positions;
-  surface.splat_radius = tradeoff::splatRadii(distance, rule);
+  surface.splat_radius = tradeoff::splatRadii(
+      distance, rule,
+      rule.edge_offset > 0 ? tradeoff::centroidOffsets(scan.points.positions, rule.neighbour)
+                           : std::vector<float>{});
   return tradeoff::measureClosure(surface, scan.fit, scan.spacing, kViews, yaw, pictures);
 }
 
@@ -151,7 +147,7 @@ int run(int argc, char** argv) {
       pictures = args.value();
     } else if (args.is("--rule")) {
       const std::string name = args.name();
-      picture_rule = parseRule(name, args.value());
+      picture_rule = tradeoff::parseSplatRule(name, args.value());
     } else if (args.isPlain() && scan_path.empty()) {
       scan_path = args.current();
     } else {
@@ -174,9 +170,10 @@ int run(int argc, char** argv) {
         closureOf(scan, tradeoff::neighbourDistances(scan.points.positions, picture_rule.neighbour),
                   picture_rule, yaw, pictures);
     std::printf(
-        "k %d, scale %.2f, cap quantile %.2f: holes inside %s of covered (worst view "
-        "%.3f%%), empty near the outline %s\n",
+        "k %d, scale %.2f, cap quantile %.2f, edge offset %.2f, edge scale %.2f: holes inside %s "
+        "of covered (worst view %.3f%%), empty near the outline %s\n",
         picture_rule.neighbour, picture_rule.scale, picture_rule.cap_quantile,
+        picture_rule.edge_offset, picture_rule.edge_scale,
         percent(closure.holes, closure.covered).c_str(), 100.0 * closure.worst_share,
         percent(closure.outline_holes, closure.covered).c_str());
     return 0;

@@ -76,11 +76,15 @@ void meshGrid(const prepare::Scan& points, ReferenceSurface& surface) {
 
 }  // namespace
 
-std::vector<float> neighbourDistances(const std::vector<std::array<float, 3>>& positions,
-                                      int neighbour) {
+namespace {
+
+// For every position, its `neighbour` nearest other positions (PCL k-d tree; with fewer others, all
+// of them), handed to `visit(i, found, squared)` (found[0] is the position itself).
+template <typename Visit>
+void forEachNeighbourhood(const std::vector<std::array<float, 3>>& positions, int neighbour,
+                          Visit visit) {
   const std::size_t count = positions.size();
-  std::vector<float> distance(count, 0.0f);
-  if (count < 2 || neighbour < 1) return distance;
+  if (count < 2 || neighbour < 1) return;
   auto cloud = std::make_shared<pcl::PointCloud<pcl::PointXYZ>>();
   cloud->reserve(count);
   for (const auto& p : positions) cloud->push_back({p[0], p[1], p[2]});
@@ -93,12 +97,47 @@ std::vector<float> neighbourDistances(const std::vector<std::array<float, 3>>& p
   std::vector<float> squared;
   for (std::size_t i = 0; i < count; ++i) {
     tree.nearestKSearch((*cloud)[i], wanted, found, squared);
-    distance[i] = squared.empty() ? 0.0f : std::sqrt(squared.back());
+    visit(i, found, squared);
   }
+}
+
+}  // namespace
+
+std::vector<float> neighbourDistances(const std::vector<std::array<float, 3>>& positions,
+                                      int neighbour) {
+  std::vector<float> distance(positions.size(), 0.0f);
+  forEachNeighbourhood(positions, neighbour,
+                       [&](std::size_t i, const pcl::Indices&, const std::vector<float>& squared) {
+                         distance[i] = squared.empty() ? 0.0f : std::sqrt(squared.back());
+                       });
   return distance;
 }
 
-std::vector<float> splatRadii(const std::vector<float>& neighbour_distance, const SplatRule& rule) {
+std::vector<float> centroidOffsets(const std::vector<std::array<float, 3>>& positions,
+                                   int neighbour) {
+  std::vector<float> offset(positions.size(), 0.0f);
+  forEachNeighbourhood(
+      positions, neighbour,
+      [&](std::size_t i, const pcl::Indices& found, const std::vector<float>& squared) {
+        if (found.size() < 2 || !(squared.back() > 0)) return;
+        double centroid[3] = {0, 0, 0};
+        for (std::size_t k = 1; k < found.size(); ++k) {
+          for (std::size_t axis = 0; axis < 3; ++axis)
+            centroid[axis] += positions[static_cast<std::size_t>(found[k])][axis];
+        }
+        double off_squared = 0;
+        for (std::size_t axis = 0; axis < 3; ++axis) {
+          const double d =
+              centroid[axis] / static_cast<double>(found.size() - 1) - positions[i][axis];
+          off_squared += d * d;
+        }
+        offset[i] = static_cast<float>(std::sqrt(off_squared / squared.back()));
+      });
+  return offset;
+}
+
+std::vector<float> splatRadii(const std::vector<float>& neighbour_distance, const SplatRule& rule,
+                              const std::vector<float>& centroid_offset) {
   std::vector<float> radius(neighbour_distance.size(), 0.0f);
   if (radius.empty()) return radius;
   // The cap: the rule's quantile of the neighbour distances (nth_element on a copy).
@@ -108,8 +147,10 @@ std::vector<float> splatRadii(const std::vector<float>& neighbour_distance, cons
   std::nth_element(sorted.begin(), sorted.begin() + static_cast<std::ptrdiff_t>(rank),
                    sorted.end());
   const double limit = sorted[rank];
+  const bool edges = rule.edge_offset > 0 && centroid_offset.size() == radius.size();
   for (std::size_t i = 0; i < radius.size(); ++i) {
-    radius[i] = static_cast<float>(rule.scale *
+    const bool on_edge = edges && centroid_offset[i] > rule.edge_offset;
+    radius[i] = static_cast<float>((on_edge ? rule.edge_scale : rule.scale) *
                                    std::min(static_cast<double>(neighbour_distance[i]), limit));
   }
   return radius;
@@ -125,7 +166,10 @@ ReferenceSurface buildReferenceSurface(const prepare::Scan& points, const SplatR
   if (gridded)
     meshGrid(points, surface);
   else
-    surface.splat_radius = splatRadii(neighbourDistances(points.positions, rule.neighbour), rule);
+    surface.splat_radius =
+        splatRadii(neighbourDistances(points.positions, rule.neighbour), rule,
+                   rule.edge_offset > 0 ? centroidOffsets(points.positions, rule.neighbour)
+                                        : std::vector<float>{});
   return surface;
 }
 

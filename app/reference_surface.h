@@ -8,7 +8,8 @@
 // - Unorganized scan: every point becomes a disc facing the viewer whose radius is kSplatRule:
 //   0.7 x the distance to its 8th nearest neighbour (PCL k-d tree), that distance at most its 90%
 //   quantile over the scan: the smallest discs that close the reference's own surface
-//   (app/reference_closure.h measures it).
+//   (app/reference_closure.h measures it); 0.25 x that distance for a stray return (neighbours on
+//   one side only), which the exact silhouette of sampled squares supports (app/reference_truth.h).
 //
 // Building it is view-independent and done once per scan; app/reference_render.h draws it per view.
 // This file's .cpp is the only one under app/ that includes PCL headers (they compile slowly).
@@ -29,17 +30,29 @@ inline constexpr double kMaxEdgeGridSteps = 8;
 // How an unorganized scan's points become discs (docs/tradeoff.md, "The reference render"): a
 // point's radius is `scale` x the distance to its `neighbour`-th nearest neighbour, that distance
 // capped at its `cap_quantile` quantile over the scan (a stray return far from everything samples
-// no surface, and gets no wider disc than 90% of the scan's points). kSplatRule: of the neighbour
-// counts 4..16, each with the smallest scale (steps of 0.05) that closes a jittered plane at every
-// size and zoom, the 8th at 0.7 gives the smallest discs; on lms400 it leaves 0.023% of the
-// covered pixels as holes inside the surface, where 0.6 leaves 0.036% and 0.5 0.093%, and a 75%
-// cap 0.031% (scripts/reference-closure prints the whole measurement).
+// no surface, and gets no wider disc than 90% of the scan's points). Of the neighbour counts
+// 4..16, each with the smallest scale (steps of 0.05) that closes a jittered plane at every size
+// and zoom, the 8th at 0.7 gives the smallest discs; on lms400 it leaves 0.023% of the covered
+// pixels as holes inside the surface, where 0.6 leaves 0.036% and 0.5 0.093%, and a 75% cap 0.031%
+// (scripts/reference-closure prints the whole measurement).
+// A stray return (its neighbours' centroid more than edge_offset x its neighbour distance off it:
+// neighbours on one side only, and far) gets a disc of edge_scale x that distance instead:
+// against the exact silhouette of sampled squares with stray returns off their edge
+// (app/reference_truth.h, scripts/reference-truth), that cuts the spill past the true edge by a
+// quarter (jittered) to a sixth (line scanner), where a stray at 0.7 spills as much as a surface
+// sample. A lower offset would shrink outline discs too (0.4 halves the outline's spill) but opens
+// holes inside a jittered plane: 0.6 is the lowest (steps of 0.05) that keeps it closed.
 struct SplatRule {
   int neighbour = 8;
   double scale = 0.7;
   double cap_quantile = 0.9;
+  // A point whose `neighbour` nearest neighbours have their centroid more than edge_offset x its
+  // neighbour distance away from it has them on one side: a stray return (or, at lower offsets,
+  // an outline point), and its disc is edge_scale x that (capped) distance instead. 0: none is.
+  double edge_offset = 0;
+  double edge_scale = 0;
 };
-inline constexpr SplatRule kSplatRule{};
+inline constexpr SplatRule kSplatRule{8, 0.7, 0.9, 0.6, 0.25};
 
 struct ReferenceSurface {
   // The points (model axes, scan units) and their colours, as given.
@@ -63,8 +76,15 @@ ReferenceSurface buildReferenceSurface(const prepare::Scan& points,
 std::vector<float> neighbourDistances(const std::vector<std::array<float, 3>>& positions,
                                       int neighbour);
 
+// Each position's distance to the centroid of its `neighbour` nearest other positions, over its
+// distance to the farthest of them (about 0.42 on a straight outline, near 0 inside a surface).
+std::vector<float> centroidOffsets(const std::vector<std::array<float, 3>>& positions,
+                                   int neighbour);
+
 // The disc radii `rule` gives for those distances: rule.scale x min(distance, the rule's quantile
-// of the distances).
-std::vector<float> splatRadii(const std::vector<float>& neighbour_distance, const SplatRule& rule);
+// of the distances), rule.edge_scale instead of rule.scale where `centroid_offset` (when given)
+// exceeds rule.edge_offset.
+std::vector<float> splatRadii(const std::vector<float>& neighbour_distance, const SplatRule& rule,
+                              const std::vector<float>& centroid_offset = {});
 
 }  // namespace octopoint::tradeoff

@@ -1,9 +1,9 @@
 # The tradeoff reference (included from tests/CMakeLists.txt): the surface reference against
-# synthetic scans with exact answers, PSNR and SSIM against closed forms, the palette ceiling and
-# the error's regions against known answers, and a small octopoint-tradeoff
-# --sweep-views run.
-add_executable(reference_tests reference_render_test.cpp image_quality_test.cpp
-               error_regions_test.cpp palette_ceiling_test.cpp)
+# synthetic scans with exact answers (and against the exact silhouette of sampled squares), PSNR and
+# SSIM against closed forms, the palette ceiling and the error's regions against known answers, and
+# a small octopoint-tradeoff --sweep-views run.
+add_executable(reference_tests reference_render_test.cpp reference_truth_test.cpp
+               image_quality_test.cpp error_regions_test.cpp palette_ceiling_test.cpp)
 target_link_libraries(reference_tests PRIVATE octopoint_reference octopoint_models opencv_imgproc
                       GTest::gtest_main octopoint_warnings)
 gtest_discover_tests(reference_tests DISCOVERY_MODE PRE_TEST)
@@ -31,3 +31,9 @@ tradeoff_error_test(bad_zoom "--zoom: 'x' is not a number" ${test_scans}/sphere.
 tradeoff_error_test(bad_rounds "--rounds: 0 is outside 1..100" ${test_scans}/sphere.pcd --sweep-views --rounds 0)
 tradeoff_error_test(bad_label "--label: 'a,b' is not" ${test_scans}/sphere.pcd --sweep-views --label a,b)
 tradeoff_error_test(missing_scan "no such file" ${test_scans}/missing.pcd --sweep-views)
+
+# octopoint-reference-truth refuses a malformed disc rule with one line naming the flag.
+add_test(NAME cli.reference_truth.bad_rule
+         COMMAND ${expect_error} "--rule: '8,0.7' is not K,SCALE,QUANTILE[,EDGE_OFFSET,EDGE_SCALE]"
+                 ${cli_out}/reference_truth_bad_rule -- $<TARGET_FILE:octopoint-reference-truth>
+                 --rule 8,0.7)

@@ -217,8 +217,10 @@ TEST(ReferenceRender, UnorganizedSplatsCloseAJitteredPlane) {
   EXPECT_GT(sixth.holes, 0);
 }
 
-// A lone stray return is drawn as a disc no wider than the rule's cap: scale x the cap quantile of
-// the neighbour distances, whatever its own neighbours' distance.
+// A lone stray return is drawn as a disc no wider than the rule's outline disc: edge_scale x the
+// cap quantile of the neighbour distances, whatever its own neighbours' distance (its neighbours
+// all lie on one side, as an outline point's do: app/reference_truth.h measured that the truth
+// supports no wider disc there; before, it was scale x the cap).
 TEST(ReferenceSurfaceTest, StrayPointGetsNoWiderSplatThanTheCap) {
   Scan scan;
   constexpr float kStep = 0.01f;
@@ -230,8 +232,9 @@ TEST(ReferenceSurfaceTest, StrayPointGetsNoWiderSplatThanTheCap) {
   // but those on the border (2 steps; 196 of 2501, under 10%): that is the 0.9 quantile too.
   ASSERT_EQ(kSplatRule.neighbour, 8);
   ASSERT_EQ(kSplatRule.cap_quantile, 0.9);
-  const float cap = static_cast<float>(kSplatRule.scale) * kStep * std::sqrt(2.0f);
-  EXPECT_NEAR(surface.splat_radius[25 * 50 + 25], cap, 1e-6f);
+  const float capped = kStep * std::sqrt(2.0f);
+  EXPECT_NEAR(surface.splat_radius[25 * 50 + 25], kSplatRule.scale * capped, 1e-6f);
+  const float cap = static_cast<float>(kSplatRule.edge_scale) * capped;
   EXPECT_NEAR(surface.splat_radius.back(), cap, 1e-6f);
   // Drawn, its disc spans 2 x cap x pixels per unit, give or take the pixel centres.
   const prepare::CubeFit fit = prepare::fitCube(scan.positions, "stray");
@@ -239,7 +242,7 @@ TEST(ReferenceSurfaceTest, StrayPointGetsNoWiderSplatThanTheCap) {
   const ScreenProjection project(fit, camera);
   const auto centre = project(scan.positions.back());
   const double radius_px = cap * project.pixelsPerUnit();
-  ASSERT_GT(radius_px, 5);
+  ASSERT_GT(radius_px, 4);
   cv::Mat covered;
   renderReference(surface, fit, camera, kBackground, &covered);
   int left = 1920, right = -1, top = 1080, bottom = -1;

@@ -1,0 +1,62 @@
+#pragma once
+// Where does a sampled surface end? The unorganized-scan reference (app/reference_surface.h)
+// judged against ground truth (docs/tradeoff.md, "The reference render"): synthetic scans of a
+// square whose exact silhouette is known, sampled as a scanner would, with or without stray
+// returns off its edge. The truth is rasterized with the reference's own coverage rule (a pixel
+// whose centre lies inside the projected square); anything drawn of the scan (the reference, or
+// octopoint's model of the same points) is compared with it pixel by pixel:
+//   spill = covered pixels outside the truth, holes = truth pixels not covered,
+// both as shares of the truth's pixels. octopoint-reference-truth prints the whole experiment.
+
+#include <array>
+#include <cstdint>
+#include <opencv2/core.hpp>
+#include <string>
+
+#include "codegen/cube_fit.h"
+#include "codegen/scan_loader.h"
+#include "renderer/camera.h"
+
+namespace octopoint::tradeoff {
+
+enum class Sampling {
+  kJittered,  // one point anywhere in each cell of a square grid (app/reference_closure.h)
+  kLines,     // a line scanner: lines spaced a, points along each spaced b = a / 1.5, jittered
+};
+
+struct TruthScan {
+  prepare::Scan points;  // model axes; the square lies in z = 0
+  // The square's corners, in order: the truth's outline.
+  std::array<std::array<float, 3>, 4> corners;
+  double spacing = 0;  // h: the median nearest-neighbour distance of the samples on the square
+};
+
+// The square [-1, 1]^2 at z = 0, turned 20 degrees about z (so that its edges slant across the
+// voxel grid), sampled by `sampling` with about `cells` samples (jittered) or lines (line scanner)
+// across it, plus `strays` stray returns: points in its plane, outside it, between 0.5 and 3
+// spacings from its edge (a mixed-pixel return seen from aside), and one point at z = 0.001 inside
+// it so that the fitted cube has depth. Seeded: always the same points.
+TruthScan squareScan(Sampling sampling, int cells, int strays, unsigned seed);
+
+// The truth for `camera`: CV_8U, 255 where the pixel centre lies inside the projected square (or on
+// its edge).
+cv::Mat truthMask(const TruthScan& scan, const prepare::CubeFit& fit, const Camera& camera);
+
+// How a drawn silhouette (CV_8U, non-zero = covered) meets the truth.
+struct TruthMatch {
+  std::int64_t truth = 0;        // pixels of the truth
+  std::int64_t spill = 0;        // covered pixels outside the truth
+  std::int64_t holes = 0;        // truth pixels left empty
+  std::int64_t inner_holes = 0;  // of those, more than `inset` pixels inside the truth's outline
+  std::int64_t outline = 0;      // the truth's outline length, in pixels (its boundary pixels)
+  void add(const TruthMatch& other);
+  double spillShare() const;
+  double holeShare() const;
+  double innerHoleShare() const;
+  // The spill spread along the outline: how far past the truth's edge the drawing reaches on
+  // average, in pixels (spill / outline).
+  double meanReachPx() const;
+};
+TruthMatch matchTruth(const cv::Mat& truth, const cv::Mat& covered, int inset);
+
+}  // namespace octopoint::tradeoff

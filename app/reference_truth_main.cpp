@@ -1,0 +1,188 @@
+// octopoint-reference-truth: where does an unorganized scan's surface end? The disc reference
+// (app/reference_surface.h kSplatRule) and octopoint's model of the same points, each against the
+// exact silhouette of a sampled square (app/reference_truth.h, docs/tradeoff.md "The reference
+// render"). scripts/reference-truth runs it.
+#include <cmath>
+#include <cstdio>
+#include <iostream>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "app/reference_render.h"
+#include "app/reference_truth.h"
+#include "app/splat_rule_flag.h"
+#include "app/tradeoff.h"
+#include "cli/arguments.h"
+#include "cli/error.h"
+#include "cli/numbers.h"
+#include "cli/run_tool.h"
+#include "codegen/depth_range.h"
+#include "renderer/level_of_detail.h"
+#include "renderer/render.h"
+
+namespace {
+
+using namespace octopoint;
+using tradeoff::Sampling;
+using tradeoff::TruthMatch;
+
+constexpr const char* kUsage =
+    R"(usage: octopoint-reference-truth [--cells N] [--lines N] [--strays K] [--rule RULE]
+
+Prints (markdown) how far the reference's discs (app/reference_surface.h) and octopoint's model of
+the same points reach past the true edge of a sampled square, and the holes each leaves inside it,
+as shares of the truth's pixels (docs/tradeoff.md, "The reference render"). The square is sampled
+(a) jittered, one point anywhere in each of N x N cells, and (b) as a line scanner, N lines with
+points along each 1.5 times closer; the square is turned 20 degrees in its plane; each with and without K stray returns 0.5 to 3 sample steps
+off its edge; seen head-on and turned 30 degrees, at sizes and zooms where the sample spacing spans
+about 1 to 10 pixels. octopoint draws a model of depth d, whose voxel is to the spacing what
+lms400's depth 9 is to its own (4.0 mm / 1.77 mm), and the default model at depth auto.
+
+  --cells N     samples across the square (jittered), 16..400 (default 73)
+  --lines N     lines across the square (line scanner), 16..400 (default 139)
+  --strays K    stray returns in the cases with strays, 1..1000 (default 40)
+  --rule K,SCALE,QUANTILE[,OFFSET,EDGE_SCALE]  the reference's disc rule (default kSplatRule);
+                K 1..64, SCALE 0.1..4, QUANTILE 0..1, OFFSET 0..1, EDGE_SCALE 0..4
+  -h, --help    show this help
+
+On any error prints one line on stderr and exits with status 1.
+)";
+
+// lms400's depth-9 voxel (its 2.06 m cube / 512 = 4.02 mm) over its sample spacing h = 1.77 mm.
+constexpr double kVoxelPerSpacing = 4.02 / 1.77;
+// Holes count as inside when more than this many sample spacings inside the truth's outline.
+constexpr double kInsetSpacings = 2;
+
+struct View {
+  int width, height;
+  double zoom;
+};
+const std::vector<View> kViews = {{176, 208, 0.5}, {320, 240, 0.5}, {320, 240, 1},
+                                  {640, 480, 1},   {1280, 960, 1},  {1920, 1080, 1}};
+
+Camera cameraFor(const View& view, int yaw_degrees) {
+  Camera camera;
+  camera.width = view.width;
+  camera.height = view.height;
+  camera.zoom = Q16::fromRaw(static_cast<std::int32_t>(std::lround(view.zoom * Q16::kOneRaw)));
+  camera.yaw = Angle::fromDegrees(yaw_degrees);
+  return camera;
+}
+
+// octopoint's silhouette of `level` for `camera` (the default variant, footprint splats).
+cv::Mat octopointCovered(const LevelView& level, const Camera& camera) {
+  FrameSetup setup;
+  if (buildFrameSetup(camera, level.depth, kDefaultFractionBits, &setup) != CameraError::kNone)
+    throw cli::Error("the camera is refused at depth " + std::to_string(level.depth));
+  Framebuffer frame(camera.width, camera.height);
+  frame.clear();
+  renderLevel(defaultVariant(), level, setup, frame);
+  cv::Mat covered = cv::Mat::zeros(camera.height, camera.width, CV_8U);
+  for (int y = 0; y < camera.height; ++y)
+    for (int x = 0; x < camera.width; ++x)
+      if (frame.covered(x, y)) covered.at<std::uint8_t>(y, x) = 255;
+  return covered;
+}
+
+std::string cellOf(const TruthMatch& match, double spacing_px) {
+  char text[96];
+  std::snprintf(text, sizeof text, "%.2f%% / %.2f%% (%.2f%%) / %.2f h", 100 * match.spillShare(),
+                100 * match.holeShare(), 100 * match.innerHoleShare(),
+                match.meanReachPx() / spacing_px);
+  return text;
+}
+
+void runCase(Sampling sampling, int cells, int strays, int yaw, const tradeoff::SplatRule& rule) {
+  const tradeoff::TruthScan truth = tradeoff::squareScan(sampling, cells, strays, 11);
+  tradeoff::Scene scene;
+  scene.scan_path = "synthetic square";
+  scene.scan = truth.points;
+  scene.prepare.name = "truth";
+  scene.fit = prepare::fitCube(truth.points.positions, scene.scan_path);
+  scene.surface = tradeoff::buildReferenceSurface(truth.points, rule);
+  const int depth =
+      static_cast<int>(std::lround(std::log2(scene.fit.edge / (kVoxelPerSpacing * truth.spacing))));
+  const auto matched = tradeoff::prepareInMemory(scene, {depth});
+  const auto automatic = tradeoff::prepareInMemory(scene, prepare::defaultDepths(), true);
+  std::printf(
+      "\n### %s, %d stray returns, yaw %d\n\n%zu points, h = %.4g, depth %d: voxel = %.2f h\n\n"
+      "| view | h in px | reference | octopoint depth %d | depth auto | octopoint depth auto |\n"
+      "|---|---|---|---|---|---|\n",
+      sampling == Sampling::kJittered ? "jittered" : "line scanner", strays, yaw,
+      truth.points.positions.size(), truth.spacing, depth,
+      scene.fit.edge / (1 << depth) / truth.spacing, depth);
+  TruthMatch all[3];
+  double spacing_sum = 0;
+  for (const View& view : kViews) {
+    const Camera camera = cameraFor(view, yaw);
+    const double spacing_px =
+        truth.spacing * tradeoff::ScreenProjection(scene.fit, camera).pixelsPerUnit();
+    const int inset = static_cast<int>(std::ceil(kInsetSpacings * spacing_px));
+    const cv::Mat exact = tradeoff::truthMask(truth, scene.fit, camera);
+    const LevelView* chosen = autoLevel(*automatic->view, camera);
+    if (chosen == nullptr) throw cli::Error("depth auto refused the view");
+    const TruthMatch match[3] = {
+        tradeoff::matchTruth(exact, tradeoff::referenceFor(scene, camera).silhouette, inset),
+        tradeoff::matchTruth(exact, octopointCovered(matched->view->finestLevel(), camera), inset),
+        tradeoff::matchTruth(exact, octopointCovered(*chosen, camera), inset)};
+    for (int k = 0; k < 3; ++k) all[k].add(match[k]);
+    spacing_sum += spacing_px * static_cast<double>(match[0].outline);
+    std::printf("| %dx%d zoom %g | %.2f | %s | %s | %d | %s |\n", view.width, view.height,
+                view.zoom, spacing_px, cellOf(match[0], spacing_px).c_str(),
+                cellOf(match[1], spacing_px).c_str(), chosen->depth,
+                cellOf(match[2], spacing_px).c_str());
+  }
+  // Over all views: the reach in spacings weighs each view by its outline.
+  const double spacing_px = spacing_sum / static_cast<double>(all[0].outline);
+  std::printf("| all views | | %s | %s | | %s |\n", cellOf(all[0], spacing_px).c_str(),
+              cellOf(all[1], spacing_px).c_str(), cellOf(all[2], spacing_px).c_str());
+  std::fflush(stdout);
+}
+
+int run(int argc, char** argv) {
+  // The defaults put lms400's voxel-to-spacing ratio (2.27) at depth 6 (jittered) and 7 (lines).
+  int cells = 73, lines = 139, strays = 40;
+  tradeoff::SplatRule rule = tradeoff::kSplatRule;
+  cli::ArgumentReader args(argc, argv);
+  while (args.next()) {
+    if (args.is("-h") || args.is("--help")) {
+      std::cout << kUsage;
+      return 0;
+    } else if (args.is("--cells")) {
+      const std::string name = args.name();
+      cells = cli::parseInt(name, args.value(), 16, 400);
+    } else if (args.is("--lines")) {
+      const std::string name = args.name();
+      lines = cli::parseInt(name, args.value(), 16, 400);
+    } else if (args.is("--strays")) {
+      const std::string name = args.name();
+      strays = cli::parseInt(name, args.value(), 1, 1000);
+    } else if (args.is("--rule")) {
+      const std::string name = args.name();
+      rule = tradeoff::parseSplatRule(name, args.value());
+    } else {
+      args.refuseUnknown();
+    }
+  }
+  std::printf(
+      "Each cell: spill / holes (holes more than %g h inside the outline) / mean reach past the "
+      "edge (spill over the truth's outline, in sample spacings h), as shares of the truth's "
+      "pixels.\nReference rule: k %d, scale %.2f, cap quantile %.2f, edge offset %.2f, edge scale "
+      "%.2f\n",
+      kInsetSpacings, rule.neighbour, rule.scale, rule.cap_quantile, rule.edge_offset,
+      rule.edge_scale);
+  for (const Sampling sampling : {Sampling::kJittered, Sampling::kLines}) {
+    for (const int stray_count : {0, strays}) {
+      const int across = sampling == Sampling::kLines ? lines : cells;
+      for (const int yaw : {0, 30}) runCase(sampling, across, stray_count, yaw, rule);
+    }
+  }
+  return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  return octopoint::cli::runTool("octopoint-reference-truth", argc, argv, run);
+}

@@ -1,0 +1,35 @@
+#include "app/splat_rule_flag.h"
+
+#include <vector>
+
+#include "cli/error.h"
+#include "cli/numbers.h"
+#include "cli/real_numbers.h"
+#include "cli/text.h"
+
+namespace octopoint::tradeoff {
+
+SplatRule parseSplatRule(const std::string& flag, const std::string& text) {
+  std::vector<std::string> parts;
+  for (std::size_t start = 0;;) {
+    const std::size_t comma = text.find(',', start);
+    parts.push_back(text.substr(start, comma == std::string::npos ? comma : comma - start));
+    if (comma == std::string::npos) break;
+    start = comma + 1;
+  }
+  if (parts.size() != 3 && parts.size() != 5) {
+    throw cli::Error(flag + ": " + cli::inQuotes(text) +
+                     " is not K,SCALE,QUANTILE[,EDGE_OFFSET,EDGE_SCALE]");
+  }
+  SplatRule rule{cli::parseInt(flag, parts[0], 1, 64), cli::parseReal(flag, parts[1], 0.1, 4.0),
+                 cli::parseReal(flag, parts[2], 0.0, 1.0)};
+  rule.edge_offset = 0;
+  rule.edge_scale = 0;
+  if (parts.size() == 5) {
+    rule.edge_offset = cli::parseReal(flag, parts[3], 0.0, 1.0);
+    rule.edge_scale = cli::parseReal(flag, parts[4], 0.0, 4.0);
+  }
+  return rule;
+}
+
+}  // namespace octopoint::tradeoff
