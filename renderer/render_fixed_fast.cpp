@@ -118,7 +118,7 @@ Cursor<Leaves> plotChildren(const FastFrame& f, int level, Vec3 c, Cursor<Leaves
   return {at.node + 1, leaves};
 }
 
-// The kernel of plotGrandparent for one pixel per leaf; a splat frame's is its box kernel
+// The kernel of plotGrandchildren for one pixel per leaf; a splat frame's is its box kernel
 // (SplatPlot::boxKernel).
 constexpr int kOnePixel = SplatPlot::kNoBox - 1;
 
