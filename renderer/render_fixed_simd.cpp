@@ -16,8 +16,9 @@
 // - Plot: the batch is written with an unsigned min per point (Framebuffer's packed word makes the
 //   z-test a min, and makes the result independent of the order points are drawn in), four
 //   instructions per point.
-// Subtrees straddling the frame's edge, and a model's last leaves (the eight-byte colour load
-// would read past them), use the scalar checked plot; off-screen subtrees are skipped, as in
+// Leaf parents straddling the frame's edge keep, in lanes, only their children's pixels on screen
+// (emitEdgeLeafParent); a model's last leaves (the eight-byte colour load would read past them)
+// use the scalar checked plot; off-screen subtrees are skipped, as in
 // fixed_fast. The abort flag is polled at kAbortCheckLevel.
 // Splats (FrameSetup::splat active): the same walk, instantiated again, emits each leaf's splat
 // from its first pixel (its position plus the footprint's offset, then shifted): up to 2 x 2
@@ -191,6 +192,83 @@ __attribute__((target("avx2"))) inline __m256i biasedDepthLanes(const SimdFrame&
   return _mm256_set1_epi32(static_cast<std::int32_t>(f.target.biasedDepth(c.z)));
 }
 
+// One bit per lane: whether a < b (signed).
+__attribute__((target("avx2"), always_inline)) inline unsigned below(__m256i a, __m256i b) {
+  return simd::lowBits(_mm256_cmpgt_epi32(b, a));
+}
+
+// A leaf parent on the frame's edge (its subtree straddles it) centred at `c`, with child mask
+// `mask` (already read), whose eight colour bytes are in the stream, in lanes as in the unchecked
+// walk: one pixel per leaf, the children on screen go to the batch; footprints of up to
+// kMostBoxPixels pixels, each pixel of the box for the children that have it on screen; larger
+// ones, the children whose rectangle lies wholly on screen, and only those partly on it take the
+// scalar checked plot (those wholly off it are passed). Zoomed in on a small
+// screen, the frame's edge cuts many leaf parents, and the scalar plot of each child's clipped
+// rectangle was up to 14% of the frame (lms400 176x208 zoom 4, 2x2 splats).
+template <EmitMode kEmit, typename Leaves>
+__attribute__((target("avx2"))) void emitEdgeLeafParent(SimdFrame& f, int level, Vec3 c,
+                                                        unsigned mask, Leaves& leaves) {
+  constexpr bool kSplat = kEmit.emit != Emit::kPixel;
+  if (f.batched > (kSplat ? f.splat_batch_limit : kPixelBatchLimit)) flushBatch<kEmit>(f);
+  const LeafLanes lanes = leafLanes(f);
+  const auto l = static_cast<std::size_t>(level);
+  Vec3 first = c;  // the splat's first pixel (mod 2^32, as lanes add), as emitSubtree
+  if constexpr (kSplat) {
+    first.x += f.splat.footprint.offset_x;
+    first.y += f.splat.footprint.offset_y;
+  }
+  // Q(32-F).F per child lane.
+  const __m256i x = _mm256_add_epi32(_mm256_set1_epi32(first.x), f.child_lanes[0][l]);
+  const __m256i y = _mm256_add_epi32(_mm256_set1_epi32(first.y), f.child_lanes[1][l]);
+  // Each child's first and last column and row on screen (SplatFootprint; one pixel: first = last).
+  const __m256i column = _mm256_sra_epi32(x, lanes.fraction_bits);
+  const __m256i row = _mm256_sra_epi32(y, lanes.fraction_bits);
+  __m256i last_column = column;
+  __m256i last_row = row;
+  if constexpr (kSplat) {
+    last_column = _mm256_sra_epi32(_mm256_add_epi32(x, lanes.span_x), lanes.fraction_bits);
+    last_row = _mm256_sra_epi32(_mm256_add_epi32(y, lanes.span_y), lanes.fraction_bits);
+  }
+  const __m256i zero = _mm256_setzero_si256();
+  const __m256i height = _mm256_set1_epi32(f.target.height);
+  const unsigned all = 0xffu;
+  const unsigned inside = mask & ~below(column, zero) & ~below(row, zero) &
+                          below(last_column, lanes.width) & below(last_row, height);
+  const unsigned outside = below(last_column, zero) | (all & ~below(column, lanes.width)) |
+                           below(last_row, zero) | (all & ~below(row, height));
+  // Small footprints: per column and row of the box, the children that have it on screen.
+  simd::BoxOnScreen box_on_screen;
+  if constexpr (kEmit.emit == Emit::kSplatPixels) {
+    const int columns = kEmit.box_columns != 0 ? kEmit.box_columns : f.splat.footprint.columns;
+    const int rows = kEmit.box_rows != 0 ? kEmit.box_rows : f.splat.footprint.rows;
+    for (int k = 0; k < columns; ++k) {
+      const __m256i at = _mm256_add_epi32(column, _mm256_set1_epi32(k));
+      box_on_screen.column_drawn[k] = ~below(at, zero) & below(at, lanes.width);
+    }
+    for (int k = 0; k < rows; ++k) {
+      const __m256i at = _mm256_add_epi32(row, _mm256_set1_epi32(k));
+      box_on_screen.row_drawn[k] = ~below(at, zero) & below(at, height);
+    }
+  }
+  const Leaves at = leaves;  // the children's payloads, for the scalar plot
+  Emitter<Leaves> out{f.batch_index, f.batch_word, leaves, f.batch_extent,
+                      static_cast<std::size_t>(f.batched)};
+  simd::emitChildrenOf<kEmit, true>(
+      lanes, x, y, _mm256_add_epi32(biasedDepthLanes(f, c), f.child_lanes[2][l]), mask,
+      kEmit.emit == Emit::kSplatPixels ? mask : inside, out, &box_on_screen);
+  f.batched = static_cast<int>(out.count);
+  leaves = out.leaves;
+  if constexpr (kEmit.emit == Emit::kSplatRects) {
+    const auto& offsets = (*f.offsets)[l];
+    for (unsigned partly = mask & ~inside & ~outside; partly != 0; partly &= partly - 1) {
+      const auto k = static_cast<unsigned>(std::countr_zero(partly));
+      Leaves leaf = at;
+      leaf.skip(static_cast<std::size_t>(std::popcount(mask & ((1u << k) - 1))));
+      f.splat.plot<true, Leaves::kPayload>(c + offsets[k], leaf.next());
+    }
+  }
+}
+
 // The leaf parents below a grandparent at `level` whose centre is `cx`, `cy`, `biased_cz` in every
 // lane, with child mask `mask` (already read), whose subtree is on screen: reads their masks from
 // `node` on, returns the node after.
@@ -319,7 +397,11 @@ __attribute__((target("avx2"))) const std::uint8_t* visit(SimdFrame& f, int leve
     }
   }
   if (levels_below == 1) {
-    plotChildrenChecked<kSplat, Leaves>(f, level, c, mask, leaves);
+    if (kChecked && f.leaf_end - leaves.colour >= 8) {
+      emitEdgeLeafParent<kEmit, Leaves>(f, level, c, mask, leaves);
+    } else {
+      plotChildrenChecked<kSplat, Leaves>(f, level, c, mask, leaves);
+    }
     return node;
   }
   const auto& offsets = (*f.offsets)[static_cast<std::size_t>(level)];
@@ -371,6 +453,8 @@ Emit chooseEmit(const SplatFootprint& splat, std::int32_t width, SimdFrame& f) {
         f.box.offset[p] = static_cast<std::uint32_t>(r * width + c);
         f.box.edge[p] = static_cast<std::uint8_t>((c + 1 == splat.columns ? 1 : 0) |
                                                   (r + 1 == splat.rows ? 2 : 0));
+        f.box.column[p] = static_cast<std::uint8_t>(c);
+        f.box.row[p] = static_cast<std::uint8_t>(r);
       }
     }
     // Up to 512 leaves per call while their boxes fit the batch, else 64.

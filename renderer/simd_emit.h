@@ -80,6 +80,15 @@ struct SplatBox {
   int pixels = 0;
   std::uint32_t offset[kMostBoxPixels] = {};
   std::uint8_t edge[kMostBoxPixels] = {};
+  std::uint8_t column[kMostBoxPixels] = {};  // each pixel's column and row in the box
+  std::uint8_t row[kMostBoxPixels] = {};
+};
+
+// Emit::kSplatPixels on the frame's edge: per column (row) of the box, one bit per child lane,
+// whether that column (row) of the child's splat is on screen.
+struct BoxOnScreen {
+  unsigned column_drawn[kMostBoxPixels];
+  unsigned row_drawn[kMostBoxPixels];
 };
 
 // Where the unchecked walk appends: the batch's arrays, how many entries they hold, and the next
@@ -196,20 +205,32 @@ __attribute__((target("avx2"), always_inline)) inline void emitBox(const LeafLan
 // out.leaves. Splats (kEmit, renderer/splat_footprint.h): x and y include the footprint's
 // offsets, so the index is the splat's first pixel; each point's columns and rows go to
 // out.extent (kSplatRects), or each pixel of the footprint's box becomes an entry (kSplatPixels).
-template <EmitMode kEmit, typename Leaves>
-__attribute__((target("avx2"), always_inline)) inline void emitChildren(
-    const LeafLanes& lanes, __m256i x, __m256i y, __m256i biased_z, unsigned mask, Emitter<Leaves>& out) {
+// kSubset (a leaf parent on the frame's edge): only the children `drawn` (a subset of `mask`) are
+// appended, and for kSplatPixels each pixel of the box in column c and row r only for the children
+// that have it on screen (edge->column_drawn[c] & edge->row_drawn[r]); the leaf cursor still passes
+// all of `mask`'s. Otherwise `drawn` is `mask`.
+template <EmitMode kEmit, bool kSubset, typename Leaves>
+__attribute__((target("avx2"), always_inline)) inline void emitChildrenOf(
+    const LeafLanes& lanes, __m256i x, __m256i y, __m256i biased_z, unsigned mask, unsigned drawn,
+    Emitter<Leaves>& out, const BoxOnScreen* edge = nullptr) {
   // Pixel column and row: floor(x / 2^F); index = row * width + column (< 2^26).
   const __m256i column = _mm256_sra_epi32(x, lanes.fraction_bits);
   const __m256i row = _mm256_sra_epi32(y, lanes.fraction_bits);
   const __m256i index = _mm256_add_epi32(_mm256_mullo_epi32(row, lanes.width), column);
   // Depth key (FrameSetup::depthKey): (z + bias) >> shift, unsigned, mod 2^32.
   const __m256i key = _mm256_srl_epi32(biased_z, lanes.depth_shift);
-  const __m256i keep =
-      _mm256_cvtepu8_epi32(_mm_loadl_epi64(reinterpret_cast<const __m128i*>(&kKeep[mask])));
+  const __m256i keep = laneControl(kKeep, drawn);
   const __m256i colour = payloadLanes(out.leaves);
+  // The payloads are in stream order: all of them kept, they match the kept keys; a subset moves
+  // them to their children's lanes first (kSpread), then keeps those drawn.
   const __m256i word =
-      _mm256_or_si256(keyBits<Leaves::kPayload>(_mm256_permutevar8x32_epi32(key, keep)), colour);
+      kSubset
+          ? _mm256_permutevar8x32_epi32(
+                _mm256_or_si256(keyBits<Leaves::kPayload>(key),
+                                _mm256_permutevar8x32_epi32(colour, laneControl(kSpread, mask))),
+                keep)
+          : _mm256_or_si256(keyBits<Leaves::kPayload>(_mm256_permutevar8x32_epi32(key, keep)),
+                            colour);
   const int children = std::popcount(mask);
   out.leaves.skip(static_cast<std::size_t>(children));
   if constexpr (kEmit.emit == Emit::kSplatPixels) {
@@ -223,10 +244,31 @@ __attribute__((target("avx2"), always_inline)) inline void emitChildren(
         index,
         _mm256_or_si256(keyBits<Leaves::kPayload>(key),
                         _mm256_permutevar8x32_epi32(colour, laneControl(kSpread, mask))),
-        mask,
+        drawn,
         lowBits(_mm256_cmpgt_epi32(_mm256_add_epi32(column, lanes.columns_less_one), last_column)),
         lowBits(_mm256_cmpgt_epi32(_mm256_add_epi32(row, lanes.rows_less_one), last_row))};
-    if constexpr (kEmit.box_columns != 0) {
+    if constexpr (kSubset && kEmit.box_columns != 0) {
+      for (int r = 0; r < kEmit.box_rows; ++r) {
+        for (int c = 0; c < kEmit.box_columns; ++c) {
+          BoxChildren on_screen = box;
+          on_screen.mask &= edge->column_drawn[c] & edge->row_drawn[r];
+          emitBoxPixel(
+              on_screen,
+              static_cast<std::uint32_t>(r) * lanes.row_pixels + static_cast<std::uint32_t>(c),
+              kEmit.box_columns > 1 && c + 1 == kEmit.box_columns,
+              kEmit.box_rows > 1 && r + 1 == kEmit.box_rows, out);
+        }
+      }
+    } else if constexpr (kSubset) {
+      const SplatBox& frame_box = *lanes.box;
+      for (int p = 0; p < frame_box.pixels; ++p) {
+        BoxChildren on_screen = box;
+        on_screen.mask &=
+            edge->column_drawn[frame_box.column[p]] & edge->row_drawn[frame_box.row[p]];
+        emitBoxPixel(on_screen, frame_box.offset[p], (frame_box.edge[p] & 1) != 0,
+                     (frame_box.edge[p] & 2) != 0, out);
+      }
+    } else if constexpr (kEmit.box_columns != 0) {
       emitBox<kEmit.box_columns, kEmit.box_rows, kEmit.rare_last_row>(lanes, box, out);
     } else {
       const SplatBox& frame_box = *lanes.box;
@@ -249,7 +291,18 @@ __attribute__((target("avx2"), always_inline)) inline void emitChildren(
     _mm256_storeu_si256(reinterpret_cast<__m256i*>(out.extent + out.count),
                         _mm256_permutevar8x32_epi32(extent, keep));
   }
-  out.append(_mm256_permutevar8x32_epi32(index, keep), word, static_cast<unsigned>(children));
+  out.append(_mm256_permutevar8x32_epi32(index, keep), word,
+             static_cast<unsigned>(std::popcount(drawn)));
+}
+
+// All the set children of `mask`: emitChildrenOf with `drawn` = `mask`.
+template <EmitMode kEmit, typename Leaves>
+__attribute__((target("avx2"), always_inline)) inline void emitChildren(const LeafLanes& lanes,
+                                                                        __m256i x, __m256i y,
+                                                                        __m256i biased_z,
+                                                                        unsigned mask,
+                                                                        Emitter<Leaves>& out) {
+  emitChildrenOf<kEmit, false>(lanes, x, y, biased_z, mask, mask, out);
 }
 
 }  // namespace octopoint::simd
