@@ -218,6 +218,15 @@ __attribute__((noinline)) Cursor<Leaves> plotSubtree(const FastFrame& f, int lev
   }
 }
 
+// The box kernels plotSubtree is compiled for (SplatPlot::boxKernel indices); another footprint
+// takes the kNoBox kernel. Each is a whole loop nest per leaf type, about 1.3 KB of Thumb code on
+// a Cortex-M0+: a bare-metal build, short of flash, keeps the footprints up to 2 x 2 only.
+#if defined(OCTOPOINT_BARE_METAL)
+using SubtreeBoxKernels = std::integer_sequence<int, 0, 1, kMostBoxSide, kMostBoxSide + 1>;
+#else
+using SubtreeBoxKernels = std::make_integer_sequence<int, kMostBoxSide * kMostBoxSide>;
+#endif
+
 template <bool kChecked, bool kSplat, typename Leaves>
 Cursor<Leaves> visit(const FastFrame& f, int level, Vec3 c, Cursor<Leaves> at) {
   if (level <= kAbortCheckLevel && f.abort != nullptr) {
@@ -249,8 +258,7 @@ Cursor<Leaves> visit(const FastFrame& f, int level, Vec3 c, Cursor<Leaves> at) {
   const int levels_below = f.levels - level;
   if (!kChecked && (levels_below == 2 ||
                     (levels_below == 3 && (level + 1 > kAbortCheckLevel || f.abort == nullptr)))) {
-    return plotSubtree<kSplat, Leaves>(f, level, levels_below, c, at,
-                                       std::make_integer_sequence<int, kMostBoxSide * kMostBoxSide>{});
+    return plotSubtree<kSplat, Leaves>(f, level, levels_below, c, at, SubtreeBoxKernels{});
   }
   const auto& offsets = (*f.offsets)[static_cast<std::size_t>(level)];
   unsigned mask = *at.node++;
