@@ -119,7 +119,7 @@ Cursor<Leaves> plotChildren(const FastFrame& f, int level, Vec3 c, Cursor<Leaves
 }
 
 // The kernel of plotGrandchildren for one pixel per leaf; a splat frame's is its box kernel
-// (SplatPlot::boxKernel).
+// (SplatPlot::withBoxKernel).
 constexpr int kOnePixel = SplatPlot::kNoBox - 1;
 
 // A grandparent at tree level `level` centred at `c`, whose subtree is on screen, plots its
@@ -196,8 +196,8 @@ __attribute__((always_inline)) inline Cursor<Leaves> plotGreatGrandchildren(cons
 }
 
 // The subtree of an on-screen node `levels_below` (2 or 3) levels above the leaves, in one call,
-// with the frame's leaf kernel: one pixel, or the splat's box kernel (SplatPlot::boxKernel, chosen
-// per call: a jump, not a test per leaf).
+// with the frame's leaf kernel: one pixel, or the splat's box kernel (SplatPlot::withBoxKernel,
+// chosen per call: a jump, not a test per leaf).
 template <int kKernel, typename Leaves>
 Cursor<Leaves> plotSubtreeWith(const FastFrame& f, int level, int levels_below, Vec3 c, Cursor<Leaves> at) {
   if (levels_below == 2) return plotGrandchildren<kKernel, Leaves>(f, level, c, at);
@@ -209,16 +209,16 @@ __attribute__((noinline)) Cursor<Leaves> plotSubtree(const FastFrame& f, int lev
   if constexpr (!kSplat) {
     return plotSubtreeWith<kOnePixel, Leaves>(f, level, levels_below, c, at);
   } else {
-    const int box = f.splat.boxKernel();
-    if (!((box == kBox ? (at = plotSubtreeWith<kBox, Leaves>(f, level, levels_below, c, at), true) : false) ||
-          ...)) {
-      at = plotSubtreeWith<SplatPlot::kNoBox, Leaves>(f, level, levels_below, c, at);
-    }
+    f.splat.withBoxKernel(std::integer_sequence<int, kBox...>{},
+                          [&](auto kernel) __attribute__((always_inline)) {
+                            at = plotSubtreeWith<decltype(kernel)::value, Leaves>(
+                                f, level, levels_below, c, at);
+                          });
     return at;
   }
 }
 
-// The box kernels plotSubtree is compiled for (SplatPlot::boxKernel indices); another footprint
+// The box kernels plotSubtree is compiled for (SplatPlot kernel indices); another footprint
 // takes the kNoBox kernel. Each is a whole loop nest per leaf type, about 1.3 KB of Thumb code on
 // a Cortex-M0+: a bare-metal build, short of flash, keeps the footprints up to 2 x 2 only.
 #if defined(OCTOPOINT_BARE_METAL)

@@ -11,6 +11,7 @@
 #include <algorithm>
 #include <cassert>
 #include <cstdint>
+#include <type_traits>
 #include <utility>
 
 #include "renderer/framebuffer_plot.h"
@@ -58,18 +59,28 @@ struct SplatPlot : PlotTarget {
       fill<true>(x >> fraction_bits, ((x + footprint.span_x) >> fraction_bits) + 1, y >> fraction_bits,
                  ((y + footprint.span_y) >> fraction_bits) + 1, word);
     } else {
-      plotBox(std::make_integer_sequence<int, kMostBoxSide * kMostBoxSide>{}, x, y, word);
+      plotByKernel(x, y, word);
     }
   }
 
   // Which kernel writes this frame's unchecked splats (plotUnchecked): the box of the footprint,
   // box = (rows - 1) * kMostBoxSide + columns - 1, or kNoBox for footprints past 4 x 4.
   static constexpr int kNoBox = -1;
-  int boxKernel() const { return box; }
+
+  // Calls `draw` with std::integral_constant<int, K>, K this frame's box kernel if it is one of
+  // kBox..., kNoBox otherwise: one jump per call, and the kernel a constant inside it, for a
+  // caller that draws one leaf (plot) or a whole subtree (fixed_fast) by it.
+  template <int... kBox, typename Draw>
+  __attribute__((always_inline)) void withBoxKernel(std::integer_sequence<int, kBox...>,
+                                                    Draw&& draw) const {
+    if (!((box == kBox ? (draw(std::integral_constant<int, kBox>{}), true) : false) || ...)) {
+      draw(std::integral_constant<int, kNoBox>{});
+    }
+  }
 
   // The unchecked splat whose first pixel is at (x, y), Q(32-F).F (a leaf's position plus the
-  // footprint's offset), of packed word `word`, by kernel kBox (boxKernel(): the caller chooses it
-  // once, not per leaf).
+  // footprint's offset), of packed word `word`, by kernel kBox (withBoxKernel: the caller chooses
+  // it once, not per leaf).
   template <int kBox>
   __attribute__((always_inline)) void plotUnchecked(std::int32_t x, std::int32_t y, std::uint32_t word) const {
     const std::int32_t x_begin = x >> fraction_bits, x_end = ((x + footprint.span_x) >> fraction_bits) + 1;
@@ -92,12 +103,13 @@ struct SplatPlot : PlotTarget {
   SplatFootprint footprint;
 
  private:
-  // plotUnchecked by this frame's kernel, chosen per leaf.
-  template <int... kBox>
-  void plotBox(std::integer_sequence<int, kBox...>, std::int32_t x, std::int32_t y, std::uint32_t word) const {
-    if (!((box == kBox ? (plotUnchecked<kBox>(x, y, word), true) : false) || ...)) {
-      plotUnchecked<kNoBox>(x, y, word);
-    }
+  // plotUnchecked by this frame's kernel, chosen per leaf: one function whatever the payload or
+  // caller, not a copy of the 16 kernels' dispatch inlined into each (about 3.3 KB of Thumb code).
+  void plotByKernel(std::int32_t x, std::int32_t y, std::uint32_t word) const {
+    withBoxKernel(std::make_integer_sequence<int, kMostBoxSide * kMostBoxSide>{},
+                  [&](auto kernel) __attribute__((always_inline)) {
+                    plotUnchecked<decltype(kernel)::value>(x, y, word);
+                  });
   }
 
   int box;                // which box kernel, or kNoBox for footprints past 4 x 4
