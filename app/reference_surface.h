@@ -32,10 +32,12 @@ inline constexpr double kMaxEdgeGridSteps = 8;
 // true edge lies somewhere between the last ray that hit it and the first that missed, and a mesh
 // that ends at the last hits falls short of it. Each boundary edge of the triangulation (an edge
 // of one triangle only) gets a strip this many grid steps wide, outward in the grid and lifted onto
-// the boundary triangle's own plane; a convex corner between two such strips is filled. 0: none
-// yet; the exact silhouette of a square seen by a synthetic depth camera (app/reference_truth.h,
-// scripts/reference-truth --mesh-extension) measures what each amount gives.
-inline constexpr double kMeshExtensionSteps = 0;
+// the boundary triangle's own plane; a convex corner between two such strips is filled. Against
+// the exact silhouette of a square seen by a synthetic depth camera (app/reference_truth.h,
+// scripts/reference-truth --mesh-extension), the mesh ends on average 0.46 to 0.68 sample spacings
+// short of the true edge without it; 0.45 steps (of 0.05) puts it closest, within 0.04 spacings
+// (0.4: 0.04 to 0.10 short, 0.5: 0.04 to 0.11 past).
+inline constexpr double kMeshExtensionSteps = 0.45;
 // How an unorganized scan's points become discs (docs/tradeoff.md, "The reference render"): a
 // point's radius is `scale` x the distance to its `neighbour`-th nearest neighbour, that distance
 // capped at its `cap_quantile` quantile over the scan (a stray return far from everything samples
