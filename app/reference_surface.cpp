@@ -66,12 +66,11 @@ void extendBoundary(const prepare::Scan& points, double steps, ReferenceSurface&
   for (const auto& t : surface.triangles) {
     for (std::size_t k = 0; k < 3; ++k) {
       const std::uint32_t from = t[k], to = t[(k + 1) % 3], opposite = t[(k + 2) % 3];
-      sides.push_back({std::uint64_t{std::min(from, to)} << 32 | std::max(from, to), from, to,
-                       opposite});
+      sides.push_back(
+          {std::uint64_t{std::min(from, to)} << 32 | std::max(from, to), from, to, opposite});
     }
   }
-  std::sort(sides.begin(), sides.end(),
-            [](const Side& x, const Side& y) { return x.key < y.key; });
+  std::sort(sides.begin(), sides.end(), [](const Side& x, const Side& y) { return x.key < y.key; });
   // Per boundary vertex, its boundary edges' outward unit normals in the grid and the affine map
   // (grid to space) of their triangles, to fill the corner between two of them.
   struct Outward {
@@ -144,11 +143,11 @@ void extendBoundary(const prepare::Scan& points, double steps, ReferenceSurface&
         const Vec3 to_mid_x = lift(x.map, mid), to_mid_y = lift(y.map, mid);
         const Vec3 to_mid = {(to_mid_x[0] + to_mid_y[0]) / 2, (to_mid_x[1] + to_mid_y[1]) / 2,
                              (to_mid_x[2] + to_mid_y[2]) / 2};
-        const std::uint32_t xs = append(
-            plus(p, lift(x.map, {x.normal[0] * steps, x.normal[1] * steps})), v);
+        const std::uint32_t xs =
+            append(plus(p, lift(x.map, {x.normal[0] * steps, x.normal[1] * steps})), v);
         const std::uint32_t ms = append(plus(p, to_mid), v);
-        const std::uint32_t ys = append(
-            plus(p, lift(y.map, {y.normal[0] * steps, y.normal[1] * steps})), v);
+        const std::uint32_t ys =
+            append(plus(p, lift(y.map, {y.normal[0] * steps, y.normal[1] * steps})), v);
         surface.triangles.push_back({v, xs, ms});
         surface.triangles.push_back({v, ms, ys});
       }

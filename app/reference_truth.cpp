@@ -147,8 +147,8 @@ TruthScan depthCameraScan(int across, double distance, double tilt_degrees, unsi
         ++points.dropped_non_finite;  // the ray misses: NaN in a depth image
         continue;
       }
-      points.positions.push_back({static_cast<float>(hit[0]), static_cast<float>(hit[1]),
-                                  static_cast<float>(hit[2])});
+      points.positions.push_back(
+          {static_cast<float>(hit[0]), static_cast<float>(hit[1]), static_cast<float>(hit[2])});
       points.grid_index.push_back(static_cast<std::uint32_t>(row * width + col));
     }
   }

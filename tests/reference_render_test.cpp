@@ -93,11 +93,11 @@ TEST(ReferenceRender, OrganizedPlaneCoversExactlyItsOutlineAtEverySizeAndZoom) {
   // The outline's corners in grid coordinates, at depth 1: the samples', and pushed out.
   const auto outline = [&](double out) {
     std::vector<std::array<float, 3>> corners;
-    for (const auto& [col, row] : {std::pair{-out, -out}, std::pair{columns - 1 + out, -out},
-                                   std::pair{columns - 1 + out, rows - 1 + out},
-                                   std::pair{-out, rows - 1 + out}}) {
-      corners.push_back({static_cast<float>((col - cx) / focal),
-                         static_cast<float>((row - cy) / focal), 1.0f});
+    for (const auto& [col, row] :
+         {std::pair{-out, -out}, std::pair{columns - 1 + out, -out},
+          std::pair{columns - 1 + out, rows - 1 + out}, std::pair{-out, rows - 1 + out}}) {
+      corners.push_back(
+          {static_cast<float>((col - cx) / focal), static_cast<float>((row - cy) / focal), 1.0f});
     }
     return corners;
   };
@@ -126,9 +126,9 @@ TEST(ReferenceRender, OrganizedPlaneCoversExactlyItsOutlineAtEverySizeAndZoom) {
               spills += on && insideBy(corners, x + 0.5, y + 0.5, -1e-6);
             }
           }
-          const std::string view = std::to_string(width) + "x" + std::to_string(height) +
-                                   " zoom " + std::to_string(zoom) + " yaw " +
-                                   std::to_string(yaw) + (extend ? ", extended" : "");
+          const std::string view = std::to_string(width) + "x" + std::to_string(height) + " zoom " +
+                                   std::to_string(zoom) + " yaw " + std::to_string(yaw) +
+                                   (extend ? ", extended" : "");
           EXPECT_EQ(holes, 0) << view;
           EXPECT_EQ(spills, 0) << view;
         }
