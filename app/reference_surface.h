@@ -27,6 +27,17 @@ namespace octopoint::tradeoff {
 // jump in depth, not a surface: a surface seen at up to acos(1/8) = 83 degrees from face-on, or a
 // depth camera's quantized depth (a Kinect's step is about 1.7 grid steps at 1 m), stays joined.
 inline constexpr double kMaxEdgeGridSteps = 8;
+// How far past its last samples a depth image's mesh goes, in grid steps (docs/tradeoff.md, "Where
+// the surface ends"): a depth camera's sample is the ray through a pixel centre, so the surface's
+// true edge lies somewhere between the last ray that hit it and the first that missed, and a mesh
+// that ends at the last hits falls short of it. Each boundary edge of the triangulation (an edge
+// of one triangle only) gets a strip this many grid steps wide, outward in the grid and lifted onto
+// the boundary triangle's own plane; a convex corner between two such strips is filled. Against
+// the exact silhouette of a square seen by a synthetic depth camera (app/reference_truth.h,
+// scripts/reference-truth --mesh-extension), the mesh ends on average 0.46 to 0.68 sample spacings
+// short of the true edge without it; 0.45 steps (of 0.05) puts it closest, within 0.04 spacings
+// (0.4: 0.04 to 0.10 short, 0.5: 0.04 to 0.11 past).
+inline constexpr double kMeshExtensionSteps = 0.45;
 // How an unorganized scan's points become discs (docs/tradeoff.md, "The reference render"): a
 // point's radius is `scale` x the distance to its `neighbour`-th nearest neighbour, that distance
 // capped at its `cap_quantile` quantile over the scan (a stray return far from everything samples
@@ -55,10 +66,12 @@ struct SplatRule {
 inline constexpr SplatRule kSplatRule{8, 0.7, 0.9, 0.6, 0.25};
 
 struct ReferenceSurface {
-  // The points (model axes, scan units) and their colours, as given.
+  // The points (model axes, scan units) and their colours, as given; an organized scan's mesh
+  // extension (kMeshExtensionSteps) appends the outer corners of its strips after them.
   std::vector<std::array<float, 3>> positions;
   std::vector<std::array<std::uint8_t, 3>> colours;  // empty: the points are drawn light grey
-  // Organized scan: triangles as indices into positions (wound as the grid gives them).
+  // Organized scan: triangles as indices into positions (wound as the grid gives them), then the
+  // strips past the boundary.
   std::vector<std::array<std::uint32_t, 3>> triangles;
   // Unorganized scan: one splat radius per position, in scan units (empty when organized).
   std::vector<float> splat_radius;
@@ -68,8 +81,11 @@ struct ReferenceSurface {
 // whose sensor sat at the origin of its own frame (true of depth-camera clouds; the model's axes
 // only turn about that origin) is meshed; any other is splatted (with fewer than rule.neighbour +
 // 1 points, the farthest other point gives the radius; a single point has radius 0).
+// `mesh_extension` is the strip past an organized scan's boundary, in grid steps (0: the mesh
+// ends at the last samples).
 ReferenceSurface buildReferenceSurface(const prepare::Scan& points,
-                                       const SplatRule& rule = kSplatRule);
+                                       const SplatRule& rule = kSplatRule,
+                                       double mesh_extension = kMeshExtensionSteps);
 
 // Each position's distance to its `neighbour`-th nearest other position (PCL k-d tree; with fewer
 // others, the farthest; 0 for a single position).

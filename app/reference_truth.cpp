@@ -88,6 +88,74 @@ TruthScan squareScan(Sampling sampling, int cells, int strays, unsigned seed) {
   return scan;
 }
 
+TruthScan depthCameraScan(int across, double distance, double tilt_degrees, unsigned seed) {
+  TruthScan scan;
+  constexpr double kPi = 3.14159265358979323846;
+  const double turn = kTurnDegrees * kPi / 180, tilt = tilt_degrees * kPi / 180;
+  // The square's own axes a, b (unit vectors; turned in its plane, then tilted about x) and its
+  // centre c; its points are c + u a + v b for u, v in [-1, 1].
+  const double a[3] = {std::cos(turn), std::sin(turn) * std::cos(tilt),
+                       std::sin(turn) * std::sin(tilt)};
+  const double b[3] = {-std::sin(turn), std::cos(turn) * std::cos(tilt),
+                       std::cos(turn) * std::sin(tilt)};
+  const double c[3] = {0, 0, distance};
+  const double normal[3] = {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2],
+                            a[0] * b[1] - a[1] * b[0]};
+  const auto point = [&](double u, double v) -> std::array<double, 3> {
+    return {c[0] + u * a[0] + v * b[0], c[1] + u * a[1] + v * b[1], c[2] + u * a[2] + v * b[2]};
+  };
+  for (std::size_t i = 0; i < 4; ++i) {
+    const double u = i == 0 || i == 3 ? -1 : 1, v = i < 2 ? -1 : 1;
+    const auto p = point(u, v);
+    scan.corners[i] = {static_cast<float>(p[0]), static_cast<float>(p[1]),
+                       static_cast<float>(p[2])};
+  }
+  // Pixel (col, row)'s ray is ((col - cx) / f, (row - cy) / f, 1): `across` steps over the side (2)
+  // at the centre's distance.
+  const double focal = across * distance / 2;
+  double low[2] = {1e300, 1e300}, high[2] = {-1e300, -1e300};
+  for (const auto& corner : scan.corners) {
+    for (std::size_t k = 0; k < 2; ++k) {
+      const double image = focal * corner[k] / corner[2];
+      low[k] = std::min(low[k], image), high[k] = std::max(high[k], image);
+    }
+  }
+  std::mt19937 random(seed);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  constexpr int kMargin = 3;  // grid steps of misses around the square's image
+  const double cx = kMargin - std::floor(low[0]) + unit(random);
+  const double cy = kMargin - std::floor(low[1]) + unit(random);
+  const int width = static_cast<int>(std::ceil(high[0] + cx)) + kMargin;
+  const int height = static_cast<int>(std::ceil(high[1] + cy)) + kMargin;
+  prepare::Scan& points = scan.points;
+  points.organized = true;
+  points.grid_width = static_cast<std::uint32_t>(width);
+  points.grid_height = static_cast<std::uint32_t>(height);
+  points.points_in_file = static_cast<std::size_t>(width) * static_cast<std::size_t>(height);
+  const double plane = normal[0] * c[0] + normal[1] * c[1] + normal[2] * c[2];
+  for (int row = 0; row < height; ++row) {
+    for (int col = 0; col < width; ++col) {
+      const double ray[3] = {(col - cx) / focal, (row - cy) / focal, 1};
+      const double along = plane / (normal[0] * ray[0] + normal[1] * ray[1] + normal[2] * ray[2]);
+      double hit[3], local[2] = {0, 0};
+      for (std::size_t k = 0; k < 3; ++k) hit[k] = along * ray[k];
+      for (std::size_t k = 0; k < 3; ++k) {
+        local[0] += (hit[k] - c[k]) * a[k];
+        local[1] += (hit[k] - c[k]) * b[k];
+      }
+      if (!(along > 0) || std::fabs(local[0]) > 1 || std::fabs(local[1]) > 1) {
+        ++points.dropped_non_finite;  // the ray misses: NaN in a depth image
+        continue;
+      }
+      points.positions.push_back(
+          {static_cast<float>(hit[0]), static_cast<float>(hit[1]), static_cast<float>(hit[2])});
+      points.grid_index.push_back(static_cast<std::uint32_t>(row * width + col));
+    }
+  }
+  scan.spacing = median(neighbourDistances(points.positions, 1));
+  return scan;
+}
+
 cv::Mat truthMask(const TruthScan& scan, const prepare::CubeFit& fit, const Camera& camera) {
   const ScreenProjection project(fit, camera);
   std::array<std::array<double, 3>, 4> corner;
@@ -125,6 +193,7 @@ double TruthMatch::spillShare() const { return shareOf(spill, truth); }
 double TruthMatch::holeShare() const { return shareOf(holes, truth); }
 double TruthMatch::innerHoleShare() const { return shareOf(inner_holes, truth); }
 double TruthMatch::meanReachPx() const { return shareOf(spill, outline); }
+double TruthMatch::meanOffsetPx() const { return shareOf(spill - holes, outline); }
 
 TruthMatch matchTruth(const cv::Mat& truth, const cv::Mat& covered, int inset) {
   // The truth goes on past the frame's border as it reaches it: the border is no outline.

@@ -1,10 +1,11 @@
 #pragma once
-// Where does a sampled surface end? The unorganized-scan reference (app/reference_surface.h)
-// judged against ground truth (docs/tradeoff.md, "The reference render"): synthetic scans of a
-// square whose exact silhouette is known, sampled as a scanner would, with or without stray
-// returns off its edge. The truth is rasterized with the reference's own coverage rule (a pixel
-// whose centre lies inside the projected square); anything drawn of the scan (the reference, or
-// octopoint's model of the same points) is compared with it pixel by pixel:
+// Where does a sampled surface end? The reference (app/reference_surface.h: discs for an
+// unorganized scan, a mesh for a depth image) judged against ground truth (docs/tradeoff.md, "The
+// reference render"): synthetic scans of a square whose exact silhouette is known, sampled as a
+// scanner or a depth camera would, with or without stray returns off its edge. The truth is
+// rasterized with the reference's own coverage rule (a pixel whose centre lies inside the projected
+// square); anything drawn of the scan (the reference, or octopoint's model of the same points) is
+// compared with it pixel by pixel:
 //   spill = covered pixels outside the truth, holes = truth pixels not covered,
 // both as shares of the truth's pixels. octopoint-reference-truth prints the whole experiment.
 
@@ -38,6 +39,16 @@ struct TruthScan {
 // it so that the fitted cube has depth. Seeded: always the same points.
 TruthScan squareScan(Sampling sampling, int cells, int strays, unsigned seed);
 
+// The same square seen by a depth camera (an organized scan, as a Kinect's): a grid of rays from
+// the sensor at the origin through pixel centres, the camera looking along +z with a focal length
+// that gives `across` grid steps across the square at its centre; the square's centre on the axis
+// at `distance` (in square half-sides, so 2 x the square's side at 4), tilted by `tilt_degrees`
+// about the camera's x axis (its rows foreshorten). A ray that hits the square gives the hit point;
+// one that misses is NaN (no position, as a real depth image's NaN), and the grid spans the
+// square's image with a margin. The grid's origin is shifted by a seeded fraction of a pixel, so
+// that the edges fall anywhere between the rays. Scan::grid_width/grid_height/grid_index are set.
+TruthScan depthCameraScan(int across, double distance, double tilt_degrees, unsigned seed);
+
 // The truth for `camera`: CV_8U, 255 where the pixel centre lies inside the projected square (or on
 // its edge).
 cv::Mat truthMask(const TruthScan& scan, const prepare::CubeFit& fit, const Camera& camera);
@@ -56,6 +67,9 @@ struct TruthMatch {
   // The spill spread along the outline: how far past the truth's edge the drawing reaches on
   // average, in pixels (spill / outline).
   double meanReachPx() const;
+  // The same, signed: (spill - holes) over the outline, in pixels. Negative: the drawing falls
+  // short of the true edge on average (its outline lies inside the truth's).
+  double meanOffsetPx() const;
 };
 TruthMatch matchTruth(const cv::Mat& truth, const cv::Mat& covered, int inset);
 

@@ -1,7 +1,8 @@
-// octopoint-reference-truth: where does an unorganized scan's surface end? The disc reference
-// (app/reference_surface.h kSplatRule) and octopoint's model of the same points, each against the
-// exact silhouette of a sampled square (app/reference_truth.h, docs/tradeoff.md "The reference
-// render"). scripts/reference-truth runs it.
+// octopoint-reference-truth: where does a scan's surface end? The disc reference
+// (app/reference_surface.h kSplatRule), the depth image's mesh (kMeshExtensionSteps) and
+// octopoint's model of the same points, each against the exact silhouette of a sampled square
+// (app/reference_truth.h, docs/tradeoff.md "The reference render"). scripts/reference-truth runs
+// it.
 #include <cmath>
 #include <cstdio>
 #include <iostream>
@@ -16,6 +17,7 @@
 #include "cli/arguments.h"
 #include "cli/error.h"
 #include "cli/numbers.h"
+#include "cli/real_numbers.h"
 #include "cli/run_tool.h"
 #include "codegen/depth_range.h"
 #include "renderer/level_of_detail.h"
@@ -29,21 +31,29 @@ using tradeoff::TruthMatch;
 
 constexpr const char* kUsage =
     R"(usage: octopoint-reference-truth [--cells N] [--lines N] [--strays K] [--rule RULE]
+                                 [--mesh-extension STEPS] [--organized-only]
 
 Prints (markdown) how far the reference's discs (app/reference_surface.h) and octopoint's model of
 the same points reach past the true edge of a sampled square, and the holes each leaves inside it,
 as shares of the truth's pixels (docs/tradeoff.md, "The reference render"). The square is sampled
 (a) jittered, one point anywhere in each of N x N cells, and (b) as a line scanner, N lines with
-points along each 1.5 times closer; the square is turned 20 degrees in its plane; each with and without K stray returns 0.5 to 3 sample steps
-off its edge; seen head-on and turned 30 degrees, at sizes and zooms where the sample spacing spans
-about 1 to 10 pixels. octopoint draws a model of depth d, whose voxel is to the spacing what
-lms400's depth 9 is to its own (4.0 mm / 1.77 mm), and the default model at depth auto.
+points along each 1.5 times closer; the square is turned 20 degrees in its plane; each with
+and without K stray returns 0.5 to 3 sample steps off its edge; seen head-on and turned 30
+degrees, at sizes and zooms where the sample spacing spans about 1 to 10 pixels. octopoint draws
+a model of depth d, whose voxel is to the spacing what lms400's depth 9 is to its own (4.0 mm /
+1.77 mm), and the default model at depth auto.
+(c) A depth camera (an organized scan: rays from the origin through a grid's pixel centres, NaN
+where they miss) sees the square N grid steps across from 1 and 2 times its side away, tilted 0
+to 60 degrees; its mesh reference is drawn ending at the last samples and with the extension.
 
   --cells N     samples across the square (jittered), 16..400 (default 73)
   --lines N     lines across the square (line scanner), 16..400 (default 139)
   --strays K    stray returns in the cases with strays, 1..1000 (default 40)
   --rule K,SCALE,QUANTILE[,OFFSET,EDGE_SCALE]  the reference's disc rule (default kSplatRule);
                 K 1..64, SCALE 0.1..4, QUANTILE 0..1, OFFSET 0..1, EDGE_SCALE 0..4
+  --mesh-extension STEPS  the depth image mesh's strip past its boundary, in grid steps, 0..4
+                (default kMeshExtensionSteps)
+  --organized-only  only the depth camera's cases
   -h, --help    show this help
 
 On any error prints one line on stderr and exits with status 1.
@@ -83,6 +93,15 @@ cv::Mat octopointCovered(const LevelView& level, const Camera& camera) {
     for (int x = 0; x < camera.width; ++x)
       if (frame.covered(x, y)) covered.at<std::uint8_t>(y, x) = 255;
   return covered;
+}
+
+// spill / holes (inner holes) / reach / signed reach (spill - holes over the outline), in h.
+std::string signedCellOf(const TruthMatch& match, double spacing_px) {
+  char text[112];
+  std::snprintf(text, sizeof text, "%.2f%% / %.2f%% (%.2f%%) / %.2f h / %+.2f h",
+                100 * match.spillShare(), 100 * match.holeShare(), 100 * match.innerHoleShare(),
+                match.meanReachPx() / spacing_px, match.meanOffsetPx() / spacing_px);
+  return text;
 }
 
 std::string cellOf(const TruthMatch& match, double spacing_px) {
@@ -140,10 +159,67 @@ void runCase(Sampling sampling, int cells, int strays, int yaw, const tradeoff::
   std::fflush(stdout);
 }
 
+// The depth camera's square (app/reference_truth.h depthCameraScan): its mesh ending at the last
+// samples, its mesh with `extension` grid steps past them, and octopoint's models.
+void runOrganizedCase(int across, double distance, double tilt, int yaw, double extension) {
+  const tradeoff::TruthScan truth = tradeoff::depthCameraScan(across, distance, tilt, 11);
+  tradeoff::Scene scene;
+  scene.scan_path = "synthetic depth image";
+  scene.scan = truth.points;
+  scene.prepare.name = "truth";
+  scene.fit = prepare::fitCube(truth.points.positions, scene.scan_path);
+  scene.surface = tradeoff::buildReferenceSurface(truth.points, tradeoff::kSplatRule, extension);
+  tradeoff::Scene before = scene;
+  before.surface = tradeoff::buildReferenceSurface(truth.points, tradeoff::kSplatRule, 0);
+  const int depth =
+      static_cast<int>(std::lround(std::log2(scene.fit.edge / (kVoxelPerSpacing * truth.spacing))));
+  const auto matched = tradeoff::prepareInMemory(scene, {depth});
+  const auto automatic = tradeoff::prepareInMemory(scene, prepare::defaultDepths(), true);
+  std::printf(
+      "\n### depth camera, distance %g, tilt %g, yaw %d\n\n%u x %u grid, %zu points, h = %.4g, "
+      "%zu triangles (%zu with the extension), depth %d: voxel = %.2f h\n\n"
+      "| view | h in px | mesh, extension 0 | mesh, extension %g | octopoint depth %d | depth auto "
+      "| octopoint depth auto |\n|---|---|---|---|---|---|---|\n",
+      distance, tilt, yaw, truth.points.grid_width, truth.points.grid_height,
+      truth.points.positions.size(), truth.spacing, before.surface.triangles.size(),
+      scene.surface.triangles.size(), depth, scene.fit.edge / (1 << depth) / truth.spacing,
+      extension, depth);
+  TruthMatch all[4];
+  double spacing_sum = 0;
+  for (const View& view : kViews) {
+    const Camera camera = cameraFor(view, yaw);
+    const double spacing_px =
+        truth.spacing * tradeoff::ScreenProjection(scene.fit, camera).pixelsPerUnit();
+    const int inset = static_cast<int>(std::ceil(kInsetSpacings * spacing_px));
+    const cv::Mat exact = tradeoff::truthMask(truth, scene.fit, camera);
+    const LevelView* chosen = autoLevel(*automatic->view, camera);
+    if (chosen == nullptr) throw cli::Error("depth auto refused the view");
+    const TruthMatch match[4] = {
+        tradeoff::matchTruth(exact, tradeoff::referenceFor(before, camera).silhouette, inset),
+        tradeoff::matchTruth(exact, tradeoff::referenceFor(scene, camera).silhouette, inset),
+        tradeoff::matchTruth(exact, octopointCovered(matched->view->finestLevel(), camera), inset),
+        tradeoff::matchTruth(exact, octopointCovered(*chosen, camera), inset)};
+    for (int k = 0; k < 4; ++k) all[k].add(match[k]);
+    spacing_sum += spacing_px * static_cast<double>(match[0].outline);
+    std::printf("| %dx%d zoom %g | %.2f | %s | %s | %s | %d | %s |\n", view.width, view.height,
+                view.zoom, spacing_px, signedCellOf(match[0], spacing_px).c_str(),
+                signedCellOf(match[1], spacing_px).c_str(),
+                signedCellOf(match[2], spacing_px).c_str(), chosen->depth,
+                signedCellOf(match[3], spacing_px).c_str());
+  }
+  const double spacing_px = spacing_sum / static_cast<double>(all[0].outline);
+  std::printf("| all views | | %s | %s | %s | | %s |\n", signedCellOf(all[0], spacing_px).c_str(),
+              signedCellOf(all[1], spacing_px).c_str(), signedCellOf(all[2], spacing_px).c_str(),
+              signedCellOf(all[3], spacing_px).c_str());
+  std::fflush(stdout);
+}
+
 int run(int argc, char** argv) {
   // The defaults put lms400's voxel-to-spacing ratio (2.27) at depth 6 (jittered) and 7 (lines).
   int cells = 73, lines = 139, strays = 40;
   tradeoff::SplatRule rule = tradeoff::kSplatRule;
+  double extension = tradeoff::kMeshExtensionSteps;
+  bool organized_only = false;
   cli::ArgumentReader args(argc, argv);
   while (args.next()) {
     if (args.is("-h") || args.is("--help")) {
@@ -161,6 +237,11 @@ int run(int argc, char** argv) {
     } else if (args.is("--rule")) {
       const std::string name = args.name();
       rule = tradeoff::parseSplatRule(name, args.value());
+    } else if (args.is("--mesh-extension")) {
+      const std::string name = args.name();
+      extension = cli::parseReal(name, args.value(), 0.0, 4.0);
+    } else if (args.is("--organized-only")) {
+      organized_only = true;
     } else {
       args.refuseUnknown();
     }
@@ -173,10 +254,20 @@ int run(int argc, char** argv) {
       kInsetSpacings, rule.neighbour, rule.scale, rule.cap_quantile, rule.edge_offset,
       rule.edge_scale);
   for (const Sampling sampling : {Sampling::kJittered, Sampling::kLines}) {
+    if (organized_only) break;
     for (const int stray_count : {0, strays}) {
       const int across = sampling == Sampling::kLines ? lines : cells;
       for (const int yaw : {0, 30}) runCase(sampling, across, stray_count, yaw, rule);
     }
+  }
+  std::printf(
+      "\nDepth camera: each cell spill / holes (inner) / reach / signed reach ((spill - holes) "
+      "over the outline, in h; negative: short of the true edge).\n");
+  struct Pose {
+    double distance, tilt;
+  };
+  for (const Pose pose : {Pose{4, 0}, Pose{4, 30}, Pose{4, 60}, Pose{2, 45}}) {
+    for (const int yaw : {0, 30}) runOrganizedCase(cells, pose.distance, pose.tilt, yaw, extension);
   }
   return 0;
 }

@@ -77,33 +77,61 @@ bool insideBy(const std::vector<std::array<double, 3>>& corners, double px, doub
   return margin > 0 ? least > margin : least < margin;
 }
 
+// The mesh itself (no extension past its last samples) covers exactly the pixels whose centre lies
+// inside the outline of the samples; with kMeshExtensionSteps it covers every pixel centre inside
+// the outline pushed out by that many grid steps (but for its corners, which are rounded) and
+// none outside it (a depth camera's true edge lies past its last samples:
+// tests/reference_truth_test.cpp).
 TEST(ReferenceRender, OrganizedPlaneCoversExactlyItsOutlineAtEverySizeAndZoom) {
   const int columns = 160, rows = 120;
-  const Scan plane = depthImage(columns, rows, 150.0, 79.5, 59.5, [](int, int) { return 1.0; });
-  const ReferenceSurface surface = buildReferenceSurface(plane);
-  ASSERT_EQ(surface.triangles.size(), 2u * (columns - 1) * (rows - 1));
+  const double focal = 150, cx = 79.5, cy = 59.5;
+  const Scan plane = depthImage(columns, rows, focal, cx, cy, [](int, int) { return 1.0; });
+  const ReferenceSurface mesh = buildReferenceSurface(plane, kSplatRule, 0);
+  ASSERT_EQ(mesh.triangles.size(), 2u * (columns - 1) * (rows - 1));
+  const ReferenceSurface extended = buildReferenceSurface(plane);
   const prepare::CubeFit fit = prepare::fitCube(plane.positions, "plane");
-  const std::size_t c = columns, r = rows;
-  const std::array<std::size_t, 4> corner_index = {0, c - 1, c * r - 1, c * (r - 1)};
-  for (int yaw : {0, 30}) {
-    for (const auto& [width, height] : kSizes) {
-      for (double zoom : kZooms) {
-        const Camera camera = cameraFor(width, height, zoom, yaw);
-        const ScreenProjection project(fit, camera);
-        std::vector<std::array<double, 3>> corners;
-        for (std::size_t i : corner_index) corners.push_back(project(plane.positions[i]));
-        cv::Mat covered;
-        renderReference(surface, fit, camera, kBackground, &covered);
-        int holes = 0, spills = 0;
-        for (int y = 0; y < height; ++y) {
-          for (int x = 0; x < width; ++x) {
-            const bool on = covered.at<std::uint8_t>(y, x) != 0;
-            holes += !on && insideBy(corners, x + 0.5, y + 0.5, 1e-6);
-            spills += on && insideBy(corners, x + 0.5, y + 0.5, -1e-6);
+  // The outline's corners in grid coordinates, at depth 1: the samples', and pushed out.
+  const auto outline = [&](double out) {
+    std::vector<std::array<float, 3>> corners;
+    for (const auto& [col, row] :
+         {std::pair{-out, -out}, std::pair{columns - 1 + out, -out},
+          std::pair{columns - 1 + out, rows - 1 + out}, std::pair{-out, rows - 1 + out}}) {
+      corners.push_back(
+          {static_cast<float>((col - cx) / focal), static_cast<float>((row - cy) / focal), 1.0f});
+    }
+    return corners;
+  };
+  for (const bool extend : {false, true}) {
+    const double out = extend ? kMeshExtensionSteps : 0;
+    const auto corners3 = outline(out);
+    for (int yaw : {0, 30}) {
+      for (const auto& [width, height] : kSizes) {
+        for (double zoom : kZooms) {
+          const Camera camera = cameraFor(width, height, zoom, yaw);
+          const ScreenProjection project(fit, camera);
+          std::vector<std::array<double, 3>> corners;
+          for (const auto& corner : corners3) corners.push_back(project(corner));
+          // Within this many pixels of a corner the extension is rounded (up to its width).
+          const double corner_px = 1.5 * out / focal * project.pixelsPerUnit();
+          cv::Mat covered;
+          renderReference(extend ? extended : mesh, fit, camera, kBackground, &covered);
+          int holes = 0, spills = 0;
+          for (int y = 0; y < height; ++y) {
+            for (int x = 0; x < width; ++x) {
+              const bool on = covered.at<std::uint8_t>(y, x) != 0;
+              bool near_corner = false;
+              for (const auto& c : corners)
+                near_corner |= std::hypot(x + 0.5 - c[0], y + 0.5 - c[1]) < corner_px;
+              holes += !on && !near_corner && insideBy(corners, x + 0.5, y + 0.5, 1e-6);
+              spills += on && insideBy(corners, x + 0.5, y + 0.5, -1e-6);
+            }
           }
+          const std::string view = std::to_string(width) + "x" + std::to_string(height) + " zoom " +
+                                   std::to_string(zoom) + " yaw " + std::to_string(yaw) +
+                                   (extend ? ", extended" : "");
+          EXPECT_EQ(holes, 0) << view;
+          EXPECT_EQ(spills, 0) << view;
         }
-        EXPECT_EQ(holes, 0) << width << "x" << height << " zoom " << zoom << " yaw " << yaw;
-        EXPECT_EQ(spills, 0) << width << "x" << height << " zoom " << zoom << " yaw " << yaw;
       }
     }
   }
@@ -138,12 +166,13 @@ TEST(ReferenceRender, DepthJumpInTheGridIsNotBridged) {
                                [&](int col, int) { return col < columns / 2 ? 1.0 : 2.0; });
   const ReferenceSurface surface = buildReferenceSurface(scan);
   for (const auto& t : surface.triangles) {
-    const bool near0 = scan.positions[t[0]][2] < 1.5, near1 = scan.positions[t[1]][2] < 1.5,
-               near2 = scan.positions[t[2]][2] < 1.5;
+    const bool near0 = surface.positions[t[0]][2] < 1.5, near1 = surface.positions[t[1]][2] < 1.5,
+               near2 = surface.positions[t[2]][2] < 1.5;
     EXPECT_TRUE(near0 == near1 && near1 == near2) << "a triangle joins the near and the far half";
   }
   // Drawn from the front: between the near half's right edge and the far half's left edge lies
-  // background, and both halves are there.
+  // background (but for each half's extension past its last samples, kMeshExtensionSteps grid
+  // steps: 1 / focal at depth 1, 2 / focal at depth 2), and both halves are there.
   const prepare::CubeFit fit = prepare::fitCube(scan.positions, "step");
   const Camera camera = cameraFor(640, 480, 1);
   const ScreenProjection project(fit, camera);
@@ -154,8 +183,10 @@ TEST(ReferenceRender, DepthJumpInTheGridIsNotBridged) {
   const double middle_row =
       project(scan.positions[static_cast<std::size_t>(rows / 2 * columns)])[1];
   ASSERT_GT(far_left - near_right, 20);
+  const double step_px = project.pixelsPerUnit() / focal;  // a grid step at depth 1
   const int row = static_cast<int>(middle_row);
-  for (int x = static_cast<int>(near_right) + 2; x < static_cast<int>(far_left) - 1; ++x) {
+  for (int x = static_cast<int>(near_right + kMeshExtensionSteps * step_px) + 2;
+       x < static_cast<int>(far_left - 2 * kMeshExtensionSteps * step_px) - 1; ++x) {
     EXPECT_EQ(covered.at<std::uint8_t>(row, x), 0) << "bridged at x " << x;
   }
   EXPECT_NE(covered.at<std::uint8_t>(row, static_cast<int>(near_right) - 3), 0);
@@ -172,7 +203,8 @@ TEST(ReferenceRender, DepthStepUpToEightGridStepsStaysJoined) {
     const Scan scan = depthImage(columns, rows, focal, 59.5, 44.5, [&](int col, int) {
       return col < columns / 2 ? 1.0 : 1.0 + steps / focal;
     });
-    const ReferenceSurface surface = buildReferenceSurface(scan);
+    // The mesh alone, without the strips past its boundary.
+    const ReferenceSurface surface = buildReferenceSurface(scan, kSplatRule, 0);
     const std::size_t full = 2u * (columns - 1) * (rows - 1);
     if (steps < kMaxEdgeGridSteps)
       EXPECT_EQ(surface.triangles.size(), full);
@@ -190,7 +222,8 @@ TEST(ReferenceRender, MissingGridPointsDropOnlyTheirTriangles) {
   scan.positions.erase(scan.positions.begin() + static_cast<std::ptrdiff_t>(gone));
   scan.colours.erase(scan.colours.begin() + static_cast<std::ptrdiff_t>(gone));
   scan.grid_index.erase(scan.grid_index.begin() + static_cast<std::ptrdiff_t>(gone));
-  const ReferenceSurface surface = buildReferenceSurface(scan);
+  // The mesh alone, without the strips past its boundary.
+  const ReferenceSurface surface = buildReferenceSurface(scan, kSplatRule, 0);
   const std::size_t full = 2u * 9 * 7;
   EXPECT_LT(surface.triangles.size(), full);
   EXPECT_GE(surface.triangles.size(), full - 6);
