@@ -111,6 +111,7 @@ using simd::kPixelBatchLimit;
 using simd::kSplatPixelsPerFlush;
 using simd::LeafLanes;
 using simd::leafLanes;
+using simd::makeRoom;
 using simd::plotChildrenChecked;
 using simd::SimdFrame;
 
@@ -130,24 +131,23 @@ __attribute__((target("avx2"), always_inline)) inline const std::uint8_t* emitGr
   return node;
 }
 
-// The subtree below a node at `level` centred at `c`, with child mask `mask` (already read), one to
-// three levels above its leaves and on screen, into the batch in one go (flushed first when it may
+// The subtree below a node at `level` centred at `c`, with child mask `mask` (already read),
+// `levels_below` (1 to 3) levels above its leaves and on screen, into the batch in one go (flushed first when it may
 // not have room): reads its masks from `node` on, returns the node after. The unchecked emit loads
 // eight colour (and normal) bytes per leaf parent, from its first leaf on: the caller checked that
 // 8^(levels below) bytes are left in the stream (a normal array is as long as the colours).
 template <EmitMode kEmit, typename Leaves>
 __attribute__((target("avx2"), always_inline)) inline const std::uint8_t* emitSubtree(
-    SimdFrame& f, const LeafLanes& lanes, int level, Vec3 c, unsigned mask,
+    SimdFrame& f, const LeafLanes& lanes, int level, int levels_below, Vec3 c, unsigned mask,
     const std::uint8_t* node, Leaves& leaves) {
   constexpr bool kSplat = kEmit.emit != Emit::kPixel;
-  if (f.batched > (kSplat ? f.splat_batch_limit : kPixelBatchLimit)) flushBatch<kEmit>(f);
+  makeRoom<kEmit>(f, levels_below);
   if constexpr (kSplat) {  // positions shifted to the splat's first pixel (mod 2^32, as lanes add)
     c.x += f.splat.footprint.offset_x;
     c.y += f.splat.footprint.offset_y;
   }
   Emitter<Leaves> out{f.batch_index, f.batch_word, leaves, f.batch_extent,
                       static_cast<std::size_t>(f.batched)};
-  const int levels_below = f.levels - level;
   const auto l = static_cast<std::size_t>(level);
   if (levels_below == 1) {
     simd::emitChildren<kEmit>(lanes, _mm256_add_epi32(_mm256_set1_epi32(c.x), f.child_lanes[0][l]),
@@ -215,13 +215,15 @@ __attribute__((target("avx2"))) const std::uint8_t* visit(SimdFrame& f, int leve
   const bool may_inline = level >= kAbortCheckLevel || f.abort == nullptr;
   // The subtree in one go (emitSubtree) where the stream has its 8^(levels below) bytes left.
   // Splats: large ones emit a leaf parent at a time and flush sooner (SimdFrame::splat_levels_inline,
-  // splat_batch_limit), so the pixels written between two polls stay few.
-  const int levels_inline = kSplat ? f.splat_levels_inline : 3;
+  // batch_limit), so the pixels written between two polls stay few.
+  // (kSplatPixels: always 3, its boxes have at most 4 pixels; known here, so that the loop below
+  // tells emitSubtree its depth.)
+  const int levels_inline = kEmit.emit == Emit::kSplatRects ? f.splat_levels_inline : 3;
   if (!kChecked && may_inline && levels_below <= levels_inline + 1) {
     const LeafLanes lanes = leafLanes(f);
     if (levels_below <= levels_inline) {
       if (f.leaf_end - leaves.colour >= (std::ptrdiff_t{1} << (3 * levels_below)))
-        return emitSubtree<kEmit, Leaves>(f, lanes, level, c, mask, node, leaves);
+        return emitSubtree<kEmit, Leaves>(f, lanes, level, levels_below, c, mask, node, leaves);
     } else {
       // One level above: each child as visit would draw it (its poll, its subtree in one go), in
       // this call: a call per child and its set-up cost as much as a grandparent's leaf parents.
@@ -233,7 +235,8 @@ __attribute__((target("avx2"))) const std::uint8_t* visit(SimdFrame& f, int leve
         const Vec3 child = c + offsets[static_cast<unsigned>(std::countr_zero(mask))];
         if (f.leaf_end - leaves.colour >= most_leaves) {
           const unsigned child_mask = *node++;
-          node = emitSubtree<kEmit, Leaves>(f, lanes, level + 1, child, child_mask, node, leaves);
+          node = emitSubtree<kEmit, Leaves>(f, lanes, level + 1, levels_inline, child, child_mask,
+                                            node, leaves);
         } else {  // the model's last leaves: the scalar plot
           node = visit<false, kEmit, Leaves>(f, level + 1, child, node, leaves);
         }
@@ -302,14 +305,16 @@ Emit chooseEmit(const SplatFootprint& splat, std::int32_t width, SimdFrame& f) {
         f.box.row[p] = static_cast<std::uint8_t>(r);
       }
     }
-    // Up to 512 leaves per call while their boxes fit the batch, else 64.
-    f.splat_levels_inline = kMostLeavesPerCall * area <= kBatch ? 3 : 2;
-    f.splat_batch_limit = kBatch - static_cast<int>(area) * (1 << (3 * f.splat_levels_inline));
+    // Up to 512 leaves per call: their boxes fit the batch (visit counts on it).
+    static_assert(kMostLeavesPerCall * simd::kMostBoxPixels <= kBatch);
+    f.splat_levels_inline = 3;
+    for (int n = 1; n <= 3; ++n)
+      f.batch_limit[static_cast<std::size_t>(n)] = kBatch - static_cast<int>(area) * (1 << (3 * n));
     return Emit::kSplatPixels;
   }
   f.splat_levels_inline = area <= 128 ? 3 : 1;
-  f.splat_batch_limit =
-      static_cast<int>(std::clamp<std::int64_t>(kSplatPixelsPerFlush / area, 8, kPixelBatchLimit));
+  f.batch_limit.fill(
+      static_cast<int>(std::clamp<std::int64_t>(kSplatPixelsPerFlush / area, 8, kPixelBatchLimit)));
   f.plot_splats = splatBatchPlot(splat.columns, splat.rows);
   return Emit::kSplatRects;
 }

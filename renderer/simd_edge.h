@@ -49,8 +49,8 @@ __attribute__((target("avx2"), always_inline)) inline unsigned below(__m256i a, 
 template <EmitMode kEmit, typename Leaves>
 __attribute__((target("avx2"))) void emitEdgeLeafParent(SimdFrame& f, int level, Vec3 c,
                                                         unsigned mask, Leaves& leaves) {
+  makeRoom<kEmit>(f, 1);
   constexpr bool kSplat = kEmit.emit != Emit::kPixel;
-  if (f.batched > (kSplat ? f.splat_batch_limit : kPixelBatchLimit)) flushBatch<kEmit>(f);
   const LeafLanes lanes = leafLanes(f);
   const auto l = static_cast<std::size_t>(level);
   Vec3 first = c;  // the splat's first pixel (mod 2^32, as lanes add), as emitSubtree

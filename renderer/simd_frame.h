@@ -5,6 +5,7 @@
 // frame's edge (renderer/simd_edge.h).
 #include <immintrin.h>
 
+#include <array>
 #include <atomic>
 #include <cstdint>
 
@@ -45,11 +46,17 @@ struct SimdFrame {
   const OffsetTable<std::int32_t>* offsets;
   SubtreeClip clip;
   SplatPlot splat;  // the splat path's footprint, and its checked plot on the frame's edge
-  // The splat path: at most about kSplatPixelsPerFlush pixels are batched between two flushes
-  // (and so between two polls of the abort flag): up to 512 leaves per call while a splat has at
-  // most 128 pixels, else one leaf parent's 8 per call.
+  // The splat path: up to 512 leaves per call while a splat has at most 128 pixels, else one leaf
+  // parent's 8 per call (Emit::kSplatRects: at most about kSplatPixelsPerFlush pixels are batched
+  // between two flushes, and so between two polls of the abort flag).
   int splat_levels_inline = 3;
-  int splat_batch_limit = kPixelBatchLimit;
+  // batch_limit[n]: a splat frame's call that emits the subtree of a node n = 1..3 levels above
+  // its leaves flushes the batch first when it holds more entries than this (one pixel per leaf:
+  // kPixelBatchLimit). kSplatPixels: the call's boxes fit, so a leaf parent's 2 x 2 boxes wait
+  // until 2048 - 32 entries are batched, not until any are, as a 512-leaf call's must (lms400's
+  // 176x208 zoom 4 frame was flushed 1,779 times, a few entries at a time). kSplatRects: the
+  // same limit for every n.
+  std::array<int, 4> batch_limit{};
   SplatBatchPlot plot_splats = nullptr;  // Emit::kSplatRects: the kernel for this footprint
   SplatBox box;                          // Emit::kSplatPixels: the footprint's box
   const std::atomic<bool>* abort;
@@ -85,6 +92,16 @@ void flushBatch(SimdFrame& f) {
   } else {
     plotBatch(f);
   }
+}
+
+// Flushes the batch first when a call that emits the subtree of a node `levels_below` (1..3)
+// levels above its leaves may not have room (SimdFrame::batch_limit).
+template <EmitMode kEmit>
+__attribute__((always_inline)) inline void makeRoom(SimdFrame& f, int levels_below) {
+  const int limit = kEmit.emit == Emit::kPixel
+                        ? kPixelBatchLimit
+                        : f.batch_limit[static_cast<std::size_t>(levels_below)];
+  if (f.batched > limit) flushBatch<kEmit>(f);
 }
 
 __attribute__((target("avx2"))) inline LeafLanes leafLanes(const SimdFrame& f) {
