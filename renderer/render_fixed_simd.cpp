@@ -103,6 +103,7 @@ using simd::biasedDepthLanes;
 using simd::Emit;
 using simd::EmitMode;
 using simd::Emitter;
+using simd::emitEdgeGrandparent;
 using simd::emitEdgeLeafParent;
 using simd::flushBatch;
 using simd::kBatch;
@@ -244,6 +245,8 @@ __attribute__((target("avx2"))) const std::uint8_t* visit(SimdFrame& f, int leve
       return node;
     }
   }
+  if (kChecked && levels_below == 2 && level >= kAbortCheckLevel)
+    return emitEdgeGrandparent<kEmit, Leaves>(f, level, c, mask, node, leaves);
   if (levels_below == 1) {
     if (kChecked && f.leaf_end - leaves.colour >= 8) {
       emitEdgeLeafParent<kEmit, Leaves>(f, level, c, mask, leaves);

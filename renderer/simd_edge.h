@@ -1,13 +1,14 @@
 #pragma once
-// fixed_simd's leaf parents on the frame's edge (renderer/render_fixed_simd.cpp, x86-64 with AVX2
-// only): the walk's one checked path at the leaves. Inside the frame a leaf parent's children are
-// emitted without a test (simd_emit.h); one whose subtree straddles the frame's edge must keep
-// only its children's pixels on screen. Zoomed in on a small screen the edge cuts many leaf
-// parents (678 in lms400's 176x208 zoom 4 frame), so this path is in lanes too, and it has a file
-// of its own because it is the walk's other half: the clip of each child and each pixel of its
-// box, where the inside path has none.
+// fixed_simd's leaf parents and grandparents on the frame's edge (renderer/render_fixed_simd.cpp,
+// x86-64 with AVX2 only): the walk's checked path near the leaves. Inside the frame a leaf
+// parent's children are emitted without a test (simd_emit.h); one whose subtree straddles the
+// frame's edge must keep only its children's pixels on screen. Zoomed in on a small screen the
+// edge cuts many leaf parents (678 in lms400's 176x208 zoom 4 frame), so this path is in lanes
+// too, and it has a file of its own because it is the walk's other half: the clip of each child
+// and each pixel of its box, where the inside path has none.
 #include <immintrin.h>
 
+#include <atomic>
 #include <bit>
 #include <cstddef>
 #include <cstdint>
@@ -109,6 +110,70 @@ __attribute__((target("avx2"))) void emitEdgeLeafParent(SimdFrame& f, int level,
       f.splat.plot<true, Leaves::kPayload>(c + offsets[k], leaf.next());
     }
   }
+}
+
+// A leaf parent wholly on screen centred at `c`, with child mask `mask` (already read), whose
+// eight colour bytes are in the stream: emitSubtree's leaf parent (render_fixed_simd.cpp), for
+// emitEdgeGrandparent.
+template <EmitMode kEmit, typename Leaves>
+__attribute__((target("avx2"), always_inline)) inline void emitLeafParent(SimdFrame& f,
+                                                                          const LeafLanes& lanes,
+                                                                          int level, Vec3 c,
+                                                                          unsigned mask,
+                                                                          Leaves& leaves) {
+  makeRoom<kEmit>(f, 1);
+  Vec3 first = c;  // the splat's first pixel (mod 2^32, as lanes add), as emitSubtree
+  if constexpr (kEmit.emit != Emit::kPixel) {
+    first.x += f.splat.footprint.offset_x;
+    first.y += f.splat.footprint.offset_y;
+  }
+  const auto l = static_cast<std::size_t>(level);
+  Emitter<Leaves> out{f.batch_index, f.batch_word, leaves, f.batch_extent,
+                      static_cast<std::size_t>(f.batched)};
+  emitChildren<kEmit>(lanes, _mm256_add_epi32(_mm256_set1_epi32(first.x), f.child_lanes[0][l]),
+                      _mm256_add_epi32(_mm256_set1_epi32(first.y), f.child_lanes[1][l]),
+                      _mm256_add_epi32(biasedDepthLanes(f, c), f.child_lanes[2][l]), mask, out);
+  f.batched = static_cast<int>(out.count);
+  leaves = out.leaves;
+}
+
+// A grandparent on the frame's edge (its subtree straddles it) at `level` (at or below
+// kAbortCheckLevel's) centred at `c`, with child mask `mask` (already read): its leaf parents in
+// this call, each clipped, polled and drawn as the walk would in a call of its own (off screen:
+// stepped over; on screen: emitted unchecked; straddling: emitEdgeLeafParent). Reads their masks
+// from `node` on, returns the node after. The walk's call per leaf parent (and a second for one on
+// screen) was most of its checked nodes' own instructions, 17.6% of lms400's 176x208 zoom 4 frame.
+template <EmitMode kEmit, typename Leaves>
+__attribute__((target("avx2"))) const std::uint8_t* emitEdgeGrandparent(SimdFrame& f, int level,
+                                                                         Vec3 c, unsigned mask,
+                                                                         const std::uint8_t* node,
+                                                                         Leaves& leaves) {
+  constexpr bool kSplat = kEmit.emit != Emit::kPixel;
+  const int child_level = level + 1;
+  const auto& offsets = (*f.offsets)[static_cast<std::size_t>(level)];
+  const LeafLanes lanes = leafLanes(f);
+  for (; mask != 0; mask &= mask - 1) {
+    // A splat frame polls at every node below kAbortCheckLevel (render_fixed_simd.cpp, visit).
+    if (kSplat && f.abort != nullptr && (f.aborted = f.abort->load(std::memory_order_relaxed)))
+      return node;
+    const Vec3 p = c + offsets[static_cast<std::size_t>(std::countr_zero(mask))];
+    const Clip clip = f.clip.classify(child_level, p);
+    if (clip == Clip::kOutside) {
+      f.off_screen.skip(node, leaves, child_level);
+      continue;
+    }
+    f.off_screen.enter(child_level);
+    const unsigned child_mask = *node++;
+    if (clip == Clip::kInside) f.off_screen.enterChildren(child_level, child_mask);
+    if (f.leaf_end - leaves.colour < 8) {  // the model's last leaves: the scalar plot
+      plotChildrenChecked<kSplat, Leaves>(f, child_level, p, child_mask, leaves);
+    } else if (clip == Clip::kInside) {
+      emitLeafParent<kEmit, Leaves>(f, lanes, child_level, p, child_mask, leaves);
+    } else {
+      emitEdgeLeafParent<kEmit, Leaves>(f, child_level, p, child_mask, leaves);
+    }
+  }
+  return node;
 }
 
 }  // namespace octopoint::simd
