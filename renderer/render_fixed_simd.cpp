@@ -261,6 +261,33 @@ __attribute__((target("avx2"))) const std::uint8_t* visit(SimdFrame& f, int leve
   }
   if (kChecked && levels_below == 2 && level >= kAbortCheckLevel)
     return emitEdgeGrandparent<kEmit, Leaves>(f, level, c, mask, node, leaves);
+  if (kChecked && levels_below == 3 && level >= kAbortCheckLevel) {
+    // Its grandparents, each polled and clipped here as a call of its own would: a call of visit
+    // less per grandparent (lms400 176x208 zoom 4: -1.3% of the frame's instructions).
+    const auto& offsets = (*f.offsets)[static_cast<std::size_t>(level)];
+    for (; mask != 0; mask &= mask - 1) {
+      if (kSplat && f.abort != nullptr && (f.aborted = f.abort->load(std::memory_order_relaxed)))
+        return node;
+      const Vec3 child = c + offsets[static_cast<std::size_t>(std::countr_zero(mask))];
+      switch (f.clip.classify(level + 1, child)) {
+        case Clip::kOutside:
+          f.off_screen.skip(node, leaves, level + 1);
+          break;
+        case Clip::kInside:
+          f.off_screen.enter(level + 1);
+          node = visit<false, kEmit, Leaves>(f, level + 1, child, node, leaves);
+          break;
+        case Clip::kStraddling: {
+          f.off_screen.enter(level + 1);
+          const unsigned child_mask = *node++;
+          node = emitEdgeGrandparent<kEmit, Leaves>(f, level + 1, child, child_mask, node, leaves);
+          break;
+        }
+      }
+      if (kSplat && f.aborted) return node;
+    }
+    return node;
+  }
   if (levels_below == 1) {
     if (kChecked && f.leaf_end - leaves.colour >= 8) {
       emitEdgeLeafParent<kEmit, Leaves>(f, level, c, mask, leaves);
