@@ -101,10 +101,10 @@ namespace {
 
 using simd::biasedDepthLanes;
 using simd::Emit;
-using simd::EmitMode;
-using simd::Emitter;
 using simd::emitEdgeGrandparent;
 using simd::emitEdgeLeafParent;
+using simd::EmitMode;
+using simd::Emitter;
 using simd::flushBatch;
 using simd::kBatch;
 using simd::kMostLeavesPerCall;
@@ -133,10 +133,11 @@ __attribute__((target("avx2"), always_inline)) inline const std::uint8_t* emitGr
 }
 
 // The subtree below a node at `level` centred at `c`, with child mask `mask` (already read),
-// `levels_below` (1 to 3) levels above its leaves and on screen, into the batch in one go (flushed first when it may
-// not have room): reads its masks from `node` on, returns the node after. The unchecked emit loads
-// eight colour (and normal) bytes per leaf parent, from its first leaf on: the caller checked that
-// 8^(levels below) bytes are left in the stream (a normal array is as long as the colours).
+// `levels_below` (1 to 3) levels above its leaves and on screen, into the batch in one go (flushed
+// first when it may not have room): reads its masks from `node` on, returns the node after. The
+// unchecked emit loads eight colour (and normal) bytes per leaf parent, from its first leaf on: the
+// caller checked that 8^(levels below) bytes are left in the stream (a normal array is as long as
+// the colours).
 template <EmitMode kEmit, typename Leaves>
 __attribute__((target("avx2"), always_inline)) inline const std::uint8_t* emitSubtree(
     SimdFrame& f, const LeafLanes& lanes, int level, int levels_below, Vec3 c, unsigned mask,
@@ -229,10 +230,10 @@ __attribute__((target("avx2"))) const std::uint8_t* visit(SimdFrame& f, int leve
   // level on, or when nobody can abort.
   const bool may_inline = level >= kAbortCheckLevel || f.abort == nullptr;
   // The subtree in one go (emitSubtree) where the stream has its 8^(levels below) bytes left.
-  // Splats: large ones emit a leaf parent at a time and flush sooner (SimdFrame::splat_levels_inline,
-  // batch_limit), so the pixels written between two polls stay few.
-  // (kSplatPixels: always 3, its boxes have at most 4 pixels; known here, so that the loop below
-  // tells emitSubtree its depth.)
+  // Splats: large ones emit a leaf parent at a time and flush sooner
+  // (SimdFrame::splat_levels_inline, batch_limit), so the pixels written between two polls stay
+  // few. (kSplatPixels: always 3, its boxes have at most 4 pixels; known here, so that the loop
+  // below tells emitSubtree its depth.)
   const int levels_inline = kEmit.emit == Emit::kSplatRects ? f.splat_levels_inline : 3;
   if (!kChecked && may_inline && levels_below <= levels_inline + 1) {
     const LeafLanes lanes = leafLanes(f);

@@ -95,10 +95,9 @@ __attribute__((target("avx2"))) void emitEdgeLeafParent(SimdFrame& f, int level,
   const Leaves at = leaves;  // the children's payloads, for the scalar plot
   Emitter<Leaves> out{f.batch_index, f.batch_word, leaves, f.batch_extent,
                       static_cast<std::size_t>(f.batched)};
-  emitChildrenOf<kEmit, true>(lanes, x, y,
-                              _mm256_add_epi32(biasedDepthLanes(f, c), f.child_lanes[2][l]), mask,
-                              kEmit.emit == Emit::kSplatPixels ? mask : inside, out,
-                              &box_on_screen);
+  emitChildrenOf<kEmit, true>(
+      lanes, x, y, _mm256_add_epi32(biasedDepthLanes(f, c), f.child_lanes[2][l]), mask,
+      kEmit.emit == Emit::kSplatPixels ? mask : inside, out, &box_on_screen);
   f.batched = static_cast<int>(out.count);
   leaves = out.leaves;
   if constexpr (kEmit.emit == Emit::kSplatRects) {
@@ -116,11 +115,8 @@ __attribute__((target("avx2"))) void emitEdgeLeafParent(SimdFrame& f, int level,
 // eight colour bytes are in the stream: emitSubtree's leaf parent (render_fixed_simd.cpp), for
 // emitEdgeGrandparent.
 template <EmitMode kEmit, typename Leaves>
-__attribute__((target("avx2"), always_inline)) inline void emitLeafParent(SimdFrame& f,
-                                                                          const LeafLanes& lanes,
-                                                                          int level, Vec3 c,
-                                                                          unsigned mask,
-                                                                          Leaves& leaves) {
+__attribute__((target("avx2"), always_inline)) inline void emitLeafParent(
+    SimdFrame& f, const LeafLanes& lanes, int level, Vec3 c, unsigned mask, Leaves& leaves) {
   makeRoom<kEmit>(f, 1);
   Vec3 first = c;  // the splat's first pixel (mod 2^32, as lanes add), as emitSubtree
   if constexpr (kEmit.emit != Emit::kPixel) {
@@ -145,9 +141,9 @@ __attribute__((target("avx2"), always_inline)) inline void emitLeafParent(SimdFr
 // screen) was most of its checked nodes' own instructions, 17.6% of lms400's 176x208 zoom 4 frame.
 template <EmitMode kEmit, typename Leaves>
 __attribute__((target("avx2"))) const std::uint8_t* emitEdgeGrandparent(SimdFrame& f, int level,
-                                                                         Vec3 c, unsigned mask,
-                                                                         const std::uint8_t* node,
-                                                                         Leaves& leaves) {
+                                                                        Vec3 c, unsigned mask,
+                                                                        const std::uint8_t* node,
+                                                                        Leaves& leaves) {
   constexpr bool kSplat = kEmit.emit != Emit::kPixel;
   const int child_level = level + 1;
   const auto& offsets = (*f.offsets)[static_cast<std::size_t>(level)];
