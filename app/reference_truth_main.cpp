@@ -269,8 +269,11 @@ void outlineSweep(int cells, int lines, int strays, tradeoff::SplatRule base,
   std::printf(" plane holes | plane false outlines |\n|---|---|---|---|---|---|---|---|---|\n");
   const auto row = [&](const tradeoff::SplatRule& rule, const std::string& shares,
                        std::int64_t false_outlines) {
-    std::printf("| %d, %g deg | %.2f, shift %.2f | %s |", rule.outline_neighbours,
-                rule.outline_gap_degrees, rule.outline_scale, rule.outline_shift, shares.c_str());
+    if (rule.outline_neighbours == 0)
+      std::printf("| none | - | - |");
+    else
+      std::printf("| %d, %g deg | %.2f, shift %.2f | %s |", rule.outline_neighbours,
+                  rule.outline_gap_degrees, rule.outline_scale, rule.outline_shift, shares.c_str());
     for (const Square& square : squares) {
       const tradeoff::TruthReach reach = tradeoff::reachOverViews(
           square.scan, tradeoff::buildReferenceSurface(square.scan.points, rule));
