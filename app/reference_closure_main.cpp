@@ -26,7 +26,8 @@ using namespace octopoint;
 using tradeoff::SplatRule;
 
 constexpr const char* kUsage =
-    R"(usage: octopoint-reference-closure SCAN [--yaw DEG] [--pictures DIR [--rule K,SCALE,QUANTILE]]
+    R"(usage: octopoint-reference-closure SCAN [--yaw DEG] [--pictures DIR [--rule K,SCALE,QUANTILE]
+                                  [--no-outline]]
 
 Prints (markdown) how closed the surface reference of an unorganized scan is, for disc radius =
 scale x the distance to the k-th nearest neighbour, that distance capped at a quantile of the
@@ -45,7 +46,9 @@ scan's (app/reference_surface.h):
                     orange) and print its shares
   --rule K,SCALE,QUANTILE[,EDGE_OFFSET,EDGE_SCALE]  that rule (default the reference's,
                     kSplatRule); K 1..64, SCALE 0.1..4, QUANTILE 0..1, EDGE_OFFSET 0..1,
-                    EDGE_SCALE 0..4 (app/reference_surface.h SplatRule)
+                    EDGE_SCALE 0..4 (app/reference_surface.h SplatRule), with kSplatRule's
+                    outline discs
+  --no-outline      the rule without outline discs (every point's disc on its point)
   -h, --help        show this help
 
 On any error prints one line on stderr and exits with status 1.
@@ -85,11 +88,15 @@ struct ScanSurface {
 tradeoff::Closure closureOf(const ScanSurface& scan, const std::vector<float>& distance,
                             const SplatRule& rule, Angle yaw, const std::string& pictures = {}) {
   tradeoff::ReferenceSurface surface;
-  surface.positions = scan.points.positions;
-  surface.splat_radius = tradeoff::splatRadii(
-      distance, rule,
-      rule.edge_offset > 0 ? tradeoff::centroidOffsets(scan.points.positions, rule.neighbour)
-                           : std::vector<float>{});
+  if (rule.outline_neighbours > 0) {
+    surface = tradeoff::buildReferenceSurface(scan.points, rule);  // moves outline discs inward
+  } else {
+    surface.positions = scan.points.positions;
+    surface.splat_radius = tradeoff::splatRadii(
+        distance, rule,
+        rule.edge_offset > 0 ? tradeoff::centroidOffsets(scan.points.positions, rule.neighbour)
+                             : std::vector<float>{});
+  }
   return tradeoff::measureClosure(surface, scan.fit, scan.spacing, kViews, yaw, pictures);
 }
 
@@ -136,6 +143,7 @@ int run(int argc, char** argv) {
   std::string scan_path, pictures;
   Angle yaw = Angle::fromDegrees(30);
   SplatRule picture_rule = tradeoff::kSplatRule;
+  bool no_outline = false;
   cli::ArgumentReader args(argc, argv);
   while (args.next()) {
     if (args.is("-h") || args.is("--help")) {
@@ -147,7 +155,14 @@ int run(int argc, char** argv) {
       pictures = args.value();
     } else if (args.is("--rule")) {
       const std::string name = args.name();
+      const SplatRule outline = picture_rule;
       picture_rule = tradeoff::parseSplatRule(name, args.value());
+      picture_rule.outline_neighbours = outline.outline_neighbours;
+      picture_rule.outline_gap_degrees = outline.outline_gap_degrees;
+      picture_rule.outline_scale = outline.outline_scale;
+      picture_rule.outline_shift = outline.outline_shift;
+    } else if (args.is("--no-outline")) {
+      no_outline = true;
     } else if (args.isPlain() && scan_path.empty()) {
       scan_path = args.current();
     } else {
@@ -155,6 +170,7 @@ int run(int argc, char** argv) {
     }
   }
   if (scan_path.empty()) throw cli::Error("no SCAN given (see --help)");
+  if (no_outline) picture_rule.outline_neighbours = 0;
   std::error_code error;
   if (!pictures.empty() && !std::filesystem::is_directory(pictures, error))
     throw cli::Error("--pictures: " + cli::inQuotes(pictures) + " is not a directory");
@@ -170,10 +186,12 @@ int run(int argc, char** argv) {
         closureOf(scan, tradeoff::neighbourDistances(scan.points.positions, picture_rule.neighbour),
                   picture_rule, yaw, pictures);
     std::printf(
-        "k %d, scale %.2f, cap quantile %.2f, edge offset %.2f, edge scale %.2f: holes inside %s "
-        "of covered (worst view %.3f%%), empty near the outline %s\n",
+        "k %d, scale %.2f, cap quantile %.2f, edge offset %.2f, edge scale %.2f, outline %d "
+        "neighbours gap %.0f degrees scale %.2f shift %.2f: holes inside %s of covered (worst view "
+        "%.3f%%), empty near the outline %s\n",
         picture_rule.neighbour, picture_rule.scale, picture_rule.cap_quantile,
-        picture_rule.edge_offset, picture_rule.edge_scale,
+        picture_rule.edge_offset, picture_rule.edge_scale, picture_rule.outline_neighbours,
+        picture_rule.outline_gap_degrees, picture_rule.outline_scale, picture_rule.outline_shift,
         percent(closure.holes, closure.covered).c_str(), 100.0 * closure.worst_share,
         percent(closure.outline_holes, closure.covered).c_str());
     return 0;

@@ -9,6 +9,7 @@
 #include <pcl/point_types.h>
 #include <pcl/surface/organized_fast_mesh.h>
 
+#include <Eigen/Eigenvalues>
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -255,8 +256,75 @@ std::vector<float> centroidOffsets(const std::vector<std::array<float, 3>>& posi
   return offset;
 }
 
+namespace {
+
+// Per position on the outline (outlinePoints), the unit vector in its neighbours' plane from it
+// toward their centroid (inward); {0, 0, 0} for a position inside.
+std::vector<std::array<float, 3>> outlineInward(const std::vector<std::array<float, 3>>& positions,
+                                                int neighbour, double gap_degrees) {
+  std::vector<std::array<float, 3>> outline(positions.size(), {0.0f, 0.0f, 0.0f});
+  const double gap_limit = gap_degrees * 3.14159265358979323846 / 180;
+  std::vector<double> angles;
+  forEachNeighbourhood(
+      positions, neighbour,
+      [&](std::size_t i, const pcl::Indices& found, const std::vector<float>&) {
+        if (found.size() < 3) return;
+        // The plane through the position and its neighbours: centroid and covariance (double).
+        Eigen::Vector3d centroid = Eigen::Vector3d::Zero();
+        const auto at = [&](std::size_t k) {
+          const auto& p = positions[static_cast<std::size_t>(found[k])];
+          return Eigen::Vector3d(p[0], p[1], p[2]);
+        };
+        for (std::size_t k = 0; k < found.size(); ++k) centroid += at(k);
+        centroid /= static_cast<double>(found.size());
+        Eigen::Matrix3d covariance = Eigen::Matrix3d::Zero();
+        for (std::size_t k = 0; k < found.size(); ++k) {
+          const Eigen::Vector3d d = at(k) - centroid;
+          covariance += d * d.transpose();
+        }
+        // Eigenvalues ascending: column 0 is the normal, 2 and 1 span the plane.
+        const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver(covariance);
+        const Eigen::Vector3d u = solver.eigenvectors().col(2), v = solver.eigenvectors().col(1);
+        const Eigen::Vector3d self = at(0);
+        angles.clear();
+        for (std::size_t k = 1; k < found.size(); ++k) {
+          const Eigen::Vector3d d = at(k) - self;
+          const double x = d.dot(u), y = d.dot(v);
+          if (x != 0 || y != 0) angles.push_back(std::atan2(y, x));
+        }
+        if (angles.size() < 2) return;
+        std::sort(angles.begin(), angles.end());
+        double widest = angles.front() + 2 * 3.14159265358979323846 - angles.back();
+        for (std::size_t k = 1; k < angles.size(); ++k)
+          widest = std::max(widest, angles[k] - angles[k - 1]);
+        if (!(widest > gap_limit)) return;
+        const Eigen::Vector3d to_centroid = centroid - self;
+        Eigen::Vector3d inward = to_centroid.dot(u) * u + to_centroid.dot(v) * v;
+        if (!(inward.norm() > 0)) inward = u;  // neighbours all round it, a gap yet: any way in
+        inward.normalize();
+        outline[i] = {static_cast<float>(inward.x()), static_cast<float>(inward.y()),
+                      static_cast<float>(inward.z())};
+      });
+  return outline;
+}
+
+bool isOutline(const std::array<float, 3>& inward) {
+  return inward[0] != 0 || inward[1] != 0 || inward[2] != 0;
+}
+
+}  // namespace
+
+std::vector<std::uint8_t> outlinePoints(const std::vector<std::array<float, 3>>& positions,
+                                        int neighbour, double gap_degrees) {
+  const std::vector<std::array<float, 3>> inward = outlineInward(positions, neighbour, gap_degrees);
+  std::vector<std::uint8_t> outline(positions.size(), 0);
+  for (std::size_t i = 0; i < inward.size(); ++i) outline[i] = isOutline(inward[i]) ? 1 : 0;
+  return outline;
+}
+
 std::vector<float> splatRadii(const std::vector<float>& neighbour_distance, const SplatRule& rule,
-                              const std::vector<float>& centroid_offset) {
+                              const std::vector<float>& centroid_offset,
+                              const std::vector<std::uint8_t>& outline) {
   std::vector<float> radius(neighbour_distance.size(), 0.0f);
   if (radius.empty()) return radius;
   // The cap: the rule's quantile of the neighbour distances (nth_element on a copy).
@@ -267,10 +335,13 @@ std::vector<float> splatRadii(const std::vector<float>& neighbour_distance, cons
                    sorted.end());
   const double limit = sorted[rank];
   const bool edges = rule.edge_offset > 0 && centroid_offset.size() == radius.size();
+  const bool outlines = rule.outline_neighbours > 0 && outline.size() == radius.size();
   for (std::size_t i = 0; i < radius.size(); ++i) {
     const bool on_edge = edges && centroid_offset[i] > rule.edge_offset;
-    radius[i] = static_cast<float>((on_edge ? rule.edge_scale : rule.scale) *
-                                   std::min(static_cast<double>(neighbour_distance[i]), limit));
+    const bool on_outline = outlines && outline[i] != 0;
+    const double scale = on_edge ? rule.edge_scale : on_outline ? rule.outline_scale : rule.scale;
+    radius[i] =
+        static_cast<float>(scale * std::min(static_cast<double>(neighbour_distance[i]), limit));
   }
   return radius;
 }
@@ -283,13 +354,28 @@ ReferenceSurface buildReferenceSurface(const prepare::Scan& points, const SplatR
   const bool gridded = !points.grid_index.empty() &&
                        points.grid_index.size() == points.positions.size() &&
                        points.grid_width > 0 && points.grid_height > 1;
-  if (gridded)
-    meshGrid(points, mesh_extension, surface);
-  else
-    surface.splat_radius =
-        splatRadii(neighbourDistances(points.positions, rule.neighbour), rule,
-                   rule.edge_offset > 0 ? centroidOffsets(points.positions, rule.neighbour)
-                                        : std::vector<float>{});
+  if (gridded) meshGrid(points, mesh_extension, surface);
+  if (gridded) return surface;
+  const std::vector<float> offsets = rule.edge_offset > 0
+                                         ? centroidOffsets(points.positions, rule.neighbour)
+                                         : std::vector<float>{};
+  std::vector<std::array<float, 3>> inward;
+  std::vector<std::uint8_t> outline;
+  if (rule.outline_neighbours > 0) {
+    inward = outlineInward(points.positions, rule.outline_neighbours, rule.outline_gap_degrees);
+    outline.resize(inward.size());
+    for (std::size_t i = 0; i < inward.size(); ++i) outline[i] = isOutline(inward[i]) ? 1 : 0;
+  }
+  surface.splat_radius =
+      splatRadii(neighbourDistances(points.positions, rule.neighbour), rule, offsets, outline);
+  if (rule.outline_shift > 0) {
+    for (std::size_t i = 0; i < outline.size(); ++i) {
+      if (outline[i] == 0 || (!offsets.empty() && offsets[i] > rule.edge_offset)) continue;
+      const double by = rule.outline_shift * surface.splat_radius[i];
+      for (std::size_t axis = 0; axis < 3; ++axis)
+        surface.positions[i][axis] += static_cast<float>(by * inward[i][axis]);
+    }
+  }
   return surface;
 }
 

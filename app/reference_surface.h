@@ -9,7 +9,10 @@
 //   0.7 x the distance to its 8th nearest neighbour (PCL k-d tree), that distance at most its 90%
 //   quantile over the scan: the smallest discs that close the reference's own surface
 //   (app/reference_closure.h measures it); 0.25 x that distance for a stray return (neighbours on
-//   one side only), which the exact silhouette of sampled squares supports (app/reference_truth.h).
+//   one side only), which the exact silhouette of sampled squares supports (app/reference_truth.h);
+//   a point on the surface's outline (its 16 nearest neighbours leave a gap wider than 120 degrees
+//   around it) keeps its disc but moves it inward by 0.55 x its radius, which puts the discs'
+//   outline nearest the true edge of sampled squares with no hole inside.
 //
 // Building it is view-independent and done once per scan; app/reference_render.h draws it per view.
 // This file's .cpp is the only one under app/ that includes PCL headers (they compile slowly).
@@ -53,6 +56,21 @@ inline constexpr double kMeshExtensionSteps = 0.45;
 // quarter (jittered) to a sixth (line scanner), where a stray at 0.7 spills as much as a surface
 // sample. A lower offset would shrink outline discs too (0.4 halves the outline's spill) but opens
 // holes inside a jittered plane: 0.6 is the lowest (steps of 0.05) that keeps it closed.
+// An outline point is found by the angular gap its neighbours leave around it instead (as PCL's
+// BoundaryEstimation does): of 16 neighbours, wider than 120 degrees. On the 200 x 200 jittered
+// plane that calls no point more than 2 cells inside outline (8 neighbours at 90 degrees: 18,295;
+// 12 at 120: 22; 16 and 24 at 120 or 150: none); on the sampled squares it calls 5.0% (jittered)
+// and 2.4% (line scanner) of the points outline, about their outermost row. Its disc keeps the
+// surface's size and moves inward by outline_shift = 0.55 x its radius: against the exact
+// silhouette (scripts/reference-truth --outline-sweep, over every size 1x1..1920x1080 and zoom
+// 0.25..8, head-on and turned) the mean reach past the true edge drops from 1.34 to 0.43 sample
+// spacings (jittered), 1.55 to 0.82 (jittered, 40 strays), 0.95 to 0.28 (line scanner) and 1.02
+// to 0.41 (line scanner, strays), with no hole more than 2 spacings inside any square and the
+// jittered plane closed; 0.6 opens 3-4 pixels of holes in three squares. Smaller discs on their
+// point do worse for the same closure (0.45 x d8: 0.58, 0.94, 0.42, 0.53; 0.4 opens holes), as
+// does the 150-degree gap (fewer outline points found: 0.70 shift 0.5 reaches 0.65, 1.07, 0.39,
+// 0.56). On lms400 the reference's holes inside stay 0.022% of its covered pixels (0.019% without
+// the outline discs; scripts/reference-closure --pictures DIR [--no-outline]).
 struct SplatRule {
   int neighbour = 8;
   double scale = 0.7;
@@ -62,12 +80,22 @@ struct SplatRule {
   // an outline point), and its disc is edge_scale x that (capped) distance instead. 0: none is.
   double edge_offset = 0;
   double edge_scale = 0;
+  // A point whose `outline_neighbours` nearest neighbours, seen from it in their own plane (PCA),
+  // leave an angular gap wider than outline_gap_degrees around it lies on the surface's outline
+  // (outlinePoints), and its disc is outline_scale x its (capped) neighbour distance instead (a
+  // stray return keeps edge_scale), its centre moved inward (toward those neighbours' centroid,
+  // in their plane) by outline_shift x its radius. 0 neighbours: no point is.
+  int outline_neighbours = 0;
+  double outline_gap_degrees = 0;
+  double outline_scale = 0;
+  double outline_shift = 0;
 };
-inline constexpr SplatRule kSplatRule{8, 0.7, 0.9, 0.6, 0.25};
+inline constexpr SplatRule kSplatRule{8, 0.7, 0.9, 0.6, 0.25, 16, 120, 0.7, 0.55};
 
 struct ReferenceSurface {
-  // The points (model axes, scan units) and their colours, as given; an organized scan's mesh
-  // extension (kMeshExtensionSteps) appends the outer corners of its strips after them.
+  // The points (model axes, scan units) and their colours, as given but for an unorganized scan's
+  // outline points, moved inward (SplatRule::outline_shift); an organized scan's mesh extension
+  // (kMeshExtensionSteps) appends the outer corners of its strips after them.
   std::vector<std::array<float, 3>> positions;
   std::vector<std::array<std::uint8_t, 3>> colours;  // empty: the points are drawn light grey
   // Organized scan: triangles as indices into positions (wound as the grid gives them), then the
@@ -97,10 +125,19 @@ std::vector<float> neighbourDistances(const std::vector<std::array<float, 3>>& p
 std::vector<float> centroidOffsets(const std::vector<std::array<float, 3>>& positions,
                                    int neighbour);
 
+// Which positions lie on the outline of the surface they sample (1) or inside it (0): the
+// directions to a position's `neighbour` nearest other positions, projected on the plane those
+// neighbours and the position span (the normal: their covariance's least eigenvector), leave an
+// angular gap wider than `gap_degrees` around it (as PCL's BoundaryEstimation, with its own
+// normal). With fewer than 2 others, none is.
+std::vector<std::uint8_t> outlinePoints(const std::vector<std::array<float, 3>>& positions,
+                                        int neighbour, double gap_degrees);
+
 // The disc radii `rule` gives for those distances: rule.scale x min(distance, the rule's quantile
 // of the distances), rule.edge_scale instead of rule.scale where `centroid_offset` (when given)
-// exceeds rule.edge_offset.
+// exceeds rule.edge_offset, else rule.outline_scale where `outline` (when given) is non-zero.
 std::vector<float> splatRadii(const std::vector<float>& neighbour_distance, const SplatRule& rule,
-                              const std::vector<float>& centroid_offset = {});
+                              const std::vector<float>& centroid_offset = {},
+                              const std::vector<std::uint8_t>& outline = {});
 
 }  // namespace octopoint::tradeoff

@@ -6,6 +6,8 @@
 #include <cmath>
 #include <opencv2/imgproc.hpp>
 #include <random>
+#include <string>
+#include <utility>
 #include <vector>
 
 #include "app/reference_render.h"
@@ -218,6 +220,42 @@ TruthMatch matchTruth(const cv::Mat& truth, const cv::Mat& covered, int inset) {
     }
   }
   return match;
+}
+
+TruthReach reachOverViews(const TruthScan& scan, const ReferenceSurface& surface) {
+  static const std::pair<int, int> kSizes[] = {{1, 1},     {7, 5},      {176, 208},
+                                               {320, 240}, {1280, 960}, {1920, 1080}};
+  static const double kZooms[] = {0.25, 0.5, 1, 2, 4, 8};
+  const prepare::CubeFit fit = prepare::fitCube(scan.points.positions, "square");
+  TruthReach reach;
+  TruthMatch all;
+  double outline_spacings = 0;
+  for (const int yaw : {0, 30}) {
+    for (const auto& [width, height] : kSizes) {
+      for (const double zoom : kZooms) {
+        Camera camera;
+        camera.width = width;
+        camera.height = height;
+        camera.zoom = Q16::fromRaw(static_cast<std::int32_t>(std::lround(zoom * Q16::kOneRaw)));
+        camera.yaw = Angle::fromDegrees(yaw);
+        const double spacing_px = scan.spacing * ScreenProjection(fit, camera).pixelsPerUnit();
+        cv::Mat covered;
+        renderReference(surface, fit, camera, Rgb{0, 0, 0}, &covered);
+        const TruthMatch match = matchTruth(truthMask(scan, fit, camera), covered,
+                                            static_cast<int>(std::ceil(2 * spacing_px)));
+        all.add(match);
+        outline_spacings += static_cast<double>(match.outline) * spacing_px;
+        if (match.inner_holes > 0 && reach.first_hole.empty()) {
+          reach.first_hole = std::to_string(width) + "x" + std::to_string(height) + " zoom " +
+                             std::to_string(zoom) + " yaw " + std::to_string(yaw);
+        }
+      }
+    }
+  }
+  reach.spacings = static_cast<double>(all.spill) / outline_spacings;
+  reach.signed_spacings = static_cast<double>(all.spill - all.holes) / outline_spacings;
+  reach.inner_holes = all.inner_holes;
+  return reach;
 }
 
 }  // namespace octopoint::tradeoff

@@ -14,6 +14,7 @@
 #include <opencv2/core.hpp>
 #include <string>
 
+#include "app/reference_surface.h"
 #include "codegen/cube_fit.h"
 #include "codegen/scan_loader.h"
 #include "renderer/camera.h"
@@ -72,5 +73,16 @@ struct TruthMatch {
   double meanOffsetPx() const;
 };
 TruthMatch matchTruth(const cv::Mat& truth, const cv::Mat& covered, int inset);
+
+// `surface` (the reference of `scan`) against the truth at every size 1x1, 7x5, 176x208, 320x240,
+// 1280x960, 1920x1080 and zoom 0.25 to 8, head-on and turned 30 degrees (the bounds of
+// tests/reference_truth_test.cpp and octopoint-reference-truth --outline-sweep).
+struct TruthReach {
+  double spacings = 0;           // mean reach past the true edge (spill over the outline), in h
+  double signed_spacings = 0;    // (spill - holes) over the outline, in h
+  std::int64_t inner_holes = 0;  // truth pixels more than 2 h inside left empty
+  std::string first_hole;        // the first view with one ("WxH zoom Z yaw Y"), empty if none
+};
+TruthReach reachOverViews(const TruthScan& scan, const ReferenceSurface& surface);
 
 }  // namespace octopoint::tradeoff

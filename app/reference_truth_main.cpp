@@ -3,13 +3,16 @@
 // octopoint's model of the same points, each against the exact silhouette of a sampled square
 // (app/reference_truth.h, docs/tradeoff.md "The reference render"). scripts/reference-truth runs
 // it.
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <iostream>
 #include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
+#include "app/reference_closure.h"
 #include "app/reference_render.h"
 #include "app/reference_truth.h"
 #include "app/splat_rule_flag.h"
@@ -31,7 +34,8 @@ using tradeoff::TruthMatch;
 
 constexpr const char* kUsage =
     R"(usage: octopoint-reference-truth [--cells N] [--lines N] [--strays K] [--rule RULE]
-                                 [--mesh-extension STEPS] [--organized-only]
+                                 [--outline K,GAP,SCALE,SHIFT] [--mesh-extension STEPS]
+                                 [--organized-only] [--outline-sweep]
 
 Prints (markdown) how far the reference's discs (app/reference_surface.h) and octopoint's model of
 the same points reach past the true edge of a sampled square, and the holes each leaves inside it,
@@ -54,6 +58,14 @@ to 60 degrees; its mesh reference is drawn ending at the last samples and with t
   --mesh-extension STEPS  the depth image mesh's strip past its boundary, in grid steps, 0..4
                 (default kMeshExtensionSteps)
   --organized-only  only the depth camera's cases
+  --outline K,GAP,SCALE,SHIFT  outline points (K nearest neighbours leave an angular gap wider
+                than GAP degrees) get discs of SCALE x d8 moved inward by SHIFT x their radius
+                (app/reference_surface.h SplatRule); K 3..64, GAP 30..359, SCALE 0..4, SHIFT
+                0..1, or none (default kSplatRule's; --rule keeps it)
+  --outline-sweep  instead, for outline detectors and scales, the reach of the reference over
+                every size 1x1..1920x1080 and zoom 0.25..8 (tests/reference_truth_test.cpp's
+                views) on the four scanned squares, and the holes it leaves in the 200 x 200
+                jittered plane (app/reference_closure.h)
   -h, --help    show this help
 
 On any error prints one line on stderr and exits with status 1.
@@ -214,12 +226,103 @@ void runOrganizedCase(int across, double distance, double tilt, int yaw, double 
   std::fflush(stdout);
 }
 
+// Parses --outline K,GAP,SCALE,SHIFT (or "none") into `rule`.
+void parseOutline(const std::string& flag, const std::string& text, tradeoff::SplatRule& rule) {
+  rule.outline_neighbours = 0;
+  if (text == "none") return;
+  std::vector<std::string> parts;
+  for (std::size_t start = 0;;) {
+    const std::size_t comma = text.find(',', start);
+    parts.push_back(text.substr(start, comma == std::string::npos ? comma : comma - start));
+    if (comma == std::string::npos) break;
+    start = comma + 1;
+  }
+  if (parts.size() != 4) throw cli::Error(flag + ": \"" + text + "\" is not K,GAP,SCALE,SHIFT");
+  rule.outline_neighbours = cli::parseInt(flag, parts[0], 3, 64);
+  rule.outline_gap_degrees = cli::parseReal(flag, parts[1], 30.0, 359.0);
+  rule.outline_scale = cli::parseReal(flag, parts[2], 0.0, 4.0);
+  rule.outline_shift = cli::parseReal(flag, parts[3], 0.0, 1.0);
+}
+
+// The measurement that chose kSplatRule's outline rule: per detector (neighbours, gap), the share
+// of points it calls outline on each square and how many it calls outline more than 2 cells
+// inside the 200 x 200 jittered plane; per outline scale, each square's reach over every view and
+// the plane's holes.
+void outlineSweep(int cells, int lines, int strays, tradeoff::SplatRule base,
+                  const std::vector<int>& neighbours, const std::vector<double>& gaps,
+                  const std::vector<std::pair<double, double>>& discs) {
+  struct Square {
+    const char* name;
+    tradeoff::TruthScan scan;
+  };
+  const std::vector<Square> squares = {
+      {"jittered", tradeoff::squareScan(Sampling::kJittered, cells, 0, 11)},
+      {"jittered + strays", tradeoff::squareScan(Sampling::kJittered, cells, strays, 11)},
+      {"lines", tradeoff::squareScan(Sampling::kLines, lines, 0, 11)},
+      {"lines + strays", tradeoff::squareScan(Sampling::kLines, lines, strays, 11)}};
+  const prepare::Scan plane = tradeoff::jitteredPlane(200, 7);
+  std::printf(
+      "\nEach square cell: reach / signed reach (h) / holes more than 2 h inside (pixels); plane: "
+      "holes more than 2 cells inside the 200 x 200 jittered plane (pixels), points called outline "
+      "more than 2 cells inside it.\n\n| detector | scale | outline share (squares) |");
+  for (const Square& square : squares) std::printf(" %s |", square.name);
+  std::printf(" plane holes | plane false outlines |\n|---|---|---|---|---|---|---|---|---|\n");
+  const auto row = [&](const tradeoff::SplatRule& rule, const std::string& shares,
+                       std::int64_t false_outlines) {
+    if (rule.outline_neighbours == 0)
+      std::printf("| none | - | - |");
+    else
+      std::printf("| %d, %g deg | %.2f, shift %.2f | %s |", rule.outline_neighbours,
+                  rule.outline_gap_degrees, rule.outline_scale, rule.outline_shift, shares.c_str());
+    for (const Square& square : squares) {
+      const tradeoff::TruthReach reach = tradeoff::reachOverViews(
+          square.scan, tradeoff::buildReferenceSurface(square.scan.points, rule));
+      std::printf(" %.2f / %+.2f / %lld |", reach.spacings, reach.signed_spacings,
+                  static_cast<long long>(reach.inner_holes));
+    }
+    const tradeoff::PlaneCoverage coverage = tradeoff::jitteredPlaneCoverage(rule);
+    std::printf(" %lld | %lld |\n", static_cast<long long>(coverage.holes),
+                static_cast<long long>(false_outlines));
+    std::fflush(stdout);
+  };
+  base.outline_neighbours = 0;
+  row(base, "-", 0);
+  for (const int neighbour : neighbours) {
+    for (const double gap : gaps) {
+      std::string shares;
+      for (const Square& square : squares) {
+        const auto outline = tradeoff::outlinePoints(square.scan.points.positions, neighbour, gap);
+        char text[16];
+        std::snprintf(text, sizeof text, "%s%.1f%%", shares.empty() ? "" : " ",
+                      100.0 * static_cast<double>(std::count(outline.begin(), outline.end(), 1)) /
+                          static_cast<double>(outline.size()));
+        shares += text;
+      }
+      const auto outline = tradeoff::outlinePoints(plane.positions, neighbour, gap);
+      std::int64_t false_outlines = 0;
+      const float inside = 1.0f - 2 * 2.0f / 200;
+      for (std::size_t i = 0; i < outline.size(); ++i) {
+        const auto& p = plane.positions[i];
+        false_outlines += outline[i] != 0 && std::fabs(p[0]) < inside && std::fabs(p[1]) < inside;
+      }
+      for (const auto& [scale, shift] : discs) {
+        tradeoff::SplatRule rule = base;
+        rule.outline_neighbours = neighbour;
+        rule.outline_gap_degrees = gap;
+        rule.outline_scale = scale;
+        rule.outline_shift = shift;
+        row(rule, shares, false_outlines);
+      }
+    }
+  }
+}
+
 int run(int argc, char** argv) {
   // The defaults put lms400's voxel-to-spacing ratio (2.27) at depth 6 (jittered) and 7 (lines).
   int cells = 73, lines = 139, strays = 40;
   tradeoff::SplatRule rule = tradeoff::kSplatRule;
   double extension = tradeoff::kMeshExtensionSteps;
-  bool organized_only = false;
+  bool organized_only = false, outline_sweep = false;
   cli::ArgumentReader args(argc, argv);
   while (args.next()) {
     if (args.is("-h") || args.is("--help")) {
@@ -236,23 +339,51 @@ int run(int argc, char** argv) {
       strays = cli::parseInt(name, args.value(), 1, 1000);
     } else if (args.is("--rule")) {
       const std::string name = args.name();
+      const tradeoff::SplatRule outline = rule;
       rule = tradeoff::parseSplatRule(name, args.value());
+      rule.outline_neighbours = outline.outline_neighbours;
+      rule.outline_gap_degrees = outline.outline_gap_degrees;
+      rule.outline_scale = outline.outline_scale;
+      rule.outline_shift = outline.outline_shift;
     } else if (args.is("--mesh-extension")) {
       const std::string name = args.name();
       extension = cli::parseReal(name, args.value(), 0.0, 4.0);
     } else if (args.is("--organized-only")) {
       organized_only = true;
+    } else if (args.is("--outline")) {
+      const std::string name = args.name();
+      parseOutline(name, args.value(), rule);
+    } else if (args.is("--outline-sweep")) {
+      outline_sweep = true;
     } else {
       args.refuseUnknown();
     }
+  }
+  if (outline_sweep) {
+    // (scale, shift) of the outline's discs: smaller, or as large and moved inward.
+    outlineSweep(cells, lines, strays, rule, {16, 24}, {120, 150},
+                 {{0.4, 0},
+                  {0.45, 0},
+                  {0.5, 0},
+                  {0.55, 0},
+                  {0.7, 0.3},
+                  {0.7, 0.4},
+                  {0.7, 0.5},
+                  {0.7, 0.55},
+                  {0.7, 0.6},
+                  {0.6, 0.2},
+                  {0.6, 0.3},
+                  {0.6, 0.4}});
+    return 0;
   }
   std::printf(
       "Each cell: spill / holes (holes more than %g h inside the outline) / mean reach past the "
       "edge (spill over the truth's outline, in sample spacings h), as shares of the truth's "
       "pixels.\nReference rule: k %d, scale %.2f, cap quantile %.2f, edge offset %.2f, edge scale "
-      "%.2f\n",
+      "%.2f, outline %d neighbours, gap %.0f degrees, scale %.2f, shift %.2f\n",
       kInsetSpacings, rule.neighbour, rule.scale, rule.cap_quantile, rule.edge_offset,
-      rule.edge_scale);
+      rule.edge_scale, rule.outline_neighbours, rule.outline_gap_degrees, rule.outline_scale,
+      rule.outline_shift);
   for (const Sampling sampling : {Sampling::kJittered, Sampling::kLines}) {
     if (organized_only) break;
     for (const int stray_count : {0, strays}) {
