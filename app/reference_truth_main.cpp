@@ -124,6 +124,52 @@ std::string cellOf(const TruthMatch& match, double spacing_px) {
   return text;
 }
 
+// One table row per view, then one over all views, of how each of `references` (reference
+// surfaces of `scene`'s points), octopoint's model `matched` at its one depth, and `automatic` at
+// depth auto match the truth; `cell` formats a match.
+void printViews(const tradeoff::TruthScan& truth, const tradeoff::Scene& scene, int yaw,
+                const std::vector<const tradeoff::Scene*>& references,
+                const tradeoff::InMemoryModel& matched, const tradeoff::InMemoryModel& automatic,
+                std::string (*cell)(const TruthMatch&, double)) {
+  std::vector<TruthMatch> all(references.size() + 2);
+  double spacing_sum = 0;
+  for (const View& view : kViews) {
+    const Camera camera = cameraFor(view, yaw);
+    const double spacing_px =
+        truth.spacing * tradeoff::ScreenProjection(scene.fit, camera).pixelsPerUnit();
+    const int inset = static_cast<int>(std::ceil(kInsetSpacings * spacing_px));
+    const cv::Mat exact = tradeoff::truthMask(truth, scene.fit, camera);
+    const LevelView* chosen = autoLevel(*automatic.view, camera);
+    if (chosen == nullptr) throw cli::Error("depth auto refused the view");
+    std::vector<TruthMatch> match;
+    for (const tradeoff::Scene* reference : references)
+      match.push_back(tradeoff::matchTruth(
+          exact, tradeoff::referenceFor(*reference, camera).silhouette, inset));
+    match.push_back(
+        tradeoff::matchTruth(exact, octopointCovered(matched.view->finestLevel(), camera), inset));
+    match.push_back(tradeoff::matchTruth(exact, octopointCovered(*chosen, camera), inset));
+    for (std::size_t k = 0; k < match.size(); ++k) all[k].add(match[k]);
+    spacing_sum += spacing_px * static_cast<double>(match[0].outline);
+    char head[64];
+    std::snprintf(head, sizeof head, "| %dx%d zoom %g | %.2f |", view.width, view.height, view.zoom,
+                  spacing_px);
+    std::string row = head;
+    for (std::size_t k = 0; k + 1 < match.size(); ++k)
+      row.append(" ").append(cell(match[k], spacing_px)).append(" |");
+    row.append(" ").append(std::to_string(chosen->depth)).append(" | ");
+    row.append(cell(match.back(), spacing_px)).append(" |");
+    std::printf("%s\n", row.c_str());
+  }
+  // Over all views: the reach in spacings weighs each view by its outline.
+  const double spacing_px = spacing_sum / static_cast<double>(all[0].outline);
+  std::string row = "| all views | |";
+  for (std::size_t k = 0; k + 1 < all.size(); ++k)
+    row.append(" ").append(cell(all[k], spacing_px)).append(" |");
+  row.append(" | ").append(cell(all.back(), spacing_px)).append(" |");
+  std::printf("%s\n", row.c_str());
+  std::fflush(stdout);
+}
+
 void runCase(Sampling sampling, int cells, int strays, int yaw, const tradeoff::SplatRule& rule) {
   const tradeoff::TruthScan truth = tradeoff::squareScan(sampling, cells, strays, 11);
   tradeoff::Scene scene;
@@ -143,32 +189,7 @@ void runCase(Sampling sampling, int cells, int strays, int yaw, const tradeoff::
       sampling == Sampling::kJittered ? "jittered" : "line scanner", strays, yaw,
       truth.points.positions.size(), truth.spacing, depth,
       scene.fit.edge / (1 << depth) / truth.spacing, depth);
-  TruthMatch all[3];
-  double spacing_sum = 0;
-  for (const View& view : kViews) {
-    const Camera camera = cameraFor(view, yaw);
-    const double spacing_px =
-        truth.spacing * tradeoff::ScreenProjection(scene.fit, camera).pixelsPerUnit();
-    const int inset = static_cast<int>(std::ceil(kInsetSpacings * spacing_px));
-    const cv::Mat exact = tradeoff::truthMask(truth, scene.fit, camera);
-    const LevelView* chosen = autoLevel(*automatic->view, camera);
-    if (chosen == nullptr) throw cli::Error("depth auto refused the view");
-    const TruthMatch match[3] = {
-        tradeoff::matchTruth(exact, tradeoff::referenceFor(scene, camera).silhouette, inset),
-        tradeoff::matchTruth(exact, octopointCovered(matched->view->finestLevel(), camera), inset),
-        tradeoff::matchTruth(exact, octopointCovered(*chosen, camera), inset)};
-    for (int k = 0; k < 3; ++k) all[k].add(match[k]);
-    spacing_sum += spacing_px * static_cast<double>(match[0].outline);
-    std::printf("| %dx%d zoom %g | %.2f | %s | %s | %d | %s |\n", view.width, view.height,
-                view.zoom, spacing_px, cellOf(match[0], spacing_px).c_str(),
-                cellOf(match[1], spacing_px).c_str(), chosen->depth,
-                cellOf(match[2], spacing_px).c_str());
-  }
-  // Over all views: the reach in spacings weighs each view by its outline.
-  const double spacing_px = spacing_sum / static_cast<double>(all[0].outline);
-  std::printf("| all views | | %s | %s | | %s |\n", cellOf(all[0], spacing_px).c_str(),
-              cellOf(all[1], spacing_px).c_str(), cellOf(all[2], spacing_px).c_str());
-  std::fflush(stdout);
+  printViews(truth, scene, yaw, {&scene}, *matched, *automatic, cellOf);
 }
 
 // The depth camera's square (app/reference_truth.h depthCameraScan): its mesh ending at the last
@@ -196,52 +217,7 @@ void runOrganizedCase(int across, double distance, double tilt, int yaw, double 
       truth.points.positions.size(), truth.spacing, before.surface.triangles.size(),
       scene.surface.triangles.size(), depth, scene.fit.edge / (1 << depth) / truth.spacing,
       extension, depth);
-  TruthMatch all[4];
-  double spacing_sum = 0;
-  for (const View& view : kViews) {
-    const Camera camera = cameraFor(view, yaw);
-    const double spacing_px =
-        truth.spacing * tradeoff::ScreenProjection(scene.fit, camera).pixelsPerUnit();
-    const int inset = static_cast<int>(std::ceil(kInsetSpacings * spacing_px));
-    const cv::Mat exact = tradeoff::truthMask(truth, scene.fit, camera);
-    const LevelView* chosen = autoLevel(*automatic->view, camera);
-    if (chosen == nullptr) throw cli::Error("depth auto refused the view");
-    const TruthMatch match[4] = {
-        tradeoff::matchTruth(exact, tradeoff::referenceFor(before, camera).silhouette, inset),
-        tradeoff::matchTruth(exact, tradeoff::referenceFor(scene, camera).silhouette, inset),
-        tradeoff::matchTruth(exact, octopointCovered(matched->view->finestLevel(), camera), inset),
-        tradeoff::matchTruth(exact, octopointCovered(*chosen, camera), inset)};
-    for (int k = 0; k < 4; ++k) all[k].add(match[k]);
-    spacing_sum += spacing_px * static_cast<double>(match[0].outline);
-    std::printf("| %dx%d zoom %g | %.2f | %s | %s | %s | %d | %s |\n", view.width, view.height,
-                view.zoom, spacing_px, signedCellOf(match[0], spacing_px).c_str(),
-                signedCellOf(match[1], spacing_px).c_str(),
-                signedCellOf(match[2], spacing_px).c_str(), chosen->depth,
-                signedCellOf(match[3], spacing_px).c_str());
-  }
-  const double spacing_px = spacing_sum / static_cast<double>(all[0].outline);
-  std::printf("| all views | | %s | %s | %s | | %s |\n", signedCellOf(all[0], spacing_px).c_str(),
-              signedCellOf(all[1], spacing_px).c_str(), signedCellOf(all[2], spacing_px).c_str(),
-              signedCellOf(all[3], spacing_px).c_str());
-  std::fflush(stdout);
-}
-
-// Parses --outline K,GAP,SCALE,SHIFT (or "none") into `rule`.
-void parseOutline(const std::string& flag, const std::string& text, tradeoff::SplatRule& rule) {
-  rule.outline_neighbours = 0;
-  if (text == "none") return;
-  std::vector<std::string> parts;
-  for (std::size_t start = 0;;) {
-    const std::size_t comma = text.find(',', start);
-    parts.push_back(text.substr(start, comma == std::string::npos ? comma : comma - start));
-    if (comma == std::string::npos) break;
-    start = comma + 1;
-  }
-  if (parts.size() != 4) throw cli::Error(flag + ": \"" + text + "\" is not K,GAP,SCALE,SHIFT");
-  rule.outline_neighbours = cli::parseInt(flag, parts[0], 3, 64);
-  rule.outline_gap_degrees = cli::parseReal(flag, parts[1], 30.0, 359.0);
-  rule.outline_scale = cli::parseReal(flag, parts[2], 0.0, 4.0);
-  rule.outline_shift = cli::parseReal(flag, parts[3], 0.0, 1.0);
+  printViews(truth, scene, yaw, {&before, &scene}, *matched, *automatic, signedCellOf);
 }
 
 // The measurement that chose kSplatRule's outline rule: per detector (neighbours, gap), the share
@@ -352,7 +328,7 @@ int run(int argc, char** argv) {
       organized_only = true;
     } else if (args.is("--outline")) {
       const std::string name = args.name();
-      parseOutline(name, args.value(), rule);
+      tradeoff::parseOutlineRule(name, args.value(), rule);
     } else if (args.is("--outline-sweep")) {
       outline_sweep = true;
     } else {

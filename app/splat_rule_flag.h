@@ -12,4 +12,9 @@ namespace octopoint::tradeoff {
 // outline points).
 SplatRule parseSplatRule(const std::string& flag, const std::string& text);
 
+// The --outline flag of octopoint-reference-truth: sets `rule`'s outline points from
+// K,GAP,SCALE,SHIFT (K 3..64, GAP 30..359 degrees, SCALE 0..4, SHIFT 0..1), or none; throws
+// cli::Error naming `flag` otherwise.
+void parseOutlineRule(const std::string& flag, const std::string& text, SplatRule& rule);
+
 }  // namespace octopoint::tradeoff
