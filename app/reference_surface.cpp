@@ -308,18 +308,19 @@ std::vector<std::array<float, 3>> outlineInward(const std::vector<std::array<flo
   return outline;
 }
 
-bool isOutline(const std::array<float, 3>& inward) {
-  return inward[0] != 0 || inward[1] != 0 || inward[2] != 0;
+// 1 for each position outlineInward found on the outline, 0 for the others.
+std::vector<std::uint8_t> outlineFlags(const std::vector<std::array<float, 3>>& inward) {
+  std::vector<std::uint8_t> outline(inward.size(), 0);
+  for (std::size_t i = 0; i < inward.size(); ++i)
+    outline[i] = inward[i][0] != 0 || inward[i][1] != 0 || inward[i][2] != 0 ? 1 : 0;
+  return outline;
 }
 
 }  // namespace
 
 std::vector<std::uint8_t> outlinePoints(const std::vector<std::array<float, 3>>& positions,
                                         int neighbour, double gap_degrees) {
-  const std::vector<std::array<float, 3>> inward = outlineInward(positions, neighbour, gap_degrees);
-  std::vector<std::uint8_t> outline(positions.size(), 0);
-  for (std::size_t i = 0; i < inward.size(); ++i) outline[i] = isOutline(inward[i]) ? 1 : 0;
-  return outline;
+  return outlineFlags(outlineInward(positions, neighbour, gap_degrees));
 }
 
 std::vector<float> splatRadii(const std::vector<float>& neighbour_distance, const SplatRule& rule,
@@ -354,8 +355,10 @@ ReferenceSurface buildReferenceSurface(const prepare::Scan& points, const SplatR
   const bool gridded = !points.grid_index.empty() &&
                        points.grid_index.size() == points.positions.size() &&
                        points.grid_width > 0 && points.grid_height > 1;
-  if (gridded) meshGrid(points, mesh_extension, surface);
-  if (gridded) return surface;
+  if (gridded) {
+    meshGrid(points, mesh_extension, surface);
+    return surface;
+  }
   const std::vector<float> offsets = rule.edge_offset > 0
                                          ? centroidOffsets(points.positions, rule.neighbour)
                                          : std::vector<float>{};
@@ -363,8 +366,7 @@ ReferenceSurface buildReferenceSurface(const prepare::Scan& points, const SplatR
   std::vector<std::uint8_t> outline;
   if (rule.outline_neighbours > 0) {
     inward = outlineInward(points.positions, rule.outline_neighbours, rule.outline_gap_degrees);
-    outline.resize(inward.size());
-    for (std::size_t i = 0; i < inward.size(); ++i) outline[i] = isOutline(inward[i]) ? 1 : 0;
+    outline = outlineFlags(inward);
   }
   surface.splat_radius =
       splatRadii(neighbourDistances(points.positions, rule.neighbour), rule, offsets, outline);
