@@ -27,7 +27,7 @@ using tradeoff::SplatRule;
 
 constexpr const char* kUsage =
     R"(usage: octopoint-reference-closure SCAN [--yaw DEG] [--pictures DIR [--rule K,SCALE,QUANTILE]
-                                  [--no-outline]]
+                                  [--no-outline] [--sparse F]]
 
 Prints (markdown) how closed the surface reference of an unorganized scan is, for disc radius =
 scale x the distance to the k-th nearest neighbour, that distance capped at a quantile of the
@@ -47,8 +47,11 @@ scan's (app/reference_surface.h):
   --rule K,SCALE,QUANTILE[,EDGE_OFFSET,EDGE_SCALE]  that rule (default the reference's,
                     kSplatRule); K 1..64, SCALE 0.1..4, QUANTILE 0..1, EDGE_OFFSET 0..1,
                     EDGE_SCALE 0..4 (app/reference_surface.h SplatRule), with kSplatRule's
-                    outline discs
+                    outline discs and sparse outliers
   --no-outline      the rule without outline discs (every point's disc on its point)
+  --sparse F        the rule's sparse outliers: a point whose k-th neighbour is more than F
+                    times as far as the median point's is drawn as a stray return; F 0 (none)
+                    or 1..10 (default kSplatRule's, 1.9)
   -h, --help        show this help
 
 On any error prints one line on stderr and exits with status 1.
@@ -144,6 +147,7 @@ int run(int argc, char** argv) {
   Angle yaw = Angle::fromDegrees(30);
   SplatRule picture_rule = tradeoff::kSplatRule;
   bool no_outline = false;
+  double sparse_factor = tradeoff::kSplatRule.sparse_factor;
   cli::ArgumentReader args(argc, argv);
   while (args.next()) {
     if (args.is("-h") || args.is("--help")) {
@@ -163,6 +167,11 @@ int run(int argc, char** argv) {
       picture_rule.outline_shift = outline.outline_shift;
     } else if (args.is("--no-outline")) {
       no_outline = true;
+    } else if (args.is("--sparse")) {
+      const std::string name = args.name(), text = args.value();
+      sparse_factor = cli::parseReal(name, text, 0.0, 10.0);
+      if (sparse_factor > 0 && sparse_factor < 1)
+        throw cli::Error(name + ": " + cli::inQuotes(text) + " is neither 0 nor in 1..10");
     } else if (args.isPlain() && scan_path.empty()) {
       scan_path = args.current();
     } else {
@@ -171,6 +180,7 @@ int run(int argc, char** argv) {
   }
   if (scan_path.empty()) throw cli::Error("no SCAN given (see --help)");
   if (no_outline) picture_rule.outline_neighbours = 0;
+  picture_rule.sparse_factor = sparse_factor;
   std::error_code error;
   if (!pictures.empty() && !std::filesystem::is_directory(pictures, error))
     throw cli::Error("--pictures: " + cli::inQuotes(pictures) + " is not a directory");
@@ -187,12 +197,12 @@ int run(int argc, char** argv) {
                   picture_rule, yaw, pictures);
     std::printf(
         "k %d, scale %.2f, cap quantile %.2f, edge offset %.2f, edge scale %.2f, outline %d "
-        "neighbours gap %.0f degrees scale %.2f shift %.2f: holes inside %s of covered (worst view "
-        "%.3f%%), empty near the outline %s\n",
+        "neighbours gap %.0f degrees scale %.2f shift %.2f, sparse factor %.2f: holes inside %s of "
+        "covered (worst view %.3f%%), empty near the outline %s\n",
         picture_rule.neighbour, picture_rule.scale, picture_rule.cap_quantile,
         picture_rule.edge_offset, picture_rule.edge_scale, picture_rule.outline_neighbours,
         picture_rule.outline_gap_degrees, picture_rule.outline_scale, picture_rule.outline_shift,
-        percent(closure.holes, closure.covered).c_str(), 100.0 * closure.worst_share,
+        picture_rule.sparse_factor, percent(closure.holes, closure.covered).c_str(), 100.0 * closure.worst_share,
         percent(closure.outline_holes, closure.covered).c_str());
     return 0;
   }

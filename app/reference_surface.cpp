@@ -323,6 +323,26 @@ std::vector<std::uint8_t> outlinePoints(const std::vector<std::array<float, 3>>&
   return outlineFlags(outlineInward(positions, neighbour, gap_degrees));
 }
 
+std::vector<std::uint8_t> strayPoints(const std::vector<float>& neighbour_distance,
+                                      const SplatRule& rule,
+                                      const std::vector<float>& centroid_offset) {
+  std::vector<std::uint8_t> stray(neighbour_distance.size(), 0);
+  if (stray.empty()) return stray;
+  double sparse_limit = std::numeric_limits<double>::infinity();
+  if (rule.sparse_factor > 0) {
+    std::vector<float> sorted = neighbour_distance;
+    const auto middle = sorted.begin() + static_cast<std::ptrdiff_t>(sorted.size() / 2);
+    std::nth_element(sorted.begin(), middle, sorted.end());
+    sparse_limit = rule.sparse_factor * static_cast<double>(*middle);
+  }
+  const bool edges = rule.edge_offset > 0 && centroid_offset.size() == stray.size();
+  for (std::size_t i = 0; i < stray.size(); ++i) {
+    const bool on_edge = edges && centroid_offset[i] > rule.edge_offset;
+    stray[i] = on_edge || static_cast<double>(neighbour_distance[i]) > sparse_limit ? 1 : 0;
+  }
+  return stray;
+}
+
 std::vector<float> splatRadii(const std::vector<float>& neighbour_distance, const SplatRule& rule,
                               const std::vector<float>& centroid_offset,
                               const std::vector<std::uint8_t>& outline) {
@@ -335,12 +355,12 @@ std::vector<float> splatRadii(const std::vector<float>& neighbour_distance, cons
   std::nth_element(sorted.begin(), sorted.begin() + static_cast<std::ptrdiff_t>(rank),
                    sorted.end());
   const double limit = sorted[rank];
-  const bool edges = rule.edge_offset > 0 && centroid_offset.size() == radius.size();
+  const std::vector<std::uint8_t> stray = strayPoints(neighbour_distance, rule, centroid_offset);
   const bool outlines = rule.outline_neighbours > 0 && outline.size() == radius.size();
   for (std::size_t i = 0; i < radius.size(); ++i) {
-    const bool on_edge = edges && centroid_offset[i] > rule.edge_offset;
     const bool on_outline = outlines && outline[i] != 0;
-    const double scale = on_edge ? rule.edge_scale : on_outline ? rule.outline_scale : rule.scale;
+    const double scale =
+        stray[i] != 0 ? rule.edge_scale : on_outline ? rule.outline_scale : rule.scale;
     radius[i] =
         static_cast<float>(scale * std::min(static_cast<double>(neighbour_distance[i]), limit));
   }
@@ -368,11 +388,12 @@ ReferenceSurface buildReferenceSurface(const prepare::Scan& points, const SplatR
     inward = outlineInward(points.positions, rule.outline_neighbours, rule.outline_gap_degrees);
     outline = outlineFlags(inward);
   }
-  surface.splat_radius =
-      splatRadii(neighbourDistances(points.positions, rule.neighbour), rule, offsets, outline);
+  const std::vector<float> distance = neighbourDistances(points.positions, rule.neighbour);
+  surface.splat_radius = splatRadii(distance, rule, offsets, outline);
   if (rule.outline_shift > 0) {
+    const std::vector<std::uint8_t> stray = strayPoints(distance, rule, offsets);
     for (std::size_t i = 0; i < outline.size(); ++i) {
-      if (outline[i] == 0 || (!offsets.empty() && offsets[i] > rule.edge_offset)) continue;
+      if (outline[i] == 0 || stray[i] != 0) continue;
       const double by = rule.outline_shift * surface.splat_radius[i];
       for (std::size_t axis = 0; axis < 3; ++axis)
         surface.positions[i][axis] += static_cast<float>(by * inward[i][axis]);

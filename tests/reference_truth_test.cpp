@@ -84,6 +84,7 @@ TEST(ReferenceTruth, StrayReturnsSpillLessThanSurfaceSamples) {
     const Reach reach = reachOf(scan, kSplatRule);
     SplatRule no_stray_rule = kSplatRule;
     no_stray_rule.edge_offset = 0;
+    no_stray_rule.sparse_factor = 0;
     const Reach before = reachOf(scan, no_stray_rule);
     EXPECT_LE(reach.spacings, c.bound) << nameOf(c.sampling);
     EXPECT_EQ(reach.inner_holes, 0) << nameOf(c.sampling) << ", first at " << reach.first_hole;
