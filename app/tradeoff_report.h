@@ -28,6 +28,9 @@ struct SweepResult {
   // PSNR of the reference in the colours of the model this configuration draws
   // (app/palette_ceiling.h): no frame of that model can score more.
   double palette_ceiling_psnr = 0;
+  // PSNR of the exact cover of the finest level of that model (app/voxel_cover.h): what its
+  // voxels show when each covers exactly the pixel centres inside its projection.
+  double voxel_cover_psnr = 0;
 };
 
 struct SweepCell {

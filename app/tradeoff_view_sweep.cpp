@@ -9,9 +9,11 @@
 #include <string>
 #include <vector>
 
+#include "app/image_quality.h"
 #include "app/palette_ceiling.h"
 #include "app/tradeoff.h"
 #include "app/tradeoff_report.h"
+#include "app/voxel_cover.h"
 #include "cli/error.h"
 #include "cli/output_file.h"
 #include "cli/text.h"
@@ -60,6 +62,21 @@ class SweepDrawer {
                          configName(config) + "): " + describe(error));
       }
     }
+  }
+  // The exact cover (app/voxel_cover.h) of the finest level of `config`'s model (the after
+  // model's finest dense depth) for `camera`, as an 8-bit BGR image of the camera's size.
+  cv::Mat exactCover(Config config, Camera camera) {
+    const ModelView& view = model(config);
+    const int factor = voxelCoverFactor(camera.width, camera.height);
+    camera.width *= factor;
+    camera.height *= factor;
+    FrameSetup setup;
+    const CameraError error =
+        buildFrameSetup(camera, view.finestLevel().depth, kDefaultFractionBits, &setup);
+    if (error != CameraError::kNone) throw cli::Error(std::string("camera: ") + describe(error));
+    Framebuffer frame(camera.width, camera.height);
+    renderLevel(variant_, view.finestLevel(), setup, frame);
+    return sampleAtPixelCentres(toImage(frame, view), factor);
   }
   // The last frame's set-up (its depth and splat).
   const FrameSetup& setup() const { return setup_; }
@@ -179,8 +196,9 @@ std::vector<cli::OutputFile> runViewSweep(const Scene& scene, const ViewSweepOpt
       throw cli::Error(cli::displayPath(pictures_dir) + ": cannot create it: " + error.message());
   }
 
-  // Quality: one frame of each configuration per cell against the reference, and the best any
-  // frame of each model could do (its palette ceiling).
+  // Quality: one frame of each configuration per cell against the reference, the best any frame
+  // of each model could do (its palette ceiling) and what its finest voxels show exactly (their
+  // exact cover).
   const std::vector<cv::Vec3b> before_colours = frameColours(*before_model->view, kBackground);
   const std::vector<cv::Vec3b> after_colours = frameColours(*after_model->view, kBackground);
   std::vector<SweepCell> cells;
@@ -193,13 +211,17 @@ std::vector<cli::OutputFile> runViewSweep(const Scene& scene, const ViewSweepOpt
       const Reference reference = referenceFor(scene, camera);
       const double before_ceiling = paletteCeilingPsnr(reference.image, before_colours);
       const double after_ceiling = paletteCeilingPsnr(reference.image, after_colours);
+      const double before_cover =
+          psnr(reference.image, drawer.exactCover(Config::kBefore, camera));
+      const double after_cover = psnr(reference.image, drawer.exactCover(Config::kAfter, camera));
       cv::Mat pictures[3], after_empty;
       for (std::size_t k = 0; k < 3; ++k) {
         drawer.draw(kConfigs[k], camera, frame, filler);
         const SplatFootprint& splat = drawer.setup().splat;
         cell.results.push_back({kConfigs[k], drawer.setup().depth, splat.columns, splat.rows, 0,
                                 measure(reference, frame, drawer.model(kConfigs[k])),
-                                kConfigs[k] == Config::kAfter ? after_ceiling : before_ceiling});
+                                kConfigs[k] == Config::kAfter ? after_ceiling : before_ceiling,
+                                kConfigs[k] == Config::kAfter ? after_cover : before_cover});
         if (options.pictures) {
           pictures[k] = toImage(frame, drawer.model(kConfigs[k]));
           if (kConfigs[k] == Config::kAfter) markEmpty(reference, frame, &after_empty);

@@ -3,7 +3,8 @@
 # SSIM against closed forms, the palette ceiling and the error's regions against known answers, and
 # a small octopoint-tradeoff --sweep-views run.
 add_executable(reference_tests reference_render_test.cpp reference_truth_test.cpp
-               image_quality_test.cpp error_regions_test.cpp palette_ceiling_test.cpp)
+               image_quality_test.cpp error_regions_test.cpp palette_ceiling_test.cpp
+               voxel_cover_test.cpp)
 target_link_libraries(reference_tests PRIVATE octopoint_reference octopoint_models opencv_imgproc
                       GTest::gtest_main octopoint_warnings)
 gtest_discover_tests(reference_tests DISCOVERY_MODE PRE_TEST)
