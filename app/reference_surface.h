@@ -71,7 +71,8 @@ inline constexpr double kMeshExtensionSteps = 0.45;
 // point do worse for the same closure (0.45 x d8: 0.58, 0.94, 0.42, 0.53; 0.4 opens holes), as
 // does the 150-degree gap (fewer outline points found: 0.70 shift 0.5 reaches 0.65, 1.07, 0.39,
 // 0.56). On lms400 the reference's holes inside stay 0.022% of its covered pixels (0.019% without
-// the outline discs; scripts/reference-closure --pictures DIR [--no-outline]).
+// the outline discs, 0.010% with the sparse outliers below; scripts/reference-closure --pictures
+// DIR [--no-outline] [--sparse F]).
 struct SplatRule {
   int neighbour = 8;
   double scale = 0.7;
