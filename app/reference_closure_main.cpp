@@ -202,8 +202,8 @@ int run(int argc, char** argv) {
         picture_rule.neighbour, picture_rule.scale, picture_rule.cap_quantile,
         picture_rule.edge_offset, picture_rule.edge_scale, picture_rule.outline_neighbours,
         picture_rule.outline_gap_degrees, picture_rule.outline_scale, picture_rule.outline_shift,
-        picture_rule.sparse_factor, percent(closure.holes, closure.covered).c_str(), 100.0 * closure.worst_share,
-        percent(closure.outline_holes, closure.covered).c_str());
+        picture_rule.sparse_factor, percent(closure.holes, closure.covered).c_str(),
+        100.0 * closure.worst_share, percent(closure.outline_holes, closure.covered).c_str());
     return 0;
   }
   printJitteredPlaneTable();

@@ -359,8 +359,9 @@ std::vector<float> splatRadii(const std::vector<float>& neighbour_distance, cons
   const bool outlines = rule.outline_neighbours > 0 && outline.size() == radius.size();
   for (std::size_t i = 0; i < radius.size(); ++i) {
     const bool on_outline = outlines && outline[i] != 0;
-    const double scale =
-        stray[i] != 0 ? rule.edge_scale : on_outline ? rule.outline_scale : rule.scale;
+    const double scale = stray[i] != 0 ? rule.edge_scale
+                         : on_outline  ? rule.outline_scale
+                                       : rule.scale;
     radius[i] =
         static_cast<float>(scale * std::min(static_cast<double>(neighbour_distance[i]), limit));
   }

@@ -10,10 +10,10 @@
 //   quantile over the scan: the smallest discs that close the reference's own surface
 //   (app/reference_closure.h measures it); 0.25 x that distance for a stray return (neighbours on
 //   one side only) or a sparse outlier (its neighbours more than 1.9 times as far as the scan's
-//   median point's), which the exact silhouette of sampled squares supports (app/reference_truth.h);
-//   a point on the surface's outline (its 16 nearest neighbours leave a gap wider than 120 degrees
-//   around it) keeps its disc but moves it inward by 0.55 x its radius, which puts the discs'
-//   outline nearest the true edge of sampled squares with no hole inside.
+//   median point's), which the exact silhouette of sampled squares supports
+//   (app/reference_truth.h); a point on the surface's outline (its 16 nearest neighbours leave a
+//   gap wider than 120 degrees around it) keeps its disc but moves it inward by 0.55 x its radius,
+//   which puts the discs' outline nearest the true edge of sampled squares with no hole inside.
 //
 // Building it is view-independent and done once per scan; app/reference_render.h draws it per view.
 // This file's .cpp is the only one under app/ that includes PCL headers (they compile slowly).

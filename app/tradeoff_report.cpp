@@ -230,7 +230,8 @@ std::string ceilingTable(const std::vector<SweepCell>& cells) {
   for (const SweepCell& cell : cells) {
     md << "| " << cell.width << "x" << cell.height << " | " << format("%g", cell.zoom) << " | "
        << pair(cell, [](const SweepResult& r) { return format("%.1f", r.palette_ceiling_psnr); })
-       << " | " << pair(cell, [](const SweepResult& r) { return format("%.2f", r.voxel_cover_psnr); })
+       << " | "
+       << pair(cell, [](const SweepResult& r) { return format("%.2f", r.voxel_cover_psnr); })
        << " | " << pair(cell, [](const SweepResult& r) { return format("%.2f", r.quality.psnr); })
        << " | " << pair(cell, shares) << " | "
        << pair(cell,
@@ -275,14 +276,14 @@ std::string sweepCsv(const std::string& label, const std::vector<SweepCell>& cel
     for (const SweepResult& r : cell.results) {
       const RegionError& error = r.quality.error_by_region;
       char line[384];
-      std::snprintf(line, sizeof line,
-                    "%s,%d,%d,%g,%s,%d,%d,%d,%.4f,%.5f,%.5f,%.3f,%.4f,%.3f,%.4f,%.4f,%.4f,%.4f,%.3f\n",
-                    label.c_str(), cell.width, cell.height, cell.zoom, configName(r.config),
-                    r.depth, r.splat_columns, r.splat_rows, r.ms_per_frame, r.quality.empty_share,
-                    r.quality.interior_empty_share, r.quality.psnr, r.quality.ssim,
-                    r.palette_ceiling_psnr, error.share(Region::kInterior),
-                    error.share(Region::kInnerBand), error.share(Region::kOuterBand),
-                    error.share(Region::kRest), r.voxel_cover_psnr);
+      std::snprintf(
+          line, sizeof line,
+          "%s,%d,%d,%g,%s,%d,%d,%d,%.4f,%.5f,%.5f,%.3f,%.4f,%.3f,%.4f,%.4f,%.4f,%.4f,%.3f\n",
+          label.c_str(), cell.width, cell.height, cell.zoom, configName(r.config), r.depth,
+          r.splat_columns, r.splat_rows, r.ms_per_frame, r.quality.empty_share,
+          r.quality.interior_empty_share, r.quality.psnr, r.quality.ssim, r.palette_ceiling_psnr,
+          error.share(Region::kInterior), error.share(Region::kInnerBand),
+          error.share(Region::kOuterBand), error.share(Region::kRest), r.voxel_cover_psnr);
       csv += line;
     }
   }

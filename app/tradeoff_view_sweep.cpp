@@ -48,35 +48,47 @@ class SweepDrawer {
     renderLevel(variant_, *level, setup_, frame);
     if (config == Config::kBeforeFilled) filler.fill(frame, bridgeDepthLimit(setup_));
   }
-  // Throws, naming the view, when draw() would refuse `camera` in some configuration.
+  // Throws, naming the view, when draw() or exactCover() would refuse `camera` in some
+  // configuration.
   void check(const Camera& camera) {
     for (Config config : {Config::kBefore, Config::kAfter}) {
       const LevelView* level =
           config == Config::kAfter ? autoLevel(after_, camera) : &before_.finestLevel();
-      const CameraError error =
+      CameraError error =
           level == nullptr ? CameraError::kOverflow
                            : buildFrameSetup(camera, level->depth, kDefaultFractionBits, &setup_);
+      std::string what = configName(config);
+      if (error == CameraError::kNone) {
+        error = buildFrameSetup(coverCamera(camera), model(config).finestLevel().depth,
+                                kDefaultFractionBits, &setup_);
+        what += ", exact voxel cover";
+      }
       if (error != CameraError::kNone) {
         throw cli::Error(std::to_string(camera.width) + "x" + std::to_string(camera.height) +
-                         " at zoom " + std::to_string(camera.zoom.raw() / 65536.0) + " (" +
-                         configName(config) + "): " + describe(error));
+                         " at zoom " + std::to_string(camera.zoom.raw() / 65536.0) + " (" + what +
+                         "): " + describe(error));
       }
     }
   }
-  // The exact cover (app/voxel_cover.h) of the finest level of `config`'s model (the after
-  // model's finest dense depth) for `camera`, as an 8-bit BGR image of the camera's size.
-  cv::Mat exactCover(Config config, Camera camera) {
-    const ModelView& view = model(config);
+  // The camera exactCover() draws with: `camera` at voxelCoverFactor() times its size.
+  static Camera coverCamera(Camera camera) {
     const int factor = voxelCoverFactor(camera.width, camera.height);
     camera.width *= factor;
     camera.height *= factor;
+    return camera;
+  }
+  // The exact cover (app/voxel_cover.h) of the finest level of `config`'s model (the after
+  // model's finest dense depth) for `camera`, as an 8-bit BGR image of the camera's size.
+  cv::Mat exactCover(Config config, const Camera& camera) {
+    const ModelView& view = model(config);
+    const Camera big = coverCamera(camera);
     FrameSetup setup;
     const CameraError error =
-        buildFrameSetup(camera, view.finestLevel().depth, kDefaultFractionBits, &setup);
+        buildFrameSetup(big, view.finestLevel().depth, kDefaultFractionBits, &setup);
     if (error != CameraError::kNone) throw cli::Error(std::string("camera: ") + describe(error));
-    Framebuffer frame(camera.width, camera.height);
+    Framebuffer frame(big.width, big.height);
     renderLevel(variant_, view.finestLevel(), setup, frame);
-    return sampleAtPixelCentres(toImage(frame, view), factor);
+    return sampleAtPixelCentres(toImage(frame, view), big.width / camera.width);
   }
   // The last frame's set-up (its depth and splat).
   const FrameSetup& setup() const { return setup_; }
@@ -211,8 +223,7 @@ std::vector<cli::OutputFile> runViewSweep(const Scene& scene, const ViewSweepOpt
       const Reference reference = referenceFor(scene, camera);
       const double before_ceiling = paletteCeilingPsnr(reference.image, before_colours);
       const double after_ceiling = paletteCeilingPsnr(reference.image, after_colours);
-      const double before_cover =
-          psnr(reference.image, drawer.exactCover(Config::kBefore, camera));
+      const double before_cover = psnr(reference.image, drawer.exactCover(Config::kBefore, camera));
       const double after_cover = psnr(reference.image, drawer.exactCover(Config::kAfter, camera));
       cv::Mat pictures[3], after_empty;
       for (std::size_t k = 0; k < 3; ++k) {

@@ -294,7 +294,6 @@ TEST(ReferenceSurfaceTest, StrayPointGetsNoWiderSplatThanTheCap) {
   EXPECT_LE(bottom - top + 1, 2 * radius_px + 1);
 }
 
-
 // A sparse outlier, a point in a cluster sampled five times more coarsely than the scan (its 8th
 // neighbour 5 x sqrt(2) steps away, over kSplatRule.sparse_factor x the median), is drawn as a
 // stray return though its neighbours lie all round it, where the centroid test sees nothing; the
@@ -308,7 +307,7 @@ TEST(ReferenceSurfaceTest, SparseOutlierGetsTheStrayDisc) {
     for (int x = -1; x <= 1; ++x)
       scan.positions.push_back({0.25f + 5 * kStep * x, 0.25f + 5 * kStep * y, 0.3f});
   const std::size_t outlier = scan.positions.size() - 5;  // the cluster's centre
-  const float capped = kStep * std::sqrt(2.0f);            // as in the test above
+  const float capped = kStep * std::sqrt(2.0f);           // as in the test above
   ASSERT_GT(5 * capped, kSplatRule.sparse_factor * capped);
   const ReferenceSurface surface = buildReferenceSurface(scan);
   EXPECT_NEAR(surface.splat_radius[outlier], kSplatRule.edge_scale * capped, 1e-6f);

@@ -18,7 +18,8 @@ namespace {
 TEST(VoxelCover, SamplesTheCentreOfEachPixel) {
   cv::Mat big(10, 15, CV_8UC1);
   for (int y = 0; y < big.rows; ++y)
-    for (int x = 0; x < big.cols; ++x) big.at<std::uint8_t>(y, x) = static_cast<std::uint8_t>(x + 16 * y);
+    for (int x = 0; x < big.cols; ++x)
+      big.at<std::uint8_t>(y, x) = static_cast<std::uint8_t>(x + 16 * y);
   const cv::Mat small = sampleAtPixelCentres(big, 5);
   ASSERT_EQ(small.cols, 3);
   ASSERT_EQ(small.rows, 2);
