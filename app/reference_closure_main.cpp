@@ -168,10 +168,8 @@ int run(int argc, char** argv) {
     } else if (args.is("--no-outline")) {
       no_outline = true;
     } else if (args.is("--sparse")) {
-      const std::string name = args.name(), text = args.value();
-      sparse_factor = cli::parseReal(name, text, 0.0, 10.0);
-      if (sparse_factor > 0 && sparse_factor < 1)
-        throw cli::Error(name + ": " + cli::inQuotes(text) + " is neither 0 nor in 1..10");
+      const std::string name = args.name();
+      sparse_factor = tradeoff::parseSparseFactor(name, args.value());
     } else if (args.isPlain() && scan_path.empty()) {
       scan_path = args.current();
     } else {

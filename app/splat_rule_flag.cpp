@@ -54,4 +54,11 @@ void parseOutlineRule(const std::string& flag, const std::string& text, SplatRul
   rule.outline_shift = cli::parseReal(flag, parts[3], 0.0, 1.0);
 }
 
+double parseSparseFactor(const std::string& flag, const std::string& text) {
+  const double factor = cli::parseReal(flag, text, 0.0, 10.0);
+  if (factor > 0 && factor < 1)
+    throw cli::Error(flag + ": " + cli::inQuotes(text) + " is neither 0 nor in 1..10");
+  return factor;
+}
+
 }  // namespace octopoint::tradeoff

@@ -1,6 +1,7 @@
 #pragma once
 // The --rule flag of octopoint-reference-closure and octopoint-reference-truth: a SplatRule
-// (app/reference_surface.h) written K,SCALE,QUANTILE[,EDGE_OFFSET,EDGE_SCALE].
+// (app/reference_surface.h) written K,SCALE,QUANTILE[,EDGE_OFFSET,EDGE_SCALE]; and the flags that
+// set its other parts.
 #include <string>
 
 #include "app/reference_surface.h"
@@ -16,5 +17,10 @@ SplatRule parseSplatRule(const std::string& flag, const std::string& text);
 // K,GAP,SCALE,SHIFT (K 3..64, GAP 30..359 degrees, SCALE 0..4, SHIFT 0..1), or none; throws
 // cli::Error naming `flag` otherwise.
 void parseOutlineRule(const std::string& flag, const std::string& text, SplatRule& rule);
+
+// The --sparse flag of octopoint-reference-closure and octopoint-tradeoff: SplatRule's
+// sparse_factor, 0 (no point is a sparse outlier) or 1..10; throws cli::Error naming `flag`
+// otherwise.
+double parseSparseFactor(const std::string& flag, const std::string& text);
 
 }  // namespace octopoint::tradeoff

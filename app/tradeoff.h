@@ -32,7 +32,9 @@ struct Scene {
   prepare::CubeFit fit;
   ReferenceSurface surface;
 };
-Scene loadScene(const std::string& scan_path, const prepare::PrepareOptions& options);
+// `rule` makes an unorganized scan's reference discs (app/reference_surface.h).
+Scene loadScene(const std::string& scan_path, const prepare::PrepareOptions& options,
+                const SplatRule& rule = kSplatRule);
 
 // A model prepared in memory from the scene at `depths` (only the densely sampled ones when
 // `dense_only`, as octopoint-prepare's default range: codegen/depth_range.h); the view points

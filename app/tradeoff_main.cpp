@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "app/splat_rule_flag.h"
 #include "app/tradeoff.h"
 #include "cli/arguments.h"
 #include "cli/error.h"
@@ -64,6 +65,11 @@ the rest. Writes OUTDIR/sweep.csv and OUTDIR/sweep.md (the tables and the issue'
                          silhouette in red, its pixels outside it in blue), each as it is made
   --rounds N             timing rounds over all cells, 1..100 (default 3): a cell's time is the
                          median of its rounds, each the median of at least 9 frames and 0.05 s
+  --sparse F             the reference of an unorganized scan draws a point whose 8th neighbour
+                         lies more than F times as far as the median point's as a stray return's
+                         small disc (a sparse outlier, docs/tradeoff.md "The reference render");
+                         F 0 (none) or 1..10 (default 1.9). A scan whose real surfaces are sampled
+                         that much more coarsely than its median wants 0
   -o, --output OUTDIR    where to write (default out); the tables appear together at the end or
                          not at all, and existing ones must be regular files
   -h, --help             show this help
@@ -84,6 +90,7 @@ struct Options {
   tradeoff::ViewSweepOptions view_sweep;
   bool sweep_views = false;
   bool label_given = false;
+  tradeoff::SplatRule reference_rule = tradeoff::kSplatRule;
   fs::path output = "out";
 };
 
@@ -181,6 +188,9 @@ Options parseOptions(int argc, char** argv) {
     } else if (args.is("--pictures")) {
       args.noValue();
       options.view_sweep.pictures = true;
+    } else if (args.is("--sparse")) {
+      const std::string name = args.name();
+      options.reference_rule.sparse_factor = tradeoff::parseSparseFactor(name, args.value());
     } else if (args.is("-o") || args.is("--output")) {
       options.output = args.value();
     } else if (args.isPlain() && options.scan.empty()) {
@@ -217,7 +227,8 @@ int run(int argc, char** argv) {
   const Options options = parseOptions(argc, argv);
   checkOutputs(options);
   if (!options.sweep_views) tradeoff::checkDepthSweepViews(options.depth_sweep);
-  const tradeoff::Scene scene = tradeoff::loadScene(options.scan, options.prepare);
+  const tradeoff::Scene scene =
+      tradeoff::loadScene(options.scan, options.prepare, options.reference_rule);
   const std::vector<cli::OutputFile> files =
       options.sweep_views ? tradeoff::runViewSweep(scene, options.view_sweep, options.output)
                           : tradeoff::runDepthSweep(scene, options.depth_sweep);

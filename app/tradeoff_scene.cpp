@@ -13,7 +13,8 @@
 
 namespace octopoint::tradeoff {
 
-Scene loadScene(const std::string& scan_path, const prepare::PrepareOptions& options) {
+Scene loadScene(const std::string& scan_path, const prepare::PrepareOptions& options,
+                const SplatRule& rule) {
   Scene scene;
   scene.scan_path = scan_path;
   scene.scan = prepare::loadScan(scan_path);
@@ -21,7 +22,7 @@ Scene loadScene(const std::string& scan_path, const prepare::PrepareOptions& opt
   scene.prepare.name = "tradeoff";
   const prepare::Scan points = prepare::modelPoints(scene.scan, scan_path, options);
   scene.fit = prepare::fitCube(points.positions, scan_path);
-  scene.surface = buildReferenceSurface(points);
+  scene.surface = buildReferenceSurface(points, rule);
   if (scene.surface.splat_radius.empty()) {
     std::printf("reference surface: %zu triangles over %zu points\n",
                 scene.surface.triangles.size(), points.positions.size());

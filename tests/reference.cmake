@@ -31,6 +31,7 @@ tradeoff_error_test(bad_zooms "--zooms: 0 is outside 1/65536..32767" ${test_scan
 tradeoff_error_test(bad_zoom "--zoom: 'x' is not a number" ${test_scans}/sphere.pcd --zoom x)
 tradeoff_error_test(bad_rounds "--rounds: 0 is outside 1..100" ${test_scans}/sphere.pcd --sweep-views --rounds 0)
 tradeoff_error_test(bad_label "--label: 'a,b' is not" ${test_scans}/sphere.pcd --sweep-views --label a,b)
+tradeoff_error_test(bad_sparse "--sparse: '0.5' is neither 0 nor in 1..10" ${test_scans}/sphere.pcd --sweep-views --sparse 0.5)
 tradeoff_error_test(missing_scan "no such file" ${test_scans}/missing.pcd --sweep-views)
 
 # octopoint-reference-truth refuses a malformed disc rule with one line naming the flag.
