@@ -95,10 +95,11 @@ tradeoff::Closure closureOf(const ScanSurface& scan, const std::vector<float>& d
     surface = tradeoff::buildReferenceSurface(scan.points, rule);  // moves outline discs inward
   } else {
     surface.positions = scan.points.positions;
-    surface.splat_radius = tradeoff::splatRadii(
-        distance, rule,
+    const std::vector<float> offsets =
         rule.edge_offset > 0 ? tradeoff::centroidOffsets(scan.points.positions, rule.neighbour)
-                             : std::vector<float>{});
+                             : std::vector<float>{};
+    surface.splat_radius =
+        tradeoff::splatRadii(distance, rule, tradeoff::strayPoints(distance, rule, offsets));
   }
   return tradeoff::measureClosure(surface, scan.fit, scan.spacing, kViews, yaw, pictures);
 }

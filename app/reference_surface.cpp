@@ -344,7 +344,7 @@ std::vector<std::uint8_t> strayPoints(const std::vector<float>& neighbour_distan
 }
 
 std::vector<float> splatRadii(const std::vector<float>& neighbour_distance, const SplatRule& rule,
-                              const std::vector<float>& centroid_offset,
+                              const std::vector<std::uint8_t>& stray,
                               const std::vector<std::uint8_t>& outline) {
   std::vector<float> radius(neighbour_distance.size(), 0.0f);
   if (radius.empty()) return radius;
@@ -355,13 +355,13 @@ std::vector<float> splatRadii(const std::vector<float>& neighbour_distance, cons
   std::nth_element(sorted.begin(), sorted.begin() + static_cast<std::ptrdiff_t>(rank),
                    sorted.end());
   const double limit = sorted[rank];
-  const std::vector<std::uint8_t> stray = strayPoints(neighbour_distance, rule, centroid_offset);
+  const bool strays = stray.size() == radius.size();
   const bool outlines = rule.outline_neighbours > 0 && outline.size() == radius.size();
   for (std::size_t i = 0; i < radius.size(); ++i) {
     const bool on_outline = outlines && outline[i] != 0;
-    const double scale = stray[i] != 0 ? rule.edge_scale
-                         : on_outline  ? rule.outline_scale
-                                       : rule.scale;
+    const double scale = strays && stray[i] != 0 ? rule.edge_scale
+                         : on_outline            ? rule.outline_scale
+                                                 : rule.scale;
     radius[i] =
         static_cast<float>(scale * std::min(static_cast<double>(neighbour_distance[i]), limit));
   }
@@ -390,9 +390,9 @@ ReferenceSurface buildReferenceSurface(const prepare::Scan& points, const SplatR
     outline = outlineFlags(inward);
   }
   const std::vector<float> distance = neighbourDistances(points.positions, rule.neighbour);
-  surface.splat_radius = splatRadii(distance, rule, offsets, outline);
+  const std::vector<std::uint8_t> stray = strayPoints(distance, rule, offsets);
+  surface.splat_radius = splatRadii(distance, rule, stray, outline);
   if (rule.outline_shift > 0) {
-    const std::vector<std::uint8_t> stray = strayPoints(distance, rule, offsets);
     for (std::size_t i = 0; i < outline.size(); ++i) {
       if (outline[i] == 0 || stray[i] != 0) continue;
       const double by = rule.outline_shift * surface.splat_radius[i];

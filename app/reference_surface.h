@@ -151,10 +151,10 @@ std::vector<std::uint8_t> strayPoints(const std::vector<float>& neighbour_distan
                                       const std::vector<float>& centroid_offset = {});
 
 // The disc radii `rule` gives for those distances: rule.scale x min(distance, the rule's quantile
-// of the distances), rule.edge_scale instead of rule.scale for a stray return (strayPoints), else
-// rule.outline_scale where `outline` (when given) is non-zero.
+// of the distances), rule.edge_scale instead of rule.scale where `stray` (strayPoints, when given)
+// is non-zero, else rule.outline_scale where `outline` (when given) is non-zero.
 std::vector<float> splatRadii(const std::vector<float>& neighbour_distance, const SplatRule& rule,
-                              const std::vector<float>& centroid_offset = {},
+                              const std::vector<std::uint8_t>& stray = {},
                               const std::vector<std::uint8_t>& outline = {});
 
 }  // namespace octopoint::tradeoff

@@ -88,7 +88,8 @@ class SweepDrawer {
     if (error != CameraError::kNone) throw cli::Error(std::string("camera: ") + describe(error));
     Framebuffer frame(big.width, big.height);
     renderLevel(variant_, view.finestLevel(), setup, frame);
-    return sampleAtPixelCentres(toImage(frame, view), big.width / camera.width);
+    return sampleAtPixelCentres(toImage(frame, view),
+                                voxelCoverFactor(camera.width, camera.height));
   }
   // The last frame's set-up (its depth and splat).
   const FrameSetup& setup() const { return setup_; }

@@ -1,5 +1,7 @@
 #include "app/voxel_cover.h"
 
+#include <algorithm>
+#include <cstdint>
 #include <stdexcept>
 
 #include "renderer/camera.h"
