@@ -27,9 +27,9 @@
 #include <vector>
 
 #include "bench/register_benchmarks.h"
-#include "models/registry.h"
+#include "octopoint/models.h"
 #include "renderer/level_of_detail.h"
-#include "renderer/render.h"
+#include "octopoint/render.h"
 
 namespace octopoint {
 namespace {

@@ -7,9 +7,8 @@
 #include <string>
 
 #include "bench/register_benchmarks.h"
-#include "models/registry.h"
-#include "renderer/hole_fill.h"
-#include "renderer/render.h"
+#include "octopoint/models.h"
+#include "octopoint/render.h"
 
 namespace octopoint {
 namespace {

@@ -1,5 +1,5 @@
 // Issue 12: a large model's frame cost follows the screen. At 1280x960, the large chunked model
-// (>= 10 million voxels, scripts/measure-large makes it) drawn complete by the progressive model
+// (>= 10 million voxels, lab/scripts/measure-large makes it) drawn complete by the progressive model
 // at depth auto, side by side in one binary, against
 //  - the same scene prepared with depths up to 8 (--large-depth8, chunked, and --large-depth8-flat,
 //    a single-file model): the fair comparison, the same pixels covered by a depth-8 model;
@@ -20,10 +20,10 @@
 #include <string>
 #include <vector>
 
-#include "models/registry.h"
+#include "octopoint/models.h"
 #include "renderer/level_of_detail.h"
-#include "renderer/progressive_model.h"
-#include "renderer/render.h"
+#include "octopoint/progressive.h"
+#include "octopoint/render.h"
 
 namespace {
 

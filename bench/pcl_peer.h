@@ -9,8 +9,8 @@
 #include <cstdint>
 #include <vector>
 
-#include "renderer/camera.h"
-#include "renderer/model.h"
+#include "octopoint/camera.h"
+#include "octopoint/model.h"
 
 namespace octopoint::bench {
 

@@ -18,8 +18,8 @@
 #include "codegen/point_source.h"
 #include "codegen/scan_loader.h"
 #include "codegen/streamed_prepare.h"
-#include "tests/tools/landscape.h"
-#include "tests/tools/las_writer.h"
+#include "tests/support/landscape.h"
+#include "tests/support/las_writer.h"
 
 namespace {
 
@@ -93,7 +93,7 @@ BENCHMARK(BM_PrepareSyntheticScan)
     ->Unit(benchmark::kMillisecond)->MeasureProcessCPUTime()->UseRealTime()->Iterations(2)
     ->Complexity(benchmark::oN);
 
-// The streamed preparer from a LAS file of the landscape (tests/tools/landscape.h) to a depth-12
+// The streamed preparer from a LAS file of the landscape (tests/support/landscape.h) to a depth-12
 // model, on one thread and on two side by side: what the second core buys. The file is written
 // once into the temporary directory and removed at exit. Reading it is in the time (the page cache
 // holds it after the first iteration, as it would after make_large_scan).

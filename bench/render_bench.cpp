@@ -10,10 +10,10 @@
 
 #include "bench/pcl_peer.h"
 #include "bench/register_benchmarks.h"
-#include "models/registry.h"
-#include "renderer/camera.h"
-#include "renderer/framebuffer.h"
-#include "renderer/render.h"
+#include "octopoint/models.h"
+#include "octopoint/camera.h"
+#include "octopoint/framebuffer.h"
+#include "octopoint/render.h"
 
 namespace octopoint {
 namespace {

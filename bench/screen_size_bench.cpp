@@ -5,7 +5,7 @@
 // the depth drawn, the splat's largest columns and rows, the pixels covered. bench/screen-run runs
 // it and prints the ratios the targets ask for. At 1280x960 and 1920x1080 the fastest variant also
 // runs with the whole frame cleared each time (`..._full_clear`), as before the frame kept its
-// drawn rectangle (renderer/framebuffer.h): what clearing only the drawn rectangle saves.
+// drawn rectangle (octopoint/framebuffer.h): what clearing only the drawn rectangle saves.
 #include <benchmark/benchmark.h>
 
 #include <string>
@@ -13,9 +13,9 @@
 
 #include "bench/pcl_peer.h"
 #include "bench/register_benchmarks.h"
-#include "models/registry.h"
+#include "octopoint/models.h"
 #include "renderer/level_of_detail.h"
-#include "renderer/render.h"
+#include "octopoint/render.h"
 
 namespace octopoint {
 namespace {

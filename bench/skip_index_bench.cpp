@@ -1,10 +1,10 @@
 // Issue 11: the small zoomed-in frames where depth auto was slower than today's renderer with hole
-// filling (docs/tradeoff.md), with the skip index (renderer/skip_index.h) and without it, side by
+// filling (docs/tradeoff.md), with the skip index (octopoint/model.h) and without it, side by
 // side in one binary: the same level drawn with LevelView::skip as ModelView builds it and with it
 // cleared (the byte walk of renderer/skip_runs.h, what the decoders did before). Yaw 30, clear
 // included, as the view sweep times them:
 //  - after: depth auto with footprint splats, no filling;
-//  - before_filled: depth 8 one pixel per leaf, then hole filling (renderer/hole_fill.h). The
+//  - before_filled: depth 8 one pixel per leaf, then hole filling (octopoint/render.h). The
 //    sweep's "before" model stores depths 7 and 8; its depth 8 has the same nodes as the one drawn
 //    here (the same scan and cube fit), so the same walk.
 // Scans: the default model (tabletop, compiled in) and lms400 at the preparer's default depths
@@ -19,10 +19,9 @@
 #include <vector>
 
 #include "bench/register_benchmarks.h"
-#include "models/registry.h"
-#include "renderer/hole_fill.h"
+#include "octopoint/models.h"
+#include "octopoint/render.h"
 #include "renderer/level_of_detail.h"
-#include "renderer/render.h"
 
 namespace octopoint {
 namespace {

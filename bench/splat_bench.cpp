@@ -3,7 +3,7 @@
 // pixels (the whole model on screen, so every leaf is drawn), by fixed_fast and fixed_simd, each
 // with its splats and at one pixel per leaf (`setup.splat` reset) in the same run. The time is the
 // decode alone (manual time around renderLevel; the frame is cleared outside it). Counters: the
-// leaves drawn, the pixels their splats write (each leaf's rectangle, as tests/splat_reference.h
+// leaves drawn, the pixels their splats write (each leaf's rectangle, as tests/support/splat_reference.h
 // defines it), ns per leaf and per pixel written.
 #include <benchmark/benchmark.h>
 
@@ -12,9 +12,9 @@
 #include <vector>
 
 #include "bench/register_benchmarks.h"
-#include "models/registry.h"
+#include "octopoint/models.h"
 #include "renderer/decode_baseline.h"
-#include "renderer/render.h"
+#include "octopoint/render.h"
 
 namespace octopoint {
 namespace {

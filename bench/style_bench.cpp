@@ -12,10 +12,10 @@
 #include <vector>
 
 #include "bench/register_benchmarks.h"
-#include "models/registry.h"
-#include "renderer/frame_styler.h"
+#include "octopoint/models.h"
+#include "octopoint/styles.h"
 #include "renderer/level_of_detail.h"
-#include "renderer/render.h"
+#include "octopoint/render.h"
 
 namespace octopoint {
 namespace {

@@ -2,7 +2,7 @@
 // Strict parsing of the whole numbers users pass as options: the whole text is the number (an
 // optional sign and decimal digits, nothing before or after), it lies in a stated range, and
 // anything else is refused with a cli::Error naming the option. No floating point here, so the
-// device's own tools (device/) can use it.
+// device's own tools (targets/armel/) can use it.
 
 #include <cstdint>
 #include <initializer_list>

@@ -5,8 +5,7 @@
 
 #include <string_view>
 
-#include "fixedpoint/angle.h"
-#include "fixedpoint/fixed.h"
+#include "octopoint/fixed.h"
 
 namespace octopoint::cli {
 

@@ -9,7 +9,7 @@
 # Call it in the directory that defines `app` (CMake attaches a custom command's outputs to the
 # targets of its own directory). SCAN and SCENE are relative to the current source directory.
 # The app then uses the model as `octopoint::models::NAME` (an EmbeddedModel, see
-# renderer/embedded_model.h and ModelView::fromEmbedded).
+# octopoint/model.h and ModelView::fromEmbedded).
 function(octopoint_add_model)
   cmake_parse_arguments(PARSE_ARGV 0 arg "" "TARGET;NAME;SCAN;SCENE;EMIT" "")
   foreach(required TARGET NAME SCAN SCENE)

@@ -1,6 +1,6 @@
 # GoogleTest for the device build. Debian ships no ARM libgtest, but libgtest-dev installs the
 # sources in /usr/src/googletest: compile them with the cross toolchain. Its CMakeLists defines the
-# same GTest::gtest / GTest::gtest_main targets as find_package(GTest), so tests/ and device/ link
+# same GTest::gtest / GTest::gtest_main targets as find_package(GTest), so tests/ and targets/armel/ link
 # them either way.
 set(octopoint_googletest_source /usr/src/googletest CACHE PATH "GoogleTest sources (Debian libgtest-dev)")
 if(NOT EXISTS ${octopoint_googletest_source}/CMakeLists.txt)
@@ -13,6 +13,6 @@ add_subdirectory(${octopoint_googletest_source} ${CMAKE_BINARY_DIR}/googletest E
 target_compile_options(gtest PRIVATE -Wno-restrict)
 # No name service on the device: GoogleTest's result streaming is the only user of getaddrinfo,
 # whose static glibc version makes the linker warn on every test program
-# (device/no_name_service.cpp says why and what happens instead).
-target_sources(gtest PRIVATE ${PROJECT_SOURCE_DIR}/device/no_name_service.cpp)
+# (targets/armel/no_name_service.cpp says why and what happens instead).
+target_sources(gtest PRIVATE ${PROJECT_SOURCE_DIR}/targets/armel/no_name_service.cpp)
 target_link_options(gtest INTERFACE LINKER:--wrap=getaddrinfo,--wrap=freeaddrinfo)

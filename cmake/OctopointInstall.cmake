@@ -1,7 +1,8 @@
 # Install rules and the exported CMake package, so that another project can
 #   find_package(octopoint REQUIRED)
 #   octopoint_add_model(TARGET app NAME face SCAN face.pcd SCENE scene.json)
-# (docs/embedding.md). Headers keep their layout: #include "renderer/render.h".
+# (docs/embedding.md). Only the public headers are installed, under include/octopoint/; the manual
+# is include/octopoint/octopoint.h.
 #
 # Every library whose headers are installed is exported, so that whatever an installed header
 # declares links: fixedpoint/ (octopoint::fixedpoint), renderer/ (octopoint::renderer, and
@@ -21,10 +22,7 @@ foreach(target IN LISTS octopoint_exported)
   target_include_directories(${target} PUBLIC $<INSTALL_INTERFACE:${CMAKE_INSTALL_INCLUDEDIR}>)
   set_target_properties(${target} PROPERTIES EXPORT_NAME ${name})
 endforeach()
-foreach(directory fixedpoint renderer models)
-  install(DIRECTORY ${PROJECT_SOURCE_DIR}/${directory}/ DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/${directory}
-          FILES_MATCHING PATTERN "*.h")
-endforeach()
+install(DIRECTORY ${PROJECT_SOURCE_DIR}/include/octopoint DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
 # The warnings target travels along only as a link-only dependency of the static libraries.
 set_target_properties(octopoint_warnings PROPERTIES EXPORT_NAME warnings)
 install(TARGETS ${octopoint_exported} octopoint_warnings EXPORT octopointTargets
@@ -34,6 +32,12 @@ if(TARGET octopoint-prepare)
   # Not exported: octopoint-prepare runs it from its own directory (codegen/whole_scan.h).
   install(TARGETS octopoint-prepare-pcl RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
 endif()
+# The other user tools (tools/); the measuring tools (lab/) are not installed.
+foreach(tool octopoint-render octopoint-view octopoint-serve)
+  if(TARGET ${tool})
+    install(TARGETS ${tool} RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
+  endif()
+endforeach()
 install(EXPORT octopointTargets NAMESPACE octopoint:: DESTINATION ${octopoint_cmake_dir})
 configure_package_config_file(${PROJECT_SOURCE_DIR}/cmake/octopointConfig.cmake.in
   ${PROJECT_BINARY_DIR}/octopointConfig.cmake INSTALL_DESTINATION ${octopoint_cmake_dir})

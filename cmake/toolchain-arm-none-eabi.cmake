@@ -1,10 +1,10 @@
 # Bare-metal ARM Cortex-M (docs/device.md), shared by toolchain-cortex-m0plus.cmake and
 # toolchain-cortex-m4.cmake, which set octopoint_mcu_cpu_flags and octopoint_mcu_qemu_machine first.
 # Debian's gcc-arm-none-eabi with newlib (nano) and libstdc++-arm-none-eabi-newlib for the C++
-# headers. No operating system, no heap: the startup code and linker scripts are in mcu/, and
+# headers. No operating system, no heap: the startup code and linker scripts are in targets/cortex-m/, and
 # nothing provides _sbrk, so a program that would call malloc does not link. Soft float
 # (-mfloat-abi=soft) on both: the M0+ has no FPU, and on the M4 a float operation would become a
-# visible libgcc helper call instead of an FPU instruction (mcu/check_no_helpers.cmake).
+# visible libgcc helper call instead of an FPU instruction (targets/cortex-m/check_no_helpers.cmake).
 # Programs run under qemu-system-arm with semihosting and an exact instruction clock (-icount
 # shift=0: one nanosecond of virtual time per instruction), through CMAKE_CROSSCOMPILING_EMULATOR.
 set(CMAKE_SYSTEM_NAME Generic)

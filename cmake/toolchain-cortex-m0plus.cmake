@@ -4,5 +4,5 @@
 # the M0+ code's; the cycles per instruction are not modelled). See docs/device.md.
 set(octopoint_mcu_cpu_flags "-mcpu=cortex-m0plus -mthumb -mfloat-abi=soft")
 set(octopoint_mcu_qemu_machine mps2-an385)
-set(OCTOPOINT_MCU_TARGET cortex-m0plus CACHE STRING "linker script mcu/<target>.ld")
+set(OCTOPOINT_MCU_TARGET cortex-m0plus CACHE STRING "linker script targets/cortex-m/<target>.ld")
 include(${CMAKE_CURRENT_LIST_DIR}/toolchain-arm-none-eabi.cmake)

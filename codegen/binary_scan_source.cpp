@@ -4,7 +4,7 @@
 // a float32 "intensity"; PLY: uchar red/green/blue, else a float "intensity"). Anything else
 // (ascii, binary_compressed, big-endian, lists or other elements before the vertices, other field
 // types, ambiguous fields) returns null and goes through PCL, which either reads it or says what is
-// wrong. tests/streamed_prepare_test.cpp checks that both readers give the same points.
+// wrong. tests/preparer/streamed_prepare_test.cpp checks that both readers give the same points.
 
 #include "codegen/binary_scan_source.h"
 

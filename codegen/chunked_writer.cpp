@@ -8,9 +8,9 @@
 #include "codegen/level_voxels.h"
 #include "codegen/octree_encoder.h"
 #include "codegen/prepare_error.h"
-#include "renderer/chunked_format.h"
+#include "octopoint/progressive.h"
 #include "renderer/crc32.h"
-#include "renderer/model_format.h"
+#include "octopoint/model.h"
 
 namespace octopoint::prepare {
 namespace {

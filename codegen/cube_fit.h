@@ -48,7 +48,7 @@ CubeFit fitCube(std::span<const std::array<float, 3>> positions, const std::stri
 CubeFit fitCube(const Bounds& bounds, const std::string& path);
 
 // The smallest cube edge the preparer records: below 1 nm the picometre count of the format
-// (renderer/model_format.h) would round by more than 0.05%.
+// (octopoint/model.h) would round by more than 0.05%.
 inline constexpr double kMinCubeEdgeMetres = 1e-9;
 
 // The cube's edge in picometres, as the model format stores it (a u64: up to 18,446 km, far past

@@ -4,7 +4,7 @@
 #include <optional>
 
 #include "renderer/level_of_detail.h"
-#include "renderer/model_format.h"
+#include "octopoint/model.h"
 
 namespace octopoint::prepare {
 

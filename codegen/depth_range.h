@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "renderer/camera.h"
+#include "octopoint/camera.h"
 #include "renderer/level_of_detail.h"
 
 namespace octopoint::prepare {

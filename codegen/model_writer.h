@@ -1,5 +1,5 @@
 #pragma once
-// Writing a prepared model out: the `.oct` binary (renderer/model_format.h) and the C++ sources an
+// Writing a prepared model out: the `.oct` binary (octopoint/model.h) and the C++ sources an
 // app compiles in (NAME.h, NAME.cpp with the palette and descriptor, NAME_depthD.cpp per level).
 // The files are put in place all together or not at all by cli::writeFilesAtomically
 // (cli/output_file.h).

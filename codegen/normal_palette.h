@@ -1,5 +1,5 @@
 #pragma once
-// The normal palette of a model (format version 2, renderer/model_format.h): at most 255 unit
+// The normal palette of a model (format version 2, octopoint/model.h): at most 255 unit
 // vectors in Q1.14, and each voxel's normal stored as the index of the nearest one.
 
 #include <array>

@@ -1,10 +1,10 @@
-// The `.oct` binary image of a prepared model, in the layout of renderer/model_format.h.
+// The `.oct` binary image of a prepared model, in the layout of octopoint/model.h.
 #include <cassert>
 
 #include "codegen/byte_output.h"
 #include "codegen/huge_pages.h"
 #include "codegen/model_writer.h"
-#include "renderer/model_format.h"
+#include "octopoint/model.h"
 
 namespace octopoint::prepare {
 

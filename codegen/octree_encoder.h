@@ -1,5 +1,5 @@
 #pragma once
-// Encoding a voxel set as the depth-first child-mask byte stream of renderer/model_format.h, and
+// Encoding a voxel set as the depth-first child-mask byte stream of octopoint/model.h, and
 // reading the voxel keys back out of such a stream.
 
 #include <cstdint>

@@ -12,7 +12,7 @@
 #include "codegen/normal_palette.h"
 #include "codegen/prepared_model.h"
 #include "codegen/scan_loader.h"
-#include "renderer/camera.h"
+#include "octopoint/camera.h"
 
 namespace octopoint::prepare {
 

@@ -13,7 +13,7 @@ using Rgb8 = std::array<std::uint8_t, 3>;
 
 struct PreparedLevel {
   int depth = 0;
-  std::vector<std::uint8_t> nodes;   // depth-first child mask bytes (renderer/model_format.h)
+  std::vector<std::uint8_t> nodes;   // depth-first child mask bytes (octopoint/model.h)
   std::vector<std::uint8_t> leaves;  // one palette index per leaf, depth-first
   std::vector<std::uint8_t> normals{};  // one normal palette index per leaf, or empty (no normals)
   // What visibility pruning did (when it ran): the level before it, and the time it took.
@@ -25,7 +25,7 @@ struct PreparedLevel {
 struct PreparedModel {
   std::string name;                // a C++ identifier
   std::string source_description;  // where it came from, for the generated comments
-  std::uint64_t cube_edge_pm = 0;  // the cube's edge in picometres (renderer/model_format.h)
+  std::uint64_t cube_edge_pm = 0;  // the cube's edge in picometres (octopoint/model.h)
   std::vector<Rgb8> palette;       // 1..256 colours
   bool synthetic_colour = false;   // the scan had no colour: the palette is a depth shade
   // Unit vectors in Q1.14, 1..255 of them when the levels carry normals, else none.

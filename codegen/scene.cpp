@@ -9,8 +9,8 @@
 #include "cli/text.h"
 #include "codegen/prepare_error.h"
 #include "codegen/scene_views.h"
-#include "renderer/camera.h"
-#include "renderer/model_format.h"
+#include "octopoint/camera.h"
+#include "octopoint/model.h"
 
 namespace octopoint::prepare {
 namespace {

@@ -5,7 +5,7 @@
 #include <cstdio>
 
 #include "codegen/depth_range.h"
-#include "renderer/model_format.h"
+#include "octopoint/model.h"
 
 namespace octopoint::prepare {
 namespace {

@@ -6,7 +6,7 @@
 #include <vector>
 
 #include "codegen/scene.h"
-#include "renderer/camera.h"
+#include "octopoint/camera.h"
 
 namespace octopoint::prepare {
 

@@ -10,7 +10,7 @@
 #include "codegen/huge_pages.h"
 #include "codegen/model_writer.h"
 #include "codegen/parallel.h"
-#include "renderer/model_format.h"
+#include "octopoint/model.h"
 
 namespace octopoint::prepare {
 namespace {
@@ -76,7 +76,7 @@ std::string banner(const PreparedModel& model) {
 
 std::string header(const PreparedModel& model) {
   std::ostringstream out;
-  out << banner(model) << "#pragma once\n\n#include \"renderer/embedded_model.h\"\n\n"
+  out << banner(model) << "#pragma once\n\n#include \"octopoint/model.h\"\n\n"
       << "namespace octopoint::models {\n\n";
   for (const PreparedLevel& level : model.levels) {
     const double bits_per_point = 8.0 * static_cast<double>(level.nodes.size()) /
@@ -169,7 +169,7 @@ std::string descriptorSource(const PreparedModel& model, const EmitOptions& opti
   }
   const unsigned flags = (with_normals ? format::v2::kFlagNormals : 0u) |
                          (model.synthetic_colour ? format::v2::kFlagSyntheticColour : 0u);
-  // Field by field as in renderer/embedded_model.h: name, format version, flags, cube edge (pm),
+  // Field by field as in octopoint/model.h: name, format version, flags, cube edge (pm),
   // palette count and colours, normal count and palette, levels.
   out << "};\n\n}  // namespace\n\n"
       << "extern const ::octopoint::EmbeddedModel " << model.name << " = {\n"

@@ -4,7 +4,7 @@
 #include <system_error>
 
 #include "codegen/model_writer.h"
-#include "renderer/model_format.h"
+#include "octopoint/model.h"
 
 namespace octopoint::prepare {
 namespace {

@@ -10,7 +10,7 @@
 #include <span>
 #include <vector>
 
-#include "renderer/camera.h"
+#include "octopoint/camera.h"
 
 namespace octopoint::prepare {
 

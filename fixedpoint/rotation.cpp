@@ -1,12 +1,11 @@
 // Rotation matrices in Q1.30 from the integer sine table.
-#include "fixedpoint/rotation.h"
+#include "octopoint/fixed.h"
 
 #include <cassert>
 #include <cstddef>
 #include <cstdint>
 
 #include "fixedpoint/trig.h"
-#include "fixedpoint/wide_math.h"
 
 namespace octopoint {
 namespace {

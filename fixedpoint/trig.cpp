@@ -4,7 +4,7 @@
 
 #include <cstddef>
 
-#include "fixedpoint/wide_math.h"
+#include "octopoint/fixed.h"
 
 namespace octopoint {
 namespace {

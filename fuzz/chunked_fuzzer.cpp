@@ -1,4 +1,4 @@
-// libFuzzer harness for the chunked format's reader (renderer/chunked_head.h, chunk_records.h,
+// libFuzzer harness for the chunked format's reader (octopoint/progressive.h, chunk_records.h,
 // chunk_stream.h) and the progressive model that joins and draws what it reads. The first input
 // byte chooses how the rest is used:
 //  - even: the rest is a file, read front to back as a file or a radio link delivers it;
@@ -17,9 +17,9 @@
 #include <span>
 #include <vector>
 
-#include "fuzz/model_images.h"
-#include "models/registry.h"
-#include "renderer/progressive_model.h"
+#include "tests/support/model_images.h"
+#include "octopoint/models.h"
+#include "octopoint/progressive.h"
 
 namespace {
 

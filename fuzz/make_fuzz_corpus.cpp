@@ -7,7 +7,7 @@
 //    whole (first byte 0), and splices into the harness's own model at the head, a record table
 //    and a chunk (first byte 3: spliced, CRCs recomputed). See fuzz/chunked_fuzzer.cpp.
 //  - las: a small LAS file of every point format, and 1.0, 1.1 and 1.4 with VLRs, EVLRs and extra
-//    bytes (tests/tools/las_writer.h), so the fuzzer starts from every layout the reader knows.
+//    bytes (tests/support/las_writer.h), so the fuzzer starts from every layout the reader knows.
 // usage: make_fuzz_corpus OUTDIR
 #include <cstdio>
 #include <cstring>
@@ -16,10 +16,10 @@
 #include <string>
 #include <vector>
 
-#include "fuzz/model_images.h"
-#include "tests/tools/landscape.h"
-#include "tests/tools/las_writer.h"
-#include "models/registry.h"
+#include "tests/support/model_images.h"
+#include "tests/support/landscape.h"
+#include "tests/support/las_writer.h"
+#include "octopoint/models.h"
 
 namespace {
 

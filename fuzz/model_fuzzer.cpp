@@ -5,7 +5,7 @@
 // tree than the validator (leaf count), fixed-point variants that disagree with each other (those
 // that draw footprint splats among themselves, and every fixed variant at one pixel per leaf), and
 // a frame reused from the previous input that holds anything but what a fresh frame holds (its
-// clear empties only the rectangle drawn, renderer/framebuffer.h).
+// clear empties only the rectangle drawn, octopoint/framebuffer.h).
 #include <algorithm>
 #include <array>
 #include <cstddef>
@@ -14,11 +14,11 @@
 #include <optional>
 #include <span>
 
-#include "renderer/camera.h"
+#include "octopoint/camera.h"
 #include "renderer/decode_baseline.h"
-#include "renderer/framebuffer.h"
-#include "renderer/model.h"
-#include "renderer/render.h"
+#include "octopoint/framebuffer.h"
+#include "octopoint/model.h"
+#include "octopoint/render.h"
 
 namespace {
 

@@ -10,7 +10,7 @@
 
 #include "codegen/prepare_error.h"
 #include "codegen/scan_header_check.h"
-#include "fuzz/memory_file.h"
+#include "tests/support/memory_file.h"
 
 namespace {
 

@@ -1,4 +1,4 @@
-#include "models/registry.h"
+#include "octopoint/models.h"
 
 #include <array>
 

@@ -1,4 +1,4 @@
-#include "net/http_url.h"
+#include "octopoint/http.h"
 
 #include <cctype>
 

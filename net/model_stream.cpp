@@ -1,4 +1,4 @@
-#include "net/model_stream.h"
+#include "octopoint/http.h"
 
 #include <algorithm>
 #include <atomic>

@@ -1,4 +1,4 @@
-#include "net/range_client.h"
+#include "octopoint/http.h"
 
 #include <httplib.h>
 

@@ -1,4 +1,4 @@
-#include "renderer/band_index.h"
+#include "octopoint/bands.h"
 
 #include <array>
 

@@ -1,4 +1,4 @@
-#include "renderer/band_renderer.h"
+#include "octopoint/bands.h"
 
 #include <algorithm>
 #include <array>
@@ -7,9 +7,8 @@
 
 #include "renderer/bit_scan.h"
 #include "renderer/decode_algorithms.h"
-#include "renderer/framebuffer.h"
-#include "renderer/hole_fill.h"
-#include "renderer/render_check.h"
+#include "octopoint/framebuffer.h"
+#include "octopoint/render.h"
 #include "renderer/render_fixed_delta.h"
 #include "renderer/subtree_clip.h"
 

@@ -1,13 +1,12 @@
-#include "renderer/camera.h"
+#include "octopoint/camera.h"
 
 #include <algorithm>
 #include <cstdlib>
 #include <limits>
 #include <optional>
 
-#include "fixedpoint/rotation.h"
-#include "fixedpoint/wide_math.h"
-#include "renderer/framebuffer.h"
+#include "octopoint/fixed.h"
+#include "octopoint/framebuffer.h"
 
 namespace octopoint {
 
@@ -142,7 +141,7 @@ CameraError buildFrameSetup(const Camera& camera, int depth, int fraction_bits, 
     for (int axis = 0; axis < 3; ++axis) worst[axis] += largest[axis];
   }
   // A splat reaches at most its padded half extent (largest + depth + 1) and one pixel further
-  // from a leaf (renderer/splat_footprint.h); a leaf without one, only its own position.
+  // from a leaf (octopoint/camera.h); a leaf without one, only its own position.
   const SplatFootprint splat = splatFootprint(largest[0], largest[1], depth, fraction_bits);
   const std::int64_t splat_margin = splat.active() ? depth + 1 + (std::int64_t{1} << fraction_bits) : 0;
   const std::int64_t splat_reach[3] = {splat.active() ? largest[0] + splat_margin : 0,

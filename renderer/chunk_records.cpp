@@ -1,4 +1,4 @@
-#include "renderer/chunk_records.h"
+#include "octopoint/progressive.h"
 
 #include <algorithm>
 

@@ -1,4 +1,4 @@
-#include "renderer/chunk_stream.h"
+#include "octopoint/progressive.h"
 
 #include <array>
 #include <cassert>
@@ -6,7 +6,7 @@
 #include "renderer/bit_scan.h"
 #include "renderer/crc32.h"
 #include "renderer/decode_algorithms.h"
-#include "renderer/model_format.h"
+#include "octopoint/model.h"
 
 namespace octopoint {
 namespace {

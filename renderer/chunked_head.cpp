@@ -1,10 +1,10 @@
-#include "renderer/chunked_head.h"
+#include "octopoint/progressive.h"
 
 #include <cstring>
 
 #include "renderer/crc32.h"
 #include "renderer/little_endian.h"
-#include "renderer/model.h"
+#include "octopoint/model.h"
 
 namespace octopoint {
 namespace {

@@ -1,7 +1,7 @@
 #pragma once
 // CRC-32 as zlib, PNG and Ethernet compute it (polynomial 0x04C11DB7 reflected, 0xEDB88320; initial
 // value and final xor 0xFFFFFFFF): crc32("123456789") = 0xCBF43926. The chunked format
-// (renderer/chunked_format.h) stores one per chunk and per directory part, so that a chunk that
+// (octopoint/progressive.h) stores one per chunk and per directory part, so that a chunk that
 // arrives damaged is refused on its own. A 256-entry table built at compile time; integer only.
 
 #include <array>

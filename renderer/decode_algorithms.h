@@ -18,8 +18,8 @@
 #include <utility>
 
 #include "renderer/bit_scan.h"
-#include "renderer/abort_flag.h"
-#include "renderer/camera.h"
+#include "octopoint/render.h"
+#include "octopoint/camera.h"
 #include "renderer/leaf_cursor.h"
 
 namespace octopoint {

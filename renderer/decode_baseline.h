@@ -6,9 +6,9 @@
 #include <atomic>
 #include <cstdint>
 
-#include "renderer/camera.h"
+#include "octopoint/camera.h"
 #include "renderer/decode_algorithms.h"
-#include "renderer/model.h"
+#include "octopoint/model.h"
 
 namespace octopoint {
 

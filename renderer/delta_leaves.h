@@ -23,7 +23,7 @@
 #include <cstdint>
 
 #include "renderer/bit_scan.h"
-#include "renderer/camera.h"
+#include "octopoint/camera.h"
 
 // The leaf loop in Thumb-1 assembly on ARMv6-M (a Cortex-M0+), unless a build says 0 to measure
 // or test the C++ loop there.

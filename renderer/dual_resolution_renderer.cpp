@@ -1,9 +1,9 @@
-#include "renderer/dual_resolution_renderer.h"
+#include "octopoint/interactive.h"
 
 #include <algorithm>
 #include <cassert>
 
-#include "renderer/camera.h"
+#include "octopoint/camera.h"
 #include "renderer/level_of_detail.h"
 
 namespace octopoint {

@@ -1,9 +1,9 @@
-#include "renderer/edges.h"
+#include "octopoint/styles.h"
 
 #include <algorithm>
 #include <cstdlib>
 
-#include "fixedpoint/rotation.h"
+#include "octopoint/fixed.h"
 #include "fixedpoint/trig.h"
 
 namespace octopoint {

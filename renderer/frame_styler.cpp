@@ -1,6 +1,6 @@
-#include "renderer/frame_styler.h"
+#include "octopoint/styles.h"
 
-#include "fixedpoint/rotation.h"
+#include "octopoint/fixed.h"
 
 namespace octopoint {
 namespace {

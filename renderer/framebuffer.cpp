@@ -1,4 +1,4 @@
-#include "renderer/framebuffer.h"
+#include "octopoint/framebuffer.h"
 
 #include <algorithm>
 #include <utility>

@@ -6,8 +6,8 @@
 #include <cassert>
 #include <cstdint>
 
-#include "renderer/camera.h"
-#include "renderer/framebuffer.h"
+#include "octopoint/camera.h"
+#include "octopoint/framebuffer.h"
 #include "renderer/subtree_clip.h"
 
 namespace octopoint {

@@ -1,4 +1,4 @@
-#include "renderer/hole_fill.h"
+#include "octopoint/render.h"
 
 #include <algorithm>
 #include <cstring>

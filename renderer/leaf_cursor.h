@@ -7,8 +7,8 @@
 #include <cstddef>
 #include <cstdint>
 
-#include "renderer/framebuffer.h"
-#include "renderer/model.h"
+#include "octopoint/framebuffer.h"
+#include "octopoint/model.h"
 
 namespace octopoint {
 

@@ -28,8 +28,8 @@
 #include <optional>
 #include <span>
 
-#include "renderer/camera.h"
-#include "renderer/model.h"
+#include "octopoint/camera.h"
+#include "octopoint/model.h"
 
 namespace octopoint {
 

@@ -1,4 +1,4 @@
-#include "renderer/model.h"
+#include "octopoint/model.h"
 
 #include <bit>
 #include <cstring>

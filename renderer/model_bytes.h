@@ -5,7 +5,7 @@
 #include <cstddef>
 #include <cstdint>
 
-#include "renderer/model.h"
+#include "octopoint/model.h"
 
 namespace octopoint::model_bytes {
 

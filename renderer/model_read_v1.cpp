@@ -1,6 +1,6 @@
-// The header of a version 1 `.oct` file (renderer/model_format.h): the validator of that version.
+// The header of a version 1 `.oct` file (octopoint/model.h): the validator of that version.
 // It stays here unchanged so that old files keep reading exactly as they did.
-#include "renderer/model.h"
+#include "octopoint/model.h"
 #include "renderer/model_bytes.h"
 
 namespace octopoint {

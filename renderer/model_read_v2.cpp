@@ -1,6 +1,6 @@
-// The header of a version 2 `.oct` file (renderer/model_format.h): the validator of that version.
+// The header of a version 2 `.oct` file (octopoint/model.h): the validator of that version.
 // Version 2 widens the metric size to picometres in 64 bits and may carry normals.
-#include "renderer/model.h"
+#include "octopoint/model.h"
 #include "renderer/model_bytes.h"
 
 namespace octopoint {

@@ -13,7 +13,7 @@
 #include <cstdlib>
 
 #include "renderer/level_of_detail.h"
-#include "renderer/progressive_model.h"
+#include "octopoint/progressive.h"
 
 namespace octopoint {
 namespace {

@@ -1,6 +1,6 @@
 // ProgressiveModel: taking record tables and chunks, and joining each chunk to the coarser stream
 // it refines. Drawing and fetch priorities are in progressive_draw.cpp.
-#include "renderer/progressive_model.h"
+#include "octopoint/progressive.h"
 
 #include <algorithm>
 #include <cassert>
@@ -18,7 +18,7 @@ std::optional<ProgressiveModel> ProgressiveModel::fromHead(std::span<const std::
       static_cast<std::uint8_t>(model.head_.levels[0].depth), model.head_.base_nodes.data(),
       static_cast<std::uint32_t>(model.head_.base_nodes.size()), model.head_.base_leaves.data(),
       static_cast<std::uint32_t>(model.head_.base_leaves.size())};
-  // Field by field as renderer/embedded_model.h (format version 2, no normals).
+  // Field by field as octopoint/model.h (format version 2, no normals).
   const EmbeddedModel base{"chunked model base",
                            format::kVersion2,
                            0,

@@ -1,6 +1,5 @@
-#include "renderer/render.h"
+#include "octopoint/render.h"
 
-#include "renderer/render_check.h"
 
 #include <array>
 #include <vector>

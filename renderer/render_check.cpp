@@ -1,4 +1,4 @@
-#include "renderer/render_check.h"
+#include "octopoint/render.h"
 
 #include <algorithm>
 #include <cstdlib>
@@ -39,7 +39,7 @@ RenderError checkFrameSetup(const FrameSetup& setup) {
     }
     for (int axis = 0; axis < 3; ++axis) worst[axis] += largest[axis];
   }
-  // A leaf at p covers up to (p + offset + span) >> F (renderer/splat_footprint.h): the decoders
+  // A leaf at p covers up to (p + offset + span) >> F (octopoint/camera.h): the decoders
   // add these in 32 bits too. The fields are judged as they are, not against a recomputed splat:
   // a band renderer's subtree set-up keeps the whole frame's splat at a smaller depth.
   const SplatFootprint& splat = setup.splat;

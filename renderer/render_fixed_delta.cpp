@@ -11,8 +11,7 @@
 
 #include "renderer/bit_scan.h"
 #include "renderer/decode_algorithms.h"
-#include "renderer/render.h"
-#include "renderer/render_check.h"
+#include "octopoint/render.h"
 
 namespace octopoint {
 namespace {

@@ -5,7 +5,7 @@
 // packed sub-pixel carries (renderer/delta_leaves.h). One pixel per leaf, as the paper's variants:
 // bit-identical to fixed_baseline.
 //
-// Its preparation is an object, so that band rendering (renderer/band_renderer.h) prepares once per
+// Its preparation is an object, so that band rendering (octopoint/bands.h) prepares once per
 // band and then draws each subtree of the band index with a call: the clip's reach and the leaf
 // table are not computed again per subtree.
 //
@@ -15,10 +15,10 @@
 #include <atomic>
 #include <cstdint>
 
-#include "renderer/camera.h"
+#include "octopoint/camera.h"
 #include "renderer/delta_leaves.h"
-#include "renderer/framebuffer.h"
-#include "renderer/model.h"
+#include "octopoint/framebuffer.h"
+#include "octopoint/model.h"
 #include "renderer/subtree_clip.h"
 
 namespace octopoint {
@@ -28,7 +28,7 @@ class FixedDeltaDecoder {
   // Prepares to draw trees of `setup` (its child offsets, depth, screen and depth-key formats)
   // into `frame`, which has the set-up's width and height. A set-up checkFrameSetup refuses, a
   // frame of another size, or a frame that carries normals, is refused here
-  // (renderer/render_check.h): every draw then returns false and draws nothing.
+  // (octopoint/render.h): every draw then returns false and draws nothing.
   FixedDeltaDecoder(const FrameSetup& setup, FrameView& frame);
 
   // Draws `level` (of the set-up's depth) with its root at `root`: the whole tree when `root` is

@@ -26,8 +26,7 @@
 #include "renderer/bit_scan.h"
 #include "renderer/decode_algorithms.h"
 #include "renderer/framebuffer_plot.h"
-#include "renderer/render.h"
-#include "renderer/render_check.h"
+#include "octopoint/render.h"
 #include "renderer/skip_runs.h"
 #include "renderer/splat_plot.h"
 #include "renderer/subtree_clip.h"
@@ -234,7 +233,7 @@ Cursor<Leaves> visit(const FastFrame& f, int level, Vec3 c, Cursor<Leaves> at) {
     if (f.aborted) return at;
   }
   // A splat frame's level-3 subtree may cover the whole screen: it polls at every node below too,
-  // and every loop stops at once when the flag is seen (renderer/abort_flag.h's latency).
+  // and every loop stops at once when the flag is seen (octopoint/render.h's latency).
   if (kSplat && level > kAbortCheckLevel && f.abort != nullptr &&
       (f.aborted = f.abort->load(std::memory_order_relaxed))) {
     return at;

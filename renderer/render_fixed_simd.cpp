@@ -17,12 +17,12 @@
 //   z-test a min, and makes the result independent of the order points are drawn in), four
 //   instructions per point.
 // Leaf parents straddling the frame's edge keep, in lanes, only their children's pixels on screen
-// (renderer/simd_edge.h); a model's last leaves (the eight-byte colour load would read past them)
+// (renderer/avx2_edge.h); a model's last leaves (the eight-byte colour load would read past them)
 // use the scalar checked plot; off-screen subtrees are skipped, as in fixed_fast. The abort flag is
 // polled at kAbortCheckLevel. The frame's state and its batch: renderer/simd_frame.h.
 // Splats (FrameSetup::splat active): the same walk, instantiated again, emits each leaf's splat
 // from its first pixel (its position plus the footprint's offset, then shifted): up to 2 x 2
-// pixels as single-pixel entries, exactly the splat's pixels (renderer/simd_emit.h), larger ones
+// pixels as single-pixel entries, exactly the splat's pixels (renderer/avx2_emit.h), larger ones
 // as rectangles written by a kernel chosen per footprint (renderer/splat_batch.h); the clip's
 // reach includes the splat. Frames equal fixed_fast's, bit for bit.
 #include <algorithm>
@@ -32,8 +32,7 @@
 
 #include "renderer/decode_algorithms.h"
 #include "renderer/framebuffer_plot.h"
-#include "renderer/render.h"
-#include "renderer/render_check.h"
+#include "octopoint/render.h"
 #include "renderer/skip_runs.h"
 #include "renderer/splat_batch.h"
 #include "renderer/splat_plot.h"
@@ -42,9 +41,9 @@
 #if defined(__x86_64__) && defined(__GNUC__)
 #include <immintrin.h>
 
-#include "renderer/simd_edge.h"
-#include "renderer/simd_emit.h"
-#include "renderer/simd_frame.h"
+#include "renderer/avx2_edge.h"
+#include "renderer/avx2_emit.h"
+#include "renderer/avx2_frame.h"
 
 namespace octopoint {
 namespace {

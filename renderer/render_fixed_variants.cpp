@@ -1,10 +1,9 @@
-// The integer decoders: each draws bit-identical frames (tests/render_variants_test.cpp).
+// The integer decoders: each draws bit-identical frames (tests/core/render_variants_test.cpp).
 
 #include "renderer/bit_scan.h"
 #include "renderer/decode_algorithms.h"
 #include "renderer/framebuffer_plot.h"
-#include "renderer/render.h"
-#include "renderer/render_check.h"
+#include "octopoint/render.h"
 #include "renderer/subtree_clip.h"
 
 namespace octopoint {

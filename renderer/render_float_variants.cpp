@@ -7,8 +7,7 @@
 #include <cmath>
 
 #include "renderer/decode_algorithms.h"
-#include "renderer/render.h"
-#include "renderer/render_check.h"
+#include "octopoint/render.h"
 
 namespace octopoint {
 namespace {

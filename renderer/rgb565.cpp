@@ -1,4 +1,4 @@
-#include "renderer/rgb565.h"
+#include "octopoint/framebuffer.h"
 
 #include <bit>
 

@@ -1,4 +1,4 @@
-#include "renderer/rgb_renderer.h"
+#include "octopoint/rgb_renderer.h"
 
 #include "renderer/level_of_detail.h"
 

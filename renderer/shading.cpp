@@ -1,4 +1,4 @@
-#include "renderer/shading.h"
+#include "octopoint/styles.h"
 
 #include <algorithm>
 

@@ -1,12 +1,11 @@
-#include "renderer/skip_index.h"
+#include "octopoint/model.h"
 
 #include <array>
 #include <limits>
 
-#include "renderer/band_index.h"
+#include "octopoint/bands.h"
 #include "renderer/bit_scan.h"
 #include "renderer/decode_algorithms.h"
-#include "renderer/model.h"
 
 namespace octopoint {
 namespace {

@@ -10,7 +10,7 @@
 // as one run of popcount(grandparent) bytes in a depth-first stream, are counted at once: their
 // leaves are the set bits of those bytes, one 8-byte load masked to the run and counted without a
 // branch. The walk then branches per great-grandparent, not per leaf parent.
-// Where the level has a skip index (renderer/skip_index.h, ModelView builds it), a subtree at or
+// Where the level has a skip index (octopoint/model.h, ModelView builds it), a subtree at or
 // above the indexed level is not read at all below that level: skipSubtreeIndexed.
 
 #include <array>
@@ -21,9 +21,9 @@
 #include <type_traits>
 
 #include "renderer/bit_scan.h"
-#include "renderer/camera.h"
+#include "octopoint/camera.h"
 #include "renderer/decode_algorithms.h"
-#include "renderer/skip_index.h"
+#include "octopoint/model.h"
 
 namespace octopoint {
 

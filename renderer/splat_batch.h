@@ -1,5 +1,5 @@
 #pragma once
-// How fixed_simd writes a batch of footprint splats (renderer/splat_footprint.h): each point is its
+// How fixed_simd writes a batch of footprint splats (octopoint/camera.h): each point is its
 // splat's first pixel, its packed word, and its column and row counts; every pixel of its
 // rectangle keeps the min of its word and the point's (the z-test of a single pixel), so the frame
 // does not depend on the order points are written in. The walk proved every rectangle lies on

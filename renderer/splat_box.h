@@ -1,5 +1,5 @@
 #pragma once
-// A leaf's footprint splat written as the footprint's whole box (renderer/splat_footprint.h): a
+// A leaf's footprint splat written as the footprint's whole box (octopoint/camera.h): a
 // leaf covers the footprint's columns x rows, or one column (row) fewer, by where it falls. For
 // small footprints the box is written unrolled, with no branch on the leaf's own counts: its last
 // column (row) takes the min with the leaf's word or'ed with all ones when the leaf is one column

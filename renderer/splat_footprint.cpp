@@ -1,4 +1,4 @@
-#include "renderer/splat_footprint.h"
+#include "octopoint/camera.h"
 
 namespace octopoint {
 namespace {

@@ -1,6 +1,6 @@
 #pragma once
 // How fixed_fast (and fixed_simd on the frame's edge) writes a leaf's footprint splat
-// (renderer/splat_footprint.h): its packed word into every pixel of a columns x rows rectangle,
+// (octopoint/camera.h): its packed word into every pixel of a columns x rows rectangle,
 // z-tested per pixel by the same unsigned min as a single pixel, so the frame still does not
 // depend on the order leaves are drawn in. Two flavours, as FixedPlot: clipped per pixel to the
 // framebuffer it is given (a band of a frame, too), and unchecked for subtrees that SubtreeClip,
@@ -16,7 +16,7 @@
 
 #include "renderer/framebuffer_plot.h"
 #include "renderer/splat_box.h"
-#include "renderer/splat_footprint.h"
+#include "octopoint/camera.h"
 
 namespace octopoint {
 

@@ -1,4 +1,4 @@
-#include "renderer/style.h"
+#include "octopoint/styles.h"
 
 #include <array>
 

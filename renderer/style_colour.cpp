@@ -1,5 +1,5 @@
 // The colour style: each covered pixel takes its palette colour, as the scan was captured.
-#include "renderer/style_passes.h"
+#include "octopoint/styles.h"
 
 namespace octopoint {
 

@@ -1,6 +1,6 @@
 // The lines style, after Hekmatzada et al.: a white page, silhouettes in black, creases in grey,
-// nothing else (renderer/edges.h finds them).
-#include "renderer/style_passes.h"
+// nothing else (octopoint/styles.h finds them).
+#include "octopoint/styles.h"
 
 namespace octopoint {
 namespace {

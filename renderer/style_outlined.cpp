@@ -1,5 +1,5 @@
 // The outlined style: the colour image with silhouettes in dark ink and creases darkened over it.
-#include "renderer/style_passes.h"
+#include "octopoint/styles.h"
 
 namespace octopoint {
 namespace {

@@ -1,7 +1,7 @@
 // The shaded style: colour (a uniform grey for a scan without colour) times the intensity of the
-// pixel's normal under this frame's light (renderer/shading.h). Two table look-ups and two
+// pixel's normal under this frame's light (octopoint/styles.h). Two table look-ups and two
 // multiplies per pixel; nothing in the decoder changes.
-#include "renderer/style_passes.h"
+#include "octopoint/styles.h"
 
 namespace octopoint {
 

@@ -1,6 +1,6 @@
 // The toon style: the shaded style's intensities cut into three flat bands, silhouettes in dark
 // ink, creases in the darkest band's colour.
-#include "renderer/style_passes.h"
+#include "octopoint/styles.h"
 
 namespace octopoint {
 namespace {

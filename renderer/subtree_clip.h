@@ -5,7 +5,7 @@
 // Leaves of a node at tree level l lie within reach[l] = sum over l' >= l of max_k |offset[l'][k]|
 // of its centre, per axis (Q(32-F).F). A leaf at p covers the pixels (p + low) >> F to
 // (p + high) >> F per axis: low = high = 0 for one pixel per leaf, the splat's first and last
-// pixel otherwise (renderer/splat_footprint.h), so a subtree is on screen when its reach widened by
+// pixel otherwise (octopoint/camera.h), so a subtree is on screen when its reach widened by
 // them is. Screen edges are kept in 64 bits: width << F does not fit 32 bits at F = 24. When every
 // bound of this set-up's tree fits 32 bits (F = 15 and the usual sizes), the test runs in 32 bits:
 // a 32-bit CPU (Cortex-M0+) compares 64-bit values in several instructions and two branches.
@@ -15,8 +15,8 @@
 #include <cstdint>
 #include <cstdlib>
 
-#include "renderer/camera.h"
-#include "renderer/framebuffer.h"
+#include "octopoint/camera.h"
+#include "octopoint/framebuffer.h"
 
 namespace octopoint {
 

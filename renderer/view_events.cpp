@@ -1,4 +1,4 @@
-#include "renderer/view_events.h"
+#include "octopoint/interactive.h"
 
 #include <algorithm>
 

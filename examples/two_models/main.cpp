@@ -1,5 +1,5 @@
 // Draws the two models compiled into this app side by side into one PPM image (no OpenCV needed),
-// each with the one-call path: model + camera -> RGB pixels (renderer/rgb_renderer.h).
+// each with the one-call path: model + camera -> RGB pixels (octopoint/rgb_renderer.h).
 // usage: two_models OUT.ppm
 #include <cstdio>
 #include <optional>
@@ -7,7 +7,7 @@
 
 #include "bottle.h"
 #include "carton.h"
-#include "renderer/rgb_renderer.h"
+#include "octopoint/rgb_renderer.h"
 
 namespace {
 

@@ -2,7 +2,7 @@
 // Do not edit: regenerate it.
 #pragma once
 
-#include "renderer/embedded_model.h"
+#include "octopoint/model.h"
 
 namespace octopoint::models {
 

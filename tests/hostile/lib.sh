@@ -1,5 +1,5 @@
 # shellcheck shell=bash disable=SC2034  # the variables set here are read by the class files
-# The hostile sweep's machinery (sourced by scripts/hostile-sweep): runs one case under measure
+# The hostile sweep's machinery (sourced by lab/scripts/hostile-sweep): runs one case under measure
 # and judges it. A refusal passes when the tool
 #   - exits with status 1 (not 0, not a signal, not the hang timeout),
 #   - prints exactly one line on stderr, at most kMaxLine characters, that is not "out of memory"
@@ -30,8 +30,8 @@ sweepClass() {
 sweepInit() {
   local build=$1
   quick=$2 verbose=$3
-  RENDER=$build/app/octopoint-render PREPARE=$build/codegen/octopoint-prepare
-  TRADEOFF=$build/app/octopoint-tradeoff VIEW=$build/app/octopoint-view
+  RENDER=$build/tools/octopoint-render PREPARE=$build/tools/octopoint-prepare
+  TRADEOFF=$build/app/octopoint-tradeoff VIEW=$build/tools/octopoint-view
   local tool
   for tool in "$RENDER" "$PREPARE" "$TRADEOFF"; do
     [ -x "$tool" ] || { echo "hostile-sweep: $tool is not built (cmake --build --preset release)" >&2; return 1; }

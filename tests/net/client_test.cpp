@@ -1,4 +1,4 @@
-// The client (net/range_client.h, net/model_stream.h) against servers that lie, stall, cut off,
+// The client (octopoint/http.h, octopoint/http.h) against servers that lie, stall, cut off,
 // talk without end, damage bytes or die: it must refuse what is wrong, never hand the model a
 // damaged chunk, fetch a damaged chunk again a bounded number of times, keep what it has when the
 // server goes away and resume when it comes back.
@@ -10,11 +10,10 @@
 #include <mutex>
 #include <thread>
 
-#include "fuzz/model_images.h"
-#include "models/registry.h"
-#include "net/model_stream.h"
-#include "net/range_client.h"
-#include "tests/net/net_test_support.h"
+#include "tests/support/model_images.h"
+#include "octopoint/models.h"
+#include "octopoint/http.h"
+#include "tests/support/net_test_support.h"
 
 namespace octopoint {
 namespace {

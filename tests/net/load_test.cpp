@@ -1,5 +1,5 @@
 // A load test of a running model server (tests/net/load_test.sh starts octopoint-serve): CLIENTS
-// clients at once for SECONDS, each streaming the model again and again (net/model_stream.h, one
+// clients at once for SECONDS, each streaming the model again and again (octopoint/http.h, one
 // connection) for a random view that changes while it streams. Passes when no request failed and
 // the server's resident memory (from /proc/PID/status) did not grow after the first
 // WARM_UP seconds by more than the stated tolerance.
@@ -14,7 +14,7 @@
 #include <thread>
 #include <vector>
 
-#include "net/model_stream.h"
+#include "octopoint/http.h"
 
 namespace {
 

@@ -9,8 +9,8 @@
 #include <vector>
 
 #include "net/byte_range.h"
-#include "net/range_client.h"
-#include "tests/net/net_test_support.h"
+#include "octopoint/http.h"
+#include "tests/support/net_test_support.h"
 
 namespace octopoint {
 namespace {

@@ -9,10 +9,9 @@
 #include <vector>
 
 #include "fixedpoint/trig.h"
-#include "models/registry.h"
-#include "renderer/clock.h"
-#include "renderer/dual_resolution_renderer.h"
-#include "renderer/rgb_renderer.h"
+#include "octopoint/models.h"
+#include "octopoint/interactive.h"
+#include "octopoint/rgb_renderer.h"
 
 int main() {
   using namespace octopoint;

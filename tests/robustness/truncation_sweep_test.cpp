@@ -9,9 +9,9 @@
 #include <span>
 #include <vector>
 
-#include "fuzz/model_images.h"
-#include "models/registry.h"
-#include "renderer/model.h"
+#include "tests/support/model_images.h"
+#include "octopoint/models.h"
+#include "octopoint/model.h"
 
 #if defined(__SANITIZE_ADDRESS__)
 #include <sanitizer/asan_interface.h>

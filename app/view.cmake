@@ -1,7 +1,0 @@
-# octopoint-view (included from app/CMakeLists.txt): the interactive window. SDL2 for the window
-# and its events (key presses and releases, wheel, resizes), OpenCV for the overlay text and PNGs.
-find_package(SDL2 REQUIRED)
-add_executable(octopoint-view view_main.cpp view_keys.cpp view_overlay.cpp view_window.cpp
-               model_source.cpp)
-target_link_libraries(octopoint-view PRIVATE octopoint_cli octopoint_interactive octopoint_models octopoint_net
-                      opencv_core opencv_imgproc opencv_imgcodecs SDL2::SDL2 octopoint_warnings)

@@ -1,0 +1,1 @@
+# cpack -G DEB (filled in below).

@@ -1,0 +1,330 @@
+#pragma once
+// octopoint/interactive.h: The dual-resolution render threads and the events that drive them.
+// The manual of the whole library is octopoint/octopoint.h.
+
+#include <array>
+#include <atomic>
+#include <chrono>
+#include <condition_variable>
+#include <cstdint>
+#include <functional>
+#include <memory>
+#include <mutex>
+#include <optional>
+#include <thread>
+#include <vector>
+
+#include "octopoint/fixed.h"
+#include "octopoint/model.h"
+#include "octopoint/framebuffer.h"
+#include "octopoint/render.h"
+
+// The time source of the interactive renderer (docs/design.md section 5), injectable so that
+// scripted tests run on a clock they set themselves. Time is an integer count of microseconds.
+
+namespace octopoint {
+
+class Clock {
+ public:
+  virtual ~Clock() = default;
+  virtual std::int64_t nowMicroseconds() const = 0;
+};
+
+// Real time, monotonic.
+class SteadyClock final : public Clock {
+ public:
+  std::int64_t nowMicroseconds() const override {
+    return std::chrono::duration_cast<std::chrono::microseconds>(
+               std::chrono::steady_clock::now().time_since_epoch())
+        .count();
+  }
+};
+
+// A clock that only moves when told to (scripted timelines, tests). A mutex rather than a 64-bit
+// atomic: ARMv5 has no lock-free 64-bit atomics.
+class ManualClock final : public Clock {
+ public:
+  std::int64_t nowMicroseconds() const override {
+    const std::lock_guard lock(mutex_);
+    return now_us_;
+  }
+  void set(std::int64_t now_us) {
+    const std::lock_guard lock(mutex_);
+    now_us_ = now_us;
+  }
+
+ private:
+  mutable std::mutex mutex_;
+  std::int64_t now_us_ = 0;
+};
+
+}  // namespace octopoint
+
+// What drives the interactive renderer: timed view events from an event source, either the
+// viewer's window (tools/view_window.cpp: SDL2 key presses and releases, wheel, resizes) or a
+// scripted timeline (tests, benchmarks).
+
+namespace octopoint {
+
+// Keys that move the view while held; the view turns at a fixed speed in degrees per second.
+enum class NavigationKey : std::uint8_t { kYawLeft, kYawRight, kPitchUp, kPitchDown };
+inline constexpr int kNavigationKeyCount = 4;
+
+enum class ViewEventKind : std::uint8_t {
+  kPress,           // a navigation key goes down (repeats of a held key are ignored)
+  kRelease,         // a navigation key goes up
+  kTick,            // the frame tick (every kTickPeriodMicroseconds): the fine frame may start
+  kZoomIn,          // one zoom step in
+  kZoomOut,         // one zoom step out
+  kToggleFill,      // hole filling on/off
+  kReset,           // back to the initial view
+  kResize,          // the frame becomes width x height pixels (the window was resized)
+  kContentChanged,  // the model has more in it (a streamed chunk arrived): the fine frame is due
+                    // again, without changing the view or aborting a fine frame under way
+  kQuit,            // the source has ended
+};
+
+inline constexpr std::int64_t kTickPeriodMicroseconds = 100'000;
+
+struct ViewEvent {
+  std::int64_t time_us = 0;  // on the renderer's clock
+  ViewEventKind kind = ViewEventKind::kTick;
+  NavigationKey key = NavigationKey::kYawLeft;  // for kPress and kRelease
+  std::int32_t width = 0;                       // for kResize: the new frame size
+  std::int32_t height = 0;
+};
+
+class EventSource {
+ public:
+  virtual ~EventSource() = default;
+  // The next event, waiting at most `max_wait_ms` for it; nullopt when none came in that time.
+  // After kQuit the source is finished.
+  virtual std::optional<ViewEvent> next(std::int32_t max_wait_ms) = 0;
+};
+
+// A scripted list of events played on a ManualClock: next() sets the clock to the event's time
+// and returns it at once, with a kTick inserted at every multiple of kTickPeriodMicroseconds from
+// 0 to `end_us` (an event at the same time as a tick comes first), then kQuit at `end_us`.
+class ScriptedTimeline final : public EventSource {
+ public:
+  ScriptedTimeline(std::vector<ViewEvent> events, std::int64_t end_us, ManualClock& clock);
+  std::optional<ViewEvent> next(std::int32_t max_wait_ms) override;
+
+ private:
+  std::vector<ViewEvent> events_;
+  std::size_t next_ = 0;
+  ManualClock& clock_;
+};
+
+}  // namespace octopoint
+
+// Dual-resolution interactive rendering (docs/design.md section 5): two render threads behind one
+// view.
+//
+// Levels: built from a whole model, H draws the depth-auto level of each view
+// (renderer/level_of_detail.h) and L the stored depth one coarser (the same when H's is the
+// coarsest), whose voxels are twice as wide, so its footprint splats are twice as large. Built
+// from two fixed levels, each thread draws its own.
+// - L (coarse) renders the coarse level continuously while a navigation key is held, and once
+//   after a step change (zoom, reset, fill toggle). The view at a frame is a function of time
+//   (held keys turn it at `degrees_per_second` since their press), so the rotation does not
+//   depend on the frame rate.
+// - H (fine) renders the fine level at the first tick (ViewEvent kTick, every 100 ms) at which no
+//   key is held and the fine frame of the current view is not yet on screen. A key press aborts
+//   it through the render API's abort flag (polled by the decoder at tree level 3).
+// - Only complete frames are shown: each thread draws into its own back buffer and hands it over
+//   by swapping pointers under the mutex; the display swaps the newest hand-over into its front
+//   buffer. Four buffers, allocated at construction; no thread ever writes the front buffer.
+//   An aborted frame is never handed over, nor a frame older than the one on screen (a fine
+//   frame of a view that has changed since H started, or a coarse frame that ends after the fine
+//   frame of the same view).
+// - The frame follows the window: a kResize event changes the size of the frames drawn from then
+//   on (a new view: H is aborted, L draws once). A buffer is reallocated by the thread that owns it
+//   when it next draws into it at a new size (a back buffer belongs to its thread between hand-
+//   overs, so nobody else can be reading it), and so is each thread's hole filler: after a
+//   resize each of the four buffers and two fillers is reallocated at most once, and drawing at a
+//   settled size never allocates. A frame already drawn at the old size may still be handed over
+//   (it is complete); FrameInfo says each frame's size.
+// - Idle threads sleep on condition variables; nothing polls.
+//
+// Threads: std::thread with a `stopping_` flag under the same mutex as the rest of the state,
+// not std::jthread/std::stop_token. The waits are condition-variable waits on that mutex anyway,
+// so the flag costs nothing, and std::stop_token's shared state relies on atomic read-modify-
+// write operations, which the device (ARMv5) does not have lock-free. The per-frame abort is a
+// std::atomic<bool> (the render API polls it without a lock) used with plain loads and stores
+// only, which are lock-free everywhere; it is reset by H itself under the mutex, so a stop_token
+// (which can be requested only once) would not fit it either.
+
+namespace octopoint {
+
+struct ViewParameters {
+  Angle yaw;
+  Angle pitch;
+  Q16 zoom = Q16::fromRaw(Q16::kOneRaw);  // Q16.16
+  bool fill = false;  // hole filling: footprint splats leave none to fill (the f key turns it on)
+  bool operator==(const ViewParameters&) const = default;
+};
+
+struct InteractiveConfig {
+  std::int32_t width = 320;  // the initial frame size (kResize changes it), 1..kMaxViewportSide
+  std::int32_t height = 240;
+  std::int32_t degrees_per_second = 90;
+  Variant variant = defaultVariant();
+  ViewParameters initial_view;
+  // Called from a render thread, without any lock held, after each frame it hands over: lets a
+  // display sleep until there is something to show (the viewer posts a window event). Must not
+  // call back into the renderer.
+  std::function<void()> frame_ready;
+  // What the frames carry besides depth and colour: PixelPayload::kColourNormal lets the display
+  // draw them in any style (octopoint/styles.h); it needs a model with normals.
+  PixelPayload payload = PixelPayload::kColour;
+};
+
+enum class FrameSource : std::uint8_t { kCoarse, kFine };  // drawn by L or by H
+
+struct FrameInfo {
+  FrameSource source = FrameSource::kCoarse;
+  std::uint64_t generation = 0;    // 1, 2, ... in the order frames were handed over
+  std::uint64_t view_version = 0;  // bumped by every event that changes the view
+  std::int64_t view_time_us = 0;   // the clock time the view was taken at
+  ViewParameters view;
+  std::int32_t width = 0;  // the frame's size (the size in force when it was started)
+  std::int32_t height = 0;
+  std::int64_t render_us = 0;  // real time spent drawing (decode + fill), for the overlay
+  int depth = 0;               // the depth drawn (0: none, the camera was refused)
+  std::uint32_t checksum = 0;  // frameChecksum of the finished frame
+};
+
+struct RendererStatus {
+  std::uint64_t coarse_shown = 0;  // frames handed over, per thread
+  std::uint64_t fine_shown = 0;
+  std::uint64_t buffers_allocated = 0;  // frame buffers and hole fillers (re)allocated by resizes
+  std::uint64_t fine_started = 0;
+  std::uint64_t fine_aborted = 0;
+  std::uint64_t stale_dropped = 0;  // complete frames not handed over: a newer one was out
+  std::uint64_t view_version = 0;   // of the current view (the one the next fine frame shows)
+  bool coarse_busy = false;
+  bool fine_busy = false;
+  FrameInfo latest;  // the newest frame handed over (generation 0: none yet)
+};
+
+// Draws `level` with `setup` into a cleared frame; the default is renderLevel with the configured
+// variant. Tests inject a slower one.
+using RenderFunction = std::function<bool(const LevelView& level, const FrameSetup& setup,
+                                          Framebuffer& frame, const std::atomic<bool>* abort)>;
+
+// Draws a whole view into a cleared frame, for models that are not one ModelView (a chunked model
+// streaming in: tools/view_main.cpp with --url): the fine frame (`source` kFine) at the depth the
+// view needs, the coarse one at a coarser depth. Returns false when `abort` stopped it; sets
+// `depth` to the depth drawn (0: nothing).
+using ViewDrawFunction = std::function<bool(FrameSource source, const Camera& camera, Framebuffer& frame,
+                                            const std::atomic<bool>* abort, int* depth)>;
+
+// A cheap integrity stamp of a frame's colours and depths.
+std::uint32_t frameChecksum(const Framebuffer& frame);
+
+class DualResolutionRenderer {
+ public:
+  // The levels (of one validated model) and `clock` must outlive the renderer. Starts both
+  // threads; H draws the initial view at once.
+  DualResolutionRenderer(const LevelView& coarse, const LevelView& fine, const Clock& clock,
+                         const InteractiveConfig& config, RenderFunction render = {});
+  // The model and `clock` must outlive the renderer. H draws each view at depth auto, L one stored
+  // depth coarser (see the header comment).
+  DualResolutionRenderer(const ModelView& model, const Clock& clock, const InteractiveConfig& config,
+                         RenderFunction render = {});
+  // Whatever `draw_view` draws (see ViewDrawFunction), which must be safe to call from both render
+  // threads at once. A kContentChanged event makes the fine frame due again.
+  DualResolutionRenderer(ViewDrawFunction draw_view, const Clock& clock, const InteractiveConfig& config);
+  ~DualResolutionRenderer();  // stops both threads (aborting H) and joins them
+  DualResolutionRenderer(const DualResolutionRenderer&) = delete;
+  DualResolutionRenderer& operator=(const DualResolutionRenderer&) = delete;
+
+  // Applies one event from the event source (kQuit is the caller's business).
+  void handle(const ViewEvent& event);
+
+  // For the display, from one thread only: makes the newest complete frame the front buffer and
+  // returns it (nullptr before the first frame). The front buffer is not touched by anyone until
+  // the next call.
+  const Framebuffer* acquireLatest(FrameInfo* info);
+
+  RendererStatus status() const;
+  // Waits (sleeping) until `predicate(status())` holds or `timeout` passes; returns whether it
+  // held.
+  bool waitUntil(const std::function<bool(const RendererStatus&)>& predicate,
+                 std::chrono::milliseconds timeout) const;
+
+ private:
+  DualResolutionRenderer(const ModelView* model, const LevelView* coarse, const LevelView* fine,
+                         ViewDrawFunction draw_view, const Clock& clock, const InteractiveConfig& config,
+                         RenderFunction render);
+
+  struct Slot {
+    Framebuffer frame;
+    FrameInfo info;
+  };
+  struct HeldKey {
+    bool held = false;
+    std::int64_t since_us = 0;
+  };
+  // What a render thread owns besides its back buffer: the hole filler, as wide as its frames.
+  struct Worker {
+    HoleFiller filler;
+    std::int32_t filler_width;
+  };
+
+  void coarseLoop();
+  void fineLoop();
+  bool anyKeyHeld() const;
+  ViewParameters viewAt(std::int64_t time_us) const;  // base view plus the held keys' motion
+  void changeView();  // a new view: aborts H, the fine frame is due again
+  // Starts a frame in `slot` (locked): the current view, its version, time and size.
+  void beginFrame(Slot& slot, FrameSource source);
+  // Makes the slot's frame and the worker's filler the slot's size (unlocked: both belong to the
+  // calling thread); returns how many it reallocated.
+  static int fitBuffers(Slot& slot, Worker& worker);
+  // Draws a frame into `slot` (unlocked: the slot belongs to the calling thread).
+  bool draw(Slot& slot, Worker& worker, const std::atomic<bool>* abort);
+  // The level a frame of `source` draws for `camera`; nullptr when the camera is refused.
+  const LevelView* levelFor(FrameSource source, const Camera& camera) const;
+  // Hands `slot` over unless a newer frame is out (locked); returns whether it did.
+  bool handOver(std::unique_ptr<Slot>& slot);
+  // Calls config_.frame_ready with the mutex released for the call.
+  void notifyFrameReady(std::unique_lock<std::mutex>& lock);
+
+  const ModelView* model_ = nullptr;  // when built from a model: levels by projected size
+  const LevelView* coarse_level_ = nullptr;
+  const LevelView* fine_level_ = nullptr;
+  ViewDrawFunction draw_view_;  // when built from one: draws whole views
+  const Clock& clock_;
+  const InteractiveConfig config_;
+  RenderFunction render_;
+  Worker coarse_worker_;
+  Worker fine_worker_;
+
+  mutable std::mutex mutex_;
+  std::condition_variable coarse_wake_;
+  std::condition_variable fine_wake_;
+  mutable std::condition_variable status_changed_;
+  bool stopping_ = false;
+  std::array<HeldKey, kNavigationKeyCount> held_{};
+  ViewParameters base_view_;
+  std::int32_t width_;  // the size of the frames drawn from now on
+  std::int32_t height_;
+  std::uint64_t view_version_ = 1;
+  bool coarse_once_ = false;    // one coarse frame after a step change
+  bool fine_due_ = true;        // the fine frame of the current view is not on screen yet
+  bool fine_requested_ = true;  // H should start (set by a tick)
+  std::uint64_t fine_busy_version_ = 0;
+  std::uint64_t content_version_ = 0;  // bumped by kContentChanged
+  std::atomic<bool> fine_abort_{false};
+  std::unique_ptr<Slot> coarse_back_, fine_back_, handed_over_, front_;
+  bool handed_over_is_new_ = false;
+  std::uint64_t generation_ = 0;
+  RendererStatus status_;
+
+  std::thread coarse_thread_;
+  std::thread fine_thread_;
+};
+
+}  // namespace octopoint

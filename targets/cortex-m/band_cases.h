@@ -1,0 +1,81 @@
+#pragma once
+// The frames the bare-metal band test draws (targets/cortex-m/band_test_main.cpp) and the host golden tool
+// (targets/cortex-m/golden_main.cpp) checksums: the same list compiled into both, so the goldens always
+// describe exactly the cases the device renders. Everything is constexpr: on the device the list
+// lives in flash, and no angle conversion (a division) runs there.
+
+#include <array>
+#include <cstddef>
+#include <cstdint>
+
+#include "octopoint/camera.h"
+#include "octopoint/model.h"
+
+namespace octopoint::mcu {
+
+struct BandCase {
+  int camera;  // index into kCameras
+  int depth;
+  bool fill;
+  std::int32_t band_rows;
+};
+
+constexpr Camera makeCamera(std::int32_t width, std::int32_t height, int yaw, int pitch, int zoom_percent,
+                            std::int32_t pan_x, std::int32_t pan_y) {
+  Camera camera;
+  camera.width = width;
+  camera.height = height;
+  camera.yaw = Angle::fromDegrees(yaw);
+  camera.pitch = Angle::fromDegrees(pitch);
+  camera.zoom = Q16::fromRaw(zoom_percent * Q16::kOneRaw / 100);
+  camera.pan_x_px = pan_x;
+  camera.pan_y_px = pan_y;
+  return camera;
+}
+
+// Straight on at the panel's landscape size; turned, zoomed and panned so that the model leaves
+// the frame (straddling subtrees, clipped bands); the portrait panel turned the other way.
+inline constexpr Camera kCameras[] = {
+    makeCamera(320, 240, 0, 0, 100, 0, 0),
+    makeCamera(320, 240, 30, -20, 150, 20, -10),
+    makeCamera(240, 320, -40, 10, 120, 0, 0),
+};
+inline constexpr int kCameraCount = 3;
+
+// Band heights: one row, a height that divides neither 240 nor 320, the two the targets name.
+inline constexpr std::int32_t kBandRows[] = {1, 7, 8, 24};
+inline constexpr int kBandRowsCount = 4;
+inline constexpr int kDepths[] = {7, 8};
+
+// Largest frame side and band (with hole filling's margins): what the test's buffers must hold.
+inline constexpr std::int32_t kMaxWidth = 320;
+inline constexpr std::int32_t kMaxBandRows = 24;
+
+inline constexpr int kCaseCount = kCameraCount * 2 * 2 * kBandRowsCount;
+
+// Every case, in the order both programs use: camera, depth, fill, band rows. A table built at
+// compile time: the device looks cases up, it does not compute them.
+inline constexpr std::array<BandCase, kCaseCount> kCases = [] {
+  std::array<BandCase, kCaseCount> cases{};
+  int i = 0;
+  for (int camera = 0; camera < kCameraCount; ++camera) {
+    for (const int depth : kDepths) {
+      for (const bool fill : {false, true}) {
+        for (const std::int32_t rows : kBandRows) cases[static_cast<std::size_t>(i++)] = {camera, depth, fill, rows};
+      }
+    }
+  }
+  return cases;
+}();
+
+// FNV-1a over a band's RGB565 bytes: the checksum both sides compute.
+constexpr std::uint32_t kChecksumSeed = 2166136261u;
+constexpr std::uint32_t checksum(std::uint32_t hash, const std::uint8_t* bytes, std::size_t count) {
+  for (std::size_t i = 0; i < count; ++i) hash = (hash ^ bytes[i]) * 16777619u;
+  return hash;
+}
+
+// The background the device draws (and the host goldens assume).
+inline constexpr Rgb kBackground{16, 16, 24};
+
+}  // namespace octopoint::mcu

@@ -1,0 +1,174 @@
+// The bare-metal band test (docs/device.md), run under qemu-system-arm by scripts/test-mcu:
+//  1. every case of targets/cortex-m/band_cases.h (three cameras, depths 7 and 8, with and without hole
+//     filling, bands of 1, 7, 8 and 24 rows) drawn by fixed_fast and by fixed_delta with the
+//     level-3 subtree index into two alternating band buffers, every band's checksum compared with
+//     the host's golden;
+//  2. the cost table: every fixed variant, bands of 8, 24 and 120 rows (two or three bands:
+//     almost one walk), without an index and with the level-3 and level-4 ones, at 320x240 and
+//     240x320, depth 8: instructions per frame from qemu's instruction clock (the sink's
+//     checksumming excluded), each frame checked against the goldens too;
+//  3. the stack's high-water mark over all of it.
+// Prints one line per measurement and exits with status 0 only if every band matched.
+#include <array>
+#include <cstdint>
+
+#include "targets/cortex-m/band_check.h"
+#include "targets/cortex-m/semihosting.h"
+#include "octopoint/render.h"
+
+using namespace octopoint;
+using namespace octopoint::mcu;
+
+namespace {
+
+constexpr std::int32_t kTallRows = 120;  // two bands of a 240-row frame: about one walk
+constexpr std::size_t kHistoryWords =
+    static_cast<std::size_t>(kMaxWidth + 2 * kHoleFillPadColumns) * kHoleFillHistoryRows;
+constexpr std::size_t kBufferWords = static_cast<std::size_t>(kMaxBandRows + 2 * kHoleFillReachRows) * kMaxWidth;
+// One arena: either two band buffers of up to 24 + 4 rows, or one band of 120 rows.
+constexpr std::size_t kArenaWords = static_cast<std::size_t>(kTallRows) * kMaxWidth;
+static_assert(2 * kBufferWords <= kArenaWords);
+alignas(8) std::uint32_t arena[kArenaWords];
+std::uint32_t history[kHistoryWords];
+// The index the device uses (level 3: 116 nodes of the default model, 464 bytes) and a deeper one
+// (level 4: 398 nodes, 1,592 bytes) for the cost table; by depth 7, 8.
+constexpr int kIndexLevel = 3;
+constexpr int kDeeperIndexLevel = 4;
+std::array<SubtreeSize, 120> index_storage[2];
+std::array<SubtreeSize, 400> deeper_index_storage[2];
+BandIndex indexes[2];
+BandIndex deeper_indexes[2];
+Rgb565Palette palette;
+
+struct VariantName {
+  Variant variant;
+  const char* name;
+};
+constexpr VariantName kVariants[] = {
+    {Variant::kFixedBaseline, "fixed_baseline"}, {Variant::kFixedLeafCall, "fixed_leafcall"},
+    {Variant::kFixedUnrolled, "fixed_unrolled"}, {Variant::kFixedSetBits, "fixed_setbits"},
+    {Variant::kFixedClipped, "fixed_clipped"},   {Variant::kFixedFast, "fixed_fast"},
+    {Variant::kFixedDelta, "fixed_delta"},
+};
+// The variants that draw every case: fixed_fast (footprint splats where a voxel covers more than a
+// pixel) and fixed_delta (one pixel per leaf; on ARMv6-M its leaf loop is Thumb-1 assembly,
+// renderer/delta_leaves.h).
+constexpr VariantName kCaseVariants[] = {{Variant::kFixedFast, "fixed_fast"},
+                                         {Variant::kFixedDelta, "fixed_delta"}};
+
+// Draws case `number` (band rows overridden by `rows` when > 0); returns whether every band
+// matched its golden, and the instructions spent in renderBands.
+bool drawCase(int number, Variant variant, int index_level, std::int32_t rows, bool two_buffers,
+              std::uint64_t* instructions) {
+  const BandCase& c = kCases[static_cast<std::size_t>(number)];
+  const Camera& camera = kCameras[c.camera];
+  const ModelView& model = defaultModel();
+  const LevelView& level = *model.levelOfDepth(c.depth);
+  FrameSetup setup;
+  if (buildFrameSetup(camera, c.depth, kDefaultFractionBits, &setup) != CameraError::kNone) return false;
+  const BandConfig config{variant, rows > 0 ? rows : c.band_rows, c.fill, kBackground};
+  const std::size_t words = bandBufferWords(camera.width, config);
+  BandBuffers buffers{std::span(arena, words), {}, std::span(history)};
+  if (two_buffers) buffers.second = std::span(arena + words, words);
+  GoldenSink golden(number, variant, camera.width);
+  const BandIndex no_index;
+  const std::uint64_t start = instructionsNow();
+  const BandIndex& index = index_level == kIndexLevel        ? indexes[c.depth - 7]
+                           : index_level == kDeeperIndexLevel ? deeper_indexes[c.depth - 7]
+                                                              : no_index;
+  const BandError error = renderBands(level, setup, config, index, palette, buffers, golden.sink());
+  *instructions = instructionsNow() - start - golden.flushInstructions();
+  if (error != BandError::kNone) {
+    print("renderBands: ");
+    print(describe(error));
+    print("\n");
+    return false;
+  }
+  return golden.passed();
+}
+
+int caseNumber(int camera, int depth, bool fill, std::int32_t rows) {
+  for (int i = 0; i < kCaseCount; ++i) {
+    const BandCase& c = kCases[static_cast<std::size_t>(i)];
+    if (c.camera == camera && c.depth == depth && c.fill == fill && c.band_rows == rows) return i;
+  }
+  return -1;
+}
+
+}  // namespace
+
+int octopoint::mcu::programMain() {
+  startInstructionClock();
+  if (!calibrateInstructionClock()) {
+    print("the instruction clock does not count one instruction per nanosecond: is qemu run with -icount shift=0?\n");
+    return 1;
+  }
+  const ModelView& model = defaultModel();
+  palette = makeRgb565Palette(model, kBackground);
+  for (int d = 0; d < 2; ++d) {
+    indexes[d] = buildBandIndex(*model.levelOfDepth(7 + d), kIndexLevel, index_storage[d]);
+    deeper_indexes[d] = buildBandIndex(*model.levelOfDepth(7 + d), kDeeperIndexLevel, deeper_index_storage[d]);
+  }
+  if (indexes[0].level != kIndexLevel || indexes[1].level != kIndexLevel ||
+      deeper_indexes[0].level != kDeeperIndexLevel || deeper_indexes[1].level != kDeeperIndexLevel) {
+    print("the subtree index does not fit its storage\n");
+    return 1;
+  }
+  int failures = 0;
+  std::uint64_t instructions = 0;
+
+  for (const VariantName& v : kCaseVariants) {
+    for (int i = 0; i < kCaseCount; ++i) {
+      const BandCase& c = kCases[static_cast<std::size_t>(i)];
+      const bool passed = drawCase(i, v.variant, kIndexLevel, 0, true, &instructions);
+      failures += passed ? 0 : 1;
+      print(passed ? "pass " : "FAIL ");
+      print(v.name);
+      print(" case camera ");
+      printUnsigned(static_cast<std::uint64_t>(c.camera));
+      print(" depth ");
+      printUnsigned(static_cast<std::uint64_t>(c.depth));
+      print(c.fill ? " fill" : " nofill");
+      print(" rows ");
+      printUnsigned(static_cast<std::uint64_t>(c.band_rows));
+      print(" instructions ");
+      printUnsigned(instructions);
+      print("\n");
+    }
+  }
+
+  for (const int camera : {0, 2}) {
+    const std::uint64_t leaves = model.levelOfDepth(8)->leaves.size();
+    for (const VariantName& v : kVariants) {
+      for (const std::int32_t rows : {std::int32_t{8}, std::int32_t{24}, kTallRows}) {
+        for (const int index_level : {0, kIndexLevel, kDeeperIndexLevel}) {
+          // Checked against the 24-row goldens when drawn in 120-row bands (5 slices each).
+          const int number = caseNumber(camera, 8, false, rows == kTallRows ? 24 : rows);
+          const bool passed = drawCase(number, v.variant, index_level, rows, false, &instructions);
+          failures += passed ? 0 : 1;
+          print(passed ? "pass" : "FAIL");
+          print(" cost ");
+          print(v.name);
+          print(" size ");
+          printUnsigned(static_cast<std::uint64_t>(kCameras[camera].width));
+          print("x");
+          printUnsigned(static_cast<std::uint64_t>(kCameras[camera].height));
+          print(" rows ");
+          printUnsigned(static_cast<std::uint64_t>(rows));
+          print(" index ");
+          printUnsigned(static_cast<std::uint64_t>(index_level));
+          print(" instructions ");
+          printUnsigned(instructions);
+          print(" leaves ");
+          printUnsigned(leaves);
+          print("\n");
+        }
+      }
+    }
+  }
+
+  report("stack high-water bytes", stackHighWater());
+  report("stack region bytes", stackBytes());
+  report("failures", static_cast<std::uint64_t>(failures));
+  return failures == 0 && stackHighWater() < stackBytes() ? 0 : 1;
+}

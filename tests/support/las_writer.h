@@ -1,0 +1,61 @@
+#pragma once
+// Writing LAS files for tests and scale runs (tests/support/make_large_scan.cpp): any version 1.0 to
+// 1.4, any point format 0 to 10, with VLRs, EVLRs, extra bytes per record and 8- or 16-bit colour,
+// streamed point by point. The header's counts and bounds are patched in by finish().
+
+#include <array>
+#include <cstdint>
+#include <filesystem>
+#include <fstream>
+#include <vector>
+
+#include "tests/support/landscape.h"
+
+namespace octopoint::testing {
+
+struct LasLayout {
+  int format = 2;
+  int version_minor = -1;  // -1: the first version with the format (1.2; 1.3 for 4-5; 1.4 for 6-10)
+  int extra_bytes = 0;     // user bytes after each record's fields
+  int vlrs = 1;            // VLRs between the header and the points
+  int evlrs = 0;           // EVLRs after the points (1.4 only)
+  bool colour_16bit =
+      true;  // channels scaled to 16 bits (v * 257), else the 8-bit values as they are
+  std::array<double, 3> scale{0.001, 0.001, 0.001};
+  std::array<double, 3> offset{500000, 4100000,
+                               0};  // a UTM-like origin, far beyond float precision
+
+  int minor() const {
+    return version_minor >= 0 ? version_minor : format <= 3 ? 2 : format <= 5 ? 3 : 4;
+  }
+};
+
+// Byte offsets in the public header block (LAS 1.4 R15).
+namespace las_offsets {
+inline constexpr std::size_t kHeaderSize = 94, kPointOffset = 96, kVlrCount = 100, kFormat = 104,
+                             kRecordLength = 105, kLegacyCount = 107, kScale = 131, kOffset = 155,
+                             kEvlrStart = 235, kEvlrCount = 243, kCount = 247;
+}
+
+class LasWriter {
+ public:
+  LasWriter(const std::filesystem::path& path, const LasLayout& layout);
+  void add(const LandscapePoint&
+               point);  // the landscape's metres, stored relative to the layout's origin
+  void finish();        // EVLRs, then the header's counts and bounds
+
+  static std::uint16_t recordLength(const LasLayout& layout);
+  std::uint64_t pointOffset() const { return point_offset_; }
+
+ private:
+  void flush();
+
+  LasLayout layout_;
+  std::ofstream out_;
+  std::uint64_t point_offset_ = 0;
+  std::uint64_t count_ = 0;
+  std::array<double, 3> low_{}, high_{};
+  std::vector<std::uint8_t> buffer_;
+};
+
+}  // namespace octopoint::testing

@@ -1,0 +1,81 @@
+#include "tools/chunked_render.h"
+
+#include <opencv2/imgproc.hpp>
+
+#include "tools/model_source.h"
+#include "octopoint/http.h"
+#include "octopoint/framebuffer.h"
+#include "octopoint/render.h"
+
+namespace octopoint {
+
+cv::Mat renderChunkedView(ProgressiveModel& model, const Camera& camera, Variant variant, bool fill,
+                          Rgb background, ProgressiveDrawStats* stats) {
+  Framebuffer frame(camera.width, camera.height);
+  frame.clear();
+  ProgressiveDrawStats drawn;
+  if (!model.draw(camera, variant, frame, &drawn))
+    throw ModelLoadError("camera refused: coordinates would overflow");
+  if (fill) {
+    FrameSetup setup;
+    buildFrameSetup(camera, drawn.drawn_depth, kDefaultFractionBits, &setup);
+    HoleFiller(frame.width()).fill(frame, bridgeDepthLimit(setup));
+  }
+  if (stats != nullptr) *stats = drawn;
+  cv::Mat rgb(camera.height, camera.width, CV_8UC3);
+  resolveToRgb(frame, model.baseModel(), background, {rgb.data, rgb.total() * 3});
+  cv::Mat bgr;
+  cv::cvtColor(rgb, bgr, cv::COLOR_RGB2BGR);
+  return bgr;
+}
+
+cv::Mat renderFromUrl(const std::string& url_text, const Camera& camera, Variant variant, bool fill,
+                      Rgb background, const UrlFetchOptions& options, std::string* report) {
+  std::string why;
+  const std::optional<net::HttpUrl> url = net::parseHttpUrl(url_text, &why);
+  if (!url) throw ModelLoadError("--url: '" + url_text + "': " + why);
+  net::StreamOptions stream_options;
+  stream_options.byte_budget = options.bytes;
+  stream_options.connections = options.bytes > 0 ? 1 : 2;
+  stream_options.prefetch_invisible = false;
+  if (options.bytes > 0)
+    stream_options.first_request_bytes = std::min<std::uint64_t>(options.bytes, 4096);
+  net::ModelStream stream(*url, stream_options);
+  stream.setView(camera);
+  stream.start();
+  const net::StreamStatus status =
+      stream.waitUntilSettled(std::chrono::seconds(options.timeout_seconds));
+  stream.stop();
+  if (status.failed && !status.head_known) throw ModelLoadError(status.error);
+  cv::Mat image;
+  ProgressiveDrawStats stats;
+  stream.withModel([&](ProgressiveModel* model) {
+    if (model == nullptr) return;
+    model->setPointBudget(options.point_budget);
+    image = renderChunkedView(*model, camera, variant, fill, background, &stats);
+  });
+  if (image.empty()) {
+    throw ModelLoadError(url->text() + ": the head did not arrive" +
+                         (options.bytes > 0 ? " within " + std::to_string(options.bytes) + " bytes"
+                                            : std::string()) +
+                         (status.error.empty() ? std::string() : " (" + status.error + ")"));
+  }
+  if (report != nullptr) {
+    *report = std::to_string(status.bytes_received) + " of " + std::to_string(status.file_bytes) +
+              " bytes in " + std::to_string(status.requests) + " requests, " +
+              std::to_string(status.chunks_held) + " chunks held, " +
+              (status.view_complete ? "view complete"
+                                    : std::to_string(status.chunks_pending) + " still wanted") +
+              ", depth " + std::to_string(stats.drawn_depth) + " drawn, " +
+              std::to_string(stats.coarser_pieces) + " regions coarser" + overBudgetNote(stats);
+  }
+  return image;
+}
+
+std::string overBudgetNote(const ProgressiveDrawStats& stats) {
+  if (stats.over_budget_chunks == 0) return {};
+  return ", " + std::to_string(stats.over_budget_chunks) +
+         " chunks one depth coarser for the point budget";
+}
+
+}  // namespace octopoint

@@ -1,0 +1,36 @@
+#pragma once
+// Drawing a chunked model (format version 3) in octopoint-render: read whole from a file, or
+// streamed from an HTTP URL (octopoint/http.h) for as long as the view needs or a byte budget
+// allows (`--url URL --bytes N`).
+
+#include <cstdint>
+#include <opencv2/core.hpp>
+#include <string>
+
+#include "octopoint/camera.h"
+#include "octopoint/progressive.h"
+#include "octopoint/render.h"
+
+namespace octopoint {
+
+// The view as octopoint-render draws a level: the frame, hole filling when asked, the palette to
+// an 8-bit BGR image.
+cv::Mat renderChunkedView(ProgressiveModel& model, const Camera& camera, Variant variant, bool fill,
+                          Rgb background, ProgressiveDrawStats* stats);
+
+struct UrlFetchOptions {
+  std::uint64_t bytes = 0;         // stop after this many bytes (0: whatever the view needs)
+  int timeout_seconds = 60;        // give up waiting after this long, and draw what arrived
+  std::uint64_t point_budget = 0;  // draw at most about this many points (0: no budget)
+};
+
+// ", N chunks one depth coarser for the point budget" when the budget drew any so, else "".
+std::string overBudgetNote(const ProgressiveDrawStats& stats);
+
+// Streams `url` for `camera`, then draws what arrived. With a byte budget the client uses one
+// connection, so that the same N bytes always arrive in the same order. Throws ModelLoadError (one
+// line) when not even the head arrived. `report` gets a one-line summary.
+cv::Mat renderFromUrl(const std::string& url, const Camera& camera, Variant variant, bool fill,
+                      Rgb background, const UrlFetchOptions& options, std::string* report);
+
+}  // namespace octopoint

@@ -1,0 +1,364 @@
+// octopoint-render: draws a model (embedded in this binary, or a `.oct` file) to a PNG.
+#include <cstdint>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <iostream>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <opencv2/imgcodecs.hpp>
+#include <opencv2/imgproc.hpp>
+
+#include "tools/chunked_render.h"
+#include "tools/contact_sheet.h"
+#include "tools/model_source.h"
+#include "cli/arguments.h"
+#include "cli/error.h"
+#include "cli/numbers.h"
+#include "cli/output_file.h"
+#include "cli/real_numbers.h"
+#include "cli/run_tool.h"
+#include "cli/text.h"
+#include "octopoint/models.h"
+#include "octopoint/camera.h"
+#include "octopoint/styles.h"
+#include "octopoint/framebuffer.h"
+#include "octopoint/render.h"
+#include "renderer/level_of_detail.h"
+#include "octopoint/model.h"
+
+namespace {
+
+namespace fs = std::filesystem;
+using namespace octopoint;
+
+constexpr const char* kUsage = R"(usage: octopoint-render [--model NAME | --file M.oct | --url URL [--bytes N]] [options] -o OUT.png
+       octopoint-render --list
+
+Draws an octopoint model with the integer renderer and writes it as a PNG. With neither --model
+nor --file nor --url it draws the default model embedded in this binary.
+
+  --model NAME       an embedded model (see --list)
+  --file M.oct       a model file written by octopoint-prepare (a regular file of at most 1 GiB);
+                     it is validated before drawing. A chunked file (--chunked) is drawn at the
+                     depth the view needs
+  --url URL          a chunked model on an HTTP server with Range requests (octopoint-serve,
+                     nginx, ...), http://HOST:PORT/NAME.oct: fetches what this view needs, coarse
+                     first, then draws it (docs/streaming.md)
+  --bytes N          with --url: stop after N bytes and draw what they give (one connection, so
+                     the same N bytes every time)
+  --timeout S        with --url: draw what arrived after S seconds at most, 1..86400 (default 60)
+  --point-budget N   a chunked model (--url, or --file of a chunked file): draw at most about N
+                     points, 1..2^40 (default: no budget). When the view's visible chunks hold
+                     more at the depth it needs, those largest on screen, then nearest, keep it
+                     and the rest are drawn one depth coarser (docs/streaming.md, "Point budget")
+  --yaw DEG          turn about the vertical axis, |DEG| <= 1e6 (default 0; the scan as its
+                     sensor saw it)
+  --pitch DEG        turn about the horizontal axis (default 0)
+  --roll DEG         turn about the viewing axis (default 0)
+  --zoom X           magnification, 1/65536..32767 (default 1: the model cube spans the shorter
+                     side)
+  --pan X,Y          move the picture X pixels right and Y down, each |.| <= 1e6 (default 0,0)
+  --size WxH         framebuffer size in pixels, each side 1..8192 and at most 16777216 pixels
+                     (4096x4096) in all (default 320x240)
+  --depth N|auto     which of the model's depths to draw (default auto: depth by projected size,
+                     below); N, 1..16, must be one the model stores
+  --variant NAME     decoder variant (default: the fastest this CPU runs, fixed_simd with AVX2,
+                     else fixed_fast; see --list)
+  --fill, --no-fill  scanline hole filling after decoding, as the paper does (default --no-fill:
+                     footprint splats leave no holes; docs/holefill.md)
+  --style NAME       colour (default), shaded, lines, toon or outlined (docs/styles.md); all but
+                     colour need a model with normals (octopoint-prepare --normals)
+  --light AZ,EL      where the light of shaded and toon comes from, in degrees relative to the
+                     viewer: azimuth to the right (negative: left), elevation up, each within
+                     +-90; 0,0 is at the viewer's eye (default -30,35)
+  --headlight        add a weaker second light at the viewer's eye (no face is left black)
+  --crease DEG       line styles: neighbouring normals further apart than this are a crease,
+                     1..179 (default 60)
+  --sheet N          a contact sheet instead: N yaw angles (1..36) in columns; rows: depth auto,
+                     then each depth of the model unfilled and filled, in --style; then, for a
+                     model with normals, depth auto in each other style; the whole sheet may
+                     have at most 16777216 pixels
+  -o, --output FILE  the PNG to write (written whole or not at all); if it exists it must be a
+                     regular file (a device or FIFO is refused)
+  --list             list the embedded models and the decoder variants
+  -h, --help         show this help
+
+Depth auto (docs/splats.md): a voxel of depth d has an edge of e = zoom * min(W, H) / 2^d
+pixels on a WxH frame. Auto draws the coarsest stored depth with e <= 1 pixel, among the depths
+the scan samples densely; if even the finest has e > 1 pixel, the finest. Where a leaf's projected
+footprint (e times the rotation row's |r0|+|r1|+|r2|, up to 1.73 e when turned) is wider than a
+pixel, fixed_fast and fixed_simd cover it with a footprint splat, z-tested per pixel (the paper's
+variants set one pixel per leaf).
+
+Numbers are parsed whole and range-checked. On any error prints one line on stderr and exits
+with status 1, writing nothing.
+)";
+
+constexpr Rgb kBackground{236, 236, 240};  // light grey: range scans are often dark
+
+struct Options {
+  std::string model_name;
+  std::string model_file;
+  std::string url;
+  UrlFetchOptions fetch;
+  std::string output;
+  Camera camera;
+  std::optional<int> depth;  // none: depth auto
+  Variant variant = defaultVariant();
+  bool list = false;
+  bool fill = false;
+  int sheet = 0;  // yaw angles of the contact sheet; 0: a single view
+  StyleOptions style;
+};
+
+// "AZ,EL" in degrees, each within +-90.
+Light parseLight(std::string_view option, std::string_view text) {
+  const std::size_t comma = text.find(',');
+  if (comma == std::string_view::npos) {
+    throw cli::Error(std::string(option) + ": " + cli::inQuotes(text) + " is not AZIMUTH,ELEVATION in degrees");
+  }
+  Light light;
+  const double azimuth = cli::parseReal(option, text.substr(0, comma), -90, 90);
+  const double elevation = cli::parseReal(option, text.substr(comma + 1), -90, 90);
+  // Host side only: the renderer sees the integer angles (1/65536 turn).
+  light.azimuth = Angle::fromMilliDegrees(std::llround(azimuth * 1000));
+  light.elevation = Angle::fromMilliDegrees(std::llround(elevation * 1000));
+  return light;
+}
+
+// Every image this tool writes has at most this many pixels (a frame: 64 MiB of framebuffer,
+// 48 MiB of RGB), whatever its shape; a contact sheet's cells and labels count together.
+constexpr std::int64_t kMaxOutputPixels = std::int64_t{4096} * 4096;
+
+Options parseOptions(int argc, char** argv) {
+  Options options;
+  cli::ArgumentReader args(argc, argv);
+  while (args.next()) {
+    if (args.is("-h") || args.is("--help")) {
+      std::cout << kUsage;
+      std::exit(0);
+    } else if (args.is("--list")) {
+      args.noValue();
+      options.list = true;
+    } else if (args.is("--model")) {
+      options.model_name = args.value();
+    } else if (args.is("--file")) {
+      options.model_file = args.value();
+    } else if (args.is("--url")) {
+      options.url = args.value();
+    } else if (args.is("--point-budget")) {
+      options.fetch.point_budget =
+          static_cast<std::uint64_t>(cli::parseInteger(args.name(), args.value(), 1, std::int64_t{1} << 40));
+    } else if (args.is("--bytes")) {
+      options.fetch.bytes = static_cast<std::uint64_t>(cli::parseInteger(args.name(), args.value(), 1, std::int64_t{1} << 50));
+    } else if (args.is("--timeout")) {
+      options.fetch.timeout_seconds = cli::parseInt(args.name(), args.value(), 1, 86400);
+    } else if (args.is("--yaw")) {
+      options.camera.yaw = cli::parseDegrees(args.name(), args.value());
+    } else if (args.is("--pitch")) {
+      options.camera.pitch = cli::parseDegrees(args.name(), args.value());
+    } else if (args.is("--roll")) {
+      options.camera.roll = cli::parseDegrees(args.name(), args.value());
+    } else if (args.is("--zoom")) {
+      options.camera.zoom = cli::parseZoom(args.name(), args.value());
+    } else if (args.is("--pan")) {
+      const std::string text = args.value();
+      const std::size_t comma = text.find(',');
+      if (comma == std::string::npos) throw cli::Error("--pan: " + cli::inQuotes(text) + " is not X,Y");
+      options.camera.pan_x_px = cli::parseInt(args.name(), text.substr(0, comma), -1'000'000, 1'000'000);
+      options.camera.pan_y_px = cli::parseInt(args.name(), text.substr(comma + 1), -1'000'000, 1'000'000);
+    } else if (args.is("--size")) {
+      const cli::FrameSize size =
+          cli::parseFrameSize(args.name(), args.value(), 1, kMaxViewportSide, kMaxOutputPixels);
+      options.camera.width = size.width;
+      options.camera.height = size.height;
+    } else if (args.is("--depth")) {
+      const std::string text = args.value();
+      if (text == "auto") {
+        options.depth.reset();
+      } else {
+        options.depth = cli::parseInt(args.name(), text, 1, format::kMaxDepth);
+      }
+    } else if (args.is("--variant")) {
+      const std::string name = args.value();
+      const std::optional<Variant> variant = variantFromName(name);
+      if (!variant) throw cli::Error("--variant: unknown variant " + cli::inQuotes(name) + " (see --list)");
+      options.variant = *variant;
+    } else if (args.is("--fill") || args.is("--no-fill")) {
+      args.noValue();
+      options.fill = args.is("--fill");
+    } else if (args.is("--style")) {
+      const std::size_t choice =
+          cli::parseChoice(args.name(), args.value(), {"colour", "shaded", "lines", "toon", "outlined"});
+      options.style.style = allStyles()[choice].style;
+    } else if (args.is("--light")) {
+      const bool headlight = options.style.light.headlight;
+      options.style.light = parseLight(args.name(), args.value());
+      options.style.light.headlight = headlight;
+    } else if (args.is("--headlight")) {
+      args.noValue();
+      options.style.light.headlight = true;
+    } else if (args.is("--crease")) {
+      options.style.crease_angle =
+          Angle::fromMilliDegrees(std::llround(cli::parseReal(args.name(), args.value(), 1, 179) * 1000));
+    } else if (args.is("--sheet")) {
+      options.sheet = cli::parseInt(args.name(), args.value(), 1, 36);
+    } else if (args.is("-o") || args.is("--output")) {
+      options.output = args.value();
+    } else {
+      args.refuseUnknown();
+    }
+  }
+  if (!options.model_name.empty() + !options.model_file.empty() + !options.url.empty() > 1) {
+    throw cli::Error("give one of --model, --file and --url");
+  }
+  if (options.url.empty() && options.fetch.bytes > 0) throw cli::Error("--bytes needs --url");
+  if (!options.url.empty() && (options.depth || options.sheet > 0)) {
+    throw cli::Error("--url draws the depth the view needs: --depth and --sheet do not apply");
+  }
+  if (!options.list && options.output.empty()) throw cli::Error("no output given: use -o OUT.png");
+  return options;
+}
+
+void listModels() {
+  std::printf("embedded models (default first):\n");
+  for (const EmbeddedModel* model : models::embeddedModels()) {
+    std::printf("  %-20s depths", model->name);
+    for (int i = 0; i < model->level_count; ++i) {
+      std::printf(" %d (%u voxels)", model->levels[i].depth, model->levels[i].leaf_count);
+    }
+    std::printf("\n");
+  }
+  std::printf("variants:\n");
+  for (const VariantInfo& info : allVariants()) {
+    std::printf("  %-20.*s %.*s\n", static_cast<int>(info.name.size()), info.name.data(),
+                static_cast<int>(info.summary.size()), info.summary.data());
+  }
+}
+
+// Encoded in memory, then written whole or not at all (cli/output_file.h).
+void writePng(const std::string& path, const cv::Mat& image) {
+  std::vector<std::uint8_t> png;
+  bool encoded = false;
+  try {
+    encoded = cv::imencode(".png", image, png);
+  } catch (const cv::Exception&) {
+    encoded = false;
+  }
+  if (!encoded) throw cli::Error(cli::displayPath(path) + ": cannot encode the PNG");
+  cli::writeFileAtomically(path, {reinterpret_cast<const char*>(png.data()), png.size()});
+}
+
+int run(int argc, char** argv) {
+  const Options options = parseOptions(argc, argv);
+  if (options.list) {
+    listModels();
+    return 0;
+  }
+  if (!options.url.empty()) {
+    cli::checkOutputFile(options.output);  // before fetching: a FIFO, a device or a directory is refused
+    std::string report;
+    const cv::Mat image = renderFromUrl(options.url, options.camera, options.variant, options.fill, kBackground,
+                                        options.fetch, &report);
+    writePng(options.output, image);
+    std::printf("%s: %s -> %s (%dx%d)\n", options.url.c_str(), report.c_str(), options.output.c_str(),
+                options.camera.width, options.camera.height);
+    return 0;
+  }
+  const std::unique_ptr<LoadedModel> loaded = loadModel(options.model_name, options.model_file, true);
+  if (loaded->chunked) {
+    cli::checkOutputFile(options.output);
+    if (options.depth || options.sheet > 0) {
+      throw cli::Error(loaded->label + ": a chunked model is drawn at the depth the view needs: --depth and --sheet do not apply");
+    }
+    ProgressiveDrawStats stats;
+    loaded->chunked->setPointBudget(options.fetch.point_budget);
+    writePng(options.output, renderChunkedView(*loaded->chunked, options.camera, options.variant, options.fill,
+                                               kBackground, &stats));
+    std::printf("%s: chunked, depth %d, %llu points%s -> %s (%dx%d)\n", loaded->label.c_str(), stats.drawn_depth,
+                static_cast<unsigned long long>(stats.points), overBudgetNote(stats).c_str(), options.output.c_str(),
+                options.camera.width, options.camera.height);
+    return 0;
+  }
+  if (options.fetch.point_budget > 0) {
+    throw cli::Error(loaded->label + ": --point-budget applies to a chunked model (octopoint-prepare --chunked)");
+  }
+  const ModelView* model = &*loaded->view;
+  const std::string& model_label = loaded->label;
+  const LevelView* level = options.depth ? model->levelOfDepth(*options.depth) : autoLevel(*model, options.camera);
+  if (level == nullptr && !options.depth) {
+    throw cli::Error(std::string("camera refused: ") + describe(CameraError::kOverflow));
+  }
+  if (level == nullptr) {
+    std::string depths;
+    for (int i = 0; i < model->levelCount(); ++i) {
+      depths += ' ';  // appended char by char: GCC 12 warns falsely (-Wrestrict) on " " + string
+      depths += std::to_string(model->level(i).depth);
+    }
+    throw cli::Error("--depth: " + model_label + " has no depth " + std::to_string(*options.depth) +
+                     " (it has" + depths + ")");
+  }
+  FrameStyler styler(*model);
+  StyleOptions style = options.style;
+  style.background = kBackground;
+  if (const StyleError error = styler.setOptions(style); error != StyleError::kNone) {
+    throw cli::Error("--style " + std::string(styleName(style.style)) + ": " + model_label + ": " + describe(error));
+  }
+  if (styler.payload() == PixelPayload::kColourNormal && !drawsNormals(options.variant)) {
+    std::string variant_name;
+    for (const VariantInfo& info : allVariants()) {
+      if (info.variant == options.variant) variant_name = info.name;
+    }
+    throw cli::Error("--style " + std::string(styleName(style.style)) + ": --variant " + variant_name +
+                     " draws colour only, not the normals this style needs (use another variant)");
+  }
+  cli::checkOutputFile(options.output);  // before drawing: a FIFO, a device or a directory is refused
+  if (options.sheet > 0) {
+    const std::int64_t sheet_pixels = contactSheetPixels(*model, options.camera, options.sheet);
+    if (sheet_pixels > kMaxOutputPixels) {
+      throw cli::Error("--sheet " + std::to_string(options.sheet) + " at --size " +
+                       std::to_string(options.camera.width) + "x" + std::to_string(options.camera.height) +
+                       " makes a " + std::to_string(sheet_pixels) + "-pixel image, at most " +
+                       std::to_string(kMaxOutputPixels) + ": give fewer views or a smaller --size");
+    }
+    try {
+      writePng(options.output,
+               renderContactSheet(*model, options.camera, options.sheet, options.variant, style));
+    } catch (const cv::Exception& error) {
+      throw cli::Error(std::string("contact sheet: ") + error.what());
+    } catch (const std::runtime_error& error) {
+      throw cli::Error(std::string("contact sheet: ") + error.what());
+    }
+    std::printf("%s: contact sheet of %d views -> %s\n", model_label.c_str(), options.sheet,
+                options.output.c_str());
+    return 0;
+  }
+  FrameSetup setup;
+  const CameraError camera_error =
+      buildFrameSetup(options.camera, level->depth, kDefaultFractionBits, &setup);
+  if (camera_error != CameraError::kNone) throw cli::Error(std::string("camera refused: ") + describe(camera_error));
+
+  Framebuffer frame(options.camera.width, options.camera.height);
+  frame.clear(styler.payload());
+  renderLevel(options.variant, *level, setup, frame);
+  if (options.fill) HoleFiller(frame.width()).fill(frame, bridgeDepthLimit(setup));
+
+  cv::Mat rgb(options.camera.height, options.camera.width, CV_8UC3);
+  styler.beginFrame(setup);
+  styler.resolve(frame, {rgb.data, rgb.total() * 3});
+  cv::Mat bgr;
+  cv::cvtColor(rgb, bgr, cv::COLOR_RGB2BGR);
+  writePng(options.output, bgr);
+  const SplatFootprint& splat = drawsSplats(options.variant) ? setup.splat : SplatFootprint{};
+  std::printf("%s: depth %d%s, %zu points, splat up to %dx%d px -> %s (%dx%d)\n", model_label.c_str(),
+              level->depth, options.depth ? "" : " (auto)", level->leaves.size(), splat.columns, splat.rows,
+              options.output.c_str(), options.camera.width, options.camera.height);
+  return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) { return octopoint::cli::runTool("octopoint-render", argc, argv, run); }

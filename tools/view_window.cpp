@@ -1,0 +1,172 @@
+#include "tools/view_window.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdlib>
+
+namespace octopoint {
+namespace {
+
+std::string sdlError(const std::string& what) { return what + ": " + SDL_GetError(); }
+
+std::int64_t steadyMilliseconds() {
+  return std::chrono::duration_cast<std::chrono::milliseconds>(
+             std::chrono::steady_clock::now().time_since_epoch())
+      .count();
+}
+
+// Left to itself, SDL tries every video driver it has and ends with "offscreen", an invisible
+// window, when there is no display. Unless the user picks a driver (SDL_VIDEODRIVER), take the one
+// the environment names, or refuse.
+void chooseVideoDriver() {
+  const auto set = [](const char* name) {
+    const char* value = std::getenv(name);
+    return value != nullptr && *value != '\0';
+  };
+  if (set("SDL_VIDEODRIVER")) return;
+  if (set("DISPLAY")) {
+    SDL_SetHint(SDL_HINT_VIDEODRIVER, "x11");
+  } else if (set("WAYLAND_DISPLAY")) {
+    SDL_SetHint(SDL_HINT_VIDEODRIVER, "wayland");
+  } else {
+    throw WindowError(
+        "cannot open a window: no display (neither DISPLAY nor WAYLAND_DISPLAY is set; "
+        "SDL_VIDEODRIVER picks another SDL video driver, e.g. kmsdrm)");
+  }
+}
+
+}  // namespace
+
+ViewWindow::ViewWindow(const std::string& title, int width, int height, int min_width,
+                       int min_height) {
+  chooseVideoDriver();
+  // The window surface in memory (X11: shared memory images), not behind an OpenGL renderer: SDL
+  // would otherwise recreate the window with an OpenGL visual at the first present (a new window
+  // id under scripts/viewer-smoke's feet), and the pixels would go through a GPU driver.
+  SDL_SetHint(SDL_HINT_FRAMEBUFFER_ACCELERATION, "0");
+  if (SDL_Init(SDL_INIT_VIDEO) != 0) throw WindowError(sdlError("cannot open a window"));
+  window_ = SDL_CreateWindow(title.c_str(), SDL_WINDOWPOS_UNDEFINED, SDL_WINDOWPOS_UNDEFINED, width,
+                             height, SDL_WINDOW_RESIZABLE);
+  if (window_ == nullptr) {
+    const std::string message = sdlError("cannot open a window");
+    SDL_Quit();
+    throw WindowError(message);
+  }
+  SDL_SetWindowMinimumSize(window_, min_width, min_height);
+  wake_event_type_ = SDL_RegisterEvents(1);
+  if (wake_event_type_ == static_cast<std::uint32_t>(-1)) {
+    const std::string message = sdlError("cannot open a window");
+    SDL_DestroyWindow(window_);
+    SDL_Quit();
+    throw WindowError(message);
+  }
+}
+
+ViewWindow::~ViewWindow() {
+  SDL_DestroyWindow(window_);
+  SDL_Quit();
+}
+
+std::optional<WindowEvent> ViewWindow::next(int timeout_ms) {
+  const std::int64_t deadline_ms = steadyMilliseconds() + std::max(0, timeout_ms);
+  SDL_Event event;
+  while (true) {
+    const std::int64_t left_ms = deadline_ms - steadyMilliseconds();
+    const int got = left_ms > 0 ? SDL_WaitEventTimeout(&event, static_cast<int>(left_ms))
+                                : SDL_PollEvent(&event);
+    if (got == 0) return std::nullopt;
+    if (std::optional<WindowEvent> translated = translate(event)) return translated;
+  }
+}
+
+std::optional<WindowEvent> ViewWindow::translate(const SDL_Event& event) {
+  using Kind = WindowEvent::Kind;
+  WindowEvent out;
+  if (event.type == wake_event_type_) {
+    wake_queued_.store(false);
+    out.kind = Kind::kWake;
+    return out;
+  }
+  switch (event.type) {
+    case SDL_KEYDOWN:
+    case SDL_KEYUP:
+      out.kind = event.type == SDL_KEYDOWN ? Kind::kKeyDown : Kind::kKeyUp;
+      out.key = event.key.keysym.sym;
+      out.repeat = event.key.repeat != 0;
+      return out;
+    case SDL_MOUSEWHEEL: {
+      const float sign = event.wheel.direction == SDL_MOUSEWHEEL_FLIPPED ? -1.0f : 1.0f;
+      wheel_remainder_ += sign * event.wheel.preciseY;
+      const float steps = std::trunc(wheel_remainder_);
+      wheel_remainder_ -= steps;
+      if (steps == 0) return std::nullopt;
+      out.kind = Kind::kWheel;
+      out.wheel_steps = static_cast<int>(steps);
+      return out;
+    }
+    case SDL_WINDOWEVENT:
+      switch (event.window.event) {
+        case SDL_WINDOWEVENT_SIZE_CHANGED:
+          out.kind = Kind::kResized;
+          out.width = event.window.data1;
+          out.height = event.window.data2;
+          return out;
+        case SDL_WINDOWEVENT_EXPOSED:
+          out.kind = Kind::kExposed;
+          return out;
+        case SDL_WINDOWEVENT_FOCUS_LOST:
+          out.kind = Kind::kFocusLost;
+          return out;
+        default:
+          return std::nullopt;
+      }
+    case SDL_QUIT:
+      out.kind = Kind::kClose;
+      return out;
+    default:
+      return std::nullopt;
+  }
+}
+
+void ViewWindow::wake() {
+  if (wake_queued_.exchange(true)) return;
+  SDL_Event event{};
+  event.type = wake_event_type_;
+  if (SDL_PushEvent(&event) != 1) wake_queued_.store(false);  // full or filtered: try next time
+}
+
+int ViewWindow::width() const {
+  int width = 0;
+  SDL_GetWindowSize(window_, &width, nullptr);
+  return width;
+}
+
+int ViewWindow::height() const {
+  int height = 0;
+  SDL_GetWindowSize(window_, nullptr, &height);
+  return height;
+}
+
+void ViewWindow::present(const std::uint8_t* rgb, int width, int height, std::size_t stride,
+                         std::uint32_t background) {
+  SDL_Surface* surface = SDL_GetWindowSurface(window_);
+  if (surface == nullptr) throw WindowError(sdlError("cannot draw into the window"));
+  const int shown_width = std::min(width, surface->w);
+  const int shown_height = std::min(height, surface->h);
+  if (shown_width < surface->w || shown_height < surface->h) {
+    SDL_FillRect(surface, nullptr,
+                 SDL_MapRGB(surface->format, background >> 16 & 0xFF, background >> 8 & 0xFF,
+                            background & 0xFF));
+  }
+  if (SDL_MUSTLOCK(surface)) SDL_LockSurface(surface);
+  const int converted = SDL_ConvertPixels(shown_width, shown_height, SDL_PIXELFORMAT_RGB24, rgb,
+                                          static_cast<int>(stride), surface->format->format,
+                                          surface->pixels, surface->pitch);
+  if (SDL_MUSTLOCK(surface)) SDL_UnlockSurface(surface);
+  if (converted != 0 || SDL_UpdateWindowSurface(window_) != 0) {
+    throw WindowError(sdlError("cannot draw into the window"));
+  }
+}
+
+}  // namespace octopoint
