@@ -38,7 +38,8 @@ const char* nameOf(Sampling sampling) {
   return sampling == Sampling::kLines ? "line scanner" : "jittered";
 }
 
-// kSplatRule without its outline discs (every disc on its own point): the rule before session 9.
+// kSplatRule without its outline discs (every disc on its own point): the rule before outline
+// discs were moved inward.
 SplatRule withoutOutline() {
   SplatRule rule = kSplatRule;
   rule.outline_neighbours = 0;
