@@ -70,10 +70,9 @@ TEST(ReferenceTruth, DiscsEndWithinHalfASpacingOfTheTrueEdgeWithNoHoleInside) {
 }
 
 // 40 stray returns 0.5 to 3 sample steps off the square's edge: kSplatRule's small disc for them
-// keeps the reference's spill within the bound at every size and zoom (measured: 0.82 spacings
-// jittered, 0.41 line scanner, spread along the outline); strays drawn as surface samples (no stray
-// rule; their outline discs then move toward the square) spill more (1.23, 0.53). Without the
-// outline discs: 1.55, 1.02.
+// keeps the reference's spill within the bound at every size and zoom; strays drawn as surface
+// samples (no stray rule) spill more. The reaches measured are in docs/tradeoff.md, "The reference
+// render".
 TEST(ReferenceTruth, StrayReturnsSpillLessThanSurfaceSamples) {
   struct Case {
     Sampling sampling;
