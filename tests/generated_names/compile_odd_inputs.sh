@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Generated sources compile for every name octopoint-prepare accepts, and nothing from outside
-# reaches them unescaped (issue 16 item 8). Prepares a small scan, stored under a path full of
+# reaches them unescaped (docs/robustness.md). Prepares a small scan, stored under a path full of
 # characters that mean something to a compiler (a newline, a backslash at a line's end, quotes,
 # "*/", "??/"), under names that are keywords elsewhere, library names or the generator's own
 # helper names, in both emit styles, then compiles every generated source together with an app

@@ -207,7 +207,7 @@ TEST(StyleGeometry, CreasesRunAlongAllTwelveEdgesOfACubeAndNowhereElse) {
         all_edges.push_back({project(view, inModelCube(a)), project(view, inModelCube(b))});
       }
     }
-    // The target (issue 13): every crease pixel within one pixel of an edge, i.e. the edge crosses
+    // The target: every crease pixel within one pixel of an edge, i.e. the edge crosses
     // the 3 x 3 pixels around it (1.5 pixels, Chebyshev). Measured (docs/styles.md): 829 of the
     // 830 crease pixels of the four views are (farthest 1.48), one is 1.51 pixels from its edge:
     // a pair of pixels at equal depth across the edge, whose crease the left one draws, and the
