@@ -220,7 +220,8 @@ Viewer::Viewer(const Options& options, const ModelView* model, net::ModelStream*
         }
         // The palette never changes once the head is in: resolved without the stream's lock.
         if (const ProgressiveModel* chunked = stream_->model(); chunked != nullptr) {
-          resolveToRgb(frame, chunked->baseModel(), kBackground, rgb);
+          // The window's pixels are sized to the frame: resolveToRgb cannot refuse them.
+          static_cast<void>(resolveToRgb(frame, chunked->baseModel(), kBackground, rgb));
           return;
         }
         for (std::size_t i = 0; i + 2 < rgb.size(); i += 3) {
@@ -318,12 +319,14 @@ void Viewer::resolveStyled(const Framebuffer& frame, const FrameInfo& info, std:
   FrameSetup setup;
   const bool styled = styler_->options().style != Style::kColour && info.depth > 0 &&
                       buildFrameSetup(camera, info.depth, kDefaultFractionBits, &setup) == CameraError::kNone;
+  // The window's pixels are sized to the frame: resolveToRgb cannot refuse them.
   if (!styled) {
-    resolveToRgb(frame, *model_, kBackground, rgb);
+    static_cast<void>(resolveToRgb(frame, *model_, kBackground, rgb));
     return;
   }
   styler_->beginFrame(setup);
-  if (styler_->resolve(frame, rgb) != StyleError::kNone) resolveToRgb(frame, *model_, kBackground, rgb);
+  if (styler_->resolve(frame, rgb) != StyleError::kNone)
+    static_cast<void>(resolveToRgb(frame, *model_, kBackground, rgb));
 }
 
 KeyBindings Viewer::keyTable(Viewer* viewer) {

@@ -158,7 +158,7 @@ int run() {
   if (styler.setOptions(options) != StyleError::kNone) return 1;
   Framebuffer frame(camera.width, camera.height);
   frame.clear(styler.payload());
-  renderLevel(defaultVariant(), level, setup, frame);
+  if (!renderLevel(defaultVariant(), level, setup, frame)) return 1;
   styler.beginFrame(setup);
 
   FloatLinePass float_pass;
