@@ -33,7 +33,9 @@ std::vector<std::uint16_t> wholeFrame(Variant variant, const LevelView& level, c
                                       bool fill, const Rgb565Palette& palette) {
   Framebuffer frame(setup.width, setup.height);
   EXPECT_TRUE(renderLevel(variant, level, setup, frame));
-  if (fill) EXPECT_FALSE(HoleFiller(setup.width).fill(frame, bridgeDepthLimit(setup)).refused);
+  if (fill) {
+    EXPECT_FALSE(HoleFiller(setup.width).fill(frame, bridgeDepthLimit(setup)).refused);
+  }
   std::vector<std::uint16_t> rgb(frame.pixels().size());
   packedToRgb565(frame.pixels().data(), rgb.size(), palette, reinterpret_cast<std::uint8_t*>(rgb.data()));
   return rgb;

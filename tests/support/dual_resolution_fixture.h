@@ -89,7 +89,9 @@ class DualResolution : public ::testing::Test {
     Framebuffer frame(camera.width, camera.height);
     frame.clear();
     EXPECT_TRUE(renderLevel(InteractiveConfig{}.variant, level, setup, frame));  // as H draws
-    if (view.fill) EXPECT_FALSE(HoleFiller(frame.width()).fill(frame, bridgeDepthLimit(setup)).refused);
+    if (view.fill) {
+      EXPECT_FALSE(HoleFiller(frame.width()).fill(frame, bridgeDepthLimit(setup)).refused);
+    }
     return frame;
   }
 
