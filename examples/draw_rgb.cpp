@@ -12,7 +12,8 @@ int main(int argc, char** argv) {
   using namespace octopoint;
   // Validate once: the view checks every byte, so drawing may trust it.
   ModelIssue issue;
-  const std::optional<ModelView> model = ModelView::fromEmbedded(*models::defaultModel(), &issue);
+  const EmbeddedModel& embedded = *models::defaultModel();  // const arrays in the library
+  const std::optional<ModelView> model = ModelView::fromEmbedded(embedded, &issue);
   if (!model) {
     std::fprintf(stderr, "draw_rgb: %s\n", describe(issue.error));
     return 1;
@@ -32,7 +33,7 @@ int main(int argc, char** argv) {
 
   int covered = 0;
   for (const std::uint32_t word : renderer.frame().pixels()) covered += word != FrameView::kEmpty;
-  std::printf("draw_rgb: %s at depth %d, %d of %d pixels covered\n", models::defaultModel()->name,
+  std::printf("draw_rgb: %s at depth %d, %d of %d pixels covered\n", embedded.name,
               renderer.drawnDepth(), covered, camera.width * camera.height);
   if (argc > 1) {
     std::FILE* out = std::fopen(argv[1], "wb");

@@ -27,7 +27,8 @@
 // Example 1: one call from an embedded model to RGB pixels (examples/draw_rgb.cpp)
 //
 //   ModelIssue issue;
-//   const std::optional<ModelView> model = ModelView::fromEmbedded(*models::defaultModel(), &issue);
+//   const EmbeddedModel& embedded = *models::defaultModel();  // const arrays in the library
+//   const std::optional<ModelView> model = ModelView::fromEmbedded(embedded, &issue);
 //   if (!model) return fail(describe(issue.error));          // validated once, trusted after
 //   Camera camera;                                           // 320x240, frontal, zoom 1
 //   camera.yaw = Angle::fromDegrees(30);
@@ -100,8 +101,8 @@
 //                            validate a model compiled in (EmbeddedModel, the arrays the preparer
 //                            generates) or a whole `.oct` file (version 1 or 2); optional, nullopt
 //                            with the ModelIssue (error, byte offset, depth) when anything is
-//                            wrong. The view never copies the bytes: they must outlive it. It builds
-//                            a small skip index per level on the heap (none on bare metal).
+//                            wrong. The view never copies the bytes: they must outlive it. It
+//                            builds a small skip index per level on the heap (none on bare metal).
 //   ModelView                levelCount(), level(i), levelOfDepth(d) (nullptr when absent),
 //                            finestLevel(); paletteCount(), paletteColour(i); hasNormals(),
 //                            normalCount(), normal(i) (NormalQ14, Q1.14); colourIsSynthetic();
@@ -125,12 +126,13 @@
 //                            shorter side); pan_x_px, pan_y_px; width, height (1..8192 pixels).
 //                            Orthographic; x right, y down, z away from the viewer.
 //   buildFrameSetup(camera, depth, fraction_bits, &setup)
-//                            the per-frame vectors the decoders add (FrameSetup), at a stored depth,
-//                            with positions in Q(32-F).F pixels (kDefaultFractionBits: 15).
+//                            the per-frame vectors the decoders add (FrameSetup), at a stored
+//                            depth, with positions in Q(32-F).F pixels (kDefaultFractionBits: 15).
 //                            Returns CameraError: kNone, or why the camera is refused (size, zoom,
 //                            fraction bits, depth, or a coordinate that could overflow 32 bits).
 //   leafFootprint(camera, depth, fraction_bits)
-//                            the splat a leaf covers (SplatFootprint); nullopt for a refused camera.
+//                            the splat a leaf covers (SplatFootprint); nullopt for a refused
+//                            camera.
 //   voxelEdgeOnScreen(setup) a voxel's edge in Q(32-F).F pixels. splatFootprint(): the footprint
 //                            from the last level's offsets. kMaxRenderDepth: 16 unless a build says
 //                            less (OCTOPOINT_MAX_RENDER_DEPTH).
@@ -165,8 +167,9 @@
 //   checkFrameSetup(setup), checkRender(level, setup, frame)
 //                            RenderError: kNone, or what renderLevel would refuse.
 //   HoleFiller(width).fill(frame, bridgeDepthLimit(setup))
-//                            fills one- and two-pixel gaps between covered pixels (docs/holefill.md);
-//                            HoleFillCounts (per gap type; refused when the width differs).
+//                            fills one- and two-pixel gaps between covered pixels
+//                            (docs/holefill.md); HoleFillCounts (per gap type; refused when the
+//                            width differs).
 //                            fillHoleRows(window, rows, limit, history) does a band's rows with the
 //                            caller's holeFillHistoryWords(width) words. countEnclosedEmptyPixels:
 //                            for measuring.
@@ -179,8 +182,9 @@
 //                            (rgb below width * height * 3 bytes); kRefused (renderError()). On an
 //                            error rgb is untouched. Allocates its frame on the first draw and when
 //                            the camera's size changes, never otherwise.
-//   DrawOptions              depth (0: depth auto, the coarsest whose voxels cover about a pixel),
-//                            variant, fill_holes, background.
+//   DrawOptions              depth (0: depth auto, the coarsest densely sampled depth whose voxel
+//                            edge is at most a pixel; docs/splats.md), variant, fill_holes,
+//                            background.
 //   frame(), drawnDepth()    what the last draw drew.
 //   zoomRatio(n, d)          n / d as a Q16.16 zoom; nullopt outside [1/65536, 32767].
 //
