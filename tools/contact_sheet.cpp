@@ -87,9 +87,9 @@ cv::Mat renderContactSheet(const ModelView& model, const Camera& camera, int yaw
       if (row.fill && filler.fill(frame, bridgeDepthLimit(setup)).refused)
         throw std::runtime_error("hole filling refused the frame");
       styler.beginFrame(setup);
-      if (const StyleError error = styler.resolve(frame, {rgb.data, rgb.total() * 3});
-          error != StyleError::kNone) {
-        throw std::runtime_error(std::string("style refused: ") + describe(error));
+      if (const StyleError style_error = styler.resolve(frame, {rgb.data, rgb.total() * 3});
+          style_error != StyleError::kNone) {
+        throw std::runtime_error(std::string("style refused: ") + describe(style_error));
       }
       cv::cvtColor(rgb, bgr, cv::COLOR_RGB2BGR);
       bgr.copyTo(sheet(cv::Rect(column * camera.width, top + kLabelHeight, camera.width, camera.height)));

@@ -231,7 +231,8 @@ Viewer::Viewer(const Options& options, const ModelView* model, net::ModelStream*
   if (model_ != nullptr) {
     StyleOptions style;
     style.background = kBackground;
-    styler_.emplace(*model_).setOptions(style);
+    // The colour style needs no normals: setOptions cannot refuse it.
+    static_cast<void>(styler_.emplace(*model_).setOptions(style));
   }
   overlay_.add([this](OverlayLines& lines) { defaultOverlay(lines); });
   if (stream_ != nullptr) overlay_.add([this](OverlayLines& lines) { streamOverlay(lines); });

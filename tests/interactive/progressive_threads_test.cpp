@@ -127,7 +127,8 @@ TEST(ProgressiveThreads, ChunksArriveWhileTwoThreadsDrawSnapshotsWithoutTheLock)
     EXPECT_EQ(drawn.back().items, items.size());
     for (const Drawn& d : drawn) {
       std::optional<ProgressiveModel> reference = ProgressiveModel::fromHead(image, nullptr);
-      for (std::size_t i = 0; i < d.items; ++i) reference->accept(items[i], bytesOf(items[i]));
+      for (std::size_t i = 0; i < d.items; ++i)
+        EXPECT_EQ(reference->accept(items[i], bytesOf(items[i])).error, ChunkedError::kNone);
       Framebuffer frame(camera.width, camera.height);
       frame.clear();
       EXPECT_TRUE(reference->draw(camera, Variant::kFixedFast, frame, nullptr, nullptr, d.coarser));
