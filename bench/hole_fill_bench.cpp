@@ -30,7 +30,10 @@ void fillDefaultModel(benchmark::State& state, int depth, int yaw_degrees, int z
   }
   Framebuffer unfilled(camera.width, camera.height);
   unfilled.clear();
-  renderLevel(Variant::kFixedBaseline, *level, setup, unfilled);
+  if (!renderLevel(Variant::kFixedBaseline, *level, setup, unfilled)) {
+    state.SkipWithError("renderLevel refused");
+    return;
+  }
   Framebuffer frame = unfilled;
   HoleFiller filler(camera.width);
   const std::int32_t limit = bridgeDepthLimit(setup);

@@ -21,7 +21,10 @@ PclPeer::PclPeer(const ModelView& model, const LevelView& level, std::int32_t wi
   Camera identity;
   identity.width = identity.height = 1 << level.depth;
   FrameSetup setup;
-  buildFrameSetup(identity, level.depth, kDefaultFractionBits, &setup);
+  // The identity camera on the level's own grid fits any depth up to kMaxViewportSide (2^13) a side;
+  // a deeper level (refused) leaves the peer's cloud empty.
+  if (buildFrameSetup(identity, level.depth, kDefaultFractionBits, &setup) != CameraError::kNone)
+    return;
   const float unit = 1.0f / static_cast<float>(1 << setup.fraction_bits);
   const float half_cube = static_cast<float>(1 << (level.depth - 1));
   auto collect = [&](std::int32_t x, std::int32_t y, std::int32_t z, std::uint8_t colour) {

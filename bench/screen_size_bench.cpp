@@ -63,7 +63,7 @@ void renderAuto(benchmark::State& state, Variant variant, Size size, int zoom_qu
   for (auto _ : state) {
     if (full_clear) frame.pixelData();  // raw access: the whole frame counts as drawn
     frame.clear();
-    renderLevel(variant, *level, setup, frame);
+    if (!renderLevel(variant, *level, setup, frame)) state.SkipWithError("renderLevel refused");
     benchmark::DoNotOptimize(frame.pixels().data());
     benchmark::ClobberMemory();
   }

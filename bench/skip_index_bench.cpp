@@ -82,8 +82,9 @@ void drawFrame(benchmark::State& state, const Scan* scan, Cell cell, bool after,
   HoleFiller filler(cell.width);
   for (auto _ : state) {
     frame.clear();
-    renderLevel(variant, level, setup, frame);
-    if (!after) filler.fill(frame, bridgeDepthLimit(setup));
+    if (!renderLevel(variant, level, setup, frame)) state.SkipWithError("renderLevel refused");
+    if (!after && filler.fill(frame, bridgeDepthLimit(setup)).refused)
+      state.SkipWithError("hole filling refused");
     benchmark::DoNotOptimize(frame.pixels().data());
     benchmark::ClobberMemory();
   }

@@ -34,7 +34,11 @@ FrameSetup setupAt(int zoom_percent) {
   camera.yaw = Angle::fromDegrees(30);
   camera.zoom = Q16::fromRaw(zoom_percent * Q16::kOneRaw / 100);
   FrameSetup setup;
-  buildFrameSetup(camera, model().finestLevel().depth, kDefaultFractionBits, &setup);
+  // A refused camera gives an empty set-up, which renderLevel refuses: the benchmark then skips.
+  if (buildFrameSetup(camera, model().finestLevel().depth, kDefaultFractionBits, &setup) !=
+      CameraError::kNone) {
+    return FrameSetup{};
+  }
   return setup;
 }
 
@@ -69,7 +73,7 @@ void drawSplats(benchmark::State& state, Variant variant, int zoom_percent, bool
   for (auto _ : state) {
     frame.clear();
     const auto start = std::chrono::steady_clock::now();
-    renderLevel(variant, level, setup, frame);
+    if (!renderLevel(variant, level, setup, frame)) state.SkipWithError("renderLevel refused");
     benchmark::ClobberMemory();
     const double seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

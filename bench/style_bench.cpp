@@ -71,8 +71,8 @@ void plainFrame(benchmark::State& state, Size size, Variant variant) {
                                 static_cast<std::size_t>(size.height) * 3);
   for (auto _ : state) {
     frame.clear();
-    renderLevel(variant, *scene.level, scene.setup, frame);
-    resolveToRgb(frame, model(), kBackground, rgb);
+    if (!renderLevel(variant, *scene.level, scene.setup, frame)) state.SkipWithError("renderLevel refused");
+    if (!resolveToRgb(frame, model(), kBackground, rgb)) state.SkipWithError("resolve refused");
     benchmark::DoNotOptimize(rgb.data());
     benchmark::ClobberMemory();
   }
@@ -94,7 +94,7 @@ void styledFrame(benchmark::State& state, Size size, Variant variant, Style styl
                                 static_cast<std::size_t>(size.height) * 3);
   for (auto _ : state) {
     frame.clear(styler.payload());
-    renderLevel(variant, *scene.level, scene.setup, frame);
+    if (!renderLevel(variant, *scene.level, scene.setup, frame)) state.SkipWithError("renderLevel refused");
     styler.beginFrame(scene.setup);
     if (styler.resolve(frame, rgb) != StyleError::kNone) state.SkipWithError("resolve refused");
     benchmark::DoNotOptimize(rgb.data());

@@ -6,9 +6,11 @@
 #
 # Every library whose headers are installed is exported, so that whatever an installed header
 # declares links: fixedpoint/ (octopoint::fixedpoint), renderer/ (octopoint::renderer, and
-# octopoint::interactive for the dual-resolution renderer and its view events, whose headers live
-# in renderer/ too) and models/ (octopoint::models: the committed default model and its registry).
-# The package test (tests/package_test.cmake) links a program against every exported target.
+# octopoint::interactive for the dual-resolution renderer and its view events), models/
+# (octopoint::models: the committed default model and its registry) and, in a build with the
+# tools, net/ (octopoint::net: octopoint/http.h on cpp-httplib, which the package's config finds
+# with pkg-config). The package test (tests/package_test.cmake) links a program against every
+# exported target.
 include(GNUInstallDirs)
 include(CMakePackageConfigHelpers)
 
@@ -16,6 +18,11 @@ set(octopoint_cmake_dir ${CMAKE_INSTALL_LIBDIR}/cmake/octopoint)
 set(octopoint_exported octopoint_fixedpoint octopoint_renderer octopoint_models)
 if(TARGET octopoint_interactive)  # not in a bare-metal build (no threads)
   list(APPEND octopoint_exported octopoint_interactive)
+endif()
+set(OCTOPOINT_EXPORTS_NET OFF)  # for octopointConfig.cmake.in: find cpp-httplib only when needed
+if(TARGET octopoint_net)  # a build with the tools (OCTOPOINT_BUILD_APPS)
+  list(APPEND octopoint_exported octopoint_net)
+  set(OCTOPOINT_EXPORTS_NET ON)
 endif()
 foreach(target IN LISTS octopoint_exported)
   string(REPLACE "octopoint_" "" name ${target})

@@ -107,7 +107,9 @@ std::vector<std::uint8_t> visibleVoxels(std::span<const std::uint64_t> sorted_ke
     std::vector<std::uint32_t> nearest;
     FrameSetup setup;
     for (std::size_t view; (view = next_view.fetch_add(1)) < cameras.size();) {
-      buildFrameSetup(cameras[view], depth, kDefaultFractionBits, &setup);
+      // Every camera was accepted above, before any thread started.
+      if (buildFrameSetup(cameras[view], depth, kDefaultFractionBits, &setup) != CameraError::kNone)
+        continue;
       markWinners(level, setup, nearest, visible[thread]);
       if (thread == 0) progress.update(view);
     }

@@ -99,7 +99,8 @@ cv::Mat octopointCovered(const LevelView& level, const Camera& camera) {
     throw cli::Error("the camera is refused at depth " + std::to_string(level.depth));
   Framebuffer frame(camera.width, camera.height);
   frame.clear();
-  renderLevel(defaultVariant(), level, setup, frame);
+  if (!renderLevel(defaultVariant(), level, setup, frame))
+    throw cli::Error(std::string("draw refused: ") + describe(checkRender(level, setup, frame)));
   cv::Mat covered = cv::Mat::zeros(camera.height, camera.width, CV_8U);
   for (int y = 0; y < camera.height; ++y)
     for (int x = 0; x < camera.width; ++x)

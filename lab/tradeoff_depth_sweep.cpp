@@ -142,8 +142,10 @@ std::vector<cli::OutputFile> runDepthSweep(const Scene& scene, const DepthSweepO
           const double ms = medianMilliseconds(
               [&] {
                 frame.clear();
-                renderLevel(info.variant, level, setup, frame);
-                if (fill) filler.fill(frame, bridgeDepthLimit(setup));
+                if (!renderLevel(info.variant, level, setup, frame) ||
+                    (fill && filler.fill(frame, bridgeDepthLimit(setup)).refused)) {
+                  throw cli::Error("the frame was refused");
+                }
               },
               repeats);
           rows.push_back(

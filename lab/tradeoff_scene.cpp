@@ -67,7 +67,8 @@ std::string encodePng(const cv::Mat& image) {
 
 cv::Mat toImage(const Framebuffer& frame, const ModelView& model) {
   cv::Mat rgb(frame.height(), frame.width(), CV_8UC3);
-  resolveToRgb(frame, model, kBackground, {rgb.data, rgb.total() * 3});
+  // The image is made for the frame: resolveToRgb cannot refuse it.
+  static_cast<void>(resolveToRgb(frame, model, kBackground, {rgb.data, rgb.total() * 3}));
   cv::Mat bgr;
   cv::cvtColor(rgb, bgr, cv::COLOR_RGB2BGR);
   return bgr;

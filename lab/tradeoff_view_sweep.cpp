@@ -44,8 +44,10 @@ class SweepDrawer {
     const CameraError error = buildFrameSetup(camera, level->depth, kDefaultFractionBits, &setup_);
     if (error != CameraError::kNone) throw cli::Error(std::string("camera: ") + describe(error));
     if (config != Config::kAfter) setup_.splat = SplatFootprint{};  // one pixel per leaf, as before
-    renderLevel(variant_, *level, setup_, frame);
-    if (config == Config::kBeforeFilled) filler.fill(frame, bridgeDepthLimit(setup_));
+    if (!renderLevel(variant_, *level, setup_, frame))
+      throw cli::Error(std::string("draw: ") + describe(checkRender(*level, setup_, frame)));
+    if (config == Config::kBeforeFilled && filler.fill(frame, bridgeDepthLimit(setup_)).refused)
+      throw cli::Error("hole filling refused the frame");
   }
   // Throws, naming the view, when draw() or exactCover() would refuse `camera` in some
   // configuration.
@@ -86,7 +88,10 @@ class SweepDrawer {
         buildFrameSetup(big, view.finestLevel().depth, kDefaultFractionBits, &setup);
     if (error != CameraError::kNone) throw cli::Error(std::string("camera: ") + describe(error));
     Framebuffer frame(big.width, big.height);
-    renderLevel(variant_, view.finestLevel(), setup, frame);
+    if (!renderLevel(variant_, view.finestLevel(), setup, frame)) {
+      throw cli::Error(std::string("draw: ") +
+                       describe(checkRender(view.finestLevel(), setup, frame)));
+    }
     return sampleAtPixelCentres(toImage(frame, view),
                                 voxelCoverFactor(camera.width, camera.height));
   }

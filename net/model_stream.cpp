@@ -218,7 +218,9 @@ class ModelStream::Impl {
     if (model_) {
       // Whatever followed the head in the first request: tables and chunks lying whole in it.
       const std::uint32_t before = model_->chunksIn(ChunkState::kHeld);
-      model_->acceptBytes(0, head_, &issue);
+      // A part refused here is fetched again later as an item of its own: where it stopped and
+      // why are not needed.
+      static_cast<void>(model_->acceptBytes(0, head_, &issue));
       if (on_accepted_ && model_->chunksIn(ChunkState::kHeld) != before)
         on_accepted_(*model_, received_);
     }

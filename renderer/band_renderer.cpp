@@ -107,7 +107,9 @@ class IndexedBandWalk {
       return;
     }
     subtree_.root = root;
-    renderLevel(variant_, subtree, subtree_, window_);
+    // A subtree of a validated level with the window's set-up is never refused; if it were, the
+    // band would be incomplete, so the walk reports the index as not fitting.
+    if (!renderLevel(variant_, subtree, subtree_, window_)) fits_ = false;
   }
 
   const LevelView& level_;
@@ -213,8 +215,12 @@ BandError renderBands(const LevelView& level, const FrameSetup& setup, const Ban
     FrameView window(buffer.data(), width, window_rows);
     window.clear();
     if (index.level == 0) {
-      bandFrameSetup(setup, window_y0, window_rows, &work);  // cannot fail: checked above
-      renderLevel(config.variant, level, work, window);
+      // Neither can fail (the last row's set-up and the level were checked above): a refusal
+      // would leave the band incomplete.
+      if (bandFrameSetup(setup, window_y0, window_rows, &work) != CameraError::kNone ||
+          !renderLevel(config.variant, level, work, window)) {
+        return BandError::kRefused;
+      }
     } else {
       work.height = window_rows;
       work.camera.height = window_rows;
@@ -228,7 +234,10 @@ BandError renderBands(const LevelView& level, const FrameSetup& setup, const Ban
       if (!index_fits) return BandError::kRefused;  // on the first band: nothing flushed yet
     }
     const std::int32_t first_row = y0 - window_y0;  // the band's own rows in the window
-    if (config.fill) fillHoleRows(window, first_row, first_row + rows, bridge_limit, buffers.fill_history);
+    if (config.fill &&
+        fillHoleRows(window, first_row, first_row + rows, bridge_limit, buffers.fill_history).refused) {
+      return BandError::kRefused;  // cannot happen: the rows lie in the window, the history fits
+    }
     const std::size_t pixels = static_cast<std::size_t>(rows) * static_cast<std::size_t>(width);
     const std::span<std::uint8_t> rgb565 = bytesOf(buffer).first(pixels * 2);
     packedToRgb565(buffer.data() + static_cast<std::ptrdiff_t>(first_row) * width, pixels, palette, rgb565.data());

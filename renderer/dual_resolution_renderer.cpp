@@ -258,8 +258,9 @@ bool DualResolutionRenderer::draw(Slot& slot, Worker& worker, const std::atomic<
   if (draw_view_) {
     if (!draw_view_(slot.info.source, camera, slot.frame, abort, &slot.info.depth)) return false;
     if (slot.info.view.fill && slot.info.depth > 0 &&
-        buildFrameSetup(camera, slot.info.depth, kDefaultFractionBits, &setup) == CameraError::kNone) {
-      worker.filler.fill(slot.frame, bridgeDepthLimit(setup));
+        buildFrameSetup(camera, slot.info.depth, kDefaultFractionBits, &setup) == CameraError::kNone &&
+        worker.filler.fill(slot.frame, bridgeDepthLimit(setup)).refused) {
+      return false;  // cannot happen: fitBuffers made the filler as wide as the frame
     }
     slot.info.checksum = frameChecksum(slot.frame);
     slot.info.render_us = steadyMicroseconds() - start_us;
@@ -270,7 +271,10 @@ bool DualResolutionRenderer::draw(Slot& slot, Worker& worker, const std::atomic<
   if (level != nullptr && buildFrameSetup(camera, level->depth, kDefaultFractionBits, &setup) == CameraError::kNone) {
     slot.info.depth = level->depth;
     if (!render_(*level, setup, slot.frame, abort)) return false;
-    if (slot.info.view.fill) worker.filler.fill(slot.frame, bridgeDepthLimit(setup));
+    // A refused fill cannot happen (fitBuffers made the filler as wide as the frame).
+    if (slot.info.view.fill && worker.filler.fill(slot.frame, bridgeDepthLimit(setup)).refused) {
+      return false;
+    }
   }
   slot.info.checksum = frameChecksum(slot.frame);
   slot.info.render_us = steadyMicroseconds() - start_us;
@@ -314,7 +318,8 @@ void DualResolutionRenderer::coarseLoop() {
     status_.coarse_busy = true;
     lock.unlock();
     const int allocated = fitBuffers(slot, coarse_worker_);
-    draw(slot, coarse_worker_, nullptr);  // L is never aborted: its frames are short
+    // L is never aborted (its frames are short): what it drew is handed over as it is.
+    static_cast<void>(draw(slot, coarse_worker_, nullptr));
     lock.lock();
     status_.coarse_busy = false;
     status_.buffers_allocated += static_cast<std::uint64_t>(allocated);

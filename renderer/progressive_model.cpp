@@ -85,8 +85,8 @@ ChunkedIssue ProgressiveModel::accept(const FetchItem& item, std::span<const std
     if (hasRecordTable(item.level)) return {};
     if (!hasRecordTable(item.level - 1))
       return {ChunkedError::kTableOutOfOrder, item.offset, item.level};
-    acceptRecordTable(item.level, bytes, &issue);
-    return issue;
+    if (!acceptRecordTable(item.level, bytes, &issue)) return issue;
+    return {};
   }
   return acceptChunk(item.level, item.index, bytes);
 }
@@ -295,7 +295,8 @@ std::optional<ProgressiveModel> progressiveModelFromPrefix(std::span<const std::
                                                            ChunkedIssue* issue) {
   std::optional<ProgressiveModel> model = ProgressiveModel::fromHead(bytes, issue);
   if (!model) return std::nullopt;
-  model->acceptBytes(0, bytes, issue);
+  // Where the reading stopped is not needed: `issue` says why, and the model keeps what came before.
+  static_cast<void>(model->acceptBytes(0, bytes, issue));
   return model;
 }
 

@@ -42,8 +42,11 @@ DrawError RgbRenderer::draw(const ModelView& model, const Camera& camera, std::s
   if (render_error_ != RenderError::kNone || !renderLevel(options.variant, *level, setup, frame_)) {
     return DrawError::kRefused;
   }
-  if (options.fill_holes) filler_.fill(frame_, bridgeDepthLimit(setup));
-  resolveToRgb(frame_, model, options.background, rgb);
+  // Neither can fail: the filler follows the frame's width, and rgb's size was checked above.
+  if (options.fill_holes && filler_.fill(frame_, bridgeDepthLimit(setup)).refused) {
+    return DrawError::kRefused;
+  }
+  if (!resolveToRgb(frame_, model, options.background, rgb)) return DrawError::kRgbTooSmall;
   drawn_depth_ = level->depth;
   return DrawError::kNone;
 }

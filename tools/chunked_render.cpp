@@ -18,12 +18,17 @@ cv::Mat renderChunkedView(ProgressiveModel& model, const Camera& camera, Variant
     throw ModelLoadError("camera refused: coordinates would overflow");
   if (fill) {
     FrameSetup setup;
-    buildFrameSetup(camera, drawn.drawn_depth, kDefaultFractionBits, &setup);
-    HoleFiller(frame.width()).fill(frame, bridgeDepthLimit(setup));
+    // The model drew at this depth with this camera, so the set-up is accepted and the fill fits.
+    if (buildFrameSetup(camera, drawn.drawn_depth, kDefaultFractionBits, &setup) !=
+            CameraError::kNone ||
+        HoleFiller(frame.width()).fill(frame, bridgeDepthLimit(setup)).refused) {
+      throw ModelLoadError("hole filling refused the frame");
+    }
   }
   if (stats != nullptr) *stats = drawn;
   cv::Mat rgb(camera.height, camera.width, CV_8UC3);
-  resolveToRgb(frame, model.baseModel(), background, {rgb.data, rgb.total() * 3});
+  if (!resolveToRgb(frame, model.baseModel(), background, {rgb.data, rgb.total() * 3}))
+    throw ModelLoadError("the image is smaller than the frame");
   cv::Mat bgr;
   cv::cvtColor(rgb, bgr, cv::COLOR_RGB2BGR);
   return bgr;

@@ -80,10 +80,17 @@ cv::Mat renderContactSheet(const ModelView& model, const Camera& camera, int yaw
                                                  : buildFrameSetup(view, drawn->depth, kDefaultFractionBits, &setup);
       if (error != CameraError::kNone) throw std::runtime_error(std::string("camera refused: ") + describe(error));
       frame.clear(styler.payload());
-      renderLevel(variant, *drawn, setup, frame);
-      if (row.fill) filler.fill(frame, bridgeDepthLimit(setup));
+      if (!renderLevel(variant, *drawn, setup, frame)) {
+        throw std::runtime_error(std::string("draw refused: ") +
+                                 describe(checkRender(*drawn, setup, frame)));
+      }
+      if (row.fill && filler.fill(frame, bridgeDepthLimit(setup)).refused)
+        throw std::runtime_error("hole filling refused the frame");
       styler.beginFrame(setup);
-      styler.resolve(frame, {rgb.data, rgb.total() * 3});
+      if (const StyleError style_error = styler.resolve(frame, {rgb.data, rgb.total() * 3});
+          style_error != StyleError::kNone) {
+        throw std::runtime_error(std::string("style refused: ") + describe(style_error));
+      }
       cv::cvtColor(rgb, bgr, cv::COLOR_RGB2BGR);
       bgr.copyTo(sheet(cv::Rect(column * camera.width, top + kLabelHeight, camera.width, camera.height)));
     }

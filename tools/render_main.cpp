@@ -343,12 +343,17 @@ int run(int argc, char** argv) {
 
   Framebuffer frame(options.camera.width, options.camera.height);
   frame.clear(styler.payload());
-  renderLevel(options.variant, *level, setup, frame);
-  if (options.fill) HoleFiller(frame.width()).fill(frame, bridgeDepthLimit(setup));
+  if (!renderLevel(options.variant, *level, setup, frame))
+    throw cli::Error(std::string("draw refused: ") + describe(checkRender(*level, setup, frame)));
+  if (options.fill && HoleFiller(frame.width()).fill(frame, bridgeDepthLimit(setup)).refused)
+    throw cli::Error("hole filling refused the frame");
 
   cv::Mat rgb(options.camera.height, options.camera.width, CV_8UC3);
   styler.beginFrame(setup);
-  styler.resolve(frame, {rgb.data, rgb.total() * 3});
+  if (const StyleError error = styler.resolve(frame, {rgb.data, rgb.total() * 3});
+      error != StyleError::kNone) {
+    throw cli::Error(std::string("style refused: ") + describe(error));
+  }
   cv::Mat bgr;
   cv::cvtColor(rgb, bgr, cv::COLOR_RGB2BGR);
   writePng(options.output, bgr);

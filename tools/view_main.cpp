@@ -220,7 +220,8 @@ Viewer::Viewer(const Options& options, const ModelView* model, net::ModelStream*
         }
         // The palette never changes once the head is in: resolved without the stream's lock.
         if (const ProgressiveModel* chunked = stream_->model(); chunked != nullptr) {
-          resolveToRgb(frame, chunked->baseModel(), kBackground, rgb);
+          // The window's pixels are sized to the frame: resolveToRgb cannot refuse them.
+          static_cast<void>(resolveToRgb(frame, chunked->baseModel(), kBackground, rgb));
           return;
         }
         for (std::size_t i = 0; i + 2 < rgb.size(); i += 3) {
@@ -230,7 +231,8 @@ Viewer::Viewer(const Options& options, const ModelView* model, net::ModelStream*
   if (model_ != nullptr) {
     StyleOptions style;
     style.background = kBackground;
-    styler_.emplace(*model_).setOptions(style);
+    // The colour style needs no normals: setOptions cannot refuse it.
+    static_cast<void>(styler_.emplace(*model_).setOptions(style));
   }
   overlay_.add([this](OverlayLines& lines) { defaultOverlay(lines); });
   if (stream_ != nullptr) overlay_.add([this](OverlayLines& lines) { streamOverlay(lines); });
@@ -318,12 +320,14 @@ void Viewer::resolveStyled(const Framebuffer& frame, const FrameInfo& info, std:
   FrameSetup setup;
   const bool styled = styler_->options().style != Style::kColour && info.depth > 0 &&
                       buildFrameSetup(camera, info.depth, kDefaultFractionBits, &setup) == CameraError::kNone;
+  // The window's pixels are sized to the frame: resolveToRgb cannot refuse them.
   if (!styled) {
-    resolveToRgb(frame, *model_, kBackground, rgb);
+    static_cast<void>(resolveToRgb(frame, *model_, kBackground, rgb));
     return;
   }
   styler_->beginFrame(setup);
-  if (styler_->resolve(frame, rgb) != StyleError::kNone) resolveToRgb(frame, *model_, kBackground, rgb);
+  if (styler_->resolve(frame, rgb) != StyleError::kNone)
+    static_cast<void>(resolveToRgb(frame, *model_, kBackground, rgb));
 }
 
 KeyBindings Viewer::keyTable(Viewer* viewer) {

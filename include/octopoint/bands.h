@@ -1,14 +1,14 @@
 #pragma once
-// octopoint/bands.h: Drawing in horizontal bands into a small buffer, for microcontrollers (RGB565 to a display).
-// The manual of the whole library is octopoint/octopoint.h.
+// octopoint/bands.h: Drawing in horizontal bands into a small buffer, for microcontrollers (RGB565
+// to a display). The manual of the whole library is octopoint/octopoint.h.
 
 #include <cstddef>
 #include <cstdint>
 #include <span>
 
-#include "octopoint/model.h"
 #include "octopoint/camera.h"
 #include "octopoint/framebuffer.h"
+#include "octopoint/model.h"
 #include "octopoint/render.h"
 
 // Where the subtrees of one tree level end in a level's depth-first stream: what lets band
@@ -44,7 +44,7 @@ void countNodesPerLevel(const LevelView& level, std::span<std::uint32_t> counts)
 
 // Whether an index can be built at `index_level` for a level of `depth`: below the root, above the
 // leaf parents' parents, and its subtrees at most kMaxIndexedSubtreeLevels deep.
-bool indexLevelAllowed(int depth, int index_level);
+[[nodiscard]] bool indexLevelAllowed(int depth, int index_level);
 
 // The deepest allowed index level whose nodes fit `capacity` entries, 0 when none does.
 int deepestIndexLevel(const LevelView& level, std::size_t capacity);
@@ -82,10 +82,11 @@ namespace octopoint {
 
 // A band's set-up: `frame`'s with root.y reduced by y0 << F and height `rows`. Refuses (kOverflow)
 // a band whose shifted coordinates could leave 32 bits, and rows outside the frame (kBadViewport).
-CameraError bandFrameSetup(const FrameSetup& frame, std::int32_t y0, std::int32_t rows, FrameSetup* band);
+[[nodiscard]] CameraError bandFrameSetup(const FrameSetup& frame, std::int32_t y0,
+                                         std::int32_t rows, FrameSetup* band);
 
 // Whether `variant` can draw bands (every fixed variant; the float references cannot).
-bool supportsBands(Variant variant);
+[[nodiscard]] bool supportsBands(Variant variant);
 
 // Where the finished bands go.
 struct BandSink {
@@ -93,7 +94,8 @@ struct BandSink {
   // A finished band: frame rows [y0, y0 + rows), `rows` * width RGB565 pixels, row-major, each a
   // 16-bit word in the CPU's byte order (swap for a big-endian SPI panel as LVGL's
   // LV_COLOR_16_SWAP does). The bytes live in the band buffer until `wait` says the flush is done.
-  void (*flush)(void* user, std::int32_t y0, std::int32_t rows, std::span<const std::uint8_t> rgb565) = nullptr;
+  void (*flush)(void* user, std::int32_t y0, std::int32_t rows,
+                std::span<const std::uint8_t> rgb565) = nullptr;
   // Optional, for flushes that finish later (DMA): returns once the flush that last read `buffer`
   // has finished. Called before a buffer is drawn into again. Without it a flush must be finished
   // when flush returns.
@@ -139,8 +141,9 @@ const char* describe(BandError error);
 
 // Draws one frame of `level` band by band, top to bottom, and hands each band to `sink`. `index`
 // may be empty (level 0). `palette` is the model's palette in RGB565 (makeRgb565Palette).
-BandError renderBands(const LevelView& level, const FrameSetup& setup, const BandConfig& config,
-                      const BandIndex& index, const Rgb565Palette& palette, const BandBuffers& buffers,
-                      const BandSink& sink);
+[[nodiscard]] BandError renderBands(const LevelView& level, const FrameSetup& setup,
+                                    const BandConfig& config, const BandIndex& index,
+                                    const Rgb565Palette& palette, const BandBuffers& buffers,
+                                    const BandSink& sink);
 
 }  // namespace octopoint

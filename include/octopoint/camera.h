@@ -1,6 +1,6 @@
 #pragma once
-// octopoint/camera.h: The orthographic camera, its per-level vectors, and the footprint of a voxel on screen.
-// The manual of the whole library is octopoint/octopoint.h.
+// octopoint/camera.h: The orthographic camera, its per-level vectors, and the footprint of a voxel
+// on screen. The manual of the whole library is octopoint/octopoint.h.
 
 #include <array>
 #include <cstdint>
@@ -37,10 +37,10 @@
 namespace octopoint {
 
 struct SplatFootprint {
-  std::int32_t columns = 1;   // the most pixels a leaf covers along x
-  std::int32_t rows = 1;      // the most pixels a leaf covers along y
-  // Q(32-F).F: a leaf at p covers the columns (p.x + offset_x) >> F .. (p.x + offset_x + span_x) >> F
-  // and the rows (p.y + offset_y) >> F .. (p.y + offset_y + span_y) >> F.
+  std::int32_t columns = 1;  // the most pixels a leaf covers along x
+  std::int32_t rows = 1;     // the most pixels a leaf covers along y
+  // Q(32-F).F: a leaf at p covers the columns (p.x + offset_x) >> F .. (p.x + offset_x + span_x) >>
+  // F and the rows (p.y + offset_y) >> F .. (p.y + offset_y + span_y) >> F.
   std::int32_t offset_x = 0;
   std::int32_t offset_y = 0;
   std::int32_t span_x = 0;
@@ -56,7 +56,8 @@ struct SplatFootprint {
 // The footprint for a last level whose largest child offsets per axis are `half_x`, `half_y`
 // (Q(32-F).F, >= 0), drawn at `depth` with `fraction_bits` F. Offsets and sizes fit 32 bits when
 // buildFrameSetup accepted the camera (it checks the splat's reach too).
-SplatFootprint splatFootprint(std::int64_t half_x, std::int64_t half_y, int depth, int fraction_bits);
+SplatFootprint splatFootprint(std::int64_t half_x, std::int64_t half_y, int depth,
+                              int fraction_bits);
 
 }  // namespace octopoint
 
@@ -79,13 +80,13 @@ namespace octopoint {
 
 inline constexpr int kDefaultFractionBits = 15;  // Q17.15 positions (docs/design.md section 3)
 inline constexpr int kMinFractionBits = 1;
-inline constexpr int kMaxFractionBits = 24;      // leaves 7 integer bits: 64 pixels of room
+inline constexpr int kMaxFractionBits = 24;  // leaves 7 integer bits: 64 pixels of room
 inline constexpr int kMaxViewportSide = 8192;
 
 // The deepest level a frame set-up can draw: the format's limit, unless a build says less. Each
 // level costs a FrameSetup 96 bytes (eight vectors); a microcontroller build sets
-// OCTOPOINT_MAX_RENDER_DEPTH=10 (targets/cortex-m/, docs/device.md), which saves 576 bytes of RAM per set-up
-// and refuses deeper levels with kBadDepth.
+// OCTOPOINT_MAX_RENDER_DEPTH=10 (targets/cortex-m/, docs/device.md), which saves 576 bytes of RAM
+// per set-up and refuses deeper levels with kBadDepth.
 #ifndef OCTOPOINT_MAX_RENDER_DEPTH
 #define OCTOPOINT_MAX_RENDER_DEPTH 16
 #endif
@@ -157,12 +158,14 @@ std::uint64_t voxelEdgeOnScreen(const FrameSetup& setup);
 // overflow: the worst case |root| + sum over levels of the largest child offset is checked per
 // axis, so the decoder's additions can never wrap, nor the splat's pixel range (its reach is
 // included in the check).
-CameraError buildFrameSetup(const Camera& camera, int depth, int fraction_bits, FrameSetup* setup);
+[[nodiscard]] CameraError buildFrameSetup(const Camera& camera, int depth, int fraction_bits,
+                                          FrameSetup* setup);
 
 // The footprint a leaf of `depth` has for `camera` (FrameSetup::splat of buildFrameSetup, computed
 // from the last level's offsets alone: cheap enough to ask for every stored depth), or nullopt
 // when the camera is refused outright (bad size, zoom, depth or fraction bits, an offset over 32
 // bits). buildFrameSetup may still refuse a camera this accepts, for the sum of all levels.
-std::optional<SplatFootprint> leafFootprint(const Camera& camera, int depth, int fraction_bits);
+[[nodiscard]] std::optional<SplatFootprint> leafFootprint(const Camera& camera, int depth,
+                                                          int fraction_bits);
 
 }  // namespace octopoint

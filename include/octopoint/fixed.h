@@ -1,6 +1,6 @@
 #pragma once
-// octopoint/fixed.h: Fixed-point numbers, integer angles and rotations: no floating point at run time.
-// The manual of the whole library is octopoint/octopoint.h.
+// octopoint/fixed.h: Fixed-point numbers, integer angles and rotations: no floating point at run
+// time. The manual of the whole library is octopoint/octopoint.h.
 
 #include <array>
 #include <cassert>
@@ -63,7 +63,7 @@ constexpr int64_t roundShiftRight(int64_t value, int shift) {
 
 // Exactly round(a * b / 2^shift), ties toward +infinity, for shift in [0, 126];
 // std::nullopt when the result does not fit int64_t.
-constexpr std::optional<int64_t> mulShiftRound(int64_t a, int64_t b, int shift) {
+[[nodiscard]] constexpr std::optional<int64_t> mulShiftRound(int64_t a, int64_t b, int shift) {
   assert(shift >= 0 && shift <= 126);
   // Magnitudes as uint64 (well defined for INT64_MIN: 0 - 2^63 mod 2^64 = 2^63).
   const uint64_t a_magnitude =
@@ -114,7 +114,8 @@ constexpr std::optional<int64_t> mulShiftRound(int64_t a, int64_t b, int shift) 
 // std::nullopt when denominator is 0 or the result does not fit int64_t.
 // Restoring long division, one quotient bit per shift step: costs `shift` iterations, so keep it
 // off hot paths (it is for setup: ratios, checked division).
-constexpr std::optional<int64_t> divShiftRound(int64_t numerator, int64_t denominator, int shift) {
+[[nodiscard]] constexpr std::optional<int64_t> divShiftRound(int64_t numerator, int64_t denominator,
+                                                             int shift) {
   assert(shift >= 0 && shift <= 62);
   if (denominator == 0) {
     return std::nullopt;
@@ -219,7 +220,7 @@ class Fixed {
   constexpr int32_t raw() const { return raw_; }
 
   // The integer `value` exactly; nullopt when value * 2^F does not fit int32.
-  static constexpr std::optional<Fixed> fromInt(int64_t value) {
+  [[nodiscard]] static constexpr std::optional<Fixed> fromInt(int64_t value) {
     constexpr int64_t kMaxInt = std::numeric_limits<int32_t>::max() >> FractionBits;
     constexpr int64_t kMinInt = std::numeric_limits<int32_t>::min() >> FractionBits;
     if (value < kMinInt || value > kMaxInt) {
@@ -230,7 +231,8 @@ class Fixed {
 
   // numerator / denominator rounded to nearest (ties toward +infinity); nullopt when the
   // denominator is 0 or the result does not fit.
-  static constexpr std::optional<Fixed> fromRatio(int64_t numerator, int64_t denominator) {
+  [[nodiscard]] static constexpr std::optional<Fixed> fromRatio(int64_t numerator,
+                                                                int64_t denominator) {
     return fromWideRaw(divShiftRound(numerator, denominator, FractionBits));
   }
 
@@ -244,7 +246,7 @@ class Fixed {
   // The same value in Q(32-G).G: rounded to nearest when G < F (always fits), exact when G >= F
   // (nullopt when the value does not fit).
   template <int G>
-  constexpr std::optional<Fixed<G>> convert() const {
+  [[nodiscard]] constexpr std::optional<Fixed<G>> convert() const {
     if constexpr (G >= FractionBits) {
       return Fixed<G>::fromWideRaw(static_cast<int64_t>(raw_) * (int64_t{1} << (G - FractionBits)));
     } else {
@@ -252,18 +254,18 @@ class Fixed {
     }
   }
 
-  static constexpr std::optional<Fixed> checkedAdd(Fixed a, Fixed b) {
+  [[nodiscard]] static constexpr std::optional<Fixed> checkedAdd(Fixed a, Fixed b) {
     return fromWideRaw(int64_t{a.raw_} + b.raw_);
   }
-  static constexpr std::optional<Fixed> checkedSub(Fixed a, Fixed b) {
+  [[nodiscard]] static constexpr std::optional<Fixed> checkedSub(Fixed a, Fixed b) {
     return fromWideRaw(int64_t{a.raw_} - b.raw_);
   }
   // Q.F * Q.F = Q.2F in int64 (|product| <= 2^62), rounded back to Q.F.
-  static constexpr std::optional<Fixed> checkedMul(Fixed a, Fixed b) {
+  [[nodiscard]] static constexpr std::optional<Fixed> checkedMul(Fixed a, Fixed b) {
     return fromWideRaw(roundShiftRight(int64_t{a.raw_} * b.raw_, FractionBits));
   }
   // a / b rounded to nearest: raw = round(a.raw * 2^F / b.raw); nullopt when b is 0.
-  static constexpr std::optional<Fixed> checkedDiv(Fixed a, Fixed b) {
+  [[nodiscard]] static constexpr std::optional<Fixed> checkedDiv(Fixed a, Fixed b) {
     return fromWideRaw(divShiftRound(a.raw_, b.raw_, FractionBits));
   }
 
@@ -292,7 +294,8 @@ class Fixed {
     return raw_value >= std::numeric_limits<int32_t>::min() &&
            raw_value <= std::numeric_limits<int32_t>::max();
   }
-  static constexpr std::optional<Fixed> fromWideRaw(std::optional<int64_t> raw_value) {
+  [[nodiscard]] static constexpr std::optional<Fixed> fromWideRaw(
+      std::optional<int64_t> raw_value) {
     if (!raw_value || !fitsRaw(*raw_value)) {
       return std::nullopt;
     }

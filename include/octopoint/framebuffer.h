@@ -1,6 +1,6 @@
 #pragma once
-// octopoint/framebuffer.h: The framebuffer (depth key and palette index per pixel) and its conversions to RGB565.
-// The manual of the whole library is octopoint/octopoint.h.
+// octopoint/framebuffer.h: The framebuffer (depth key and palette index per pixel) and its
+// conversions to RGB565. The manual of the whole library is octopoint/octopoint.h.
 
 #include <array>
 #include <cstddef>
@@ -8,18 +8,18 @@
 #include <span>
 #include <vector>
 
-#include "octopoint/model.h"
 #include "octopoint/camera.h"
+#include "octopoint/model.h"
 
 // A frame of palette indices with its z-buffer, packed into one 32-bit word per pixel: the depth
 // key (FrameSetup::depthKey, 24 bits, smaller is nearer) in the high bits, the palette index in the
 // low 8. A frame drawn for a style that lights the model (octopoint/styles.h) also carries each
 // pixel's normal index: PixelPayload::kColourNormal keeps the depth key's top 16 bits, the normal
-// index and the palette index. Nearest-wins is then one unsigned comparison of whole words, and equal depths go to the
-// smaller palette index: the frame is the same whatever order the points arrive in, which lets
-// decoders visit, batch and reorder freely and still draw bit-identical frames. One array instead
-// of two halves the memory a plotted point touches. Memory is allocated once, at construction; a
-// frame only clears and writes it, so drawing never allocates.
+// index and the palette index. Nearest-wins is then one unsigned comparison of whole words, and
+// equal depths go to the smaller palette index: the frame is the same whatever order the points
+// arrive in, which lets decoders visit, batch and reorder freely and still draw bit-identical
+// frames. One array instead of two halves the memory a plotted point touches. Memory is allocated
+// once, at construction; a frame only clears and writes it, so drawing never allocates.
 //
 // A frame keeps the rectangle its writers may have written since the last clear (drawnRect):
 // every pixel outside it is kEmpty, so clear() empties that rectangle only, and a frame's clear
@@ -43,7 +43,8 @@ struct PixelRect {
 // What a pixel word holds besides the depth (FrameView::clear chooses it for a frame).
 enum class PixelPayload : std::uint8_t {
   kColour,        // bits 31..8: depth key; 7..0: palette index
-  kColourNormal,  // bits 31..16: the depth key's top 16 bits; 15..8: normal index; 7..0: palette index
+  kColourNormal,  // bits 31..16: the depth key's top 16 bits; 15..8: normal index; 7..0: palette
+                  // index
 };
 
 // A frame's pixels in memory someone else owns: what the decoders, the hole filler and the band
@@ -113,7 +114,9 @@ class FrameView {
 
   bool covered(std::int32_t x, std::int32_t y) const { return pixelAt(x, y) != kEmpty; }
   std::uint32_t pixelAt(std::int32_t x, std::int32_t y) const { return pixel_[indexOf(x, y)]; }
-  std::uint32_t depthKeyAt(std::int32_t x, std::int32_t y) const { return depthKeyOf(pixelAt(x, y)); }
+  std::uint32_t depthKeyAt(std::int32_t x, std::int32_t y) const {
+    return depthKeyOf(pixelAt(x, y));
+  }
   std::uint8_t colourIndexAt(std::int32_t x, std::int32_t y) const {
     return colourIndexOf(pixelAt(x, y));
   }
@@ -137,7 +140,8 @@ class FrameView {
     return static_cast<std::size_t>(width_) * static_cast<std::size_t>(height_);
   }
   std::size_t indexOf(std::int32_t x, std::int32_t y) const {
-    return static_cast<std::size_t>(y) * static_cast<std::size_t>(width_) + static_cast<std::size_t>(x);
+    return static_cast<std::size_t>(y) * static_cast<std::size_t>(width_) +
+           static_cast<std::size_t>(x);
   }
 
   void widenDrawnRect(const PixelRect& bounds);
@@ -173,8 +177,8 @@ class Framebuffer : public FrameView {
 // Turns a frame into RGB888 (3 bytes per pixel, row-major): covered pixels get their palette
 // colour, empty ones `background`. `rgb` must hold at least width * height * 3 bytes: otherwise
 // nothing is written and the result is false.
-bool resolveToRgb(const FrameView& frame, const ModelView& model, Rgb background,
-                  std::span<std::uint8_t> rgb);
+[[nodiscard]] bool resolveToRgb(const FrameView& frame, const ModelView& model, Rgb background,
+                                std::span<std::uint8_t> rgb);
 
 }  // namespace octopoint
 

@@ -1,6 +1,6 @@
 #pragma once
-// octopoint/http.h: Streaming a chunked model over HTTP byte ranges into a ProgressiveModel (octopoint::net).
-// The manual of the whole library is octopoint/octopoint.h.
+// octopoint/http.h: Streaming a chunked model over HTTP byte ranges into a ProgressiveModel
+// (octopoint::net). The manual of the whole library is octopoint/octopoint.h.
 
 #include <atomic>
 #include <chrono>
@@ -29,7 +29,7 @@ struct HttpUrl {
 };
 
 // nullopt, with `error` saying why in a few words, when `text` is not such a URL.
-std::optional<HttpUrl> parseHttpUrl(std::string_view text, std::string* error);
+[[nodiscard]] std::optional<HttpUrl> parseHttpUrl(std::string_view text, std::string* error);
 
 }  // namespace octopoint::net
 
@@ -78,9 +78,10 @@ class RangeClient {
   // Fetches bytes [offset, offset + size) of the URL's file. `sink(offset_of_piece, piece)` sees
   // the body as it arrives, in order; returning false from it cancels. `cancel`, when given and
   // set, ends the fetch at the next piece.
-  FetchResult fetch(std::uint64_t offset, std::uint64_t size,
-                    const std::function<bool(std::uint64_t, std::span<const std::uint8_t>)>& sink,
-                    const std::atomic<bool>* cancel = nullptr);
+  [[nodiscard]] FetchResult fetch(
+      std::uint64_t offset, std::uint64_t size,
+      const std::function<bool(std::uint64_t, std::span<const std::uint8_t>)>& sink,
+      const std::atomic<bool>* cancel = nullptr);
   // From another thread: breaks the connection, so that a fetch blocked on it ends at once.
   void abort();
 
@@ -147,7 +148,7 @@ class ModelStream {
   void stop();
   // The view the fetch order follows; takes effect for the next request.
   void setView(const Camera& camera);
-  StreamStatus status();
+  [[nodiscard]] StreamStatus status();
   // Calls `use(model)` under the stream's lock; `model` is null until the head has arrived.
   void withModel(const std::function<void(ProgressiveModel*)>& use);
   // Copies which chunks the model holds now into `frame` under the lock (ProgressiveModel::
@@ -162,7 +163,7 @@ class ModelStream {
   // far (for measurements).
   void onAccepted(std::function<void(ProgressiveModel&, std::uint64_t bytes_received)> callback);
   // Waits until settled or failed, or `timeout`; returns the status then.
-  StreamStatus waitUntilSettled(std::chrono::milliseconds timeout);
+  [[nodiscard]] StreamStatus waitUntilSettled(std::chrono::milliseconds timeout);
 
  private:
   class Impl;

@@ -15,8 +15,8 @@
 #include <vector>
 
 #include "octopoint/fixed.h"
-#include "octopoint/model.h"
 #include "octopoint/framebuffer.h"
+#include "octopoint/model.h"
 #include "octopoint/render.h"
 
 // The time source of the interactive renderer (docs/design.md section 5), injectable so that
@@ -99,7 +99,7 @@ class EventSource {
   virtual ~EventSource() = default;
   // The next event, waiting at most `max_wait_ms` for it; nullopt when none came in that time.
   // After kQuit the source is finished.
-  virtual std::optional<ViewEvent> next(std::int32_t max_wait_ms) = 0;
+  [[nodiscard]] virtual std::optional<ViewEvent> next(std::int32_t max_wait_ms) = 0;
 };
 
 // A scripted list of events played on a ManualClock: next() sets the clock to the event's time
@@ -108,7 +108,7 @@ class EventSource {
 class ScriptedTimeline final : public EventSource {
  public:
   ScriptedTimeline(std::vector<ViewEvent> events, std::int64_t end_us, ManualClock& clock);
-  std::optional<ViewEvent> next(std::int32_t max_wait_ms) override;
+  [[nodiscard]] std::optional<ViewEvent> next(std::int32_t max_wait_ms) override;
 
  private:
   std::vector<ViewEvent> events_;
@@ -217,8 +217,9 @@ using RenderFunction = std::function<bool(const LevelView& level, const FrameSet
 // streaming in: tools/view_main.cpp with --url): the fine frame (`source` kFine) at the depth the
 // view needs, the coarse one at a coarser depth. Returns false when `abort` stopped it; sets
 // `depth` to the depth drawn (0: nothing).
-using ViewDrawFunction = std::function<bool(FrameSource source, const Camera& camera, Framebuffer& frame,
-                                            const std::atomic<bool>* abort, int* depth)>;
+using ViewDrawFunction =
+    std::function<bool(FrameSource source, const Camera& camera, Framebuffer& frame,
+                       const std::atomic<bool>* abort, int* depth)>;
 
 // A cheap integrity stamp of a frame's colours and depths.
 std::uint32_t frameChecksum(const Framebuffer& frame);
@@ -231,11 +232,12 @@ class DualResolutionRenderer {
                          const InteractiveConfig& config, RenderFunction render = {});
   // The model and `clock` must outlive the renderer. H draws each view at depth auto, L one stored
   // depth coarser (see the header comment).
-  DualResolutionRenderer(const ModelView& model, const Clock& clock, const InteractiveConfig& config,
-                         RenderFunction render = {});
+  DualResolutionRenderer(const ModelView& model, const Clock& clock,
+                         const InteractiveConfig& config, RenderFunction render = {});
   // Whatever `draw_view` draws (see ViewDrawFunction), which must be safe to call from both render
   // threads at once. A kContentChanged event makes the fine frame due again.
-  DualResolutionRenderer(ViewDrawFunction draw_view, const Clock& clock, const InteractiveConfig& config);
+  DualResolutionRenderer(ViewDrawFunction draw_view, const Clock& clock,
+                         const InteractiveConfig& config);
   ~DualResolutionRenderer();  // stops both threads (aborting H) and joins them
   DualResolutionRenderer(const DualResolutionRenderer&) = delete;
   DualResolutionRenderer& operator=(const DualResolutionRenderer&) = delete;
@@ -246,18 +248,18 @@ class DualResolutionRenderer {
   // For the display, from one thread only: makes the newest complete frame the front buffer and
   // returns it (nullptr before the first frame). The front buffer is not touched by anyone until
   // the next call.
-  const Framebuffer* acquireLatest(FrameInfo* info);
+  [[nodiscard]] const Framebuffer* acquireLatest(FrameInfo* info);
 
-  RendererStatus status() const;
+  [[nodiscard]] RendererStatus status() const;
   // Waits (sleeping) until `predicate(status())` holds or `timeout` passes; returns whether it
   // held.
-  bool waitUntil(const std::function<bool(const RendererStatus&)>& predicate,
-                 std::chrono::milliseconds timeout) const;
+  [[nodiscard]] bool waitUntil(const std::function<bool(const RendererStatus&)>& predicate,
+                               std::chrono::milliseconds timeout) const;
 
  private:
   DualResolutionRenderer(const ModelView* model, const LevelView* coarse, const LevelView* fine,
-                         ViewDrawFunction draw_view, const Clock& clock, const InteractiveConfig& config,
-                         RenderFunction render);
+                         ViewDrawFunction draw_view, const Clock& clock,
+                         const InteractiveConfig& config, RenderFunction render);
 
   struct Slot {
     Framebuffer frame;
@@ -284,11 +286,11 @@ class DualResolutionRenderer {
   // calling thread); returns how many it reallocated.
   static int fitBuffers(Slot& slot, Worker& worker);
   // Draws a frame into `slot` (unlocked: the slot belongs to the calling thread).
-  bool draw(Slot& slot, Worker& worker, const std::atomic<bool>* abort);
+  [[nodiscard]] bool draw(Slot& slot, Worker& worker, const std::atomic<bool>* abort);
   // The level a frame of `source` draws for `camera`; nullptr when the camera is refused.
   const LevelView* levelFor(FrameSource source, const Camera& camera) const;
   // Hands `slot` over unless a newer frame is out (locked); returns whether it did.
-  bool handOver(std::unique_ptr<Slot>& slot);
+  [[nodiscard]] bool handOver(std::unique_ptr<Slot>& slot);
   // Calls config_.frame_ready with the mutex released for the call.
   void notifyFrameReady(std::unique_lock<std::mutex>& lock);
 

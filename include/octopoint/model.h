@@ -1,6 +1,6 @@
 #pragma once
-// octopoint/model.h: Models: the format's constants, embedded models, and the validated ModelView every renderer draws.
-// The manual of the whole library is octopoint/octopoint.h.
+// octopoint/model.h: Models: the format's constants, embedded models, and the validated ModelView
+// every renderer draws. The manual of the whole library is octopoint/octopoint.h.
 
 #include <array>
 #include <cstddef>
@@ -36,11 +36,11 @@
 //   then per level the node bytes and the palette index of each leaf.
 //
 // The node bytes of a level are its octree in depth-first order: each inner node is one child mask
-// byte, bit k set when child k = (x << 2) | (y << 1) | z is occupied, followed by the subtrees of its
-// occupied children in order k = 0..7. A node at depth `depth - 1` is a leaf parent: its children are
-// leaves, which have no byte in the node stream; their palette (and normal) indices are in the leaf
-// arrays in the order the depth-first walk meets them. This is PCL's OctreePointCloud::serializeTree
-// order.
+// byte, bit k set when child k = (x << 2) | (y << 1) | z is occupied, followed by the subtrees of
+// its occupied children in order k = 0..7. A node at depth `depth - 1` is a leaf parent: its
+// children are leaves, which have no byte in the node stream; their palette (and normal) indices
+// are in the leaf arrays in the order the depth-first walk meets them. This is PCL's
+// OctreePointCloud::serializeTree order.
 
 namespace octopoint::format {
 
@@ -49,8 +49,8 @@ inline constexpr std::uint16_t kVersion1 = 1;
 inline constexpr std::uint16_t kVersion2 = 2;
 inline constexpr std::uint16_t kFormatVersion = kVersion2;  // what the preparer writes
 
-inline constexpr int kMaxDepth = 16;     // 2^16 voxels per axis: far past any range scan's detail
-inline constexpr int kMaxLevels = 8;     // streams of one scan at different depths
+inline constexpr int kMaxDepth = 16;  // 2^16 voxels per axis: far past any range scan's detail
+inline constexpr int kMaxLevels = 8;  // streams of one scan at different depths
 inline constexpr int kPaletteEntries = 256;
 inline constexpr std::size_t kPaletteBytes = 3 * kPaletteEntries;
 inline constexpr std::size_t kLevelRowBytes = 12;
@@ -90,9 +90,9 @@ namespace octopoint {
 
 struct EmbeddedLevel {
   std::uint8_t depth;
-  const std::uint8_t* nodes;    // depth-first child mask bytes
+  const std::uint8_t* nodes;  // depth-first child mask bytes
   std::uint32_t node_bytes;
-  const std::uint8_t* leaves;   // palette index per leaf
+  const std::uint8_t* leaves;  // palette index per leaf
   std::uint32_t leaf_count;
   const std::uint8_t* normals = nullptr;  // normal index per leaf; nullptr: no normals
 };
@@ -102,14 +102,14 @@ struct EmbeddedModel {
   // The format version the generated arrays follow (format::kVersion2); a source generated for
   // another layout fails to compile or is refused (kUnsupportedVersion).
   std::uint16_t format_version;
-  std::uint8_t flags;            // format::v2::kFlag*
-  std::uint64_t cube_edge_pm;    // the model cube's edge in picometres; 0: not recorded
+  std::uint8_t flags;          // format::v2::kFlag*
+  std::uint64_t cube_edge_pm;  // the model cube's edge in picometres; 0: not recorded
   std::uint16_t palette_count;
   const std::uint8_t* palette_rgb;  // 256 x RGB888
   std::uint16_t normal_count;       // 0 without normals
   const std::int16_t* normal_xyz;   // normal_count x (x, y, z) in Q1.14, or nullptr
   std::uint8_t level_count;
-  const EmbeddedLevel* levels;      // depths strictly ascending
+  const EmbeddedLevel* levels;  // depths strictly ascending
 };
 
 }  // namespace octopoint
@@ -144,8 +144,8 @@ struct SubtreeEnd {
 
 #if !defined(OCTOPOINT_BARE_METAL)
 struct SkipIndex {
-  int level = 0;                      // the indexed tree level, >= 1; 0: no index
-  std::span<const SubtreeEnd> ends;   // one per node at `level`, in stream order
+  int level = 0;                     // the indexed tree level, >= 1; 0: no index
+  std::span<const SubtreeEnd> ends;  // one per node at `level`, in stream order
 };
 #else
 // A bare-metal build has no index: an empty type, which costs a LevelView no RAM
@@ -182,25 +182,25 @@ namespace octopoint {
 
 enum class ModelError : std::uint8_t {
   kNone,
-  kTruncatedHeader,      // fewer bytes than the header and level table need
-  kBadMagic,             // not an octopoint model
-  kUnsupportedVersion,   // a version this reader does not know
-  kBadLevelCount,        // 0 or more than format::kMaxLevels levels
-  kBadReservedField,     // a reserved field is not zero
-  kBadPaletteCount,      // 0 or more than 256 colours
-  kBadDepth,             // a depth outside 1..format::kMaxDepth
-  kDepthsNotAscending,   // the same depth twice, or depths out of order
-  kSizeMismatch,         // the declared sizes do not add up to the buffer length
-  kEmptyLevel,           // a level without nodes or leaves
-  kEmptyNode,            // a child mask byte of 0: an inner node without children
-  kStreamTruncated,      // the tree needs more node bytes than declared
-  kTrailingNodeBytes,    // the tree ends before the declared node bytes do
-  kLeafCountMismatch,    // the tree has a different number of leaves than declared
-  kLeafOutsidePalette,   // a leaf names a colour past the palette count
-  kImplausibleLevelSize, // node bytes and leaf count no tree of that depth can have
-  kBadNormalCount,       // normals flagged without entries, entries without the flag, or > 255
-  kBadNormalVector,      // a normal palette entry that is not a unit vector in Q1.14
-  kNormalOutsidePalette, // a leaf names a normal past the normal palette count
+  kTruncatedHeader,       // fewer bytes than the header and level table need
+  kBadMagic,              // not an octopoint model
+  kUnsupportedVersion,    // a version this reader does not know
+  kBadLevelCount,         // 0 or more than format::kMaxLevels levels
+  kBadReservedField,      // a reserved field is not zero
+  kBadPaletteCount,       // 0 or more than 256 colours
+  kBadDepth,              // a depth outside 1..format::kMaxDepth
+  kDepthsNotAscending,    // the same depth twice, or depths out of order
+  kSizeMismatch,          // the declared sizes do not add up to the buffer length
+  kEmptyLevel,            // a level without nodes or leaves
+  kEmptyNode,             // a child mask byte of 0: an inner node without children
+  kStreamTruncated,       // the tree needs more node bytes than declared
+  kTrailingNodeBytes,     // the tree ends before the declared node bytes do
+  kLeafCountMismatch,     // the tree has a different number of leaves than declared
+  kLeafOutsidePalette,    // a leaf names a colour past the palette count
+  kImplausibleLevelSize,  // node bytes and leaf count no tree of that depth can have
+  kBadNormalCount,        // normals flagged without entries, entries without the flag, or > 255
+  kBadNormalVector,       // a normal palette entry that is not a unit vector in Q1.14
+  kNormalOutsidePalette,  // a leaf names a normal past the normal palette count
 };
 
 // A short, stable English description of an error, for one-line messages.
@@ -212,7 +212,7 @@ struct ModelIssue {
   // it in the header, the level table or a stream; otherwise (fromEmbedded, validateLevelStream)
   // the byte of the level's node stream, or the leaf's index for a leaf colour.
   std::size_t offset = 0;
-  int depth = 0;  // the level concerned, 0 when the header is at fault
+  int depth = 0;                // the level concerned, 0 when the header is at fault
   bool offset_in_file = false;  // offset counts from the start of the model image
 };
 
@@ -224,7 +224,7 @@ struct Rgb {
 struct LevelView {
   int depth = 0;
   std::span<const std::uint8_t> nodes;
-  std::span<const std::uint8_t> leaves;   // one palette index per leaf, in depth-first order
+  std::span<const std::uint8_t> leaves;     // one palette index per leaf, in depth-first order
   std::span<const std::uint8_t> normals{};  // one normal index per leaf, or empty (no normals)
   // Where the subtrees of one tree level end (octopoint/model.h), or none: ModelView sets it.
   // It must describe exactly this stream; fixed_fast and fixed_simd trust it as they trust nodes.
@@ -245,9 +245,11 @@ class ModelView {
  public:
   // Validates a model image in the format of model_format.h (a whole `.oct` file, version 1 or 2).
   // The view points into `bytes`, which must outlive it.
-  static std::optional<ModelView> fromBytes(std::span<const std::uint8_t> bytes, ModelIssue* issue);
+  [[nodiscard]] static std::optional<ModelView> fromBytes(std::span<const std::uint8_t> bytes,
+                                                          ModelIssue* issue);
   // Validates a model compiled into the app by the preparer's generated sources.
-  static std::optional<ModelView> fromEmbedded(const EmbeddedModel& model, ModelIssue* issue);
+  [[nodiscard]] static std::optional<ModelView> fromEmbedded(const EmbeddedModel& model,
+                                                             ModelIssue* issue);
 
   int formatVersion() const { return format_version_; }
   // The model cube's edge in picometres (0: not recorded). Version 1 files stored micrometres.
@@ -270,15 +272,18 @@ class ModelView {
   ModelView() = default;
   // One header reader per format version (renderer/model_read_v1.cpp, model_read_v2.cpp): each
   // checks its header and returns where the level table starts, or 0 after recording the issue.
-  static std::size_t readHeaderV1(std::span<const std::uint8_t> bytes, ModelView& view, ModelIssue* issue);
-  static std::size_t readHeaderV2(std::span<const std::uint8_t> bytes, ModelView& view, ModelIssue* issue);
+  static std::size_t readHeaderV1(std::span<const std::uint8_t> bytes, ModelView& view,
+                                  ModelIssue* issue);
+  static std::size_t readHeaderV2(std::span<const std::uint8_t> bytes, ModelView& view,
+                                  ModelIssue* issue);
   // The level table and the level data that follow it (the same in both versions, with the normal
   // indices only where the header announced normals).
   static bool readLevels(std::span<const std::uint8_t> bytes, std::size_t table_at, ModelView& view,
                          ModelIssue* issue);
   // `file`: the start of the image for fromBytes (whose level table starts at `table_at`), so that
   // offsets are the file's; else nullptr.
-  static bool validateLevels(ModelView& view, ModelIssue* issue, const std::uint8_t* file, std::size_t table_at);
+  static bool validateLevels(ModelView& view, ModelIssue* issue, const std::uint8_t* file,
+                             std::size_t table_at);
   static bool validateNormalPalette(const ModelView& view, ModelIssue* issue, std::size_t offset);
   // After validation: builds every level's skip index (LevelView::skip) into one allocation the
   // view shares with its copies. A bare-metal build has no heap: its levels keep no index.
@@ -305,11 +310,12 @@ class ModelView {
 // inside the palette and, when `normal_count` > 0, one normal index per leaf, each below it (with
 // `normal_count` 0 the level must have no normals). Exposed for tests and tools; ModelView runs it
 // on every level.
-ModelIssue validateLevelStream(const LevelView& level, int palette_count, int normal_count = 0);
+[[nodiscard]] ModelIssue validateLevelStream(const LevelView& level, int palette_count,
+                                             int normal_count = 0);
 
 // The constant-time part of that: whether some tree of `depth` levels has `nodes` node bytes and
 // `leaves` leaves (depth <= nodes <= depth * leaves, leaves <= 8 * nodes, and a full tree's
 // counts). False for a depth outside 1..format::kMaxDepth or an empty level.
-bool plausibleLevelSize(int depth, std::uint64_t nodes, std::uint64_t leaves);
+[[nodiscard]] bool plausibleLevelSize(int depth, std::uint64_t nodes, std::uint64_t leaves);
 
 }  // namespace octopoint

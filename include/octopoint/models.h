@@ -15,6 +15,6 @@ namespace octopoint::models {
 std::span<const EmbeddedModel* const> embeddedModels();
 const EmbeddedModel* defaultModel();
 // nullptr when there is no model of that name.
-const EmbeddedModel* findModel(std::string_view name);
+[[nodiscard]] const EmbeddedModel* findModel(std::string_view name);
 
 }  // namespace octopoint::models

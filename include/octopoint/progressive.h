@@ -1,6 +1,6 @@
 #pragma once
-// octopoint/progressive.h: Chunked models and the progressive model: bytes arrive, every frame is complete.
-// The manual of the whole library is octopoint/octopoint.h.
+// octopoint/progressive.h: Chunked models and the progressive model: bytes arrive, every frame is
+// complete. The manual of the whole library is octopoint/octopoint.h.
 
 #include <array>
 #include <cstddef>
@@ -10,9 +10,9 @@
 #include <span>
 #include <vector>
 
-#include "octopoint/model.h"
 #include "octopoint/camera.h"
 #include "octopoint/framebuffer.h"
+#include "octopoint/model.h"
 #include "octopoint/render.h"
 
 // What can be wrong with a chunked model (octopoint/progressive.h): its head, a record table, or
@@ -202,17 +202,17 @@ inline constexpr std::uint64_t kMaxHeadBytes = std::uint64_t{1} << 24;
 
 // Whether `bytes` begin like a version 3 model (magic and version), so that a reader of both kinds
 // can tell them apart from the first 6 bytes.
-bool looksChunked(std::span<const std::uint8_t> bytes);
+[[nodiscard]] bool looksChunked(std::span<const std::uint8_t> bytes);
 
 // The head's size in bytes, read from the fixed header (the first chunked::kFixedHeaderBytes of
 // the file); nullopt with the issue when those bytes already show a bad model.
-std::optional<std::uint64_t> chunkedHeadBytes(std::span<const std::uint8_t> fixed_header,
-                                              ChunkedIssue* issue);
+[[nodiscard]] std::optional<std::uint64_t> chunkedHeadBytes(
+    std::span<const std::uint8_t> fixed_header, ChunkedIssue* issue);
 
 // Parses and checks the head; `bytes` must hold at least the head (any bytes after it are ignored).
 // The result owns copies of everything it keeps.
-std::optional<ChunkedHead> parseChunkedHead(std::span<const std::uint8_t> bytes,
-                                            ChunkedIssue* issue);
+[[nodiscard]] std::optional<ChunkedHead> parseChunkedHead(std::span<const std::uint8_t> bytes,
+                                                          ChunkedIssue* issue);
 
 }  // namespace octopoint
 
@@ -242,10 +242,9 @@ inline int refinementLevels(const ChunkedHead& head, int level) {
 
 // Parses and checks the record table of chunked level `level` (1..level_count-1). `coarser` is the
 // checked table of the level above (empty for level 1, whose chunks all refine the base).
-std::optional<std::vector<ChunkRecord>> parseRecordTable(std::span<const std::uint8_t> bytes,
-                                                         const ChunkedHead& head, int level,
-                                                         std::span<const ChunkRecord> coarser,
-                                                         ChunkedIssue* issue);
+[[nodiscard]] std::optional<std::vector<ChunkRecord>> parseRecordTable(
+    std::span<const std::uint8_t> bytes, const ChunkedHead& head, int level,
+    std::span<const ChunkRecord> coarser, ChunkedIssue* issue);
 
 }  // namespace octopoint
 
@@ -260,8 +259,8 @@ namespace octopoint {
 // its `record.coarse_points` refinements of `gap` tree levels each (a first mask may be 0, masks
 // below it never are), which must use exactly its mask bytes and have exactly `record.points`
 // leaves, each inside the palette. Cost: one pass over the bytes; no allocation.
-ChunkedIssue validateChunk(std::span<const std::uint8_t> bytes, const ChunkRecord& record, int gap,
-                           int palette_count);
+[[nodiscard]] ChunkedIssue validateChunk(std::span<const std::uint8_t> bytes,
+                                         const ChunkRecord& record, int gap, int palette_count);
 
 // Where a region's subtree lies inside a larger depth-first stream: its node bytes and its leaves.
 struct StreamRange {
@@ -417,8 +416,8 @@ class ProgressiveModel {
 
   // Starts from the file's head: `bytes` holds at least the head's bytes (chunkedHeadBytes says how
   // many); anything after them is ignored (pass it to acceptPrefix to use it).
-  static std::optional<ProgressiveModel> fromHead(std::span<const std::uint8_t> bytes,
-                                                  ChunkedIssue* issue);
+  [[nodiscard]] static std::optional<ProgressiveModel> fromHead(std::span<const std::uint8_t> bytes,
+                                                                ChunkedIssue* issue);
 
   // Movable: everything the views point into lives on the heap.
   ProgressiveModel(ProgressiveModel&&) noexcept = default;
@@ -443,17 +442,17 @@ class ProgressiveModel {
   // against the one above it). Returns kNone when accepted (or already held); otherwise the chunk
   // or table is refused, nothing else changes, and the issue's offset is a file offset. A table
   // refused kMaxChunkAttempts times is given up, like a chunk: its level is never drawn.
-  ChunkedIssue accept(const FetchItem& item, std::span<const std::uint8_t> bytes);
+  [[nodiscard]] ChunkedIssue accept(const FetchItem& item, std::span<const std::uint8_t> bytes);
 
   // Takes every record table and chunk that lies whole in `bytes`, a piece of the file starting at
   // `file_offset` (a file read front to back, a radio broadcast). Returns the file offset up to
   // which everything was taken; stops at the first refused part, with its issue.
-  std::uint64_t acceptBytes(std::uint64_t file_offset, std::span<const std::uint8_t> bytes,
-                            ChunkedIssue* issue);
+  [[nodiscard]] std::uint64_t acceptBytes(std::uint64_t file_offset,
+                                          std::span<const std::uint8_t> bytes, ChunkedIssue* issue);
 
   // The depth this view draws: depth by projected size (renderer/level_of_detail.h, autoDepth)
   // over the model's depths, the base's included; nullopt for a camera refused at every depth.
-  std::optional<int> wantedDepth(const Camera& camera) const;
+  [[nodiscard]] std::optional<int> wantedDepth(const Camera& camera) const;
 
   // Depth by projected size over every stored depth, dense or not (default: only the depths the
   // scan samples densely, renderer/level_of_detail.h). For hand-made models whose few voxels
@@ -492,21 +491,21 @@ class ProgressiveModel {
   // one depth coarser (their coarser chunk's part, with splats), as if they had not arrived. The
   // choice depends only on the view, the budget and the record tables known, never on which chunks
   // have arrived: integer only, deterministic, no allocation.
-  bool draw(const Camera& camera, Variant variant, FrameView& frame,
-            ProgressiveDrawStats* stats = nullptr, const std::atomic<bool>* abort = nullptr,
-            int coarser_levels = 0);
+  [[nodiscard]] bool draw(const Camera& camera, Variant variant, FrameView& frame,
+                          ProgressiveDrawStats* stats = nullptr,
+                          const std::atomic<bool>* abort = nullptr, int coarser_levels = 0);
   // The same from a snapshot: draws the model as it was when `snapshot` was taken, and may run
   // while another thread accepts chunks (see "Threads" above). Allocates nothing.
-  bool draw(ProgressiveFrame& snapshot, const Camera& camera, Variant variant, FrameView& frame,
-            ProgressiveDrawStats* stats = nullptr, const std::atomic<bool>* abort = nullptr,
-            int coarser_levels = 0) const;
+  [[nodiscard]] bool draw(ProgressiveFrame& snapshot, const Camera& camera, Variant variant,
+                          FrameView& frame, ProgressiveDrawStats* stats = nullptr,
+                          const std::atomic<bool>* abort = nullptr, int coarser_levels = 0) const;
 
   // The point budget of draw(camera, ...) (0, the default: none); see draw.
   void setPointBudget(std::uint64_t points) { own_frame_.setPointBudget(points); }
 
   // Whether this view's picture is final: every visible region drawn at the depth the view needs
   // (whatever the point budget).
-  bool viewComplete(const Camera& camera);
+  [[nodiscard]] bool viewComplete(const Camera& camera);
 
   // Bytes held for chunks (assembled streams, waiting chunks) and records.
   std::uint64_t heldBytes() const;
@@ -537,14 +536,17 @@ class ProgressiveModel {
   };
 
   ProgressiveModel() = default;
-  bool acceptRecordTable(int level, std::span<const std::uint8_t> bytes, ChunkedIssue* issue);
-  ChunkedIssue acceptChunk(int level, std::uint32_t index, std::span<const std::uint8_t> bytes);
+  [[nodiscard]] bool acceptRecordTable(int level, std::span<const std::uint8_t> bytes,
+                                       ChunkedIssue* issue);
+  [[nodiscard]] ChunkedIssue acceptChunk(int level, std::uint32_t index,
+                                         std::span<const std::uint8_t> bytes);
   void linkChildren(int level, std::uint32_t index);
   void becomeHeld(int level, std::uint32_t index);
   using Setups = ProgressiveFrame::Setups;
-  std::optional<int> wantedDepth(const ProgressiveTables& tables, const Camera& camera) const;
-  bool prepareFrame(const ProgressiveTables& tables, const Camera& camera, int coarser_levels,
-                    Setups& frame) const;
+  [[nodiscard]] std::optional<int> wantedDepth(const ProgressiveTables& tables,
+                                               const Camera& camera) const;
+  [[nodiscard]] bool prepareFrame(const ProgressiveTables& tables, const Camera& camera,
+                                  int coarser_levels, Setups& frame) const;
   Vec3 regionCentre(const Setups& frame, int level, std::uint32_t region) const;
   Vec3 reachBelow(const Setups& frame, int tree_level) const;
   static bool offScreen(const Setups& frame, const Vec3& centre, const Vec3& reach);
@@ -553,7 +555,8 @@ class ProgressiveModel {
     std::uint64_t own = 0, coarser = 0;  // visible chunks' points at their depth, one coarser
   };
   BudgetCost visibleCost(const ProgressiveFrame& snapshot, int level) const;
-  bool applyPointBudget(ProgressiveFrame& snapshot, const Camera& camera, int coarser_levels) const;
+  [[nodiscard]] bool applyPointBudget(ProgressiveFrame& snapshot, const Camera& camera,
+                                      int coarser_levels) const;
   template <typename PieceVisitor>
   void visitPieces(ProgressiveFrame& snapshot, int level, std::uint32_t index,
                    PieceVisitor& visitor) const;
@@ -563,10 +566,10 @@ class ProgressiveModel {
   std::vector<std::uint8_t> base_palette_;  // 256 x RGB888 for base_view_ (on the heap: movable)
   std::optional<ModelView> base_view_;
   std::array<Level, chunked::kMaxChunkedLevels> levels_{};
-  ProgressiveTables tables_;             // what snapshots copy, with drawable_
-  std::vector<std::uint8_t> drawable_;   // per chunk of the known levels: 1 when drawable
+  ProgressiveTables tables_;            // what snapshots copy, with drawable_
+  std::vector<std::uint8_t> drawable_;  // per chunk of the known levels: 1 when drawable
   bool every_stored_depth_ = false;
-  ProgressiveFrame own_frame_;           // for draw without a snapshot, fetchPriority, viewComplete
+  ProgressiveFrame own_frame_;  // for draw without a snapshot, fetchPriority, viewComplete
   std::vector<Priority> priority_scratch_;
 };
 
@@ -574,7 +577,7 @@ class ProgressiveModel {
 // and chunk lying whole in `bytes`. nullopt (with the issue) when the head is bad or incomplete; a
 // later bad part only stops the reading there (`issue` says what), the model keeps what came
 // before.
-std::optional<ProgressiveModel> progressiveModelFromPrefix(std::span<const std::uint8_t> bytes,
-                                                           ChunkedIssue* issue);
+[[nodiscard]] std::optional<ProgressiveModel> progressiveModelFromPrefix(
+    std::span<const std::uint8_t> bytes, ChunkedIssue* issue);
 
 }  // namespace octopoint

@@ -1,6 +1,6 @@
 #pragma once
-// octopoint/render.h: Drawing a model into a framebuffer: variants, depth auto, abort flag, hole filling.
-// The manual of the whole library is octopoint/octopoint.h.
+// octopoint/render.h: Drawing a model into a framebuffer: variants, depth auto, abort flag, hole
+// filling. The manual of the whole library is octopoint/octopoint.h.
 
 #include <atomic>
 #include <cstddef>
@@ -10,9 +10,9 @@
 #include <string_view>
 #include <vector>
 
-#include "octopoint/model.h"
 #include "octopoint/camera.h"
 #include "octopoint/framebuffer.h"
+#include "octopoint/model.h"
 
 // Aborting a frame from another thread (docs/design.md section 5): the fine render thread is
 // stopped the moment the user moves again. Decoders poll a std::atomic<bool> at one tree level
@@ -40,8 +40,10 @@ enum class Variant {
   kFixedSetBits,   // Algorithm 2 visiting only the set bits of each mask
   kFixedClipped,   // set bits + hierarchical clipping: no bounds checks for subtrees on screen
   kFixedFast,      // clipped, state in registers, no call per leaf parent: the fastest portable one
-  kFixedDelta,     // fast's walk, leaves from per-child pixel-index deltas: the fastest with few registers (Cortex-M0+)
-  kFixedSimd,      // clipped walk, three levels per call, eight children at once in AVX2 lanes, batched min plot
+  kFixedDelta,     // fast's walk, leaves from per-child pixel-index deltas: the fastest with few
+                   // registers (Cortex-M0+)
+  kFixedSimd,  // clipped walk, three levels per call, eight children at once in AVX2 lanes, batched
+               // min plot
   kFloatBaseline,  // floating point reference of Algorithm 1
   kFloatLeafCall,  // floating point reference of Algorithm 2
   kFloatUnrolled,  // floating point reference of Algorithm 2, unrolled
@@ -55,7 +57,7 @@ struct VariantInfo {
 
 // The variants this machine runs: fixed_simd only where the CPU has AVX2 (simdDecoderAvailable).
 std::span<const VariantInfo> allVariants();
-std::optional<Variant> variantFromName(std::string_view name);
+[[nodiscard]] std::optional<Variant> variantFromName(std::string_view name);
 // The default variant wherever a frame is drawn: the fastest this CPU runs, fixed_simd where it
 // has AVX2, else fixed_fast. Both draw footprint splats (FrameSetup::splat).
 Variant defaultVariant();
@@ -73,25 +75,36 @@ bool drawsNormals(Variant variant);
 // octopoint/render.h says why). When `abort` is given and becomes true while drawing, the
 // decoder stops at its next poll and returns false: the frame is then incomplete and must not be
 // shown. Returns true for a complete frame.
-bool renderLevel(Variant variant, const LevelView& level, const FrameSetup& setup, FrameView& frame,
-                 const std::atomic<bool>* abort = nullptr);
+[[nodiscard]] bool renderLevel(Variant variant, const LevelView& level, const FrameSetup& setup,
+                               FrameView& frame, const std::atomic<bool>* abort = nullptr);
 
 // Whether a variant uses integer arithmetic only (the float_* ones are references).
 bool isFixedPoint(Variant variant);
 
 // The variants one by one (renderLevel dispatches to them); each refuses what renderLevel refuses.
-bool renderFixedBaseline(const LevelView&, const FrameSetup&, FrameView&, const std::atomic<bool>* abort);
-bool renderFixedLeafCall(const LevelView&, const FrameSetup&, FrameView&, const std::atomic<bool>* abort);
-bool renderFixedUnrolled(const LevelView&, const FrameSetup&, FrameView&, const std::atomic<bool>* abort);
-bool renderFixedSetBits(const LevelView&, const FrameSetup&, FrameView&, const std::atomic<bool>* abort);
-bool renderFixedClipped(const LevelView&, const FrameSetup&, FrameView&, const std::atomic<bool>* abort);
-bool renderFixedFast(const LevelView&, const FrameSetup&, FrameView&, const std::atomic<bool>* abort);
-bool renderFixedDelta(const LevelView&, const FrameSetup&, FrameView&, const std::atomic<bool>* abort);
-bool renderFixedSimd(const LevelView&, const FrameSetup&, FrameView&, const std::atomic<bool>* abort);
+[[nodiscard]] bool renderFixedBaseline(const LevelView&, const FrameSetup&, FrameView&,
+                                       const std::atomic<bool>* abort);
+[[nodiscard]] bool renderFixedLeafCall(const LevelView&, const FrameSetup&, FrameView&,
+                                       const std::atomic<bool>* abort);
+[[nodiscard]] bool renderFixedUnrolled(const LevelView&, const FrameSetup&, FrameView&,
+                                       const std::atomic<bool>* abort);
+[[nodiscard]] bool renderFixedSetBits(const LevelView&, const FrameSetup&, FrameView&,
+                                      const std::atomic<bool>* abort);
+[[nodiscard]] bool renderFixedClipped(const LevelView&, const FrameSetup&, FrameView&,
+                                      const std::atomic<bool>* abort);
+[[nodiscard]] bool renderFixedFast(const LevelView&, const FrameSetup&, FrameView&,
+                                   const std::atomic<bool>* abort);
+[[nodiscard]] bool renderFixedDelta(const LevelView&, const FrameSetup&, FrameView&,
+                                    const std::atomic<bool>* abort);
+[[nodiscard]] bool renderFixedSimd(const LevelView&, const FrameSetup&, FrameView&,
+                                   const std::atomic<bool>* abort);
 bool simdDecoderAvailable();  // an x86-64 CPU with AVX2
-bool renderFloatBaseline(const LevelView&, const FrameSetup&, FrameView&, const std::atomic<bool>* abort);
-bool renderFloatLeafCall(const LevelView&, const FrameSetup&, FrameView&, const std::atomic<bool>* abort);
-bool renderFloatUnrolled(const LevelView&, const FrameSetup&, FrameView&, const std::atomic<bool>* abort);
+[[nodiscard]] bool renderFloatBaseline(const LevelView&, const FrameSetup&, FrameView&,
+                                       const std::atomic<bool>* abort);
+[[nodiscard]] bool renderFloatLeafCall(const LevelView&, const FrameSetup&, FrameView&,
+                                       const std::atomic<bool>* abort);
+[[nodiscard]] bool renderFloatUnrolled(const LevelView&, const FrameSetup&, FrameView&,
+                                       const std::atomic<bool>* abort);
 
 }  // namespace octopoint
 
@@ -101,14 +114,15 @@ bool renderFloatUnrolled(const LevelView&, const FrameSetup&, FrameView&, const 
 // have made must be refused, not drawn. All checks are O(1): at most format::kMaxDepth x 8 offsets.
 //
 // What cannot be checked in O(1) is a LevelView's stream itself: take levels from a ModelView
-// (ModelView::fromBytes / fromEmbedded validate them), never build one by hand from untrusted bytes.
+// (ModelView::fromBytes / fromEmbedded validate them), never build one by hand from untrusted
+// bytes.
 
 namespace octopoint {
 
 enum class RenderError : std::uint8_t {
   kNone,
-  kBadSetup,           // not a set-up buildFrameSetup makes: depth, fraction bits or size out of range,
-                       // or offsets and splat that could overflow 32 bits
+  kBadSetup,  // not a set-up buildFrameSetup makes: depth, fraction bits or size out of range,
+              // or offsets and splat that could overflow 32 bits
   kFrameSizeMismatch,  // the framebuffer's width or height differs from the set-up's
   kDepthMismatch,      // the level's depth differs from the set-up's
   kImplausibleLevel,   // no nodes or leaves, or node bytes and leaf count no tree of its depth has
@@ -123,11 +137,12 @@ const char* describe(RenderError error);
 // decoder computes (root plus one offset per level, plus the splat's pixel range) can wrap 32
 // bits, as buildFrameSetup proves for what it makes. Band set-ups (a smaller height, a shifted
 // root, a subtree's depth) and a splat reset to SplatFootprint{} pass.
-RenderError checkFrameSetup(const FrameSetup& setup);
+[[nodiscard]] RenderError checkFrameSetup(const FrameSetup& setup);
 
 // checkFrameSetup, then whether `level` and `frame` fit it. renderLevel and every variant's
 // function return false without drawing when this is not kNone.
-RenderError checkRender(const LevelView& level, const FrameSetup& setup, const FrameView& frame);
+[[nodiscard]] RenderError checkRender(const LevelView& level, const FrameSetup& setup,
+                                      const FrameView& frame);
 
 }  // namespace octopoint
 
@@ -190,8 +205,9 @@ std::size_t holeFillHistoryWords(std::int32_t width);
 // row within kHoleFillReachRows of the filled ones. `history` (holeFillHistoryWords) is scratch.
 // A row range outside the window or a history too small is refused (counts.refused, nothing
 // changed), also in release builds.
-HoleFillCounts fillHoleRows(FrameView& window, std::int32_t row_begin, std::int32_t row_end,
-                            std::uint32_t max_bridge_depth, std::span<std::uint32_t> history);
+[[nodiscard]] HoleFillCounts fillHoleRows(FrameView& window, std::int32_t row_begin,
+                                          std::int32_t row_end, std::uint32_t max_bridge_depth,
+                                          std::span<std::uint32_t> history);
 
 class HoleFiller {
  public:
@@ -204,7 +220,7 @@ class HoleFiller {
   // Fills the gaps of types 1 to 4 in `frame` in place. A frame of another width than the
   // filler's is refused (counts.refused, nothing changed), also in release builds.
   // `max_bridge_depth` is in the frame's depth-key units (bridgeDepthLimit). Never allocates.
-  HoleFillCounts fill(FrameView& frame, std::uint32_t max_bridge_depth);
+  [[nodiscard]] HoleFillCounts fill(FrameView& frame, std::uint32_t max_bridge_depth);
 
   std::int32_t width() const { return width_; }
 

@@ -1,6 +1,6 @@
 #pragma once
-// octopoint/styles.h: Styles applied when a frame becomes RGB: colour, shaded, lines, toon, outlined.
-// The manual of the whole library is octopoint/octopoint.h.
+// octopoint/styles.h: Styles applied when a frame becomes RGB: colour, shaded, lines, toon,
+// outlined. The manual of the whole library is octopoint/octopoint.h.
 
 #include <algorithm>
 #include <array>
@@ -10,10 +10,10 @@
 #include <span>
 #include <string_view>
 
-#include "octopoint/fixed.h"
-#include "octopoint/model.h"
 #include "octopoint/camera.h"
+#include "octopoint/fixed.h"
 #include "octopoint/framebuffer.h"
+#include "octopoint/model.h"
 
 // How a frame becomes a picture (docs/styles.md): in the scan's colours, lit from a light, or as a
 // line drawing. Every style is applied after decoding, when the frame is turned into RGB
@@ -40,7 +40,7 @@ struct StyleInfo {
 };
 
 std::span<const StyleInfo> allStyles();
-std::optional<Style> styleFromName(std::string_view name);
+[[nodiscard]] std::optional<Style> styleFromName(std::string_view name);
 std::string_view styleName(Style style);
 bool styleNeedsNormals(Style style);
 // The next style in allStyles() order, wrapping around (the viewer's style key).
@@ -483,7 +483,7 @@ class FrameStyler {
   explicit FrameStyler(const ModelView& model);
 
   // Takes the options, or keeps the old ones and says why not.
-  StyleError setOptions(const StyleOptions& options);
+  [[nodiscard]] StyleError setOptions(const StyleOptions& options);
   const StyleOptions& options() const { return options_; }
   // What frames for this style must carry (Framebuffer::clear).
   PixelPayload payload() const;
@@ -492,12 +492,12 @@ class FrameStyler {
   // and the depth step that counts as a silhouette (with each normal's slope on screen).
   void beginFrame(const FrameSetup& setup);
 
-  StyleError resolve(const FrameView& frame, std::span<std::uint8_t> rgb) const {
+  [[nodiscard]] StyleError resolve(const FrameView& frame, std::span<std::uint8_t> rgb) const {
     return resolveRows(frame, 0, frame.height(), rgb);
   }
   // Rows [first_row, end_row) of `frame` into `rgb` (3 bytes per pixel, first_row first).
-  StyleError resolveRows(const FrameView& frame, std::int32_t first_row, std::int32_t end_row,
-                         std::span<std::uint8_t> rgb) const;
+  [[nodiscard]] StyleError resolveRows(const FrameView& frame, std::int32_t first_row,
+                                       std::int32_t end_row, std::span<std::uint8_t> rgb) const;
 
  private:
   void fillColours();

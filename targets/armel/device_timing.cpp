@@ -77,12 +77,14 @@ std::int64_t threadCpuNs() {
   return std::int64_t{now.tv_sec} * 1'000'000'000 + now.tv_nsec;
 }
 
-// CPU nanoseconds per frame (clear + decode), the median of kRuns runs of at least min_ms / kRuns.
+// CPU nanoseconds per frame (clear + decode), the median of kRuns runs of at least min_ms / kRuns;
+// -1 when the variant refuses to draw the level.
 std::int64_t timeFrames(Variant variant, const LevelView& level, const FrameSetup& setup,
                         Framebuffer& frame, std::int64_t min_ms) {
   const std::int64_t run_ns = min_ms * 1'000'000 / kRuns;
   frame.clear();
-  renderLevel(variant, level, setup, frame);  // warm-up: caches, page faults, qemu's translation
+  // Warm-up: caches, page faults, qemu's translation.
+  if (!renderLevel(variant, level, setup, frame)) return -1;
   std::array<std::int64_t, kRuns> per_frame_ns{};
   for (std::int64_t& result : per_frame_ns) {
     const std::int64_t start = threadCpuNs();
@@ -90,7 +92,7 @@ std::int64_t timeFrames(Variant variant, const LevelView& level, const FrameSetu
     std::int64_t elapsed = 0;
     do {
       frame.clear();
-      renderLevel(variant, level, setup, frame);
+      static_cast<void>(renderLevel(variant, level, setup, frame));  // the warm-up drew it
       ++frames;
       elapsed = threadCpuNs() - start;
     } while (elapsed < run_ns);
@@ -187,6 +189,11 @@ int run(const Options& options) {
           return 1;
         }
         row.ns.push_back(timeFrames(info.variant, *level, setup, frame, options.min_ms));
+        if (row.ns.back() < 0) {
+          std::fprintf(stderr, "device_timing: %.*s refused to draw\n",
+                       static_cast<int>(info.name.size()), info.name.data());
+          return 1;
+        }
       }
     }
     rows.push_back(std::move(row));

@@ -49,11 +49,12 @@ TEST(FrameAllocation, NoVariantAllocatesDuringAFrame) {
         const CameraError camera_error = buildFrameSetup(camera, level.depth, kDefaultFractionBits, &setup);
         frame.clear();
         const bool complete = renderLevel(info.variant, level, setup, frame);
-        resolveToRgb(frame, *model, Rgb{}, rgb);
+        const bool resolved = resolveToRgb(frame, *model, Rgb{}, rgb);
         const long allocations = heapAllocationCount() - before;
 
         ASSERT_EQ(camera_error, CameraError::kNone);
         EXPECT_TRUE(complete) << info.name;
+        EXPECT_TRUE(resolved);
         EXPECT_EQ(allocations, 0) << info.name << " at depth " << level.depth << ", yaw "
                                   << yaw_degrees << " degrees";
       }
@@ -82,10 +83,11 @@ TEST(FrameAllocation, DepthAutoAndSplatFramesAllocateNothing) {
           level == nullptr ? CameraError::kOverflow : buildFrameSetup(camera, level->depth, kDefaultFractionBits, &setup);
       frame.clear();
       const bool complete = camera_error == CameraError::kNone && renderLevel(info.variant, *level, setup, frame);
-      resolveToRgb(frame, *model, Rgb{}, rgb);
+      const bool resolved = resolveToRgb(frame, *model, Rgb{}, rgb);
       const long allocations = heapAllocationCount() - before;
       ASSERT_EQ(camera_error, CameraError::kNone);
       EXPECT_TRUE(complete) << info.name;
+      EXPECT_TRUE(resolved);
       EXPECT_EQ(allocations, 0) << info.name << " at zoom " << zoom;
       splatting += drawsSplats(info.variant) && setup.splat.active() ? 1 : 0;
     }
@@ -172,9 +174,10 @@ TEST(FrameAllocation, ProgressiveFramesAllocateNothing) {
       const bool drawn_within_budget = model->draw(camera, info.variant, frame, &budget_stats);
       model->setPointBudget(0);
       const bool complete = model->viewComplete(camera);
-      resolveToRgb(frame, model->baseModel(), Rgb{}, rgb);
+      const bool resolved = resolveToRgb(frame, model->baseModel(), Rgb{}, rgb);
       const long allocations = heapAllocationCount() - before;
       EXPECT_TRUE(drawn);
+      EXPECT_TRUE(resolved);
       EXPECT_TRUE(drawn_within_budget);
       EXPECT_GT(budget_stats.over_budget_chunks, 0u) << info.name << " at zoom " << zoom;
       EXPECT_FALSE(complete);

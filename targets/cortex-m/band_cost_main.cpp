@@ -23,19 +23,19 @@ void flush(void*, std::int32_t, std::int32_t, std::span<const std::uint8_t> rgb5
   checksum_sink += rgb565[0];  // touch the band, as a driver would
 }
 
-[[gnu::noinline]] void drawFrame(const LevelView& level, const FrameSetup& setup, std::int32_t rows,
+[[gnu::noinline]] bool drawFrame(const LevelView& level, const FrameSetup& setup, std::int32_t rows,
                                  const BandIndex& index, const Rgb565Palette& palette, std::vector<std::uint32_t>& buffer) {
   if (rows == 0) {
     FrameView frame(buffer.data(), setup.width, setup.height);
     frame.clear();
-    renderLevel(Variant::kFixedFast, level, setup, frame);
+    const bool drawn = renderLevel(Variant::kFixedFast, level, setup, frame);
     packedToRgb565(buffer.data(), buffer.size(), palette, reinterpret_cast<std::uint8_t*>(buffer.data()));
-    return;
+    return drawn;
   }
   BandSink sink;
   sink.flush = flush;
   const BandConfig config{Variant::kFixedFast, rows, false, mcu::kBackground};
-  renderBands(level, setup, config, index, palette, {buffer, {}, {}}, sink);
+  return renderBands(level, setup, config, index, palette, {buffer, {}, {}}, sink) == BandError::kNone;
 }
 
 }  // namespace
@@ -62,7 +62,10 @@ int main(int argc, char** argv) {
   const Rgb565Palette palette = makeRgb565Palette(*model, mcu::kBackground);
   std::vector<std::uint32_t> buffer(static_cast<std::size_t>(setup.width) *
                                     static_cast<std::size_t>(rows == 0 ? setup.height : rows));
-  drawFrame(level, setup, rows, index, palette, buffer);
+  if (!drawFrame(level, setup, rows, index, palette, buffer)) {
+    std::fprintf(stderr, "mcu_band_cost: the frame was refused\n");
+    return 1;
+  }
   std::printf("drawn: %d leaves\n", static_cast<int>(level.leaves.size()));
   return static_cast<int>(checksum_sink & 0);
 }

@@ -51,8 +51,11 @@ int main(int argc, char** argv) {
         return 1;
       }
       Framebuffer frame(camera.width, camera.height);
-      renderLevel(variant, *level, setup, frame);
-      if (c.fill) HoleFiller(camera.width).fill(frame, bridgeDepthLimit(setup));
+      if (!renderLevel(variant, *level, setup, frame) ||
+          (c.fill && HoleFiller(camera.width).fill(frame, bridgeDepthLimit(setup)).refused)) {
+        std::fprintf(stderr, "mcu_golden: case %d was refused\n", i);
+        return 1;
+      }
       std::vector<std::uint8_t> rgb(frame.pixels().size() * 2);
       packedToRgb565(frame.pixels().data(), frame.pixels().size(), palette, rgb.data());
       if (splats) first += std::to_string(count) + ", ";

@@ -102,11 +102,14 @@ TEST(ChunkedReader, RefinementWalksThatBreakAreRefused) {
     copy[static_cast<std::size_t>(item.offset) + at] = value;
     octopoint::testing::reseal(copy);
     std::optional<ProgressiveModel> model = ProgressiveModel::fromHead(copy, nullptr);
-    for (int l = 1; l <= level; ++l)
-      model->accept(
-          model->recordTableItem(l),
-          std::span(copy).subspan(static_cast<std::size_t>(model->recordTableItem(l).offset),
-                                  static_cast<std::size_t>(model->recordTableItem(l).bytes)));
+    for (int l = 1; l <= level; ++l) {
+      const FetchItem table = model->recordTableItem(l);
+      EXPECT_EQ(model
+                    ->accept(table, std::span(copy).subspan(static_cast<std::size_t>(table.offset),
+                                                            static_cast<std::size_t>(table.bytes)))
+                    .error,
+                ChunkedError::kNone);
+    }
     return model
         ->accept(item, std::span(copy).subspan(static_cast<std::size_t>(item.offset),
                                                static_cast<std::size_t>(item.bytes)))

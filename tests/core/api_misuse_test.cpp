@@ -138,7 +138,9 @@ TEST_F(ApiMisuse, RgbRendererDrawsWhatTheDetailedApiDraws) {
     ASSERT_EQ(buildFrameSetup(camera, level.depth, kDefaultFractionBits, &setup), CameraError::kNone);
     Framebuffer frame(setup);
     ASSERT_TRUE(renderLevel(defaultVariant(), level, setup, frame));
-    if (fill) HoleFiller(frame).fill(frame, bridgeDepthLimit(setup));
+    if (fill) {
+      ASSERT_FALSE(HoleFiller(frame).fill(frame, bridgeDepthLimit(setup)).refused);
+    }
     std::vector<std::uint8_t> expected(320 * 240 * 3);
     ASSERT_TRUE(resolveToRgb(frame, *model_, {1, 2, 3}, expected));
 

@@ -32,8 +32,10 @@ Rgb565Palette identityPalette() {
 std::vector<std::uint16_t> wholeFrame(Variant variant, const LevelView& level, const FrameSetup& setup,
                                       bool fill, const Rgb565Palette& palette) {
   Framebuffer frame(setup.width, setup.height);
-  renderLevel(variant, level, setup, frame);
-  if (fill) HoleFiller(setup.width).fill(frame, bridgeDepthLimit(setup));
+  EXPECT_TRUE(renderLevel(variant, level, setup, frame));
+  if (fill) {
+    EXPECT_FALSE(HoleFiller(setup.width).fill(frame, bridgeDepthLimit(setup)).refused);
+  }
   std::vector<std::uint16_t> rgb(frame.pixels().size());
   packedToRgb565(frame.pixels().data(), rgb.size(), palette, reinterpret_cast<std::uint8_t*>(rgb.data()));
   return rgb;
@@ -181,14 +183,14 @@ TEST_F(BandRenderer, ShiftedSetupDrawsTheWholeFramesPackedWordsOfItsRows) {
   for (const VariantInfo& info : allVariants()) {
     if (!supportsBands(info.variant)) continue;
     Framebuffer whole(setup.width, setup.height);
-    renderLevel(info.variant, level, setup, whole);
+    ASSERT_TRUE(renderLevel(info.variant, level, setup, whole));
     for (const std::int32_t rows : {1, 5, 24, 72}) {
       for (std::int32_t y0 = 0; y0 < setup.height; y0 += rows) {
         const std::int32_t band_rows = std::min(rows, setup.height - y0);
         FrameSetup band;
         ASSERT_EQ(bandFrameSetup(setup, y0, band_rows, &band), CameraError::kNone);
         Framebuffer part(setup.width, band_rows);
-        renderLevel(info.variant, level, band, part);
+        ASSERT_TRUE(renderLevel(info.variant, level, band, part));
         const auto first = whole.pixels().begin() + static_cast<std::ptrdiff_t>(y0) * setup.width;
         ASSERT_TRUE(std::ranges::equal(part.pixels(), std::span(first, part.pixels().size())))
             << info.name << " rows " << y0 << ".." << y0 + band_rows;

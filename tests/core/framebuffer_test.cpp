@@ -94,13 +94,17 @@ TEST(DrawnRect, AReusedFrameHoldsWhatAFreshFrameHolds) {
     const bool fill = view % 2 == 1;
     Framebuffer fresh(200, 150);
     ASSERT_TRUE(renderLevel(defaultVariant(), *level, setup, fresh));
-    if (fill) fresh_filler.fill(fresh, bridgeDepthLimit(setup));
+    if (fill) {
+      ASSERT_FALSE(fresh_filler.fill(fresh, bridgeDepthLimit(setup)).refused);
+    }
     reused.clear();
     ASSERT_TRUE(std::ranges::all_of(reused.pixels(),
                                     [](std::uint32_t word) { return word == Framebuffer::kEmpty; }))
         << "view " << view << ": clear left pixels of the previous view";
     ASSERT_TRUE(renderLevel(defaultVariant(), *level, setup, reused));
-    if (fill) reused_filler.fill(reused, bridgeDepthLimit(setup));
+    if (fill) {
+      ASSERT_FALSE(reused_filler.fill(reused, bridgeDepthLimit(setup)).refused);
+    }
     ASSERT_TRUE(std::ranges::equal(reused.pixels(), fresh.pixels())) << "view " << view;
     ++view;
   }

@@ -105,7 +105,8 @@ TEST(ProgressiveThreads, ChunksArriveWhileTwoThreadsDrawSnapshotsWithoutTheLock)
         Framebuffer again(camera.width, camera.height);
         while (accepted_now.load() < std::min(d.items + 8, items.size())) {
           again.clear();
-          model->draw(snapshot, camera, Variant::kFixedFast, again, nullptr, nullptr, coarser);
+          EXPECT_TRUE(
+              model->draw(snapshot, camera, Variant::kFixedFast, again, nullptr, nullptr, coarser));
           EXPECT_TRUE(samePixels(again, d.frame)) << "a snapshot changed while it was drawn";
           ++d.repeats_while_feeding;
           ++redraws;
@@ -126,10 +127,11 @@ TEST(ProgressiveThreads, ChunksArriveWhileTwoThreadsDrawSnapshotsWithoutTheLock)
     EXPECT_EQ(drawn.back().items, items.size());
     for (const Drawn& d : drawn) {
       std::optional<ProgressiveModel> reference = ProgressiveModel::fromHead(image, nullptr);
-      for (std::size_t i = 0; i < d.items; ++i) reference->accept(items[i], bytesOf(items[i]));
+      for (std::size_t i = 0; i < d.items; ++i)
+        EXPECT_EQ(reference->accept(items[i], bytesOf(items[i])).error, ChunkedError::kNone);
       Framebuffer frame(camera.width, camera.height);
       frame.clear();
-      reference->draw(camera, Variant::kFixedFast, frame, nullptr, nullptr, d.coarser);
+      EXPECT_TRUE(reference->draw(camera, Variant::kFixedFast, frame, nullptr, nullptr, d.coarser));
       EXPECT_TRUE(samePixels(frame, d.frame)) << d.items << " items, coarser " << d.coarser;
       repeats += d.repeats_while_feeding;
     }

@@ -193,7 +193,7 @@ Framebuffer drawnFrame(net::ModelStream& stream, const Camera& camera) {
   frame.clear();
   stream.withModel([&](ProgressiveModel* model) {
     ASSERT_NE(model, nullptr);
-    model->draw(camera, Variant::kFixedFast, frame);
+    EXPECT_TRUE(model->draw(camera, Variant::kFixedFast, frame));
   });
   return frame;
 }
@@ -202,7 +202,7 @@ Framebuffer wholeFileFrame(const Camera& camera) {
   std::optional<ProgressiveModel> whole = progressiveModelFromPrefix(modelImage(), nullptr);
   Framebuffer frame(camera.width, camera.height);
   frame.clear();
-  whole->draw(camera, Variant::kFixedFast, frame);
+  EXPECT_TRUE(whole->draw(camera, Variant::kFixedFast, frame));
   return frame;
 }
 
@@ -247,7 +247,7 @@ TEST(ModelStream, GivesUpOnAChunkDamagedEveryTimeAndNeverDrawsIt) {
   std::optional<ProgressiveModel> head_only = ProgressiveModel::fromHead(modelImage(), nullptr);
   Framebuffer base(camera.width, camera.height);
   base.clear();
-  head_only->draw(camera, Variant::kFixedFast, base);
+  EXPECT_TRUE(head_only->draw(camera, Variant::kFixedFast, base));
   EXPECT_TRUE(same(drawnFrame(stream, camera), base));
 }
 

@@ -47,9 +47,9 @@ std::vector<Rgb> renderThroughOctFile(const prepare::Scan& scan, int depth, cons
   EXPECT_EQ(buildFrameSetup(camera, depth, kDefaultFractionBits, &setup), CameraError::kNone);
   Framebuffer frame(camera.width, camera.height);
   frame.clear();
-  renderLevel(Variant::kFixedBaseline, model->finestLevel(), setup, frame);
+  EXPECT_TRUE(renderLevel(Variant::kFixedBaseline, model->finestLevel(), setup, frame));
   std::vector<std::uint8_t> rgb(static_cast<std::size_t>(camera.width * camera.height) * 3);
-  resolveToRgb(frame, *model, kBackground, rgb);
+  EXPECT_TRUE(resolveToRgb(frame, *model, kBackground, rgb));
   std::vector<Rgb> pixels;
   for (std::size_t i = 0; i < rgb.size(); i += 3) pixels.push_back({rgb[i], rgb[i + 1], rgb[i + 2]});
   return pixels;

@@ -59,7 +59,7 @@ Framebuffer draw(const ModelView& model, const Camera& camera, Variant variant =
   EXPECT_EQ(buildFrameSetup(camera, kDepth, kDefaultFractionBits, &setup), CameraError::kNone);
   Framebuffer frame(camera.width, camera.height);
   frame.clear();
-  renderLevel(variant, model.finestLevel(), setup, frame);
+  EXPECT_TRUE(renderLevel(variant, model.finestLevel(), setup, frame));
   return frame;
 }
 

@@ -77,7 +77,7 @@ Framebuffer referenceFrame(const ProgressiveModel& model,
     EXPECT_EQ(buildFrameSetup(camera, depth, kDefaultFractionBits, &setup), CameraError::kNone);
     setup.depth_bias = finest.depth_bias;
     setup.depth_shift = finest.depth_shift;
-    renderLevel(variant, LevelView{depth, stream.nodes, stream.leaves}, setup, frame);
+    EXPECT_TRUE(renderLevel(variant, LevelView{depth, stream.nodes, stream.leaves}, setup, frame));
   }
   return frame;
 }

@@ -88,8 +88,10 @@ class DualResolution : public ::testing::Test {
               CameraError::kNone);
     Framebuffer frame(camera.width, camera.height);
     frame.clear();
-    renderLevel(InteractiveConfig{}.variant, level, setup, frame);  // as the renderer draws
-    if (view.fill) HoleFiller(frame.width()).fill(frame, bridgeDepthLimit(setup));
+    EXPECT_TRUE(renderLevel(InteractiveConfig{}.variant, level, setup, frame));  // as H draws
+    if (view.fill) {
+      EXPECT_FALSE(HoleFiller(frame.width()).fill(frame, bridgeDepthLimit(setup)).refused);
+    }
     return frame;
   }
 
@@ -113,16 +115,16 @@ class Round {
       now_us_ += 20'000;
       clock_.set(now_us_);
       seen_generation_ = renderer_.status().latest.generation;
-      if (!renderer_.waitUntil(new_frame_, kPatience)) failed_ = true;
-      renderer_.acquireLatest(nullptr);
+      if (!renderer_.waitUntil(new_frame_, kPatience) || renderer_.acquireLatest(nullptr) == nullptr)
+        failed_ = true;
     }
     renderer_.handle({now_us_, ViewEventKind::kRelease, NavigationKey::kYawRight});
     now_us_ += kTickPeriodMicroseconds;
     clock_.set(now_us_);
     renderer_.handle({now_us_, ViewEventKind::kTick});
     version_ = renderer_.status().view_version;
-    if (!renderer_.waitUntil(fine_shown_, kPatience)) failed_ = true;
-    renderer_.acquireLatest(nullptr);
+    if (!renderer_.waitUntil(fine_shown_, kPatience) || renderer_.acquireLatest(nullptr) == nullptr)
+      failed_ = true;
   }
   bool failed() const { return failed_; }
 
