@@ -13,12 +13,6 @@
 #include <string>
 #include <vector>
 
-#include "tools/chunked_render.h"
-#include "lab/image_quality.h"
-#include "tools/model_source.h"
-#include "lab/reference_render.h"
-#include "lab/reference_surface.h"
-#include "lab/stream_run.h"
 #include "cli/arguments.h"
 #include "cli/error.h"
 #include "cli/numbers.h"
@@ -26,6 +20,12 @@
 #include "cli/run_tool.h"
 #include "codegen/cube_fit.h"
 #include "codegen/prepare.h"
+#include "lab/image_quality.h"
+#include "lab/reference_render.h"
+#include "lab/reference_surface.h"
+#include "lab/stream_run.h"
+#include "tools/chunked_render.h"
+#include "tools/model_source.h"
 
 namespace {
 
@@ -33,11 +33,13 @@ namespace fs = std::filesystem;
 using namespace octopoint;
 
 constexpr const char* kUsage =
-    R"(usage: octopoint-stream-measure SCAN --model M.oct --serve OCTOPOINT-SERVE [options] -o OUTDIR
+    R"(usage: octopoint-stream-measure SCAN --model M.oct --serve OCTOPOINT-SERVE [options] )"
+    R"(-o OUTDIR
 
 Streams the chunked model M.oct (prepared from SCAN with --chunked) from octopoint-serve over
 shaped links, one connection each, and records, per view and link: the time to the first picture,
-the PSNR of every frame against the scan's surface reference (docs/tradeoff.md), the time and bytes until the
+the PSNR of every frame against the scan's surface reference (docs/tradeoff.md), )"
+    R"(the time and bytes until the
 frame is within 1 dB of the complete frame's PSNR, and the time to download the whole file first.
 Writes OUTDIR/LABEL_runs.csv, LABEL_samples.csv, LABEL_psnr_bytes.png and LABEL_frames_VIEW.png.
 

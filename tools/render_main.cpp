@@ -4,16 +4,12 @@
 #include <cstdlib>
 #include <filesystem>
 #include <iostream>
+#include <opencv2/imgcodecs.hpp>
+#include <opencv2/imgproc.hpp>
 #include <optional>
 #include <string>
 #include <vector>
 
-#include <opencv2/imgcodecs.hpp>
-#include <opencv2/imgproc.hpp>
-
-#include "tools/chunked_render.h"
-#include "tools/contact_sheet.h"
-#include "tools/model_source.h"
 #include "cli/arguments.h"
 #include "cli/error.h"
 #include "cli/numbers.h"
@@ -21,20 +17,25 @@
 #include "cli/real_numbers.h"
 #include "cli/run_tool.h"
 #include "cli/text.h"
-#include "octopoint/models.h"
 #include "octopoint/camera.h"
-#include "octopoint/styles.h"
 #include "octopoint/framebuffer.h"
-#include "octopoint/render.h"
-#include "renderer/level_of_detail.h"
 #include "octopoint/model.h"
+#include "octopoint/models.h"
+#include "octopoint/render.h"
+#include "octopoint/styles.h"
+#include "renderer/level_of_detail.h"
+#include "tools/chunked_render.h"
+#include "tools/contact_sheet.h"
+#include "tools/model_source.h"
 
 namespace {
 
 namespace fs = std::filesystem;
 using namespace octopoint;
 
-constexpr const char* kUsage = R"(usage: octopoint-render [--model NAME | --file M.oct | --url URL [--bytes N]] [options] -o OUT.png
+constexpr const char* kUsage =
+    R"(usage: octopoint-render [--model NAME | --file M.oct | --url URL [--bytes N]] )"
+    R"([options] -o OUT.png
        octopoint-render --list
 
 Draws an octopoint model with the integer renderer and writes it as a PNG. With neither --model
@@ -118,7 +119,8 @@ struct Options {
 Light parseLight(std::string_view option, std::string_view text) {
   const std::size_t comma = text.find(',');
   if (comma == std::string_view::npos) {
-    throw cli::Error(std::string(option) + ": " + cli::inQuotes(text) + " is not AZIMUTH,ELEVATION in degrees");
+    throw cli::Error(std::string(option) + ": " + cli::inQuotes(text) +
+                     " is not AZIMUTH,ELEVATION in degrees");
   }
   Light light;
   const double azimuth = cli::parseReal(option, text.substr(0, comma), -90, 90);
@@ -150,10 +152,11 @@ Options parseOptions(int argc, char** argv) {
     } else if (args.is("--url")) {
       options.url = args.value();
     } else if (args.is("--point-budget")) {
-      options.fetch.point_budget =
-          static_cast<std::uint64_t>(cli::parseInteger(args.name(), args.value(), 1, std::int64_t{1} << 40));
+      options.fetch.point_budget = static_cast<std::uint64_t>(
+          cli::parseInteger(args.name(), args.value(), 1, std::int64_t{1} << 40));
     } else if (args.is("--bytes")) {
-      options.fetch.bytes = static_cast<std::uint64_t>(cli::parseInteger(args.name(), args.value(), 1, std::int64_t{1} << 50));
+      options.fetch.bytes = static_cast<std::uint64_t>(
+          cli::parseInteger(args.name(), args.value(), 1, std::int64_t{1} << 50));
     } else if (args.is("--timeout")) {
       options.fetch.timeout_seconds = cli::parseInt(args.name(), args.value(), 1, 86400);
     } else if (args.is("--yaw")) {
@@ -167,9 +170,12 @@ Options parseOptions(int argc, char** argv) {
     } else if (args.is("--pan")) {
       const std::string text = args.value();
       const std::size_t comma = text.find(',');
-      if (comma == std::string::npos) throw cli::Error("--pan: " + cli::inQuotes(text) + " is not X,Y");
-      options.camera.pan_x_px = cli::parseInt(args.name(), text.substr(0, comma), -1'000'000, 1'000'000);
-      options.camera.pan_y_px = cli::parseInt(args.name(), text.substr(comma + 1), -1'000'000, 1'000'000);
+      if (comma == std::string::npos)
+        throw cli::Error("--pan: " + cli::inQuotes(text) + " is not X,Y");
+      options.camera.pan_x_px =
+          cli::parseInt(args.name(), text.substr(0, comma), -1'000'000, 1'000'000);
+      options.camera.pan_y_px =
+          cli::parseInt(args.name(), text.substr(comma + 1), -1'000'000, 1'000'000);
     } else if (args.is("--size")) {
       const cli::FrameSize size =
           cli::parseFrameSize(args.name(), args.value(), 1, kMaxViewportSide, kMaxOutputPixels);
@@ -185,14 +191,15 @@ Options parseOptions(int argc, char** argv) {
     } else if (args.is("--variant")) {
       const std::string name = args.value();
       const std::optional<Variant> variant = variantFromName(name);
-      if (!variant) throw cli::Error("--variant: unknown variant " + cli::inQuotes(name) + " (see --list)");
+      if (!variant)
+        throw cli::Error("--variant: unknown variant " + cli::inQuotes(name) + " (see --list)");
       options.variant = *variant;
     } else if (args.is("--fill") || args.is("--no-fill")) {
       args.noValue();
       options.fill = args.is("--fill");
     } else if (args.is("--style")) {
-      const std::size_t choice =
-          cli::parseChoice(args.name(), args.value(), {"colour", "shaded", "lines", "toon", "outlined"});
+      const std::size_t choice = cli::parseChoice(
+          args.name(), args.value(), {"colour", "shaded", "lines", "toon", "outlined"});
       options.style.style = allStyles()[choice].style;
     } else if (args.is("--light")) {
       const bool headlight = options.style.light.headlight;
@@ -202,8 +209,8 @@ Options parseOptions(int argc, char** argv) {
       args.noValue();
       options.style.light.headlight = true;
     } else if (args.is("--crease")) {
-      options.style.crease_angle =
-          Angle::fromMilliDegrees(std::llround(cli::parseReal(args.name(), args.value(), 1, 179) * 1000));
+      options.style.crease_angle = Angle::fromMilliDegrees(
+          std::llround(cli::parseReal(args.name(), args.value(), 1, 179) * 1000));
     } else if (args.is("--sheet")) {
       options.sheet = cli::parseInt(args.name(), args.value(), 1, 36);
     } else if (args.is("-o") || args.is("--output")) {
@@ -259,36 +266,43 @@ int run(int argc, char** argv) {
     return 0;
   }
   if (!options.url.empty()) {
-    cli::checkOutputFile(options.output);  // before fetching: a FIFO, a device or a directory is refused
+    cli::checkOutputFile(
+        options.output);  // before fetching: a FIFO, a device or a directory is refused
     std::string report;
-    const cv::Mat image = renderFromUrl(options.url, options.camera, options.variant, options.fill, kBackground,
-                                        options.fetch, &report);
+    const cv::Mat image = renderFromUrl(options.url, options.camera, options.variant, options.fill,
+                                        kBackground, options.fetch, &report);
     writePng(options.output, image);
-    std::printf("%s: %s -> %s (%dx%d)\n", options.url.c_str(), report.c_str(), options.output.c_str(),
-                options.camera.width, options.camera.height);
+    std::printf("%s: %s -> %s (%dx%d)\n", options.url.c_str(), report.c_str(),
+                options.output.c_str(), options.camera.width, options.camera.height);
     return 0;
   }
-  const std::unique_ptr<LoadedModel> loaded = loadModel(options.model_name, options.model_file, true);
+  const std::unique_ptr<LoadedModel> loaded =
+      loadModel(options.model_name, options.model_file, true);
   if (loaded->chunked) {
     cli::checkOutputFile(options.output);
     if (options.depth || options.sheet > 0) {
-      throw cli::Error(loaded->label + ": a chunked model is drawn at the depth the view needs: --depth and --sheet do not apply");
+      throw cli::Error(loaded->label +
+                       ": a chunked model is drawn at the depth the view needs: --depth and "
+                       "--sheet do not apply");
     }
     ProgressiveDrawStats stats;
     loaded->chunked->setPointBudget(options.fetch.point_budget);
-    writePng(options.output, renderChunkedView(*loaded->chunked, options.camera, options.variant, options.fill,
-                                               kBackground, &stats));
-    std::printf("%s: chunked, depth %d, %llu points%s -> %s (%dx%d)\n", loaded->label.c_str(), stats.drawn_depth,
-                static_cast<unsigned long long>(stats.points), overBudgetNote(stats).c_str(), options.output.c_str(),
-                options.camera.width, options.camera.height);
+    writePng(options.output, renderChunkedView(*loaded->chunked, options.camera, options.variant,
+                                               options.fill, kBackground, &stats));
+    std::printf("%s: chunked, depth %d, %llu points%s -> %s (%dx%d)\n", loaded->label.c_str(),
+                stats.drawn_depth, static_cast<unsigned long long>(stats.points),
+                overBudgetNote(stats).c_str(), options.output.c_str(), options.camera.width,
+                options.camera.height);
     return 0;
   }
   if (options.fetch.point_budget > 0) {
-    throw cli::Error(loaded->label + ": --point-budget applies to a chunked model (octopoint-prepare --chunked)");
+    throw cli::Error(loaded->label +
+                     ": --point-budget applies to a chunked model (octopoint-prepare --chunked)");
   }
   const ModelView* model = &*loaded->view;
   const std::string& model_label = loaded->label;
-  const LevelView* level = options.depth ? model->levelOfDepth(*options.depth) : autoLevel(*model, options.camera);
+  const LevelView* level =
+      options.depth ? model->levelOfDepth(*options.depth) : autoLevel(*model, options.camera);
   if (level == nullptr && !options.depth) {
     throw cli::Error(std::string("camera refused: ") + describe(CameraError::kOverflow));
   }
@@ -305,23 +319,27 @@ int run(int argc, char** argv) {
   StyleOptions style = options.style;
   style.background = kBackground;
   if (const StyleError error = styler.setOptions(style); error != StyleError::kNone) {
-    throw cli::Error("--style " + std::string(styleName(style.style)) + ": " + model_label + ": " + describe(error));
+    throw cli::Error("--style " + std::string(styleName(style.style)) + ": " + model_label + ": " +
+                     describe(error));
   }
   if (styler.payload() == PixelPayload::kColourNormal && !drawsNormals(options.variant)) {
     std::string variant_name;
     for (const VariantInfo& info : allVariants()) {
       if (info.variant == options.variant) variant_name = info.name;
     }
-    throw cli::Error("--style " + std::string(styleName(style.style)) + ": --variant " + variant_name +
+    throw cli::Error("--style " + std::string(styleName(style.style)) + ": --variant " +
+                     variant_name +
                      " draws colour only, not the normals this style needs (use another variant)");
   }
-  cli::checkOutputFile(options.output);  // before drawing: a FIFO, a device or a directory is refused
+  cli::checkOutputFile(
+      options.output);  // before drawing: a FIFO, a device or a directory is refused
   if (options.sheet > 0) {
     const std::int64_t sheet_pixels = contactSheetPixels(*model, options.camera, options.sheet);
     if (sheet_pixels > kMaxOutputPixels) {
       throw cli::Error("--sheet " + std::to_string(options.sheet) + " at --size " +
-                       std::to_string(options.camera.width) + "x" + std::to_string(options.camera.height) +
-                       " makes a " + std::to_string(sheet_pixels) + "-pixel image, at most " +
+                       std::to_string(options.camera.width) + "x" +
+                       std::to_string(options.camera.height) + " makes a " +
+                       std::to_string(sheet_pixels) + "-pixel image, at most " +
                        std::to_string(kMaxOutputPixels) + ": give fewer views or a smaller --size");
     }
     try {
@@ -339,7 +357,8 @@ int run(int argc, char** argv) {
   FrameSetup setup;
   const CameraError camera_error =
       buildFrameSetup(options.camera, level->depth, kDefaultFractionBits, &setup);
-  if (camera_error != CameraError::kNone) throw cli::Error(std::string("camera refused: ") + describe(camera_error));
+  if (camera_error != CameraError::kNone)
+    throw cli::Error(std::string("camera refused: ") + describe(camera_error));
 
   Framebuffer frame(options.camera.width, options.camera.height);
   frame.clear(styler.payload());
@@ -353,12 +372,15 @@ int run(int argc, char** argv) {
   cv::cvtColor(rgb, bgr, cv::COLOR_RGB2BGR);
   writePng(options.output, bgr);
   const SplatFootprint& splat = drawsSplats(options.variant) ? setup.splat : SplatFootprint{};
-  std::printf("%s: depth %d%s, %zu points, splat up to %dx%d px -> %s (%dx%d)\n", model_label.c_str(),
-              level->depth, options.depth ? "" : " (auto)", level->leaves.size(), splat.columns, splat.rows,
-              options.output.c_str(), options.camera.width, options.camera.height);
+  std::printf("%s: depth %d%s, %zu points, splat up to %dx%d px -> %s (%dx%d)\n",
+              model_label.c_str(), level->depth, options.depth ? "" : " (auto)",
+              level->leaves.size(), splat.columns, splat.rows, options.output.c_str(),
+              options.camera.width, options.camera.height);
   return 0;
 }
 
 }  // namespace
 
-int main(int argc, char** argv) { return octopoint::cli::runTool("octopoint-render", argc, argv, run); }
+int main(int argc, char** argv) {
+  return octopoint::cli::runTool("octopoint-render", argc, argv, run);
+}

@@ -1,5 +1,5 @@
-// octopoint-view: an interactive window on a model. The window (SDL2, tools/view_window.h) drives the
-// dual-resolution renderer: an arrow key's press and release start and stop thread L's coarse
+// octopoint-view: an interactive window on a model. The window (SDL2, tools/view_window.h) drives
+// the dual-resolution renderer: an arrow key's press and release start and stop thread L's coarse
 // frames, thread H's fine frame follows at the next 100 ms tick after the last release, and the
 // frames follow the window's size.
 
@@ -9,20 +9,16 @@
 #include <cstdio>
 #include <cstdlib>
 #include <functional>
-#include <optional>
 #include <iostream>
 #include <memory>
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
+#include <optional>
 #include <span>
 #include <string>
 #include <utility>
 #include <vector>
 
-#include "tools/model_source.h"
-#include "tools/view_keys.h"
-#include "tools/view_overlay.h"
-#include "tools/view_window.h"
 #include "cli/arguments.h"
 #include "cli/error.h"
 #include "cli/numbers.h"
@@ -31,16 +27,21 @@
 #include "cli/text.h"
 #include "octopoint/http.h"
 #include "octopoint/interactive.h"
-#include "octopoint/styles.h"
 #include "octopoint/model.h"
 #include "octopoint/progressive.h"
+#include "octopoint/styles.h"
+#include "tools/model_source.h"
+#include "tools/view_keys.h"
+#include "tools/view_overlay.h"
+#include "tools/view_window.h"
 
 namespace {
 
 using namespace octopoint;
 
 constexpr const char* kUsage =
-    R"(usage: octopoint-view [--model NAME | --file M.oct | --url URL [--point-budget N]] [--size WxH] [--scale N]
+    R"(usage: octopoint-view [--model NAME | --file M.oct | --url URL [--point-budget N]] )"
+    R"([--size WxH] [--scale N]
                      [--speed DEG]
 
 Shows an octopoint model in a resizable window. While an arrow key is held the view turns at a
@@ -177,9 +178,8 @@ ViewDrawFunction streamDrawer(net::ModelStream& stream, std::uint64_t point_budg
   // One per render thread (FrameSource: L draws kCoarse, H kFine), kept across frames.
   auto snapshots = std::make_shared<std::array<ProgressiveFrame, 2>>();
   for (ProgressiveFrame& snapshot : *snapshots) snapshot.setPointBudget(point_budget);
-  return [&stream, variant, snapshots](FrameSource source, const Camera& camera,
-                                       Framebuffer& frame, const std::atomic<bool>* abort,
-                                       int* depth) {
+  return [&stream, variant, snapshots](FrameSource source, const Camera& camera, Framebuffer& frame,
+                                       const std::atomic<bool>* abort, int* depth) {
     ProgressiveFrame& snapshot = (*snapshots)[source == FrameSource::kFine ? 1 : 0];
     const ProgressiveModel* model = stream.snapshot(snapshot);
     if (model == nullptr) return true;
@@ -193,7 +193,8 @@ ViewDrawFunction streamDrawer(net::ModelStream& stream, std::uint64_t point_budg
 }
 
 // A model with normals is drawn with them, so that the style keys work on every frame.
-InteractiveConfig interactiveConfig(const Options& options, ViewWindow& window, const ModelView& model) {
+InteractiveConfig interactiveConfig(const Options& options, ViewWindow& window,
+                                    const ModelView& model) {
   InteractiveConfig config = interactiveConfig(options, window);
   if (model.hasNormals()) config.payload = PixelPayload::kColourNormal;
   return config;
@@ -207,26 +208,27 @@ Viewer::Viewer(const Options& options, const ModelView* model, net::ModelStream*
       stream_(stream),
       window_(kWindowTitle, options.width * options.scale, options.height * options.scale,
               kMinFrameSide * options.scale, kMinFrameSide * options.scale),
-      renderer_(model != nullptr
-                    ? std::make_unique<DualResolutionRenderer>(*model, clock_,
-                                                               interactiveConfig(options, window_, *model))
-                    : std::make_unique<DualResolutionRenderer>(
-                          streamDrawer(*stream, options.point_budget), clock_, interactiveConfig(options, window_))),
+      renderer_(model != nullptr ? std::make_unique<DualResolutionRenderer>(
+                                       *model, clock_, interactiveConfig(options, window_, *model))
+                                 : std::make_unique<DualResolutionRenderer>(
+                                       streamDrawer(*stream, options.point_budget), clock_,
+                                       interactiveConfig(options, window_))),
       keys_(keyTable(this)),
-      resolve_([this](const Framebuffer& frame, const FrameInfo& info, std::span<std::uint8_t> rgb) {
-        if (model_ != nullptr) {
-          resolveStyled(frame, info, rgb);
-          return;
-        }
-        // The palette never changes once the head is in: resolved without the stream's lock.
-        if (const ProgressiveModel* chunked = stream_->model(); chunked != nullptr) {
-          resolveToRgb(frame, chunked->baseModel(), kBackground, rgb);
-          return;
-        }
-        for (std::size_t i = 0; i + 2 < rgb.size(); i += 3) {
-          rgb[i] = kBackground.r, rgb[i + 1] = kBackground.g, rgb[i + 2] = kBackground.b;
-        }
-      }) {
+      resolve_(
+          [this](const Framebuffer& frame, const FrameInfo& info, std::span<std::uint8_t> rgb) {
+            if (model_ != nullptr) {
+              resolveStyled(frame, info, rgb);
+              return;
+            }
+            // The palette never changes once the head is in: resolved without the stream's lock.
+            if (const ProgressiveModel* chunked = stream_->model(); chunked != nullptr) {
+              resolveToRgb(frame, chunked->baseModel(), kBackground, rgb);
+              return;
+            }
+            for (std::size_t i = 0; i + 2 < rgb.size(); i += 3) {
+              rgb[i] = kBackground.r, rgb[i + 1] = kBackground.g, rgb[i + 2] = kBackground.b;
+            }
+          }) {
   if (model_ != nullptr) {
     StyleOptions style;
     style.background = kBackground;
@@ -287,7 +289,9 @@ void Viewer::applyStyle(const StyleOptions& options) {
 
 void Viewer::nextStyle() {
   if (!styler_) {
-    cli::printError("octopoint-view", "styles: a streamed model has no normals; open a model file or an embedded model");
+    cli::printError(
+        "octopoint-view",
+        "styles: a streamed model has no normals; open a model file or an embedded model");
     return;
   }
   StyleOptions options = styler_->options();
@@ -299,8 +303,8 @@ void Viewer::moveLight(int azimuth_steps, int elevation_steps) {
   if (!styler_) return;
   StyleOptions options = styler_->options();
   const auto step = [](Angle angle, int steps) {
-    const int degrees =
-        std::clamp(static_cast<int>(std::lround(signedDegreesOf(angle))) + steps * kLightStepDegrees, -90, 90);
+    const int degrees = std::clamp(
+        static_cast<int>(std::lround(signedDegreesOf(angle))) + steps * kLightStepDegrees, -90, 90);
     return Angle::fromDegrees(degrees);
   };
   options.light.azimuth = step(options.light.azimuth, azimuth_steps);
@@ -308,7 +312,8 @@ void Viewer::moveLight(int azimuth_steps, int elevation_steps) {
   applyStyle(options);
 }
 
-void Viewer::resolveStyled(const Framebuffer& frame, const FrameInfo& info, std::span<std::uint8_t> rgb) {
+void Viewer::resolveStyled(const Framebuffer& frame, const FrameInfo& info,
+                           std::span<std::uint8_t> rgb) {
   Camera camera;
   camera.yaw = info.view.yaw;
   camera.pitch = info.view.pitch;
@@ -316,14 +321,16 @@ void Viewer::resolveStyled(const Framebuffer& frame, const FrameInfo& info, std:
   camera.width = info.width;
   camera.height = info.height;
   FrameSetup setup;
-  const bool styled = styler_->options().style != Style::kColour && info.depth > 0 &&
-                      buildFrameSetup(camera, info.depth, kDefaultFractionBits, &setup) == CameraError::kNone;
+  const bool styled =
+      styler_->options().style != Style::kColour && info.depth > 0 &&
+      buildFrameSetup(camera, info.depth, kDefaultFractionBits, &setup) == CameraError::kNone;
   if (!styled) {
     resolveToRgb(frame, *model_, kBackground, rgb);
     return;
   }
   styler_->beginFrame(setup);
-  if (styler_->resolve(frame, rgb) != StyleError::kNone) resolveToRgb(frame, *model_, kBackground, rgb);
+  if (styler_->resolve(frame, rgb) != StyleError::kNone)
+    resolveToRgb(frame, *model_, kBackground, rgb);
 }
 
 KeyBindings Viewer::keyTable(Viewer* viewer) {
@@ -346,13 +353,18 @@ KeyBindings Viewer::keyTable(Viewer* viewer) {
              [viewer](std::int64_t now) { viewer->send(ViewEventKind::kReset, now); });
   keys.press({SDLK_s}, "s", "save the frame as octopoint-view-N.png in the current directory",
              [viewer](std::int64_t) { viewer->save(); });
-  keys.press({SDLK_c}, "c", "next style: colour, shaded, lines, toon, outlined (a model with normals)",
+  keys.press({SDLK_c}, "c",
+             "next style: colour, shaded, lines, toon, outlined (a model with normals)",
              [viewer](std::int64_t) { viewer->nextStyle(); });
-  keys.press({SDLK_j}, "j l i k", "move the light left, right, up, down by 15 degrees (shaded, toon)",
-             [viewer](std::int64_t) { viewer->moveLight(-1, 0); }, kRepeats);
-  keys.press({SDLK_l}, "", "", [viewer](std::int64_t) { viewer->moveLight(1, 0); }, kRepeats);
-  keys.press({SDLK_i}, "", "", [viewer](std::int64_t) { viewer->moveLight(0, 1); }, kRepeats);
-  keys.press({SDLK_k}, "", "", [viewer](std::int64_t) { viewer->moveLight(0, -1); }, kRepeats);
+  keys.press(
+      {SDLK_j}, "j l i k", "move the light left, right, up, down by 15 degrees (shaded, toon)",
+      [viewer](std::int64_t) { viewer->moveLight(-1, 0); }, kRepeats);
+  keys.press(
+      {SDLK_l}, "", "", [viewer](std::int64_t) { viewer->moveLight(1, 0); }, kRepeats);
+  keys.press(
+      {SDLK_i}, "", "", [viewer](std::int64_t) { viewer->moveLight(0, 1); }, kRepeats);
+  keys.press(
+      {SDLK_k}, "", "", [viewer](std::int64_t) { viewer->moveLight(0, -1); }, kRepeats);
   keys.press({SDLK_q, SDLK_ESCAPE}, "q Esc", "quit",
              [viewer](std::int64_t) { viewer->quit_ = true; });
   return keys;
@@ -489,8 +501,9 @@ void Viewer::defaultOverlay(OverlayLines& lines) const {
   lines.emplace_back(line);
   if (styler_ && styler_->options().style != Style::kColour) {
     const StyleOptions& style = styler_->options();
-    std::snprintf(line, sizeof line, "%s  light %.0f,%.0f", std::string(styleName(style.style)).c_str(),
-                  signedDegreesOf(style.light.azimuth), signedDegreesOf(style.light.elevation));
+    std::snprintf(line, sizeof line, "%s  light %.0f,%.0f",
+                  std::string(styleName(style.style)).c_str(), signedDegreesOf(style.light.azimuth),
+                  signedDegreesOf(style.light.elevation));
     lines.emplace_back(line);
   }
   std::snprintf(line, sizeof line, "%llu fps drawn, %llu shown",
@@ -546,8 +559,8 @@ Options parseOptions(int argc, char** argv) {
     } else if (args.is("--url")) {
       options.url = args.value();
     } else if (args.is("--point-budget")) {
-      options.point_budget =
-          static_cast<std::uint64_t>(cli::parseInteger(args.name(), args.value(), 1, std::int64_t{1} << 40));
+      options.point_budget = static_cast<std::uint64_t>(
+          cli::parseInteger(args.name(), args.value(), 1, std::int64_t{1} << 40));
     } else if (args.is("--size")) {
       const cli::FrameSize size =
           cli::parseFrameSize(args.name(), args.value(), kMinFrameSide, kMaxFrameSide);
@@ -564,7 +577,8 @@ Options parseOptions(int argc, char** argv) {
   if (!options.model_name.empty() + !options.model_file.empty() + !options.url.empty() > 1) {
     throw cli::Error("give one of --model, --file and --url");
   }
-  if (options.point_budget > 0 && options.url.empty()) throw cli::Error("--point-budget needs --url");
+  if (options.point_budget > 0 && options.url.empty())
+    throw cli::Error("--point-budget needs --url");
   return options;
 }
 
