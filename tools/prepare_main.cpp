@@ -165,6 +165,57 @@ std::vector<int> parseDepths(std::string_view option, const std::string& text) {
   return depths;
 }
 
+// The flags a scene file replaces (--depths, --colours, --crop, --axes, --scan-unit, --normals),
+// each noted in args.model_flags: false when `reader` holds another option.
+bool parseModelFlag(octopoint::cli::ArgumentReader& reader, Arguments& args) {
+  if (reader.is("--depths")) {
+    args.model_flags.push_back(reader.name());
+    args.options.depths = parseDepths(reader.name(), reader.value());
+    args.options.stop_at_sparse_depth = false;
+  } else if (reader.is("--colours")) {
+    args.model_flags.push_back(reader.name());
+    args.options.palette_colours = octopoint::cli::parseInt(reader.name(), reader.value(), 1, 256);
+  } else if (reader.is("--crop")) {
+    args.model_flags.push_back(reader.name());
+    args.options.crop = octopoint::prepare::parseCropBox(reader.name(), reader.value());
+  } else if (reader.is("--axes")) {
+    args.model_flags.push_back(reader.name());
+    args.options.axes =
+        octopoint::cli::parseChoice(reader.name(), reader.value(), {"y-down", "y-up"}) == 0
+            ? octopoint::prepare::ScanAxes::kYDown
+            : octopoint::prepare::ScanAxes::kYUp;
+  } else if (reader.is("--scan-unit")) {
+    args.model_flags.push_back(reader.name());
+    constexpr double kMetres[] = {1.0, 0.01, 0.001};
+    args.options.metres_per_scan_unit =
+        kMetres[octopoint::cli::parseChoice(reader.name(), reader.value(), {"m", "cm", "mm"})];
+  } else if (reader.is("--normals")) {
+    reader.noValue();
+    args.model_flags.push_back(reader.name());
+    args.options.normals = octopoint::prepare::NormalOptions{};
+  } else {
+    return false;
+  }
+  return true;
+}
+
+// The arguments every run needs, and no model flag beside --scene.
+void checkArguments(const Arguments& args, bool have_name) {
+  if (args.scan.empty()) throw PrepareError("no SCAN given (see --help)");
+  if (args.output_dir.empty())
+    throw PrepareError("no output directory given: use -o OUTDIR (see --help)");
+  if (!have_name) throw PrepareError("no model name given: use --name NAME (see --help)");
+  if (!args.scene.empty() && !args.model_flags.empty()) {
+    throw PrepareError(args.model_flags.front() +
+                       ": not allowed with --scene (set it in the scene file)");
+  }
+  const std::string name_problem = octopoint::prepare::modelNameProblem(args.options.name);
+  if (!name_problem.empty()) {
+    throw PrepareError("--name: " + octopoint::cli::inQuotes(args.options.name) + " " +
+                       name_problem + " (see --help for model names)");
+  }
+}
+
 // Returns nullopt when --help was asked for.
 std::optional<Arguments> parseArguments(int argc, char** argv) {
   Arguments args;
@@ -206,32 +257,8 @@ std::optional<Arguments> parseArguments(int argc, char** argv) {
     } else if (reader.is("--progress")) {
       reader.noValue();
       octopoint::prepare::Progress::force(true);
-    } else if (reader.is("--depths")) {
-      args.model_flags.push_back(reader.name());
-      args.options.depths = parseDepths(reader.name(), reader.value());
-      args.options.stop_at_sparse_depth = false;
-    } else if (reader.is("--colours")) {
-      args.model_flags.push_back(reader.name());
-      args.options.palette_colours =
-          octopoint::cli::parseInt(reader.name(), reader.value(), 1, 256);
-    } else if (reader.is("--crop")) {
-      args.model_flags.push_back(reader.name());
-      args.options.crop = octopoint::prepare::parseCropBox(reader.name(), reader.value());
-    } else if (reader.is("--axes")) {
-      args.model_flags.push_back(reader.name());
-      args.options.axes =
-          octopoint::cli::parseChoice(reader.name(), reader.value(), {"y-down", "y-up"}) == 0
-              ? octopoint::prepare::ScanAxes::kYDown
-              : octopoint::prepare::ScanAxes::kYUp;
-    } else if (reader.is("--scan-unit")) {
-      args.model_flags.push_back(reader.name());
-      constexpr double kMetres[] = {1.0, 0.01, 0.001};
-      args.options.metres_per_scan_unit =
-          kMetres[octopoint::cli::parseChoice(reader.name(), reader.value(), {"m", "cm", "mm"})];
-    } else if (reader.is("--normals")) {
-      reader.noValue();
-      args.model_flags.push_back(reader.name());
-      args.options.normals = octopoint::prepare::NormalOptions{};
+    } else if (parseModelFlag(reader, args)) {
+      continue;
     } else if (reader.isPlain() && args.scan.empty()) {
       args.scan = reader.current();
     } else if (reader.isPlain()) {
@@ -241,19 +268,7 @@ std::optional<Arguments> parseArguments(int argc, char** argv) {
       reader.refuseUnknown();
     }
   }
-  if (args.scan.empty()) throw PrepareError("no SCAN given (see --help)");
-  if (args.output_dir.empty())
-    throw PrepareError("no output directory given: use -o OUTDIR (see --help)");
-  if (!have_name) throw PrepareError("no model name given: use --name NAME (see --help)");
-  if (!args.scene.empty() && !args.model_flags.empty()) {
-    throw PrepareError(args.model_flags.front() +
-                       ": not allowed with --scene (set it in the scene file)");
-  }
-  const std::string name_problem = octopoint::prepare::modelNameProblem(args.options.name);
-  if (!name_problem.empty()) {
-    throw PrepareError("--name: " + octopoint::cli::inQuotes(args.options.name) + " " +
-                       name_problem + " (see --help for model names)");
-  }
+  checkArguments(args, have_name);
   return args;
 }
 
@@ -331,80 +346,48 @@ std::string describeStream(const octopoint::prepare::SourceInfo& info,
   return line;
 }
 
-int run(int argc, char** argv) {
-  const auto start = std::chrono::steady_clock::now();
-  const std::optional<Arguments> args = parseArguments(argc, argv);
-  if (!args) {
-    std::cout << kUsage;
-    return 0;
-  }
+// Streamed when the file allows it and no option needs the whole scan; else read whole through
+// PCL, by octopoint-prepare-pcl (codegen/whole_scan.h). `stream_line`: the streaming's report.
+octopoint::prepare::PreparedModel prepareScan(const Arguments& args,
+                                              const octopoint::prepare::PrepareOptions& options,
+                                              char** argv,
+                                              octopoint::prepare::PrepareSummary& summary,
+                                              std::string& stream_line) {
   using namespace octopoint::prepare;
-  PrepareOptions options = args->options;
-  std::string depth_reason;
-  if (!args->scene.empty()) depth_reason = applyScene(loadScene(args->scene), options);
-  if (args->chunked && options.normals) {
-    throw PrepareError(
-        "--chunked: the chunked format (version 3) stores no normals; leave out --normals (or the "
-        "scene's \"normals\") or write a version 2 file");
-  }
-  checkOutputs(*args, options);
-  // The generated files name the exact command that made them, so anyone can regenerate them.
-  options.source_description =
-      std::filesystem::path(args->scan).filename().string() + " by: octopoint-prepare";
-  for (int i = 1; i < argc; ++i) options.source_description += std::string(" ") + argv[i];
-  PrepareSummary summary;
-  PreparedModel model;
-  std::string stream_line;
-  // Streamed when the file allows it and no option needs the whole scan; else read whole through
-  // PCL, by octopoint-prepare-pcl (codegen/whole_scan.h).
   std::unique_ptr<PointSource> streamed;
-  if (!options.outliers && !options.normals) streamed = openStreamedSource(args->scan);
-  if (streamed) {
-    model = prepareFromSource(*streamed, args->scan, options, args->stream, &summary);
-    if (streamed->info().streamed)
-      stream_line = describeStream(streamed->info(), summary, args->stream);
-  } else {
-    model = prepareWholeScan(args->scan, options, args->stream, summary, argv);
-  }
-  // A chunked file refines each depth from the one above it, so its depths must be nested; the
-  // sources get the same voxels, so that both draw alike.
-  const std::size_t nesting_added = args->chunked ? nestLevels(model) : 0;
-  ChunkedLayout layout;
+  if (!options.outliers && !options.normals) streamed = openStreamedSource(args.scan);
+  if (!streamed) return prepareWholeScan(args.scan, options, args.stream, summary, argv);
+  PreparedModel model = prepareFromSource(*streamed, args.scan, options, args.stream, &summary);
+  if (streamed->info().streamed)
+    stream_line = describeStream(streamed->info(), summary, args.stream);
+  return model;
+}
 
-  const auto writing = std::chrono::steady_clock::now();
+// Writes the sources and the .oct image; returns the image's size in bytes.
+std::size_t writeModel(const Arguments& args, const octopoint::prepare::PreparedModel& model,
+                       octopoint::prepare::ChunkedLayout& layout) {
+  using namespace octopoint::prepare;
   // The .oct image is made on a second thread while the sources are: both only read the model.
   std::future<std::vector<std::uint8_t>> image_made = std::async(std::launch::async, [&] {
-    return args->chunked ? serializeChunkedModel(model, args->chunking, &layout)
-                         : serializeModel(model);
+    return args.chunked ? serializeChunkedModel(model, args.chunking, &layout)
+                        : serializeModel(model);
   });
-  std::vector<OutputFile> files = emitSources(model, args->emit);
+  std::vector<OutputFile> files = emitSources(model, args.emit);
   const std::vector<std::uint8_t> image = image_made.get();
   std::string image_text;
   reserveOnHugePages(image_text, image.size());
   image_text.append(reinterpret_cast<const char*>(image.data()), image.size());
   files.push_back({model.name + ".oct", std::move(image_text)});
   // A rerun replaces the model's whole set: level sources of depths it leaves out go too.
-  octopoint::cli::writeFilesAtomically(args->output_dir, files,
-                                       staleLevelSources(args->output_dir, model.name, files));
-  const double writing_seconds =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - writing).count();
+  octopoint::cli::writeFilesAtomically(args.output_dir, files,
+                                       staleLevelSources(args.output_dir, model.name, files));
+  return image.size();
+}
 
-  const double seconds =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  std::printf(
-      "%s: %llu points (%llu dropped as non-finite), %s, %zu palette colours, cube edge %.4g m\n",
-      args->scan.c_str(), static_cast<unsigned long long>(summary.finite_points),
-      static_cast<unsigned long long>(summary.dropped_non_finite), shadingName(summary.shading),
-      model.palette.size(), static_cast<double>(model.cube_edge_pm) * 1e-12);
-  std::fputs(stream_line.c_str(), stdout);
-  if (!depth_reason.empty()) std::printf("%s\n", depth_reason.c_str());
-  if (!model.sparse_depths_dropped.empty()) {
-    std::printf(
-        "  left out depths %s: finer than the scan samples densely (under %zux the voxels of the "
-        "depth "
-        "before); the renderer splats the finest depth kept\n",
-        describeDepths(model.sparse_depths_dropped).c_str(), kDenseGrowth);
-  }
+// The normals, the pruning and each depth's voxels and bytes.
+void printLevels(const octopoint::prepare::PreparedModel& model,
+                 const octopoint::prepare::PrepareOptions& options) {
+  using namespace octopoint::prepare;
   if (!model.normal_palette.empty()) {
     std::printf(
         "normals: %s, %zu-entry palette, stored with %.1f degrees mean and %.1f worst error "
@@ -438,22 +421,77 @@ int run(int argc, char** argv) {
                 8.0 * static_cast<double>(bytes) / voxels,
                 level.normals.empty() ? "" : " and normals");
   }
-  if (args->chunked) {
-    if (nesting_added > 0)
-      std::printf("  nesting the pruned depths added %zu voxels\n", nesting_added);
-    std::printf(
-        "  chunked: base depth %d%s, head %zu bytes, directory %zu bytes, chunks of %zu bytes or "
-        "more on average\n",
-        layout.base_depth, layout.base_added ? " (added)" : "", layout.head_bytes,
-        layout.table_bytes, layout.target_chunk_bytes);
-    for (std::size_t j = 0; j < layout.depths.size(); ++j) {
-      std::printf("  chunked depth %2d: %6zu chunks (regions at tree level %d), %9zu bytes\n",
-                  layout.depths[j], layout.chunks[j], layout.region_levels[j],
-                  layout.chunk_bytes[j]);
-    }
+}
+
+void printChunkedLayout(const octopoint::prepare::ChunkedLayout& layout,
+                        std::size_t nesting_added) {
+  if (nesting_added > 0)
+    std::printf("  nesting the pruned depths added %zu voxels\n", nesting_added);
+  std::printf(
+      "  chunked: base depth %d%s, head %zu bytes, directory %zu bytes, chunks of %zu bytes or "
+      "more on average\n",
+      layout.base_depth, layout.base_added ? " (added)" : "", layout.head_bytes, layout.table_bytes,
+      layout.target_chunk_bytes);
+  for (std::size_t j = 0; j < layout.depths.size(); ++j) {
+    std::printf("  chunked depth %2d: %6zu chunks (regions at tree level %d), %9zu bytes\n",
+                layout.depths[j], layout.chunks[j], layout.region_levels[j], layout.chunk_bytes[j]);
   }
+}
+
+int run(int argc, char** argv) {
+  const auto start = std::chrono::steady_clock::now();
+  const std::optional<Arguments> args = parseArguments(argc, argv);
+  if (!args) {
+    std::cout << kUsage;
+    return 0;
+  }
+  using namespace octopoint::prepare;
+  PrepareOptions options = args->options;
+  std::string depth_reason;
+  if (!args->scene.empty()) depth_reason = applyScene(loadScene(args->scene), options);
+  if (args->chunked && options.normals) {
+    throw PrepareError(
+        "--chunked: the chunked format (version 3) stores no normals; leave out --normals (or the "
+        "scene's \"normals\") or write a version 2 file");
+  }
+  checkOutputs(*args, options);
+  // The generated files name the exact command that made them, so anyone can regenerate them.
+  options.source_description =
+      std::filesystem::path(args->scan).filename().string() + " by: octopoint-prepare";
+  for (int i = 1; i < argc; ++i) options.source_description += std::string(" ") + argv[i];
+  PrepareSummary summary;
+  std::string stream_line;
+  PreparedModel model = prepareScan(*args, options, argv, summary, stream_line);
+  // A chunked file refines each depth from the one above it, so its depths must be nested; the
+  // sources get the same voxels, so that both draw alike.
+  const std::size_t nesting_added = args->chunked ? nestLevels(model) : 0;
+  ChunkedLayout layout;
+
+  const auto writing = std::chrono::steady_clock::now();
+  const std::size_t image_bytes = writeModel(*args, model, layout);
+  const double writing_seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - writing).count();
+
+  const double seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  std::printf(
+      "%s: %llu points (%llu dropped as non-finite), %s, %zu palette colours, cube edge %.4g m\n",
+      args->scan.c_str(), static_cast<unsigned long long>(summary.finite_points),
+      static_cast<unsigned long long>(summary.dropped_non_finite), shadingName(summary.shading),
+      model.palette.size(), static_cast<double>(model.cube_edge_pm) * 1e-12);
+  std::fputs(stream_line.c_str(), stdout);
+  if (!depth_reason.empty()) std::printf("%s\n", depth_reason.c_str());
+  if (!model.sparse_depths_dropped.empty()) {
+    std::printf(
+        "  left out depths %s: finer than the scan samples densely (under %zux the voxels of the "
+        "depth "
+        "before); the renderer splats the finest depth kept\n",
+        describeDepths(model.sparse_depths_dropped).c_str(), kDenseGrowth);
+  }
+  printLevels(model, options);
+  if (args->chunked) printChunkedLayout(layout, nesting_added);
   std::printf("wrote %s/%s.{h,cpp,oct} (%zu bytes .oct%s) in %.2f s (writing the files %.2f s)\n",
-              args->output_dir.c_str(), model.name.c_str(), image.size(),
+              args->output_dir.c_str(), model.name.c_str(), image_bytes,
               args->chunked ? ", chunked" : "", seconds, writing_seconds);
   return 0;
 }
