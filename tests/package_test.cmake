@@ -20,8 +20,8 @@ set(unfindable)
 foreach(package PCL OpenCV SDL2 GTest benchmark nlohmann_json)
   list(APPEND unfindable "-DCMAKE_DISABLE_FIND_PACKAGE_${package}=ON")
 endforeach()
-run(${CMAKE_COMMAND} -S "${SOURCE_DIR}" -B "${WORK}/library_only" ${compiler} -DCMAKE_CXX_STANDARD=20
-    -DOCTOPOINT_LIBRARY_ONLY=ON ${unfindable})
+run(${CMAKE_COMMAND} -S "${SOURCE_DIR}" -B "${WORK}/library_only" ${compiler}
+    -DCMAKE_CXX_STANDARD=20 -DOCTOPOINT_LIBRARY_ONLY=ON ${unfindable})
 run(${CMAKE_COMMAND} --build "${WORK}/library_only" -j 2)
 run(${CMAKE_COMMAND} --install "${WORK}/library_only" --prefix "${WORK}/library_only_prefix")
 if(EXISTS "${WORK}/library_only_prefix/bin")
