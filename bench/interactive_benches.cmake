@@ -1,4 +1,5 @@
-# Issue 5's benchmarks (included from bench/CMakeLists.txt): hole filling and abort latency.
+# The interactive renderer's benchmarks (included from bench/CMakeLists.txt): hole filling and
+# abort latency.
 add_executable(hole_fill_bench hole_fill_bench.cpp)
 target_link_libraries(hole_fill_bench PRIVATE octopoint_bench_main
                       octopoint_renderer octopoint_models benchmark::benchmark

@@ -1,4 +1,4 @@
-// Issue 12: a large model's frame cost follows the screen. At 1280x960, the large chunked model
+// A large model's frame cost follows the screen. At 1280x960, the large chunked model
 // (>= 10 million voxels, lab/scripts/measure-large makes it) drawn complete by the progressive model
 // at depth auto, side by side in one binary, against
 //  - the same scene prepared with depths up to 8 (--large-depth8, chunked, and --large-depth8-flat,

@@ -1,4 +1,4 @@
-# prepare_bench: the whole preparer on a real scan and on synthetic 1M/3M/10M-point scans (issue 4),
+# prepare_bench: the whole preparer on a real scan and on synthetic 1M/3M/10M-point scans,
 # and the streamed preparer on LAS landscapes (tests/support's landscape and LAS writer).
 if(TARGET octopoint_prepare AND TARGET octopoint_scan_tools)
   add_executable(prepare_bench prepare_bench.cpp)

@@ -1,4 +1,4 @@
-// Issue 11: the small zoomed-in frames where depth auto was slower than today's renderer with hole
+// The small zoomed-in frames where depth auto was slower than today's renderer with hole
 // filling (docs/tradeoff.md), with the skip index (octopoint/model.h) and without it, side by
 // side in one binary: the same level drawn with LevelView::skip as ModelView builds it and with it
 // cleared (the byte walk of renderer/skip_runs.h, what the decoders did before). Yaw 30, clear

@@ -31,48 +31,25 @@ namespace octopoint::tradeoff {
 // jump in depth, not a surface: a surface seen at up to acos(1/8) = 83 degrees from face-on, or a
 // depth camera's quantized depth (a Kinect's step is about 1.7 grid steps at 1 m), stays joined.
 inline constexpr double kMaxEdgeGridSteps = 8;
-// How far past its last samples a depth image's mesh goes, in grid steps (docs/tradeoff.md, "Where
-// the surface ends"): a depth camera's sample is the ray through a pixel centre, so the surface's
-// true edge lies somewhere between the last ray that hit it and the first that missed, and a mesh
-// that ends at the last hits falls short of it. Each boundary edge of the triangulation (an edge
-// of one triangle only) gets a strip this many grid steps wide, outward in the grid and lifted onto
-// the boundary triangle's own plane; a convex corner between two such strips is filled. Against
-// the exact silhouette of a square seen by a synthetic depth camera (lab/reference_truth.h,
-// lab/scripts/reference-truth --mesh-extension), the mesh ends on average 0.46 to 0.68 sample spacings
-// short of the true edge without it; 0.45 steps (of 0.05) puts it closest, within 0.04 spacings
-// (0.4: 0.04 to 0.10 short, 0.5: 0.04 to 0.11 past).
+// How far past its last samples a depth image's mesh goes, in grid steps: a depth camera's sample
+// is the ray through a pixel centre, so the surface's true edge lies somewhere between the last ray
+// that hit it and the first that missed, and a mesh that ends at the last hits falls short of it.
+// Each boundary edge of the triangulation (an edge of one triangle only) gets a strip this many
+// grid steps wide, outward in the grid and lifted onto the boundary triangle's own plane; a convex
+// corner between two such strips is filled. 0.45 puts the mesh's end closest to the exact
+// silhouette of a square seen by a synthetic depth camera (lab/scripts/reference-truth
+// --mesh-extension); the measurement is in docs/tradeoff.md, "Where a depth image's surface ends".
 inline constexpr double kMeshExtensionSteps = 0.45;
-// How an unorganized scan's points become discs (docs/tradeoff.md, "The reference render"): a
-// point's radius is `scale` x the distance to its `neighbour`-th nearest neighbour, that distance
-// capped at its `cap_quantile` quantile over the scan (a stray return far from everything samples
-// no surface, and gets no wider disc than 90% of the scan's points). Of the neighbour counts
-// 4..16, each with the smallest scale (steps of 0.05) that closes a jittered plane at every size
-// and zoom, the 8th at 0.7 gives the smallest discs; on lms400 it leaves 0.023% of the covered
-// pixels as holes inside the surface, where 0.6 leaves 0.036% and 0.5 0.093%, and a 75% cap 0.031%
-// (lab/scripts/reference-closure prints the whole measurement).
-// A stray return (its neighbours' centroid more than edge_offset x its neighbour distance off it:
-// neighbours on one side only, and far) gets a disc of edge_scale x that distance instead:
-// against the exact silhouette of sampled squares with stray returns off their edge
-// (lab/reference_truth.h, lab/scripts/reference-truth), that cuts the spill past the true edge by a
-// quarter (jittered) to a sixth (line scanner), where a stray at 0.7 spills as much as a surface
-// sample. A lower offset would shrink outline discs too (0.4 halves the outline's spill) but opens
-// holes inside a jittered plane: 0.6 is the lowest (steps of 0.05) that keeps it closed.
-// An outline point is found by the angular gap its neighbours leave around it instead (as PCL's
-// BoundaryEstimation does): of 16 neighbours, wider than 120 degrees. On the 200 x 200 jittered
-// plane that calls no point more than 2 cells inside outline (8 neighbours at 90 degrees: 18,295;
-// 12 at 120: 22; 16 and 24 at 120 or 150: none); on the sampled squares it calls 5.0% (jittered)
-// and 2.4% (line scanner) of the points outline, about their outermost row. Its disc keeps the
-// surface's size and moves inward by outline_shift = 0.55 x its radius: against the exact
-// silhouette (lab/scripts/reference-truth --outline-sweep, over every size 1x1..1920x1080 and zoom
-// 0.25..8, head-on and turned) the mean reach past the true edge drops from 1.34 to 0.43 sample
-// spacings (jittered), 1.55 to 0.82 (jittered, 40 strays), 0.95 to 0.28 (line scanner) and 1.02
-// to 0.41 (line scanner, strays), with no hole more than 2 spacings inside any square and the
-// jittered plane closed; 0.6 opens 3-4 pixels of holes in three squares. Smaller discs on their
-// point do worse for the same closure (0.45 x d8: 0.58, 0.94, 0.42, 0.53; 0.4 opens holes), as
-// does the 150-degree gap (fewer outline points found: 0.70 shift 0.5 reaches 0.65, 1.07, 0.39,
-// 0.56). On lms400 the reference's holes inside stay 0.022% of its covered pixels (0.019% without
-// the outline discs, 0.010% with the sparse outliers below; lab/scripts/reference-closure --pictures
-// DIR [--no-outline] [--sparse F]).
+// How an unorganized scan's points become discs: a point's radius is `scale` x the distance to its
+// `neighbour`-th nearest neighbour, that distance capped at its `cap_quantile` quantile over the
+// scan (a stray return far from everything samples no surface, and gets no wider disc than most
+// points). Stray returns and sparse outliers get smaller discs, since they sample no surface; an
+// outline point (found by the angular gap its neighbours leave around it, as PCL's
+// BoundaryEstimation does) keeps its disc but moves it inward, which pulls the outline in further
+// than a smaller disc could before holes open. kSplatRule's values are the smallest discs that
+// close the reference's own surface (lab/scripts/reference-closure) with the outline nearest the
+// exact silhouette of sampled squares (lab/scripts/reference-truth); every measurement behind
+// them is in docs/tradeoff.md, "The reference render".
 struct SplatRule {
   int neighbour = 8;
   double scale = 0.7;
@@ -97,10 +74,8 @@ struct SplatRule {
   // distribution, made scale-free), drawn as a stray return (edge_scale). 0: none is.
   double sparse_factor = 0;
 };
-// sparse_factor 1.9: the smallest (steps of 0.1) at which no view of lms400's closure
-// measurement has more holes inside than without sparse outliers (lab/scripts/reference-closure
-// --sparse F; 1.8 opens some at 1920x1080 zoom 2, 1.5 opens 0.7% there); lms400's holes inside go
-// from 0.022% to 0.010% of its covered pixels, since clusters of sparse outliers left the holes.
+// The values chosen in docs/tradeoff.md, "The reference render" (sparse_factor: the smallest, in
+// steps of 0.1, at which no view of lms400's closure measurement has more holes inside).
 inline constexpr SplatRule kSplatRule{8, 0.7, 0.9, 0.6, 0.25, 16, 120, 0.7, 0.55, 1.9};
 
 struct ReferenceSurface {

@@ -1,6 +1,6 @@
 #pragma once
 // The view sweep's outputs (docs/tradeoff.md): one CSV row per cell and configuration, and a
-// markdown page with the table and issue 11's targets checked from the same numbers.
+// markdown page with the table and the any-size targets checked from the same numbers.
 
 #include <filesystem>
 #include <optional>
@@ -42,7 +42,7 @@ struct SweepCell {
 
 std::string sweepCsv(const std::string& label, const std::vector<SweepCell>& cells);
 // The table (before / before + fill / after side by side per cell) and, when the cells hold
-// "after" results, every target of issue 11 with its measured numbers.
+// "after" results, every any-size target (docs/tradeoff.md) with its measured numbers.
 // `models` says what before and after draw (their depths and sizes), under the heading.
 std::string sweepMarkdown(const std::string& label, const std::string& models,
                           const std::vector<SweepCell>& cells);

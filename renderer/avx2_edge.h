@@ -1,7 +1,7 @@
 #pragma once
 // fixed_simd's leaf parents and grandparents on the frame's edge (renderer/render_fixed_simd.cpp,
 // x86-64 with AVX2 only): the walk's checked path near the leaves. Inside the frame a leaf
-// parent's children are emitted without a test (simd_emit.h); one whose subtree straddles the
+// parent's children are emitted without a test (avx2_emit.h); one whose subtree straddles the
 // frame's edge must keep only its children's pixels on screen. Zoomed in on a small screen the
 // edge cuts many leaf parents (678 in lms400's 176x208 zoom 4 frame), so this path is in lanes
 // too, and it has a file of its own because it is the walk's other half: the clip of each child

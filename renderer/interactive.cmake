@@ -1,4 +1,4 @@
-# The interactive renderer (issue 5; included from renderer/CMakeLists.txt): the dual-resolution
+# The interactive renderer (included from renderer/CMakeLists.txt): the dual-resolution
 # render threads and their event sources. A library of its own so that the core renderer needs
 # no threads; still no OpenCV and no floating point, so it builds for the device too.
 find_package(Threads REQUIRED)

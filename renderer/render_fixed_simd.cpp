@@ -19,7 +19,7 @@
 // Leaf parents straddling the frame's edge keep, in lanes, only their children's pixels on screen
 // (renderer/avx2_edge.h); a model's last leaves (the eight-byte colour load would read past them)
 // use the scalar checked plot; off-screen subtrees are skipped, as in fixed_fast. The abort flag is
-// polled at kAbortCheckLevel. The frame's state and its batch: renderer/simd_frame.h.
+// polled at kAbortCheckLevel. The frame's state and its batch: renderer/avx2_frame.h.
 // Splats (FrameSetup::splat active): the same walk, instantiated again, emits each leaf's splat
 // from its first pixel (its position plus the footprint's offset, then shifted): up to 2 x 2
 // pixels as single-pixel entries, exactly the splat's pixels (renderer/avx2_emit.h), larger ones
@@ -144,9 +144,8 @@ __attribute__((target("avx2"), always_inline)) inline const std::uint8_t* emitSu
   constexpr bool kSplat = kEmit.emit != Emit::kPixel;
   // 2 x 2 boxes: a subtree of 512 leaves would need an empty batch (2048 entries), so the batch
   // was plotted before each such call, mostly small; such a call makes room per grandparent
-  // instead (256 entries). Measured: lms400 176x208 zoom 4 -0.7%, the default model 176x208
-  // zoom 2 -1.0%, 1920x1080 zoom 0.25 -1.9%; 2 x 1 boxes (lms400 320x240 zoom 2) +0.9%: not
-  // there.
+  // instead (256 entries). It pays for 2 x 2 boxes only, not for 2 x 1 ones (docs/splats.md,
+  // "The walk near the frame's edge, cheaper").
   constexpr bool kRoomPerGrandparent =
       kEmit.emit == Emit::kSplatPixels && kEmit.box_columns * kEmit.box_rows == 4;
   makeRoom<kEmit>(f, kRoomPerGrandparent && levels_below == 3 ? 2 : levels_below);

@@ -1,6 +1,7 @@
 // The strict option parsing every tool shares (cli/numbers.h, cli/real_numbers.h,
 // cli/arguments.h): the whole text is the value, it is range-checked, and the message names the
-// option. Each wrapping or truncation the hardening sweep found (issue 16 item 7) is a case here.
+// option. Each wrapping or truncation the hardening sweep found (its class 7, docs/robustness.md)
+// is a case here.
 #include <gtest/gtest.h>
 
 #include <functional>

@@ -1,6 +1,6 @@
-// Library users get refusals, not crashes (issue 16 item 13): every public drawing entry point
+// Library users get refusals, not crashes: every public drawing entry point
 // checks in O(1), in release builds too, that its arguments fit together, and draws nothing
-// otherwise. And the one-call path (item 14) draws what the detailed API draws.
+// otherwise. And the one-call path (RgbRenderer) draws what the detailed API draws.
 #include <gtest/gtest.h>
 
 #include <algorithm>

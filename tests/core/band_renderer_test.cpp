@@ -235,7 +235,7 @@ TEST_F(BandRenderer, RefusesWhatItCannotDraw) {
   EXPECT_EQ(bands({Variant::kFixedFast, 8, true, {}}, {buffer, {}, history}, BandSink{}), BandError::kNoSink);
   // A level of another depth than the set-up's, a set-up buildFrameSetup would not make, an index
   // level the level cannot have, an index that does not fit the level: refused before a band is
-  // flushed (issue 16, API misuse), by every variant that draws bands.
+  // flushed (API misuse, as tests/core/api_misuse_test.cpp), by every variant that draws bands.
   std::vector<SubtreeSize> storage(4096);
   const BandIndex index = buildBandIndex(level, 4, storage);
   ASSERT_EQ(index.level, 4);

@@ -1,4 +1,4 @@
-// Numerical stability of the integer decoder at the extremes (issue 3): every decoded leaf stays
+// Numerical stability of the integer decoder at the extremes: every decoded leaf stays
 // within the proven bound of exact rational arithmetic, for every degree, for the raw angles next
 // to each quarter turn, at the smallest and largest zoom, at depth 1 and the deepest depth, on 1x1
 // and 4096x4096 framebuffers, and for a model touching every face of its cube. The asan preset runs

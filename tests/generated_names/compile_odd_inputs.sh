@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Generated sources compile for every name octopoint-prepare accepts, and nothing from outside
-# reaches them unescaped (issue 16 item 8). Prepares a small scan, stored under a path full of
+# reaches them unescaped (docs/robustness.md). Prepares a small scan, stored under a path full of
 # characters that mean something to a compiler (a newline, a backslash at a line's end, quotes,
 # "*/", "??/"), under names that are keywords elsewhere, library names or the generator's own
 # helper names, in both emit styles, then compiles every generated source together with an app
@@ -43,14 +43,14 @@ for name in "${names[@]}"; do
   prepare_as "$name" strings "$out" || continue
   write_app "$out" "$name"
   for std in c++20 gnu++20; do  # GNU mode predefines lower-case macros (linux, unix)
-    "$cxx" -std=$std -fsyntax-only -Wall -Wextra -Werror -I"$source_dir" -I"$out" "$out"/*.cpp >"$work/log" 2>&1 ||
+    "$cxx" -std=$std -fsyntax-only -Wall -Wextra -Werror -I"$source_dir/include" -I"$out" "$out"/*.cpp >"$work/log" 2>&1 ||
       fail "--name $name, -std=$std does not compile: $(head -5 "$work/log")"
   done
 done
 # Both emit styles, and two models whose names look like each other's arrays, linked into one app.
 prepare_as x bytes "$work/two" && prepare_as x_depth3_nodes strings "$work/two" && {
   write_app "$work/two" x x_depth3_nodes
-  "$cxx" -std=c++20 -Wall -Wextra -Werror -I"$source_dir" -I"$work/two" -o "$work/two/app" "$work/two"/*.cpp \
+  "$cxx" -std=c++20 -Wall -Wextra -Werror -I"$source_dir/include" -I"$work/two" -o "$work/two/app" "$work/two"/*.cpp \
     >"$work/log" 2>&1 || fail "two models do not link together: $(head -5 "$work/log")"
   "$work/two/app" || fail "the linked app does not see both models"
 }

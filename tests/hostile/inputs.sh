@@ -1,6 +1,6 @@
 # shellcheck shell=bash disable=SC2154,SC2034,SC2059  # lib.sh sets the variables; printf formats are built on purpose
 # The hostile sweep's input classes (sourced by lab/scripts/hostile-sweep after tests/hostile/lib.sh):
-# files that cost far more than they weigh (issue 16 item 1), files that are not files or are too
+# files that cost far more than they weigh (1), files that are not files or are too
 # big (3), ascii data lines that do not parse (5) and scans whose metric size the model must hold
 # (6). Every file is made here, byte by byte.
 

@@ -31,7 +31,7 @@ sweepInit() {
   local build=$1
   quick=$2 verbose=$3
   RENDER=$build/tools/octopoint-render PREPARE=$build/tools/octopoint-prepare
-  TRADEOFF=$build/app/octopoint-tradeoff VIEW=$build/tools/octopoint-view
+  TRADEOFF=$build/lab/octopoint-tradeoff VIEW=$build/tools/octopoint-view
   local tool
   for tool in "$RENDER" "$PREPARE" "$TRADEOFF"; do
     [ -x "$tool" ] || { echo "hostile-sweep: $tool is not built (cmake --build --preset release)" >&2; return 1; }

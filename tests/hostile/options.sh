@@ -1,6 +1,6 @@
 # shellcheck shell=bash disable=SC2154,SC2034,SC2059  # lib.sh sets the variables; printf formats are built on purpose
 # The hostile sweep's option and scene classes (sourced by lab/scripts/hostile-sweep after
-# tests/hostile/lib.sh): scenes that ask for unbounded work (issue 16 item 2), outputs too large
+# tests/hostile/lib.sh): scenes that ask for unbounded work (2), outputs too large
 # (4), numbers that would wrap or truncate (7), model names the generated sources cannot carry
 # (8), octopoint-tradeoff's --depths and --fraction-bits (11) and what the messages say (12).
 

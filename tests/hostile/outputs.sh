@@ -1,6 +1,6 @@
 # shellcheck shell=bash disable=SC2154,SC2034,SC2059  # lib.sh sets the variables; printf formats are built on purpose
 # The hostile sweep's output classes (sourced by lab/scripts/hostile-sweep after tests/hostile/lib.sh):
-# outputs that are not regular files, for every tool that writes (issue 16 item 9), and signals
+# outputs that are not regular files, for every tool that writes (9), and signals
 # while the preparer puts its files in place (10).
 
 sweepClass 9 "outputs that are not regular files, every tool"

@@ -38,7 +38,8 @@ const char* nameOf(Sampling sampling) {
   return sampling == Sampling::kLines ? "line scanner" : "jittered";
 }
 
-// kSplatRule without its outline discs (every disc on its own point): the rule before session 9.
+// kSplatRule without its outline discs (every disc on its own point): the rule before outline
+// discs were moved inward.
 SplatRule withoutOutline() {
   SplatRule rule = kSplatRule;
   rule.outline_neighbours = 0;
@@ -69,10 +70,9 @@ TEST(ReferenceTruth, DiscsEndWithinHalfASpacingOfTheTrueEdgeWithNoHoleInside) {
 }
 
 // 40 stray returns 0.5 to 3 sample steps off the square's edge: kSplatRule's small disc for them
-// keeps the reference's spill within the bound at every size and zoom (measured: 0.82 spacings
-// jittered, 0.41 line scanner, spread along the outline); strays drawn as surface samples (no stray
-// rule; their outline discs then move toward the square) spill more (1.23, 0.53). Without the
-// outline discs: 1.55, 1.02.
+// keeps the reference's spill within the bound at every size and zoom; strays drawn as surface
+// samples (no stray rule) spill more. The reaches measured are in docs/tradeoff.md, "The reference
+// render".
 TEST(ReferenceTruth, StrayReturnsSpillLessThanSurfaceSamples) {
   struct Case {
     Sampling sampling;

@@ -1,4 +1,4 @@
-// The model's metric size (issue: a u32 count of micrometres held 1 um .. 4.29 km and stored
+// The model's metric size (before: a u32 count of micrometres held 1 um .. 4.29 km and stored
 // anything else wrong without a word). Version 2 stores picometres in a u64: every cube the
 // preparer accepts (1 nm .. the 2,000 km that coordinates within +-10^6 m can span) is recorded to
 // within 0.05%, through the `.oct` file and the generated sources alike; a smaller one is refused.

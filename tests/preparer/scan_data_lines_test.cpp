@@ -1,6 +1,6 @@
-// Scan data that PCL would read into silently wrong points, and sizes that would cost far more
-// than the file weighs (issue 16 items 1 and 5): every ascii data line must parse as its header
-// declares, and a binary_compressed size must be one LZF can reach from the bytes present.
+// Scan data that PCL would read into silently wrong points, and sizes that would cost far more than
+// the file weighs (docs/robustness.md, classes 1 and 5): every ascii data line must parse as its
+// header declares, and a binary_compressed size must be one LZF can reach from the bytes present.
 #include <gtest/gtest.h>
 #include <unistd.h>
 

@@ -69,9 +69,9 @@ TEST(SceneFile, ErrorsNameTheKeyOnOneLine) {
   EXPECT_EQ(syntax.find('\n'), std::string::npos);
 }
 
-// What the hardening sweep found (issue 16 items 2, 7 and 12): numbers out of double's range name
-// the file and key, junk after a NUL byte is refused, echoed keys are cut, and a scene may not ask
-// for unbounded work.
+// What the hardening sweep found (docs/robustness.md, classes 2, 7 and 12): numbers out of double's
+// range name the file and key, junk after a NUL byte is refused, echoed keys are cut, and a scene
+// may not ask for unbounded work.
 TEST(SceneFile, HostileNumbersKeysAndBytesAreRefusedNamingFileAndKey) {
   EXPECT_EQ(errorOf(R"({"zoom": [1, 1e400]})"),
             "scene.json: not valid JSON: number overflow parsing '1e400' (key 'zoom')");

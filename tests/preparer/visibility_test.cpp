@@ -25,7 +25,7 @@ constexpr int kDepth = 7;
 constexpr int kWidth = 160;
 constexpr int kHeight = 120;
 
-// The frontal scene: yaw +-30 degrees, pitch +-20 degrees.
+// The frontal scene of docs/scenes/tabletop_frontal.json: yaw +-30 degrees, pitch +-20 degrees.
 prepare::Scene frontalScene() {
   prepare::Scene scene;
   scene.yaw_deg = prepare::Range{-30, 30};
