@@ -20,6 +20,7 @@
 #include <atomic>
 #include <chrono>
 #include <ctime>
+#include <optional>
 #include <random>
 #include <string>
 #include <thread>
@@ -28,8 +29,8 @@
 
 #include "bench/register_benchmarks.h"
 #include "octopoint/models.h"
-#include "renderer/level_of_detail.h"
 #include "octopoint/render.h"
+#include "renderer/level_of_detail.h"
 
 namespace octopoint {
 namespace {
@@ -69,6 +70,62 @@ struct Case {
   bool depth_auto;  // else the finest level, one pixel per leaf
 };
 
+// The median time of 21 frames, to spread the abort points over the frame; none when
+// renderLevel refuses the frame.
+std::optional<std::int64_t> medianFrameNs(Variant variant, const LevelView& level,
+                                          const FrameSetup& setup, Framebuffer& frame) {
+  std::vector<std::int64_t> frame_ns;
+  for (int i = 0; i < 21; ++i) {
+    frame.clear();
+    const Clock::time_point start = Clock::now();
+    if (!renderLevel(variant, level, setup, frame)) return std::nullopt;
+    frame_ns.push_back(nanosecondsBetween(start, Clock::now()));
+  }
+  std::nth_element(frame_ns.begin(), frame_ns.begin() + 10, frame_ns.end());
+  return frame_ns[10];
+}
+
+// One render on a thread of its own, aborted `abort_after` after it began.
+struct AbortSample {
+  bool complete = false;  // the frame completed before the abort: no sample
+  std::int64_t latency_ns = 0;
+  bool cpu_clock = false;  // whether cpu_latency_ns was measured
+  std::int64_t cpu_latency_ns = 0;
+};
+
+AbortSample abortOnce(Variant variant, const LevelView& level, const FrameSetup& setup,
+                      Framebuffer& frame, std::chrono::nanoseconds abort_after) {
+  std::atomic<bool> abort{false};
+  std::atomic<bool> started{false};
+  bool complete = false;
+  Clock::time_point returned;
+  std::int64_t returned_cpu_ns = 0;
+  std::thread renderer([&] {
+    frame.clear();
+    started.store(true);
+    complete = renderLevel(variant, level, setup, frame, &abort);
+    returned = Clock::now();
+    returned_cpu_ns = cpuNanoseconds(CLOCK_THREAD_CPUTIME_ID);
+  });
+  clockid_t renderer_cpu_clock{};
+  const bool cpu_clock = pthread_getcpuclockid(renderer.native_handle(), &renderer_cpu_clock) == 0;
+  while (!started.load()) {
+  }
+  const Clock::time_point abort_at = Clock::now() + abort_after;
+  while (Clock::now() < abort_at) {
+  }
+  const std::int64_t requested_cpu_ns = cpu_clock ? cpuNanoseconds(renderer_cpu_clock) : 0;
+  const Clock::time_point requested = Clock::now();
+  abort.store(true);
+  renderer.join();  // after join, `complete` and `returned` are ours to read
+  AbortSample sample;
+  sample.complete = complete;
+  sample.latency_ns = std::max<std::int64_t>(0, nanosecondsBetween(requested, returned));
+  sample.cpu_clock = cpu_clock;
+  sample.cpu_latency_ns = std::max<std::int64_t>(0, returned_cpu_ns - requested_cpu_ns);
+  return sample;
+}
+
 void abortLatency(benchmark::State& state, Case c) {
   ModelIssue issue;
   const auto model = ModelView::fromEmbedded(*models::defaultModel(), &issue);
@@ -89,62 +146,28 @@ void abortLatency(benchmark::State& state, Case c) {
   if (!c.depth_auto) setup.splat = SplatFootprint{};
   const LevelView& level = *chosen;
   Framebuffer frame(camera.width, camera.height);
-
-  // The frame time, to spread the abort points over the frame.
-  std::vector<std::int64_t> frame_ns;
-  for (int i = 0; i < 21; ++i) {
-    frame.clear();
-    const Clock::time_point start = Clock::now();
-    if (!renderLevel(c.variant, level, setup, frame)) {
-      state.SkipWithError("renderLevel refused");
-      return;
-    }
-    frame_ns.push_back(nanosecondsBetween(start, Clock::now()));
+  const std::optional<std::int64_t> median = medianFrameNs(c.variant, level, setup, frame);
+  if (!median) {
+    state.SkipWithError("renderLevel refused");
+    return;
   }
-  std::nth_element(frame_ns.begin(), frame_ns.begin() + 10, frame_ns.end());
-  const std::int64_t median_frame_ns = frame_ns[10];
+  const std::int64_t median_frame_ns = *median;
 
   std::mt19937_64 random(42);
   std::uniform_int_distribution<std::int64_t> abort_after_ns(0, median_frame_ns / 2 - 1);
   std::vector<std::int64_t> latencies_ns, cpu_latencies_ns;
   std::int64_t completed_first = 0;
   for (auto _ : state) {
-    std::atomic<bool> abort{false};
-    std::atomic<bool> started{false};
-    bool complete = false;
-    Clock::time_point returned;
-    std::int64_t returned_cpu_ns = 0;
-    std::thread renderer([&] {
-      frame.clear();
-      started.store(true);
-      complete = renderLevel(c.variant, level, setup, frame, &abort);
-      returned = Clock::now();
-      returned_cpu_ns = cpuNanoseconds(CLOCK_THREAD_CPUTIME_ID);
-    });
-    clockid_t renderer_cpu_clock{};
-    const bool cpu_clock =
-        pthread_getcpuclockid(renderer.native_handle(), &renderer_cpu_clock) == 0;
-    while (!started.load()) {
-    }
-    const Clock::time_point abort_at =
-        Clock::now() + std::chrono::nanoseconds(abort_after_ns(random));
-    while (Clock::now() < abort_at) {
-    }
-    const std::int64_t requested_cpu_ns = cpu_clock ? cpuNanoseconds(renderer_cpu_clock) : 0;
-    const Clock::time_point requested = Clock::now();
-    abort.store(true);
-    renderer.join();  // after join, `complete` and `returned` are ours to read
-    if (complete) {
+    const AbortSample sample =
+        abortOnce(c.variant, level, setup, frame, std::chrono::nanoseconds(abort_after_ns(random)));
+    if (sample.complete) {
       ++completed_first;
       state.SetIterationTime(0);
       continue;
     }
-    const std::int64_t latency_ns =
-        std::max<std::int64_t>(0, nanosecondsBetween(requested, returned));
-    latencies_ns.push_back(latency_ns);
-    if (cpu_clock)
-      cpu_latencies_ns.push_back(std::max<std::int64_t>(0, returned_cpu_ns - requested_cpu_ns));
-    state.SetIterationTime(static_cast<double>(latency_ns) * 1e-9);
+    latencies_ns.push_back(sample.latency_ns);
+    if (sample.cpu_clock) cpu_latencies_ns.push_back(sample.cpu_latency_ns);
+    state.SetIterationTime(static_cast<double>(sample.latency_ns) * 1e-9);
   }
   if (latencies_ns.empty()) return;
   setLatencyCounters(state, "", latencies_ns);

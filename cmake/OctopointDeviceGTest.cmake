@@ -1,10 +1,12 @@
 # GoogleTest for the device build. Debian ships no ARM libgtest, but libgtest-dev installs the
 # sources in /usr/src/googletest: compile them with the cross toolchain. Its CMakeLists defines the
-# same GTest::gtest / GTest::gtest_main targets as find_package(GTest), so tests/ and targets/armel/ link
-# them either way.
-set(octopoint_googletest_source /usr/src/googletest CACHE PATH "GoogleTest sources (Debian libgtest-dev)")
+# same GTest::gtest / GTest::gtest_main targets as find_package(GTest), so tests/ and targets/armel/
+# link them either way.
+set(octopoint_googletest_source /usr/src/googletest CACHE PATH
+    "GoogleTest sources (Debian libgtest-dev)")
 if(NOT EXISTS ${octopoint_googletest_source}/CMakeLists.txt)
-  message(FATAL_ERROR "No GoogleTest sources in ${octopoint_googletest_source}: apt-get install libgtest-dev")
+  message(FATAL_ERROR
+          "No GoogleTest sources in ${octopoint_googletest_source}: apt-get install libgtest-dev")
 endif()
 set(BUILD_GMOCK OFF CACHE BOOL "" FORCE)
 set(INSTALL_GTEST OFF CACHE BOOL "" FORCE)

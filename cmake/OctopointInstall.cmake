@@ -35,7 +35,8 @@ set_target_properties(octopoint_warnings PROPERTIES EXPORT_NAME warnings)
 install(TARGETS ${octopoint_exported} octopoint_warnings EXPORT octopointTargets
         ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR})
 if(TARGET octopoint-prepare)
-  install(TARGETS octopoint-prepare EXPORT octopointTargets RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
+  install(TARGETS octopoint-prepare EXPORT octopointTargets RUNTIME DESTINATION
+          ${CMAKE_INSTALL_BINDIR})
   # Not exported: octopoint-prepare runs it from its own directory (codegen/whole_scan.h).
   install(TARGETS octopoint-prepare-pcl RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
 endif()
@@ -50,6 +51,7 @@ configure_package_config_file(${PROJECT_SOURCE_DIR}/cmake/octopointConfig.cmake.
   ${PROJECT_BINARY_DIR}/octopointConfig.cmake INSTALL_DESTINATION ${octopoint_cmake_dir})
 write_basic_package_version_file(${PROJECT_BINARY_DIR}/octopointConfigVersion.cmake
   COMPATIBILITY SameMinorVersion)
-install(FILES ${PROJECT_BINARY_DIR}/octopointConfig.cmake ${PROJECT_BINARY_DIR}/octopointConfigVersion.cmake
+install(FILES ${PROJECT_BINARY_DIR}/octopointConfig.cmake
+              ${PROJECT_BINARY_DIR}/octopointConfigVersion.cmake
               ${PROJECT_SOURCE_DIR}/cmake/OctopointAddModel.cmake
         DESTINATION ${octopoint_cmake_dir})

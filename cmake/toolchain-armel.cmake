@@ -1,9 +1,9 @@
 # The constrained device (docs/design.md section 8): an ARMv5TE CPU without FPU, like the paper's
 # phones. Debian's arm-linux-gnueabi cross compiler (package g++-arm-linux-gnueabi) with soft-float
 # code, so every floating-point operation becomes a libgcc helper call (__aeabi_fadd, __aeabi_d2iz,
-# ...), which targets/armel/check_no_soft_float.cmake can see with nm. Programs are linked statically and
-# run under qemu-arm (package qemu-user) without a target sysroot; ctest does that through
-# CMAKE_CROSSCOMPILING_EMULATOR. Used by the `armel` preset (docs/device.md).
+# ...), which targets/armel/check_no_soft_float.cmake can see with nm. Programs are linked
+# statically and run under qemu-arm (package qemu-user) without a target sysroot; ctest does that
+# through CMAKE_CROSSCOMPILING_EMULATOR. Used by the `armel` preset (docs/device.md).
 set(CMAKE_SYSTEM_NAME Linux)
 set(CMAKE_SYSTEM_PROCESSOR armv5te)
 

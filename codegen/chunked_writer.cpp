@@ -8,9 +8,9 @@
 #include "codegen/level_voxels.h"
 #include "codegen/octree_encoder.h"
 #include "codegen/prepare_error.h"
+#include "octopoint/model.h"
 #include "octopoint/progressive.h"
 #include "renderer/crc32.h"
-#include "octopoint/model.h"
 
 namespace octopoint::prepare {
 namespace {
@@ -109,50 +109,57 @@ std::vector<Chunk> makeChunks(const LevelVoxels& coarse, const LevelVoxels& fine
   return chunks;
 }
 
-// The chunked image with chunks of `options.target_chunk_bytes`; fills `layout`.
-std::vector<std::uint8_t> serializeLevels(const PreparedModel& model,
-                                          const std::vector<LevelVoxels>& voxels,
-                                          const ChunkedOptions& options, ChunkedLayout* layout) {
-  // The base: the coarsest depth itself when its head fits the budget and finer depths remain,
-  // else the finest coarser depth that fits (depth 1 at worst: at most 8 voxels).
-  std::size_t first_chunked = 0;
-  LevelVoxels base;
+// The base: the coarsest depth itself when its head fits the budget and finer depths remain,
+// else the finest coarser depth that fits (depth 1 at worst: at most 8 voxels). Returns the index
+// of the first depth of `voxels` to chunk (0 when the base is added, 1 when it is the coarsest).
+std::size_t chooseBase(const PreparedModel& model, const std::vector<LevelVoxels>& voxels,
+                       const ChunkedOptions& options, LevelVoxels& base) {
   if (model.levels.size() >= 2 && headBytes(model.palette.size(), model.levels.size(),
                                             model.levels.front()) <= options.head_budget) {
     base = voxels.front();
-    first_chunked = 1;
-  } else {
-    for (int depth = model.levels.front().depth - 1; depth >= 1; --depth) {
-      base = coarsen(voxels.front(), depth, model.palette);
-      if (depth == 1 || headBytes(model.palette.size(), model.levels.size() + 1,
-                                  encodeLevel(base)) <= options.head_budget) {
-        break;
-      }
+    return 1;
+  }
+  for (int depth = model.levels.front().depth - 1; depth >= 1; --depth) {
+    base = coarsen(voxels.front(), depth, model.palette);
+    if (depth == 1 || headBytes(model.palette.size(), model.levels.size() + 1, encodeLevel(base)) <=
+                          options.head_budget) {
+      break;
     }
   }
-  const PreparedLevel base_level = encodeLevel(base);
+  return 0;
+}
 
+// Each depth from `first_chunked` on as chunks refining the one before it (the base first); a
+// depth's regions are never coarser than the one before it's.
+std::vector<Level> chunkLevels(const LevelVoxels& base, const std::vector<LevelVoxels>& voxels,
+                               std::size_t first_chunked, std::size_t target_chunk_bytes) {
   std::vector<Level> levels;
   const LevelVoxels* coarser = &base;
   int region_level = 0;
   for (std::size_t i = first_chunked; i < voxels.size(); ++i) {
     std::vector<Chunk> chunks =
-        makeChunks(*coarser, voxels[i], region_level, options.target_chunk_bytes, &region_level);
+        makeChunks(*coarser, voxels[i], region_level, target_chunk_bytes, &region_level);
     levels.push_back(Level{voxels[i].depth, region_level, std::move(chunks)});
     coarser = &voxels[i];
   }
+  return levels;
+}
 
-  // Layout: head, record tables, chunks.
-  const std::size_t level_count = levels.size() + 1;
-  const std::size_t head_bytes = headBytes(model.palette.size(), level_count, base_level);
-  std::uint64_t chunk_count = 0;
-  for (const Level& level : levels) chunk_count += level.chunks.size();
-  std::uint64_t offset = head_bytes + chunked::kRecordBytes * chunk_count;
+// Each level's record table (a 20-byte record per chunk) and where its chunks start, after the
+// head and all the tables.
+struct RecordTables {
   std::vector<std::vector<std::uint8_t>> tables;
   std::vector<std::uint64_t> level_offsets;
+  std::uint64_t file_bytes = 0;
+};
+
+RecordTables recordTables(const std::vector<Level>& levels, std::size_t head_bytes,
+                          std::uint64_t chunk_count) {
+  RecordTables records;
+  std::uint64_t offset = head_bytes + chunked::kRecordBytes * chunk_count;
   for (const Level& level : levels) {
-    level_offsets.push_back(offset);
-    std::vector<std::uint8_t>& table = tables.emplace_back();
+    records.level_offsets.push_back(offset);
+    std::vector<std::uint8_t>& table = records.tables.emplace_back();
     for (const Chunk& chunk : level.chunks) {
       putU32(table, chunk.region);
       putU32(table, static_cast<std::uint32_t>(chunk.bytes.size()));
@@ -162,17 +169,56 @@ std::vector<std::uint8_t> serializeLevels(const PreparedModel& model,
       offset += chunk.bytes.size();
     }
   }
-  const std::uint64_t file_bytes = offset;
+  records.file_bytes = offset;
+  return records;
+}
+
+ChunkedLayout describeLayout(const std::vector<Level>& levels, int base_depth, bool base_added,
+                             std::size_t head_bytes, std::uint64_t chunk_count,
+                             std::size_t file_bytes) {
+  ChunkedLayout layout;
+  layout.base_depth = base_depth;
+  layout.base_added = base_added;
+  for (const Level& level : levels) {
+    layout.depths.push_back(level.depth);
+    layout.region_levels.push_back(level.region_level);
+    layout.chunks.push_back(level.chunks.size());
+    std::size_t bytes = 0;
+    for (const Chunk& chunk : level.chunks) bytes += chunk.bytes.size();
+    layout.chunk_bytes.push_back(bytes);
+  }
+  layout.head_bytes = head_bytes;
+  layout.table_bytes = chunked::kRecordBytes * chunk_count;
+  layout.file_bytes = file_bytes;
+  return layout;
+}
+
+// The chunked image with chunks of `options.target_chunk_bytes`; fills `layout`.
+std::vector<std::uint8_t> serializeLevels(const PreparedModel& model,
+                                          const std::vector<LevelVoxels>& voxels,
+                                          const ChunkedOptions& options, ChunkedLayout* layout) {
+  LevelVoxels base;
+  const std::size_t first_chunked = chooseBase(model, voxels, options, base);
+  const PreparedLevel base_level = encodeLevel(base);
+  const std::vector<Level> levels =
+      chunkLevels(base, voxels, first_chunked, options.target_chunk_bytes);
+
+  // Layout: head, record tables, chunks.
+  const std::size_t level_count = levels.size() + 1;
+  const std::size_t head_bytes = headBytes(model.palette.size(), level_count, base_level);
+  std::uint64_t chunk_count = 0;
+  for (const Level& level : levels) chunk_count += level.chunks.size();
+  const RecordTables records = recordTables(levels, head_bytes, chunk_count);
 
   std::vector<std::uint8_t> out(format::kMagic, format::kMagic + sizeof format::kMagic);
   putU16(out, chunked::kFormatVersion);
   out.push_back(static_cast<std::uint8_t>(level_count));
-  out.push_back(0);                                            // flags
+  out.push_back(0);                 // flags
   putU64(out, model.cube_edge_pm);  // picometres, as format version 2
   putU16(out, static_cast<std::uint32_t>(model.palette.size()));
   putU16(out, 0);  // no normals
   putU32(out, static_cast<std::uint32_t>(head_bytes));
-  putU64(out, file_bytes);
+  putU64(out, records.file_bytes);
   putU32(out, static_cast<std::uint32_t>(base_level.nodes.size()));
   putU32(out, static_cast<std::uint32_t>(base_level.leaves.size()));
   for (const Rgb8& colour : model.palette) out.insert(out.end(), colour.begin(), colour.end());
@@ -184,37 +230,22 @@ std::vector<std::uint8_t> serializeLevels(const PreparedModel& model,
     out.push_back(static_cast<std::uint8_t>(levels[j].region_level));
     putU16(out, 0);
     putU32(out, static_cast<std::uint32_t>(levels[j].chunks.size()));
-    putU32(out, crc32(tables[j]));
-    putU64(out, level_offsets[j]);
+    putU32(out, crc32(records.tables[j]));
+    putU64(out, records.level_offsets[j]);
   }
   out.insert(out.end(), base_level.nodes.begin(), base_level.nodes.end());
   out.insert(out.end(), base_level.leaves.begin(), base_level.leaves.end());
   putU32(out, crc32(out));
   assert(out.size() == head_bytes);
-  for (const std::vector<std::uint8_t>& table : tables)
+  for (const std::vector<std::uint8_t>& table : records.tables)
     out.insert(out.end(), table.begin(), table.end());
   for (const Level& level : levels) {
     for (const Chunk& chunk : level.chunks)
       out.insert(out.end(), chunk.bytes.begin(), chunk.bytes.end());
   }
-  assert(out.size() == file_bytes);
-
-  {
-    *layout = {};
-    layout->base_depth = base.depth;
-    layout->base_added = first_chunked == 0;
-    for (const Level& level : levels) {
-      layout->depths.push_back(level.depth);
-      layout->region_levels.push_back(level.region_level);
-      layout->chunks.push_back(level.chunks.size());
-      std::size_t bytes = 0;
-      for (const Chunk& chunk : level.chunks) bytes += chunk.bytes.size();
-      layout->chunk_bytes.push_back(bytes);
-    }
-    layout->head_bytes = head_bytes;
-    layout->table_bytes = chunked::kRecordBytes * chunk_count;
-    layout->file_bytes = out.size();
-  }
+  assert(out.size() == records.file_bytes);
+  *layout =
+      describeLayout(levels, base.depth, first_chunked == 0, head_bytes, chunk_count, out.size());
   return out;
 }
 

@@ -154,6 +154,30 @@ std::uint64_t walkExtendedRecords(const InputFile& file, ByteWindow& window, std
   return at;
 }
 
+// The point format must be one LAS has, allowed by the file's version, and its records long
+// enough for it.
+void checkPointFormat(const std::filesystem::path& path, const LasHeader& header) {
+  const int minor = header.version_minor;
+  if (header.point_format >= static_cast<int>(kLasFormatBytes.size())) {
+    fail(path, "unknown point format " + std::to_string(header.point_format) + " (LAS has 0 to 10)",
+         byteWhere(104));
+  }
+  if (header.point_format > 5 && minor < 4) {
+    fail(path,
+         "point format " + std::to_string(header.point_format) +
+             " needs LAS 1.4, the file is LAS 1." + std::to_string(minor),
+         byteWhere(104));
+  }
+  const std::uint16_t needed = kLasFormatBytes[static_cast<std::size_t>(header.point_format)];
+  if (header.record_length < needed) {
+    fail(path,
+         "point records of " + std::to_string(header.record_length) +
+             " bytes are shorter than format " + std::to_string(header.point_format) + "'s " +
+             std::to_string(needed),
+         byteWhere(105));
+  }
+}
+
 // Reads the fixed part of the header; fails on what it alone can tell.
 LasHeader readFixedHeader(const InputFile& file, std::vector<std::uint8_t>& head,
                           std::uint64_t& header_bytes) {
@@ -197,25 +221,8 @@ LasHeader readFixedHeader(const InputFile& file, std::vector<std::uint8_t>& head
              " bytes, the file " + std::to_string(size),
          "LAS header");
   }
-  if (header.point_format >= static_cast<int>(kLasFormatBytes.size())) {
-    fail(path, "unknown point format " + std::to_string(header.point_format) + " (LAS has 0 to 10)",
-         byteWhere(104));
-  }
-  if (header.point_format > 5 && minor < 4) {
-    fail(path,
-         "point format " + std::to_string(header.point_format) +
-             " needs LAS 1.4, the file is LAS 1." + std::to_string(minor),
-         byteWhere(104));
-  }
   header.record_length = readLittle<std::uint16_t>(&head[105]);
-  const std::uint16_t needed = kLasFormatBytes[static_cast<std::size_t>(header.point_format)];
-  if (header.record_length < needed) {
-    fail(path,
-         "point records of " + std::to_string(header.record_length) +
-             " bytes are shorter than format " + std::to_string(header.point_format) + "'s " +
-             std::to_string(needed),
-         byteWhere(105));
-  }
+  checkPointFormat(path, header);
   header.rgb_offset = kRgbOffset[static_cast<std::size_t>(header.point_format)];
   header.point_offset = readLittle<std::uint32_t>(&head[96]);
   header.vlr_count = readLittle<std::uint32_t>(&head[100]);
@@ -238,42 +245,43 @@ LasHeader readFixedHeader(const InputFile& file, std::vector<std::uint8_t>& head
   return header;
 }
 
-}  // namespace
-
-LasHeader readLasHeader(const InputFile& file) {
+// The point data must start after the header and within the file.
+void checkPointOffset(const InputFile& file, const LasHeader& header, std::uint64_t header_bytes) {
   const auto& path = file.path();
-  const std::uint64_t size = file.size();
-  std::vector<std::uint8_t> head;
-  std::uint64_t header_bytes = 0;
-  LasHeader header = readFixedHeader(file, head, header_bytes);
-
   if (header.point_offset < header_bytes) {
     fail(path,
          "the point data at byte " + std::to_string(header.point_offset) +
              " would start inside the " + std::to_string(header_bytes) + "-byte header",
          byteWhere(96));
   }
-  if (header.point_offset > size) {
+  if (header.point_offset > file.size()) {
     fail(path,
          "truncated: the point data should start at byte " + std::to_string(header.point_offset) +
-             ", the file has " + std::to_string(size) + " bytes",
+             ", the file has " + std::to_string(file.size()) + " bytes",
          byteWhere(96));
   }
-  ByteWindow window(file);
-  walkVlrs(file, window, header_bytes, header);
-  if (header.point_count == 0) fail(path, "empty cloud (0 points)", "LAS header point count");
-  checkScaleAndOffset(file, header);
+}
 
+// Where the point data ends, after checking the file holds every point the header declares.
+std::uint64_t pointDataEnd(const InputFile& file, const LasHeader& header) {
   const std::uint64_t point_bytes = saturatingMul(header.point_count, header.record_length);
-  const std::uint64_t available = size - header.point_offset;
+  const std::uint64_t available = file.size() - header.point_offset;
   if (point_bytes > available) {
-    fail(path,
+    fail(file.path(),
          "truncated: header declares " + std::to_string(header.point_count) + " points of " +
              std::to_string(header.record_length) + " bytes, but " + std::to_string(available) +
              " bytes follow the start of the point data",
          "point data at byte " + std::to_string(header.point_offset));
   }
-  const std::uint64_t points_end = header.point_offset + point_bytes;
+  return header.point_offset + point_bytes;
+}
+
+// Where the EVLRs (or LAS 1.3's waveform record) end, at least `points_end`, after checking they
+// start after the points with nothing between.
+std::uint64_t extendedRecordsEnd(const InputFile& file, ByteWindow& window,
+                                 const std::vector<std::uint8_t>& head, const LasHeader& header,
+                                 std::uint64_t points_end) {
+  const auto& path = file.path();
   std::uint64_t accounted_end = points_end;
   if (header.evlr_count > 0) {
     const std::uint64_t evlr_start = readLittle<std::uint64_t>(&head[235]);
@@ -308,6 +316,24 @@ LasHeader readLasHeader(const InputFile& file) {
     accounted_end = std::max(
         accounted_end, walkExtendedRecords(file, window, waveform_start, 1, "waveform record"));
   }
+  return accounted_end;
+}
+
+}  // namespace
+
+LasHeader readLasHeader(const InputFile& file) {
+  const auto& path = file.path();
+  const std::uint64_t size = file.size();
+  std::vector<std::uint8_t> head;
+  std::uint64_t header_bytes = 0;
+  LasHeader header = readFixedHeader(file, head, header_bytes);
+  checkPointOffset(file, header, header_bytes);
+  ByteWindow window(file);
+  walkVlrs(file, window, header_bytes, header);
+  if (header.point_count == 0) fail(path, "empty cloud (0 points)", "LAS header point count");
+  checkScaleAndOffset(file, header);
+  const std::uint64_t points_end = pointDataEnd(file, header);
+  const std::uint64_t accounted_end = extendedRecordsEnd(file, window, head, header, points_end);
   // A count too small (a 1.2 file past 2^32 points, a header that lies) leaves points unread:
   // refuse rather than silently drop them. Less than one record is padding some writers add.
   if (size - accounted_end >= header.record_length) {

@@ -43,7 +43,8 @@ Scan cropScan(const Scan& scan, const CropBox& box, const std::string& scan_path
 }
 
 Scan cleanScan(const Scan& full_scan, const std::string& scan_path, const PrepareOptions& options) {
-  if (full_scan.positions.empty()) throw PrepareError(scan_path + ": the scan has no usable points");
+  if (full_scan.positions.empty())
+    throw PrepareError(scan_path + ": the scan has no usable points");
   Scan scan = options.crop ? cropScan(full_scan, *options.crop, scan_path) : full_scan;
   if (options.outliers) scan = removeOutliers(scan, *options.outliers, scan_path);
   return scan;
@@ -58,7 +59,8 @@ void turnAxes(Scan& scan, ScanAxes axes) {
   turn(scan.sensor_origin);
 }
 
-Scan modelPoints(const Scan& full_scan, const std::string& scan_path, const PrepareOptions& options) {
+Scan modelPoints(const Scan& full_scan, const std::string& scan_path,
+                 const PrepareOptions& options) {
   Scan scan = cleanScan(full_scan, scan_path, options);
   turnAxes(scan, options.axes);
   return scan;
@@ -85,44 +87,43 @@ VoxelSet keepVisible(const VoxelSet& voxels, const std::vector<std::uint8_t>& vi
   return kept;
 }
 
-// The whole-scan pipeline, kept for models with normals: estimating a point's normal needs its
-// neighbours, which the streamed preparer's bins do not keep together.
-PreparedModel prepareWithNormals(const Scan& full_scan, const std::string& scan_path, const PrepareOptions& options) {
-  Scan scan = cleanScan(full_scan, scan_path, options);
-  const auto normals_start = std::chrono::steady_clock::now();
-  int normal_neighbours = 0;
-  if (options.normals) {
-    // In the scan's own axes (integral images need the sensor's); turning them moves no extent,
-    // so this fit's edge is the model's.
-    const CubeFit scan_fit = fitCube(scan.positions, scan_path);
-    // The finest depth the model will keep (the same rule as below, on the same voxel counts).
-    std::vector<std::size_t> counts;
-    for (int depth : options.depths) counts.push_back(occupiedVoxels(scan, scan_fit, depth));
-    const std::size_t kept = options.stop_at_sparse_depth ? denseDepthCount(counts) : counts.size();
-    const int finest = options.depths[kept - 1];
-    NormalOptions normal_options = *options.normals;
-    if (normal_options.neighbours == 0) {
-      const auto voxels = static_cast<double>(counts[kept - 1]);
-      normal_options.neighbours = neighboursForDensity(static_cast<double>(scan.positions.size()) / voxels);
-    }
-    normal_neighbours = normal_options.neighbours;
-    scan.normals = estimateNormals(scan, scan_fit.edge / std::ldexp(1.0, finest), normal_options, scan_path);
+// Estimates the scan's normals, in the scan's own axes (integral images need the sensor's);
+// turning them moves no extent, so this fit's edge is the model's. Returns the neighbours used.
+int estimateScanNormals(Scan& scan, const std::string& scan_path, const PrepareOptions& options) {
+  const CubeFit scan_fit = fitCube(scan.positions, scan_path);
+  // The finest depth the model will keep (the same rule as voxelizeDepths', on the same counts).
+  std::vector<std::size_t> counts;
+  for (int depth : options.depths) counts.push_back(occupiedVoxels(scan, scan_fit, depth));
+  const std::size_t kept = options.stop_at_sparse_depth ? denseDepthCount(counts) : counts.size();
+  const int finest = options.depths[kept - 1];
+  NormalOptions normal_options = *options.normals;
+  if (normal_options.neighbours == 0) {
+    const auto voxels = static_cast<double>(counts[kept - 1]);
+    normal_options.neighbours =
+        neighboursForDensity(static_cast<double>(scan.positions.size()) / voxels);
   }
-  turnAxes(scan, options.axes);
-  const CubeFit fit = fitCube(scan.positions, scan_path);
+  scan.normals =
+      estimateNormals(scan, scan_fit.edge / std::ldexp(1.0, finest), normal_options, scan_path);
+  return normal_options.neighbours;
+}
 
+// The scan voxelized at each depth; the depths finer than the scan samples densely left out
+// (into `sparse_depths`) when the options say so; grey when they say so.
+std::vector<VoxelSet> voxelizeDepths(const Scan& scan, const CubeFit& fit,
+                                     const PrepareOptions& options,
+                                     std::vector<int>& sparse_depths) {
   std::vector<VoxelSet> voxel_sets;
   Progress progress("voxelizing", options.depths.size());
   for (int depth : options.depths) {
     voxel_sets.push_back(voxelize(scan, fit, depth));
     progress.update(voxel_sets.size());
   }
-  std::vector<int> sparse_depths;
   if (options.stop_at_sparse_depth) {
     std::vector<std::size_t> counts;
     for (const VoxelSet& voxels : voxel_sets) counts.push_back(voxels.keys.size());
     const std::size_t dense = denseDepthCount(counts);
-    for (std::size_t i = dense; i < voxel_sets.size(); ++i) sparse_depths.push_back(voxel_sets[i].depth);
+    for (std::size_t i = dense; i < voxel_sets.size(); ++i)
+      sparse_depths.push_back(voxel_sets[i].depth);
     voxel_sets.resize(dense);
   }
   if (options.greyscale) {
@@ -130,6 +131,68 @@ PreparedModel prepareWithNormals(const Scan& full_scan, const std::string& scan_
       for (Rgb8& colour : voxels.colours) colour = toGrey(colour);
     }
   }
+  return voxel_sets;
+}
+
+// The palette of the finest depth's normals, recorded in `model` with its errors.
+NormalPalette buildNormalPalette(const std::vector<Normal3f>& finest_normals,
+                                 const PrepareOptions& options, PreparedModel& model) {
+  NormalPalette normal_palette =
+      NormalPalette::build(finest_normals, options.normal_palette, options.normal_palette_entries);
+  model.normal_palette = normal_palette.entries();
+  double error_sum = 0;
+  for (const Normal3f& n : finest_normals) {
+    const double error = normal_palette.errorDegrees(n);
+    error_sum += error;
+    model.normal_error_max_deg = std::max(model.normal_error_max_deg, error);
+  }
+  model.normal_error_mean_deg = error_sum / static_cast<double>(finest_normals.size());
+  return normal_palette;
+}
+
+// One depth as stored: its voxels pruned to those the scene's views can see (when it has views),
+// then encoded with their palette indices.
+PreparedLevel storedLevel(VoxelSet& voxels, const Palette& palette,
+                          const std::optional<NormalPalette>& normal_palette,
+                          const PrepareOptions& options, const std::string& scan_path) {
+  PreparedLevel level;
+  level.depth = voxels.depth;
+  if (!options.visibility_cameras.empty()) {
+    const auto start = std::chrono::steady_clock::now();
+    level.voxels_before_pruning = voxels.keys.size();
+    level.bytes_before_pruning =
+        encodeOctree(voxels.keys, voxels.depth).size() + voxels.keys.size();
+    voxels =
+        keepVisible(voxels, visibleVoxels(voxels.keys, voxels.depth, options.visibility_cameras));
+    if (voxels.keys.empty()) {
+      throw PrepareError(scan_path + ": no voxel at depth " + std::to_string(voxels.depth) +
+                         " is visible from the scene's views");
+    }
+    level.pruning_seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  }
+  level.nodes = encodeOctree(voxels.keys, voxels.depth);
+  level.leaves.reserve(voxels.colours.size());
+  for (const Rgb8& colour : voxels.colours) level.leaves.push_back(palette.indexOf(colour));
+  if (normal_palette) {
+    level.normals.reserve(voxels.normals.size());
+    for (const Normal3f& normal : voxels.normals)
+      level.normals.push_back(normal_palette->indexOf(normal));
+  }
+  return level;
+}
+
+// The whole-scan pipeline, kept for models with normals: estimating a point's normal needs its
+// neighbours, which the streamed preparer's bins do not keep together.
+PreparedModel prepareWithNormals(const Scan& full_scan, const std::string& scan_path,
+                                 const PrepareOptions& options) {
+  Scan scan = cleanScan(full_scan, scan_path, options);
+  const auto normals_start = std::chrono::steady_clock::now();
+  const int normal_neighbours = options.normals ? estimateScanNormals(scan, scan_path, options) : 0;
+  turnAxes(scan, options.axes);
+  const CubeFit fit = fitCube(scan.positions, scan_path);
+  std::vector<int> sparse_depths;
+  std::vector<VoxelSet> voxel_sets = voxelizeDepths(scan, fit, options, sparse_depths);
   // The palette comes from all voxels, before pruning: pruning then changes no voxel's colour
   // index, so pruned and unpruned models draw the same pixels at every sampled view.
   const Palette palette = Palette::build(voxel_sets.back().colours, options.palette_colours);
@@ -143,42 +206,14 @@ PreparedModel prepareWithNormals(const Scan& full_scan, const std::string& scan_
   model.synthetic_colour = scan.shading == ScanShading::kNone && !options.greyscale;
   std::optional<NormalPalette> normal_palette;
   if (options.normals) {
-    const std::vector<Normal3f>& finest_normals = voxel_sets.back().normals;
-    normal_palette = NormalPalette::build(finest_normals, options.normal_palette, options.normal_palette_entries);
-    model.normal_palette = normal_palette->entries();
+    normal_palette = buildNormalPalette(voxel_sets.back().normals, options, model);
     model.normal_neighbours = normal_neighbours;
     model.normals_from_integral_images = scan.grid_width > 0;
-    double error_sum = 0;
-    for (const Normal3f& n : finest_normals) {
-      const double error = normal_palette->errorDegrees(n);
-      error_sum += error;
-      model.normal_error_max_deg = std::max(model.normal_error_max_deg, error);
-    }
-    model.normal_error_mean_deg = error_sum / static_cast<double>(finest_normals.size());
-    model.normal_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - normals_start).count();
+    model.normal_seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - normals_start).count();
   }
   for (VoxelSet& voxels : voxel_sets) {
-    PreparedLevel level;
-    level.depth = voxels.depth;
-    if (!options.visibility_cameras.empty()) {
-      const auto start = std::chrono::steady_clock::now();
-      level.voxels_before_pruning = voxels.keys.size();
-      level.bytes_before_pruning = encodeOctree(voxels.keys, voxels.depth).size() + voxels.keys.size();
-      voxels = keepVisible(voxels, visibleVoxels(voxels.keys, voxels.depth, options.visibility_cameras));
-      if (voxels.keys.empty()) {
-        throw PrepareError(scan_path + ": no voxel at depth " + std::to_string(voxels.depth) +
-                           " is visible from the scene's views");
-      }
-      level.pruning_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    }
-    level.nodes = encodeOctree(voxels.keys, voxels.depth);
-    level.leaves.reserve(voxels.colours.size());
-    for (const Rgb8& colour : voxels.colours) level.leaves.push_back(palette.indexOf(colour));
-    if (normal_palette) {
-      level.normals.reserve(voxels.normals.size());
-      for (const Normal3f& normal : voxels.normals) level.normals.push_back(normal_palette->indexOf(normal));
-    }
-    model.levels.push_back(std::move(level));
+    model.levels.push_back(storedLevel(voxels, palette, normal_palette, options, scan_path));
   }
   return model;
 }

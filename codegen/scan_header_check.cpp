@@ -40,7 +40,6 @@ constexpr std::uint64_t kLzfMaxExpansion = 264 / 3;
 
 std::string printable(std::string_view text) { return cli::printable(text); }
 
-
 std::uint64_t saturatingMul(std::uint64_t a, std::uint64_t b) {
   std::uint64_t product = 0;
   return __builtin_mul_overflow(a, b, &product) ? std::numeric_limits<std::uint64_t>::max()
@@ -52,7 +51,6 @@ std::uint64_t saturatingMul(std::uint64_t a, std::uint64_t b) {
 }
 
 namespace {
-
 
 std::uint64_t saturatingAdd(std::uint64_t a, std::uint64_t b) {
   std::uint64_t sum = 0;
@@ -157,25 +155,21 @@ std::vector<HeaderLine> headerLines(const fs::path& path, const std::string& hea
     }
   }
   fail(path,
-       "header ends before its '" + std::string(last_keyword) + "' line: empty, truncated or not a " +
-           (last_keyword == "DATA" ? "PCD" : "PLY") + " file",
+       "header ends before its '" + std::string(last_keyword) +
+           "' line: empty, truncated or not a " + (last_keyword == "DATA" ? "PCD" : "PLY") +
+           " file",
        "header, first " + std::to_string(head.size()) + " bytes");
 }
 
-}  // namespace
+// The PCD header's lines by keyword, comments skipped; fails on a keyword PCD does not have.
+using PcdLines = std::map<std::string, HeaderLine, std::less<>>;
 
-// PCD: https://pointclouds.org/documentation/tutorials/pcd_file_format.html
-// Returns the declared number of points after checking the file can hold them.
-std::uint64_t checkPcdHeader(const fs::path& path, std::uint64_t file_size) {
-  const std::string head = readHead(path, file_size);
-  std::uint64_t body_offset = 0;
-  const std::vector<HeaderLine> lines = headerLines(path, head, "DATA", body_offset);
-
-  std::map<std::string, HeaderLine, std::less<>> by_keyword;
+PcdLines pcdLinesByKeyword(const fs::path& path, const std::vector<HeaderLine>& lines) {
+  PcdLines by_keyword;
   for (const HeaderLine& line : lines) {
     if (line.words.empty() || line.words[0].front() == '#') continue;
-    static constexpr std::string_view kKeywords[] = {"VERSION", "FIELDS", "SIZE",      "TYPE",
-                                                     "COUNT",   "WIDTH",  "HEIGHT",    "VIEWPOINT",
+    static constexpr std::string_view kKeywords[] = {"VERSION", "FIELDS", "SIZE",   "TYPE",
+                                                     "COUNT",   "WIDTH",  "HEIGHT", "VIEWPOINT",
                                                      "POINTS",  "DATA"};
     if (std::find(std::begin(kKeywords), std::end(kKeywords), line.words[0]) ==
         std::end(kKeywords)) {
@@ -184,50 +178,65 @@ std::uint64_t checkPcdHeader(const fs::path& path, std::uint64_t file_size) {
     }
     by_keyword[std::string(line.words[0])] = line;
   }
-  const auto required = [&](std::string_view keyword) -> const HeaderLine& {
-    const auto found = by_keyword.find(keyword);
-    if (found == by_keyword.end()) {
-      fail(path, "PCD header has no " + std::string(keyword) + " line", "header");
-    }
-    return found->second;
-  };
-  const auto number = [&](std::string_view keyword) {
-    const HeaderLine& line = required(keyword);
-    const auto value = line.words.size() == 2 ? parseUnsigned(line.words[1]) : std::nullopt;
-    if (!value) {
-      fail(path, "PCD " + std::string(keyword) + " is not a non-negative integer",
-           "header line " + std::to_string(line.number));
-    }
-    return *value;
-  };
+  return by_keyword;
+}
 
-  const HeaderLine& fields = required("FIELDS");
-  const HeaderLine& sizes = required("SIZE");
-  const HeaderLine& types = required("TYPE");
+const HeaderLine& pcdRequired(const fs::path& path, const PcdLines& by_keyword,
+                              std::string_view keyword) {
+  const auto found = by_keyword.find(keyword);
+  if (found == by_keyword.end()) {
+    fail(path, "PCD header has no " + std::string(keyword) + " line", "header");
+  }
+  return found->second;
+}
+
+std::uint64_t pcdNumber(const fs::path& path, const PcdLines& by_keyword,
+                        std::string_view keyword) {
+  const HeaderLine& line = pcdRequired(path, by_keyword, keyword);
+  const auto value = line.words.size() == 2 ? parseUnsigned(line.words[1]) : std::nullopt;
+  if (!value) {
+    fail(path, "PCD " + std::string(keyword) + " is not a non-negative integer",
+         "header line " + std::to_string(line.number));
+  }
+  return *value;
+}
+
+// Checks that FIELDS, SIZE, TYPE and COUNT agree and describe a point of sane size. Returns the
+// point's layout (for checking ascii data lines; its count still 0) and sets its size in bytes.
+AsciiElement pcdPointLayout(const fs::path& path, const PcdLines& by_keyword,
+                            std::uint64_t& point_bytes) {
+  const HeaderLine& fields = pcdRequired(path, by_keyword, "FIELDS");
+  const HeaderLine& sizes = pcdRequired(path, by_keyword, "SIZE");
+  const HeaderLine& types = pcdRequired(path, by_keyword, "TYPE");
   const std::size_t field_count = fields.words.size() - 1;
-  if (field_count == 0) fail(path, "PCD FIELDS line names no field", "header line " + std::to_string(fields.number));
+  if (field_count == 0) {
+    fail(path, "PCD FIELDS line names no field", "header line " + std::to_string(fields.number));
+  }
   const auto counts_line = by_keyword.find(std::string_view("COUNT"));
   for (const HeaderLine* line : {&sizes, &types}) {
     if (line->words.size() - 1 != field_count) {
-      fail(path, "PCD " + std::string(line->words[0]) + " has " + std::to_string(line->words.size() - 1) +
-                     " entries for " + std::to_string(field_count) + " fields",
+      fail(path,
+           "PCD " + std::string(line->words[0]) + " has " + std::to_string(line->words.size() - 1) +
+               " entries for " + std::to_string(field_count) + " fields",
            "header line " + std::to_string(line->number));
     }
   }
   if (counts_line != by_keyword.end() && counts_line->second.words.size() - 1 != field_count) {
-    fail(path, "PCD COUNT has " + std::to_string(counts_line->second.words.size() - 1) +
-                   " entries for " + std::to_string(field_count) + " fields",
+    fail(path,
+         "PCD COUNT has " + std::to_string(counts_line->second.words.size() - 1) + " entries for " +
+             std::to_string(field_count) + " fields",
          "header line " + std::to_string(counts_line->second.number));
   }
 
-  std::uint64_t point_bytes = 0;
+  point_bytes = 0;
   AsciiElement point_layout{"point", "points", 0, {}, "field"};
   for (std::size_t f = 1; f <= field_count; ++f) {
     const auto size = parseUnsigned(sizes.words[f]);
     const std::string_view type = types.words[f];
     const bool valid_size =
-        size && ((type == "F" && (*size == 4 || *size == 8)) ||
-                 ((type == "I" || type == "U") && (*size == 1 || *size == 2 || *size == 4 || *size == 8)));
+        size &&
+        ((type == "F" && (*size == 4 || *size == 8)) ||
+         ((type == "I" || type == "U") && (*size == 1 || *size == 2 || *size == 4 || *size == 8)));
     if (!valid_size) {
       fail(path,
            "PCD field '" + printable(fields.words[f]) + "' has invalid SIZE/TYPE " +
@@ -246,31 +255,87 @@ std::uint64_t checkPcdHeader(const fs::path& path, std::uint64_t file_size) {
       count = *parsed;
     }
     point_bytes += *size * count;
-    point_layout.properties.push_back({std::string(fields.words[f]), {type.front(), *size}, count, false, {}});
+    point_layout.properties.push_back(
+        {std::string(fields.words[f]), {type.front(), *size}, count, false, {}});
   }
   if (point_bytes > kMaxPointBytes) {
     fail(path, "PCD point size of " + std::to_string(point_bytes) + " bytes is absurd", "header");
   }
+  return point_layout;
+}
 
-  const std::uint64_t width = number("WIDTH");
-  const std::uint64_t height = number("HEIGHT");
-  const std::uint64_t points = number("POINTS");
+// POINTS, after checking it is WIDTH x HEIGHT, not 0 and within what PCL can hold.
+std::uint64_t pcdPointCount(const fs::path& path, const PcdLines& by_keyword) {
+  const std::uint64_t width = pcdNumber(path, by_keyword, "WIDTH");
+  const std::uint64_t height = pcdNumber(path, by_keyword, "HEIGHT");
+  const std::uint64_t points = pcdNumber(path, by_keyword, "POINTS");
   if (saturatingMul(width, height) != points) {
     fail(path,
          "PCD WIDTH x HEIGHT (" + std::to_string(width) + " x " + std::to_string(height) +
              ") differs from POINTS " + std::to_string(points),
-         "header line " + std::to_string(required("POINTS").number));
+         "header line " + std::to_string(pcdRequired(path, by_keyword, "POINTS").number));
   }
   if (points == 0) fail(path, "empty cloud (0 points)", "PCD header POINTS");
   if (points > kMaxPoints) {
     fail(path, "PCD declares " + std::to_string(points) + " points, more than PCL can hold",
-         "header line " + std::to_string(required("POINTS").number));
+         "header line " + std::to_string(pcdRequired(path, by_keyword, "POINTS").number));
   }
+  return points;
+}
 
-  const HeaderLine& data = required("DATA");
+// A binary_compressed body: uint32 compressed size, uint32 uncompressed size, then the LZF bytes.
+// `needed`: the bytes the header's points take uncompressed.
+void checkPcdCompressedBody(const fs::path& path, std::uint64_t body_offset,
+                            std::uint64_t body_bytes, std::uint64_t points, std::uint64_t needed) {
+  const std::string data_where = "data at byte " + std::to_string(body_offset);
+  if (body_bytes < 8) {
+    fail(path,
+         "truncated: binary_compressed data needs an 8-byte size prefix, " +
+             std::to_string(body_bytes) + " bytes follow",
+         data_where);
+  }
+  const std::uint64_t compressed = readLittleEndianU32(path, body_offset);
+  const std::uint64_t uncompressed = readLittleEndianU32(path, body_offset + 4);
+  if (uncompressed != needed) {
+    fail(path,
+         "corrupt: binary_compressed data says " + std::to_string(uncompressed) +
+             " uncompressed bytes, header declares " + std::to_string(points) + " points needing " +
+             std::to_string(needed),
+         data_where);
+  }
+  // LZF's largest expansion is a 3-byte back reference copying 264 bytes: 88 times. A declared
+  // size beyond that is a lie that PCL would allocate before finding out (8.4 GB for 188 bytes).
+  if (uncompressed > saturatingMul(compressed, kLzfMaxExpansion)) {
+    fail(path,
+         "corrupt: binary_compressed data says " + std::to_string(compressed) +
+             " compressed bytes expand to " + std::to_string(uncompressed) +
+             ", more than LZF's largest ratio (" + std::to_string(kLzfMaxExpansion) + "x) allows",
+         data_where);
+  }
+  if (body_bytes - 8 < compressed) {
+    fail(path,
+         "truncated: header declares " + std::to_string(compressed) +
+             " bytes of compressed data, but " + std::to_string(body_bytes - 8) + " bytes follow",
+         data_where);
+  }
+}
+
+}  // namespace
+
+// PCD: https://pointclouds.org/documentation/tutorials/pcd_file_format.html
+// Returns the declared number of points after checking the file can hold them.
+std::uint64_t checkPcdHeader(const fs::path& path, std::uint64_t file_size) {
+  const std::string head = readHead(path, file_size);  // the lines' words point into it
+  std::uint64_t body_offset = 0;
+  const std::vector<HeaderLine> lines = headerLines(path, head, "DATA", body_offset);
+  const PcdLines by_keyword = pcdLinesByKeyword(path, lines);
+  std::uint64_t point_bytes = 0;
+  AsciiElement point_layout = pcdPointLayout(path, by_keyword, point_bytes);
+  const std::uint64_t points = pcdPointCount(path, by_keyword);
+
+  const HeaderLine& data = pcdRequired(path, by_keyword, "DATA");
   const std::string_view encoding = data.words.size() == 2 ? data.words[1] : "";
   const std::uint64_t body_bytes = file_size - body_offset;
-  const std::string data_where = "data at byte " + std::to_string(body_offset);
   const std::uint64_t needed = saturatingMul(points, point_bytes);
   if (encoding == "ascii") {
     // PCL reads one point per line, keeps 0 for a value it cannot parse and, we found, accepts a
@@ -284,42 +349,13 @@ std::uint64_t checkPcdHeader(const fs::path& path, std::uint64_t file_size) {
            "truncated: header declares " + std::to_string(points) + " points needing " +
                std::to_string(needed) + " bytes of binary data, but " + std::to_string(body_bytes) +
                " bytes follow",
-           data_where);
+           "data at byte " + std::to_string(body_offset));
     }
   } else if (encoding == "binary_compressed") {
-    // Body: uint32 compressed size, uint32 uncompressed size, then the LZF bytes.
-    if (body_bytes < 8) {
-      fail(path,
-           "truncated: binary_compressed data needs an 8-byte size prefix, " +
-               std::to_string(body_bytes) + " bytes follow",
-           data_where);
-    }
-    const std::uint64_t compressed = readLittleEndianU32(path, body_offset);
-    const std::uint64_t uncompressed = readLittleEndianU32(path, body_offset + 4);
-    if (uncompressed != needed) {
-      fail(path,
-           "corrupt: binary_compressed data says " + std::to_string(uncompressed) +
-               " uncompressed bytes, header declares " + std::to_string(points) + " points needing " +
-               std::to_string(needed),
-           data_where);
-    }
-    // LZF's largest expansion is a 3-byte back reference copying 264 bytes: 88 times. A declared
-    // size beyond that is a lie that PCL would allocate before finding out (8.4 GB for 188 bytes).
-    if (uncompressed > saturatingMul(compressed, kLzfMaxExpansion)) {
-      fail(path,
-           "corrupt: binary_compressed data says " + std::to_string(compressed) + " compressed bytes expand to " +
-               std::to_string(uncompressed) + ", more than LZF's largest ratio (" +
-               std::to_string(kLzfMaxExpansion) + "x) allows",
-           data_where);
-    }
-    if (body_bytes - 8 < compressed) {
-      fail(path,
-           "truncated: header declares " + std::to_string(compressed) +
-               " bytes of compressed data, but " + std::to_string(body_bytes - 8) + " bytes follow",
-           data_where);
-    }
+    checkPcdCompressedBody(path, body_offset, body_bytes, points, needed);
   } else {
-    fail(path, "PCD DATA is '" + printable(encoding) + "', expected ascii, binary or binary_compressed",
+    fail(path,
+         "PCD DATA is '" + printable(encoding) + "', expected ascii, binary or binary_compressed",
          "header line " + std::to_string(data.number));
   }
   return points;
@@ -330,10 +366,10 @@ namespace {
 // A PLY scalar type's kind and size; size 0 for an unknown type.
 ValueType plyType(std::string_view type) {
   static const std::map<std::string_view, ValueType> kTypes = {
-      {"char", {'I', 1}},   {"uchar", {'U', 1}},  {"int8", {'I', 1}},    {"uint8", {'U', 1}},
-      {"short", {'I', 2}},  {"ushort", {'U', 2}}, {"int16", {'I', 2}},   {"uint16", {'U', 2}},
-      {"int", {'I', 4}},    {"uint", {'U', 4}},   {"int32", {'I', 4}},   {"uint32", {'U', 4}},
-      {"float", {'F', 4}},  {"float32", {'F', 4}}, {"double", {'F', 8}}, {"float64", {'F', 8}}};
+      {"char", {'I', 1}},  {"uchar", {'U', 1}},   {"int8", {'I', 1}},   {"uint8", {'U', 1}},
+      {"short", {'I', 2}}, {"ushort", {'U', 2}},  {"int16", {'I', 2}},  {"uint16", {'U', 2}},
+      {"int", {'I', 4}},   {"uint", {'U', 4}},    {"int32", {'I', 4}},  {"uint32", {'U', 4}},
+      {"float", {'F', 4}}, {"float32", {'F', 4}}, {"double", {'F', 8}}, {"float64", {'F', 8}}};
   const auto found = kTypes.find(type);
   return found == kTypes.end() ? ValueType{'F', 0} : found->second;
 }
@@ -342,26 +378,44 @@ ValueType plyType(std::string_view type) {
 
 std::uint64_t plyTypeBytes(std::string_view type) { return plyType(type).size; }
 
-// PLY: http://paulbourke.net/dataformats/ply/
-// Returns the declared vertex count after checking the body can hold every declared element
-// (lists counted at their smallest, zero items, which still bounds what PCL may allocate).
-std::uint64_t checkPlyHeader(const fs::path& path, std::uint64_t file_size) {
-  const std::string head = readHead(path, file_size);
-  if (head.rfind("ply\n", 0) != 0 && head.rfind("ply\r\n", 0) != 0) {
-    fail(path, "not a PLY file: it does not start with the line 'ply'", "byte 0");
-  }
-  std::uint64_t body_offset = 0;
-  const std::vector<HeaderLine> lines = headerLines(path, head, "end_header", body_offset);
+namespace {
 
-  struct Element {
-    std::string name;
-    std::uint64_t count = 0;
-    std::uint64_t min_bytes = 0;   // binary size of one element with empty lists
-    std::uint64_t min_tokens = 0;  // ascii words of one element with empty lists
-  };
-  std::vector<Element> elements;
-  std::vector<AsciiElement> ascii_layout;  // the same elements, for checking ascii data lines
+// One PLY element as declared: its name, its count and the least one item takes.
+struct PlyElement {
+  std::string name;
+  std::uint64_t count = 0;
+  std::uint64_t min_bytes = 0;   // binary size of one element with empty lists
+  std::uint64_t min_tokens = 0;  // ascii words of one element with empty lists
+};
+
+// The PLY header's format and elements (and the same elements as an ascii layout, for checking
+// ascii data lines).
+struct PlyHeader {
   std::string format;
+  std::vector<PlyElement> elements;
+  std::vector<AsciiElement> ascii_layout;
+};
+
+// Adds a property line to the last element declared: its least size (a list's count alone).
+void addPlyProperty(const fs::path& path, const HeaderLine& line, const std::string& where,
+                    PlyHeader& header) {
+  if (header.elements.empty()) fail(path, "PLY property before any element", where);
+  const bool list = line.words.size() == 5 && line.words[1] == "list";
+  const ValueType count_type = list ? plyType(line.words[2]) : ValueType{};
+  const ValueType type =
+      list ? plyType(line.words[3]) : plyType(line.words.size() == 3 ? line.words[1] : "");
+  const std::uint64_t bytes =
+      list ? (type.size != 0 && count_type.kind != 'F' ? count_type.size : 0) : type.size;
+  if (bytes == 0) fail(path, "PLY property line with an unknown type or shape", where);
+  header.ascii_layout.back().properties.push_back(
+      {std::string(line.words.back()), type, 1, list, count_type});
+  header.elements.back().min_bytes += bytes;
+  header.elements.back().min_tokens += 1;
+}
+
+// Fails on a line PLY does not have, a bad format, element or property line, or no format line.
+PlyHeader parsePlyHeader(const fs::path& path, const std::vector<HeaderLine>& lines) {
+  PlyHeader header;
   for (const HeaderLine& line : lines) {
     const std::string where = "header line " + std::to_string(line.number);
     if (line.words.empty()) continue;
@@ -376,28 +430,27 @@ std::uint64_t checkPlyHeader(const fs::path& path, std::uint64_t file_size) {
            line.words[1] != "binary_big_endian")) {
         fail(path, "PLY format line is not ascii/binary_little_endian/binary_big_endian", where);
       }
-      format = line.words[1];
+      header.format = line.words[1];
     } else if (keyword == "element") {
       const auto count = line.words.size() == 3 ? parseUnsigned(line.words[2]) : std::nullopt;
       if (!count) fail(path, "PLY element line without a non-negative count", where);
-      elements.push_back({std::string(line.words[1]), *count, 0, 0});
-      ascii_layout.push_back({std::string(line.words[1]), "'" + printable(line.words[1]) + "' items", *count, {}});
+      header.elements.push_back({std::string(line.words[1]), *count, 0, 0});
+      header.ascii_layout.push_back(
+          {std::string(line.words[1]), "'" + printable(line.words[1]) + "' items", *count, {}});
     } else if (keyword == "property") {
-      if (elements.empty()) fail(path, "PLY property before any element", where);
-      const bool list = line.words.size() == 5 && line.words[1] == "list";
-      const ValueType count_type = list ? plyType(line.words[2]) : ValueType{};
-      const ValueType type = list ? plyType(line.words[3]) : plyType(line.words.size() == 3 ? line.words[1] : "");
-      const std::uint64_t bytes = list ? (type.size != 0 && count_type.kind != 'F' ? count_type.size : 0) : type.size;
-      if (bytes == 0) fail(path, "PLY property line with an unknown type or shape", where);
-      ascii_layout.back().properties.push_back({std::string(line.words.back()), type, 1, list, count_type});
-      elements.back().min_bytes += bytes;
-      elements.back().min_tokens += 1;
+      addPlyProperty(path, line, where, header);
     } else {
       fail(path, "not a PLY header: unknown keyword '" + printable(keyword) + "'", where);
     }
   }
-  if (format.empty()) fail(path, "PLY header has no format line", "header");
-  for (const Element& element : elements) {
+  if (header.format.empty()) fail(path, "PLY header has no format line", "header");
+  return header;
+}
+
+// The vertex count, after checking every element's count is bounded by what its items take and
+// the vertices are some and within what PCL can hold.
+std::uint64_t plyVertexCount(const fs::path& path, const std::vector<PlyElement>& elements) {
+  for (const PlyElement& element : elements) {
     // Items without properties take no bytes, so nothing would bound their count: PCL spent 6 s
     // iterating over "element face 4000000000" without properties.
     if (element.count > 0 && element.min_tokens == 0) {
@@ -408,40 +461,58 @@ std::uint64_t checkPlyHeader(const fs::path& path, std::uint64_t file_size) {
     }
   }
   const auto vertex = std::find_if(elements.begin(), elements.end(),
-                                   [](const Element& e) { return e.name == "vertex"; });
+                                   [](const PlyElement& e) { return e.name == "vertex"; });
   if (vertex == elements.end()) fail(path, "PLY header declares no vertex element", "header");
   if (vertex->count == 0) fail(path, "empty cloud (0 points)", "PLY header element vertex");
   if (vertex->count > kMaxPoints) {
-    fail(path, "PLY declares " + std::to_string(vertex->count) + " vertices, more than PCL can hold",
+    fail(path,
+         "PLY declares " + std::to_string(vertex->count) + " vertices, more than PCL can hold",
          "header element vertex");
   }
+  return vertex->count;
+}
+
+}  // namespace
+
+// PLY: http://paulbourke.net/dataformats/ply/
+// Returns the declared vertex count after checking the body can hold every declared element
+// (lists counted at their smallest, zero items, which still bounds what PCL may allocate).
+std::uint64_t checkPlyHeader(const fs::path& path, std::uint64_t file_size) {
+  const std::string head = readHead(path, file_size);  // the lines' words point into it
+  if (head.rfind("ply\n", 0) != 0 && head.rfind("ply\r\n", 0) != 0) {
+    fail(path, "not a PLY file: it does not start with the line 'ply'", "byte 0");
+  }
+  std::uint64_t body_offset = 0;
+  const std::vector<HeaderLine> lines = headerLines(path, head, "end_header", body_offset);
+  const PlyHeader header = parsePlyHeader(path, lines);
+  const std::uint64_t vertices = plyVertexCount(path, header.elements);
 
   const std::string data_where = "data at byte " + std::to_string(body_offset);
   const std::uint64_t body_bytes = file_size - body_offset;
+  const bool ascii = header.format == "ascii";
   std::uint64_t needed = 0;
-  for (const Element& element : elements) {
-    needed = saturatingAdd(needed, saturatingMul(element.count, format == "ascii"
-                                                                    ? element.min_tokens
-                                                                    : element.min_bytes));
+  for (const PlyElement& element : header.elements) {
+    needed = saturatingAdd(
+        needed, saturatingMul(element.count, ascii ? element.min_tokens : element.min_bytes));
   }
-  if (format == "ascii") {
+  if (ascii) {
     const std::uint64_t tokens = countAsciiBody(path, body_offset).tokens;
     if (tokens < needed) {
       fail(path,
-           "truncated: header declares " + std::to_string(vertex->count) +
+           "truncated: header declares " + std::to_string(vertices) +
                " vertices and other elements needing at least " + std::to_string(needed) +
                " ascii values, but the data has " + std::to_string(tokens),
            data_where);
     }
-    checkAsciiBody(path, body_offset, lines.back().number + 1, ascii_layout);
+    checkAsciiBody(path, body_offset, lines.back().number + 1, header.ascii_layout);
   } else if (body_bytes < needed) {
     fail(path,
-         "truncated: header declares " + std::to_string(vertex->count) +
+         "truncated: header declares " + std::to_string(vertices) +
              " vertices and other elements needing at least " + std::to_string(needed) +
              " bytes of binary data, but " + std::to_string(body_bytes) + " bytes follow",
          data_where);
   }
-  return vertex->count;
+  return vertices;
 }
 
 HeaderWords readHeaderWords(const fs::path& path, std::uint64_t file_size,

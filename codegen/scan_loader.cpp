@@ -4,8 +4,10 @@
 // of small PCD/PLY files, huge and negative counts, garbage) showed that its readers
 //   - dereference a null pointer in PCDReader::read when the PCD header has no FIELDS line (empty
 //     file, garbage, a header cut short);
-//   - allocate points * point_size bytes straight from the header (POINTS 4000000000 asks for 64 GB,
-//     a huge COUNT likewise, a PLY "element vertex -5" for 64 GB) before looking at the file length;
+//   - allocate points * point_size bytes straight from the header (POINTS 4000000000 asks for 64
+//   GB,
+//     a huge COUNT likewise, a PLY "element vertex -5" for 64 GB) before looking at the file
+//     length;
 //   - allocate the uncompressed size stored in a binary_compressed body (up to 4 GB) unchecked;
 //   - return success with an empty or garbled cloud for some truncated input (PCD cut after
 //     FIELDS, an ascii PCD whose last line is cut short, PLY cut inside its header, PLY "element
@@ -63,7 +65,8 @@ const pcl::PCLPointField* findField(const pcl::PCLPointCloud2& cloud, std::strin
 
 std::string fieldList(const pcl::PCLPointCloud2& cloud) {
   std::string names;
-  for (const pcl::PCLPointField& field : cloud.fields) names += (names.empty() ? "" : " ") + field.name;
+  for (const pcl::PCLPointField& field : cloud.fields)
+    names += (names.empty() ? "" : " ") + field.name;
   return printable(names);
 }
 
@@ -76,8 +79,7 @@ bool isScalarOf(const pcl::PCLPointField& field, std::uint8_t datatype) {
 void checkCloudLayout(const fs::path& path, const pcl::PCLPointCloud2& cloud,
                       std::uint64_t declared_points) {
   const std::uint64_t points = std::uint64_t{cloud.width} * cloud.height;
-  if (points != declared_points ||
-      cloud.data.size() != saturatingMul(points, cloud.point_step)) {
+  if (points != declared_points || cloud.data.size() != saturatingMul(points, cloud.point_step)) {
     fail(path,
          "PCL read " + std::to_string(points) + " points (" + std::to_string(cloud.data.size()) +
              " bytes) where the header declares " + std::to_string(declared_points),
@@ -124,7 +126,8 @@ std::array<std::uint8_t, 3> unpackRgb(std::uint32_t rgba) {
 // Nearest-rank quantile of `values` (which it reorders), q in [0, 1].
 float percentile(std::vector<float>& values, double q) {
   const auto rank = static_cast<std::size_t>(quantileRank(values.size(), q));
-  std::nth_element(values.begin(), values.begin() + static_cast<std::ptrdiff_t>(rank), values.end());
+  std::nth_element(values.begin(), values.begin() + static_cast<std::ptrdiff_t>(rank),
+                   values.end());
   return values[rank];
 }
 
@@ -165,8 +168,8 @@ void collectPoints(const fs::path& path, const pcl::PointCloud<PointT>& points, 
     for (int axis = 0; axis < 3; ++axis) {
       if (std::fabs(xyz[axis]) > kMaxAbsCoordinate) {
         std::ostringstream what;
-        what << "absurd coordinate " << "xyz"[axis] << " = " << xyz[axis] << ", beyond +-"
-             << kMaxAbsCoordinate;
+        what << "absurd coordinate "
+             << "xyz"[axis] << " = " << xyz[axis] << ", beyond +-" << kMaxAbsCoordinate;
         fail(path, what.str(), "point " + std::to_string(i));
       }
     }
@@ -176,16 +179,8 @@ void collectPoints(const fs::path& path, const pcl::PointCloud<PointT>& points, 
   }
 }
 
-}  // namespace
-
-Scan loadScan(const fs::path& path) {
-  std::uint64_t file_size = 0;
-  try {
-    file_size = cli::checkInputFile(path, kScanInput);
-  } catch (const cli::Error& error) {  // "PATH: what", in the loader's "PATH: what (where)" form
-    throw PrepareError(std::string(error.what()) + " (opening the scan)");
-  }
-
+// Whether the scan is a .ply file (else .pcd), from its extension in any case.
+bool isPlyScan(const fs::path& path) {
   std::string extension = path.extension().string();
   std::transform(extension.begin(), extension.end(), extension.begin(),
                  [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
@@ -194,14 +189,14 @@ Scan loadScan(const fs::path& path) {
     fail(path, "unknown extension '" + printable(extension) + "', expected .pcd or .ply",
          "file name");
   }
+  return is_ply;
+}
 
-  if (file_size == 0) fail(path, "empty file (0 bytes)", "opening the scan");
-  const std::uint64_t declared_points =
-      is_ply ? checkPlyHeader(path, file_size) : checkPcdHeader(path, file_size);
-
+// The file read by PCL, after its header was checked, and checked to hold float32 x, y and z.
+pcl::PCLPointCloud2 readCloud(const fs::path& path, bool is_ply, std::uint64_t declared_points,
+                              Eigen::Vector4f& origin) {
   silencePcl();
   pcl::PCLPointCloud2 cloud;
-  Eigen::Vector4f origin = Eigen::Vector4f::Zero();
   Eigen::Quaternionf orientation = Eigen::Quaternionf::Identity();
   int result = -1;
   try {
@@ -229,18 +224,11 @@ Scan loadScan(const fs::path& path) {
            "field list: " + fieldList(cloud));
     }
   }
+  return cloud;
+}
 
-  Scan scan;
-  scan.points_in_file = declared_points;
-  scan.organized = cloud.height > 1;
-  if (scan.organized) {
-    scan.grid_width = cloud.width;
-    scan.grid_height = cloud.height;
-  }
-  for (int axis = 0; axis < 3; ++axis) {
-    scan.sensor_origin[static_cast<std::size_t>(axis)] = std::isfinite(origin[axis]) ? origin[axis] : 0.0f;
-  }
-  scan.shading = pickShading(path, cloud);
+// The cloud's finite points with the colour its shading takes (none, RGB or intensity as grey).
+void collectShadedPoints(const fs::path& path, const pcl::PCLPointCloud2& cloud, Scan& scan) {
   if (scan.shading == ScanShading::kColour) {
     pcl::PointCloud<pcl::PointXYZRGBA> points;
     pcl::fromPCLPointCloud2(cloud, points);
@@ -260,6 +248,37 @@ Scan loadScan(const fs::path& path) {
     pcl::fromPCLPointCloud2(cloud, points);
     collectPoints(path, points, scan, [](const pcl::PointXYZ&) {});
   }
+}
+
+}  // namespace
+
+Scan loadScan(const fs::path& path) {
+  std::uint64_t file_size = 0;
+  try {
+    file_size = cli::checkInputFile(path, kScanInput);
+  } catch (const cli::Error& error) {  // "PATH: what", in the loader's "PATH: what (where)" form
+    throw PrepareError(std::string(error.what()) + " (opening the scan)");
+  }
+  const bool is_ply = isPlyScan(path);
+  if (file_size == 0) fail(path, "empty file (0 bytes)", "opening the scan");
+  const std::uint64_t declared_points =
+      is_ply ? checkPlyHeader(path, file_size) : checkPcdHeader(path, file_size);
+  Eigen::Vector4f origin = Eigen::Vector4f::Zero();
+  const pcl::PCLPointCloud2 cloud = readCloud(path, is_ply, declared_points, origin);
+
+  Scan scan;
+  scan.points_in_file = declared_points;
+  scan.organized = cloud.height > 1;
+  if (scan.organized) {
+    scan.grid_width = cloud.width;
+    scan.grid_height = cloud.height;
+  }
+  for (int axis = 0; axis < 3; ++axis) {
+    scan.sensor_origin[static_cast<std::size_t>(axis)] =
+        std::isfinite(origin[axis]) ? origin[axis] : 0.0f;
+  }
+  scan.shading = pickShading(path, cloud);
+  collectShadedPoints(path, cloud, scan);
   if (scan.positions.empty()) {
     fail(path,
          "no finite points: all " + std::to_string(scan.points_in_file) +

@@ -40,7 +40,8 @@ class SceneReader {
 
   int integer(const json& value, const std::string& key, int low, int high) const {
     if (!value.is_number_integer()) fail(key, "expected a whole number");
-    if (value.is_number_unsigned() && value.get<unsigned long long>() > static_cast<unsigned long long>(high)) {
+    if (value.is_number_unsigned() &&
+        value.get<unsigned long long>() > static_cast<unsigned long long>(high)) {
       fail(key, format("%llu is outside %d..%d", value.get<unsigned long long>(), low, high));
     }
     const auto x = value.get<long long>();
@@ -57,7 +58,8 @@ class SceneReader {
   }
 
   // Fails when `object` has a key outside `known`.
-  void onlyKeys(const json& object, const std::string& where, std::initializer_list<const char*> known) const {
+  void onlyKeys(const json& object, const std::string& where,
+                std::initializer_list<const char*> known) const {
     if (!object.is_object()) fail(where, "expected an object");
     const std::set<std::string> allowed(known.begin(), known.end());
     for (const auto& item : object.items()) {
@@ -89,30 +91,37 @@ std::array<double, 3> point(const SceneReader& reader, const json& value, const 
 
 void readDepths(const SceneReader& reader, const json& value, Scene& scene) {
   if (value.is_string()) {
-    if (value.get<std::string>() != "auto") reader.fail("depths", "expected \"auto\" or a list of depths");
+    if (value.get<std::string>() != "auto")
+      reader.fail("depths", "expected \"auto\" or a list of depths");
     scene.auto_depths = true;
     return;
   }
-  if (!value.is_array() || value.empty() || value.size() > static_cast<std::size_t>(format::kMaxLevels)) {
-    reader.fail("depths", "expected \"auto\" or a list of 1.." + std::to_string(format::kMaxLevels) + " depths");
+  if (!value.is_array() || value.empty() ||
+      value.size() > static_cast<std::size_t>(format::kMaxLevels)) {
+    reader.fail("depths", "expected \"auto\" or a list of 1.." +
+                              std::to_string(format::kMaxLevels) + " depths");
   }
   scene.auto_depths = false;
   for (const json& item : value) {
     const int depth = reader.integer(item, "depths", 1, format::kMaxDepth);
-    if (!scene.depths.empty() && depth <= scene.depths.back()) reader.fail("depths", "depths must be strictly ascending");
+    if (!scene.depths.empty() && depth <= scene.depths.back())
+      reader.fail("depths", "depths must be strictly ascending");
     scene.depths.push_back(depth);
   }
 }
 
 void readViewpoints(const SceneReader& reader, const json& value, Scene& scene) {
-  if (!value.is_array() || value.empty()) reader.fail("viewpoints", "expected a non-empty list of {yaw, pitch[, roll]}");
+  if (!value.is_array() || value.empty())
+    reader.fail("viewpoints", "expected a non-empty list of {yaw, pitch[, roll]}");
   for (const json& item : value) {
     reader.onlyKeys(item, "viewpoints", {"yaw", "pitch", "roll"});
-    if (!item.contains("yaw") || !item.contains("pitch")) reader.fail("viewpoints", "each viewpoint needs yaw and pitch");
+    if (!item.contains("yaw") || !item.contains("pitch"))
+      reader.fail("viewpoints", "each viewpoint needs yaw and pitch");
     ViewAngles view;
     view.yaw_deg = reader.number(item["yaw"], "viewpoints.yaw", -180, 180);
     view.pitch_deg = reader.number(item["pitch"], "viewpoints.pitch", -90, 90);
-    if (item.contains("roll")) view.roll_deg = reader.number(item["roll"], "viewpoints.roll", -180, 180);
+    if (item.contains("roll"))
+      view.roll_deg = reader.number(item["roll"], "viewpoints.roll", -180, 180);
     scene.viewpoints.push_back(view);
   }
 }
@@ -148,16 +157,18 @@ json parseJson(const std::string& text, const std::string& path) {
       case json::parse_event_t::object_start:
       case json::parse_event_t::array_start:
         if (open.size() == kMaxNesting) {
-          throw PrepareError(cli::displayPath(path) + ": objects and lists nested deeper than " +
-                             std::to_string(kMaxNesting) + " levels" +
-                             (where().empty() ? std::string() : " (key " + cli::inQuotes(where()) + ")"));
+          throw PrepareError(
+              cli::displayPath(path) + ": objects and lists nested deeper than " +
+              std::to_string(kMaxNesting) + " levels" +
+              (where().empty() ? std::string() : " (key " + cli::inQuotes(where()) + ")"));
         }
         open.push_back({event == json::parse_event_t::object_start, {}, {}});
         break;
       case json::parse_event_t::key:
         open.back().key = parsed.get<std::string>();
         if (!open.back().keys.insert(open.back().key).second) {
-          throw PrepareError(cli::displayPath(path) + ": key " + cli::inQuotes(where()) + ": given twice");
+          throw PrepareError(cli::displayPath(path) + ": key " + cli::inQuotes(where()) +
+                             ": given twice");
         }
         break;
       case json::parse_event_t::object_end:
@@ -172,35 +183,30 @@ json parseJson(const std::string& text, const std::string& path) {
   try {
     return json::parse(text, track_keys);
   } catch (const json::exception& error) {
-    // nlohmann's message reads "[json.exception.parse_error.101] parse error at line L, column C: ...".
+    // nlohmann's message reads "[json.exception.parse_error.101] parse error at line L, column C:
+    // ...".
     std::string message = error.what();
     const std::size_t cut = message.find("] ");
     if (cut != std::string::npos) message = message.substr(cut + 2);
     const std::string key = where();
-    throw PrepareError(cli::displayPath(path) + ": not valid JSON: " + cli::printable(message, 160) +
+    throw PrepareError(cli::displayPath(path) +
+                       ": not valid JSON: " + cli::printable(message, 160) +
                        (key.empty() ? std::string() : " (key " + cli::inQuotes(key) + ")"));
   }
 }
 
-}  // namespace
-
-Scene parseScene(const std::string& text, const std::string& path) {
-  const SceneReader reader(path);
-  const json root = parseJson(text, path);
-  if (!root.is_object()) throw PrepareError(cli::displayPath(path) + ": expected a JSON object at the top level");
-  reader.onlyKeys(root, "", {"yaw", "pitch", "roll", "viewpoints", "zoom", "framebuffer", "depths", "palette",
-                             "crop", "outliers", "axes", "scan_unit", "prune", "angle_step", "zoom_step",
-                             "normals"});
-
-  Scene scene;
+// The views: viewpoints or yaw and pitch ranges, roll, zoom and the framebuffer's size.
+void readViews(const SceneReader& reader, const json& root, Scene& scene) {
   if (root.contains("viewpoints")) {
     if (root.contains("yaw") || root.contains("pitch")) {
       reader.fail("viewpoints", "give either viewpoints or yaw and pitch ranges, not both");
     }
     readViewpoints(reader, root["viewpoints"], scene);
   } else {
-    scene.yaw_deg = root.contains("yaw") ? reader.range(root["yaw"], "yaw", -180, 180) : Range{0, 0};
-    scene.pitch_deg = root.contains("pitch") ? reader.range(root["pitch"], "pitch", -90, 90) : Range{0, 0};
+    scene.yaw_deg =
+        root.contains("yaw") ? reader.range(root["yaw"], "yaw", -180, 180) : Range{0, 0};
+    scene.pitch_deg =
+        root.contains("pitch") ? reader.range(root["pitch"], "pitch", -90, 90) : Range{0, 0};
   }
   if (root.contains("roll")) scene.roll_deg = reader.number(root["roll"], "roll", -180, 180);
   if (root.contains("zoom")) {
@@ -212,77 +218,122 @@ Scene parseScene(const std::string& text, const std::string& path) {
   }
   if (root.contains("framebuffer")) {
     const json& size = root["framebuffer"];
-    if (!size.is_array() || size.size() != 2) reader.fail("framebuffer", "expected [width, height]");
+    if (!size.is_array() || size.size() != 2)
+      reader.fail("framebuffer", "expected [width, height]");
     scene.width = reader.integer(size[0], "framebuffer", 1, kMaxViewportSide);
     scene.height = reader.integer(size[1], "framebuffer", 1, kMaxViewportSide);
   }
-  if (root.contains("depths")) readDepths(reader, root["depths"], scene);
-  if (root.contains("palette")) {
-    const json& palette = root["palette"];
-    reader.onlyKeys(palette, "palette", {"mode", "colours"});
-    if (palette.contains("mode")) {
-      const json& mode = palette["mode"];
-      if (mode == "greyscale") scene.greyscale = true;
-      else if (mode == "colour") scene.greyscale = false;
-      else reader.fail("palette.mode", "expected \"colour\" or \"greyscale\"");
-    }
-    if (palette.contains("colours")) scene.palette_colours = reader.integer(palette["colours"], "palette.colours", 1, 256);
+}
+
+void readPalette(const SceneReader& reader, const json& palette, Scene& scene) {
+  reader.onlyKeys(palette, "palette", {"mode", "colours"});
+  if (palette.contains("mode")) {
+    const json& mode = palette["mode"];
+    if (mode == "greyscale")
+      scene.greyscale = true;
+    else if (mode == "colour")
+      scene.greyscale = false;
+    else
+      reader.fail("palette.mode", "expected \"colour\" or \"greyscale\"");
   }
-  if (root.contains("crop")) {
-    const json& crop = root["crop"];
-    reader.onlyKeys(crop, "crop", {"min", "max"});
-    if (!crop.contains("min") || !crop.contains("max")) reader.fail("crop", "expected {\"min\": [x, y, z], \"max\": [x, y, z]}");
-    CropBox box{point(reader, crop["min"], "crop.min"), point(reader, crop["max"], "crop.max")};
-    for (std::size_t axis = 0; axis < 3; ++axis) {
-      if (!(box.low[axis] < box.high[axis])) reader.fail("crop", "empty box: each min must be below its max");
-    }
-    scene.crop = box;
+  if (palette.contains("colours"))
+    scene.palette_colours = reader.integer(palette["colours"], "palette.colours", 1, 256);
+}
+
+void readCrop(const SceneReader& reader, const json& crop, Scene& scene) {
+  reader.onlyKeys(crop, "crop", {"min", "max"});
+  if (!crop.contains("min") || !crop.contains("max"))
+    reader.fail("crop", "expected {\"min\": [x, y, z], \"max\": [x, y, z]}");
+  CropBox box{point(reader, crop["min"], "crop.min"), point(reader, crop["max"], "crop.max")};
+  for (std::size_t axis = 0; axis < 3; ++axis) {
+    if (!(box.low[axis] < box.high[axis]))
+      reader.fail("crop", "empty box: each min must be below its max");
   }
-  if (root.contains("outliers")) {
-    const json& outliers = root["outliers"];
-    reader.onlyKeys(outliers, "outliers", {"method", "neighbours", "stddev"});
-    if (!outliers.contains("method") || outliers["method"] != "statistical") {
-      reader.fail("outliers.method", "expected \"statistical\"");
-    }
-    OutlierRemoval removal;
-    if (outliers.contains("neighbours")) removal.neighbours = reader.integer(outliers["neighbours"], "outliers.neighbours", 1, kMaxNeighbours);
-    if (outliers.contains("stddev")) removal.stddev_factor = reader.number(outliers["stddev"], "outliers.stddev", 0, 100);
-    scene.outliers = removal;
+  scene.crop = box;
+}
+
+void readOutliers(const SceneReader& reader, const json& outliers, Scene& scene) {
+  reader.onlyKeys(outliers, "outliers", {"method", "neighbours", "stddev"});
+  if (!outliers.contains("method") || outliers["method"] != "statistical") {
+    reader.fail("outliers.method", "expected \"statistical\"");
   }
+  OutlierRemoval removal;
+  if (outliers.contains("neighbours"))
+    removal.neighbours =
+        reader.integer(outliers["neighbours"], "outliers.neighbours", 1, kMaxNeighbours);
+  if (outliers.contains("stddev"))
+    removal.stddev_factor = reader.number(outliers["stddev"], "outliers.stddev", 0, 100);
+  scene.outliers = removal;
+}
+
+// The scan's axis convention and unit.
+void readScanFrame(const SceneReader& reader, const json& root, Scene& scene) {
   if (root.contains("axes")) {
     const json& axes = root["axes"];
-    if (axes == "y-down") scene.axes = ScanAxes::kYDown;
-    else if (axes == "y-up") scene.axes = ScanAxes::kYUp;
-    else reader.fail("axes", "expected \"y-down\" or \"y-up\"");
+    if (axes == "y-down")
+      scene.axes = ScanAxes::kYDown;
+    else if (axes == "y-up")
+      scene.axes = ScanAxes::kYUp;
+    else
+      reader.fail("axes", "expected \"y-down\" or \"y-up\"");
   }
   if (root.contains("scan_unit")) {
     const json& unit = root["scan_unit"];
-    if (unit == "m") scene.metres_per_scan_unit = 1.0;
-    else if (unit == "cm") scene.metres_per_scan_unit = 0.01;
-    else if (unit == "mm") scene.metres_per_scan_unit = 0.001;
-    else reader.fail("scan_unit", "expected \"m\", \"cm\" or \"mm\"");
+    if (unit == "m")
+      scene.metres_per_scan_unit = 1.0;
+    else if (unit == "cm")
+      scene.metres_per_scan_unit = 0.01;
+    else if (unit == "mm")
+      scene.metres_per_scan_unit = 0.001;
+    else
+      reader.fail("scan_unit", "expected \"m\", \"cm\" or \"mm\"");
   }
+}
+
+void readNormals(const SceneReader& reader, const json& normals, Scene& scene) {
+  if (normals.is_boolean()) {
+    if (normals.get<bool>()) scene.normals = NormalOptions{};
+  } else if (normals.is_object()) {
+    reader.onlyKeys(normals, "normals", {"neighbours"});
+    NormalOptions options;
+    if (normals.contains("neighbours")) {
+      options.neighbours =
+          reader.integer(normals["neighbours"], "normals.neighbours", 3, kMaxNeighbours);
+    }
+    scene.normals = options;
+  } else {
+    reader.fail("normals", "expected true, false or {\"neighbours\": N}");
+  }
+}
+
+}  // namespace
+
+Scene parseScene(const std::string& text, const std::string& path) {
+  const SceneReader reader(path);
+  const json root = parseJson(text, path);
+  if (!root.is_object())
+    throw PrepareError(cli::displayPath(path) + ": expected a JSON object at the top level");
+  reader.onlyKeys(
+      root, "",
+      {"yaw", "pitch", "roll", "viewpoints", "zoom", "framebuffer", "depths", "palette", "crop",
+       "outliers", "axes", "scan_unit", "prune", "angle_step", "zoom_step", "normals"});
+
+  Scene scene;
+  readViews(reader, root, scene);
+  if (root.contains("depths")) readDepths(reader, root["depths"], scene);
+  if (root.contains("palette")) readPalette(reader, root["palette"], scene);
+  if (root.contains("crop")) readCrop(reader, root["crop"], scene);
+  if (root.contains("outliers")) readOutliers(reader, root["outliers"], scene);
+  readScanFrame(reader, root, scene);
   if (root.contains("prune")) {
     if (!root["prune"].is_boolean()) reader.fail("prune", "expected true or false");
     scene.prune = root["prune"].get<bool>();
   }
-  if (root.contains("normals")) {
-    const json& normals = root["normals"];
-    if (normals.is_boolean()) {
-      if (normals.get<bool>()) scene.normals = NormalOptions{};
-    } else if (normals.is_object()) {
-      reader.onlyKeys(normals, "normals", {"neighbours"});
-      NormalOptions options;
-      if (normals.contains("neighbours")) {
-        options.neighbours = reader.integer(normals["neighbours"], "normals.neighbours", 3, kMaxNeighbours);
-      }
-      scene.normals = options;
-    } else {
-      reader.fail("normals", "expected true, false or {\"neighbours\": N}");
-    }
-  }
-  if (root.contains("angle_step")) scene.angle_step_deg = reader.number(root["angle_step"], "angle_step", 0.01, 90);
-  if (root.contains("zoom_step")) scene.zoom_step = reader.number(root["zoom_step"], "zoom_step", 1.01, 16);
+  if (root.contains("normals")) readNormals(reader, root["normals"], scene);
+  if (root.contains("angle_step"))
+    scene.angle_step_deg = reader.number(root["angle_step"], "angle_step", 0.01, 90);
+  if (root.contains("zoom_step"))
+    scene.zoom_step = reader.number(root["zoom_step"], "zoom_step", 1.01, 16);
   if (scene.prune) {
     const std::string too_much = sceneWorkProblem(scene);
     if (!too_much.empty()) throw PrepareError(cli::displayPath(path) + ": " + too_much);

@@ -41,27 +41,44 @@ double gridPitch(const pcl::PointCloud<pcl::PointXYZ>& grid) {
 
 using Vec3 = std::array<double, 3>;
 
-// Extends the mesh past its boundary by `steps` grid steps (kMeshExtensionSteps): for each edge
-// used by one triangle only, a strip outward from that triangle, `steps` wide in grid coordinates
-// and lifted into space by the triangle's own affine map from grid to space (so the strip lies in
-// its plane and is as wide as the local grid step there); at a boundary vertex where exactly two
-// boundary edges meet, the wedge between their strips is filled (two triangles through the
-// bisector), so a convex corner is rounded rather than notched. Colours are the edge's own.
-void extendBoundary(const prepare::Scan& points, double steps, ReferenceSurface& surface) {
-  if (!(steps > 0)) return;
-  const auto grid = [&](std::uint32_t i) -> std::array<double, 2> {
-    const std::uint32_t cell = points.grid_index[i];
-    return {double(cell % points.grid_width), double(cell / points.grid_width)};
-  };
-  const auto space = [&](std::uint32_t i) -> Vec3 {
-    const auto& p = surface.positions[i];
-    return {p[0], p[1], p[2]};
-  };
-  // Every triangle's edges, keyed by their two vertices; a key seen once is a boundary edge.
-  struct Side {
-    std::uint64_t key;
-    std::uint32_t from, to, opposite;
-  };
+// A point's place in the depth image's grid (column, row).
+std::array<double, 2> gridOf(const prepare::Scan& points, std::uint32_t i) {
+  const std::uint32_t cell = points.grid_index[i];
+  return {double(cell % points.grid_width), double(cell / points.grid_width)};
+}
+
+Vec3 spaceOf(const ReferenceSurface& surface, std::uint32_t i) {
+  const auto& p = surface.positions[i];
+  return {p[0], p[1], p[2]};
+}
+
+// Grid steps `g` in space, by an affine map's two columns (space per step along columns, rows).
+Vec3 lift(const std::array<Vec3, 2>& map, const std::array<double, 2>& g) {
+  return Vec3{map[0][0] * g[0] + map[1][0] * g[1], map[0][1] * g[0] + map[1][1] * g[1],
+              map[0][2] * g[0] + map[1][2] * g[1]};
+}
+
+Vec3 plus(const Vec3& p, const Vec3& d) { return Vec3{p[0] + d[0], p[1] + d[1], p[2] + d[2]}; }
+
+// Adds a vertex at `p` with the colour of vertex `colour_of`; returns its index.
+std::uint32_t appendVertex(ReferenceSurface& surface, const Vec3& p, std::uint32_t colour_of) {
+  surface.positions.push_back(
+      {static_cast<float>(p[0]), static_cast<float>(p[1]), static_cast<float>(p[2])});
+  if (!surface.colours.empty()) {
+    const std::array<std::uint8_t, 3> colour = surface.colours[colour_of];
+    surface.colours.push_back(colour);
+  }
+  return static_cast<std::uint32_t>(surface.positions.size() - 1);
+}
+
+// A triangle's edge, keyed by its two vertices; a key seen once is a boundary edge.
+struct Side {
+  std::uint64_t key;
+  std::uint32_t from, to, opposite;
+};
+
+// Every triangle's edges, sorted by key.
+std::vector<Side> sortedSides(const ReferenceSurface& surface) {
   std::vector<Side> sides;
   sides.reserve(surface.triangles.size() * 3);
   for (const auto& t : surface.triangles) {
@@ -72,41 +89,36 @@ void extendBoundary(const prepare::Scan& points, double steps, ReferenceSurface&
     }
   }
   std::sort(sides.begin(), sides.end(), [](const Side& x, const Side& y) { return x.key < y.key; });
-  // Per boundary vertex, its boundary edges' outward unit normals in the grid and the affine map
-  // (grid to space) of their triangles, to fill the corner between two of them.
-  struct Outward {
-    std::uint32_t vertex;
-    std::array<double, 2> normal;  // grid steps
-    std::array<Vec3, 2> map;       // space per grid step along the grid's columns, rows
-  };
+  return sides;
+}
+
+// A boundary edge at a vertex: its outward unit normal in the grid and the affine map (grid to
+// space) of its triangle, to fill the corner between two of them.
+struct Outward {
+  std::uint32_t vertex;
+  std::array<double, 2> normal;  // grid steps
+  std::array<Vec3, 2> map;       // space per grid step along the grid's columns, rows
+};
+
+// The strip outward from each boundary edge (see extendBoundary); returns the edges at their two
+// vertices.
+std::vector<Outward> extrudeBoundaryEdges(const prepare::Scan& points, double steps,
+                                          ReferenceSurface& surface) {
+  const std::vector<Side> sides = sortedSides(surface);
   std::vector<Outward> outward;
-  const auto append = [&](const Vec3& p, std::uint32_t colour_of) {
-    surface.positions.push_back(
-        {static_cast<float>(p[0]), static_cast<float>(p[1]), static_cast<float>(p[2])});
-    if (!surface.colours.empty()) {
-      const std::array<std::uint8_t, 3> colour = surface.colours[colour_of];
-      surface.colours.push_back(colour);
-    }
-    return static_cast<std::uint32_t>(surface.positions.size() - 1);
-  };
-  const auto lift = [](const std::array<Vec3, 2>& map, const std::array<double, 2>& g) {
-    return Vec3{map[0][0] * g[0] + map[1][0] * g[1], map[0][1] * g[0] + map[1][1] * g[1],
-                map[0][2] * g[0] + map[1][2] * g[1]};
-  };
-  const auto plus = [](const Vec3& p, const Vec3& d) {
-    return Vec3{p[0] + d[0], p[1] + d[1], p[2] + d[2]};
-  };
   for (std::size_t i = 0; i < sides.size(); ++i) {
     const bool shared = (i > 0 && sides[i - 1].key == sides[i].key) ||
                         (i + 1 < sides.size() && sides[i + 1].key == sides[i].key);
     if (shared) continue;
     const Side& side = sides[i];
-    const auto ga = grid(side.from), gb = grid(side.to), gc = grid(side.opposite);
+    const auto ga = gridOf(points, side.from), gb = gridOf(points, side.to),
+               gc = gridOf(points, side.opposite);
     // The triangle's affine map: [gb - ga, gc - ga] (grid) to [pb - pa, pc - pa] (space).
     const double e0[2] = {gb[0] - ga[0], gb[1] - ga[1]}, e1[2] = {gc[0] - ga[0], gc[1] - ga[1]};
     const double det = e0[0] * e1[1] - e0[1] * e1[0];
     if (!(std::fabs(det) > 0)) continue;
-    const Vec3 pa = space(side.from), pb = space(side.to), pc = space(side.opposite);
+    const Vec3 pa = spaceOf(surface, side.from), pb = spaceOf(surface, side.to),
+               pc = spaceOf(surface, side.opposite);
     std::array<Vec3, 2> map;
     for (std::size_t k = 0; k < 3; ++k) {
       const double d0 = pb[k] - pa[k], d1 = pc[k] - pa[k];
@@ -118,13 +130,18 @@ void extendBoundary(const prepare::Scan& points, double steps, ReferenceSurface&
     std::array<double, 2> normal = {-e0[1] / length, e0[0] / length};
     if (normal[0] * e1[0] + normal[1] * e1[1] > 0) normal = {-normal[0], -normal[1]};
     const Vec3 offset = lift(map, {normal[0] * steps, normal[1] * steps});
-    const std::uint32_t a_out = append(plus(pa, offset), side.from);
-    const std::uint32_t b_out = append(plus(pb, offset), side.to);
+    const std::uint32_t a_out = appendVertex(surface, plus(pa, offset), side.from);
+    const std::uint32_t b_out = appendVertex(surface, plus(pb, offset), side.to);
     surface.triangles.push_back({side.from, side.to, b_out});
     surface.triangles.push_back({side.from, b_out, a_out});
     outward.push_back({side.from, normal, map});
     outward.push_back({side.to, normal, map});
   }
+  return outward;
+}
+
+// Fills the wedge between the strips of a vertex where exactly two boundary edges meet.
+void fillCorners(double steps, std::vector<Outward>& outward, ReferenceSurface& surface) {
   std::sort(outward.begin(), outward.end(),
             [](const Outward& x, const Outward& y) { return x.vertex < y.vertex; });
   for (std::size_t i = 0; i < outward.size();) {
@@ -139,22 +156,34 @@ void extendBoundary(const prepare::Scan& points, double steps, ReferenceSurface&
       const double norm = std::hypot(sum[0], sum[1]);
       if (norm > 1e-9) {
         const std::uint32_t v = x.vertex;
-        const Vec3 p = space(v);
+        const Vec3 p = spaceOf(surface, v);
         const std::array<double, 2> mid = {sum[0] / norm * steps, sum[1] / norm * steps};
         const Vec3 to_mid_x = lift(x.map, mid), to_mid_y = lift(y.map, mid);
         const Vec3 to_mid = {(to_mid_x[0] + to_mid_y[0]) / 2, (to_mid_x[1] + to_mid_y[1]) / 2,
                              (to_mid_x[2] + to_mid_y[2]) / 2};
-        const std::uint32_t xs =
-            append(plus(p, lift(x.map, {x.normal[0] * steps, x.normal[1] * steps})), v);
-        const std::uint32_t ms = append(plus(p, to_mid), v);
-        const std::uint32_t ys =
-            append(plus(p, lift(y.map, {y.normal[0] * steps, y.normal[1] * steps})), v);
+        const std::uint32_t xs = appendVertex(
+            surface, plus(p, lift(x.map, {x.normal[0] * steps, x.normal[1] * steps})), v);
+        const std::uint32_t ms = appendVertex(surface, plus(p, to_mid), v);
+        const std::uint32_t ys = appendVertex(
+            surface, plus(p, lift(y.map, {y.normal[0] * steps, y.normal[1] * steps})), v);
         surface.triangles.push_back({v, xs, ms});
         surface.triangles.push_back({v, ms, ys});
       }
     }
     i = end;
   }
+}
+
+// Extends the mesh past its boundary by `steps` grid steps (kMeshExtensionSteps): for each edge
+// used by one triangle only, a strip outward from that triangle, `steps` wide in grid coordinates
+// and lifted into space by the triangle's own affine map from grid to space (so the strip lies in
+// its plane and is as wide as the local grid step there); at a boundary vertex where exactly two
+// boundary edges meet, the wedge between their strips is filled (two triangles through the
+// bisector), so a convex corner is rounded rather than notched. Colours are the edge's own.
+void extendBoundary(const prepare::Scan& points, double steps, ReferenceSurface& surface) {
+  if (!(steps > 0)) return;
+  std::vector<Outward> outward = extrudeBoundaryEdges(points, steps, surface);
+  fillCorners(steps, outward, surface);
 }
 
 void meshGrid(const prepare::Scan& points, double extension, ReferenceSurface& surface) {

@@ -1,30 +1,31 @@
 // octopoint-reference-truth: where does a scan's surface end? The disc reference
 // (lab/reference_surface.h kSplatRule), the depth image's mesh (kMeshExtensionSteps) and
 // octopoint's model of the same points, each against the exact silhouette of a sampled square
-// (lab/reference_truth.h, docs/tradeoff.md "The reference render"). lab/scripts/reference-truth runs
-// it.
+// (lab/reference_truth.h, docs/tradeoff.md "The reference render"). lab/scripts/reference-truth
+// runs it.
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <iostream>
 #include <memory>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
 
-#include "lab/reference_closure.h"
-#include "lab/reference_render.h"
-#include "lab/reference_truth.h"
-#include "lab/splat_rule_flag.h"
-#include "lab/tradeoff.h"
 #include "cli/arguments.h"
 #include "cli/error.h"
 #include "cli/numbers.h"
 #include "cli/real_numbers.h"
 #include "cli/run_tool.h"
 #include "codegen/depth_range.h"
-#include "renderer/level_of_detail.h"
+#include "lab/reference_closure.h"
+#include "lab/reference_render.h"
+#include "lab/reference_truth.h"
+#include "lab/splat_rule_flag.h"
+#include "lab/tradeoff.h"
 #include "octopoint/render.h"
+#include "renderer/level_of_detail.h"
 
 namespace {
 
@@ -294,26 +295,32 @@ void outlineSweep(int cells, int lines, int strays, tradeoff::SplatRule base,
   }
 }
 
-int run(int argc, char** argv) {
+struct TruthOptions {
   // The defaults put lms400's voxel-to-spacing ratio (2.27) at depth 6 (jittered) and 7 (lines).
   int cells = 73, lines = 139, strays = 40;
   tradeoff::SplatRule rule = tradeoff::kSplatRule;
   double extension = tradeoff::kMeshExtensionSteps;
   bool organized_only = false, outline_sweep = false;
+};
+
+// Returns nullopt when --help was asked for (after printing the usage).
+std::optional<TruthOptions> parseTruthOptions(int argc, char** argv) {
+  TruthOptions options;
+  tradeoff::SplatRule& rule = options.rule;
   cli::ArgumentReader args(argc, argv);
   while (args.next()) {
     if (args.is("-h") || args.is("--help")) {
       std::cout << kUsage;
-      return 0;
+      return std::nullopt;
     } else if (args.is("--cells")) {
       const std::string name = args.name();
-      cells = cli::parseInt(name, args.value(), 16, 400);
+      options.cells = cli::parseInt(name, args.value(), 16, 400);
     } else if (args.is("--lines")) {
       const std::string name = args.name();
-      lines = cli::parseInt(name, args.value(), 16, 400);
+      options.lines = cli::parseInt(name, args.value(), 16, 400);
     } else if (args.is("--strays")) {
       const std::string name = args.name();
-      strays = cli::parseInt(name, args.value(), 1, 1000);
+      options.strays = cli::parseInt(name, args.value(), 1, 1000);
     } else if (args.is("--rule")) {
       const std::string name = args.name();
       const tradeoff::SplatRule outline = rule;
@@ -324,18 +331,25 @@ int run(int argc, char** argv) {
       rule.outline_shift = outline.outline_shift;
     } else if (args.is("--mesh-extension")) {
       const std::string name = args.name();
-      extension = cli::parseReal(name, args.value(), 0.0, 4.0);
+      options.extension = cli::parseReal(name, args.value(), 0.0, 4.0);
     } else if (args.is("--organized-only")) {
-      organized_only = true;
+      options.organized_only = true;
     } else if (args.is("--outline")) {
       const std::string name = args.name();
       tradeoff::parseOutlineRule(name, args.value(), rule);
     } else if (args.is("--outline-sweep")) {
-      outline_sweep = true;
+      options.outline_sweep = true;
     } else {
       args.refuseUnknown();
     }
   }
+  return options;
+}
+
+int run(int argc, char** argv) {
+  const std::optional<TruthOptions> parsed = parseTruthOptions(argc, argv);
+  if (!parsed) return 0;
+  const auto& [cells, lines, strays, rule, extension, organized_only, outline_sweep] = *parsed;
   if (outline_sweep) {
     // (scale, shift) of the outline's discs: smaller, or as large and moved inward.
     outlineSweep(cells, lines, strays, rule, {16, 24}, {120, 150},

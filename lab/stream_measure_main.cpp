@@ -13,12 +13,6 @@
 #include <string>
 #include <vector>
 
-#include "tools/chunked_render.h"
-#include "lab/image_quality.h"
-#include "tools/model_source.h"
-#include "lab/reference_render.h"
-#include "lab/reference_surface.h"
-#include "lab/stream_run.h"
 #include "cli/arguments.h"
 #include "cli/error.h"
 #include "cli/numbers.h"
@@ -26,6 +20,12 @@
 #include "cli/run_tool.h"
 #include "codegen/cube_fit.h"
 #include "codegen/prepare.h"
+#include "lab/image_quality.h"
+#include "lab/reference_render.h"
+#include "lab/reference_surface.h"
+#include "lab/stream_run.h"
+#include "tools/chunked_render.h"
+#include "tools/model_source.h"
 
 namespace {
 
@@ -33,11 +33,13 @@ namespace fs = std::filesystem;
 using namespace octopoint;
 
 constexpr const char* kUsage =
-    R"(usage: octopoint-stream-measure SCAN --model M.oct --serve OCTOPOINT-SERVE [options] -o OUTDIR
+    R"(usage: octopoint-stream-measure SCAN --model M.oct --serve OCTOPOINT-SERVE [options] )"
+    R"(-o OUTDIR
 
 Streams the chunked model M.oct (prepared from SCAN with --chunked) from octopoint-serve over
 shaped links, one connection each, and records, per view and link: the time to the first picture,
-the PSNR of every frame against the scan's surface reference (docs/tradeoff.md), the time and bytes until the
+the PSNR of every frame against the scan's surface reference (docs/tradeoff.md), )"
+    R"(the time and bytes until the
 frame is within 1 dB of the complete frame's PSNR, and the time to download the whole file first.
 Writes OUTDIR/LABEL_runs.csv, LABEL_samples.csv, LABEL_psnr_bytes.png and LABEL_frames_VIEW.png.
 
@@ -233,11 +235,60 @@ cv::Mat plotPsnrAgainstBytes(const std::vector<std::pair<std::string, StreamRunR
   return plot;
 }
 
+// One stream of the model over one link, and the whole file's download time over it (measured
+// when it fits the time limit, else from the link's latency and rate).
+struct LinkRun {
+  StreamRunResult result;
+  double whole_seconds = 0;
+  bool whole_measured = false;
+};
+
+// `strip` gets the frames at the bytes `figures` asks for.
+LinkRun runOverLink(const Options& options, const Link& link, const View& view,
+                    const cv::Mat& reference, std::uint64_t file_bytes, bool figures,
+                    std::vector<cv::Mat>& strip) {
+  const std::string folder = fs::absolute(fs::path(options.model)).parent_path().string();
+  const std::string name = fs::path(options.model).filename().string();
+  const std::vector<std::uint64_t> keep = {4096, 16384, 65536, 262144, 1048576};
+  LinkRun run;
+  ServeProcess server(options.serve, folder, link);
+  const std::string url = "http://127.0.0.1:" + std::to_string(server.port()) + "/" + name;
+  run.result = runStream(
+      url, view.camera, options.fill, reference, std::chrono::seconds(options.limit_seconds),
+      figures ? keep : std::vector<std::uint64_t>{},
+      [&](std::uint64_t, const cv::Mat& frame) { strip.push_back(frame.clone()); });
+  const double expected = link.latency_ms / 1000.0 + static_cast<double>(file_bytes) /
+                                                         static_cast<double>(link.bytes_per_second);
+  if (expected < options.limit_seconds) {
+    run.whole_seconds =
+        downloadWholeFile(url, file_bytes, std::chrono::seconds(options.limit_seconds));
+    run.whole_measured = run.whole_seconds > 0;
+  }
+  if (!run.whole_measured) run.whole_seconds = expected;
+  return run;
+}
+
+// The run's row of LABEL_runs.csv.
+std::string runsRow(const Options& options, const View& view, const Link& link,
+                    std::uint64_t file_bytes, const LinkRun& run, double complete_psnr) {
+  const StreamRunResult& result = run.result;
+  const StreamSample* good = withinOneDb(result, complete_psnr);
+  char row[512];
+  std::snprintf(
+      row, sizeof row, "%s,%s,%s,%llu,%d,%d,%.3f,%.2f,%.3f,%llu,%.3f,%d,%.2f,%d,%.3f,%llu,%.4f\n",
+      options.label.c_str(), view.name.c_str(), link.name.c_str(),
+      static_cast<unsigned long long>(file_bytes), result.wanted_depth, result.deepest_level_depth,
+      result.samples.empty() ? -1.0 : result.samples.front().seconds, complete_psnr,
+      good ? good->seconds : -1.0, static_cast<unsigned long long>(good ? good->bytes : 0),
+      run.whole_seconds, run.whole_measured ? 1 : 0, good ? run.whole_seconds / good->seconds : 0.0,
+      result.complete ? 1 : 0, result.seconds, static_cast<unsigned long long>(result.bytes),
+      static_cast<double>(result.bytes) / static_cast<double>(file_bytes));
+  return row;
+}
+
 int run(int argc, char** argv) {
   const Options options = parseOptions(argc, argv);
   fs::create_directories(options.output);
-  const std::string folder = fs::absolute(fs::path(options.model)).parent_path().string();
-  const std::string name = fs::path(options.model).filename().string();
   const std::unique_ptr<LoadedModel> whole = loadModel("", options.model, true);
   if (!whole->chunked)
     throw cli::Error(options.model + ": not a chunked model (prepare it with --chunked)");
@@ -268,42 +319,11 @@ int run(int argc, char** argv) {
       const Link& link = options.links[l];
       const bool figures = l + 1 == options.links.size();
       std::vector<cv::Mat> strip;
-      const std::vector<std::uint64_t> keep = {4096, 16384, 65536, 262144, 1048576};
-      StreamRunResult result;
-      double whole_seconds = 0;
-      bool whole_measured = false;
-      {
-        ServeProcess server(options.serve, folder, link);
-        const std::string url = "http://127.0.0.1:" + std::to_string(server.port()) + "/" + name;
-        result = runStream(
-            url, view.camera, options.fill, reference, std::chrono::seconds(options.limit_seconds),
-            figures ? keep : std::vector<std::uint64_t>{},
-            [&](std::uint64_t, const cv::Mat& frame) { strip.push_back(frame.clone()); });
-        const double expected =
-            link.latency_ms / 1000.0 +
-            static_cast<double>(file_bytes) / static_cast<double>(link.bytes_per_second);
-        if (expected < options.limit_seconds) {
-          whole_seconds =
-              downloadWholeFile(url, file_bytes, std::chrono::seconds(options.limit_seconds));
-          whole_measured = whole_seconds > 0;
-        }
-        if (!whole_measured) whole_seconds = expected;
-      }
-      const StreamSample* good = withinOneDb(result, complete_psnr);
-      char row[512];
-      std::snprintf(
-          row, sizeof row,
-          "%s,%s,%s,%llu,%d,%d,%.3f,%.2f,%.3f,%llu,%.3f,%d,%.2f,%d,%.3f,%llu,%.4f\n",
-          options.label.c_str(), view.name.c_str(), link.name.c_str(),
-          static_cast<unsigned long long>(file_bytes), result.wanted_depth,
-          result.deepest_level_depth,
-          result.samples.empty() ? -1.0 : result.samples.front().seconds, complete_psnr,
-          good ? good->seconds : -1.0, static_cast<unsigned long long>(good ? good->bytes : 0),
-          whole_seconds, whole_measured ? 1 : 0, good ? whole_seconds / good->seconds : 0.0,
-          result.complete ? 1 : 0, result.seconds, static_cast<unsigned long long>(result.bytes),
-          static_cast<double>(result.bytes) / static_cast<double>(file_bytes));
+      const LinkRun run = runOverLink(options, link, view, reference, file_bytes, figures, strip);
+      const StreamRunResult& result = run.result;
+      const std::string row = runsRow(options, view, link, file_bytes, run, complete_psnr);
       runs << row;
-      std::printf("%s", row);
+      std::printf("%s", row.c_str());
       std::fflush(stdout);
       for (const StreamSample& s : result.samples) {
         samples << options.label << ',' << view.name << ',' << link.name << ',' << s.seconds << ','

@@ -53,149 +53,164 @@ struct Verdict {
   std::string numbers;
 };
 
-std::vector<Verdict> checkTargets(const std::vector<SweepCell>& cells) {
-  std::vector<Verdict> verdicts;
-  {
-    Verdict v{"Empty share of the silhouette <= 1% at every size and zoom (after)"};
-    double worst = -1, worst_interior = -1;
-    std::string where, interior_where, over;
-    for (const SweepCell& cell : cells) {
-      const SweepResult* after = cell.find(Config::kAfter);
-      if (!after) continue;
-      if (after->quality.empty_share > worst)
-        worst = after->quality.empty_share, where = cellName(cell);
-      if (after->quality.interior_empty_share > worst_interior)
-        worst_interior = after->quality.interior_empty_share, interior_where = cellName(cell);
-      if (after->quality.empty_share > 0.01) over += (over.empty() ? "" : ", ") + cellName(cell);
-    }
-    v.checked = worst >= 0;
-    v.met = v.checked && over.empty();
-    v.numbers = "worst " + format("%.2f%%", 100 * worst) + " (" + where + ")" +
-                (over.empty() ? "" : "; above 1%: " + over) + "; in the interior (" +
-                std::to_string(kBandWidth) + " pixels in from the outline) worst " +
-                format("%.2f%%", 100 * worst_interior) + " (" + interior_where + ")";
-    verdicts.push_back(v);
+// The empty share of the silhouette, after, at every size and zoom.
+Verdict emptyShareVerdict(const std::vector<SweepCell>& cells) {
+  Verdict v{"Empty share of the silhouette <= 1% at every size and zoom (after)"};
+  double worst = -1, worst_interior = -1;
+  std::string where, interior_where, over;
+  for (const SweepCell& cell : cells) {
+    const SweepResult* after = cell.find(Config::kAfter);
+    if (!after) continue;
+    if (after->quality.empty_share > worst)
+      worst = after->quality.empty_share, where = cellName(cell);
+    if (after->quality.interior_empty_share > worst_interior)
+      worst_interior = after->quality.interior_empty_share, interior_where = cellName(cell);
+    if (after->quality.empty_share > 0.01) over += (over.empty() ? "" : ", ") + cellName(cell);
   }
+  v.checked = worst >= 0;
+  v.met = v.checked && over.empty();
+  v.numbers = "worst " + format("%.2f%%", 100 * worst) + " (" + where + ")" +
+              (over.empty() ? "" : "; above 1%: " + over) + "; in the interior (" +
+              std::to_string(kBandWidth) + " pixels in from the outline) worst " +
+              format("%.2f%%", 100 * worst_interior) + " (" + interior_where + ")";
+  return v;
+}
+
+// The PSNR targets at 640x480 and larger: the gain over today's renderer with filling, and the
+// drop from 320x240 zoom 1. Appends both verdicts.
+void addPsnrVerdicts(const std::vector<SweepCell>& cells, std::vector<Verdict>& verdicts) {
   const SweepCell* base = findCell(cells, 320, 240, 1);
   const SweepResult* base_after = base ? base->find(Config::kAfter) : nullptr;
-  {
-    Verdict gain{"PSNR at 640x480 and larger >= today's renderer with filling + 6 dB"};
-    Verdict drop{"PSNR at 640x480 and larger >= the 320x240 zoom 1 figure - 3 dB"};
-    double least_gain = 1e9, least_psnr = 1e9;
-    std::string gain_at, psnr_at, gain_fail, drop_fail, above_ceiling, above_cover;
-    for (const SweepCell& cell : cells) {
-      const SweepResult* after = cell.find(Config::kAfter);
-      const SweepResult* filled = cell.find(Config::kBeforeFilled);
-      if (!after || !filled || std::int64_t{cell.width} * cell.height < 640 * 480) continue;
-      const double delta = after->quality.psnr - filled->quality.psnr;
-      if (delta < least_gain) least_gain = delta, gain_at = cellName(cell);
-      if (delta < 6)
-        gain_fail +=
-            (gain_fail.empty() ? "" : ", ") + cellName(cell) + format(" (%+.1f dB)", delta);
-      if (filled->quality.psnr + 6 > after->voxel_cover_psnr) {
-        above_cover += (above_cover.empty() ? "" : ", ") + cellName(cell) +
+  Verdict gain{"PSNR at 640x480 and larger >= today's renderer with filling + 6 dB"};
+  Verdict drop{"PSNR at 640x480 and larger >= the 320x240 zoom 1 figure - 3 dB"};
+  double least_gain = 1e9, least_psnr = 1e9;
+  std::string gain_at, psnr_at, gain_fail, drop_fail, above_ceiling, above_cover;
+  for (const SweepCell& cell : cells) {
+    const SweepResult* after = cell.find(Config::kAfter);
+    const SweepResult* filled = cell.find(Config::kBeforeFilled);
+    if (!after || !filled || std::int64_t{cell.width} * cell.height < 640 * 480) continue;
+    const double delta = after->quality.psnr - filled->quality.psnr;
+    if (delta < least_gain) least_gain = delta, gain_at = cellName(cell);
+    if (delta < 6)
+      gain_fail += (gain_fail.empty() ? "" : ", ") + cellName(cell) + format(" (%+.1f dB)", delta);
+    if (filled->quality.psnr + 6 > after->voxel_cover_psnr) {
+      above_cover += (above_cover.empty() ? "" : ", ") + cellName(cell) +
+                     format(" (%.1f", filled->quality.psnr + 6) +
+                     format(" > %.1f dB)", after->voxel_cover_psnr);
+    }
+    if (filled->quality.psnr + 6 > after->palette_ceiling_psnr) {
+      above_ceiling += (above_ceiling.empty() ? "" : ", ") + cellName(cell) +
                        format(" (%.1f", filled->quality.psnr + 6) +
-                       format(" > %.1f dB)", after->voxel_cover_psnr);
-      }
-      if (filled->quality.psnr + 6 > after->palette_ceiling_psnr) {
-        above_ceiling += (above_ceiling.empty() ? "" : ", ") + cellName(cell) +
-                         format(" (%.1f", filled->quality.psnr + 6) +
-                         format(" > %.1f dB)", after->palette_ceiling_psnr);
-      }
-      if (after->quality.psnr < least_psnr)
-        least_psnr = after->quality.psnr, psnr_at = cellName(cell);
-      if (base_after && after->quality.psnr < base_after->quality.psnr - 3) {
-        drop_fail += (drop_fail.empty() ? "" : ", ") + cellName(cell) +
-                     format(" (%.1f dB)", after->quality.psnr);
-      }
+                       format(" > %.1f dB)", after->palette_ceiling_psnr);
     }
-    gain.checked = least_gain < 1e9;
-    gain.met = gain.checked && gain_fail.empty();
-    gain.numbers = "least gain " + format("%+.1f dB", least_gain) + " (" + gain_at + ")" +
-                   (gain_fail.empty() ? "" : "; under +6 dB: " + gain_fail) +
-                   "; filled + 6 dB above the after model's palette ceiling (no frame of it can "
-                   "reach it): " +
-                   (above_ceiling.empty() ? std::string("none") : above_ceiling) +
-                   "; filled + 6 dB above the exact cover of the after model's finest voxels (each "
-                   "covering exactly the pixel centres inside its projection): " +
-                   (above_cover.empty() ? std::string("none") : above_cover);
-    drop.checked = gain.checked && base_after;
-    drop.met = drop.checked && drop_fail.empty();
-    if (drop.checked) {
-      drop.numbers = "320x240 zoom 1: " + format("%.1f dB", base_after->quality.psnr) +
-                     ", lowest " + format("%.1f dB", least_psnr) + " (" + psnr_at + ")" +
-                     (drop_fail.empty() ? "" : "; below: " + drop_fail);
+    if (after->quality.psnr < least_psnr)
+      least_psnr = after->quality.psnr, psnr_at = cellName(cell);
+    if (base_after && after->quality.psnr < base_after->quality.psnr - 3) {
+      drop_fail += (drop_fail.empty() ? "" : ", ") + cellName(cell) +
+                   format(" (%.1f dB)", after->quality.psnr);
     }
-    verdicts.push_back(gain);
-    verdicts.push_back(drop);
   }
-  {
-    Verdict v{"Zoom 0.25 costs at most 1/4 of zoom 1 (same size, after)"};
-    double worst = -1;
-    std::string list;
-    bool all = true;
-    for (const SweepCell& cell : cells) {
-      if (cell.zoom != 1) continue;
-      const SweepCell* quarter = findCell(cells, cell.width, cell.height, 0.25);
-      const SweepResult* a = cell.find(Config::kAfter);
-      const SweepResult* q = quarter ? quarter->find(Config::kAfter) : nullptr;
-      if (!a || !q) continue;
-      const double ratio = q->ms_per_frame / a->ms_per_frame;
-      worst = std::max(worst, ratio);
-      all = all && ratio <= 0.25;
-      list += (list.empty() ? "" : ", ") + std::to_string(cell.width) + "x" +
-              std::to_string(cell.height) + format(" %.2f", ratio);
-    }
-    v.checked = worst >= 0;
-    v.met = v.checked && all;
-    v.numbers = "ratio per size: " + list;
-    verdicts.push_back(v);
+  gain.checked = least_gain < 1e9;
+  gain.met = gain.checked && gain_fail.empty();
+  gain.numbers = "least gain " + format("%+.1f dB", least_gain) + " (" + gain_at + ")" +
+                 (gain_fail.empty() ? "" : "; under +6 dB: " + gain_fail) +
+                 "; filled + 6 dB above the after model's palette ceiling (no frame of it can "
+                 "reach it): " +
+                 (above_ceiling.empty() ? std::string("none") : above_ceiling) +
+                 "; filled + 6 dB above the exact cover of the after model's finest voxels (each "
+                 "covering exactly the pixel centres inside its projection): " +
+                 (above_cover.empty() ? std::string("none") : above_cover);
+  drop.checked = gain.checked && base_after;
+  drop.met = drop.checked && drop_fail.empty();
+  if (drop.checked) {
+    drop.numbers = "320x240 zoom 1: " + format("%.1f dB", base_after->quality.psnr) + ", lowest " +
+                   format("%.1f dB", least_psnr) + " (" + psnr_at + ")" +
+                   (drop_fail.empty() ? "" : "; below: " + drop_fail);
   }
-  {
-    Verdict v{"A 1920x1080 frame costs at most 27x a 320x240 one (same zoom, after)"};
-    double worst = -1;
-    std::string list;
-    for (const SweepCell& cell : cells) {
-      if (cell.width != 1920 || cell.height != 1080) continue;
-      const SweepCell* small = findCell(cells, 320, 240, cell.zoom);
-      const SweepResult* big = cell.find(Config::kAfter);
-      const SweepResult* s = small ? small->find(Config::kAfter) : nullptr;
-      if (!big || !s) continue;
-      const double ratio = big->ms_per_frame / s->ms_per_frame;
-      worst = std::max(worst, ratio);
-      list += (list.empty() ? "" : ", ") + format("zoom %g", cell.zoom) + format(" %.1fx", ratio);
-    }
-    v.checked = worst >= 0;
-    v.met = v.checked && worst <= 27;
-    v.numbers = "ratio per zoom: " + list;
-    verdicts.push_back(v);
+  verdicts.push_back(gain);
+  verdicts.push_back(drop);
+}
+
+// Zoom 0.25's time against zoom 1's, per size, after.
+Verdict zoomCostVerdict(const std::vector<SweepCell>& cells) {
+  Verdict v{"Zoom 0.25 costs at most 1/4 of zoom 1 (same size, after)"};
+  double worst = -1;
+  std::string list;
+  bool all = true;
+  for (const SweepCell& cell : cells) {
+    if (cell.zoom != 1) continue;
+    const SweepCell* quarter = findCell(cells, cell.width, cell.height, 0.25);
+    const SweepResult* a = cell.find(Config::kAfter);
+    const SweepResult* q = quarter ? quarter->find(Config::kAfter) : nullptr;
+    if (!a || !q) continue;
+    const double ratio = q->ms_per_frame / a->ms_per_frame;
+    worst = std::max(worst, ratio);
+    all = all && ratio <= 0.25;
+    list += (list.empty() ? "" : ", ") + std::to_string(cell.width) + "x" +
+            std::to_string(cell.height) + format(" %.2f", ratio);
   }
-  {
-    Verdict v{
-        "Depth auto without filling beats today's renderer with filling in time and PSNR (every "
-        "cell)"};
-    int compared = 0;
-    std::string slower, worse;
-    for (const SweepCell& cell : cells) {
-      const SweepResult* after = cell.find(Config::kAfter);
-      const SweepResult* filled = cell.find(Config::kBeforeFilled);
-      if (!after || !filled) continue;
-      ++compared;
-      if (after->ms_per_frame >= filled->ms_per_frame) {
-        slower += (slower.empty() ? "" : ", ") + cellName(cell) +
-                  format(" (%.3f", after->ms_per_frame) +
-                  format(" vs %.3f ms)", filled->ms_per_frame);
-      }
-      if (after->quality.psnr <= filled->quality.psnr)
-        worse += (worse.empty() ? "" : ", ") + cellName(cell);
-    }
-    v.checked = compared > 0;
-    v.met = v.checked && slower.empty() && worse.empty();
-    v.numbers = std::to_string(compared) + " cells compared" +
-                (slower.empty() ? "" : "; not faster: " + slower) +
-                (worse.empty() ? "" : "; not better PSNR: " + worse);
-    verdicts.push_back(v);
+  v.checked = worst >= 0;
+  v.met = v.checked && all;
+  v.numbers = "ratio per size: " + list;
+  return v;
+}
+
+// 1920x1080's time against 320x240's, per zoom, after.
+Verdict sizeCostVerdict(const std::vector<SweepCell>& cells) {
+  Verdict v{"A 1920x1080 frame costs at most 27x a 320x240 one (same zoom, after)"};
+  double worst = -1;
+  std::string list;
+  for (const SweepCell& cell : cells) {
+    if (cell.width != 1920 || cell.height != 1080) continue;
+    const SweepCell* small = findCell(cells, 320, 240, cell.zoom);
+    const SweepResult* big = cell.find(Config::kAfter);
+    const SweepResult* s = small ? small->find(Config::kAfter) : nullptr;
+    if (!big || !s) continue;
+    const double ratio = big->ms_per_frame / s->ms_per_frame;
+    worst = std::max(worst, ratio);
+    list += (list.empty() ? "" : ", ") + format("zoom %g", cell.zoom) + format(" %.1fx", ratio);
   }
+  v.checked = worst >= 0;
+  v.met = v.checked && worst <= 27;
+  v.numbers = "ratio per zoom: " + list;
+  return v;
+}
+
+// Depth auto without filling against today's renderer with filling, in time and PSNR.
+Verdict autoDepthVerdict(const std::vector<SweepCell>& cells) {
+  Verdict v{
+      "Depth auto without filling beats today's renderer with filling in time and PSNR (every "
+      "cell)"};
+  int compared = 0;
+  std::string slower, worse;
+  for (const SweepCell& cell : cells) {
+    const SweepResult* after = cell.find(Config::kAfter);
+    const SweepResult* filled = cell.find(Config::kBeforeFilled);
+    if (!after || !filled) continue;
+    ++compared;
+    if (after->ms_per_frame >= filled->ms_per_frame) {
+      slower += (slower.empty() ? "" : ", ") + cellName(cell) +
+                format(" (%.3f", after->ms_per_frame) +
+                format(" vs %.3f ms)", filled->ms_per_frame);
+    }
+    if (after->quality.psnr <= filled->quality.psnr)
+      worse += (worse.empty() ? "" : ", ") + cellName(cell);
+  }
+  v.checked = compared > 0;
+  v.met = v.checked && slower.empty() && worse.empty();
+  v.numbers = std::to_string(compared) + " cells compared" +
+              (slower.empty() ? "" : "; not faster: " + slower) +
+              (worse.empty() ? "" : "; not better PSNR: " + worse);
+  return v;
+}
+
+std::vector<Verdict> checkTargets(const std::vector<SweepCell>& cells) {
+  std::vector<Verdict> verdicts;
+  verdicts.push_back(emptyShareVerdict(cells));
+  addPsnrVerdicts(cells, verdicts);
+  verdicts.push_back(zoomCostVerdict(cells));
+  verdicts.push_back(sizeCostVerdict(cells));
+  verdicts.push_back(autoDepthVerdict(cells));
   return verdicts;
 }
 

@@ -9,15 +9,15 @@
 #include <string>
 #include <vector>
 
+#include "cli/error.h"
+#include "cli/output_file.h"
+#include "cli/text.h"
+#include "codegen/depth_range.h"
 #include "lab/image_quality.h"
 #include "lab/palette_ceiling.h"
 #include "lab/tradeoff.h"
 #include "lab/tradeoff_report.h"
 #include "lab/voxel_cover.h"
-#include "cli/error.h"
-#include "cli/output_file.h"
-#include "cli/text.h"
-#include "codegen/depth_range.h"
 #include "octopoint/render.h"
 #include "renderer/level_of_detail.h"
 
@@ -188,6 +188,64 @@ void writePictures(const fs::path& directory, const SweepCell& cell, const cv::M
   cli::writeFileAtomically(directory / (base + "_empty.png"), encodePng(after_empty));
 }
 
+// One cell's quality: a frame of each configuration against the reference, with each model's
+// palette ceiling and exact cover; its pictures written when the options ask for them.
+SweepCell measureCell(const Scene& scene, const ViewSweepOptions& options, SweepDrawer& drawer,
+                      const std::vector<cv::Vec3b>& before_colours,
+                      const std::vector<cv::Vec3b>& after_colours, SweepCell cell,
+                      Framebuffer& frame, HoleFiller& filler, const fs::path& pictures_dir) {
+  const Camera camera = cameraOf(options, cell);
+  const Reference reference = referenceFor(scene, camera);
+  const double before_ceiling = paletteCeilingPsnr(reference.image, before_colours);
+  const double after_ceiling = paletteCeilingPsnr(reference.image, after_colours);
+  const double before_cover = psnr(reference.image, drawer.exactCover(Config::kBefore, camera));
+  const double after_cover = psnr(reference.image, drawer.exactCover(Config::kAfter, camera));
+  cv::Mat pictures[3], after_empty;
+  for (std::size_t k = 0; k < 3; ++k) {
+    drawer.draw(kConfigs[k], camera, frame, filler);
+    const SplatFootprint& splat = drawer.setup().splat;
+    cell.results.push_back({kConfigs[k], drawer.setup().depth, splat.columns, splat.rows, 0,
+                            measure(reference, frame, drawer.model(kConfigs[k])),
+                            kConfigs[k] == Config::kAfter ? after_ceiling : before_ceiling,
+                            kConfigs[k] == Config::kAfter ? after_cover : before_cover});
+    if (options.pictures) {
+      pictures[k] = toImage(frame, drawer.model(kConfigs[k]));
+      if (kConfigs[k] == Config::kAfter) markEmpty(reference, frame, &after_empty);
+    }
+  }
+  if (options.pictures) writePictures(pictures_dir, cell, reference.image, pictures, after_empty);
+  return cell;
+}
+
+// Time: rounds over all cells, each a median over repeated frames; a cell's time is the median
+// of its rounds, so that a burst of load on a shared machine spoils one round, not the figure.
+void timeCells(SweepDrawer& drawer, const ViewSweepOptions& options,
+               std::vector<SweepCell>& cells) {
+  std::vector<std::vector<double>> round_ms(cells.size() * 3);
+  for (int round = 0; round < options.rounds; ++round) {
+    for (std::size_t c = 0; c < cells.size(); ++c) {
+      const Camera camera = cameraOf(options, cells[c]);
+      Framebuffer frame(camera.width, camera.height);
+      HoleFiller filler(camera.width);
+      for (std::size_t k = 0; k < 3; ++k) {
+        round_ms[c * 3 + k].push_back(medianMilliseconds(
+            [&] { drawer.draw(kConfigs[k], camera, frame, filler); }, options.repeats));
+      }
+    }
+    std::printf("%s timing round %d of %d done\n", options.label.c_str(), round + 1,
+                options.rounds);
+    std::fflush(stdout);
+  }
+  for (std::size_t c = 0; c < cells.size(); ++c) {
+    for (std::size_t k = 0; k < 3; ++k) {
+      std::vector<double>& ms = round_ms[c * 3 + k];
+      std::nth_element(ms.begin(), ms.begin() + static_cast<std::ptrdiff_t>(ms.size() / 2),
+                       ms.end());
+      cells[c].results[k].ms_per_frame = ms[ms.size() / 2];
+    }
+  }
+}
+
 }  // namespace
 
 std::vector<std::string> viewSweepOutputNames() { return {"sweep.csv", "sweep.md"}; }
@@ -223,59 +281,14 @@ std::vector<cli::OutputFile> runViewSweep(const Scene& scene, const ViewSweepOpt
     Framebuffer frame(width, height);
     HoleFiller filler(width);
     for (double zoom : options.zooms) {
-      SweepCell cell{width, height, zoom, {}};
-      const Camera camera = cameraOf(options, cell);
-      const Reference reference = referenceFor(scene, camera);
-      const double before_ceiling = paletteCeilingPsnr(reference.image, before_colours);
-      const double after_ceiling = paletteCeilingPsnr(reference.image, after_colours);
-      const double before_cover = psnr(reference.image, drawer.exactCover(Config::kBefore, camera));
-      const double after_cover = psnr(reference.image, drawer.exactCover(Config::kAfter, camera));
-      cv::Mat pictures[3], after_empty;
-      for (std::size_t k = 0; k < 3; ++k) {
-        drawer.draw(kConfigs[k], camera, frame, filler);
-        const SplatFootprint& splat = drawer.setup().splat;
-        cell.results.push_back({kConfigs[k], drawer.setup().depth, splat.columns, splat.rows, 0,
-                                measure(reference, frame, drawer.model(kConfigs[k])),
-                                kConfigs[k] == Config::kAfter ? after_ceiling : before_ceiling,
-                                kConfigs[k] == Config::kAfter ? after_cover : before_cover});
-        if (options.pictures) {
-          pictures[k] = toImage(frame, drawer.model(kConfigs[k]));
-          if (kConfigs[k] == Config::kAfter) markEmpty(reference, frame, &after_empty);
-        }
-      }
-      if (options.pictures)
-        writePictures(pictures_dir, cell, reference.image, pictures, after_empty);
-      cells.push_back(std::move(cell));
+      cells.push_back(measureCell(scene, options, drawer, before_colours, after_colours,
+                                  SweepCell{width, height, zoom, {}}, frame, filler, pictures_dir));
     }
     std::printf("%s %dx%d measured\n", options.label.c_str(), width, height);
     std::fflush(stdout);
   }
 
-  // Time: rounds over all cells, each a median over repeated frames; a cell's time is the median
-  // of its rounds, so that a burst of load on a shared machine spoils one round, not the figure.
-  std::vector<std::vector<double>> round_ms(cells.size() * 3);
-  for (int round = 0; round < options.rounds; ++round) {
-    for (std::size_t c = 0; c < cells.size(); ++c) {
-      const Camera camera = cameraOf(options, cells[c]);
-      Framebuffer frame(camera.width, camera.height);
-      HoleFiller filler(camera.width);
-      for (std::size_t k = 0; k < 3; ++k) {
-        round_ms[c * 3 + k].push_back(medianMilliseconds(
-            [&] { drawer.draw(kConfigs[k], camera, frame, filler); }, options.repeats));
-      }
-    }
-    std::printf("%s timing round %d of %d done\n", options.label.c_str(), round + 1,
-                options.rounds);
-    std::fflush(stdout);
-  }
-  for (std::size_t c = 0; c < cells.size(); ++c) {
-    for (std::size_t k = 0; k < 3; ++k) {
-      std::vector<double>& ms = round_ms[c * 3 + k];
-      std::nth_element(ms.begin(), ms.begin() + static_cast<std::ptrdiff_t>(ms.size() / 2),
-                       ms.end());
-      cells[c].results[k].ms_per_frame = ms[ms.size() / 2];
-    }
-  }
+  timeCells(drawer, options, cells);
   std::string models = "Before: depths ";
   models += storedDepths(*before_model);
   models += ", after: depths ";

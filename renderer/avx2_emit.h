@@ -106,8 +106,8 @@ struct Emitter {
 
   // Stores eight lanes of each array at the end (the batch has room past its last entry) and
   // keeps the first `kept` of them.
-  __attribute__((target("avx2"), always_inline)) void append(__m256i index_lanes, __m256i word_lanes,
-                                                            unsigned kept) {
+  __attribute__((target("avx2"), always_inline)) void append(__m256i index_lanes,
+                                                             __m256i word_lanes, unsigned kept) {
     _mm256_storeu_si256(reinterpret_cast<__m256i*>(index + count), index_lanes);
     _mm256_storeu_si256(reinterpret_cast<__m256i*>(word + count), word_lanes);
     count += kept;
@@ -116,12 +116,16 @@ struct Emitter {
 
 // Eight leaves' payloads, one per lane, from the cursor (which is not advanced): the palette index,
 // and for kColourNormal the normal index << 8 (Framebuffer::packLeaf).
-__attribute__((target("avx2"), always_inline)) inline __m256i payloadLanes(const ColourLeaves& leaves) {
+__attribute__((target("avx2"), always_inline)) inline __m256i payloadLanes(
+    const ColourLeaves& leaves) {
   return _mm256_cvtepu8_epi32(_mm_loadl_epi64(reinterpret_cast<const __m128i*>(leaves.colour)));
 }
-__attribute__((target("avx2"), always_inline)) inline __m256i payloadLanes(const ColourNormalLeaves& leaves) {
-  const __m256i colour = _mm256_cvtepu8_epi32(_mm_loadl_epi64(reinterpret_cast<const __m128i*>(leaves.colour)));
-  const __m256i normal = _mm256_cvtepu8_epi32(_mm_loadl_epi64(reinterpret_cast<const __m128i*>(leaves.normal)));
+__attribute__((target("avx2"), always_inline)) inline __m256i payloadLanes(
+    const ColourNormalLeaves& leaves) {
+  const __m256i colour =
+      _mm256_cvtepu8_epi32(_mm_loadl_epi64(reinterpret_cast<const __m128i*>(leaves.colour)));
+  const __m256i normal =
+      _mm256_cvtepu8_epi32(_mm_loadl_epi64(reinterpret_cast<const __m128i*>(leaves.normal)));
   return _mm256_or_si256(colour, _mm256_slli_epi32(normal, 8));
 }
 
@@ -131,7 +135,8 @@ template <PixelPayload kPayload>
 __attribute__((target("avx2"), always_inline)) inline __m256i keyBits(__m256i key) {
   const __m256i shifted = _mm256_slli_epi32(key, 8);
   if constexpr (kPayload == PixelPayload::kColourNormal) {
-    return _mm256_and_si256(shifted, _mm256_set1_epi32(static_cast<std::int32_t>(FrameView::kColourNormalKeyMask)));
+    return _mm256_and_si256(
+        shifted, _mm256_set1_epi32(static_cast<std::int32_t>(FrameView::kColourNormalKeyMask)));
   }
   return shifted;
 }
@@ -173,8 +178,10 @@ struct BoxChildren {
 // box's last column, less those one row short when it is in its last row. Kept lanes move to the
 // front as in emitChildren: no branch on which children have it.
 template <typename Out>
-__attribute__((target("avx2"), always_inline)) inline void emitBoxPixel(
-    const BoxChildren& box, std::uint32_t offset, bool last_column, bool last_row, Out& out) {
+__attribute__((target("avx2"), always_inline)) inline void emitBoxPixel(const BoxChildren& box,
+                                                                        std::uint32_t offset,
+                                                                        bool last_column,
+                                                                        bool last_row, Out& out) {
   const unsigned mask =
       box.mask & ~(last_column ? box.short_columns : 0u) & ~(last_row ? box.short_rows : 0u);
   const __m256i keep = laneControl(kKeep, mask);
@@ -195,6 +202,57 @@ __attribute__((target("avx2"), always_inline)) inline void emitBox(const LeafLan
       emitBoxPixel(box,
                    static_cast<std::uint32_t>(r) * lanes.row_pixels + static_cast<std::uint32_t>(c),
                    kColumns > 1 && c + 1 == kColumns, kRows > 1 && r + 1 == kRows, out);
+    }
+  }
+}
+
+// emitChildrenOf's footprint pixels (kSplatPixels): each pixel of the box of each child drawn, as
+// an entry; `column`, `row` and `key` are the children's first pixel and depth key, `colour` their
+// payloads in stream order.
+template <EmitMode kEmit, bool kSubset, typename Leaves>
+__attribute__((target("avx2"), always_inline)) inline void emitSplatPixels(
+    const LeafLanes& lanes, __m256i x, __m256i y, __m256i column, __m256i row, __m256i index,
+    __m256i key, __m256i colour, unsigned mask, unsigned drawn, Emitter<Leaves>& out,
+    const BoxOnScreen* edge) {
+  // A child has one column fewer than the box when first + columns - 1 > its last column,
+  // (x + span) >> F (SplatFootprint); the same for rows. As bits, one per child lane.
+  const __m256i last_column =
+      _mm256_sra_epi32(_mm256_add_epi32(x, lanes.span_x), lanes.fraction_bits);
+  const __m256i last_row = _mm256_sra_epi32(_mm256_add_epi32(y, lanes.span_y), lanes.fraction_bits);
+  const BoxChildren box{
+      index,
+      _mm256_or_si256(keyBits<Leaves::kPayload>(key),
+                      _mm256_permutevar8x32_epi32(colour, laneControl(kSpread, mask))),
+      drawn,
+      lowBits(_mm256_cmpgt_epi32(_mm256_add_epi32(column, lanes.columns_less_one), last_column)),
+      lowBits(_mm256_cmpgt_epi32(_mm256_add_epi32(row, lanes.rows_less_one), last_row))};
+  if constexpr (kSubset && kEmit.box_columns != 0) {
+    for (int r = 0; r < kEmit.box_rows; ++r) {
+      for (int c = 0; c < kEmit.box_columns; ++c) {
+        BoxChildren on_screen = box;
+        on_screen.mask &= edge->column_drawn[c] & edge->row_drawn[r];
+        emitBoxPixel(
+            on_screen,
+            static_cast<std::uint32_t>(r) * lanes.row_pixels + static_cast<std::uint32_t>(c),
+            kEmit.box_columns > 1 && c + 1 == kEmit.box_columns,
+            kEmit.box_rows > 1 && r + 1 == kEmit.box_rows, out);
+      }
+    }
+  } else if constexpr (kSubset) {
+    const SplatBox& frame_box = *lanes.box;
+    for (int p = 0; p < frame_box.pixels; ++p) {
+      BoxChildren on_screen = box;
+      on_screen.mask &= edge->column_drawn[frame_box.column[p]] & edge->row_drawn[frame_box.row[p]];
+      emitBoxPixel(on_screen, frame_box.offset[p], (frame_box.edge[p] & 1) != 0,
+                   (frame_box.edge[p] & 2) != 0, out);
+    }
+  } else if constexpr (kEmit.box_columns != 0) {
+    emitBox<kEmit.box_columns, kEmit.box_rows, kEmit.rare_last_row>(lanes, box, out);
+  } else {
+    const SplatBox& frame_box = *lanes.box;
+    for (int p = 0; p < frame_box.pixels; ++p) {
+      emitBoxPixel(box, frame_box.offset[p], (frame_box.edge[p] & 1) != 0,
+                   (frame_box.edge[p] & 2) != 0, out);
     }
   }
 }
@@ -234,49 +292,8 @@ __attribute__((target("avx2"), always_inline)) inline void emitChildrenOf(
   const int children = std::popcount(mask);
   out.leaves.skip(static_cast<std::size_t>(children));
   if constexpr (kEmit.emit == Emit::kSplatPixels) {
-    // A child has one column fewer than the box when first + columns - 1 > its last column,
-    // (x + span) >> F (SplatFootprint); the same for rows. As bits, one per child lane.
-    const __m256i last_column =
-        _mm256_sra_epi32(_mm256_add_epi32(x, lanes.span_x), lanes.fraction_bits);
-    const __m256i last_row =
-        _mm256_sra_epi32(_mm256_add_epi32(y, lanes.span_y), lanes.fraction_bits);
-    const BoxChildren box{
-        index,
-        _mm256_or_si256(keyBits<Leaves::kPayload>(key),
-                        _mm256_permutevar8x32_epi32(colour, laneControl(kSpread, mask))),
-        drawn,
-        lowBits(_mm256_cmpgt_epi32(_mm256_add_epi32(column, lanes.columns_less_one), last_column)),
-        lowBits(_mm256_cmpgt_epi32(_mm256_add_epi32(row, lanes.rows_less_one), last_row))};
-    if constexpr (kSubset && kEmit.box_columns != 0) {
-      for (int r = 0; r < kEmit.box_rows; ++r) {
-        for (int c = 0; c < kEmit.box_columns; ++c) {
-          BoxChildren on_screen = box;
-          on_screen.mask &= edge->column_drawn[c] & edge->row_drawn[r];
-          emitBoxPixel(
-              on_screen,
-              static_cast<std::uint32_t>(r) * lanes.row_pixels + static_cast<std::uint32_t>(c),
-              kEmit.box_columns > 1 && c + 1 == kEmit.box_columns,
-              kEmit.box_rows > 1 && r + 1 == kEmit.box_rows, out);
-        }
-      }
-    } else if constexpr (kSubset) {
-      const SplatBox& frame_box = *lanes.box;
-      for (int p = 0; p < frame_box.pixels; ++p) {
-        BoxChildren on_screen = box;
-        on_screen.mask &=
-            edge->column_drawn[frame_box.column[p]] & edge->row_drawn[frame_box.row[p]];
-        emitBoxPixel(on_screen, frame_box.offset[p], (frame_box.edge[p] & 1) != 0,
-                     (frame_box.edge[p] & 2) != 0, out);
-      }
-    } else if constexpr (kEmit.box_columns != 0) {
-      emitBox<kEmit.box_columns, kEmit.box_rows, kEmit.rare_last_row>(lanes, box, out);
-    } else {
-      const SplatBox& frame_box = *lanes.box;
-      for (int p = 0; p < frame_box.pixels; ++p) {
-        emitBoxPixel(box, frame_box.offset[p], (frame_box.edge[p] & 1) != 0,
-                     (frame_box.edge[p] & 2) != 0, out);
-      }
-    }
+    emitSplatPixels<kEmit, kSubset>(lanes, x, y, column, row, index, key, colour, mask, drawn, out,
+                                    edge);
     return;
   }
   if constexpr (kEmit.emit == Emit::kSplatRects) {

@@ -1,8 +1,8 @@
-#include "octopoint/render.h"
-
 #include <algorithm>
 #include <cstring>
 #include <limits>
+
+#include "octopoint/render.h"
 
 namespace octopoint {
 namespace {
@@ -22,20 +22,74 @@ std::uint32_t nearer(std::uint32_t a, std::uint32_t b) {
   return Framebuffer::depthKeyOf(b) < Framebuffer::depthKeyOf(a) ? b : a;
 }
 
+// Fills the holes of row y of `pixels` from the original words of rows y - 2 .. y + 2 (each
+// readable two columns either side of the row); counts each fill by its type.
+__attribute__((always_inline)) inline void fillHoleRow(
+    std::uint32_t* pixels, std::int32_t y, std::int32_t width, const std::uint32_t* up2,
+    const std::uint32_t* up1, const std::uint32_t* row, const std::uint32_t* down1,
+    const std::uint32_t* down2, std::uint32_t max_bridge_depth, HoleFillCounts& counts) {
+  for (std::int32_t x = 0; x < width; ++x) {
+    if (row[x] != kEmpty) continue;
+    // Every type needs one of these covered (the left, right, upper or lower neighbour, or the
+    // upper left one for type 3): most background pixels stop here.
+    if (row[x - 1] == kEmpty && row[x + 1] == kEmpty && up1[x] == kEmpty && down1[x] == kEmpty &&
+        up1[x - 1] == kEmpty) {
+      continue;
+    }
+    // P takes the bounding pixel's word: its depth key and its colour.
+    const auto fillFrom = [&](std::uint32_t source, std::int32_t& type_count) {
+      pixels[static_cast<std::ptrdiff_t>(y) * width + x] = source;
+      ++type_count;
+    };
+    // Type 1: C P C in the row.
+    if (bridgeable(row[x - 1], row[x + 1], max_bridge_depth)) {
+      fillFrom(nearer(row[x - 1], row[x + 1]), counts.type1);
+      continue;
+    }
+    // Type 2: C above P, C below P.
+    if (bridgeable(up1[x], down1[x], max_bridge_depth)) {
+      fillFrom(nearer(up1[x], down1[x]), counts.type2);
+      continue;
+    }
+    // Type 3: the four diagonal neighbours covered, each diagonal pair a surface.
+    if (bridgeable(up1[x - 1], down1[x + 1], max_bridge_depth) &&
+        bridgeable(up1[x + 1], down1[x - 1], max_bridge_depth)) {
+      const std::uint32_t first = nearer(up1[x - 1], up1[x + 1]);
+      const std::uint32_t second = nearer(down1[x - 1], down1[x + 1]);
+      fillFrom(nearer(first, second), counts.type3);
+      continue;
+    }
+    // Type 4: a two-pixel gap, P next to its bounding pixel: C P . C, C . P C, and the same in
+    // the column.
+    if (row[x + 1] == kEmpty && bridgeable(row[x - 1], row[x + 2], max_bridge_depth)) {
+      fillFrom(row[x - 1], counts.type4);
+    } else if (row[x - 1] == kEmpty && bridgeable(row[x - 2], row[x + 1], max_bridge_depth)) {
+      fillFrom(row[x + 1], counts.type4);
+    } else if (down1[x] == kEmpty && bridgeable(up1[x], down2[x], max_bridge_depth)) {
+      fillFrom(up1[x], counts.type4);
+    } else if (up1[x] == kEmpty && bridgeable(up2[x], down1[x], max_bridge_depth)) {
+      fillFrom(down1[x], counts.type4);
+    }
+  }
+}
+
 }  // namespace
 
 std::uint32_t bridgeDepthLimit(const FrameSetup& setup) {
-  if (setup.depth < 1 || setup.depth > kMaxRenderDepth || setup.depth_shift < 0 || setup.depth_shift > 63) {
+  if (setup.depth < 1 || setup.depth > kMaxRenderDepth || setup.depth_shift < 0 ||
+      setup.depth_shift > 63) {
     return 0;  // not a set-up buildFrameSetup makes: bridge nothing
   }
   const std::uint64_t edge = voxelEdgeOnScreen(setup);  // Q(32-F).F screen pixels
   // In depth-key units (FrameSetup::depthKey): keys are depths shifted right by depth_shift.
-  const std::uint64_t limit = (edge * static_cast<std::uint64_t>(kBridgeDepthVoxelEdges)) >> setup.depth_shift;
+  const std::uint64_t limit =
+      (edge * static_cast<std::uint64_t>(kBridgeDepthVoxelEdges)) >> setup.depth_shift;
   return static_cast<std::uint32_t>(std::min<std::uint64_t>(limit, Framebuffer::kMaxDepthKey));
 }
 
 HoleFiller::HoleFiller(std::int32_t width)
-    : width_(width >= 1 && width <= kMaxViewportSide ? width : 0), history_(holeFillHistoryWords(width_), kEmpty) {}
+    : width_(width >= 1 && width <= kMaxViewportSide ? width : 0),
+      history_(holeFillHistoryWords(width_), kEmpty) {}
 
 HoleFillCounts HoleFiller::fill(FrameView& frame, std::uint32_t max_bridge_depth) {
   if (frame.width() != width_ || width_ == 0) {
@@ -90,49 +144,7 @@ HoleFillCounts fillHoleRows(FrameView& window, std::int32_t row_begin, std::int3
     std::uint32_t* const down2_slot = slot_of[4];
     load(down2_slot, y + 2);
     const std::uint32_t* down2 = down2_slot;
-    for (std::int32_t x = 0; x < width; ++x) {
-      if (row[x] != kEmpty) continue;
-      // Every type needs one of these covered (the left, right, upper or lower neighbour, or the
-      // upper left one for type 3): most background pixels stop here.
-      if (row[x - 1] == kEmpty && row[x + 1] == kEmpty && up1[x] == kEmpty && down1[x] == kEmpty &&
-          up1[x - 1] == kEmpty) {
-        continue;
-      }
-      // P takes the bounding pixel's word: its depth key and its colour.
-      const auto fillFrom = [&](std::uint32_t source, std::int32_t& type_count) {
-        pixels[static_cast<std::ptrdiff_t>(y) * width + x] = source;
-        ++type_count;
-      };
-      // Type 1: C P C in the row.
-      if (bridgeable(row[x - 1], row[x + 1], max_bridge_depth)) {
-        fillFrom(nearer(row[x - 1], row[x + 1]), counts.type1);
-        continue;
-      }
-      // Type 2: C above P, C below P.
-      if (bridgeable(up1[x], down1[x], max_bridge_depth)) {
-        fillFrom(nearer(up1[x], down1[x]), counts.type2);
-        continue;
-      }
-      // Type 3: the four diagonal neighbours covered, each diagonal pair a surface.
-      if (bridgeable(up1[x - 1], down1[x + 1], max_bridge_depth) &&
-          bridgeable(up1[x + 1], down1[x - 1], max_bridge_depth)) {
-        const std::uint32_t first = nearer(up1[x - 1], up1[x + 1]);
-        const std::uint32_t second = nearer(down1[x - 1], down1[x + 1]);
-        fillFrom(nearer(first, second), counts.type3);
-        continue;
-      }
-      // Type 4: a two-pixel gap, P next to its bounding pixel: C P . C, C . P C, and the same in
-      // the column.
-      if (row[x + 1] == kEmpty && bridgeable(row[x - 1], row[x + 2], max_bridge_depth)) {
-        fillFrom(row[x - 1], counts.type4);
-      } else if (row[x - 1] == kEmpty && bridgeable(row[x - 2], row[x + 1], max_bridge_depth)) {
-        fillFrom(row[x + 1], counts.type4);
-      } else if (down1[x] == kEmpty && bridgeable(up1[x], down2[x], max_bridge_depth)) {
-        fillFrom(up1[x], counts.type4);
-      } else if (up1[x] == kEmpty && bridgeable(up2[x], down1[x], max_bridge_depth)) {
-        fillFrom(down1[x], counts.type4);
-      }
-    }
+    fillHoleRow(pixels, y, width, up2, up1, row, down1, down2, max_bridge_depth, counts);
     // Row y - 2's slot takes row y + 3 next.
     std::uint32_t* const oldest = slot_of[0];
     for (std::int32_t i = 0; i + 1 < kRows; ++i) slot_of[i] = slot_of[i + 1];

@@ -30,9 +30,9 @@
 #include <bit>
 #include <cassert>
 
+#include "octopoint/render.h"
 #include "renderer/decode_algorithms.h"
 #include "renderer/framebuffer_plot.h"
-#include "octopoint/render.h"
 #include "renderer/skip_runs.h"
 #include "renderer/splat_batch.h"
 #include "renderer/splat_plot.h"
@@ -52,8 +52,8 @@ namespace {
 // of a four-word load (the batch has room past its last entry), so that the min takes it straight
 // from memory: four instructions per entry (index, pixel, min, store).
 __attribute__((target("avx2"), always_inline)) inline void plotEntry(std::uint32_t* pixel,
-                                                                    std::uint32_t at,
-                                                                    const std::uint32_t* word) {
+                                                                     std::uint32_t at,
+                                                                     const std::uint32_t* word) {
   const __m128i kept = _mm_min_epu32(_mm_cvtsi32_si128(static_cast<std::int32_t>(pixel[at])),
                                      _mm_loadu_si128(reinterpret_cast<const __m128i*>(word)));
   pixel[at] = static_cast<std::uint32_t>(_mm_cvtsi128_si32(kept));
@@ -194,7 +194,69 @@ __attribute__((target("avx2"), always_inline)) inline const std::uint8_t* emitSu
 
 template <bool kChecked, EmitMode kEmit, typename Leaves>
 __attribute__((target("avx2"))) const std::uint8_t* visit(SimdFrame& f, int level, Vec3 c,
-                                                          const std::uint8_t* node, Leaves& leaves) {
+                                                          const std::uint8_t* node, Leaves& leaves);
+
+// visit one level above the subtrees it emits in one go (levels_inline deep): each child as visit
+// would draw it (its poll, its subtree in one go), in this call: a call per child and its set-up
+// cost as much as a grandparent's leaf parents.
+template <EmitMode kEmit, typename Leaves>
+__attribute__((target("avx2"), always_inline)) inline const std::uint8_t* visitInlineChildren(
+    SimdFrame& f, const LeafLanes& lanes, int level, int levels_inline, Vec3 c, unsigned mask,
+    const std::uint8_t* node, Leaves& leaves) {
+  constexpr bool kSplat = kEmit.emit != Emit::kPixel;
+  const auto& offsets = (*f.offsets)[static_cast<std::size_t>(level)];
+  const std::ptrdiff_t most_leaves = std::ptrdiff_t{1} << (3 * levels_inline);
+  for (; mask != 0; mask &= mask - 1) {
+    if (kSplat && f.abort != nullptr && (f.aborted = f.abort->load(std::memory_order_relaxed)))
+      return node;
+    const Vec3 child = c + offsets[static_cast<unsigned>(std::countr_zero(mask))];
+    if (f.leaf_end - leaves.colour >= most_leaves) {
+      const unsigned child_mask = *node++;
+      node = emitSubtree<kEmit, Leaves>(f, lanes, level + 1, levels_inline, child, child_mask, node,
+                                        leaves);
+    } else {  // the model's last leaves: the scalar plot
+      node = visit<false, kEmit, Leaves>(f, level + 1, child, node, leaves);
+    }
+  }
+  return node;
+}
+
+// visit's straddling node two levels above its leaf parents (checked, from the poll's level on).
+template <EmitMode kEmit, typename Leaves>
+__attribute__((target("avx2"), always_inline)) inline const std::uint8_t* visitEdgeGrandparents(
+    SimdFrame& f, int level, Vec3 c, unsigned mask, const std::uint8_t* node, Leaves& leaves) {
+  constexpr bool kSplat = kEmit.emit != Emit::kPixel;
+  // Its grandparents, each polled and clipped here as a call of its own would: a call of visit
+  // less per grandparent (lms400 176x208 zoom 4: -1.3% of the frame's instructions).
+  const auto& offsets = (*f.offsets)[static_cast<std::size_t>(level)];
+  for (; mask != 0; mask &= mask - 1) {
+    if (kSplat && f.abort != nullptr && (f.aborted = f.abort->load(std::memory_order_relaxed)))
+      return node;
+    const Vec3 child = c + offsets[static_cast<std::size_t>(std::countr_zero(mask))];
+    switch (f.clip.classify(level + 1, child)) {
+      case Clip::kOutside:
+        f.off_screen.skip(node, leaves, level + 1);
+        break;
+      case Clip::kInside:
+        f.off_screen.enter(level + 1);
+        node = visit<false, kEmit, Leaves>(f, level + 1, child, node, leaves);
+        break;
+      case Clip::kStraddling: {
+        f.off_screen.enter(level + 1);
+        const unsigned child_mask = *node++;
+        node = emitEdgeGrandparent<kEmit, Leaves>(f, level + 1, child, child_mask, node, leaves);
+        break;
+      }
+    }
+    if (kSplat && f.aborted) return node;
+  }
+  return node;
+}
+
+template <bool kChecked, EmitMode kEmit, typename Leaves>
+__attribute__((target("avx2"))) const std::uint8_t* visit(SimdFrame& f, int level, Vec3 c,
+                                                          const std::uint8_t* node,
+                                                          Leaves& leaves) {
   constexpr bool kSplat = kEmit.emit != Emit::kPixel;
   if (level <= kAbortCheckLevel && f.abort != nullptr) {
     if (!f.aborted && level == kAbortCheckLevel)
@@ -221,7 +283,8 @@ __attribute__((target("avx2"))) const std::uint8_t* visit(SimdFrame& f, int leve
     }
   }
   unsigned mask = *node++;
-  // Every path below draws all the children: the skip index's count (a checked child counts itself).
+  // Every path below draws all the children: the skip index's count (a checked child counts
+  // itself).
   if (!kChecked) f.off_screen.enterChildren(level, mask);
   const int levels_below = f.levels - level;  // 1: a leaf parent, 2: a grandparent, 3: above that
   // Emitting several levels in one call skips the polls of the levels below: only from the poll's
@@ -239,54 +302,14 @@ __attribute__((target("avx2"))) const std::uint8_t* visit(SimdFrame& f, int leve
       if (f.leaf_end - leaves.colour >= (std::ptrdiff_t{1} << (3 * levels_below)))
         return emitSubtree<kEmit, Leaves>(f, lanes, level, levels_below, c, mask, node, leaves);
     } else {
-      // One level above: each child as visit would draw it (its poll, its subtree in one go), in
-      // this call: a call per child and its set-up cost as much as a grandparent's leaf parents.
-      const auto& offsets = (*f.offsets)[static_cast<std::size_t>(level)];
-      const std::ptrdiff_t most_leaves = std::ptrdiff_t{1} << (3 * levels_inline);
-      for (; mask != 0; mask &= mask - 1) {
-        if (kSplat && f.abort != nullptr && (f.aborted = f.abort->load(std::memory_order_relaxed)))
-          return node;
-        const Vec3 child = c + offsets[static_cast<unsigned>(std::countr_zero(mask))];
-        if (f.leaf_end - leaves.colour >= most_leaves) {
-          const unsigned child_mask = *node++;
-          node = emitSubtree<kEmit, Leaves>(f, lanes, level + 1, levels_inline, child, child_mask,
-                                            node, leaves);
-        } else {  // the model's last leaves: the scalar plot
-          node = visit<false, kEmit, Leaves>(f, level + 1, child, node, leaves);
-        }
-      }
-      return node;
+      return visitInlineChildren<kEmit, Leaves>(f, lanes, level, levels_inline, c, mask, node,
+                                                leaves);
     }
   }
   if (kChecked && levels_below == 2 && level >= kAbortCheckLevel)
     return emitEdgeGrandparent<kEmit, Leaves>(f, level, c, mask, node, leaves);
-  if (kChecked && levels_below == 3 && level >= kAbortCheckLevel) {
-    // Its grandparents, each polled and clipped here as a call of its own would: a call of visit
-    // less per grandparent (lms400 176x208 zoom 4: -1.3% of the frame's instructions).
-    const auto& offsets = (*f.offsets)[static_cast<std::size_t>(level)];
-    for (; mask != 0; mask &= mask - 1) {
-      if (kSplat && f.abort != nullptr && (f.aborted = f.abort->load(std::memory_order_relaxed)))
-        return node;
-      const Vec3 child = c + offsets[static_cast<std::size_t>(std::countr_zero(mask))];
-      switch (f.clip.classify(level + 1, child)) {
-        case Clip::kOutside:
-          f.off_screen.skip(node, leaves, level + 1);
-          break;
-        case Clip::kInside:
-          f.off_screen.enter(level + 1);
-          node = visit<false, kEmit, Leaves>(f, level + 1, child, node, leaves);
-          break;
-        case Clip::kStraddling: {
-          f.off_screen.enter(level + 1);
-          const unsigned child_mask = *node++;
-          node = emitEdgeGrandparent<kEmit, Leaves>(f, level + 1, child, child_mask, node, leaves);
-          break;
-        }
-      }
-      if (kSplat && f.aborted) return node;
-    }
-    return node;
-  }
+  if (kChecked && levels_below == 3 && level >= kAbortCheckLevel)
+    return visitEdgeGrandparents<kEmit, Leaves>(f, level, c, mask, node, leaves);
   if (levels_below == 1) {
     if (kChecked && f.leaf_end - leaves.colour >= 8) {
       emitEdgeLeafParent<kEmit, Leaves>(f, level, c, mask, leaves);
@@ -321,7 +344,8 @@ void drawBoxes(SimdFrame& f, const FrameSetup& setup, const LevelView& level, Le
     visit<true, EmitMode{Emit::kSplatPixels, 2, 1}, Leaves>(f, 0, setup.root, nodes, leaf);
   } else if (is(1, 2)) {
     visit<true, EmitMode{Emit::kSplatPixels, 1, 2}, Leaves>(f, 0, setup.root, nodes, leaf);
-  } else if (is(2, 2) && setup.splat.span_y <= kRareLastRowSpan >> (kMaxFractionBits - setup.fraction_bits)) {
+  } else if (is(2, 2) &&
+             setup.splat.span_y <= kRareLastRowSpan >> (kMaxFractionBits - setup.fraction_bits)) {
     visit<true, EmitMode{Emit::kSplatPixels, 2, 2, true}, Leaves>(f, 0, setup.root, nodes, leaf);
   } else if (is(2, 2)) {
     visit<true, EmitMode{Emit::kSplatPixels, 2, 2}, Leaves>(f, 0, setup.root, nodes, leaf);
@@ -363,8 +387,7 @@ Emit chooseEmit(const SplatFootprint& splat, std::int32_t width, SimdFrame& f) {
 }
 
 __attribute__((target("avx2"))) bool renderAvx2(const LevelView& level, const FrameSetup& setup,
-                                                FrameView& frame,
-                                                const std::atomic<bool>* abort) {
+                                                FrameView& frame, const std::atomic<bool>* abort) {
   // About 35 KiB with the offset vectors and the batch, on the stack: drawing never allocates.
   SimdFrame state(level, setup, frame, abort);
   SimdFrame* const f = &state;
@@ -404,7 +427,8 @@ __attribute__((target("avx2"))) bool renderAvx2(const LevelView& level, const Fr
         if (!f->aborted) plotBatch(*f);
         break;
       case Emit::kSplatRects:
-        visit<true, EmitMode{Emit::kSplatRects}, Leaves>(*f, 0, setup.root, level.nodes.data(), leaf);
+        visit<true, EmitMode{Emit::kSplatRects}, Leaves>(*f, 0, setup.root, level.nodes.data(),
+                                                         leaf);
         if (!f->aborted) plotSplatBatch(*f);
         break;
     }
@@ -418,7 +442,8 @@ bool simdDecoderAvailable() { return __builtin_cpu_supports("avx2") != 0; }
 
 bool renderFixedSimd(const LevelView& level, const FrameSetup& setup, FrameView& frame,
                      const std::atomic<bool>* abort) {
-  if (checkRender(level, setup, frame) != RenderError::kNone) return false;  // refused, nothing drawn
+  if (checkRender(level, setup, frame) != RenderError::kNone)
+    return false;  // refused, nothing drawn
   if (!simdDecoderAvailable()) return renderFixedFast(level, setup, frame, abort);  // same frame
   return renderAvx2(level, setup, frame, abort);
 }

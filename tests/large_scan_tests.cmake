@@ -4,8 +4,8 @@
 # The streamed preparer against the in-memory reference, across budgets and threads; the LAS
 # reader with every format, corner and damaged header. PCL writes the PCD/PLY files to compare with.
 add_executable(streamed_tests preparer/las_reader_test.cpp preparer/streamed_prepare_test.cpp)
-target_link_libraries(streamed_tests PRIVATE octopoint_prepare octopoint_scan_tools octopoint_test_scans
-                      pcl_common pcl_io GTest::gtest_main octopoint_warnings)
+target_link_libraries(streamed_tests PRIVATE octopoint_prepare octopoint_scan_tools
+                      octopoint_test_scans pcl_common pcl_io GTest::gtest_main octopoint_warnings)
 gtest_discover_tests(streamed_tests DISCOVERY_MODE PRE_TEST)
 
 # Scans made at test time into the build directory: a LAS file of every point format, the hidden
@@ -13,38 +13,44 @@ gtest_discover_tests(streamed_tests DISCOVERY_MODE PRE_TEST)
 # broken LAS files of make_bad_las.
 set(las_scans ${CMAKE_CURRENT_BINARY_DIR}/las_scans)
 add_test(NAME cli.make_las_scans
-         COMMAND ${CMAKE_COMMAND} -DMAKE=$<TARGET_FILE:make_large_scan> -DMAKE_BAD=$<TARGET_FILE:make_bad_las>
+         COMMAND ${CMAKE_COMMAND} -DMAKE=$<TARGET_FILE:make_large_scan>
+                 -DMAKE_BAD=$<TARGET_FILE:make_bad_las>
                  -DOUT=${las_scans} -P ${CMAKE_CURRENT_SOURCE_DIR}/make_las_scans.cmake)
 set_tests_properties(cli.make_las_scans PROPERTIES FIXTURES_SETUP las_scans)
 
 foreach(format RANGE 0 10)
   add_test(NAME cli.prepare.las_format_${format}
-           COMMAND octopoint-prepare ${las_scans}/format${format}.las -o ${cli_out}/las_format_${format} --name m
-                   --depths 6,9)
+           COMMAND octopoint-prepare ${las_scans}/format${format}.las
+                   -o ${cli_out}/las_format_${format} --name m --depths 6,9)
   set_tests_properties(cli.prepare.las_format_${format} PROPERTIES FIXTURES_REQUIRED las_scans
                        PASS_REGULAR_EXPRESSION "streamed LAS 1\\.[2-4], point format ${format},")
 endforeach()
 function(las_corner_test name scan expected)
   add_test(NAME cli.prepare.las_${name}
-           COMMAND octopoint-prepare ${las_scans}/${scan} -o ${cli_out}/las_${name} --name m --depths 6,9)
+           COMMAND octopoint-prepare ${las_scans}/${scan} -o ${cli_out}/las_${name} --name m
+                   --depths 6,9)
   set_tests_properties(cli.prepare.las_${name} PROPERTIES FIXTURES_REQUIRED las_scans
                        PASS_REGULAR_EXPRESSION "${expected}")
 endfunction()
 las_corner_test(version_1_0 v10.las "streamed LAS 1\\.0, point format 1, 28-byte records")
 las_corner_test(version_1_1 v11.las "streamed LAS 1\\.1, point format 0,")
-las_corner_test(vlrs_evlrs_extra_bytes rich.las "streamed LAS 1\\.4, point format 7, 45-byte records, 16-bit colour")
+las_corner_test(vlrs_evlrs_extra_bytes rich.las
+                "streamed LAS 1\\.4, point format 7, 45-byte records, 16-bit colour")
 las_corner_test(eight_bit_colour colour8.las "8-bit colour in 16-bit fields")
 las_corner_test(binary_ply land.ply "streamed binary PLY: 20000 points")
 
 # The output does not depend on the memory budget or the thread count: 1 MB and three threads
 # (points spilled, bins split again) against the defaults, byte for byte.
 add_test(NAME cli.prepare.same_output_any_budget
-         COMMAND ${CMAKE_COMMAND} -DPREPARE=$<TARGET_FILE:octopoint-prepare> -DSCAN=${las_scans}/budget.las
-                 -DOUT=${cli_out}/same_output -P ${CMAKE_CURRENT_SOURCE_DIR}/same_output_any_budget.cmake)
+         COMMAND ${CMAKE_COMMAND} -DPREPARE=$<TARGET_FILE:octopoint-prepare>
+                 -DSCAN=${las_scans}/budget.las
+                 -DOUT=${cli_out}/same_output -P
+                 ${CMAKE_CURRENT_SOURCE_DIR}/same_output_any_budget.cmake)
 set_tests_properties(cli.prepare.same_output_any_budget PROPERTIES FIXTURES_REQUIRED las_scans)
 
 add_test(NAME cli.prepare.starts_without_pcl
-         COMMAND ${CMAKE_COMMAND} -DPREPARE=$<TARGET_FILE:octopoint-prepare> -DLAS=${las_scans}/budget.las
+         COMMAND ${CMAKE_COMMAND} -DPREPARE=$<TARGET_FILE:octopoint-prepare>
+                 -DLAS=${las_scans}/budget.las
                  -DPCD=${PROJECT_SOURCE_DIR}/data/scans/milk.pcd -DOUT=${cli_out}/without_pcl
                  -P ${CMAKE_CURRENT_SOURCE_DIR}/prepare_without_pcl.cmake)
 set_tests_properties(cli.prepare.starts_without_pcl PROPERTIES FIXTURES_REQUIRED las_scans)
@@ -54,8 +60,8 @@ set_tests_properties(cli.prepare.starts_without_pcl PROPERTIES FIXTURES_REQUIRED
 # terabytes of shadow address space, so its builds cap each allocation at 1 GiB instead.
 if(CMAKE_CXX_FLAGS MATCHES "-fsanitize=[a-z,]*address")
   set(memory_limit)
-  set(memory_limit_environment
-      "ASAN_OPTIONS=detect_leaks=0:abort_on_error=1:allocator_may_return_null=0:max_allocation_size_mb=1024")
+  string(CONCAT memory_limit_environment "ASAN_OPTIONS=detect_leaks=0:abort_on_error=1:"
+         "allocator_may_return_null=0:max_allocation_size_mb=1024")
 else()
   set(memory_limit /bin/bash -c "ulimit -v 1048576 && exec \"$@\"" bash)
   set(memory_limit_environment)
@@ -63,7 +69,8 @@ endif()
 function(bad_las_test name expected scan)
   add_test(NAME cli.prepare.bad_las_${name}
            COMMAND ${expect_error} "${expected}" ${cli_out}/bad_las_${name} -- ${memory_limit}
-                   $<TARGET_FILE:octopoint-prepare> ${las_scans}/bad/${scan} -o ${cli_out}/bad_las_${name} --name m)
+                   $<TARGET_FILE:octopoint-prepare> ${las_scans}/bad/${scan}
+                   -o ${cli_out}/bad_las_${name} --name m)
   set_tests_properties(cli.prepare.bad_las_${name} PROPERTIES FIXTURES_REQUIRED las_scans
                        ENVIRONMENT "${memory_limit_environment}")
 endfunction()
@@ -85,13 +92,15 @@ endfunction()
 stream_error_test(temp_dir_missing "not a directory, so no temporary files can go there"
                   ${las_scans}/budget.las -o ${cli_out}/temp_dir_missing --name m --memory 1
                   --temp-dir ${cli_out}/no_such_directory)
-stream_error_test(memory_zero "--memory" ${las_scans}/format0.las -o ${cli_out}/memory_zero --name m --memory 0)
-stream_error_test(threads_fraction "--threads" ${las_scans}/format0.las -o ${cli_out}/threads_fraction --name m
-                  --threads 1.5)
+stream_error_test(memory_zero "--memory" ${las_scans}/format0.las -o ${cli_out}/memory_zero --name m
+                  --memory 0)
+stream_error_test(threads_fraction "--threads" ${las_scans}/format0.las
+                  -o ${cli_out}/threads_fraction --name m --threads 1.5)
 file(WRITE ${CMAKE_CURRENT_BINARY_DIR}/outliers_scene.json
      "{\"yaw\": [-10, 10], \"framebuffer\": [64, 48], \"depths\": [5],\n"
      " \"outliers\": {\"method\": \"statistical\", \"neighbours\": 8, \"stddev\": 2}}\n")
-stream_error_test(las_outliers "outlier removal (the scene's \"outliers\") needs the whole scan in memory"
+stream_error_test(las_outliers
+                  "outlier removal (the scene's \"outliers\") needs the whole scan in memory"
                   ${las_scans}/format0.las -o ${cli_out}/las_outliers --name m
                   --scene ${CMAKE_CURRENT_BINARY_DIR}/outliers_scene.json)
 stream_error_test(las_normals "normal estimation (--normals) needs the whole scan in memory"

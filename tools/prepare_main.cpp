@@ -83,7 +83,8 @@ same byte for byte whatever --memory and --threads (docs/preparer.md).
                         per voxel) and store one per voxel, as an index into a palette of 255
                         directions: one byte per voxel more. Needed by octopoint-render's
                         shaded, lines, toon and outlined styles (docs/styles.md)
-  --scene SCENE.json    (a file of at most 1 MiB) the views the app will show (docs/scene.md): yaw/pitch ranges or
+  --scene SCENE.json    (a file of at most 1 MiB) the views the app will show (docs/scene.md): )"
+                               R"(yaw/pitch ranges or
                         viewpoints, zoom range, framebuffer size, depths (or "auto"), palette,
                         crop box, outlier removal, axes, normals. Voxels no view can see are
                         pruned. Replaces --depths, --colours, --crop, --axes, --scan-unit and
@@ -124,7 +125,8 @@ struct Arguments {
   bool chunked = false;
   octopoint::prepare::ChunkedOptions chunking;
   octopoint::prepare::StreamOptions stream;
-  std::vector<std::string> model_flags;  // flags a scene file replaces, to refuse them beside --scene
+  std::vector<std::string>
+      model_flags;  // flags a scene file replaces, to refuse them beside --scene
   octopoint::prepare::PrepareOptions options = defaultOptions();
 
   static octopoint::prepare::PrepareOptions defaultOptions() {
@@ -135,7 +137,8 @@ struct Arguments {
   }
 };
 
-// --depths: a list (cli::parseIntList's rules) or a range A..B of at most format::kMaxLevels depths.
+// --depths: a list (cli::parseIntList's rules) or a range A..B of at most format::kMaxLevels
+// depths.
 std::vector<int> parseDepths(std::string_view option, const std::string& text) {
   using octopoint::format::kMaxDepth;
   using octopoint::format::kMaxLevels;
@@ -144,18 +147,73 @@ std::vector<int> parseDepths(std::string_view option, const std::string& text) {
     return octopoint::cli::parseIntList(option, text, 1, kMaxDepth, kMaxLevels,
                                         octopoint::cli::ListOrder::kStrictlyAscending);
   }
-  const int first = octopoint::cli::parseInt(option, std::string_view(text).substr(0, dots), 1, kMaxDepth);
-  const int last = octopoint::cli::parseInt(option, std::string_view(text).substr(dots + 2), 1, kMaxDepth);
+  const int first =
+      octopoint::cli::parseInt(option, std::string_view(text).substr(0, dots), 1, kMaxDepth);
+  const int last =
+      octopoint::cli::parseInt(option, std::string_view(text).substr(dots + 2), 1, kMaxDepth);
   if (last < first) {
-    throw PrepareError(std::string(option) + ": " + octopoint::cli::inQuotes(text) + " is an empty range");
+    throw PrepareError(std::string(option) + ": " + octopoint::cli::inQuotes(text) +
+                       " is an empty range");
   }
   if (last - first + 1 > kMaxLevels) {
     throw PrepareError(std::string(option) + ": " + octopoint::cli::inQuotes(text) + " is " +
-                       std::to_string(last - first + 1) + " depths, at most " + std::to_string(kMaxLevels));
+                       std::to_string(last - first + 1) + " depths, at most " +
+                       std::to_string(kMaxLevels));
   }
   std::vector<int> depths;
   for (int d = first; d <= last; ++d) depths.push_back(d);
   return depths;
+}
+
+// The flags a scene file replaces (--depths, --colours, --crop, --axes, --scan-unit, --normals),
+// each noted in args.model_flags: false when `reader` holds another option.
+bool parseModelFlag(octopoint::cli::ArgumentReader& reader, Arguments& args) {
+  if (reader.is("--depths")) {
+    args.model_flags.push_back(reader.name());
+    args.options.depths = parseDepths(reader.name(), reader.value());
+    args.options.stop_at_sparse_depth = false;
+  } else if (reader.is("--colours")) {
+    args.model_flags.push_back(reader.name());
+    args.options.palette_colours = octopoint::cli::parseInt(reader.name(), reader.value(), 1, 256);
+  } else if (reader.is("--crop")) {
+    args.model_flags.push_back(reader.name());
+    args.options.crop = octopoint::prepare::parseCropBox(reader.name(), reader.value());
+  } else if (reader.is("--axes")) {
+    args.model_flags.push_back(reader.name());
+    args.options.axes =
+        octopoint::cli::parseChoice(reader.name(), reader.value(), {"y-down", "y-up"}) == 0
+            ? octopoint::prepare::ScanAxes::kYDown
+            : octopoint::prepare::ScanAxes::kYUp;
+  } else if (reader.is("--scan-unit")) {
+    args.model_flags.push_back(reader.name());
+    constexpr double kMetres[] = {1.0, 0.01, 0.001};
+    args.options.metres_per_scan_unit =
+        kMetres[octopoint::cli::parseChoice(reader.name(), reader.value(), {"m", "cm", "mm"})];
+  } else if (reader.is("--normals")) {
+    reader.noValue();
+    args.model_flags.push_back(reader.name());
+    args.options.normals = octopoint::prepare::NormalOptions{};
+  } else {
+    return false;
+  }
+  return true;
+}
+
+// The arguments every run needs, and no model flag beside --scene.
+void checkArguments(const Arguments& args, bool have_name) {
+  if (args.scan.empty()) throw PrepareError("no SCAN given (see --help)");
+  if (args.output_dir.empty())
+    throw PrepareError("no output directory given: use -o OUTDIR (see --help)");
+  if (!have_name) throw PrepareError("no model name given: use --name NAME (see --help)");
+  if (!args.scene.empty() && !args.model_flags.empty()) {
+    throw PrepareError(args.model_flags.front() +
+                       ": not allowed with --scene (set it in the scene file)");
+  }
+  const std::string name_problem = octopoint::prepare::modelNameProblem(args.options.name);
+  if (!name_problem.empty()) {
+    throw PrepareError("--name: " + octopoint::cli::inQuotes(args.options.name) + " " +
+                       name_problem + " (see --help for model names)");
+  }
 }
 
 // Returns nullopt when --help was asked for.
@@ -173,9 +231,10 @@ std::optional<Arguments> parseArguments(int argc, char** argv) {
     } else if (reader.is("--scene")) {
       args.scene = reader.value();
     } else if (reader.is("--emit")) {
-      args.emit.style = octopoint::cli::parseChoice(reader.name(), reader.value(), {"strings", "bytes"}) == 0
-                            ? octopoint::prepare::EmitStyle::kStrings
-                            : octopoint::prepare::EmitStyle::kBytes;
+      args.emit.style =
+          octopoint::cli::parseChoice(reader.name(), reader.value(), {"strings", "bytes"}) == 0
+              ? octopoint::prepare::EmitStyle::kStrings
+              : octopoint::prepare::EmitStyle::kBytes;
     } else if (reader.is("--single-source")) {
       reader.noValue();
       args.emit.single_source = true;
@@ -183,42 +242,23 @@ std::optional<Arguments> parseArguments(int argc, char** argv) {
       reader.noValue();
       args.chunked = true;
     } else if (reader.is("--chunk-bytes")) {
-      args.chunking.target_chunk_bytes =
-          static_cast<std::size_t>(octopoint::cli::parseInteger(reader.name(), reader.value(), 256, 1 << 24));
+      args.chunking.target_chunk_bytes = static_cast<std::size_t>(
+          octopoint::cli::parseInteger(reader.name(), reader.value(), 256, 1 << 24));
     } else if (reader.is("--memory")) {
-      args.stream.memory_bytes = static_cast<std::uint64_t>(
-          octopoint::cli::parseInteger(reader.name(), reader.value(), 1, kMaxMemoryMegabytes)) << 20;
+      args.stream.memory_bytes = static_cast<std::uint64_t>(octopoint::cli::parseInteger(
+                                     reader.name(), reader.value(), 1, kMaxMemoryMegabytes))
+                                 << 20;
     } else if (reader.is("--threads")) {
-      args.stream.threads = static_cast<unsigned>(octopoint::cli::parseInt(reader.name(), reader.value(), 1, kMaxThreads));
+      args.stream.threads = static_cast<unsigned>(
+          octopoint::cli::parseInt(reader.name(), reader.value(), 1, kMaxThreads));
       args.emit.threads = args.stream.threads;
     } else if (reader.is("--temp-dir")) {
       args.stream.temp_dir = reader.value();
     } else if (reader.is("--progress")) {
       reader.noValue();
       octopoint::prepare::Progress::force(true);
-    } else if (reader.is("--depths")) {
-      args.model_flags.push_back(reader.name());
-      args.options.depths = parseDepths(reader.name(), reader.value());
-      args.options.stop_at_sparse_depth = false;
-    } else if (reader.is("--colours")) {
-      args.model_flags.push_back(reader.name());
-      args.options.palette_colours = octopoint::cli::parseInt(reader.name(), reader.value(), 1, 256);
-    } else if (reader.is("--crop")) {
-      args.model_flags.push_back(reader.name());
-      args.options.crop = octopoint::prepare::parseCropBox(reader.name(), reader.value());
-    } else if (reader.is("--axes")) {
-      args.model_flags.push_back(reader.name());
-      args.options.axes = octopoint::cli::parseChoice(reader.name(), reader.value(), {"y-down", "y-up"}) == 0
-                              ? octopoint::prepare::ScanAxes::kYDown
-                              : octopoint::prepare::ScanAxes::kYUp;
-    } else if (reader.is("--scan-unit")) {
-      args.model_flags.push_back(reader.name());
-      constexpr double kMetres[] = {1.0, 0.01, 0.001};
-      args.options.metres_per_scan_unit = kMetres[octopoint::cli::parseChoice(reader.name(), reader.value(), {"m", "cm", "mm"})];
-    } else if (reader.is("--normals")) {
-      reader.noValue();
-      args.model_flags.push_back(reader.name());
-      args.options.normals = octopoint::prepare::NormalOptions{};
+    } else if (parseModelFlag(reader, args)) {
+      continue;
     } else if (reader.isPlain() && args.scan.empty()) {
       args.scan = reader.current();
     } else if (reader.isPlain()) {
@@ -228,32 +268,26 @@ std::optional<Arguments> parseArguments(int argc, char** argv) {
       reader.refuseUnknown();
     }
   }
-  if (args.scan.empty()) throw PrepareError("no SCAN given (see --help)");
-  if (args.output_dir.empty()) throw PrepareError("no output directory given: use -o OUTDIR (see --help)");
-  if (!have_name) throw PrepareError("no model name given: use --name NAME (see --help)");
-  if (!args.scene.empty() && !args.model_flags.empty()) {
-    throw PrepareError(args.model_flags.front() + ": not allowed with --scene (set it in the scene file)");
-  }
-  const std::string name_problem = octopoint::prepare::modelNameProblem(args.options.name);
-  if (!name_problem.empty()) {
-    throw PrepareError("--name: " + octopoint::cli::inQuotes(args.options.name) + " " + name_problem +
-                       " (see --help for model names)");
-  }
+  checkArguments(args, have_name);
   return args;
 }
 
 const char* shadingName(octopoint::prepare::ScanShading shading) {
   switch (shading) {
-    case octopoint::prepare::ScanShading::kColour: return "colour";
-    case octopoint::prepare::ScanShading::kIntensity: return "intensity as grey";
-    case octopoint::prepare::ScanShading::kNone: return "no colour: depth shade";
+    case octopoint::prepare::ScanShading::kColour:
+      return "colour";
+    case octopoint::prepare::ScanShading::kIntensity:
+      return "intensity as grey";
+    case octopoint::prepare::ScanShading::kNone:
+      return "no colour: depth shade";
   }
   return "?";
 }
 
 // Takes the model settings from a scene file; returns why the depths were chosen ("" when the
 // scene lists them).
-std::string applyScene(const octopoint::prepare::Scene& scene, octopoint::prepare::PrepareOptions& options) {
+std::string applyScene(const octopoint::prepare::Scene& scene,
+                       octopoint::prepare::PrepareOptions& options) {
   using namespace octopoint::prepare;
   std::string reason;
   if (scene.auto_depths) {
@@ -284,27 +318,124 @@ void checkOutputs(const Arguments& args, const octopoint::prepare::PrepareOption
   octopoint::cli::checkOutputDirectory(directory);
   std::error_code error;
   if (!std::filesystem::exists(directory, error)) return;
-  std::vector<std::string> names = {options.name + ".h", options.name + ".cpp", options.name + ".oct"};
+  std::vector<std::string> names = {options.name + ".h", options.name + ".cpp",
+                                    options.name + ".oct"};
   if (!args.emit.single_source) {
-    for (int depth : options.depths) names.push_back(options.name + "_depth" + std::to_string(depth) + ".cpp");
+    for (int depth : options.depths)
+      names.push_back(options.name + "_depth" + std::to_string(depth) + ".cpp");
   }
   for (const std::string& name : names) octopoint::cli::checkOutputFile(directory / name);
 }
 
 // One line on how a streamed scan was read.
-std::string describeStream(const octopoint::prepare::SourceInfo& info, const octopoint::prepare::PrepareSummary& summary,
+std::string describeStream(const octopoint::prepare::SourceInfo& info,
+                           const octopoint::prepare::PrepareSummary& summary,
                            const octopoint::prepare::StreamOptions& stream) {
   const auto& phase = summary.phase_seconds;
   char line[768];
-  std::snprintf(line, sizeof line,
-                "  streamed %s%s%s: %llu points on %u threads in %.2f s (%.2f M points/s; bounds %.2f s, binning "
-                "%.2f s, voxelizing %.2f s, palette %.2f s), budget %llu MB, %llu MB spilled to disk\n",
-                info.format.c_str(), summary.colour_note.empty() ? "" : ", ", summary.colour_note.c_str(),
-                static_cast<unsigned long long>(summary.points_in_file), summary.threads, summary.seconds,
-                static_cast<double>(summary.points_in_file) / summary.seconds / 1e6, phase[0], phase[1], phase[2],
-                phase[3], static_cast<unsigned long long>(stream.memory_bytes >> 20),
-                static_cast<unsigned long long>(summary.spilled_bytes >> 20));
+  std::snprintf(
+      line, sizeof line,
+      "  streamed %s%s%s: %llu points on %u threads in %.2f s (%.2f M points/s; bounds %.2f s, "
+      "binning "
+      "%.2f s, voxelizing %.2f s, palette %.2f s), budget %llu MB, %llu MB spilled to disk\n",
+      info.format.c_str(), summary.colour_note.empty() ? "" : ", ", summary.colour_note.c_str(),
+      static_cast<unsigned long long>(summary.points_in_file), summary.threads, summary.seconds,
+      static_cast<double>(summary.points_in_file) / summary.seconds / 1e6, phase[0], phase[1],
+      phase[2], phase[3], static_cast<unsigned long long>(stream.memory_bytes >> 20),
+      static_cast<unsigned long long>(summary.spilled_bytes >> 20));
   return line;
+}
+
+// Streamed when the file allows it and no option needs the whole scan; else read whole through
+// PCL, by octopoint-prepare-pcl (codegen/whole_scan.h). `stream_line`: the streaming's report.
+octopoint::prepare::PreparedModel prepareScan(const Arguments& args,
+                                              const octopoint::prepare::PrepareOptions& options,
+                                              char** argv,
+                                              octopoint::prepare::PrepareSummary& summary,
+                                              std::string& stream_line) {
+  using namespace octopoint::prepare;
+  std::unique_ptr<PointSource> streamed;
+  if (!options.outliers && !options.normals) streamed = openStreamedSource(args.scan);
+  if (!streamed) return prepareWholeScan(args.scan, options, args.stream, summary, argv);
+  PreparedModel model = prepareFromSource(*streamed, args.scan, options, args.stream, &summary);
+  if (streamed->info().streamed)
+    stream_line = describeStream(streamed->info(), summary, args.stream);
+  return model;
+}
+
+// Writes the sources and the .oct image; returns the image's size in bytes.
+std::size_t writeModel(const Arguments& args, const octopoint::prepare::PreparedModel& model,
+                       octopoint::prepare::ChunkedLayout& layout) {
+  using namespace octopoint::prepare;
+  // The .oct image is made on a second thread while the sources are: both only read the model.
+  std::future<std::vector<std::uint8_t>> image_made = std::async(std::launch::async, [&] {
+    return args.chunked ? serializeChunkedModel(model, args.chunking, &layout)
+                        : serializeModel(model);
+  });
+  std::vector<OutputFile> files = emitSources(model, args.emit);
+  const std::vector<std::uint8_t> image = image_made.get();
+  std::string image_text;
+  reserveOnHugePages(image_text, image.size());
+  image_text.append(reinterpret_cast<const char*>(image.data()), image.size());
+  files.push_back({model.name + ".oct", std::move(image_text)});
+  // A rerun replaces the model's whole set: level sources of depths it leaves out go too.
+  octopoint::cli::writeFilesAtomically(args.output_dir, files,
+                                       staleLevelSources(args.output_dir, model.name, files));
+  return image.size();
+}
+
+// The normals, the pruning and each depth's voxels and bytes.
+void printLevels(const octopoint::prepare::PreparedModel& model,
+                 const octopoint::prepare::PrepareOptions& options) {
+  using namespace octopoint::prepare;
+  if (!model.normal_palette.empty()) {
+    std::printf(
+        "normals: %s, %zu-entry palette, stored with %.1f degrees mean and %.1f worst error "
+        "(finest depth), "
+        "1 byte per voxel, %.2f s\n",
+        model.normals_from_integral_images
+            ? "integral images over the sensor grid"
+            : ("k-NN PCA, k = " + std::to_string(model.normal_neighbours)).c_str(),
+        model.normal_palette.size(), model.normal_error_mean_deg, model.normal_error_max_deg,
+        model.normal_seconds);
+  }
+  for (const PreparedLevel& level : model.levels) {
+    if (level.voxels_before_pruning == 0) continue;
+    std::printf(
+        "  depth %2d pruned from %zu views: %zu -> %zu voxels, %zu -> %zu bytes (-%.1f%%) in %.2f "
+        "s\n",
+        level.depth, options.visibility_cameras.size(), level.voxels_before_pruning,
+        level.leaves.size(), level.bytes_before_pruning, level.nodes.size() + level.leaves.size(),
+        100.0 - 100.0 * static_cast<double>(level.nodes.size() + level.leaves.size()) /
+                    static_cast<double>(level.bytes_before_pruning),
+        level.pruning_seconds);
+  }
+  for (const PreparedLevel& level : model.levels) {
+    const double voxels = static_cast<double>(level.leaves.size());
+    const std::size_t bytes = level.nodes.size() + level.leaves.size() + level.normals.size();
+    std::printf("  depth %2d: %8zu voxels, %8zu node bytes + %8zu colour bytes", level.depth,
+                level.leaves.size(), level.nodes.size(), level.leaves.size());
+    if (!level.normals.empty()) std::printf(" + %8zu normal bytes", level.normals.size());
+    std::printf(" = %9zu bytes, %.2f bits/point geometry, %.2f with colour%s\n", bytes,
+                8.0 * static_cast<double>(level.nodes.size()) / voxels,
+                8.0 * static_cast<double>(bytes) / voxels,
+                level.normals.empty() ? "" : " and normals");
+  }
+}
+
+void printChunkedLayout(const octopoint::prepare::ChunkedLayout& layout,
+                        std::size_t nesting_added) {
+  if (nesting_added > 0)
+    std::printf("  nesting the pruned depths added %zu voxels\n", nesting_added);
+  std::printf(
+      "  chunked: base depth %d%s, head %zu bytes, directory %zu bytes, chunks of %zu bytes or "
+      "more on average\n",
+      layout.base_depth, layout.base_added ? " (added)" : "", layout.head_bytes, layout.table_bytes,
+      layout.target_chunk_bytes);
+  for (std::size_t j = 0; j < layout.depths.size(); ++j) {
+    std::printf("  chunked depth %2d: %6zu chunks (regions at tree level %d), %9zu bytes\n",
+                layout.depths[j], layout.chunks[j], layout.region_levels[j], layout.chunk_bytes[j]);
+  }
 }
 
 int run(int argc, char** argv) {
@@ -319,101 +450,54 @@ int run(int argc, char** argv) {
   std::string depth_reason;
   if (!args->scene.empty()) depth_reason = applyScene(loadScene(args->scene), options);
   if (args->chunked && options.normals) {
-    throw PrepareError("--chunked: the chunked format (version 3) stores no normals; leave out --normals (or the "
-                       "scene's \"normals\") or write a version 2 file");
+    throw PrepareError(
+        "--chunked: the chunked format (version 3) stores no normals; leave out --normals (or the "
+        "scene's \"normals\") or write a version 2 file");
   }
   checkOutputs(*args, options);
   // The generated files name the exact command that made them, so anyone can regenerate them.
-  options.source_description = std::filesystem::path(args->scan).filename().string() + " by: octopoint-prepare";
+  options.source_description =
+      std::filesystem::path(args->scan).filename().string() + " by: octopoint-prepare";
   for (int i = 1; i < argc; ++i) options.source_description += std::string(" ") + argv[i];
   PrepareSummary summary;
-  PreparedModel model;
   std::string stream_line;
-  // Streamed when the file allows it and no option needs the whole scan; else read whole through
-  // PCL, by octopoint-prepare-pcl (codegen/whole_scan.h).
-  std::unique_ptr<PointSource> streamed;
-  if (!options.outliers && !options.normals) streamed = openStreamedSource(args->scan);
-  if (streamed) {
-    model = prepareFromSource(*streamed, args->scan, options, args->stream, &summary);
-    if (streamed->info().streamed) stream_line = describeStream(streamed->info(), summary, args->stream);
-  } else {
-    model = prepareWholeScan(args->scan, options, args->stream, summary, argv);
-  }
+  PreparedModel model = prepareScan(*args, options, argv, summary, stream_line);
   // A chunked file refines each depth from the one above it, so its depths must be nested; the
   // sources get the same voxels, so that both draw alike.
   const std::size_t nesting_added = args->chunked ? nestLevels(model) : 0;
   ChunkedLayout layout;
 
   const auto writing = std::chrono::steady_clock::now();
-  // The .oct image is made on a second thread while the sources are: both only read the model.
-  std::future<std::vector<std::uint8_t>> image_made =
-      std::async(std::launch::async, [&] {
-        return args->chunked ? serializeChunkedModel(model, args->chunking, &layout) : serializeModel(model);
-      });
-  std::vector<OutputFile> files = emitSources(model, args->emit);
-  const std::vector<std::uint8_t> image = image_made.get();
-  std::string image_text;
-  reserveOnHugePages(image_text, image.size());
-  image_text.append(reinterpret_cast<const char*>(image.data()), image.size());
-  files.push_back({model.name + ".oct", std::move(image_text)});
-  // A rerun replaces the model's whole set: level sources of depths it leaves out go too.
-  octopoint::cli::writeFilesAtomically(args->output_dir, files, staleLevelSources(args->output_dir, model.name, files));
-  const double writing_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - writing).count();
+  const std::size_t image_bytes = writeModel(*args, model, layout);
+  const double writing_seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - writing).count();
 
-  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  std::printf("%s: %llu points (%llu dropped as non-finite), %s, %zu palette colours, cube edge %.4g m\n",
-              args->scan.c_str(), static_cast<unsigned long long>(summary.finite_points),
-              static_cast<unsigned long long>(summary.dropped_non_finite), shadingName(summary.shading),
-              model.palette.size(), static_cast<double>(model.cube_edge_pm) * 1e-12);
+  const double seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  std::printf(
+      "%s: %llu points (%llu dropped as non-finite), %s, %zu palette colours, cube edge %.4g m\n",
+      args->scan.c_str(), static_cast<unsigned long long>(summary.finite_points),
+      static_cast<unsigned long long>(summary.dropped_non_finite), shadingName(summary.shading),
+      model.palette.size(), static_cast<double>(model.cube_edge_pm) * 1e-12);
   std::fputs(stream_line.c_str(), stdout);
   if (!depth_reason.empty()) std::printf("%s\n", depth_reason.c_str());
   if (!model.sparse_depths_dropped.empty()) {
-    std::printf("  left out depths %s: finer than the scan samples densely (under %zux the voxels of the depth "
-                "before); the renderer splats the finest depth kept\n",
-                describeDepths(model.sparse_depths_dropped).c_str(), kDenseGrowth);
+    std::printf(
+        "  left out depths %s: finer than the scan samples densely (under %zux the voxels of the "
+        "depth "
+        "before); the renderer splats the finest depth kept\n",
+        describeDepths(model.sparse_depths_dropped).c_str(), kDenseGrowth);
   }
-  if (!model.normal_palette.empty()) {
-    std::printf("normals: %s, %zu-entry palette, stored with %.1f degrees mean and %.1f worst error (finest depth), "
-                "1 byte per voxel, %.2f s\n",
-                model.normals_from_integral_images ? "integral images over the sensor grid"
-                                                   : ("k-NN PCA, k = " + std::to_string(model.normal_neighbours)).c_str(),
-                model.normal_palette.size(), model.normal_error_mean_deg, model.normal_error_max_deg,
-                model.normal_seconds);
-  }
-  for (const PreparedLevel& level : model.levels) {
-    if (level.voxels_before_pruning == 0) continue;
-    std::printf("  depth %2d pruned from %zu views: %zu -> %zu voxels, %zu -> %zu bytes (-%.1f%%) in %.2f s\n",
-                level.depth, options.visibility_cameras.size(), level.voxels_before_pruning, level.leaves.size(),
-                level.bytes_before_pruning, level.nodes.size() + level.leaves.size(),
-                100.0 - 100.0 * static_cast<double>(level.nodes.size() + level.leaves.size()) /
-                            static_cast<double>(level.bytes_before_pruning),
-                level.pruning_seconds);
-  }
-  for (const PreparedLevel& level : model.levels) {
-    const double voxels = static_cast<double>(level.leaves.size());
-    const std::size_t bytes = level.nodes.size() + level.leaves.size() + level.normals.size();
-    std::printf("  depth %2d: %8zu voxels, %8zu node bytes + %8zu colour bytes", level.depth, level.leaves.size(),
-                level.nodes.size(), level.leaves.size());
-    if (!level.normals.empty()) std::printf(" + %8zu normal bytes", level.normals.size());
-    std::printf(" = %9zu bytes, %.2f bits/point geometry, %.2f with colour%s\n", bytes,
-                8.0 * static_cast<double>(level.nodes.size()) / voxels, 8.0 * static_cast<double>(bytes) / voxels,
-                level.normals.empty() ? "" : " and normals");
-  }
-  if (args->chunked) {
-    if (nesting_added > 0) std::printf("  nesting the pruned depths added %zu voxels\n", nesting_added);
-    std::printf("  chunked: base depth %d%s, head %zu bytes, directory %zu bytes, chunks of %zu bytes or more on average\n", layout.base_depth,
-                layout.base_added ? " (added)" : "", layout.head_bytes, layout.table_bytes, layout.target_chunk_bytes);
-    for (std::size_t j = 0; j < layout.depths.size(); ++j) {
-      std::printf("  chunked depth %2d: %6zu chunks (regions at tree level %d), %9zu bytes\n", layout.depths[j],
-                  layout.chunks[j], layout.region_levels[j], layout.chunk_bytes[j]);
-    }
-  }
+  printLevels(model, options);
+  if (args->chunked) printChunkedLayout(layout, nesting_added);
   std::printf("wrote %s/%s.{h,cpp,oct} (%zu bytes .oct%s) in %.2f s (writing the files %.2f s)\n",
-              args->output_dir.c_str(), model.name.c_str(), image.size(), args->chunked ? ", chunked" : "", seconds,
-              writing_seconds);
+              args->output_dir.c_str(), model.name.c_str(), image_bytes,
+              args->chunked ? ", chunked" : "", seconds, writing_seconds);
   return 0;
 }
 
 }  // namespace
 
-int main(int argc, char** argv) { return octopoint::cli::runTool("octopoint-prepare", argc, argv, run); }
+int main(int argc, char** argv) {
+  return octopoint::cli::runTool("octopoint-prepare", argc, argv, run);
+}

@@ -4,16 +4,12 @@
 #include <cstdlib>
 #include <filesystem>
 #include <iostream>
+#include <opencv2/imgcodecs.hpp>
+#include <opencv2/imgproc.hpp>
 #include <optional>
 #include <string>
 #include <vector>
 
-#include <opencv2/imgcodecs.hpp>
-#include <opencv2/imgproc.hpp>
-
-#include "tools/chunked_render.h"
-#include "tools/contact_sheet.h"
-#include "tools/model_source.h"
 #include "cli/arguments.h"
 #include "cli/error.h"
 #include "cli/numbers.h"
@@ -21,20 +17,25 @@
 #include "cli/real_numbers.h"
 #include "cli/run_tool.h"
 #include "cli/text.h"
-#include "octopoint/models.h"
 #include "octopoint/camera.h"
-#include "octopoint/styles.h"
 #include "octopoint/framebuffer.h"
-#include "octopoint/render.h"
-#include "renderer/level_of_detail.h"
 #include "octopoint/model.h"
+#include "octopoint/models.h"
+#include "octopoint/render.h"
+#include "octopoint/styles.h"
+#include "renderer/level_of_detail.h"
+#include "tools/chunked_render.h"
+#include "tools/contact_sheet.h"
+#include "tools/model_source.h"
 
 namespace {
 
 namespace fs = std::filesystem;
 using namespace octopoint;
 
-constexpr const char* kUsage = R"(usage: octopoint-render [--model NAME | --file M.oct | --url URL [--bytes N]] [options] -o OUT.png
+constexpr const char* kUsage =
+    R"(usage: octopoint-render [--model NAME | --file M.oct | --url URL [--bytes N]] )"
+    R"([options] -o OUT.png
        octopoint-render --list
 
 Draws an octopoint model with the integer renderer and writes it as a PNG. With neither --model
@@ -118,7 +119,8 @@ struct Options {
 Light parseLight(std::string_view option, std::string_view text) {
   const std::size_t comma = text.find(',');
   if (comma == std::string_view::npos) {
-    throw cli::Error(std::string(option) + ": " + cli::inQuotes(text) + " is not AZIMUTH,ELEVATION in degrees");
+    throw cli::Error(std::string(option) + ": " + cli::inQuotes(text) +
+                     " is not AZIMUTH,ELEVATION in degrees");
   }
   Light light;
   const double azimuth = cli::parseReal(option, text.substr(0, comma), -90, 90);
@@ -133,6 +135,93 @@ Light parseLight(std::string_view option, std::string_view text) {
 // 48 MiB of RGB), whatever its shape; a contact sheet's cells and labels count together.
 constexpr std::int64_t kMaxOutputPixels = std::int64_t{4096} * 4096;
 
+// The view options (--yaw, --pitch, --roll, --zoom, --pan, --size): false when `args` holds
+// another option.
+bool parseViewOption(cli::ArgumentReader& args, Camera& camera) {
+  if (args.is("--yaw")) {
+    camera.yaw = cli::parseDegrees(args.name(), args.value());
+  } else if (args.is("--pitch")) {
+    camera.pitch = cli::parseDegrees(args.name(), args.value());
+  } else if (args.is("--roll")) {
+    camera.roll = cli::parseDegrees(args.name(), args.value());
+  } else if (args.is("--zoom")) {
+    camera.zoom = cli::parseZoom(args.name(), args.value());
+  } else if (args.is("--pan")) {
+    const std::string text = args.value();
+    const std::size_t comma = text.find(',');
+    if (comma == std::string::npos)
+      throw cli::Error("--pan: " + cli::inQuotes(text) + " is not X,Y");
+    camera.pan_x_px = cli::parseInt(args.name(), text.substr(0, comma), -1'000'000, 1'000'000);
+    camera.pan_y_px = cli::parseInt(args.name(), text.substr(comma + 1), -1'000'000, 1'000'000);
+  } else if (args.is("--size")) {
+    const cli::FrameSize size =
+        cli::parseFrameSize(args.name(), args.value(), 1, kMaxViewportSide, kMaxOutputPixels);
+    camera.width = size.width;
+    camera.height = size.height;
+  } else {
+    return false;
+  }
+  return true;
+}
+
+// The style options (--style, --light, --headlight, --crease): false when `args` holds another
+// option.
+bool parseStyleOption(cli::ArgumentReader& args, StyleOptions& style) {
+  if (args.is("--style")) {
+    const std::size_t choice = cli::parseChoice(args.name(), args.value(),
+                                                {"colour", "shaded", "lines", "toon", "outlined"});
+    style.style = allStyles()[choice].style;
+  } else if (args.is("--light")) {
+    const bool headlight = style.light.headlight;
+    style.light = parseLight(args.name(), args.value());
+    style.light.headlight = headlight;
+  } else if (args.is("--headlight")) {
+    args.noValue();
+    style.light.headlight = true;
+  } else if (args.is("--crease")) {
+    style.crease_angle = Angle::fromMilliDegrees(
+        std::llround(cli::parseReal(args.name(), args.value(), 1, 179) * 1000));
+  } else {
+    return false;
+  }
+  return true;
+}
+
+// The model's source (--model, --file, --url) and how a URL is fetched: false when `args` holds
+// another option.
+bool parseSourceOption(cli::ArgumentReader& args, Options& options) {
+  if (args.is("--model")) {
+    options.model_name = args.value();
+  } else if (args.is("--file")) {
+    options.model_file = args.value();
+  } else if (args.is("--url")) {
+    options.url = args.value();
+  } else if (args.is("--point-budget")) {
+    options.fetch.point_budget = static_cast<std::uint64_t>(
+        cli::parseInteger(args.name(), args.value(), 1, std::int64_t{1} << 40));
+  } else if (args.is("--bytes")) {
+    options.fetch.bytes = static_cast<std::uint64_t>(
+        cli::parseInteger(args.name(), args.value(), 1, std::int64_t{1} << 50));
+  } else if (args.is("--timeout")) {
+    options.fetch.timeout_seconds = cli::parseInt(args.name(), args.value(), 1, 86400);
+  } else {
+    return false;
+  }
+  return true;
+}
+
+// The options that exclude or need each other.
+void checkCombination(const Options& options) {
+  if (!options.model_name.empty() + !options.model_file.empty() + !options.url.empty() > 1) {
+    throw cli::Error("give one of --model, --file and --url");
+  }
+  if (options.url.empty() && options.fetch.bytes > 0) throw cli::Error("--bytes needs --url");
+  if (!options.url.empty() && (options.depth || options.sheet > 0)) {
+    throw cli::Error("--url draws the depth the view needs: --depth and --sheet do not apply");
+  }
+  if (!options.list && options.output.empty()) throw cli::Error("no output given: use -o OUT.png");
+}
+
 Options parseOptions(int argc, char** argv) {
   Options options;
   cli::ArgumentReader args(argc, argv);
@@ -143,38 +232,9 @@ Options parseOptions(int argc, char** argv) {
     } else if (args.is("--list")) {
       args.noValue();
       options.list = true;
-    } else if (args.is("--model")) {
-      options.model_name = args.value();
-    } else if (args.is("--file")) {
-      options.model_file = args.value();
-    } else if (args.is("--url")) {
-      options.url = args.value();
-    } else if (args.is("--point-budget")) {
-      options.fetch.point_budget =
-          static_cast<std::uint64_t>(cli::parseInteger(args.name(), args.value(), 1, std::int64_t{1} << 40));
-    } else if (args.is("--bytes")) {
-      options.fetch.bytes = static_cast<std::uint64_t>(cli::parseInteger(args.name(), args.value(), 1, std::int64_t{1} << 50));
-    } else if (args.is("--timeout")) {
-      options.fetch.timeout_seconds = cli::parseInt(args.name(), args.value(), 1, 86400);
-    } else if (args.is("--yaw")) {
-      options.camera.yaw = cli::parseDegrees(args.name(), args.value());
-    } else if (args.is("--pitch")) {
-      options.camera.pitch = cli::parseDegrees(args.name(), args.value());
-    } else if (args.is("--roll")) {
-      options.camera.roll = cli::parseDegrees(args.name(), args.value());
-    } else if (args.is("--zoom")) {
-      options.camera.zoom = cli::parseZoom(args.name(), args.value());
-    } else if (args.is("--pan")) {
-      const std::string text = args.value();
-      const std::size_t comma = text.find(',');
-      if (comma == std::string::npos) throw cli::Error("--pan: " + cli::inQuotes(text) + " is not X,Y");
-      options.camera.pan_x_px = cli::parseInt(args.name(), text.substr(0, comma), -1'000'000, 1'000'000);
-      options.camera.pan_y_px = cli::parseInt(args.name(), text.substr(comma + 1), -1'000'000, 1'000'000);
-    } else if (args.is("--size")) {
-      const cli::FrameSize size =
-          cli::parseFrameSize(args.name(), args.value(), 1, kMaxViewportSide, kMaxOutputPixels);
-      options.camera.width = size.width;
-      options.camera.height = size.height;
+    } else if (parseSourceOption(args, options) || parseViewOption(args, options.camera) ||
+               parseStyleOption(args, options.style)) {
+      continue;
     } else if (args.is("--depth")) {
       const std::string text = args.value();
       if (text == "auto") {
@@ -185,25 +245,12 @@ Options parseOptions(int argc, char** argv) {
     } else if (args.is("--variant")) {
       const std::string name = args.value();
       const std::optional<Variant> variant = variantFromName(name);
-      if (!variant) throw cli::Error("--variant: unknown variant " + cli::inQuotes(name) + " (see --list)");
+      if (!variant)
+        throw cli::Error("--variant: unknown variant " + cli::inQuotes(name) + " (see --list)");
       options.variant = *variant;
     } else if (args.is("--fill") || args.is("--no-fill")) {
       args.noValue();
       options.fill = args.is("--fill");
-    } else if (args.is("--style")) {
-      const std::size_t choice =
-          cli::parseChoice(args.name(), args.value(), {"colour", "shaded", "lines", "toon", "outlined"});
-      options.style.style = allStyles()[choice].style;
-    } else if (args.is("--light")) {
-      const bool headlight = options.style.light.headlight;
-      options.style.light = parseLight(args.name(), args.value());
-      options.style.light.headlight = headlight;
-    } else if (args.is("--headlight")) {
-      args.noValue();
-      options.style.light.headlight = true;
-    } else if (args.is("--crease")) {
-      options.style.crease_angle =
-          Angle::fromMilliDegrees(std::llround(cli::parseReal(args.name(), args.value(), 1, 179) * 1000));
     } else if (args.is("--sheet")) {
       options.sheet = cli::parseInt(args.name(), args.value(), 1, 36);
     } else if (args.is("-o") || args.is("--output")) {
@@ -212,14 +259,7 @@ Options parseOptions(int argc, char** argv) {
       args.refuseUnknown();
     }
   }
-  if (!options.model_name.empty() + !options.model_file.empty() + !options.url.empty() > 1) {
-    throw cli::Error("give one of --model, --file and --url");
-  }
-  if (options.url.empty() && options.fetch.bytes > 0) throw cli::Error("--bytes needs --url");
-  if (!options.url.empty() && (options.depth || options.sheet > 0)) {
-    throw cli::Error("--url draws the depth the view needs: --depth and --sheet do not apply");
-  }
-  if (!options.list && options.output.empty()) throw cli::Error("no output given: use -o OUT.png");
+  checkCombination(options);
   return options;
 }
 
@@ -252,99 +292,111 @@ void writePng(const std::string& path, const cv::Mat& image) {
   cli::writeFileAtomically(path, {reinterpret_cast<const char*>(png.data()), png.size()});
 }
 
-int run(int argc, char** argv) {
-  const Options options = parseOptions(argc, argv);
-  if (options.list) {
-    listModels();
-    return 0;
+// A model fetched by URL, drawn at the depth the view needs.
+int renderUrl(const Options& options) {
+  cli::checkOutputFile(
+      options.output);  // before fetching: a FIFO, a device or a directory is refused
+  std::string report;
+  const cv::Mat image = renderFromUrl(options.url, options.camera, options.variant, options.fill,
+                                      kBackground, options.fetch, &report);
+  writePng(options.output, image);
+  std::printf("%s: %s -> %s (%dx%d)\n", options.url.c_str(), report.c_str(), options.output.c_str(),
+              options.camera.width, options.camera.height);
+  return 0;
+}
+
+// A chunked model file, drawn at the depth the view needs.
+int renderChunked(const Options& options, LoadedModel& loaded) {
+  cli::checkOutputFile(options.output);
+  if (options.depth || options.sheet > 0) {
+    throw cli::Error(loaded.label +
+                     ": a chunked model is drawn at the depth the view needs: --depth and "
+                     "--sheet do not apply");
   }
-  if (!options.url.empty()) {
-    cli::checkOutputFile(options.output);  // before fetching: a FIFO, a device or a directory is refused
-    std::string report;
-    const cv::Mat image = renderFromUrl(options.url, options.camera, options.variant, options.fill, kBackground,
-                                        options.fetch, &report);
-    writePng(options.output, image);
-    std::printf("%s: %s -> %s (%dx%d)\n", options.url.c_str(), report.c_str(), options.output.c_str(),
-                options.camera.width, options.camera.height);
-    return 0;
-  }
-  const std::unique_ptr<LoadedModel> loaded = loadModel(options.model_name, options.model_file, true);
-  if (loaded->chunked) {
-    cli::checkOutputFile(options.output);
-    if (options.depth || options.sheet > 0) {
-      throw cli::Error(loaded->label + ": a chunked model is drawn at the depth the view needs: --depth and --sheet do not apply");
-    }
-    ProgressiveDrawStats stats;
-    loaded->chunked->setPointBudget(options.fetch.point_budget);
-    writePng(options.output, renderChunkedView(*loaded->chunked, options.camera, options.variant, options.fill,
-                                               kBackground, &stats));
-    std::printf("%s: chunked, depth %d, %llu points%s -> %s (%dx%d)\n", loaded->label.c_str(), stats.drawn_depth,
-                static_cast<unsigned long long>(stats.points), overBudgetNote(stats).c_str(), options.output.c_str(),
-                options.camera.width, options.camera.height);
-    return 0;
-  }
-  if (options.fetch.point_budget > 0) {
-    throw cli::Error(loaded->label + ": --point-budget applies to a chunked model (octopoint-prepare --chunked)");
-  }
-  const ModelView* model = &*loaded->view;
-  const std::string& model_label = loaded->label;
-  const LevelView* level = options.depth ? model->levelOfDepth(*options.depth) : autoLevel(*model, options.camera);
+  ProgressiveDrawStats stats;
+  loaded.chunked->setPointBudget(options.fetch.point_budget);
+  writePng(options.output, renderChunkedView(*loaded.chunked, options.camera, options.variant,
+                                             options.fill, kBackground, &stats));
+  std::printf("%s: chunked, depth %d, %llu points%s -> %s (%dx%d)\n", loaded.label.c_str(),
+              stats.drawn_depth, static_cast<unsigned long long>(stats.points),
+              overBudgetNote(stats).c_str(), options.output.c_str(), options.camera.width,
+              options.camera.height);
+  return 0;
+}
+
+// The level --depth names, or depth auto's for the camera.
+const LevelView& chooseLevel(const ModelView& model, const std::string& model_label,
+                             const Options& options) {
+  const LevelView* level =
+      options.depth ? model.levelOfDepth(*options.depth) : autoLevel(model, options.camera);
   if (level == nullptr && !options.depth) {
     throw cli::Error(std::string("camera refused: ") + describe(CameraError::kOverflow));
   }
   if (level == nullptr) {
     std::string depths;
-    for (int i = 0; i < model->levelCount(); ++i) {
+    for (int i = 0; i < model.levelCount(); ++i) {
       depths += ' ';  // appended char by char: GCC 12 warns falsely (-Wrestrict) on " " + string
-      depths += std::to_string(model->level(i).depth);
+      depths += std::to_string(model.level(i).depth);
     }
     throw cli::Error("--depth: " + model_label + " has no depth " + std::to_string(*options.depth) +
                      " (it has" + depths + ")");
   }
-  FrameStyler styler(*model);
-  StyleOptions style = options.style;
-  style.background = kBackground;
+  return *level;
+}
+
+// Sets the styler to `style`, refusing a style the model or the variant cannot draw.
+void setStyle(FrameStyler& styler, const StyleOptions& style, const std::string& model_label,
+              Variant variant) {
   if (const StyleError error = styler.setOptions(style); error != StyleError::kNone) {
-    throw cli::Error("--style " + std::string(styleName(style.style)) + ": " + model_label + ": " + describe(error));
+    throw cli::Error("--style " + std::string(styleName(style.style)) + ": " + model_label + ": " +
+                     describe(error));
   }
-  if (styler.payload() == PixelPayload::kColourNormal && !drawsNormals(options.variant)) {
+  if (styler.payload() == PixelPayload::kColourNormal && !drawsNormals(variant)) {
     std::string variant_name;
     for (const VariantInfo& info : allVariants()) {
-      if (info.variant == options.variant) variant_name = info.name;
+      if (info.variant == variant) variant_name = info.name;
     }
-    throw cli::Error("--style " + std::string(styleName(style.style)) + ": --variant " + variant_name +
+    throw cli::Error("--style " + std::string(styleName(style.style)) + ": --variant " +
+                     variant_name +
                      " draws colour only, not the normals this style needs (use another variant)");
   }
-  cli::checkOutputFile(options.output);  // before drawing: a FIFO, a device or a directory is refused
-  if (options.sheet > 0) {
-    const std::int64_t sheet_pixels = contactSheetPixels(*model, options.camera, options.sheet);
-    if (sheet_pixels > kMaxOutputPixels) {
-      throw cli::Error("--sheet " + std::to_string(options.sheet) + " at --size " +
-                       std::to_string(options.camera.width) + "x" + std::to_string(options.camera.height) +
-                       " makes a " + std::to_string(sheet_pixels) + "-pixel image, at most " +
-                       std::to_string(kMaxOutputPixels) + ": give fewer views or a smaller --size");
-    }
-    try {
-      writePng(options.output,
-               renderContactSheet(*model, options.camera, options.sheet, options.variant, style));
-    } catch (const cv::Exception& error) {
-      throw cli::Error(std::string("contact sheet: ") + error.what());
-    } catch (const std::runtime_error& error) {
-      throw cli::Error(std::string("contact sheet: ") + error.what());
-    }
-    std::printf("%s: contact sheet of %d views -> %s\n", model_label.c_str(), options.sheet,
-                options.output.c_str());
-    return 0;
+}
+
+int renderSheet(const ModelView& model, const std::string& model_label, const Options& options,
+                const StyleOptions& style) {
+  const std::int64_t sheet_pixels = contactSheetPixels(model, options.camera, options.sheet);
+  if (sheet_pixels > kMaxOutputPixels) {
+    throw cli::Error("--sheet " + std::to_string(options.sheet) + " at --size " +
+                     std::to_string(options.camera.width) + "x" +
+                     std::to_string(options.camera.height) + " makes a " +
+                     std::to_string(sheet_pixels) + "-pixel image, at most " +
+                     std::to_string(kMaxOutputPixels) + ": give fewer views or a smaller --size");
   }
+  try {
+    writePng(options.output,
+             renderContactSheet(model, options.camera, options.sheet, options.variant, style));
+  } catch (const cv::Exception& error) {
+    throw cli::Error(std::string("contact sheet: ") + error.what());
+  } catch (const std::runtime_error& error) {
+    throw cli::Error(std::string("contact sheet: ") + error.what());
+  }
+  std::printf("%s: contact sheet of %d views -> %s\n", model_label.c_str(), options.sheet,
+              options.output.c_str());
+  return 0;
+}
+
+int renderFrame(const LevelView& level, FrameStyler& styler, const std::string& model_label,
+                const Options& options) {
   FrameSetup setup;
   const CameraError camera_error =
-      buildFrameSetup(options.camera, level->depth, kDefaultFractionBits, &setup);
-  if (camera_error != CameraError::kNone) throw cli::Error(std::string("camera refused: ") + describe(camera_error));
+      buildFrameSetup(options.camera, level.depth, kDefaultFractionBits, &setup);
+  if (camera_error != CameraError::kNone)
+    throw cli::Error(std::string("camera refused: ") + describe(camera_error));
 
   Framebuffer frame(options.camera.width, options.camera.height);
   frame.clear(styler.payload());
-  if (!renderLevel(options.variant, *level, setup, frame))
-    throw cli::Error(std::string("draw refused: ") + describe(checkRender(*level, setup, frame)));
+  if (!renderLevel(options.variant, level, setup, frame))
+    throw cli::Error(std::string("draw refused: ") + describe(checkRender(level, setup, frame)));
   if (options.fill && HoleFiller(frame.width()).fill(frame, bridgeDepthLimit(setup)).refused)
     throw cli::Error("hole filling refused the frame");
 
@@ -358,12 +410,42 @@ int run(int argc, char** argv) {
   cv::cvtColor(rgb, bgr, cv::COLOR_RGB2BGR);
   writePng(options.output, bgr);
   const SplatFootprint& splat = drawsSplats(options.variant) ? setup.splat : SplatFootprint{};
-  std::printf("%s: depth %d%s, %zu points, splat up to %dx%d px -> %s (%dx%d)\n", model_label.c_str(),
-              level->depth, options.depth ? "" : " (auto)", level->leaves.size(), splat.columns, splat.rows,
-              options.output.c_str(), options.camera.width, options.camera.height);
+  std::printf("%s: depth %d%s, %zu points, splat up to %dx%d px -> %s (%dx%d)\n",
+              model_label.c_str(), level.depth, options.depth ? "" : " (auto)", level.leaves.size(),
+              splat.columns, splat.rows, options.output.c_str(), options.camera.width,
+              options.camera.height);
   return 0;
+}
+
+int run(int argc, char** argv) {
+  const Options options = parseOptions(argc, argv);
+  if (options.list) {
+    listModels();
+    return 0;
+  }
+  if (!options.url.empty()) return renderUrl(options);
+  const std::unique_ptr<LoadedModel> loaded =
+      loadModel(options.model_name, options.model_file, true);
+  if (loaded->chunked) return renderChunked(options, *loaded);
+  if (options.fetch.point_budget > 0) {
+    throw cli::Error(loaded->label +
+                     ": --point-budget applies to a chunked model (octopoint-prepare --chunked)");
+  }
+  const ModelView& model = *loaded->view;
+  const std::string& model_label = loaded->label;
+  const LevelView& level = chooseLevel(model, model_label, options);
+  FrameStyler styler(model);
+  StyleOptions style = options.style;
+  style.background = kBackground;
+  setStyle(styler, style, model_label, options.variant);
+  cli::checkOutputFile(
+      options.output);  // before drawing: a FIFO, a device or a directory is refused
+  if (options.sheet > 0) return renderSheet(model, model_label, options, style);
+  return renderFrame(level, styler, model_label, options);
 }
 
 }  // namespace
 
-int main(int argc, char** argv) { return octopoint::cli::runTool("octopoint-render", argc, argv, run); }
+int main(int argc, char** argv) {
+  return octopoint::cli::runTool("octopoint-render", argc, argv, run);
+}

@@ -1,46 +1,32 @@
-// octopoint-view: an interactive window on a model. The window (SDL2, tools/view_window.h) drives the
-// dual-resolution renderer: an arrow key's press and release start and stop thread L's coarse
+// octopoint-view: an interactive window on a model. The window (SDL2, tools/view_window.h) drives
+// the dual-resolution renderer: an arrow key's press and release start and stop thread L's coarse
 // frames, thread H's fine frame follows at the next 100 ms tick after the last release, and the
-// frames follow the window's size.
+// frames follow the window's size. This file: the command line; the window is tools/viewer.h.
 
-#include <algorithm>
-#include <array>
-#include <cmath>
-#include <cstdio>
+#include <cstdint>
 #include <cstdlib>
-#include <functional>
-#include <optional>
 #include <iostream>
 #include <memory>
-#include <opencv2/imgcodecs.hpp>
-#include <opencv2/imgproc.hpp>
-#include <span>
+#include <optional>
 #include <string>
-#include <utility>
-#include <vector>
 
-#include "tools/model_source.h"
-#include "tools/view_keys.h"
-#include "tools/view_overlay.h"
-#include "tools/view_window.h"
 #include "cli/arguments.h"
 #include "cli/error.h"
 #include "cli/numbers.h"
-#include "cli/output_file.h"
 #include "cli/run_tool.h"
 #include "cli/text.h"
 #include "octopoint/http.h"
-#include "octopoint/interactive.h"
-#include "octopoint/styles.h"
-#include "octopoint/model.h"
 #include "octopoint/progressive.h"
+#include "tools/model_source.h"
+#include "tools/viewer.h"
 
 namespace {
 
 using namespace octopoint;
 
 constexpr const char* kUsage =
-    R"(usage: octopoint-view [--model NAME | --file M.oct | --url URL [--point-budget N]] [--size WxH] [--scale N]
+    R"(usage: octopoint-view [--model NAME | --file M.oct | --url URL [--point-budget N]] )"
+    R"([--size WxH] [--scale N]
                      [--speed DEG]
 
 Shows an octopoint model in a resizable window. While an arrow key is held the view turns at a
@@ -78,466 +64,8 @@ The window needs a display (DISPLAY or WAYLAND_DISPLAY); SDL_VIDEODRIVER picks a
 driver, e.g. kmsdrm on a panel without a window system.
 )";
 
-constexpr const char* kWindowTitle = "octopoint-view";
-constexpr Rgb kBackground{236, 236, 240};
-constexpr int kMaxFrameSide = 4096;
-constexpr int kMinFrameSide = 16;
-
-struct Options {
-  std::string model_name;
-  std::string model_file;
-  std::string url;
-  int width = 640;
-  int height = 480;
-  int scale = 1;
-  int degrees_per_second = 90;
-  std::uint64_t point_budget = 0;  // with --url; 0: none
-};
-
-double degreesOf(Angle angle) { return angle.turns16() * 360.0 / Angle::kUnitsPerTurn; }
-// -180..180: the light's angles are signed.
-double signedDegreesOf(Angle angle) {
-  const double degrees = degreesOf(angle);
-  return degrees > 180 ? degrees - 360 : degrees;
-}
-double zoomOf(Q16 zoom) { return static_cast<double>(zoom.raw()) / Q16::kOneRaw; }
-
-class Viewer {
- public:
-  // Shows `model`, or, when `model` is null, the chunked model `stream` brings in.
-  Viewer(const Options& options, const ModelView* model, net::ModelStream* stream);
-  // From the stream's thread: more of the model arrived.
-  void contentChanged();
-  // Shows the window until the user quits.
-  void run();
-  // The key table; `viewer` may be null when only the help text is wanted.
-  static KeyBindings keyTable(Viewer* viewer);
-
- private:
-  void handle(const WindowEvent& event);
-  void handleKey(const WindowEvent& event);
-  void send(ViewEventKind kind, std::int64_t now_us) { renderer_->handle({now_us, kind}); }
-  void resizeFrame(int window_width, int window_height);
-  // Puts the newest frame on the screen when it, the window or the overlay's text changed.
-  void show();
-  void save();
-  void defaultOverlay(OverlayLines& lines) const;
-  void streamOverlay(OverlayLines& lines);
-  // Tells the stream which view to fetch for: the one on screen, as it changes.
-  void followView();
-  // The style keys: the next style, or the light turned by a step (docs/styles.md).
-  void nextStyle();
-  void moveLight(int azimuth_steps, int elevation_steps);
-  void applyStyle(const StyleOptions& options);
-  void resolveStyled(const Framebuffer& frame, const FrameInfo& info, std::span<std::uint8_t> rgb);
-
-  const Options options_;
-  const ModelView* model_;
-  net::ModelStream* stream_;
-  const SteadyClock clock_;
-  ViewWindow window_;  // before renderer_: its threads wake the window until they are joined
-  std::unique_ptr<DualResolutionRenderer> renderer_;
-  KeyBindings keys_;
-  Overlay overlay_;
-  std::optional<FrameStyler> styler_;  // none for a stream: the styles need a model with normals
-  // Turns a frame into RGB888 for the screen and for `s` (default: its palette colours).
-  std::function<void(const Framebuffer&, const FrameInfo&, std::span<std::uint8_t>)> resolve_;
-
-  bool quit_ = false;
-  bool resolve_again_ = false;  // the frame on screen must be turned into RGB again
-  bool compose_again_ = true;   // the window must be drawn again
-  std::optional<std::pair<int, int>> pending_window_size_;
-  FrameInfo shown_info_;  // of the frame on screen (generation 0: none yet)
-  cv::Mat frame_rgb_;     // the frame on screen in RGB, frame size
-  cv::Mat scaled_rgb_;    // the same scaled by --scale
-  cv::Mat window_rgb_;    // what the window shows, window size
-  OverlayLines shown_lines_;
-  std::uint64_t frames_shown_ = 0;
-  RateCounter drawn_rate_;
-  RateCounter shown_rate_;
-  int saved_ = 0;
-  std::optional<Camera> followed_view_;  // the view the stream fetches for
-};
-
-InteractiveConfig interactiveConfig(const Options& options, ViewWindow& window) {
-  InteractiveConfig config;
-  config.width = options.width;
-  config.height = options.height;
-  config.degrees_per_second = options.degrees_per_second;
-  config.frame_ready = [&window] { window.wake(); };
-  return config;
-}
-
-// Draws the views of a chunked model as it streams in: the fine frame at the depth the view needs,
-// the coarse one a stored depth coarser; an empty frame until the head has arrived. Each render
-// thread draws from its own snapshot of the chunks held, taken under the stream's lock for a copy
-// of one byte per chunk, and draws without the lock: chunks keep arriving while it draws.
-ViewDrawFunction streamDrawer(net::ModelStream& stream, std::uint64_t point_budget) {
-  const Variant variant = InteractiveConfig{}.variant;
-  // One per render thread (FrameSource: L draws kCoarse, H kFine), kept across frames.
-  auto snapshots = std::make_shared<std::array<ProgressiveFrame, 2>>();
-  for (ProgressiveFrame& snapshot : *snapshots) snapshot.setPointBudget(point_budget);
-  return [&stream, variant, snapshots](FrameSource source, const Camera& camera,
-                                       Framebuffer& frame, const std::atomic<bool>* abort,
-                                       int* depth) {
-    ProgressiveFrame& snapshot = (*snapshots)[source == FrameSource::kFine ? 1 : 0];
-    const ProgressiveModel* model = stream.snapshot(snapshot);
-    if (model == nullptr) return true;
-    ProgressiveDrawStats stats;
-    const int coarser = source == FrameSource::kCoarse ? 1 : 0;
-    const bool complete = model->draw(snapshot, camera, variant, frame, &stats, abort, coarser) ||
-                          abort == nullptr || !abort->load();
-    *depth = stats.drawn_depth;
-    return complete;
-  };
-}
-
-// A model with normals is drawn with them, so that the style keys work on every frame.
-InteractiveConfig interactiveConfig(const Options& options, ViewWindow& window, const ModelView& model) {
-  InteractiveConfig config = interactiveConfig(options, window);
-  if (model.hasNormals()) config.payload = PixelPayload::kColourNormal;
-  return config;
-}
-
-constexpr int kLightStepDegrees = 15;
-
-Viewer::Viewer(const Options& options, const ModelView* model, net::ModelStream* stream)
-    : options_(options),
-      model_(model),
-      stream_(stream),
-      window_(kWindowTitle, options.width * options.scale, options.height * options.scale,
-              kMinFrameSide * options.scale, kMinFrameSide * options.scale),
-      renderer_(model != nullptr
-                    ? std::make_unique<DualResolutionRenderer>(*model, clock_,
-                                                               interactiveConfig(options, window_, *model))
-                    : std::make_unique<DualResolutionRenderer>(
-                          streamDrawer(*stream, options.point_budget), clock_, interactiveConfig(options, window_))),
-      keys_(keyTable(this)),
-      resolve_([this](const Framebuffer& frame, const FrameInfo& info, std::span<std::uint8_t> rgb) {
-        if (model_ != nullptr) {
-          resolveStyled(frame, info, rgb);
-          return;
-        }
-        // The palette never changes once the head is in: resolved without the stream's lock.
-        if (const ProgressiveModel* chunked = stream_->model(); chunked != nullptr) {
-          // The window's pixels are sized to the frame: resolveToRgb cannot refuse them.
-          static_cast<void>(resolveToRgb(frame, chunked->baseModel(), kBackground, rgb));
-          return;
-        }
-        for (std::size_t i = 0; i + 2 < rgb.size(); i += 3) {
-          rgb[i] = kBackground.r, rgb[i + 1] = kBackground.g, rgb[i + 2] = kBackground.b;
-        }
-      }) {
-  if (model_ != nullptr) {
-    StyleOptions style;
-    style.background = kBackground;
-    // The colour style needs no normals: setOptions cannot refuse it.
-    static_cast<void>(styler_.emplace(*model_).setOptions(style));
-  }
-  overlay_.add([this](OverlayLines& lines) { defaultOverlay(lines); });
-  if (stream_ != nullptr) overlay_.add([this](OverlayLines& lines) { streamOverlay(lines); });
-}
-
-void Viewer::contentChanged() {
-  renderer_->handle({clock_.nowMicroseconds(), ViewEventKind::kContentChanged});
-  window_.wake();  // the overlay's byte count moved too
-}
-
-void Viewer::followView() {
-  if (stream_ == nullptr) return;
-  const FrameInfo latest = renderer_->status().latest;
-  if (latest.generation == 0) return;
-  Camera camera;
-  camera.yaw = latest.view.yaw;
-  camera.pitch = latest.view.pitch;
-  camera.zoom = latest.view.zoom;
-  camera.width = latest.width;
-  camera.height = latest.height;
-  const bool same =
-      followed_view_ && followed_view_->yaw == camera.yaw &&
-      followed_view_->pitch == camera.pitch && followed_view_->zoom.raw() == camera.zoom.raw() &&
-      followed_view_->width == camera.width && followed_view_->height == camera.height;
-  if (same) return;
-  followed_view_ = camera;
-  stream_->setView(camera);
-}
-
-void Viewer::streamOverlay(OverlayLines& lines) {
-  const net::StreamStatus status = stream_->status();
-  char line[160];
-  if (!status.head_known) {
-    std::snprintf(line, sizeof line, "waiting for the head: %llu bytes%s%s",
-                  static_cast<unsigned long long>(status.bytes_received),
-                  status.error.empty() ? "" : "  ", status.error.c_str());
-  } else {
-    std::snprintf(line, sizeof line, "%llu of %llu kB received  %u chunks pending%s",
-                  static_cast<unsigned long long>(status.bytes_received / 1000),
-                  static_cast<unsigned long long>(status.file_bytes / 1000), status.chunks_pending,
-                  status.view_complete ? "  view complete" : "");
-  }
-  lines.emplace_back(line);
-}
-
-void Viewer::applyStyle(const StyleOptions& options) {
-  if (const StyleError error = styler_->setOptions(options); error != StyleError::kNone) {
-    const std::string message = std::string(styleName(options.style)) + ": " + describe(error);
-    cli::printError("octopoint-view", message.c_str());
-    return;
-  }
-  resolve_again_ = true;
-}
-
-void Viewer::nextStyle() {
-  if (!styler_) {
-    cli::printError("octopoint-view", "styles: a streamed model has no normals; open a model file or an embedded model");
-    return;
-  }
-  StyleOptions options = styler_->options();
-  options.style = octopoint::nextStyle(options.style);
-  applyStyle(options);
-}
-
-void Viewer::moveLight(int azimuth_steps, int elevation_steps) {
-  if (!styler_) return;
-  StyleOptions options = styler_->options();
-  const auto step = [](Angle angle, int steps) {
-    const int degrees =
-        std::clamp(static_cast<int>(std::lround(signedDegreesOf(angle))) + steps * kLightStepDegrees, -90, 90);
-    return Angle::fromDegrees(degrees);
-  };
-  options.light.azimuth = step(options.light.azimuth, azimuth_steps);
-  options.light.elevation = step(options.light.elevation, elevation_steps);
-  applyStyle(options);
-}
-
-void Viewer::resolveStyled(const Framebuffer& frame, const FrameInfo& info, std::span<std::uint8_t> rgb) {
-  Camera camera;
-  camera.yaw = info.view.yaw;
-  camera.pitch = info.view.pitch;
-  camera.zoom = info.view.zoom;
-  camera.width = info.width;
-  camera.height = info.height;
-  FrameSetup setup;
-  const bool styled = styler_->options().style != Style::kColour && info.depth > 0 &&
-                      buildFrameSetup(camera, info.depth, kDefaultFractionBits, &setup) == CameraError::kNone;
-  // The window's pixels are sized to the frame: resolveToRgb cannot refuse them.
-  if (!styled) {
-    static_cast<void>(resolveToRgb(frame, *model_, kBackground, rgb));
-    return;
-  }
-  styler_->beginFrame(setup);
-  if (styler_->resolve(frame, rgb) != StyleError::kNone)
-    static_cast<void>(resolveToRgb(frame, *model_, kBackground, rgb));
-}
-
-KeyBindings Viewer::keyTable(Viewer* viewer) {
-  KeyBindings keys;
-  keys.hold({SDLK_LEFT}, "Left", "hold to turn left", NavigationKey::kYawLeft);
-  keys.hold({SDLK_RIGHT}, "Right", "hold to turn right", NavigationKey::kYawRight);
-  keys.hold({SDLK_UP}, "Up", "hold to tilt up", NavigationKey::kPitchUp);
-  keys.hold({SDLK_DOWN}, "Down", "hold to tilt down", NavigationKey::kPitchDown);
-  constexpr bool kRepeats = true;
-  keys.press(
-      {SDLK_PLUS, SDLK_EQUALS, SDLK_KP_PLUS}, "+ -", "zoom in and out (held: again and again)",
-      [viewer](std::int64_t now) { viewer->send(ViewEventKind::kZoomIn, now); }, kRepeats);
-  keys.press(
-      {SDLK_MINUS, SDLK_UNDERSCORE, SDLK_KP_MINUS}, "", "",
-      [viewer](std::int64_t now) { viewer->send(ViewEventKind::kZoomOut, now); }, kRepeats);
-  keys.describe("wheel", "zoom in (away from you) and out, one step of 5/4 per notch");
-  keys.press({SDLK_f}, "f", "hole filling on and off",
-             [viewer](std::int64_t now) { viewer->send(ViewEventKind::kToggleFill, now); });
-  keys.press({SDLK_r}, "r", "back to the initial view",
-             [viewer](std::int64_t now) { viewer->send(ViewEventKind::kReset, now); });
-  keys.press({SDLK_s}, "s", "save the frame as octopoint-view-N.png in the current directory",
-             [viewer](std::int64_t) { viewer->save(); });
-  keys.press({SDLK_c}, "c", "next style: colour, shaded, lines, toon, outlined (a model with normals)",
-             [viewer](std::int64_t) { viewer->nextStyle(); });
-  keys.press({SDLK_j}, "j l i k", "move the light left, right, up, down by 15 degrees (shaded, toon)",
-             [viewer](std::int64_t) { viewer->moveLight(-1, 0); }, kRepeats);
-  keys.press({SDLK_l}, "", "", [viewer](std::int64_t) { viewer->moveLight(1, 0); }, kRepeats);
-  keys.press({SDLK_i}, "", "", [viewer](std::int64_t) { viewer->moveLight(0, 1); }, kRepeats);
-  keys.press({SDLK_k}, "", "", [viewer](std::int64_t) { viewer->moveLight(0, -1); }, kRepeats);
-  keys.press({SDLK_q, SDLK_ESCAPE}, "q Esc", "quit",
-             [viewer](std::int64_t) { viewer->quit_ = true; });
-  return keys;
-}
-
-void Viewer::run() {
-  std::int64_t next_tick_us = clock_.nowMicroseconds();
-  while (!quit_) {
-    const std::int64_t now_us = clock_.nowMicroseconds();
-    if (now_us >= next_tick_us) {
-      send(ViewEventKind::kTick, now_us);
-      next_tick_us +=
-          kTickPeriodMicroseconds * ((now_us - next_tick_us) / kTickPeriodMicroseconds + 1);
-    }
-    // One event (sleeping until the next tick at most), then all that are already queued.
-    const int wait_ms = static_cast<int>((next_tick_us - now_us + 999) / 1000);
-    for (std::optional<WindowEvent> event = window_.next(wait_ms); event && !quit_;
-         event = window_.next(0)) {
-      handle(*event);
-    }
-    if (pending_window_size_) {  // a drag resizes many times: only the last size is drawn
-      resizeFrame(pending_window_size_->first, pending_window_size_->second);
-      pending_window_size_.reset();
-    }
-    if (!quit_) {
-      show();
-      followView();
-    }
-  }
-}
-
-void Viewer::handle(const WindowEvent& event) {
-  const std::int64_t now_us = clock_.nowMicroseconds();
-  switch (event.kind) {
-    case WindowEvent::Kind::kKeyDown:
-    case WindowEvent::Kind::kKeyUp:
-      handleKey(event);
-      break;
-    case WindowEvent::Kind::kWheel:
-      for (int step = 0; step < std::abs(event.wheel_steps); ++step) {
-        send(event.wheel_steps > 0 ? ViewEventKind::kZoomIn : ViewEventKind::kZoomOut, now_us);
-      }
-      break;
-    case WindowEvent::Kind::kResized:
-      pending_window_size_ = {event.width, event.height};
-      break;
-    case WindowEvent::Kind::kExposed:
-      compose_again_ = true;
-      break;
-    case WindowEvent::Kind::kFocusLost:  // their releases will go elsewhere: let them go now
-      for (int key = 0; key < kNavigationKeyCount; ++key) {
-        renderer_->handle({now_us, ViewEventKind::kRelease, static_cast<NavigationKey>(key)});
-      }
-      break;
-    case WindowEvent::Kind::kWake:  // a new frame: show() takes it
-      break;
-    case WindowEvent::Kind::kClose:
-      quit_ = true;
-      break;
-  }
-}
-
-void Viewer::handleKey(const WindowEvent& event) {
-  const KeyBinding* binding = keys_.find(event.key);
-  if (binding == nullptr) return;
-  const std::int64_t now_us = clock_.nowMicroseconds();
-  const bool down = event.kind == WindowEvent::Kind::kKeyDown;
-  if (binding->navigation) {
-    if (event.repeat) return;  // still held: the renderer turns the view by time, not by repeats
-    renderer_->handle(
-        {now_us, down ? ViewEventKind::kPress : ViewEventKind::kRelease, *binding->navigation});
-  } else if (down && (!event.repeat || binding->repeats)) {
-    binding->action(now_us);
-  }
-}
-
-void Viewer::resizeFrame(int window_width, int window_height) {
-  ViewEvent event;
-  event.time_us = clock_.nowMicroseconds();
-  event.kind = ViewEventKind::kResize;
-  event.width = std::clamp(window_width / options_.scale, 1, kMaxFrameSide);
-  event.height = std::clamp(window_height / options_.scale, 1, kMaxFrameSide);
-  renderer_->handle(event);
-  compose_again_ = true;
-}
-
-void Viewer::show() {
-  FrameInfo info;
-  const Framebuffer* frame = renderer_->acquireLatest(&info);
-  const std::int64_t now_us = clock_.nowMicroseconds();
-  if (frame == nullptr) return;
-  const bool new_frame = info.generation != shown_info_.generation;
-  if (new_frame || resolve_again_) {
-    frame_rgb_.create(frame->height(), frame->width(), CV_8UC3);  // allocates on a new size only
-    resolve_(*frame, info, {frame_rgb_.data, frame_rgb_.total() * 3});
-    resolve_again_ = false;
-    compose_again_ = true;
-  }
-  if (new_frame) ++frames_shown_;
-  shown_info_ = info;
-  drawn_rate_.record(now_us, renderer_->status().latest.generation);
-  shown_rate_.record(now_us, frames_shown_);
-  OverlayLines lines = overlay_.lines();
-  if (!compose_again_ && lines == shown_lines_) return;
-
-  const cv::Mat* scaled = &frame_rgb_;
-  if (options_.scale > 1) {
-    cv::resize(frame_rgb_, scaled_rgb_, {}, options_.scale, options_.scale, cv::INTER_NEAREST);
-    scaled = &scaled_rgb_;
-  }
-  window_rgb_.create(window_.height(), window_.width(), CV_8UC3);
-  const cv::Rect covered(0, 0, std::min(scaled->cols, window_rgb_.cols),
-                         std::min(scaled->rows, window_rgb_.rows));
-  if (covered.size() != window_rgb_.size()) {  // a frame drawn before the latest resize
-    window_rgb_.setTo(cv::Scalar(kBackground.r, kBackground.g, kBackground.b));
-  }
-  (*scaled)(covered).copyTo(window_rgb_(covered));
-  Overlay::draw(window_rgb_, lines);
-  window_.present(
-      window_rgb_.data, window_rgb_.cols, window_rgb_.rows, window_rgb_.step,
-      std::uint32_t{kBackground.r} << 16 | std::uint32_t{kBackground.g} << 8 | kBackground.b);
-  shown_lines_ = std::move(lines);
-  compose_again_ = false;
-}
-
-void Viewer::defaultOverlay(OverlayLines& lines) const {
-  const FrameInfo& info = shown_info_;
-  char line[128];
-  std::snprintf(line, sizeof line, "%s %lld.%01lld ms  depth %d  %dx%d  zoom %.2f%s",
-                info.source == FrameSource::kFine ? "H" : "L",
-                static_cast<long long>(info.render_us / 1000),
-                static_cast<long long>(info.render_us / 100 % 10), info.depth, info.width,
-                info.height, zoomOf(info.view.zoom), info.view.fill ? "  fill" : "");
-  lines.emplace_back(line);
-  if (styler_ && styler_->options().style != Style::kColour) {
-    const StyleOptions& style = styler_->options();
-    std::snprintf(line, sizeof line, "%s  light %.0f,%.0f", std::string(styleName(style.style)).c_str(),
-                  signedDegreesOf(style.light.azimuth), signedDegreesOf(style.light.elevation));
-    lines.emplace_back(line);
-  }
-  std::snprintf(line, sizeof line, "%llu fps drawn, %llu shown",
-                static_cast<unsigned long long>(drawn_rate_.perSecond()),
-                static_cast<unsigned long long>(shown_rate_.perSecond()));
-  lines.emplace_back(line);
-}
-
-// The output-file rule of every tool (cli/output_file.h): whole or nothing, and an existing name
-// that is not a regular file is refused, not replaced. A failure is reported and the viewer goes
-// on.
-void Viewer::save() {
-  if (shown_info_.generation == 0) return;
-  const std::string name = "octopoint-view-" + std::to_string(++saved_) + ".png";
-  try {
-    cv::Mat bgr;
-    cv::cvtColor(frame_rgb_, bgr, cv::COLOR_RGB2BGR);
-    std::vector<std::uint8_t> png;
-    if (!cv::imencode(".png", bgr, png)) throw cli::Error(name + ": cannot encode the PNG");
-    cli::writeFileAtomically(name, {reinterpret_cast<const char*>(png.data()), png.size()});
-  } catch (const std::exception& error) {
-    cli::printError("octopoint-view", error.what());
-    return;
-  }
-  const FrameInfo& info = shown_info_;
-  std::string style;
-  if (styler_ && styler_->options().style != Style::kColour) {
-    char text[96];
-    std::snprintf(text, sizeof text, " --style %s --light %.0f,%.0f",
-                  std::string(styleName(styler_->options().style)).c_str(),
-                  signedDegreesOf(styler_->options().light.azimuth),
-                  signedDegreesOf(styler_->options().light.elevation));
-    style = text;
-  }
-  std::printf("saved %s (%s): --size %dx%d --yaw %.2f --pitch %.2f --zoom %.4f --depth %d%s%s\n",
-              name.c_str(), info.source == FrameSource::kFine ? "H" : "L", info.width, info.height,
-              degreesOf(info.view.yaw), degreesOf(info.view.pitch), zoomOf(info.view.zoom),
-              info.depth, info.view.fill ? " --fill" : "", style.c_str());
-  std::fflush(stdout);
-}
-
-Options parseOptions(int argc, char** argv) {
-  Options options;
+ViewerOptions parseOptions(int argc, char** argv) {
+  ViewerOptions options;
   cli::ArgumentReader args(argc, argv);
   while (args.next()) {
     if (args.is("-h") || args.is("--help")) {
@@ -550,8 +78,8 @@ Options parseOptions(int argc, char** argv) {
     } else if (args.is("--url")) {
       options.url = args.value();
     } else if (args.is("--point-budget")) {
-      options.point_budget =
-          static_cast<std::uint64_t>(cli::parseInteger(args.name(), args.value(), 1, std::int64_t{1} << 40));
+      options.point_budget = static_cast<std::uint64_t>(
+          cli::parseInteger(args.name(), args.value(), 1, std::int64_t{1} << 40));
     } else if (args.is("--size")) {
       const cli::FrameSize size =
           cli::parseFrameSize(args.name(), args.value(), kMinFrameSide, kMaxFrameSide);
@@ -568,12 +96,13 @@ Options parseOptions(int argc, char** argv) {
   if (!options.model_name.empty() + !options.model_file.empty() + !options.url.empty() > 1) {
     throw cli::Error("give one of --model, --file and --url");
   }
-  if (options.point_budget > 0 && options.url.empty()) throw cli::Error("--point-budget needs --url");
+  if (options.point_budget > 0 && options.url.empty())
+    throw cli::Error("--point-budget needs --url");
   return options;
 }
 
 int run(int argc, char** argv) {
-  const Options options = parseOptions(argc, argv);
+  const ViewerOptions options = parseOptions(argc, argv);
   if (!options.url.empty()) {
     std::string why;
     const std::optional<net::HttpUrl> url = net::parseHttpUrl(options.url, &why);

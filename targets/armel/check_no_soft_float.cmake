@@ -12,7 +12,10 @@
 #   __eqsf2 __ltdf2 __unordsf2 ..., __powisf2, __mulsc3 __divdc3 (complex)
 # The integer helpers (__aeabi_idiv, __aeabi_uldivmod, __aeabi_lmul, __aeabi_llsl, memcpy, ...)
 # do not match.
-set(helper_pattern "^(__aeabi_([fd]|u?[il]2[fd]|h2f)|__(add|sub|mul|div|neg|abs)[sdtxh]f[23]|__(extend|trunc)[sdtxh]f[sdtxh]f2|__fix(uns)?[sdtxh]f[sdt]i|__float(un)?[sdt]i[sdtxh]f|__(eq|ne|gt|ge|lt|le|cmp|unord)[sdtxh]f2|__powi[sdtxh]f2|__(mul|div)[sdtxh]c3)")
+string(CONCAT helper_pattern
+  "^(__aeabi_([fd]|u?[il]2[fd]|h2f)|__(add|sub|mul|div|neg|abs)[sdtxh]f[23]"
+  "|__(extend|trunc)[sdtxh]f[sdtxh]f2|__fix(uns)?[sdtxh]f[sdt]i|__float(un)?[sdt]i[sdtxh]f"
+  "|__(eq|ne|gt|ge|lt|le|cmp|unord)[sdtxh]f2|__powi[sdtxh]f2|__(mul|div)[sdtxh]c3)")
 
 foreach(required NM CONTROL LIBRARIES)
   if(NOT ${required})
@@ -73,11 +76,13 @@ foreach(library IN LISTS LIBRARIES)
     endif()
   endforeach()
   list(LENGTH allowed allowed_count)
-  message(STATUS "${library}: ${member_count} objects, ${allowed_count} helper references in float_* reference objects")
+  message(STATUS "${library}: ${member_count} objects, ${allowed_count} helper references in "
+                 "float_* reference objects")
 endforeach()
 
 if(violations)
   string(REPLACE ";" "\n  " listed "${violations}")
-  message(FATAL_ERROR "soft-float helpers referenced by integer code (object: helper):\n  ${listed}")
+  message(FATAL_ERROR
+          "soft-float helpers referenced by integer code (object: helper):\n  ${listed}")
 endif()
 message(STATUS "no soft-float helper outside the float reference variants")

@@ -115,7 +115,10 @@ TEST_F(DualResolution, BuiltFromAModelHDrawsDepthAutoAndLOneStoredDepthCoarser) 
     const std::uint64_t version = renderer.status().view_version;
     if (step > 0) {  // a zoom step: L draws the new view once
       ASSERT_TRUE(renderer.waitUntil(
-          [&](const RendererStatus& s) { return s.latest.view_version == version && !s.coarse_busy; }, kPatience));
+          [&](const RendererStatus& s) {
+            return s.latest.view_version == version && !s.coarse_busy;
+          },
+          kPatience));
       FrameInfo shown;
       ASSERT_NE(renderer.acquireLatest(&shown), nullptr);
       if (shown.source == FrameSource::kCoarse) {
@@ -128,7 +131,8 @@ TEST_F(DualResolution, BuiltFromAModelHDrawsDepthAutoAndLOneStoredDepthCoarser) 
           return s.latest.source == FrameSource::kFine && s.latest.view_version == version;
         },
         kPatience));
-    EXPECT_EQ(renderer.status().latest.depth, model_->level(fine_index).depth) << "zoom step " << step;
+    EXPECT_EQ(renderer.status().latest.depth, model_->level(fine_index).depth)
+        << "zoom step " << step;
     // The zoom of the view just drawn, read before the zoom step: once the step is handled, L may
     // already have shown the new view (a loaded machine lets it finish before this thread reads).
     zoom = renderer.status().latest.view.zoom;
@@ -158,6 +162,87 @@ TEST_F(DualResolution, AfterReleaseTheFineFrameIsShownAndBothThreadsSleep) {
   EXPECT_EQ(renderer.status().latest.generation, generation) << "nothing was drawn while idle";
 }
 
+// Takes each new frame as the window would, checking the one it gives back and the new one.
+class FrontChecker {
+ public:
+  explicit FrontChecker(DualResolutionRenderer& renderer) : renderer_(renderer) {}
+
+  void check() {
+    if (renderer_.status().latest.generation == shown_info_.generation) return;  // nothing new
+    // The frame on screen is still exactly what its thread finished: nobody wrote into it. (It
+    // is ours only until the next acquireLatest, hence checked first.)
+    if (shown_ != nullptr) {
+      ASSERT_EQ(frameChecksum(*shown_), shown_info_.checksum) << "torn frame";
+    }
+    FrameInfo info;
+    const Framebuffer* latest = renderer_.acquireLatest(&info);
+    ASSERT_NE(latest, nullptr);
+    // The new one is complete, newer, and of the size it was started at.
+    ASSERT_EQ(frameChecksum(*latest), info.checksum) << "torn frame";
+    ASSERT_EQ(latest->width(), info.width);
+    ASSERT_EQ(latest->height(), info.height);
+    ASSERT_GT(info.generation, shown_info_.generation);
+    ++frames_checked_;
+    shown_ = latest;
+    shown_info_ = info;
+  }
+
+  const Framebuffer* shown() const { return shown_; }
+  const FrameInfo& shownInfo() const { return shown_info_; }
+  std::uint64_t framesChecked() const { return frames_checked_; }
+
+ private:
+  DualResolutionRenderer& renderer_;
+  const Framebuffer* shown_ = nullptr;
+  FrameInfo shown_info_;
+  std::uint64_t frames_checked_ = 0;
+};
+
+void releaseAll(DualResolutionRenderer& renderer, std::int64_t now_us) {
+  for (int key = 0; key < kNavigationKeyCount; ++key) {
+    renderer.handle({now_us, ViewEventKind::kRelease, static_cast<NavigationKey>(key)});
+  }
+}
+
+// Makes H draw until a press of `key` stops it: H's frames take `fine_budget_ms` (set to
+// `fine_ms` again afterwards).
+void forceAnAbort(DualResolutionRenderer& renderer, std::int64_t now_us, NavigationKey key,
+                  std::atomic<int>& fine_budget_ms, int fine_ms) {
+  releaseAll(renderer, now_us);
+  renderer.handle({now_us, ViewEventKind::kToggleFill});  // a new view, so a fine frame is due
+  const RendererStatus before = renderer.status();
+  fine_budget_ms.store(static_cast<int>(kPatience.count()));
+  renderer.handle({now_us, ViewEventKind::kTick});
+  ASSERT_TRUE(renderer.waitUntil(
+      [&](const RendererStatus& s) { return s.fine_started > before.fine_started && s.fine_busy; },
+      kPatience))
+      << "H did not start after a tick";
+  renderer.handle({now_us, ViewEventKind::kPress, key});
+  ASSERT_TRUE(renderer.waitUntil(
+      [&](const RendererStatus& s) { return s.fine_aborted > before.fine_aborted && !s.fine_busy; },
+      kPatience))
+      << "a press did not abort H";
+  fine_budget_ms.store(fine_ms);
+}
+
+// An event of a random kind, key and size at `now_us`.
+ViewEvent randomEvent(std::mt19937& random, std::int64_t now_us) {
+  constexpr ViewEventKind kKinds[] = {
+      ViewEventKind::kPress,   ViewEventKind::kPress,   ViewEventKind::kRelease,
+      ViewEventKind::kRelease, ViewEventKind::kTick,    ViewEventKind::kTick,
+      ViewEventKind::kZoomIn,  ViewEventKind::kZoomOut, ViewEventKind::kToggleFill,
+      ViewEventKind::kReset,   ViewEventKind::kResize};
+  ViewEvent event;
+  event.time_us = now_us;
+  event.kind = kKinds[std::uniform_int_distribution<std::size_t>(0, std::size(kKinds) - 1)(random)];
+  event.key = static_cast<NavigationKey>(
+      std::uniform_int_distribution<int>(0, kNavigationKeyCount - 1)(random));
+  // Few sizes, so that often only one side changes.
+  event.width = std::uniform_int_distribution<std::int32_t>(0, 1)(random) == 0 ? 64 : 320;
+  event.height = std::uniform_int_distribution<std::int32_t>(0, 1)(random) == 0 ? 48 : 240;
+  return event;
+}
+
 TEST_F(DualResolution, ThousandsOfRandomEventsLeaveNoDeadlockNoLostAndNoTornFrame) {
   // Resizes among the events: buffers are reallocated by their threads while the others draw,
   // hand over and show frames of another size.
@@ -169,79 +254,21 @@ TEST_F(DualResolution, ThousandsOfRandomEventsLeaveNoDeadlockNoLostAndNoTornFram
   DualResolutionRenderer renderer(*coarse_, *fine_, clock_, InteractiveConfig{},
                                   slowFine(fine_budget_ms));
   std::mt19937 random(12345);
-  constexpr ViewEventKind kKinds[] = {
-      ViewEventKind::kPress,   ViewEventKind::kPress,   ViewEventKind::kRelease,
-      ViewEventKind::kRelease, ViewEventKind::kTick,    ViewEventKind::kTick,
-      ViewEventKind::kZoomIn,  ViewEventKind::kZoomOut, ViewEventKind::kToggleFill,
-      ViewEventKind::kReset,   ViewEventKind::kResize};
   std::int64_t now_us = 0;
-  const Framebuffer* shown = nullptr;
-  FrameInfo shown_info;
-  std::uint64_t frames_checked = 0;
-  const auto checkFront = [&] {
-    if (renderer.status().latest.generation == shown_info.generation) return;  // nothing new
-    // The frame on screen is still exactly what its thread finished: nobody wrote into it. (It
-    // is ours only until the next acquireLatest, hence checked first.)
-    if (shown != nullptr) {
-      ASSERT_EQ(frameChecksum(*shown), shown_info.checksum) << "torn frame";
-    }
-    FrameInfo info;
-    const Framebuffer* latest = renderer.acquireLatest(&info);
-    ASSERT_NE(latest, nullptr);
-    // The new one is complete, newer, and of the size it was started at.
-    ASSERT_EQ(frameChecksum(*latest), info.checksum) << "torn frame";
-    ASSERT_EQ(latest->width(), info.width);
-    ASSERT_EQ(latest->height(), info.height);
-    ASSERT_GT(info.generation, shown_info.generation);
-    ++frames_checked;
-    shown = latest;
-    shown_info = info;
-  };
-  const auto releaseAll = [&] {
-    for (int key = 0; key < kNavigationKeyCount; ++key) {
-      renderer.handle({now_us, ViewEventKind::kRelease, static_cast<NavigationKey>(key)});
-    }
-  };
-  const auto forceAnAbort = [&](NavigationKey key) {
-    releaseAll();
-    renderer.handle({now_us, ViewEventKind::kToggleFill});  // a new view, so a fine frame is due
-    const RendererStatus before = renderer.status();
-    fine_budget_ms->store(static_cast<int>(kPatience.count()));
-    renderer.handle({now_us, ViewEventKind::kTick});
-    ASSERT_TRUE(renderer.waitUntil(
-        [&](const RendererStatus& s) { return s.fine_started > before.fine_started && s.fine_busy; },
-        kPatience))
-        << "H did not start after a tick";
-    renderer.handle({now_us, ViewEventKind::kPress, key});
-    ASSERT_TRUE(renderer.waitUntil(
-        [&](const RendererStatus& s) {
-          return s.fine_aborted > before.fine_aborted && !s.fine_busy;
-        },
-        kPatience))
-        << "a press did not abort H";
-    fine_budget_ms->store(kFineMs);
-  };
+  FrontChecker front(renderer);
   for (int i = 0; i < 2000; ++i) {
     if (i % 250 == 125) {
-      forceAnAbort(static_cast<NavigationKey>(i % kNavigationKeyCount));
+      forceAnAbort(renderer, now_us, static_cast<NavigationKey>(i % kNavigationKeyCount),
+                   *fine_budget_ms, kFineMs);
       if (HasFatalFailure()) return;
     }
     now_us += std::uniform_int_distribution<std::int64_t>(0, 20'000)(random);
     clock_.set(now_us);
-    ViewEvent event;
-    event.time_us = now_us;
-    event.kind =
-        kKinds[std::uniform_int_distribution<std::size_t>(0, std::size(kKinds) - 1)(random)];
-    event.key = static_cast<NavigationKey>(
-        std::uniform_int_distribution<int>(0, kNavigationKeyCount - 1)(random));
-    // Few sizes, so that often only one side changes.
-    event.width = std::uniform_int_distribution<std::int32_t>(0, 1)(random) == 0 ? 64 : 320;
-    event.height = std::uniform_int_distribution<std::int32_t>(0, 1)(random) == 0 ? 48 : 240;
-    renderer.handle(event);
-    checkFront();
+    renderer.handle(randomEvent(random, now_us));
+    front.check();
     if (i % 16 == 0) std::this_thread::sleep_for(milliseconds(1));
   }
-  releaseAll();
+  releaseAll(renderer, now_us);
   renderer.handle({now_us + kTickPeriodMicroseconds, ViewEventKind::kTick});
   const std::uint64_t version = renderer.status().view_version;
   ASSERT_TRUE(renderer.waitUntil(
@@ -251,15 +278,15 @@ TEST_F(DualResolution, ThousandsOfRandomEventsLeaveNoDeadlockNoLostAndNoTornFram
       },
       kPatience))
       << "deadlock, or the final fine frame was lost";
-  checkFront();
-  ASSERT_NE(shown, nullptr);
-  EXPECT_EQ(frameChecksum(*shown), shown_info.checksum);
-  EXPECT_EQ(shown_info.source, FrameSource::kFine);
-  EXPECT_EQ(shown_info.view_version, version);
+  front.check();
+  ASSERT_NE(front.shown(), nullptr);
+  EXPECT_EQ(frameChecksum(*front.shown()), front.shownInfo().checksum);
+  EXPECT_EQ(front.shownInfo().source, FrameSource::kFine);
+  EXPECT_EQ(front.shownInfo().view_version, version);
   const RendererStatus status = renderer.status();
   EXPECT_GE(status.fine_started, status.fine_shown + status.fine_aborted);
   EXPECT_GE(status.fine_aborted, 8u) << "at least the forced aborts";
-  EXPECT_GT(frames_checked, 2u);
+  EXPECT_GT(front.framesChecked(), 2u);
 }
 
 }  // namespace

@@ -2,8 +2,8 @@
 # configuration with every column and no PSNR above its palette ceiling, the markdown tables with
 # the targets, the pictures, and nothing on stderr.
 file(REMOVE_RECURSE ${OUT})
-execute_process(COMMAND ${TRADEOFF} ${SCAN} --sweep-views --sizes 64x48,160x120 --zooms 1,4 --rounds 1
-                        --pictures -o ${OUT}
+execute_process(COMMAND ${TRADEOFF} ${SCAN} --sweep-views --sizes 64x48,160x120 --zooms 1,4
+                        --rounds 1 --pictures -o ${OUT}
                 RESULT_VARIABLE status ERROR_VARIABLE errors)
 if(NOT status EQUAL 0)
   message(FATAL_ERROR "octopoint-tradeoff failed (${status}): ${errors}")
@@ -27,11 +27,13 @@ foreach(line IN LISTS lines)
   list(GET fields 11 psnr)
   list(GET fields 13 ceiling)
   if(NOT psnr STREQUAL "psnr_db" AND psnr GREATER ceiling)
-    message(FATAL_ERROR "sweep.csv line '${line}': PSNR ${psnr} above its palette ceiling ${ceiling}")
+    message(FATAL_ERROR
+            "sweep.csv line '${line}': PSNR ${psnr} above its palette ceiling ${ceiling}")
   endif()
 endforeach()
 file(READ ${OUT}/sweep.md page)
-foreach(expected "| 160x120 | 4 |" "Targets (issue 11)" "Empty share of the silhouette" "Palette ceiling")
+foreach(expected "| 160x120 | 4 |" "Targets (issue 11)" "Empty share of the silhouette"
+        "Palette ceiling")
   string(FIND "${page}" "${expected}" at)
   if(at EQUAL -1)
     message(FATAL_ERROR "sweep.md lacks '${expected}'")

@@ -13,8 +13,12 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <limits>
 #include <random>
+#include <string>
+#include <utility>
+#include <vector>
 
 #include "codegen/model_writer.h"
 #include "codegen/point_source.h"
@@ -253,22 +257,16 @@ TEST_F(LasReaderTest, IntensityModelIsTheSameWhateverTheBudgetAndThreadCount) {
   }
 }
 
-// One damaged header per row: the byte offset, what to write there, and the message expected.
-TEST_F(LasReaderTest, HeadersThatLieAreRefusedWithOneLine) {
-  LasLayout layout;
-  layout.format = 7;
-  layout.vlrs = 2;
-  layout.evlrs = 2;
-  const std::string good = readAll(write("good.las", layout, 1000));
-  const std::uint64_t point_offset = 375 + 2 * (54 + 16);
-  const std::uint64_t points_end = point_offset + 1000 * 36;
-  struct Damage {
-    const char* name;
-    std::function<void(std::string&)> apply;
-    const char* expected;
-  };
-  const double nan = std::numeric_limits<double>::quiet_NaN();
-  const std::vector<Damage> damages = {
+// A damaged header: what to write where, and the message expected.
+struct Damage {
+  const char* name;
+  std::function<void(std::string&)> apply;
+  const char* expected;
+};
+
+// Damage to the signature, the version, the compression and the point records' format and place.
+std::vector<Damage> formatDamages() {
+  return {
       {"signature", [](std::string& b) { b[0] = 'X'; }, "not a LAS file"},
       {"version 2.0",
        [](std::string& b) {
@@ -292,6 +290,14 @@ TEST_F(LasReaderTest, HeadersThatLieAreRefusedWithOneLine) {
       {"points past end",
        [](std::string& b) { patch<std::uint32_t>(b, las::kPointOffset, 4000000000u); },
        "truncated"},
+  };
+}
+
+// Damage to the (E)VLRs, the point count, the scales and offsets; `points_end`: the offset after
+// the last point record.
+std::vector<Damage> extentDamages(std::uint64_t points_end) {
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  return {
       {"many vlrs", [](std::string& b) { patch<std::uint32_t>(b, las::kVlrCount, 70000); },
        "70000 VLRs, but only"},
       {"long vlr", [](std::string& b) { patch<std::uint16_t>(b, 375 + 20, 60000); },
@@ -346,13 +352,24 @@ TEST_F(LasReaderTest, HeadersThatLieAreRefusedWithOneLine) {
        },
        "between the last of the 999 points and the first EVLR"},
   };
+}
+
+TEST_F(LasReaderTest, HeadersThatLieAreRefusedWithOneLine) {
+  LasLayout layout;
+  layout.format = 7;
+  layout.vlrs = 2;
+  layout.evlrs = 2;
+  const std::string good = readAll(write("good.las", layout, 1000));
+  const std::uint64_t point_offset = 375 + 2 * (54 + 16);
+  const std::uint64_t points_end = point_offset + 1000 * 36;
+  std::vector<Damage> damages = formatDamages();
+  for (Damage& damage : extentDamages(points_end)) damages.push_back(std::move(damage));
   for (const Damage& damage : damages) {
     std::string bytes = good;
     damage.apply(bytes);
     SCOPED_TRACE(damage.name);
     expectRefused(writeBytes("damaged.las", bytes), damage.expected);
   }
-  (void)point_offset;
 }
 
 TEST_F(LasReaderTest, EveryTruncationIsRefused) {

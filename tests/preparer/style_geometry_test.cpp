@@ -17,9 +17,9 @@
 #include "codegen/model_writer.h"
 #include "codegen/prepare.h"
 #include "octopoint/fixed.h"
-#include "octopoint/styles.h"
 #include "octopoint/framebuffer.h"
 #include "octopoint/render.h"
+#include "octopoint/styles.h"
 #include "tests/support/synthetic_surfaces.h"
 
 namespace octopoint {
@@ -146,6 +146,110 @@ Vec3d nearestCorner(const Camera& view) {
   return best;
 }
 
+using Segment = std::array<std::array<double, 2>, 2>;  // two ends on screen, in pixels
+
+// Where the cube's corners lie in the model cube: the preparer fits the model cube around the
+// points' bounding box, which the noise makes larger than the cube (by about 2.5% here), so a
+// corner (+-0.5 from the centre in cube edges) is at +-0.5 / fit.edge, not +-0.5, of it: at the
+// outline's corners, 32 to 45 pixels from the middle of the picture, about a pixel further in.
+struct CubeInModel {
+  Vec3d centre;
+  prepare::CubeFit fit;
+
+  Vec3d operator()(const Vec3d& corner) const {
+    Vec3d p{};
+    for (std::size_t axis = 0; axis < 3; ++axis)
+      p[axis] = (centre[axis] + corner[axis] - fit.origin[axis]) / fit.edge - 0.5;
+    return p;
+  }
+};
+
+// The model stores the faces as voxels of 1 / 64 of the model cube, drawn at their centres: a
+// face lies up to half a voxel from where its voxels are drawn (0.38 voxel here). In voxels, one
+// voxel a pixel in these views.
+double faceOffset(const CubeInModel& inModelCube) {
+  double face_offset = 0;
+  for (const double side : {-0.5, 0.5}) {
+    for (std::size_t axis = 0; axis < 3; ++axis) {
+      const double voxels = (inModelCube({side, side, side})[axis] + 0.5) * (1 << kDepth);
+      face_offset = std::max(face_offset, std::fabs(voxels - (std::floor(voxels) + 0.5)));
+    }
+  }
+  return face_offset;
+}
+
+// All twelve edges of the cube as `view` shows them.
+std::vector<Segment> projectedEdges(const Camera& view, const CubeInModel& inModelCube) {
+  std::vector<Segment> all_edges;
+  for (int k = 0; k < 8; ++k) {
+    const Vec3d a = {k & 4 ? 0.5 : -0.5, k & 2 ? 0.5 : -0.5, k & 1 ? 0.5 : -0.5};
+    for (std::size_t axis = 0; axis < 3; ++axis) {
+      if (a[axis] > 0) continue;
+      Vec3d b = a;
+      b[axis] = 0.5;
+      all_edges.push_back({project(view, inModelCube(a)), project(view, inModelCube(b))});
+    }
+  }
+  return all_edges;
+}
+
+// The target: every crease pixel within one pixel of an edge, i.e. the edge crosses the 3 x 3
+// pixels around it (1.5 pixels, Chebyshev). Measured (docs/styles.md): 829 of the 830 crease
+// pixels of the four views are (farthest 1.48), one is 1.51 pixels from its edge: a pair of pixels
+// at equal depth across the edge, whose crease the left one draws, and the voxel on the edge took
+// the other face's normal. Faces lie up to `face_offset` voxels (here pixels) from where their
+// voxels are drawn; so the test holds the target to within that: none beyond 1.5 + face_offset
+// pixels, at most one pixel a view beyond 1.5. (Before the projection took the preparer's cube
+// fit, 0.5 to 1% of them seemed 1.51 to 2.05 pixels off, at the outline's corners: the cube was
+// drawn 2.7% smaller than the test assumed.)
+void expectCreasesOnEdges(const std::vector<std::array<double, 2>>& creases,
+                          const std::vector<Segment>& all_edges, double face_offset, double yaw) {
+  std::size_t beyond_one = 0, beyond_tolerance = 0;
+  double farthest = 0;
+  for (const auto& p : creases) {
+    double nearest = 1e9;
+    for (const auto& e : all_edges) nearest = std::min(nearest, pixelsToSegment(p, e[0], e[1]));
+    if (nearest > 1.5) {
+      std::printf("  crease pixel (%.1f, %.1f): %.3f pixels from the nearest edge\n", p[0], p[1],
+                  nearest);
+    }
+    beyond_one += nearest > 1.5;
+    beyond_tolerance += nearest > 1.5 + face_offset;
+    farthest = std::max(farthest, nearest);
+  }
+  std::printf(
+      "yaw %4.0f: %zu crease pixels, %zu beyond one pixel of an edge, farthest %.2f pixels "
+      "(Chebyshev)\n",
+      yaw, creases.size(), beyond_one, farthest);
+  EXPECT_LE(beyond_one, 1u) << "yaw " << yaw << ": " << beyond_one << " of " << creases.size()
+                            << " crease pixels more than one pixel off the edges";
+  EXPECT_EQ(beyond_tolerance, 0u) << "yaw " << yaw << ": " << beyond_tolerance
+                                  << " crease pixels more than 1.5 + " << face_offset
+                                  << " pixels off the edges";
+}
+
+// And every edge is drawn: each point of its inner 90% lies within the 3 x 3 pixels around a
+// crease pixel.
+void expectEdgesDrawn(const std::vector<std::array<double, 2>>& creases,
+                      const std::array<Segment, 3>& edges, double yaw) {
+  for (std::size_t axis = 0; axis < 3; ++axis) {
+    const auto& [a, b] = edges[axis];
+    const double length = std::hypot(b[0] - a[0], b[1] - a[1]);
+    std::size_t samples = 0, missed = 0;
+    for (double t = 0.05; t <= 0.95; t += 1.0 / length, ++samples) {
+      const std::array<double, 2> q = {a[0] + t * (b[0] - a[0]), a[1] + t * (b[1] - a[1])};
+      bool found = false;
+      for (const auto& p : creases)
+        found = found || std::max(std::fabs(p[0] - q[0]), std::fabs(p[1] - q[1])) <= 1.5;
+      if (!found) ++missed;
+    }
+    std::printf("yaw %4.0f edge %zu: %zu of %zu points along it drawn\n", yaw, axis,
+                samples - missed, samples);
+    EXPECT_EQ(missed, 0u) << "yaw " << yaw << ", edge along axis " << axis << ": " << missed
+                          << " of " << samples << " points have no crease pixel within 1.5 pixels";
+  }
+}
+
 TEST(StyleGeometry, CreasesRunAlongAllTwelveEdgesOfACubeAndNowhereElse) {
   // A cube of edge 1 at 2 units from the sensor, 12,000 points a face, noise a fifth of a voxel
   // (depth 6).
@@ -153,29 +257,11 @@ TEST(StyleGeometry, CreasesRunAlongAllTwelveEdgesOfACubeAndNowhereElse) {
   const prepare::Scan scan = testing::pointSampledCube(centre, 1.0, 12000, 0.2 / 64, 7);
   const Prepared cube = prepareWithNormals(scan);
   ASSERT_TRUE(cube.model.has_value());
-  // Where the cube's corners lie in the model cube: the preparer fits the model cube around the
-  // points' bounding box, which the noise makes larger than the cube (by about 2.5% here), so a
-  // corner (+-0.5 from the centre in cube edges) is at +-0.5 / fit.edge, not +-0.5, of it: at the
-  // outline's corners, 32 to 45 pixels from the middle of the picture, about a pixel further in.
-  const prepare::CubeFit fit = prepare::fitCube(scan.positions, "cube");
-  const auto inModelCube = [&](const Vec3d& corner) {
-    Vec3d p{};
-    for (std::size_t axis = 0; axis < 3; ++axis)
-      p[axis] = (centre[axis] + corner[axis] - fit.origin[axis]) / fit.edge - 0.5;
-    return p;
-  };
-  // The model stores the faces as voxels of 1 / 64 of the model cube, drawn at their centres: a
-  // face lies up to half a voxel from where its voxels are drawn (0.38 voxel here).
-  double face_offset = 0;  // in voxels, one voxel a pixel in these views
-  for (const double side : {-0.5, 0.5}) {
-    for (std::size_t axis = 0; axis < 3; ++axis) {
-      const double voxels = (inModelCube({side, side, side})[axis] + 0.5) * (1 << kDepth);
-      face_offset = std::max(face_offset, std::fabs(voxels - (std::floor(voxels) + 0.5)));
-    }
-  }
+  const CubeInModel inModelCube{centre, prepare::fitCube(scan.positions, "cube")};
+  const double face_offset = faceOffset(inModelCube);
   std::printf(
       "model cube edge %.4f (cube edge 1); faces up to %.2f voxel from their voxels' centres\n",
-      fit.edge, face_offset);
+      inModelCube.fit.edge, face_offset);
   // Four views, each toward a corner of one tetrahedron of the cube's corners: each shows the three
   // edges meeting at its corner as creases (the others are its outline), twelve in all.
   const double tilt = std::atan(1 / std::sqrt(2.0)) * 180 / 3.14159265358979;
@@ -191,72 +277,14 @@ TEST(StyleGeometry, CreasesRunAlongAllTwelveEdgesOfACubeAndNowhereElse) {
     const std::vector<std::array<double, 2>> creases = creasePixels(picture);
     // The three edges at the corner show as creases; the other nine are the outline, where the
     // faces behind meet the ones in front, and may show creases beside the silhouette too.
-    std::array<std::array<std::array<double, 2>, 2>, 3> edges{};
+    std::array<Segment, 3> edges{};
     for (std::size_t axis = 0; axis < 3; ++axis) {
       Vec3d other = corner;
       other[axis] = -other[axis];
       edges[axis] = {project(view, inModelCube(corner)), project(view, inModelCube(other))};
     }
-    std::vector<std::array<std::array<double, 2>, 2>> all_edges;
-    for (int k = 0; k < 8; ++k) {
-      const Vec3d a = {k & 4 ? 0.5 : -0.5, k & 2 ? 0.5 : -0.5, k & 1 ? 0.5 : -0.5};
-      for (std::size_t axis = 0; axis < 3; ++axis) {
-        if (a[axis] > 0) continue;
-        Vec3d b = a;
-        b[axis] = 0.5;
-        all_edges.push_back({project(view, inModelCube(a)), project(view, inModelCube(b))});
-      }
-    }
-    // The target: every crease pixel within one pixel of an edge, i.e. the edge crosses
-    // the 3 x 3 pixels around it (1.5 pixels, Chebyshev). Measured (docs/styles.md): 829 of the
-    // 830 crease pixels of the four views are (farthest 1.48), one is 1.51 pixels from its edge:
-    // a pair of pixels at equal depth across the edge, whose crease the left one draws, and the
-    // voxel on the edge took the other face's normal. Faces lie up to `face_offset` voxels (here
-    // pixels) from where their voxels are drawn; so the test holds the target to within that:
-    // none beyond 1.5 + face_offset pixels, at most one pixel a view beyond 1.5. (Before the
-    // projection took the preparer's cube fit, 0.5 to 1% of them seemed 1.51 to 2.05 pixels off,
-    // at the outline's corners: the cube was drawn 2.7% smaller than the test assumed.)
-    std::size_t beyond_one = 0, beyond_tolerance = 0;
-    double farthest = 0;
-    for (const auto& p : creases) {
-      double nearest = 1e9;
-      for (const auto& e : all_edges) nearest = std::min(nearest, pixelsToSegment(p, e[0], e[1]));
-      if (nearest > 1.5) {
-        std::printf("  crease pixel (%.1f, %.1f): %.3f pixels from the nearest edge\n", p[0], p[1],
-                    nearest);
-      }
-      beyond_one += nearest > 1.5;
-      beyond_tolerance += nearest > 1.5 + face_offset;
-      farthest = std::max(farthest, nearest);
-    }
-    std::printf(
-        "yaw %4.0f: %zu crease pixels, %zu beyond one pixel of an edge, farthest %.2f pixels "
-        "(Chebyshev)\n",
-        yaw, creases.size(), beyond_one, farthest);
-    EXPECT_LE(beyond_one, 1u) << "yaw " << yaw << ": " << beyond_one << " of " << creases.size()
-                              << " crease pixels more than one pixel off the edges";
-    EXPECT_EQ(beyond_tolerance, 0u)
-        << "yaw " << yaw << ": " << beyond_tolerance << " crease pixels more than 1.5 + "
-        << face_offset << " pixels off the edges";
-    // And every edge is drawn: each point of its inner 90% lies within the 3 x 3 pixels around a
-    // crease pixel.
-    for (std::size_t axis = 0; axis < 3; ++axis) {
-      const auto& [a, b] = edges[axis];
-      const double length = std::hypot(b[0] - a[0], b[1] - a[1]);
-      std::size_t samples = 0, missed = 0;
-      for (double t = 0.05; t <= 0.95; t += 1.0 / length, ++samples) {
-        const std::array<double, 2> q = {a[0] + t * (b[0] - a[0]), a[1] + t * (b[1] - a[1])};
-        bool found = false;
-        for (const auto& p : creases)
-          found = found || std::max(std::fabs(p[0] - q[0]), std::fabs(p[1] - q[1])) <= 1.5;
-        if (!found) ++missed;
-      }
-      std::printf("yaw %4.0f edge %zu: %zu of %zu points along it drawn\n", yaw, axis,
-                  samples - missed, samples);
-      EXPECT_EQ(missed, 0u) << "yaw " << yaw << ", edge along axis " << axis << ": " << missed
-                            << " of " << samples
-                            << " points have no crease pixel within 1.5 pixels";
-    }
+    expectCreasesOnEdges(creases, projectedEdges(view, inModelCube), face_offset, yaw);
+    expectEdgesDrawn(creases, edges, yaw);
   }
   // The four corners are one tetrahedron: every cube edge joins one of them to a neighbour.
   for (std::size_t i = 0; i < seen_corners.size(); ++i) {

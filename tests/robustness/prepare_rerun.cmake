@@ -31,6 +31,7 @@ run(${PREPARE} ${SCAN} -o ${OUT} --name m --depths 5,6 --single-source)
 expect_files(${other} m.h m.cpp m.oct)
 file(READ ${OUT}/m_depth9.cpp notes)
 file(READ ${OUT}/m_depth.cpp descriptor)
-if(NOT notes STREQUAL "// my notes, not generated\n" OR NOT descriptor MATCHES "extern const ::octopoint::EmbeddedModel m_depth ")
+if(NOT notes STREQUAL "// my notes, not generated\n" OR NOT descriptor MATCHES
+   "extern const ::octopoint::EmbeddedModel m_depth ")
   message(FATAL_ERROR "a file that is not one of m's level sources was changed")
 endif()

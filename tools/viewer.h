@@ -1,0 +1,98 @@
+// The window of octopoint-view: an SDL2 window that drives the dual-resolution renderer (arrow
+// keys turn the view, the style keys restyle it) and shows its newest frame with an overlay.
+
+#pragma once
+
+#include <cstdint>
+#include <functional>
+#include <memory>
+#include <opencv2/core.hpp>
+#include <optional>
+#include <span>
+#include <string>
+#include <utility>
+
+#include "octopoint/http.h"
+#include "octopoint/interactive.h"
+#include "octopoint/model.h"
+#include "octopoint/styles.h"
+#include "tools/view_keys.h"
+#include "tools/view_overlay.h"
+#include "tools/view_window.h"
+
+namespace octopoint {
+
+// The frame's sides, in frame pixels (a window pixel is --scale of them).
+constexpr int kMaxFrameSide = 4096;
+constexpr int kMinFrameSide = 16;
+
+// octopoint-view's command line.
+struct ViewerOptions {
+  std::string model_name;
+  std::string model_file;
+  std::string url;
+  int width = 640;
+  int height = 480;
+  int scale = 1;
+  int degrees_per_second = 90;
+  std::uint64_t point_budget = 0;  // with --url; 0: none
+};
+
+class Viewer {
+ public:
+  // Shows `model`, or, when `model` is null, the chunked model `stream` brings in.
+  Viewer(const ViewerOptions& options, const ModelView* model, net::ModelStream* stream);
+  // From the stream's thread: more of the model arrived.
+  void contentChanged();
+  // Shows the window until the user quits.
+  void run();
+  // The key table; `viewer` may be null when only the help text is wanted.
+  static KeyBindings keyTable(Viewer* viewer);
+
+ private:
+  void handle(const WindowEvent& event);
+  void handleKey(const WindowEvent& event);
+  void send(ViewEventKind kind, std::int64_t now_us) { renderer_->handle({now_us, kind}); }
+  void resizeFrame(int window_width, int window_height);
+  // Puts the newest frame on the screen when it, the window or the overlay's text changed.
+  void show();
+  void save();
+  void defaultOverlay(OverlayLines& lines) const;
+  void streamOverlay(OverlayLines& lines);
+  // Tells the stream which view to fetch for: the one on screen, as it changes.
+  void followView();
+  // The style keys: the next style, or the light turned by a step (docs/styles.md).
+  void nextStyle();
+  void moveLight(int azimuth_steps, int elevation_steps);
+  void applyStyle(const StyleOptions& options);
+  void resolveStyled(const Framebuffer& frame, const FrameInfo& info, std::span<std::uint8_t> rgb);
+
+  const ViewerOptions options_;
+  const ModelView* model_;
+  net::ModelStream* stream_;
+  const SteadyClock clock_;
+  ViewWindow window_;  // before renderer_: its threads wake the window until they are joined
+  std::unique_ptr<DualResolutionRenderer> renderer_;
+  KeyBindings keys_;
+  Overlay overlay_;
+  std::optional<FrameStyler> styler_;  // none for a stream: the styles need a model with normals
+  // Turns a frame into RGB888 for the screen and for `s` (default: its palette colours).
+  std::function<void(const Framebuffer&, const FrameInfo&, std::span<std::uint8_t>)> resolve_;
+
+  bool quit_ = false;
+  bool resolve_again_ = false;  // the frame on screen must be turned into RGB again
+  bool compose_again_ = true;   // the window must be drawn again
+  std::optional<std::pair<int, int>> pending_window_size_;
+  FrameInfo shown_info_;  // of the frame on screen (generation 0: none yet)
+  cv::Mat frame_rgb_;     // the frame on screen in RGB, frame size
+  cv::Mat scaled_rgb_;    // the same scaled by --scale
+  cv::Mat window_rgb_;    // what the window shows, window size
+  OverlayLines shown_lines_;
+  std::uint64_t frames_shown_ = 0;
+  RateCounter drawn_rate_;
+  RateCounter shown_rate_;
+  int saved_ = 0;
+  std::optional<Camera> followed_view_;  // the view the stream fetches for
+};
+
+}  // namespace octopoint
