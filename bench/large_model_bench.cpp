@@ -1,6 +1,6 @@
 // A large model's frame cost follows the screen. At 1280x960, the large chunked model
-// (>= 10 million voxels, lab/scripts/measure-large makes it) drawn complete by the progressive model
-// at depth auto, side by side in one binary, against
+// (>= 10 million voxels, lab/scripts/measure-large makes it) drawn complete by the progressive
+// model at depth auto, side by side in one binary, against
 //  - the same scene prepared with depths up to 8 (--large-depth8, chunked, and --large-depth8-flat,
 //    a single-file model): the fair comparison, the same pixels covered by a depth-8 model;
 //  - the default model (finest depth 8), compiled in and as a chunked file (--default-chunked):
@@ -21,9 +21,9 @@
 #include <vector>
 
 #include "octopoint/models.h"
-#include "renderer/level_of_detail.h"
 #include "octopoint/progressive.h"
 #include "octopoint/render.h"
+#include "renderer/level_of_detail.h"
 
 namespace {
 
@@ -107,7 +107,8 @@ void drawProgressive(benchmark::State& state, const std::string& path, std::uint
   model->setPointBudget(budget);
   for (auto _ : state) {
     frame.clear();
-    if (!model->draw(camera, defaultVariant(), frame, &stats)) state.SkipWithError("camera refused");
+    if (!model->draw(camera, defaultVariant(), frame, &stats))
+      state.SkipWithError("camera refused");
     benchmark::DoNotOptimize(frame.pixelData());
   }
   state.counters["depth"] = stats.drawn_depth;
@@ -153,7 +154,8 @@ void drawLevelModel(benchmark::State& state, const ModelView& model) {
   Framebuffer frame(camera.width, camera.height);
   for (auto _ : state) {
     frame.clear();
-    if (!renderLevel(defaultVariant(), *level, setup, frame)) state.SkipWithError("renderLevel refused");
+    if (!renderLevel(defaultVariant(), *level, setup, frame))
+      state.SkipWithError("renderLevel refused");
     benchmark::DoNotOptimize(frame.pixelData());
   }
   state.counters["depth"] = level->depth;

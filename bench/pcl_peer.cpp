@@ -10,7 +10,8 @@
 
 namespace octopoint::bench {
 
-PclPeer::PclPeer(const ModelView& model, const LevelView& level, std::int32_t width, std::int32_t height)
+PclPeer::PclPeer(const ModelView& model, const LevelView& level, std::int32_t width,
+                 std::int32_t height)
     : depth_(level.depth),
       width_(width),
       height_(height),
@@ -21,8 +22,8 @@ PclPeer::PclPeer(const ModelView& model, const LevelView& level, std::int32_t wi
   Camera identity;
   identity.width = identity.height = 1 << level.depth;
   FrameSetup setup;
-  // The identity camera on the level's own grid fits any depth up to kMaxViewportSide (2^13) a side;
-  // a deeper level (refused) leaves the peer's cloud empty.
+  // The identity camera on the level's own grid fits any depth up to kMaxViewportSide (2^13) a
+  // side; a deeper level (refused) leaves the peer's cloud empty.
   if (buildFrameSetup(identity, level.depth, kDefaultFractionBits, &setup) != CameraError::kNone)
     return;
   const float unit = 1.0f / static_cast<float>(1 << setup.fraction_bits);
@@ -41,14 +42,19 @@ PclPeer::PclPeer(const ModelView& model, const LevelView& level, std::int32_t wi
 void PclPeer::render(const Camera& camera) {
   constexpr float kRadiansPerUnit = 6.28318530718f / 65536.0f;
   const float scale = static_cast<float>(camera.zoom.raw()) / 65536.0f *
-                      static_cast<float>(std::min(width_, height_)) / static_cast<float>(1 << depth_);
+                      static_cast<float>(std::min(width_, height_)) /
+                      static_cast<float>(1 << depth_);
   Eigen::Affine3f transform = Eigen::Affine3f::Identity();
-  transform.translate(Eigen::Vector3f(static_cast<float>(width_) / 2 + static_cast<float>(camera.pan_x_px),
-                                      static_cast<float>(height_) / 2 + static_cast<float>(camera.pan_y_px), 0));
+  transform.translate(
+      Eigen::Vector3f(static_cast<float>(width_) / 2 + static_cast<float>(camera.pan_x_px),
+                      static_cast<float>(height_) / 2 + static_cast<float>(camera.pan_y_px), 0));
   transform.scale(scale);
-  transform.rotate(Eigen::AngleAxisf(static_cast<float>(camera.roll.turns16()) * kRadiansPerUnit, Eigen::Vector3f::UnitZ()));
-  transform.rotate(Eigen::AngleAxisf(static_cast<float>(camera.pitch.turns16()) * kRadiansPerUnit, Eigen::Vector3f::UnitX()));
-  transform.rotate(Eigen::AngleAxisf(static_cast<float>(camera.yaw.turns16()) * kRadiansPerUnit, Eigen::Vector3f::UnitY()));
+  transform.rotate(Eigen::AngleAxisf(static_cast<float>(camera.roll.turns16()) * kRadiansPerUnit,
+                                     Eigen::Vector3f::UnitZ()));
+  transform.rotate(Eigen::AngleAxisf(static_cast<float>(camera.pitch.turns16()) * kRadiansPerUnit,
+                                     Eigen::Vector3f::UnitX()));
+  transform.rotate(Eigen::AngleAxisf(static_cast<float>(camera.yaw.turns16()) * kRadiansPerUnit,
+                                     Eigen::Vector3f::UnitY()));
   pcl::transformPointCloud(cloud_, transformed_, transform);
 
   std::fill(depth_buffer_.begin(), depth_buffer_.end(), std::numeric_limits<float>::infinity());

@@ -14,8 +14,8 @@
 #include <random>
 
 #include "codegen/model_writer.h"
-#include "codegen/prepare.h"
 #include "codegen/point_source.h"
+#include "codegen/prepare.h"
 #include "codegen/scan_loader.h"
 #include "codegen/streamed_prepare.h"
 #include "tests/support/landscape.h"
@@ -48,11 +48,14 @@ void BM_PrepareRealScan(benchmark::State& state) {
     benchmark::DoNotOptimize(prepareAndEmit(scan, path.c_str()));
   }
   state.counters["points"] = static_cast<double>(points);
-  state.counters["ns_per_point"] = benchmark::Counter(
-      static_cast<double>(points) * static_cast<double>(state.iterations()),
-      benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
+  state.counters["ns_per_point"] =
+      benchmark::Counter(static_cast<double>(points) * static_cast<double>(state.iterations()),
+                         benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
 }
-BENCHMARK(BM_PrepareRealScan)->Unit(benchmark::kMillisecond)->MeasureProcessCPUTime()->UseRealTime();
+BENCHMARK(BM_PrepareRealScan)
+    ->Unit(benchmark::kMillisecond)
+    ->MeasureProcessCPUTime()
+    ->UseRealTime();
 
 // A scanned head-sized blob: points on a bumpy sphere with range noise, coloured by position, like
 // an all-around scan of an object (every voxel of its shell is hit by many points).
@@ -69,8 +72,9 @@ const Scan& syntheticScan(std::size_t count) {
     const float x = normal(random), y = normal(random), z = normal(random);
     const float length = std::sqrt(x * x + y * y + z * z);
     if (length < 1e-6f) continue;
-    const float radius = 0.12f * (1.0f + 0.1f * std::sin(9 * x / length) * std::cos(7 * y / length)) +
-                         0.0005f * normal(random);
+    const float radius =
+        0.12f * (1.0f + 0.1f * std::sin(9 * x / length) * std::cos(7 * y / length)) +
+        0.0005f * normal(random);
     scan.positions.push_back({radius * x / length, radius * y / length, radius * z / length});
     scan.colours.push_back({static_cast<std::uint8_t>(128 + 120 * x / length),
                             static_cast<std::uint8_t>(128 + 120 * y / length),
@@ -89,8 +93,13 @@ void BM_PrepareSyntheticScan(benchmark::State& state) {
       benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
 }
 BENCHMARK(BM_PrepareSyntheticScan)
-    ->Arg(1'000'000)->Arg(3'000'000)->Arg(10'000'000)
-    ->Unit(benchmark::kMillisecond)->MeasureProcessCPUTime()->UseRealTime()->Iterations(2)
+    ->Arg(1'000'000)
+    ->Arg(3'000'000)
+    ->Arg(10'000'000)
+    ->Unit(benchmark::kMillisecond)
+    ->MeasureProcessCPUTime()
+    ->UseRealTime()
+    ->Iterations(2)
     ->Complexity(benchmark::oN);
 
 // The streamed preparer from a LAS file of the landscape (tests/support/landscape.h) to a depth-12

@@ -1,4 +1,5 @@
-// Every benchmark program registers its cases here; bench/bench_main.cpp is the one main() they share.
+// Every benchmark program registers its cases here; bench/bench_main.cpp is the one main() they
+// share.
 #pragma once
 
 namespace octopoint {

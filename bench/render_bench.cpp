@@ -10,9 +10,9 @@
 
 #include "bench/pcl_peer.h"
 #include "bench/register_benchmarks.h"
-#include "octopoint/models.h"
 #include "octopoint/camera.h"
 #include "octopoint/framebuffer.h"
+#include "octopoint/models.h"
 #include "octopoint/render.h"
 
 namespace octopoint {
@@ -44,7 +44,8 @@ void loadScans() {
   std::ifstream in(OCTOPOINT_SECOND_SCAN_OCT_PATH, std::ios::binary | std::ios::ate);
   table->file.resize(static_cast<std::size_t>(std::max<std::streamoff>(in.tellg(), 0)));
   in.seekg(0);
-  in.read(reinterpret_cast<char*>(table->file.data()), static_cast<std::streamsize>(table->file.size()));
+  in.read(reinterpret_cast<char*>(table->file.data()),
+          static_cast<std::streamsize>(table->file.size()));
   table->model = ModelView::fromBytes(table->file, &issue);
   scans().push_back(std::move(table));
 }
@@ -68,7 +69,8 @@ void setPointCounters(benchmark::State& state, std::size_t points) {
 void renderScan(benchmark::State& state, const Scan* scan, Variant variant, int depth, int yaw) {
   const LevelView* level = scan->model ? scan->model->levelOfDepth(depth) : nullptr;
   FrameSetup setup;
-  if (level == nullptr || buildFrameSetup(cameraFor(yaw), depth, kDefaultFractionBits, &setup) != CameraError::kNone) {
+  if (level == nullptr ||
+      buildFrameSetup(cameraFor(yaw), depth, kDefaultFractionBits, &setup) != CameraError::kNone) {
     state.SkipWithError("model or camera unavailable");
     return;
   }
@@ -108,12 +110,12 @@ void registerAll() {
         const std::string suffix = "/" + scan->name + "/depth" + std::to_string(depth) +
                                    (yaw == 0 ? "/frontal" : "/yaw30");
         for (const VariantInfo& info : allVariants()) {
-          benchmark::RegisterBenchmark(("render/" + std::string(info.name) + suffix).c_str(), renderScan,
-                                       scan.get(), info.variant, depth, yaw)
+          benchmark::RegisterBenchmark(("render/" + std::string(info.name) + suffix).c_str(),
+                                       renderScan, scan.get(), info.variant, depth, yaw)
               ->Unit(benchmark::kMicrosecond);
         }
-        benchmark::RegisterBenchmark(("render/pcl_peer" + suffix).c_str(), renderScanWithPeer, scan.get(),
-                                     depth, yaw)
+        benchmark::RegisterBenchmark(("render/pcl_peer" + suffix).c_str(), renderScanWithPeer,
+                                     scan.get(), depth, yaw)
             ->Unit(benchmark::kMicrosecond);
       }
     }

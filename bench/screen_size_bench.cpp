@@ -14,8 +14,8 @@
 #include "bench/pcl_peer.h"
 #include "bench/register_benchmarks.h"
 #include "octopoint/models.h"
-#include "renderer/level_of_detail.h"
 #include "octopoint/render.h"
+#include "renderer/level_of_detail.h"
 
 namespace octopoint {
 namespace {
@@ -43,7 +43,8 @@ Camera cameraFor(Size size, int zoom_quarters) {
   return camera;
 }
 
-void setFrameCounters(benchmark::State& state, int depth, const SplatFootprint& splat, std::size_t covered) {
+void setFrameCounters(benchmark::State& state, int depth, const SplatFootprint& splat,
+                      std::size_t covered) {
   state.counters["depth"] = depth;
   state.counters["splat_columns"] = splat.columns;
   state.counters["splat_rows"] = splat.rows;
@@ -55,7 +56,8 @@ void renderAuto(benchmark::State& state, Variant variant, Size size, int zoom_qu
   const Camera camera = cameraFor(size, zoom_quarters);
   const LevelView* level = autoLevel(model(), camera);
   FrameSetup setup;
-  if (level == nullptr || buildFrameSetup(camera, level->depth, kDefaultFractionBits, &setup) != CameraError::kNone) {
+  if (level == nullptr ||
+      buildFrameSetup(camera, level->depth, kDefaultFractionBits, &setup) != CameraError::kNone) {
     state.SkipWithError("camera refused");
     return;
   }
@@ -89,9 +91,12 @@ void renderPeer(benchmark::State& state, Size size, int zoom_quarters) {
 
 std::string zoomName(int zoom_quarters) {
   switch (zoom_quarters) {
-    case 1: return "0.25";
-    case 2: return "0.5";
-    default: return std::to_string(zoom_quarters / 4);
+    case 1:
+      return "0.25";
+    case 2:
+      return "0.5";
+    default:
+      return std::to_string(zoom_quarters / 4);
   }
 }
 

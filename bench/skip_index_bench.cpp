@@ -45,7 +45,8 @@ std::vector<std::unique_ptr<Scan>>& scans() {
     std::ifstream in(OCTOPOINT_LMS400_DEFAULT_DEPTHS_OCT_PATH, std::ios::binary | std::ios::ate);
     lms400->file.resize(static_cast<std::size_t>(std::max<std::streamoff>(in.tellg(), 0)));
     in.seekg(0);
-    in.read(reinterpret_cast<char*>(lms400->file.data()), static_cast<std::streamsize>(lms400->file.size()));
+    in.read(reinterpret_cast<char*>(lms400->file.data()),
+            static_cast<std::streamsize>(lms400->file.size()));
     lms400->model = ModelView::fromBytes(lms400->file, &issue);
     list.push_back(std::move(lms400));
     return list;
@@ -56,7 +57,8 @@ std::vector<std::unique_ptr<Scan>>& scans() {
 struct Cell {
   std::int32_t width, height, zoom;
 };
-constexpr Cell kCells[] = {{176, 208, 2}, {176, 208, 4}, {320, 240, 2}, {320, 240, 4}, {176, 208, 8}};
+constexpr Cell kCells[] = {
+    {176, 208, 2}, {176, 208, 4}, {320, 240, 2}, {320, 240, 4}, {176, 208, 8}};
 
 void drawFrame(benchmark::State& state, const Scan* scan, Cell cell, bool after, bool indexed) {
   if (!scan->model) {
@@ -70,7 +72,8 @@ void drawFrame(benchmark::State& state, const Scan* scan, Cell cell, bool after,
   camera.zoom = Q16::fromRaw(cell.zoom * Q16::kOneRaw);
   const LevelView* chosen = after ? autoLevel(*scan->model, camera) : scan->model->levelOfDepth(8);
   FrameSetup setup;
-  if (chosen == nullptr || buildFrameSetup(camera, chosen->depth, kDefaultFractionBits, &setup) != CameraError::kNone) {
+  if (chosen == nullptr ||
+      buildFrameSetup(camera, chosen->depth, kDefaultFractionBits, &setup) != CameraError::kNone) {
     state.SkipWithError("camera refused");
     return;
   }
@@ -98,10 +101,12 @@ void registerAll() {
   for (const std::unique_ptr<Scan>& scan : scans()) {
     for (const Cell cell : kCells) {
       const std::string cell_name = "/" + scan->name + "/" + std::to_string(cell.width) + "x" +
-                                    std::to_string(cell.height) + "_zoom" + std::to_string(cell.zoom);
+                                    std::to_string(cell.height) + "_zoom" +
+                                    std::to_string(cell.zoom);
       for (const bool after : {true, false}) {
         for (const bool indexed : {true, false}) {
-          const std::string name = std::string("small_screen") + cell_name + (after ? "/after" : "/before_filled") +
+          const std::string name = std::string("small_screen") + cell_name +
+                                   (after ? "/after" : "/before_filled") +
                                    (indexed ? "/indexed" : "/byte_walk");
           benchmark::RegisterBenchmark(name.c_str(), drawFrame, scan.get(), cell, after, indexed)
               ->Unit(benchmark::kMicrosecond);

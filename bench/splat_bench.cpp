@@ -3,8 +3,8 @@
 // pixels (the whole model on screen, so every leaf is drawn), by fixed_fast and fixed_simd, each
 // with its splats and at one pixel per leaf (`setup.splat` reset) in the same run. The time is the
 // decode alone (manual time around renderLevel; the frame is cleared outside it). Counters: the
-// leaves drawn, the pixels their splats write (each leaf's rectangle, as tests/support/splat_reference.h
-// defines it), ns per leaf and per pixel written.
+// leaves drawn, the pixels their splats write (each leaf's rectangle, as
+// tests/support/splat_reference.h defines it), ns per leaf and per pixel written.
 #include <benchmark/benchmark.h>
 
 #include <chrono>
@@ -13,8 +13,8 @@
 
 #include "bench/register_benchmarks.h"
 #include "octopoint/models.h"
-#include "renderer/decode_baseline.h"
 #include "octopoint/render.h"
+#include "renderer/decode_baseline.h"
 
 namespace octopoint {
 namespace {

@@ -13,9 +13,9 @@
 
 #include "bench/register_benchmarks.h"
 #include "octopoint/models.h"
+#include "octopoint/render.h"
 #include "octopoint/styles.h"
 #include "renderer/level_of_detail.h"
-#include "octopoint/render.h"
 
 namespace octopoint {
 namespace {
@@ -71,7 +71,8 @@ void plainFrame(benchmark::State& state, Size size, Variant variant) {
                                 static_cast<std::size_t>(size.height) * 3);
   for (auto _ : state) {
     frame.clear();
-    if (!renderLevel(variant, *scene.level, scene.setup, frame)) state.SkipWithError("renderLevel refused");
+    if (!renderLevel(variant, *scene.level, scene.setup, frame))
+      state.SkipWithError("renderLevel refused");
     if (!resolveToRgb(frame, model(), kBackground, rgb)) state.SkipWithError("resolve refused");
     benchmark::DoNotOptimize(rgb.data());
     benchmark::ClobberMemory();
@@ -94,7 +95,8 @@ void styledFrame(benchmark::State& state, Size size, Variant variant, Style styl
                                 static_cast<std::size_t>(size.height) * 3);
   for (auto _ : state) {
     frame.clear(styler.payload());
-    if (!renderLevel(variant, *scene.level, scene.setup, frame)) state.SkipWithError("renderLevel refused");
+    if (!renderLevel(variant, *scene.level, scene.setup, frame))
+      state.SkipWithError("renderLevel refused");
     styler.beginFrame(scene.setup);
     if (styler.resolve(frame, rgb) != StyleError::kNone) state.SkipWithError("resolve refused");
     benchmark::DoNotOptimize(rgb.data());
@@ -118,7 +120,8 @@ void registerAll() {
       suffix += std::to_string(size.height);
       std::string plain = "style/plain";
       plain += suffix;
-      benchmark::RegisterBenchmark(plain.c_str(), plainFrame, size, variant.variant)->Unit(benchmark::kMicrosecond);
+      benchmark::RegisterBenchmark(plain.c_str(), plainFrame, size, variant.variant)
+          ->Unit(benchmark::kMicrosecond);
       for (const StyleInfo& info : allStyles()) {
         std::string name = "style/";
         name += info.name;

@@ -19,7 +19,8 @@ namespace {
 
 // "a scan", "an octopoint model".
 std::string withArticle(std::string_view kind) {
-  const bool vowel = !kind.empty() && std::string_view("aeiouAEIOU").find(kind[0]) != std::string_view::npos;
+  const bool vowel =
+      !kind.empty() && std::string_view("aeiouAEIOU").find(kind[0]) != std::string_view::npos;
   return (vowel ? "an " : "a ") + std::string(kind);
 }
 
@@ -33,11 +34,16 @@ std::string statFailure(const std::filesystem::path& path, int error) {
       }
       return "no such file";
     }
-    case ELOOP: return "too many levels of symbolic links (a symlink loop?)";
-    case EACCES: return "permission denied";
-    case ENOTDIR: return "a part of the path is not a directory";
-    case ENAMETOOLONG: return "file name too long";
-    default: return std::string("cannot look at it: ") + std::strerror(error);
+    case ELOOP:
+      return "too many levels of symbolic links (a symlink loop?)";
+    case EACCES:
+      return "permission denied";
+    case ENOTDIR:
+      return "a part of the path is not a directory";
+    case ENAMETOOLONG:
+      return "file name too long";
+    default:
+      return std::string("cannot look at it: ") + std::strerror(error);
   }
 }
 
@@ -51,7 +57,8 @@ std::string notRegular(mode_t mode, std::string_view kind) {
   return "is not a regular file: " + withArticle(kind) + " must be a file";
 }
 
-void checkStatus(const std::filesystem::path& path, const struct stat& status, const InputKind& input) {
+void checkStatus(const std::filesystem::path& path, const struct stat& status,
+                 const InputKind& input) {
   if (!S_ISREG(status.st_mode)) fail(path, notRegular(status.st_mode, input.kind));
   const auto size = static_cast<std::uint64_t>(status.st_size);
   if (size > input.max_bytes) {
@@ -110,7 +117,8 @@ Bytes readWhole(const std::filesystem::path& path, const InputKind& input) {
       if (bytes.size() >= input.max_bytes + 1) break;  // grew past the limit: refused below
       bytes.resize(std::min<std::uint64_t>(bytes.size() + 4096, input.max_bytes + 1));
     }
-    const ssize_t got = ::read(file.get(), reinterpret_cast<char*>(bytes.data()) + have, bytes.size() - have);
+    const ssize_t got =
+        ::read(file.get(), reinterpret_cast<char*>(bytes.data()) + have, bytes.size() - have);
     if (got < 0 && errno == EINTR) continue;
     if (got < 0) fail(path, std::string("read failed: ") + std::strerror(errno));
     if (got == 0) break;
@@ -130,7 +138,8 @@ std::string readInputFile(const std::filesystem::path& path, const InputKind& in
   return readWhole<std::string>(path, input);
 }
 
-std::vector<std::uint8_t> readInputBytes(const std::filesystem::path& path, const InputKind& input) {
+std::vector<std::uint8_t> readInputBytes(const std::filesystem::path& path,
+                                         const InputKind& input) {
   return readWhole<std::vector<std::uint8_t>>(path, input);
 }
 

@@ -30,7 +30,8 @@ namespace fs = std::filesystem;
 
 void throwIfInterrupted(const fs::path& path) {
   if (const int signal_number = TerminationSignalsHeld::interrupted()) {
-    fail(path, "interrupted by signal " + std::to_string(signal_number) + " before it was complete");
+    fail(path,
+         "interrupted by signal " + std::to_string(signal_number) + " before it was complete");
   }
 }
 
@@ -65,8 +66,8 @@ void writeNewFile(const fs::path& path, std::string_view bytes, const fs::path& 
   if (::close(fd) != 0 && error == 0) error = errno;
   if (error != 0) {
     ::unlink(path.c_str());
-    fail(shown_as, std::string("write failed (") + std::strerror(error) +
-                       "; disk full or file size limit?)");
+    fail(shown_as,
+         std::string("write failed (") + std::strerror(error) + "; disk full or file size limit?)");
   }
 }
 
@@ -125,7 +126,9 @@ void removeStaleStaging(const fs::path& directory) {
     const std::string name = it->path().filename().string();
     if (name.rfind(kStagingPrefix, 0) != 0) continue;
     const std::string digits = name.substr(kStagingPrefix.size());
-    if (digits.empty() || digits.find_first_not_of("0123456789") != std::string::npos || digits.size() > 9) continue;
+    if (digits.empty() || digits.find_first_not_of("0123456789") != std::string::npos ||
+        digits.size() > 9)
+      continue;
     const pid_t pid = static_cast<pid_t>(std::stol(digits));
     if (pid == ::getpid() || ::kill(pid, 0) == 0 || errno != ESRCH) continue;
     std::error_code ignored;
@@ -140,7 +143,8 @@ void checkOutputFile(const fs::path& path) {
   struct stat status {};
   if (::stat(path.c_str(), &status) == 0) {
     if (!S_ISREG(status.st_mode)) {
-      fail(path, "exists and is " + kindOf(status.st_mode) + ", not a regular file: refusing to replace it");
+      fail(path, "exists and is " + kindOf(status.st_mode) +
+                     ", not a regular file: refusing to replace it");
     }
     return;
   }
@@ -162,7 +166,8 @@ void checkOutputDirectory(const fs::path& path) {
   if (path.empty()) throw Error("an empty output directory name was given");
   struct stat status {};
   if (::stat(path.c_str(), &status) == 0) {
-    if (!S_ISDIR(status.st_mode)) fail(path, "exists and is not a directory: it is " + kindOf(status.st_mode));
+    if (!S_ISDIR(status.st_mode))
+      fail(path, "exists and is not a directory: it is " + kindOf(status.st_mode));
     return;
   }
   const int error = errno;
@@ -230,7 +235,8 @@ void writeFilesAtomically(const fs::path& directory, const std::vector<OutputFil
       throwIfInterrupted(directory / file.name);
     }
     for (const OutputFile& file : files) {
-      published.push_back(publish(staging / file.name, directory / file.name, displaced / file.name));
+      published.push_back(
+          publish(staging / file.name, directory / file.name, displaced / file.name));
     }
     for (const std::string& name : obsolete) {
       const Published taken = takeOut(directory / name, displaced / name);

@@ -39,7 +39,8 @@ struct OutputFile {
 // the set, and put back when the set fails. Staging folders that killed runs (SIGKILL, power loss)
 // left in `directory` are removed first. Throws cli::Error naming the file or directory at fault;
 // the directory then holds what it held before (a directory this call created is removed again).
-void writeFilesAtomically(const std::filesystem::path& directory, const std::vector<OutputFile>& files,
+void writeFilesAtomically(const std::filesystem::path& directory,
+                          const std::vector<OutputFile>& files,
                           const std::vector<std::string>& obsolete = {});
 
 // The prefix of the staging folders: ".octopoint-staging-" followed by the writer's process id.

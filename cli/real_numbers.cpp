@@ -31,11 +31,13 @@ double parseReal(std::string_view option, std::string_view text, double low, dou
   const bool whole = !digits.empty() && end == digits.data() + digits.size();
   if (!whole || (error != std::errc() && error != std::errc::result_out_of_range) ||
       std::isnan(value)) {
-    throw Error(std::string(option) + ": " + inQuotes(text) + " is not a number (" + range_text + ")");
+    throw Error(std::string(option) + ": " + inQuotes(text) + " is not a number (" + range_text +
+                ")");
   }
   // Beyond double's range: 1e400 is outside every range we state; 1e-400 is zero (strtod says
   // which: it returns a huge value for overflow and a tiny one for underflow).
-  if (error == std::errc::result_out_of_range) value = std::strtod(std::string(digits).c_str(), nullptr);
+  if (error == std::errc::result_out_of_range)
+    value = std::strtod(std::string(digits).c_str(), nullptr);
   if (!std::isfinite(value) || std::fabs(value) == HUGE_VAL || value < low || value > high) {
     throw Error(std::string(option) + ": " + printable(text) + " is outside " + range_text);
   }

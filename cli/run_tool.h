@@ -4,7 +4,8 @@
 // a message for the user as it is; running out of memory says so; anything else is reported as an
 // internal error. The line is made printable and cut to one line whatever the message holds.
 //
-//   int main(int argc, char** argv) { return octopoint::cli::runTool("octopoint-render", argc, argv, run); }
+//   int main(int argc, char** argv) { return octopoint::cli::runTool("octopoint-render", argc,
+//   argv, run); }
 
 namespace octopoint::cli {
 

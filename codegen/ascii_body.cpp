@@ -35,13 +35,16 @@ bool parsesAs(std::string_view text, const ValueType& type, std::uint64_t* value
     std::uint64_t parsed = 0;
     const auto result = std::from_chars(text.data(), end, parsed);
     if (value != nullptr) *value = parsed;
-    return result.ptr == end && result.ec == std::errc() && (bits == 64 || parsed < (std::uint64_t{1} << bits));
+    return result.ptr == end && result.ec == std::errc() &&
+           (bits == 64 || parsed < (std::uint64_t{1} << bits));
   }
   std::int64_t parsed = 0;
   const auto result = std::from_chars(text.data(), end, parsed);
-  if (value != nullptr) *value = parsed < 0 ? ~std::uint64_t{0} : static_cast<std::uint64_t>(parsed);
+  if (value != nullptr)
+    *value = parsed < 0 ? ~std::uint64_t{0} : static_cast<std::uint64_t>(parsed);
   const std::int64_t limit = bits == 64 ? 0 : std::int64_t{1} << (bits - 1);
-  return result.ptr == end && result.ec == std::errc() && (bits == 64 || (parsed >= -limit && parsed < limit));
+  return result.ptr == end && result.ec == std::errc() &&
+         (bits == 64 || (parsed >= -limit && parsed < limit));
 }
 
 std::string typeName(const ValueType& type) {
@@ -52,7 +55,8 @@ std::string typeName(const ValueType& type) {
 // Walks the body value by value, knowing which element and property each value belongs to.
 class BodyChecker {
  public:
-  BodyChecker(const fs::path& path, std::size_t first_line, const std::vector<AsciiElement>& elements)
+  BodyChecker(const fs::path& path, std::size_t first_line,
+              const std::vector<AsciiElement>& elements)
       : path_(path), elements_(elements), line_(first_line) {
     skipFinishedElements();
   }
@@ -74,15 +78,17 @@ class BodyChecker {
     endLine(true);
     if (element_ < elements_.size()) {
       const AsciiElement& element = elements_[element_];
-      const std::string declared = "header declares " + std::to_string(element.count) + " " + element.plural +
-                                   " but the ascii data has " + counted(item_, "data line") +
+      const std::string declared = "header declares " + std::to_string(element.count) + " " +
+                                   element.plural + " but the ascii data has " +
+                                   counted(item_, "data line") +
                                    (element_ > 0 ? " of them (after the earlier elements)" : "");
       // Blank lines are skipped (PCL skips them too): when there were some, the data may be whole
       // and a blank line stand where a point was meant; the first is the place to look.
       if (blank_lines_ > 0) {
         const char* verb = blank_lines_ == 1 ? ", which holds no " : ", which hold no ";
         fail(path_, declared + " and " + counted(blank_lines_, "blank line") + verb + element.name,
-             (blank_lines_ == 1 ? "line " : "the first at line ") + std::to_string(first_blank_line_));
+             (blank_lines_ == 1 ? "line " : "the first at line ") +
+                 std::to_string(first_blank_line_));
       }
       fail(path_, "truncated: " + declared, "line " + std::to_string(end_line));
     }
@@ -107,7 +113,8 @@ class BodyChecker {
     const auto& properties = elements_[element_].properties;
     while (property_ < properties.size()) {
       const AsciiProperty& property = properties[property_];
-      const std::uint64_t values = property.is_list ? (list_started_ ? list_items_ : 0) : property.repeat;
+      const std::uint64_t values =
+          property.is_list ? (list_started_ ? list_items_ : 0) : property.repeat;
       if (property.is_list && !list_started_) return true;  // the list's count comes first
       if (in_property_ < values) return true;
       ++property_;
@@ -123,7 +130,9 @@ class BodyChecker {
       fail(path_, "more data lines than the header declares", where());
     }
     if (!nextSlot()) {
-      fail(path_, "more values than the header declares for a " + printable(elements_[element_].name) + " item",
+      fail(path_,
+           "more values than the header declares for a " + printable(elements_[element_].name) +
+               " item",
            where());
     }
     const AsciiProperty& property = elements_[element_].properties[property_];
@@ -132,8 +141,9 @@ class BodyChecker {
     std::uint64_t value = 0;
     if (token_.size() > kMaxValueChars || !parsesAs(token_, type, &value)) {
       fail(path_,
-           "'" + printable(token_) + "' is not " + (is_count ? "a list length, " : "") + "a " + typeName(type) +
-               " (" + elements_[element_].property_word + " '" + printable(property.name) + "')",
+           "'" + printable(token_) + "' is not " + (is_count ? "a list length, " : "") + "a " +
+               typeName(type) + " (" + elements_[element_].property_word + " '" +
+               printable(property.name) + "')",
            where());
     }
     if (is_count) {

@@ -15,7 +15,7 @@ namespace octopoint::prepare {
 
 // A number's type in a scan header: PCD TYPE/SIZE, or a PLY scalar type.
 struct ValueType {
-  char kind = 'F';        // 'F' floating point, 'I' signed integer, 'U' unsigned integer
+  char kind = 'F';         // 'F' floating point, 'I' signed integer, 'U' unsigned integer
   std::uint64_t size = 4;  // bytes: 1, 2, 4 or 8
 };
 
@@ -35,7 +35,8 @@ struct AsciiElement {
   std::string plural;  // "points", "'vertex' items": many, in messages
   std::uint64_t count = 0;
   std::vector<AsciiProperty> properties;
-  std::string property_word = "property";  // what the format calls them: PCD "field", PLY "property"
+  std::string property_word =
+      "property";  // what the format calls them: PCD "field", PLY "property"
 };
 
 // Reads the body from `body_offset` (line `first_line` of the file) and throws PrepareError
@@ -43,7 +44,7 @@ struct AsciiElement {
 // ends before every declared item. Blank lines are skipped, as PCL does; when the data is short
 // and held blank lines, the message counts them and names the first instead (a blank line where
 // a point was meant is not a truncated file).
-void checkAsciiBody(const std::filesystem::path& path, std::uint64_t body_offset, std::size_t first_line,
-                    const std::vector<AsciiElement>& elements);
+void checkAsciiBody(const std::filesystem::path& path, std::uint64_t body_offset,
+                    std::size_t first_line, const std::vector<AsciiElement>& elements);
 
 }  // namespace octopoint::prepare

@@ -111,7 +111,9 @@ void ByteText::writePiece(std::size_t piece, char* text) const {
     spell(i, [&](const Spelling& spelling) { std::memcpy(out, spelling.chars.data(), 4); });
   }
   for (std::size_t i = padded_end; i < end; ++i) {
-    spell(i, [&](const Spelling& spelling) { std::memcpy(out, spelling.chars.data(), spelling.size); });
+    spell(i, [&](const Spelling& spelling) {
+      std::memcpy(out, spelling.chars.data(), spelling.size);
+    });
   }
 }
 

@@ -30,7 +30,8 @@ CubeFit fitCube(const Bounds& bounds, const std::string& path) {
   return fit;
 }
 
-std::uint64_t cubeEdgePicometres(const CubeFit& fit, double metres_per_scan_unit, const std::string& path) {
+std::uint64_t cubeEdgePicometres(const CubeFit& fit, double metres_per_scan_unit,
+                                 const std::string& path) {
   const double metres = fit.edge * metres_per_scan_unit;
   const double picometres = std::round(metres * 1e12);
   // 2^64 as a double; every double below it converts to u64 exactly.

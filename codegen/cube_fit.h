@@ -55,7 +55,8 @@ inline constexpr double kMinCubeEdgeMetres = 1e-9;
 // the 2,000 km a scan within kMaxAbsCoordinate metres can span), rounded to nearest. Throws
 // PrepareError naming `path` when the edge is below kMinCubeEdgeMetres or above what a u64 holds,
 // so no scan is stored with a wrong size.
-std::uint64_t cubeEdgePicometres(const CubeFit& fit, double metres_per_scan_unit, const std::string& path);
+std::uint64_t cubeEdgePicometres(const CubeFit& fit, double metres_per_scan_unit,
+                                 const std::string& path);
 
 // The voxel index along one axis at `depth`, in 0..2^depth - 1 (the far face of the cube belongs to
 // the last voxel). Every path of the preparer computes keys with exactly this expression; inline,

@@ -3,8 +3,8 @@
 #include <algorithm>
 #include <optional>
 
-#include "renderer/level_of_detail.h"
 #include "octopoint/model.h"
+#include "renderer/level_of_detail.h"
 
 namespace octopoint::prepare {
 
@@ -37,10 +37,12 @@ std::vector<int> neededDepthRange(std::span<const Camera> cameras) {
 std::string describeDepths(std::span<const int> depths) {
   if (depths.empty()) return "none";
   const bool consecutive = depths.back() - depths.front() + 1 == static_cast<int>(depths.size());
-  if (consecutive && depths.size() > 1) return std::to_string(depths.front()) + ".." + std::to_string(depths.back());
+  if (consecutive && depths.size() > 1)
+    return std::to_string(depths.front()) + ".." + std::to_string(depths.back());
   std::string text;
   for (const int d : depths) {
-    if (!text.empty()) text += ',';  // appended apart: GCC 12 warns falsely (-Wrestrict) on "," + string
+    if (!text.empty())
+      text += ',';  // appended apart: GCC 12 warns falsely (-Wrestrict) on "," + string
     text += std::to_string(d);
   }
   return text;

@@ -26,6 +26,7 @@ struct EncodedLevel {
 // `levels` ascending by depth, as options.depths; uses `threads` threads. Throws PrepareError
 // naming `path` when pruning leaves a depth without any voxel.
 PreparedModel assembleModel(std::vector<EncodedLevel> levels, const CubeFit& fit,
-                            const PrepareOptions& options, const std::string& path, unsigned threads);
+                            const PrepareOptions& options, const std::string& path,
+                            unsigned threads);
 
 }  // namespace octopoint::prepare

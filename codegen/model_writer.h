@@ -44,7 +44,8 @@ std::vector<OutputFile> emitSources(const PreparedModel& model, const EmitOption
 // reads as the preparer's level source of that model and depth counts (its banner, then the
 // array NAME_depthD_nodes): never a file of one's own, nor another model's (a model named
 // NAME_depthD writes a NAME_depthD.cpp too).
-std::vector<std::string> staleLevelSources(const std::filesystem::path& directory, const std::string& name,
+std::vector<std::string> staleLevelSources(const std::filesystem::path& directory,
+                                           const std::string& name,
                                            const std::vector<OutputFile>& files);
 
 }  // namespace octopoint::prepare

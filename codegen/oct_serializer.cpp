@@ -22,8 +22,9 @@ std::vector<std::uint8_t> serializeModel(const PreparedModel& model) {
   adviseHugePages(out.data() + out.size(), size - out.size());
   putU16(out, format::kVersion2);
   out.push_back(static_cast<std::uint8_t>(model.levels.size()));
-  out.push_back(static_cast<std::uint8_t>((with_normals ? format::v2::kFlagNormals : 0) |
-                                          (model.synthetic_colour ? format::v2::kFlagSyntheticColour : 0)));
+  out.push_back(
+      static_cast<std::uint8_t>((with_normals ? format::v2::kFlagNormals : 0) |
+                                (model.synthetic_colour ? format::v2::kFlagSyntheticColour : 0)));
   putU64(out, model.cube_edge_pm);
   putU16(out, static_cast<std::uint32_t>(model.palette.size()));
   putU16(out, static_cast<std::uint32_t>(model.normal_palette.size()));

@@ -60,7 +60,8 @@ void encodeSubtree(std::span<const std::uint64_t> sorted_keys, int level, int de
     // child; every node below it is new.
     const int split = depth - 1 - (63 - std::countl_zero(differ)) / 3;
     assert(split >= level);  // all keys share the first `level` digits
-    out[open[static_cast<std::size_t>(split)]] |= static_cast<std::uint8_t>(1u << digit(key, split));
+    out[open[static_cast<std::size_t>(split)]] |=
+        static_cast<std::uint8_t>(1u << digit(key, split));
     openFrom(key, split + 1);
   }
 }

@@ -18,8 +18,9 @@ namespace octopoint::prepare {
 Scan removeOutliers(const Scan& scan, const OutlierRemoval& rule, const std::string& scan_path) {
   const std::size_t count = scan.positions.size();
   if (count <= static_cast<std::size_t>(rule.neighbours)) {
-    throw PrepareError(scan_path + ": outlier removal needs more than " + std::to_string(rule.neighbours) +
-                       " points, the scan has " + std::to_string(count));
+    throw PrepareError(scan_path + ": outlier removal needs more than " +
+                       std::to_string(rule.neighbours) + " points, the scan has " +
+                       std::to_string(count));
   }
   auto cloud = std::make_shared<pcl::PointCloud<pcl::PointXYZ>>();
   cloud->reserve(count);
@@ -35,7 +36,8 @@ Scan removeOutliers(const Scan& scan, const OutlierRemoval& rule, const std::str
   for (std::size_t i = 0; i < count; ++i) {
     tree.nearestKSearch((*cloud)[i], rule.neighbours + 1, found, squared);
     double sum = 0;
-    for (std::size_t j = 1; j < squared.size(); ++j) sum += std::sqrt(static_cast<double>(squared[j]));
+    for (std::size_t j = 1; j < squared.size(); ++j)
+      sum += std::sqrt(static_cast<double>(squared[j]));
     mean_distance[i] = sum / std::max<std::size_t>(squared.size() - 1, 1);
     if ((i & 0xffff) == 0) progress.update(i);
   }

@@ -20,7 +20,9 @@ struct WeightedColour {
   std::uint32_t weight;
 };
 
-std::uint32_t pack(const Rgb8& c) { return std::uint32_t{c[0]} << 16 | std::uint32_t{c[1]} << 8 | c[2]; }
+std::uint32_t pack(const Rgb8& c) {
+  return std::uint32_t{c[0]} << 16 | std::uint32_t{c[1]} << 8 | c[2];
+}
 
 int squaredDistance(const Rgb8& a, const Rgb8& b) {
   int sum = 0;
@@ -52,7 +54,8 @@ Rgb8 weightedMean(std::span<const WeightedColour> colours) {
     weight += c.weight;
   }
   Rgb8 mean{};
-  for (std::size_t ch = 0; ch < 3; ++ch) mean[ch] = static_cast<std::uint8_t>((sum[ch] + weight / 2) / weight);
+  for (std::size_t ch = 0; ch < 3; ++ch)
+    mean[ch] = static_cast<std::uint8_t>((sum[ch] + weight / 2) / weight);
   return mean;
 }
 
@@ -103,7 +106,8 @@ std::vector<Rgb8> medianCut(std::vector<WeightedColour> colours, int max_colours
     // The weighted median, clamped so that both halves keep at least one colour.
     std::uint64_t running = 0;
     std::size_t cut = box.begin;
-    while (cut < box.end && 2 * (running + colours[cut].weight) <= total) running += colours[cut++].weight;
+    while (cut < box.end && 2 * (running + colours[cut].weight) <= total)
+      running += colours[cut++].weight;
     cut = std::clamp(cut, box.begin + 1, box.end - 1);
     boxes.push_back({cut, box.end});
     boxes[split].end = cut;
@@ -155,8 +159,8 @@ Palette Palette::buildFromPieces(std::span<const std::span<const std::uint32_t>>
     distinct.reserve(counts.size());
     for (const ColourCount& c : counts) {
       const std::uint32_t p = c.packed;
-      distinct.push_back({Rgb8{static_cast<std::uint8_t>(p >> 16), static_cast<std::uint8_t>(p >> 8),
-                               static_cast<std::uint8_t>(p)},
+      distinct.push_back({Rgb8{static_cast<std::uint8_t>(p >> 16),
+                               static_cast<std::uint8_t>(p >> 8), static_cast<std::uint8_t>(p)},
                           c.count});
     }
   }
@@ -179,7 +183,8 @@ Palette Palette::buildFromPieces(std::span<const std::span<const std::uint32_t>>
     const std::size_t end = std::min(distinct.size(), (block + 1) * kBlock);
     for (std::size_t i = block * kBlock; i < end; ++i) {
       palette.known_colours_[i] = pack(distinct[i].rgb);
-      palette.known_index_[i] = static_cast<std::uint8_t>(nearest(palette.colours_, distinct[i].rgb));
+      palette.known_index_[i] =
+          static_cast<std::uint8_t>(nearest(palette.colours_, distinct[i].rgb));
     }
   });
   return palette;

@@ -46,8 +46,8 @@ class Palette {
     // Zeroed pages (codegen/huge_pages.h): only the parts of the tables a colour falls in are
     // ever touched.
     std::shared_ptr<void> pages_;
-    std::uint8_t* index_;    // 2^24 entries
-    std::uint64_t* known_;   // one bit per colour
+    std::uint8_t* index_;   // 2^24 entries
+    std::uint64_t* known_;  // one bit per colour
   };
 
  private:

@@ -44,8 +44,8 @@ struct SourceInfo {
   double coordinate_limit = std::numeric_limits<double>::infinity();
   bool float_coordinates = true;  // PCD, PLY and scans in memory; LAS coordinates are doubles
   bool organized = false;         // height > 1 (PCD/PLY)
-  bool streamed = true;    // false when the whole scan was loaded through PCL first
-  std::string format;      // for the summary line, e.g. "LAS 1.4, point format 7"
+  bool streamed = true;           // false when the whole scan was loaded through PCL first
+  std::string format;             // for the summary line, e.g. "LAS 1.4, point format 7"
 };
 
 // One chunk of consecutive records, decoded. Positions are in scan units; a non-finite one marks a

@@ -28,9 +28,9 @@ struct CropBox {
 // The largest |corner| a crop box may have: past any LAS coordinate (codegen/las_reader.h).
 inline constexpr double kMaxCropCoordinate = 1e13;
 
-// How the scan's axes are laid out. The model is always stored in the sensor frame: x right, y down,
-// z away from the sensor (what PCL's OpenNI grabber and OpenCV use), so that the identity camera
-// shows the scan as it was taken.
+// How the scan's axes are laid out. The model is always stored in the sensor frame: x right, y
+// down, z away from the sensor (what PCL's OpenNI grabber and OpenCV use), so that the identity
+// camera shows the scan as it was taken.
 enum class ScanAxes {
   kYDown,  // x right, y down, z away from the viewer: kept as it is
   kYUp,    // x right, y up, z toward the viewer (OpenGL): turned 180 degrees about x

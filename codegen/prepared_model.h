@@ -13,8 +13,8 @@ using Rgb8 = std::array<std::uint8_t, 3>;
 
 struct PreparedLevel {
   int depth = 0;
-  std::vector<std::uint8_t> nodes;   // depth-first child mask bytes (octopoint/model.h)
-  std::vector<std::uint8_t> leaves;  // one palette index per leaf, depth-first
+  std::vector<std::uint8_t> nodes;      // depth-first child mask bytes (octopoint/model.h)
+  std::vector<std::uint8_t> leaves;     // one palette index per leaf, depth-first
   std::vector<std::uint8_t> normals{};  // one normal palette index per leaf, or empty (no normals)
   // What visibility pruning did (when it ran): the level before it, and the time it took.
   std::size_t voxels_before_pruning = 0;
@@ -32,12 +32,12 @@ struct PreparedModel {
   std::vector<std::array<std::int16_t, 3>> normal_palette;
   // With normals: how they were made, and the angle between the finest level's voxel normals and
   // the palette entries they are stored as.
-  int normal_neighbours = 0;             // k of the k-NN PCA
+  int normal_neighbours = 0;  // k of the k-NN PCA
   bool normals_from_integral_images = false;
-  double normal_seconds = 0;             // estimation and quantization
+  double normal_seconds = 0;  // estimation and quantization
   double normal_error_mean_deg = 0;
   double normal_error_max_deg = 0;
-  std::vector<PreparedLevel> levels;  // depths strictly ascending
+  std::vector<PreparedLevel> levels;       // depths strictly ascending
   std::vector<int> sparse_depths_dropped;  // asked for, but finer than the scan samples densely
 };
 

@@ -12,7 +12,8 @@
 namespace octopoint::prepare {
 
 // Throws PrepareError with the one-line message "PATH: what (where)".
-[[noreturn]] void fail(const std::filesystem::path& path, const std::string& what, const std::string& where);
+[[noreturn]] void fail(const std::filesystem::path& path, const std::string& what,
+                       const std::string& where);
 
 // a * b, or UINT64_MAX when that overflows: header sizes are untrusted.
 std::uint64_t saturatingMul(std::uint64_t a, std::uint64_t b);

@@ -36,8 +36,9 @@ struct Scan {
   std::array<float, 3> sensor_origin{};  // where the sensor stood (PCD VIEWPOINT), in scan units
 };
 
-// The points of `scan` with keep[i] != 0, in order, with their colours, normals and grid indices; the
-// file's counts, the grid's size and the sensor origin are kept. `keep` has one entry per position.
+// The points of `scan` with keep[i] != 0, in order, with their colours, normals and grid indices;
+// the file's counts, the grid's size and the sensor origin are kept. `keep` has one entry per
+// position.
 Scan keepPoints(const Scan& scan, const std::vector<std::uint8_t>& keep);
 
 // A finite coordinate with a larger magnitude is refused as absurd: no range scanner measures a
@@ -51,16 +52,17 @@ inline constexpr cli::InputKind kScanInput{"scan", cli::kGiB};
 
 // Loads a .pcd or .ply scan (chosen by extension, case-insensitive).
 // Accepts float32 x/y/z plus optionally a colour field (packed float "rgb", or uint32 "rgb"/"rgba";
-// R is bits 16..23, G 8..15, B 0..7) or else a float32 "intensity" field. PLY red/green/blue(/alpha)
-// properties arrive through PCL as such a colour field.
-// Drops points with any non-finite coordinate (NaN or infinity) and counts them.
-// Intensity becomes grey: the 1st..99th percentile of intensity over the kept points maps linearly
-// to 0..255, clamped, so that a few hot returns do not turn everything else black.
-// Throws PrepareError with one line "PATH: what (where)" for every failure: a path that is not a
-// regular file of at most kScanInput.max_bytes (cli::Error, from cli::checkInputFile), unknown extension, garbage or truncated file, a header declaring more data than the
-// file holds (checked before anything is allocated), missing or wrongly typed x/y/z, no points,
-// no finite points, or a finite |coordinate| > kMaxAbsCoordinate (naming point index and value).
-// Identical points are not an error here (the fitting step deals with them).
+// R is bits 16..23, G 8..15, B 0..7) or else a float32 "intensity" field. PLY
+// red/green/blue(/alpha) properties arrive through PCL as such a colour field. Drops points with
+// any non-finite coordinate (NaN or infinity) and counts them. Intensity becomes grey: the
+// 1st..99th percentile of intensity over the kept points maps linearly to 0..255, clamped, so that
+// a few hot returns do not turn everything else black. Throws PrepareError with one line "PATH:
+// what (where)" for every failure: a path that is not a regular file of at most
+// kScanInput.max_bytes (cli::Error, from cli::checkInputFile), unknown extension, garbage or
+// truncated file, a header declaring more data than the file holds (checked before anything is
+// allocated), missing or wrongly typed x/y/z, no points, no finite points, or a finite |coordinate|
+// > kMaxAbsCoordinate (naming point index and value). Identical points are not an error here (the
+// fitting step deals with them).
 Scan loadScan(const std::filesystem::path& path);
 
 }  // namespace octopoint::prepare

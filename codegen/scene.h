@@ -42,8 +42,8 @@ struct Scene {
   double metres_per_scan_unit = 1.0;
   bool prune = true;
   std::optional<NormalOptions> normals;  // "normals": estimate and store them (docs/styles.md)
-  double angle_step_deg = 2.0;  // the largest step between sampled yaw or pitch angles
-  double zoom_step = 1.25;      // the largest ratio between neighbouring sampled zooms
+  double angle_step_deg = 2.0;           // the largest step between sampled yaw or pitch angles
+  double zoom_step = 1.25;               // the largest ratio between neighbouring sampled zooms
 };
 
 // Scene files are regular files of at most 1 MiB (cli/input_file.h): a real one has a few lines.

@@ -40,7 +40,8 @@ std::vector<Camera> sceneCameras(const Scene& scene);
 
 // One camera from floating-point degrees and zoom, rounded like octopoint-render's flags: angles
 // to the nearest millidegree, zoom to the nearest Q16.16 step.
-Camera cameraFor(double yaw_deg, double pitch_deg, double roll_deg, double zoom, int width, int height);
+Camera cameraFor(double yaw_deg, double pitch_deg, double roll_deg, double zoom, int width,
+                 int height);
 
 struct DepthChoice {
   std::vector<int> depths;  // ascending

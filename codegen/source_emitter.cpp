@@ -3,8 +3,8 @@
 // (EmitStyle; docs/embedding.md compares their compile time and memory).
 #include <cstdio>
 #include <sstream>
-#include <string_view>
 #include <string>
+#include <string_view>
 
 #include "codegen/byte_text.h"
 #include "codegen/huge_pages.h"
@@ -71,7 +71,8 @@ std::string commentSafe(const std::string& text) {
 }
 
 std::string banner(const PreparedModel& model) {
-  return "// Generated from " + commentSafe(model.source_description) + "\n// Do not edit: regenerate it.\n";
+  return "// Generated from " + commentSafe(model.source_description) +
+         "\n// Do not edit: regenerate it.\n";
 }
 
 std::string header(const PreparedModel& model) {
@@ -79,8 +80,8 @@ std::string header(const PreparedModel& model) {
   out << banner(model) << "#pragma once\n\n#include \"octopoint/model.h\"\n\n"
       << "namespace octopoint::models {\n\n";
   for (const PreparedLevel& level : model.levels) {
-    const double bits_per_point = 8.0 * static_cast<double>(level.nodes.size()) /
-                                  static_cast<double>(level.leaves.size());
+    const double bits_per_point =
+        8.0 * static_cast<double>(level.nodes.size()) / static_cast<double>(level.leaves.size());
     out << "// depth " << level.depth << ": " << level.leaves.size() << " voxels, "
         << level.nodes.size() << " node bytes (" << static_cast<int>(bits_per_point * 100) / 100.0
         << " bits per point of geometry) + " << level.leaves.size() << " colour bytes";
@@ -181,7 +182,8 @@ std::string descriptorSource(const PreparedModel& model, const EmitOptions& opti
   return out.str();
 }
 
-std::string levelSource(const PreparedModel& model, const PreparedLevel& level, const EmitOptions& options) {
+std::string levelSource(const PreparedModel& model, const PreparedLevel& level,
+                        const EmitOptions& options) {
   constexpr std::string_view kEnd = "\n}  // namespace octopoint::models\n";
   std::string out = banner(model) + "#include <cstdint>\n\nnamespace octopoint::models {\n\n";
   appendLevelArrays(out, model, level, options, kEnd.size());

@@ -21,12 +21,14 @@ bool isLevelSourceOf(const std::filesystem::path& path, const std::string& array
   text.resize(static_cast<std::size_t>(in.gcount()));
   // "extern const ::std::uint8_t NAME_depthD_nodes_[" today, "std::uint8_t NAME_depthD_nodes["
   // from the first generator: both hold this.
-  return text.rfind("// Generated from ", 0) == 0 && text.find("std::uint8_t " + array_name) != std::string::npos;
+  return text.rfind("// Generated from ", 0) == 0 &&
+         text.find("std::uint8_t " + array_name) != std::string::npos;
 }
 
 }  // namespace
 
-std::vector<std::string> staleLevelSources(const std::filesystem::path& directory, const std::string& name,
+std::vector<std::string> staleLevelSources(const std::filesystem::path& directory,
+                                           const std::string& name,
                                            const std::vector<OutputFile>& files) {
   std::vector<std::string> stale;
   for (int depth = 1; depth <= format::kMaxDepth; ++depth) {

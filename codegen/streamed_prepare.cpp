@@ -459,7 +459,8 @@ PreparedModel prepareFromSource(const PointSource& source, const std::string& pa
   }
   const auto start = std::chrono::steady_clock::now();
   PrepareSummary local;
-  const cli::FileSizeSignalIgnored file_size_signal;  // a spill past `ulimit -f`: an error, not a kill
+  const cli::FileSizeSignalIgnored
+      file_size_signal;  // a spill past `ulimit -f`: an error, not a kill
   PreparedModel model = StreamedPreparer(source, path, options, stream).run(local);
   local.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   if (summary) *summary = local;

@@ -12,8 +12,8 @@
 //           depth's colours, pruning if asked (codegen/model_assembly.h)
 //
 // The points are summed per voxel as integers, so the order in which threads see them, and where
-// the buffers filled up, change nothing (tests/preparer/streamed_prepare_test.cpp checks budgets and thread
-// counts against each other and against the in-memory reference, codegen/voxelizer.h).
+// the buffers filled up, change nothing (tests/preparer/streamed_prepare_test.cpp checks budgets
+// and thread counts against each other and against the in-memory reference, codegen/voxelizer.h).
 
 #include <array>
 #include <cstdint>

@@ -37,7 +37,9 @@ struct LeafPixels {
     const std::int32_t y_begin = std::max((y + splat.offset_y) >> f, 0);
     const std::int32_t y_end = std::min(((y + splat.offset_y + splat.span_y) >> f) + 1, height);
     for (std::int32_t py = y_begin; py < y_end; ++py) {
-      for (std::int32_t px = x_begin; px < x_end; ++px) visit(static_cast<std::size_t>(py) * static_cast<std::size_t>(width) + static_cast<std::size_t>(px));
+      for (std::int32_t px = x_begin; px < x_end; ++px)
+        visit(static_cast<std::size_t>(py) * static_cast<std::size_t>(width) +
+              static_cast<std::size_t>(px));
     }
   }
 };
@@ -67,11 +69,12 @@ struct MarkNearestSink {
   }
 };
 
-void markWinners(const LevelView& level, const FrameSetup& setup, std::vector<std::uint32_t>& nearest,
-                 std::vector<std::uint8_t>& visible) {
+void markWinners(const LevelView& level, const FrameSetup& setup,
+                 std::vector<std::uint32_t>& nearest, std::vector<std::uint8_t>& visible) {
   for (const bool splat : {false, true}) {
     if (splat && !setup.splat.active()) continue;
-    const LeafPixels pixels_of{setup.width, setup.height, setup, splat ? setup.splat : SplatFootprint{}};
+    const LeafPixels pixels_of{setup.width, setup.height, setup,
+                               splat ? setup.splat : SplatFootprint{}};
     nearest.assign(static_cast<std::size_t>(setup.width) * static_cast<std::size_t>(setup.height),
                    std::numeric_limits<std::uint32_t>::max());
     NearestKeySink first{pixels_of, nearest};
@@ -91,8 +94,8 @@ std::vector<std::uint8_t> visibleVoxels(std::span<const std::uint64_t> sorted_ke
     FrameSetup setup;
     const CameraError error = buildFrameSetup(cameras[i], depth, kDefaultFractionBits, &setup);
     if (error != CameraError::kNone) {
-      throw PrepareError("scene view " + std::to_string(i) + " at depth " + std::to_string(depth) + ": " +
-                         describe(error));
+      throw PrepareError("scene view " + std::to_string(i) + " at depth " + std::to_string(depth) +
+                         ": " + describe(error));
     }
   }
   const std::vector<std::uint8_t> nodes = encodeOctree(sorted_keys, depth);
@@ -100,7 +103,8 @@ std::vector<std::uint8_t> visibleVoxels(std::span<const std::uint64_t> sorted_ke
   const LevelView level{depth, nodes, leaves};
 
   const unsigned threads = std::clamp(std::thread::hardware_concurrency(), 1u, kMaxThreads);
-  std::vector<std::vector<std::uint8_t>> visible(threads, std::vector<std::uint8_t>(sorted_keys.size(), 0));
+  std::vector<std::vector<std::uint8_t>> visible(threads,
+                                                 std::vector<std::uint8_t>(sorted_keys.size(), 0));
   std::atomic<std::size_t> next_view{0};
   Progress progress("pruning depth " + std::to_string(depth), cameras.size());
   auto work = [&](unsigned thread) {

@@ -34,7 +34,9 @@ constexpr double kSameGroup = 0.8660254;
 constexpr double kAgreeing = 0.9;
 constexpr std::size_t kMostCandidates = 32;  // group seeds tried per voxel
 
-double dot(const Vec3f& a, const std::array<double, 3>& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
+double dot(const Vec3f& a, const std::array<double, 3>& b) {
+  return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+}
 
 // The voxel's normal from its points' (unit or NaN) normals; `fallback` when none is known.
 Vec3f voxelNormal(const std::vector<Vec3f>& normals, const Vec3f& fallback) {
@@ -98,7 +100,8 @@ std::size_t occupiedVoxels(const Scan& scan, const CubeFit& fit, int depth) {
   std::vector<std::uint64_t> keys;
   keys.reserve(scan.positions.size());
   for (const auto& p : scan.positions) {
-    keys.push_back(mortonKey(voxelIndex(p[0], fit.origin[0], fit.edge, depth), voxelIndex(p[1], fit.origin[1], fit.edge, depth),
+    keys.push_back(mortonKey(voxelIndex(p[0], fit.origin[0], fit.edge, depth),
+                             voxelIndex(p[1], fit.origin[1], fit.edge, depth),
                              voxelIndex(p[2], fit.origin[2], fit.edge, depth), depth));
   }
   std::sort(keys.begin(), keys.end());
@@ -139,10 +142,12 @@ VoxelSet voxelize(const Scan& scan, const CubeFit& fit, int depth) {
       const double cell = fit.edge / std::ldexp(1.0, depth);
       std::array<double, 3> toward_sensor{};
       for (std::size_t axis = 0; axis < 3; ++axis) {
-        toward_sensor[axis] = scan.sensor_origin[axis] - (fit.origin[axis] + (xyz[axis] + 0.5) * cell);
+        toward_sensor[axis] =
+            scan.sensor_origin[axis] - (fit.origin[axis] + (xyz[axis] + 0.5) * cell);
       }
-      const double length = std::sqrt(toward_sensor[0] * toward_sensor[0] + toward_sensor[1] * toward_sensor[1] +
-                                       toward_sensor[2] * toward_sensor[2]);
+      const double length =
+          std::sqrt(toward_sensor[0] * toward_sensor[0] + toward_sensor[1] * toward_sensor[1] +
+                    toward_sensor[2] * toward_sensor[2]);
       const Vec3f fallback = length > 0 ? Vec3f{static_cast<float>(toward_sensor[0] / length),
                                                 static_cast<float>(toward_sensor[1] / length),
                                                 static_cast<float>(toward_sensor[2] / length)}

@@ -41,8 +41,8 @@ std::uint8_t depthShade(std::uint32_t z, std::uint32_t near, std::uint32_t far);
 
 struct VoxelSet {
   int depth = 0;
-  std::vector<std::uint64_t> keys;  // ascending, unique
-  std::vector<Rgb8> colours;        // one per key
+  std::vector<std::uint64_t> keys;            // ascending, unique
+  std::vector<Rgb8> colours;                  // one per key
   std::vector<std::array<float, 3>> normals;  // one unit vector per key; empty without normals
 };
 

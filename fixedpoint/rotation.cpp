@@ -1,11 +1,10 @@
 // Rotation matrices in Q1.30 from the integer sine table.
-#include "octopoint/fixed.h"
-
 #include <cassert>
 #include <cstddef>
 #include <cstdint>
 
 #include "fixedpoint/trig.h"
+#include "octopoint/fixed.h"
 
 namespace octopoint {
 namespace {

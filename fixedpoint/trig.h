@@ -13,10 +13,10 @@ namespace octopoint {
 //   kQuarterSineTableQ30[k] = round(sin(2 * pi * k / 65536) * 2^30), k in [0, 16384].
 // Error: every entry is the correctly rounded value, |entry - sin * 2^30| <= 1/2 ulp (Q30).
 // Why: the builder evaluates sin in Q62 with an error below 2^-55 (< 2^-25 Q30 ulp), so an entry
-// could only be misrounded if sin * 2^30 were within 2^-25 of a half-integer; tests/core/trig_test.cpp
-// compares all 16385 entries with a 64-bit-mantissa reference sine: all within 1/2 ulp (the
-// largest error is 0.499989 ulp, so no exact value lies within 1e-5 ulp of a rounding tie).
-// Exact entries: [0] = 0, [16384] = 1 << 30.
+// could only be misrounded if sin * 2^30 were within 2^-25 of a half-integer;
+// tests/core/trig_test.cpp compares all 16385 entries with a 64-bit-mantissa reference sine: all
+// within 1/2 ulp (the largest error is 0.499989 ulp, so no exact value lies within 1e-5 ulp of a
+// rounding tie). Exact entries: [0] = 0, [16384] = 1 << 30.
 inline constexpr int kQuarterSineTableSize = Angle::kUnitsPerTurn / 4 + 1;  // 16385
 extern const std::array<int32_t, kQuarterSineTableSize> kQuarterSineTableQ30;
 

@@ -17,9 +17,9 @@
 #include <span>
 #include <vector>
 
-#include "tests/support/model_images.h"
 #include "octopoint/models.h"
 #include "octopoint/progressive.h"
+#include "tests/support/model_images.h"
 
 namespace {
 

@@ -12,8 +12,8 @@
 #include "codegen/model_writer.h"
 #include "codegen/prepare_error.h"
 #include "codegen/streamed_prepare.h"
-#include "tests/support/memory_file.h"
 #include "octopoint/model.h"
+#include "tests/support/memory_file.h"
 
 namespace {
 

@@ -16,10 +16,10 @@
 #include <string>
 #include <vector>
 
-#include "tests/support/model_images.h"
+#include "octopoint/models.h"
 #include "tests/support/landscape.h"
 #include "tests/support/las_writer.h"
-#include "octopoint/models.h"
+#include "tests/support/model_images.h"
 
 namespace {
 
@@ -31,7 +31,9 @@ void write(const fs::path& path, const void* data, std::size_t size) {
   if (!out) throw std::runtime_error(path.string() + ": cannot write");
 }
 
-void write(const fs::path& path, const std::vector<std::uint8_t>& bytes) { write(path, bytes.data(), bytes.size()); }
+void write(const fs::path& path, const std::vector<std::uint8_t>& bytes) {
+  write(path, bytes.data(), bytes.size());
+}
 void write(const fs::path& path, const std::string& text) { write(path, text.data(), text.size()); }
 
 std::string binaryPoints(int count) {
@@ -47,7 +49,8 @@ void writeScanHeaders(const fs::path& dir) {
   const std::string pcd_head =
       "# .PCD v0.7 - Point Cloud Data file format\nVERSION 0.7\nFIELDS x y z rgb\nSIZE 4 4 4 4\n"
       "TYPE F F F U\nCOUNT 1 1 1 1\nWIDTH 3\nHEIGHT 1\nVIEWPOINT 0 0 0 1 0 0 0\nPOINTS 3\n";
-  write(dir / "ascii.pcd", pcd_head + "DATA ascii\n0 0 1 4278190335\n0.5 0.25 1.5 4278255360\n1 1 2 4294901760\n");
+  write(dir / "ascii.pcd",
+        pcd_head + "DATA ascii\n0 0 1 4278190335\n0.5 0.25 1.5 4278255360\n1 1 2 4294901760\n");
   const std::string xyz_head =
       "VERSION 0.7\nFIELDS x y z\nSIZE 4 4 4\nTYPE F F F\nCOUNT 1 1 1\nWIDTH 4\nHEIGHT 1\n"
       "VIEWPOINT 0 0 0 1 0 0 0\nPOINTS 4\n";
@@ -61,20 +64,25 @@ void writeScanHeaders(const fs::path& dir) {
     lzf += static_cast<char>(run.size() - 1);
     lzf += run;
   }
-  const std::uint32_t sizes[2] = {static_cast<std::uint32_t>(lzf.size()), static_cast<std::uint32_t>(raw.size())};
+  const std::uint32_t sizes[2] = {static_cast<std::uint32_t>(lzf.size()),
+                                  static_cast<std::uint32_t>(raw.size())};
   std::string compressed_head = xyz_head;
   compressed_head.replace(compressed_head.find("WIDTH 4"), 7, "WIDTH 2");
   compressed_head.replace(compressed_head.find("POINTS 4"), 8, "POINTS 2");
-  write(dir / "compressed.pcd",
-        compressed_head + "DATA binary_compressed\n" + std::string(reinterpret_cast<const char*>(sizes), 8) + lzf);
+  write(dir / "compressed.pcd", compressed_head + "DATA binary_compressed\n" +
+                                    std::string(reinterpret_cast<const char*>(sizes), 8) + lzf);
   const std::string ply_head =
-      "ply\nformat ascii 1.0\ncomment made by make_fuzz_corpus\nelement vertex 3\nproperty float x\n"
-      "property float y\nproperty float z\nproperty uchar red\nproperty uchar green\nproperty uchar blue\n"
+      "ply\nformat ascii 1.0\ncomment made by make_fuzz_corpus\nelement vertex 3\nproperty float "
+      "x\n"
+      "property float y\nproperty float z\nproperty uchar red\nproperty uchar green\nproperty "
+      "uchar blue\n"
       "element face 1\nproperty list uchar int vertex_indices\nend_header\n";
   write(dir / "ascii.ply", ply_head + "0 0 1 255 0 0\n1 0 1 0 255 0\n0 1 1 0 0 255\n3 0 1 2\n");
-  write(dir / "binary.ply",
-        "ply\nformat binary_little_endian 1.0\nelement vertex 4\nproperty float x\nproperty float y\n"
-        "property float z\nend_header\n" + binaryPoints(4));
+  write(
+      dir / "binary.ply",
+      "ply\nformat binary_little_endian 1.0\nelement vertex 4\nproperty float x\nproperty float y\n"
+      "property float z\nend_header\n" +
+          binaryPoints(4));
 }
 
 void writeChunkedSeeds(const fs::path& dir, const octopoint::EmbeddedModel& model) {
@@ -82,16 +90,19 @@ void writeChunkedSeeds(const fs::path& dir, const octopoint::EmbeddedModel& mode
   const std::vector<std::vector<int>> depth_sets = {{}, {3, 5}, {4, 6, 8}, {5, 6, 7, 8}};
   for (std::size_t i = 0; i < depth_sets.size(); ++i) {
     std::vector<std::uint8_t> seed{0};
-    const std::vector<std::uint8_t> image = octopoint::fuzzing::chunkedImage(model, depth_sets[i], {512, 1500});
+    const std::vector<std::uint8_t> image =
+        octopoint::fuzzing::chunkedImage(model, depth_sets[i], {512, 1500});
     seed.insert(seed.end(), image.begin(), image.end());
     write(dir / ("whole_" + std::to_string(i) + ".bin"), seed);
   }
   // Splices of 16 bytes of the harness's own model, at the fixed header, the level table, the first
   // record table and the first chunk: the fuzzer mutates from there.
-  const std::vector<std::uint8_t> real = octopoint::fuzzing::chunkedImage(model, {5, 6, 7, 8}, {512, 1500});
+  const std::vector<std::uint8_t> real =
+      octopoint::fuzzing::chunkedImage(model, {5, 6, 7, 8}, {512, 1500});
   const std::uint32_t head_bytes = static_cast<std::uint32_t>(real[20] | real[21] << 8);
   for (std::uint32_t offset : {6u, 40u + 3u * 256u, head_bytes, head_bytes + 400u}) {
-    std::vector<std::uint8_t> seed{3, static_cast<std::uint8_t>(offset), static_cast<std::uint8_t>(offset >> 8), 0, 0};
+    std::vector<std::uint8_t> seed{3, static_cast<std::uint8_t>(offset),
+                                   static_cast<std::uint8_t>(offset >> 8), 0, 0};
     seed.insert(seed.end(), real.begin() + offset, real.begin() + offset + 16);
     write(dir / ("splice_" + std::to_string(offset) + ".bin"), seed);
   }

@@ -15,10 +15,10 @@
 #include <span>
 
 #include "octopoint/camera.h"
-#include "renderer/decode_baseline.h"
 #include "octopoint/framebuffer.h"
 #include "octopoint/model.h"
 #include "octopoint/render.h"
+#include "renderer/decode_baseline.h"
 
 namespace {
 
@@ -41,10 +41,8 @@ Camera camera(int yaw_degrees, int pitch_degrees, int roll_degrees, std::int32_t
 }
 
 const std::array kCameras = {
-    camera(0, 0, 0, 1 << 16, 0, 48, 32),
-    camera(30, -20, 10, 3 << 15, 0, 40, 40),
-    camera(180, 90, 0, 1 << 14, 5, 33, 17),
-    camera(-45, 45, 135, 5 << 16, 30, 64, 48),
+    camera(0, 0, 0, 1 << 16, 0, 48, 32),    camera(30, -20, 10, 3 << 15, 0, 40, 40),
+    camera(180, 90, 0, 1 << 14, 5, 33, 17), camera(-45, 45, 135, 5 << 16, 30, 64, 48),
     camera(0, 0, 0, 1 << 16, 0, 1, 1),
 };
 
@@ -66,7 +64,8 @@ void drawEveryWay(const LevelView& level) {
   for (std::size_t c = 0; c < cameras; ++c) {
     const Camera& cam = kCameras[c];
     FrameSetup setup;
-    if (buildFrameSetup(cam, level.depth, kDefaultFractionBits, &setup) != CameraError::kNone) continue;
+    if (buildFrameSetup(cam, level.depth, kDefaultFractionBits, &setup) != CameraError::kNone)
+      continue;
     LeafCounter counter;
     BaselineWalk<LeafCounter> walk(level, setup, counter);
     check(walk.run());

@@ -18,9 +18,9 @@
 #include <utility>
 #include <vector>
 
-#include "lab/reference_surface.h"
 #include "codegen/cube_fit.h"
 #include "codegen/scan_loader.h"
+#include "lab/reference_surface.h"
 #include "octopoint/camera.h"
 
 namespace octopoint::tradeoff {

@@ -8,9 +8,6 @@
 #include <string>
 #include <vector>
 
-#include "lab/reference_closure.h"
-#include "lab/reference_surface.h"
-#include "lab/splat_rule_flag.h"
 #include "cli/arguments.h"
 #include "cli/error.h"
 #include "cli/numbers.h"
@@ -19,6 +16,9 @@
 #include "cli/text.h"
 #include "codegen/cube_fit.h"
 #include "codegen/prepare.h"
+#include "lab/reference_closure.h"
+#include "lab/reference_surface.h"
+#include "lab/splat_rule_flag.h"
 
 namespace {
 

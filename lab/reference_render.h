@@ -17,8 +17,8 @@
 
 #include <opencv2/core.hpp>
 
-#include "lab/reference_surface.h"
 #include "codegen/cube_fit.h"
+#include "lab/reference_surface.h"
 #include "octopoint/camera.h"
 #include "octopoint/model.h"
 

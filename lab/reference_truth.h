@@ -14,9 +14,9 @@
 #include <opencv2/core.hpp>
 #include <string>
 
-#include "lab/reference_surface.h"
 #include "codegen/cube_fit.h"
 #include "codegen/scan_loader.h"
+#include "lab/reference_surface.h"
 #include "octopoint/camera.h"
 
 namespace octopoint::tradeoff {

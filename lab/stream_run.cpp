@@ -8,9 +8,9 @@
 #include <stdexcept>
 #include <thread>
 
-#include "tools/chunked_render.h"
 #include "lab/image_quality.h"
 #include "octopoint/http.h"
+#include "tools/chunked_render.h"
 
 namespace octopoint {
 namespace {

@@ -11,11 +11,11 @@
 #include <string>
 #include <vector>
 
-#include "lab/error_regions.h"
-#include "lab/reference_surface.h"
 #include "cli/output_file.h"
 #include "codegen/cube_fit.h"
 #include "codegen/prepare.h"
+#include "lab/error_regions.h"
+#include "lab/reference_surface.h"
 #include "octopoint/camera.h"
 #include "octopoint/framebuffer.h"
 #include "octopoint/model.h"

@@ -8,8 +8,8 @@
 #include <string>
 #include <vector>
 
-#include "lab/tradeoff.h"
 #include "cli/error.h"
+#include "lab/tradeoff.h"
 #include "octopoint/render.h"
 
 namespace octopoint::tradeoff {
@@ -70,7 +70,8 @@ cv::Mat drawPlot(const std::vector<Row>& rows) {
   cv::putText(plot, "time per frame (log scale)", {kWidth / 2 - 110, kHeight - 20},
               cv::FONT_HERSHEY_SIMPLEX, 0.6, black);
   cv::putText(
-      plot, "PSNR against the surface reference; dot: hole filling on, ring: off, x: floating point",
+      plot,
+      "PSNR against the surface reference; dot: hole filling on, ring: off, x: floating point",
       {kMargin, 30}, cv::FONT_HERSHEY_SIMPLEX, 0.5, black);
   const cv::Scalar depth_colour[] = {{180, 119, 31}, {14, 127, 255},  {44, 160, 44},
                                      {40, 39, 214},  {189, 103, 148}, {75, 86, 140}};

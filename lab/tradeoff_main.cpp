@@ -10,8 +10,6 @@
 #include <string>
 #include <vector>
 
-#include "lab/splat_rule_flag.h"
-#include "lab/tradeoff.h"
 #include "cli/arguments.h"
 #include "cli/error.h"
 #include "cli/numbers.h"
@@ -19,6 +17,8 @@
 #include "cli/real_numbers.h"
 #include "cli/run_tool.h"
 #include "cli/text.h"
+#include "lab/splat_rule_flag.h"
+#include "lab/tradeoff.h"
 
 namespace {
 

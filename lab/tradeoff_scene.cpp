@@ -4,12 +4,12 @@
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 
-#include "lab/image_quality.h"
-#include "lab/reference_render.h"
-#include "lab/tradeoff.h"
 #include "cli/error.h"
 #include "codegen/model_writer.h"
 #include "codegen/prepare_error.h"
+#include "lab/image_quality.h"
+#include "lab/reference_render.h"
+#include "lab/tradeoff.h"
 
 namespace octopoint::tradeoff {
 

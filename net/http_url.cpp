@@ -1,6 +1,6 @@
-#include "octopoint/http.h"
-
 #include <cctype>
+
+#include "octopoint/http.h"
 
 namespace octopoint::net {
 

@@ -1,10 +1,10 @@
-#include "octopoint/http.h"
-
 #include <algorithm>
 #include <atomic>
 #include <thread>
 #include <unordered_set>
 #include <vector>
+
+#include "octopoint/http.h"
 
 namespace octopoint::net {
 namespace {

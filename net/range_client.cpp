@@ -1,10 +1,10 @@
-#include "octopoint/http.h"
-
 #include <httplib.h>
 
 #include <chrono>
 #include <cinttypes>
 #include <cstdio>
+
+#include "octopoint/http.h"
 
 namespace octopoint::net {
 namespace {

@@ -9,10 +9,10 @@
 #include <atomic>
 #include <cstdint>
 
-#include "renderer/decode_algorithms.h"
-#include "renderer/framebuffer_plot.h"
 #include "octopoint/model.h"
 #include "renderer/avx2_emit.h"
+#include "renderer/decode_algorithms.h"
+#include "renderer/framebuffer_plot.h"
 #include "renderer/skip_runs.h"
 #include "renderer/splat_batch.h"
 #include "renderer/splat_plot.h"

@@ -1,7 +1,6 @@
-#include "octopoint/bands.h"
-
 #include <array>
 
+#include "octopoint/bands.h"
 #include "renderer/bit_scan.h"
 #include "renderer/decode_algorithms.h"
 
@@ -9,11 +8,13 @@ namespace octopoint {
 namespace {
 
 // Counts the nodes of the subtree at `node` per level and returns the stream just past it.
-const std::uint8_t* countSubtree(const std::uint8_t* node, int level, int depth, std::uint32_t* counts) {
+const std::uint8_t* countSubtree(const std::uint8_t* node, int level, int depth,
+                                 std::uint32_t* counts) {
   ++counts[level];
   const unsigned mask = *node++;
   if (level + 1 == depth) return node;
-  for (int child = childCount(mask); child > 0; --child) node = countSubtree(node, level + 1, depth, counts);
+  for (int child = childCount(mask); child > 0; --child)
+    node = countSubtree(node, level + 1, depth, counts);
   return node;
 }
 
@@ -31,7 +32,8 @@ struct IndexWalk {
       const std::uint8_t* const node_begin = node;
       const std::uint8_t* const leaf_begin = leaf;
       skipSubtree(node, leaf, level, depth);
-      storage[count++] = {static_cast<std::uint16_t>(node - node_begin), static_cast<std::uint16_t>(leaf - leaf_begin)};
+      storage[count++] = {static_cast<std::uint16_t>(node - node_begin),
+                          static_cast<std::uint16_t>(leaf - leaf_begin)};
       return;
     }
     const unsigned mask = *node++;
@@ -47,7 +49,8 @@ void countNodesPerLevel(const LevelView& level, std::span<std::uint32_t> counts)
 }
 
 bool indexLevelAllowed(int depth, int index_level) {
-  return index_level >= 1 && index_level + 2 <= depth && depth - index_level <= kMaxIndexedSubtreeLevels;
+  return index_level >= 1 && index_level + 2 <= depth &&
+         depth - index_level <= kMaxIndexedSubtreeLevels;
 }
 
 int deepestIndexLevel(const LevelView& level, std::size_t capacity) {
@@ -55,7 +58,8 @@ int deepestIndexLevel(const LevelView& level, std::size_t capacity) {
   countNodesPerLevel(level, counts);
   int best = 0;
   for (int l = 1; l < level.depth; ++l) {
-    if (indexLevelAllowed(level.depth, l) && counts[static_cast<std::size_t>(l)] <= capacity) best = l;
+    if (indexLevelAllowed(level.depth, l) && counts[static_cast<std::size_t>(l)] <= capacity)
+      best = l;
   }
   return best;
 }

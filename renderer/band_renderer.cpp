@@ -1,14 +1,13 @@
-#include "octopoint/bands.h"
-
 #include <algorithm>
 #include <array>
 #include <cstdlib>
 #include <limits>
 
-#include "renderer/bit_scan.h"
-#include "renderer/decode_algorithms.h"
+#include "octopoint/bands.h"
 #include "octopoint/framebuffer.h"
 #include "octopoint/render.h"
+#include "renderer/bit_scan.h"
+#include "renderer/decode_algorithms.h"
 #include "renderer/render_fixed_delta.h"
 #include "renderer/subtree_clip.h"
 
@@ -45,8 +44,8 @@ class IndexedBandWalk {
   // `delta`: fixed_delta prepared for this window (then `variant` is not used): each subtree is
   // then one call, without the per-call preparation renderLevel would repeat.
   IndexedBandWalk(const LevelView& level, const FrameSetup& frame, const BandIndex& index,
-                  Variant variant, FrameSetup& subtree_setup, FrameView& window, std::int32_t window_y0,
-                  FixedDeltaDecoder* delta)
+                  Variant variant, FrameSetup& subtree_setup, FrameView& window,
+                  std::int32_t window_y0, FixedDeltaDecoder* delta)
       : level_(level),
         frame_(frame),
         index_(index),
@@ -66,8 +65,8 @@ class IndexedBandWalk {
     const std::uint8_t* node = level_.nodes.data();
     std::uint32_t leaf = 0;
     visit(0, frame_.root, node, leaf);
-    return fits_ && entry_ == index_.sizes.size() && node == level_.nodes.data() + level_.nodes.size() &&
-           leaf == level_.leaves.size();
+    return fits_ && entry_ == index_.sizes.size() &&
+           node == level_.nodes.data() + level_.nodes.size() && leaf == level_.leaves.size();
   }
 
  private:
@@ -75,7 +74,8 @@ class IndexedBandWalk {
     if (!fits_) return;
     if (l == index_.level) {
       const auto node_begin = static_cast<std::size_t>(node - level_.nodes.data());
-      if (entry_ == index_.sizes.size() || index_.sizes[entry_].nodes > level_.nodes.size() - node_begin ||
+      if (entry_ == index_.sizes.size() ||
+          index_.sizes[entry_].nodes > level_.nodes.size() - node_begin ||
           index_.sizes[entry_].leaves > level_.leaves.size() - leaf) {
         fits_ = false;
         return;
@@ -98,7 +98,8 @@ class IndexedBandWalk {
     }
   }
 
-  void draw(const Vec3& root, const std::uint8_t* node, std::uint32_t leaf, const SubtreeSize& size) {
+  void draw(const Vec3& root, const std::uint8_t* node, std::uint32_t leaf,
+            const SubtreeSize& size) {
     const auto node_begin = static_cast<std::size_t>(node - level_.nodes.data());
     const LevelView subtree{subtree_.depth, level_.nodes.subspan(node_begin, size.nodes),
                             level_.leaves.subspan(leaf, size.leaves)};
@@ -127,16 +128,20 @@ class IndexedBandWalk {
 
 }  // namespace
 
-CameraError bandFrameSetup(const FrameSetup& frame, std::int32_t y0, std::int32_t rows, FrameSetup* band) {
+CameraError bandFrameSetup(const FrameSetup& frame, std::int32_t y0, std::int32_t rows,
+                           FrameSetup* band) {
   if (y0 < 0 || rows < 1 || rows > frame.height - y0) return CameraError::kBadViewport;
   std::int64_t reach_x = 0, reach_y = 0;
   reachFrom(frame, 0, &reach_x, &reach_y);
-  const std::int64_t root_y = std::int64_t{frame.root.y} - (std::int64_t{y0} << frame.fraction_bits);
+  const std::int64_t root_y =
+      std::int64_t{frame.root.y} - (std::int64_t{y0} << frame.fraction_bits);
   // As buildFrameSetup: every leaf's coordinate, every partial sum and every splat row stays
   // strictly inside int32.
-  const std::int64_t splat_y = std::max(std::llabs(frame.splat.offset_y),
-                                        std::llabs(std::int64_t{frame.splat.offset_y} + frame.splat.span_y));
-  if (std::llabs(root_y) + reach_y + splat_y >= std::numeric_limits<std::int32_t>::max()) return CameraError::kOverflow;
+  const std::int64_t splat_y =
+      std::max(std::llabs(frame.splat.offset_y),
+               std::llabs(std::int64_t{frame.splat.offset_y} + frame.splat.span_y));
+  if (std::llabs(root_y) + reach_y + splat_y >= std::numeric_limits<std::int32_t>::max())
+    return CameraError::kOverflow;
   *band = frame;
   band->root.y = static_cast<std::int32_t>(root_y);
   band->height = rows;
@@ -146,28 +151,38 @@ CameraError bandFrameSetup(const FrameSetup& frame, std::int32_t y0, std::int32_
 
 bool supportsBands(Variant variant) { return isFixedPoint(variant); }
 
-std::int32_t bandMarginRows(const BandConfig& config) { return config.fill ? kHoleFillReachRows : 0; }
+std::int32_t bandMarginRows(const BandConfig& config) {
+  return config.fill ? kHoleFillReachRows : 0;
+}
 
 std::size_t bandBufferWords(std::int32_t width, const BandConfig& config) {
-  return static_cast<std::size_t>(config.band_rows + 2 * bandMarginRows(config)) * static_cast<std::size_t>(width);
+  return static_cast<std::size_t>(config.band_rows + 2 * bandMarginRows(config)) *
+         static_cast<std::size_t>(width);
 }
 
 const char* describe(BandError error) {
   switch (error) {
-    case BandError::kNone: return "no error";
-    case BandError::kUnsupportedVariant: return "this variant does not draw bands (float reference)";
-    case BandError::kBadBandRows: return "band rows must be at least 1";
-    case BandError::kBufferTooSmall: return "band buffer or fill history too small";
-    case BandError::kOverflow: return "band coordinates would overflow 32 bits";
-    case BandError::kNoSink: return "no flush callback";
-    case BandError::kRefused: return "level, frame set-up or band index do not fit each other";
+    case BandError::kNone:
+      return "no error";
+    case BandError::kUnsupportedVariant:
+      return "this variant does not draw bands (float reference)";
+    case BandError::kBadBandRows:
+      return "band rows must be at least 1";
+    case BandError::kBufferTooSmall:
+      return "band buffer or fill history too small";
+    case BandError::kOverflow:
+      return "band coordinates would overflow 32 bits";
+    case BandError::kNoSink:
+      return "no flush callback";
+    case BandError::kRefused:
+      return "level, frame set-up or band index do not fit each other";
   }
   return "unknown error";
 }
 
 BandError renderBands(const LevelView& level, const FrameSetup& setup, const BandConfig& config,
-                      const BandIndex& index, const Rgb565Palette& palette, const BandBuffers& buffers,
-                      const BandSink& sink) {
+                      const BandIndex& index, const Rgb565Palette& palette,
+                      const BandBuffers& buffers, const BandSink& sink) {
   if (!supportsBands(config.variant)) return BandError::kUnsupportedVariant;
   if (config.band_rows < 1) return BandError::kBadBandRows;
   if (sink.flush == nullptr) return BandError::kNoSink;
@@ -192,14 +207,16 @@ BandError renderBands(const LevelView& level, const FrameSetup& setup, const Ban
   // index level down), whose root each subtree sets.
   FrameSetup work;
   // No band is shifted more than by the frame's last row: if that set-up fits, every band's does.
-  if (bandFrameSetup(setup, height - 1, 1, &work) != CameraError::kNone) return BandError::kOverflow;
+  if (bandFrameSetup(setup, height - 1, 1, &work) != CameraError::kNone)
+    return BandError::kOverflow;
   if (index.level > 0) {
     work = setup;
     work.depth = setup.depth - index.level;
     for (int l = 0; l < kMaxRenderDepth; ++l) {
       const int from = l + index.level;
       work.child_offset[static_cast<std::size_t>(l)] =
-          from < kMaxRenderDepth ? setup.child_offset[static_cast<std::size_t>(from)] : std::array<Vec3, 8>{};
+          from < kMaxRenderDepth ? setup.child_offset[static_cast<std::size_t>(from)]
+                                 : std::array<Vec3, 8>{};
     }
   }
   const std::uint32_t bridge_limit = config.fill ? bridgeDepthLimit(setup) : 0;
@@ -208,7 +225,8 @@ BandError renderBands(const LevelView& level, const FrameSetup& setup, const Ban
   int band_number = 0;
   for (std::int32_t y0 = 0; y0 < height; y0 += band_rows, ++band_number) {
     const std::int32_t rows = std::min(band_rows, height - y0);
-    const std::span<std::uint32_t> buffer = (band_number & 1) != 0 && buffer_count == 2 ? buffers.second : buffers.first;
+    const std::span<std::uint32_t> buffer =
+        (band_number & 1) != 0 && buffer_count == 2 ? buffers.second : buffers.first;
     if (band_number >= buffer_count && sink.wait != nullptr) sink.wait(sink.user, bytesOf(buffer));
     const std::int32_t window_y0 = std::max<std::int32_t>(0, y0 - margin);
     const std::int32_t window_rows = std::min(height, y0 + rows + margin) - window_y0;
@@ -227,20 +245,26 @@ BandError renderBands(const LevelView& level, const FrameSetup& setup, const Ban
       bool index_fits = false;
       if (config.variant == Variant::kFixedDelta) {
         FixedDeltaDecoder delta(work, window);
-        index_fits = IndexedBandWalk(level, setup, index, config.variant, work, window, window_y0, &delta).run();
+        index_fits =
+            IndexedBandWalk(level, setup, index, config.variant, work, window, window_y0, &delta)
+                .run();
       } else {
-        index_fits = IndexedBandWalk(level, setup, index, config.variant, work, window, window_y0, nullptr).run();
+        index_fits =
+            IndexedBandWalk(level, setup, index, config.variant, work, window, window_y0, nullptr)
+                .run();
       }
       if (!index_fits) return BandError::kRefused;  // on the first band: nothing flushed yet
     }
     const std::int32_t first_row = y0 - window_y0;  // the band's own rows in the window
     if (config.fill &&
-        fillHoleRows(window, first_row, first_row + rows, bridge_limit, buffers.fill_history).refused) {
+        fillHoleRows(window, first_row, first_row + rows, bridge_limit, buffers.fill_history)
+            .refused) {
       return BandError::kRefused;  // cannot happen: the rows lie in the window, the history fits
     }
     const std::size_t pixels = static_cast<std::size_t>(rows) * static_cast<std::size_t>(width);
     const std::span<std::uint8_t> rgb565 = bytesOf(buffer).first(pixels * 2);
-    packedToRgb565(buffer.data() + static_cast<std::ptrdiff_t>(first_row) * width, pixels, palette, rgb565.data());
+    packedToRgb565(buffer.data() + static_cast<std::ptrdiff_t>(first_row) * width, pixels, palette,
+                   rgb565.data());
     sink.flush(sink.user, y0, rows, rgb565);
   }
   return BandError::kNone;

@@ -32,13 +32,15 @@ inline constexpr bool kBitCountByTable = true;
 
 inline constexpr std::array<std::uint8_t, 256> kLowestSetBit = [] {
   std::array<std::uint8_t, 256> table{};
-  for (unsigned mask = 1; mask < 256; ++mask) table[mask] = static_cast<std::uint8_t>(std::countr_zero(mask));
+  for (unsigned mask = 1; mask < 256; ++mask)
+    table[mask] = static_cast<std::uint8_t>(std::countr_zero(mask));
   return table;
 }();
 
 inline constexpr std::array<std::uint8_t, 256> kSetBitCount = [] {
   std::array<std::uint8_t, 256> table{};
-  for (unsigned mask = 0; mask < 256; ++mask) table[mask] = static_cast<std::uint8_t>(std::popcount(mask));
+  for (unsigned mask = 0; mask < 256; ++mask)
+    table[mask] = static_cast<std::uint8_t>(std::popcount(mask));
   return table;
 }();
 

@@ -12,12 +12,18 @@ namespace octopoint {
 
 const char* describe(CameraError error) {
   switch (error) {
-    case CameraError::kNone: return "no error";
-    case CameraError::kBadViewport: return "framebuffer size outside 1..8192";
-    case CameraError::kBadZoom: return "zoom must be greater than 0";
-    case CameraError::kBadFractionBits: return "fraction bits outside the supported range";
-    case CameraError::kBadDepth: return "depth outside the supported range";
-    case CameraError::kOverflow: return "zoom or pan too large: coordinates would overflow 32 bits";
+    case CameraError::kNone:
+      return "no error";
+    case CameraError::kBadViewport:
+      return "framebuffer size outside 1..8192";
+    case CameraError::kBadZoom:
+      return "zoom must be greater than 0";
+    case CameraError::kBadFractionBits:
+      return "fraction bits outside the supported range";
+    case CameraError::kBadDepth:
+      return "depth outside the supported range";
+    case CameraError::kOverflow:
+      return "zoom or pan too large: coordinates would overflow 32 bits";
   }
   return "unknown error";
 }
@@ -31,8 +37,8 @@ std::int64_t edgePixelsQ16(const Camera& camera) {
 
 // Component `axis` of the offset from a level-`level` node to its child k, Q(32-F).F, or nullopt
 // when it does not fit 64 bits.
-std::optional<std::int64_t> childOffset(const Rotation& rotation, std::int64_t edge_px_q16, int level, int k,
-                                        int axis, int fraction_bits) {
+std::optional<std::int64_t> childOffset(const Rotation& rotation, std::int64_t edge_px_q16,
+                                        int level, int k, int axis, int fraction_bits) {
   const int sign[3] = {(k & 4) ? 1 : -1, (k & 2) ? 1 : -1, (k & 1) ? 1 : -1};
   // Row of R (Q1.30) dotted with the child's sign vector: Q2.30, |.| < 2^32.
   std::int64_t row_dot_sign = 0;
@@ -94,7 +100,8 @@ std::optional<SplatFootprint> leafFootprint(const Camera& camera, int depth, int
     for (int axis = 0; axis < 2; ++axis) {
       const std::optional<std::int64_t> value =
           childOffset(rotation, edge_px_q16, depth - 1, k, axis, fraction_bits);
-      if (!value || std::llabs(*value) > std::numeric_limits<std::int32_t>::max()) return std::nullopt;
+      if (!value || std::llabs(*value) > std::numeric_limits<std::int32_t>::max())
+        return std::nullopt;
       largest[axis] = std::max<std::int64_t>(largest[axis], std::llabs(*value));
     }
   }
@@ -102,7 +109,8 @@ std::optional<SplatFootprint> leafFootprint(const Camera& camera, int depth, int
 }
 
 CameraError buildFrameSetup(const Camera& camera, int depth, int fraction_bits, FrameSetup* setup) {
-  if (const CameraError error = checkCamera(camera, depth, fraction_bits); error != CameraError::kNone) {
+  if (const CameraError error = checkCamera(camera, depth, fraction_bits);
+      error != CameraError::kNone) {
     return error;
   }
   const Rotation rotation = rotationFromYawPitchRoll(camera.yaw, camera.pitch, camera.roll);
@@ -143,7 +151,8 @@ CameraError buildFrameSetup(const Camera& camera, int depth, int fraction_bits, 
   // A splat reaches at most its padded half extent (largest + depth + 1) and one pixel further
   // from a leaf (octopoint/camera.h); a leaf without one, only its own position.
   const SplatFootprint splat = splatFootprint(largest[0], largest[1], depth, fraction_bits);
-  const std::int64_t splat_margin = splat.active() ? depth + 1 + (std::int64_t{1} << fraction_bits) : 0;
+  const std::int64_t splat_margin =
+      splat.active() ? depth + 1 + (std::int64_t{1} << fraction_bits) : 0;
   const std::int64_t splat_reach[3] = {splat.active() ? largest[0] + splat_margin : 0,
                                        splat.active() ? largest[1] + splat_margin : 0, 0};
   // The z-buffer reserves INT32_MAX for "empty", hence the strict bound.

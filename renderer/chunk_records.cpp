@@ -1,7 +1,6 @@
-#include "octopoint/progressive.h"
-
 #include <algorithm>
 
+#include "octopoint/progressive.h"
 #include "renderer/crc32.h"
 #include "renderer/little_endian.h"
 

@@ -1,12 +1,11 @@
-#include "octopoint/progressive.h"
-
 #include <array>
 #include <cassert>
 
+#include "octopoint/model.h"
+#include "octopoint/progressive.h"
 #include "renderer/bit_scan.h"
 #include "renderer/crc32.h"
 #include "renderer/decode_algorithms.h"
-#include "octopoint/model.h"
 
 namespace octopoint {
 namespace {

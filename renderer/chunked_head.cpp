@@ -1,10 +1,9 @@
-#include "octopoint/progressive.h"
-
 #include <cstring>
 
+#include "octopoint/model.h"
+#include "octopoint/progressive.h"
 #include "renderer/crc32.h"
 #include "renderer/little_endian.h"
-#include "octopoint/model.h"
 
 namespace octopoint {
 namespace {

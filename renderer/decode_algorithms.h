@@ -2,9 +2,10 @@
 // The recursive octree decoders of docs/design.md section 4, written once for any position type:
 // instantiated with int32_t positions (Q(32-F).F screen pixels) they are the fixed variants, with a
 // floating point type (only in render_float_*.cpp) the reference variants the paper compares
-// against. Every algorithm walks the same depth-first stream: a node's child-mask byte, then its occupied
-// children's subtrees in order k = 0..7; a leaf takes the next payload from its cursor (the palette
-// index, and the normal index where the frame carries normals: renderer/leaf_cursor.h).
+// against. Every algorithm walks the same depth-first stream: a node's child-mask byte, then its
+// occupied children's subtrees in order k = 0..7; a leaf takes the next payload from its cursor
+// (the palette index, and the normal index where the frame carries normals:
+// renderer/leaf_cursor.h).
 //
 // Each algorithm polls the abort flag at tree level kAbortCheckLevel (and, once it was seen,
 // returns at every level above it), so a frame can be stopped within one level-3 subtree.
@@ -17,9 +18,9 @@
 #include <type_traits>
 #include <utility>
 
-#include "renderer/bit_scan.h"
-#include "octopoint/render.h"
 #include "octopoint/camera.h"
+#include "octopoint/render.h"
+#include "renderer/bit_scan.h"
 #include "renderer/leaf_cursor.h"
 
 namespace octopoint {
@@ -93,12 +94,14 @@ void visitUnrolled(DecodeState<T, Plot, Leaves>& s, int level, Point3<T> centre)
   if (level + 1 == s.depth) {
     [&]<std::size_t... k>(std::index_sequence<k...>) {
       ((mask & (1u << k) ? s.plot(centre + offsets[k], s.leaves.next()) : void()), ...);
-    }(std::make_index_sequence<8>{});
+    }
+    (std::make_index_sequence<8>{});
     return;
   }
   [&]<std::size_t... k>(std::index_sequence<k...>) {
     ((mask & (1u << k) ? visitUnrolled(s, level + 1, centre + offsets[k]) : void()), ...);
-  }(std::make_index_sequence<8>{});
+  }
+  (std::make_index_sequence<8>{});
 }
 
 // Algorithm 2 visiting only the set bits (count-trailing-zeros), so a sparse node costs its
@@ -109,7 +112,8 @@ void visitSetBits(DecodeState<T, Plot, Leaves>& s, int level, Point3<T> centre) 
   unsigned mask = *s.node++;
   const auto& offsets = s.offsets[static_cast<std::size_t>(level)];
   if (level + 1 == s.depth) {
-    for (; mask != 0; mask &= mask - 1) s.plot(centre + offsets[lowestChild(mask)], s.leaves.next());
+    for (; mask != 0; mask &= mask - 1)
+      s.plot(centre + offsets[lowestChild(mask)], s.leaves.next());
     return;
   }
   for (; mask != 0; mask &= mask - 1) {

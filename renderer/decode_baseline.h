@@ -7,8 +7,8 @@
 #include <cstdint>
 
 #include "octopoint/camera.h"
-#include "renderer/decode_algorithms.h"
 #include "octopoint/model.h"
+#include "renderer/decode_algorithms.h"
 
 namespace octopoint {
 
@@ -26,13 +26,16 @@ class BaselineWalk {
   bool run() {
     if constexpr (kWithNormals) {
       DecodeState<std::int32_t, ForwardToSink, ColourNormalLeaves> state{
-          level_.nodes.data(), ColourNormalLeaves{level_.leaves.data(), level_.normals.data()},
-          setup_.child_offset, setup_.depth, ForwardToSink{sink_}, abort_};
+          level_.nodes.data(),  ColourNormalLeaves{level_.leaves.data(), level_.normals.data()},
+          setup_.child_offset,  setup_.depth,
+          ForwardToSink{sink_}, abort_};
       visitBaseline(state, 0, setup_.root);
       return !state.aborted;
     } else {
-      DecodeState<std::int32_t, ForwardToSink> state{level_.nodes.data(), ColourLeaves{level_.leaves.data()},
-                                                     setup_.child_offset, setup_.depth, ForwardToSink{sink_}, abort_};
+      DecodeState<std::int32_t, ForwardToSink> state{
+          level_.nodes.data(),  ColourLeaves{level_.leaves.data()},
+          setup_.child_offset,  setup_.depth,
+          ForwardToSink{sink_}, abort_};
       visitBaseline(state, 0, setup_.root);
       return !state.aborted;
     }

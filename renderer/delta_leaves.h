@@ -22,8 +22,8 @@
 #include <array>
 #include <cstdint>
 
-#include "renderer/bit_scan.h"
 #include "octopoint/camera.h"
+#include "renderer/bit_scan.h"
 
 // The leaf loop in Thumb-1 assembly on ARMv6-M (a Cortex-M0+), unless a build says 0 to measure
 // or test the C++ loop there.
@@ -173,8 +173,10 @@ inline PackedCentre packedChild(const DeltaLeaves& leaves, const PackedCentre& p
 
 // Plots the children of an on-screen leaf parent whose packed centre is `parent`: `mask` its child
 // mask (non-zero), `leaf` its first palette index. Returns the next palette index.
-[[gnu::always_inline]] inline const std::uint8_t* plotDeltaLeaves(const DeltaLeaves& leaves, unsigned mask,
-                                           const std::uint8_t* leaf, const PackedCentre& parent) {
+[[gnu::always_inline]] inline const std::uint8_t* plotDeltaLeaves(const DeltaLeaves& leaves,
+                                                                  unsigned mask,
+                                                                  const std::uint8_t* leaf,
+                                                                  const PackedCentre& parent) {
 #if OCTOPOINT_THUMB1_LEAF_LOOP
   std::uint32_t q = parent.fraction;
   std::int32_t base = parent.index;
@@ -210,8 +212,9 @@ inline PackedCentre packedChild(const DeltaLeaves& leaves, const PackedCentre& p
 // first child's mask and first leaf, advanced past them. The leaf parents' centres come by
 // additions too (packedChild), so a leaf parent costs no shift or multiply either.
 [[gnu::always_inline]] inline void plotDeltaGrandchildren(const DeltaLeaves& leaves, unsigned mask,
-                                   const std::uint8_t*& node, const std::uint8_t*& leaf,
-                                   const PackedCentre& grandparent) {
+                                                          const std::uint8_t*& node,
+                                                          const std::uint8_t*& leaf,
+                                                          const PackedCentre& grandparent) {
 #if OCTOPOINT_THUMB1_LEAF_LOOP
   // In Thumb-1 around the leaf loop: what the loop over the leaf parents keeps (its mask, the node
   // cursor, the grandparent's packed centre) waits in a 24-byte frame of the assembly's own below

@@ -1,9 +1,8 @@
-#include "octopoint/interactive.h"
-
 #include <algorithm>
 #include <cassert>
 
 #include "octopoint/camera.h"
+#include "octopoint/interactive.h"
 #include "renderer/level_of_detail.h"
 
 namespace octopoint {
@@ -71,7 +70,8 @@ DualResolutionRenderer::DualResolutionRenderer(const LevelView& coarse, const Le
     : DualResolutionRenderer(nullptr, &coarse, &fine, {}, clock, config, std::move(render)) {}
 
 DualResolutionRenderer::DualResolutionRenderer(const ModelView& model, const Clock& clock,
-                                               const InteractiveConfig& config, RenderFunction render)
+                                               const InteractiveConfig& config,
+                                               RenderFunction render)
     : DualResolutionRenderer(&model, nullptr, nullptr, {}, clock, config, std::move(render)) {}
 
 DualResolutionRenderer::DualResolutionRenderer(ViewDrawFunction draw_view, const Clock& clock,
@@ -258,7 +258,8 @@ bool DualResolutionRenderer::draw(Slot& slot, Worker& worker, const std::atomic<
   if (draw_view_) {
     if (!draw_view_(slot.info.source, camera, slot.frame, abort, &slot.info.depth)) return false;
     if (slot.info.view.fill && slot.info.depth > 0 &&
-        buildFrameSetup(camera, slot.info.depth, kDefaultFractionBits, &setup) == CameraError::kNone &&
+        buildFrameSetup(camera, slot.info.depth, kDefaultFractionBits, &setup) ==
+            CameraError::kNone &&
         worker.filler.fill(slot.frame, bridgeDepthLimit(setup)).refused) {
       return false;  // cannot happen: fitBuffers made the filler as wide as the frame
     }
@@ -268,7 +269,8 @@ bool DualResolutionRenderer::draw(Slot& slot, Worker& worker, const std::atomic<
   }
   // The zoom is clamped, so the camera always fits; a refused camera would leave the frame empty.
   const LevelView* level = levelFor(slot.info.source, camera);
-  if (level != nullptr && buildFrameSetup(camera, level->depth, kDefaultFractionBits, &setup) == CameraError::kNone) {
+  if (level != nullptr &&
+      buildFrameSetup(camera, level->depth, kDefaultFractionBits, &setup) == CameraError::kNone) {
     slot.info.depth = level->depth;
     if (!render_(*level, setup, slot.frame, abort)) return false;
     // A refused fill cannot happen (fitBuffers made the filler as wide as the frame).

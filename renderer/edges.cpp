@@ -1,10 +1,9 @@
-#include "octopoint/styles.h"
-
 #include <algorithm>
 #include <cstdlib>
 
-#include "octopoint/fixed.h"
 #include "fixedpoint/trig.h"
+#include "octopoint/fixed.h"
+#include "octopoint/styles.h"
 
 namespace octopoint {
 

@@ -1,6 +1,5 @@
-#include "octopoint/styles.h"
-
 #include "octopoint/fixed.h"
+#include "octopoint/styles.h"
 
 namespace octopoint {
 namespace {

@@ -24,14 +24,16 @@ void FrameView::clear(PixelPayload payload) {
 
 void FrameView::widenDrawnRect(const PixelRect& bounds) {
   const PixelRect clipped{std::max<std::int32_t>(bounds.x_begin, 0), std::min(bounds.x_end, width_),
-                          std::max<std::int32_t>(bounds.y_begin, 0), std::min(bounds.y_end, height_)};
+                          std::max<std::int32_t>(bounds.y_begin, 0),
+                          std::min(bounds.y_end, height_)};
   if (clipped.empty()) return;
   if (drawn_.empty()) {
     drawn_ = clipped;
     return;
   }
-  drawn_ = PixelRect{std::min(drawn_.x_begin, clipped.x_begin), std::max(drawn_.x_end, clipped.x_end),
-                     std::min(drawn_.y_begin, clipped.y_begin), std::max(drawn_.y_end, clipped.y_end)};
+  drawn_ =
+      PixelRect{std::min(drawn_.x_begin, clipped.x_begin), std::max(drawn_.x_end, clipped.x_end),
+                std::min(drawn_.y_begin, clipped.y_begin), std::max(drawn_.y_end, clipped.y_end)};
 }
 
 void fillWords(std::uint32_t* words, std::size_t count, std::uint32_t value) {
@@ -61,7 +63,8 @@ bool validSize(std::int32_t width, std::int32_t height) {
 }  // namespace
 
 Framebuffer::Framebuffer(std::int32_t width, std::int32_t height)
-    : FrameView(nullptr, validSize(width, height) ? width : 0, validSize(width, height) ? height : 0),
+    : FrameView(nullptr, validSize(width, height) ? width : 0,
+                validSize(width, height) ? height : 0),
       storage_(pixelCount(), kEmpty) {
   pixel_ = storage_.data();
   drawn_ = PixelRect{};  // every pixel starts kEmpty

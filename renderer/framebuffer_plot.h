@@ -27,7 +27,9 @@ struct PlotTarget {
         depth_shift(setup.depth_shift) {}
 
   // FrameSetup::depthKey in two steps: z (Q(32-F).F) plus the bias, mod 2^32, then the shift.
-  std::uint32_t biasedDepth(std::int32_t z) const { return static_cast<std::uint32_t>(z) + depth_bias; }
+  std::uint32_t biasedDepth(std::int32_t z) const {
+    return static_cast<std::uint32_t>(z) + depth_bias;
+  }
   std::uint32_t depthKey(std::int32_t z) const { return biasedDepth(z) >> depth_shift; }
 
   std::uint32_t* pixel;
@@ -56,8 +58,8 @@ struct FixedPlot : PlotTarget {
     } else {
       assert(x >= 0 && x < width && y >= 0 && y < height);
     }
-    const std::size_t at = static_cast<std::size_t>(y) * static_cast<std::size_t>(width) +
-                           static_cast<std::size_t>(x);
+    const std::size_t at =
+        static_cast<std::size_t>(y) * static_cast<std::size_t>(width) + static_cast<std::size_t>(x);
     const std::uint32_t word = Framebuffer::packLeaf<kPayload>(depthKey(p.z), payload);
     if (word < pixel[at]) pixel[at] = word;
   }

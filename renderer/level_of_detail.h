@@ -53,7 +53,8 @@ std::optional<int> autoDepth(std::span<const int> stored_depths, const Camera& c
 // finest depth). nullopt when the camera is refused at every depth.
 std::optional<int> neededDepth(const Camera& camera);
 
-// The level of `model` that autoDepth picks among its densely sampled depths; nullptr when the camera is refused at every depth.
+// The level of `model` that autoDepth picks among its densely sampled depths; nullptr when the
+// camera is refused at every depth.
 const LevelView* autoLevel(const ModelView& model, const Camera& camera);
 
 }  // namespace octopoint

@@ -16,26 +16,46 @@ using model_bytes::readU32;
 
 const char* describe(ModelError error) {
   switch (error) {
-    case ModelError::kNone: return "no error";
-    case ModelError::kTruncatedHeader: return "truncated header";
-    case ModelError::kBadMagic: return "not an octopoint model (bad magic)";
-    case ModelError::kUnsupportedVersion: return "unsupported format version";
-    case ModelError::kBadLevelCount: return "bad level count";
-    case ModelError::kBadReservedField: return "reserved field is not zero";
-    case ModelError::kBadPaletteCount: return "bad palette colour count";
-    case ModelError::kBadDepth: return "depth outside the supported range";
-    case ModelError::kDepthsNotAscending: return "level depths are not strictly ascending";
-    case ModelError::kSizeMismatch: return "declared sizes do not match the data length";
-    case ModelError::kEmptyLevel: return "level has no nodes or no leaves";
-    case ModelError::kEmptyNode: return "inner node without children (zero mask byte)";
-    case ModelError::kStreamTruncated: return "node stream truncated";
-    case ModelError::kTrailingNodeBytes: return "trailing bytes after the node stream";
-    case ModelError::kLeafCountMismatch: return "leaf count does not match the tree";
-    case ModelError::kLeafOutsidePalette: return "leaf colour index outside the palette";
-    case ModelError::kImplausibleLevelSize: return "node bytes and leaf count impossible for the depth";
-    case ModelError::kBadNormalCount: return "bad normal count";
-    case ModelError::kBadNormalVector: return "normal palette entry is not a unit vector";
-    case ModelError::kNormalOutsidePalette: return "leaf normal index outside the normal palette";
+    case ModelError::kNone:
+      return "no error";
+    case ModelError::kTruncatedHeader:
+      return "truncated header";
+    case ModelError::kBadMagic:
+      return "not an octopoint model (bad magic)";
+    case ModelError::kUnsupportedVersion:
+      return "unsupported format version";
+    case ModelError::kBadLevelCount:
+      return "bad level count";
+    case ModelError::kBadReservedField:
+      return "reserved field is not zero";
+    case ModelError::kBadPaletteCount:
+      return "bad palette colour count";
+    case ModelError::kBadDepth:
+      return "depth outside the supported range";
+    case ModelError::kDepthsNotAscending:
+      return "level depths are not strictly ascending";
+    case ModelError::kSizeMismatch:
+      return "declared sizes do not match the data length";
+    case ModelError::kEmptyLevel:
+      return "level has no nodes or no leaves";
+    case ModelError::kEmptyNode:
+      return "inner node without children (zero mask byte)";
+    case ModelError::kStreamTruncated:
+      return "node stream truncated";
+    case ModelError::kTrailingNodeBytes:
+      return "trailing bytes after the node stream";
+    case ModelError::kLeafCountMismatch:
+      return "leaf count does not match the tree";
+    case ModelError::kLeafOutsidePalette:
+      return "leaf colour index outside the palette";
+    case ModelError::kImplausibleLevelSize:
+      return "node bytes and leaf count impossible for the depth";
+    case ModelError::kBadNormalCount:
+      return "bad normal count";
+    case ModelError::kBadNormalVector:
+      return "normal palette entry is not a unit vector";
+    case ModelError::kNormalOutsidePalette:
+      return "leaf normal index outside the normal palette";
   }
   return "unknown error";
 }
@@ -115,8 +135,8 @@ namespace {
 
 // Where level `index`'s problem lies in a whole model image starting at `file`: in its node
 // stream, its leaves, or its row of the level table (depth, then node bytes, then leaf count).
-std::size_t fileOffsetOf(const ModelIssue& issue, const LevelView& level, int index, const std::uint8_t* file,
-                         std::size_t table_at) {
+std::size_t fileOffsetOf(const ModelIssue& issue, const LevelView& level, int index,
+                         const std::uint8_t* file, std::size_t table_at) {
   const std::size_t row = table_at + format::kLevelRowBytes * static_cast<std::size_t>(index);
   switch (issue.error) {
     case ModelError::kEmptyNode:
@@ -127,16 +147,20 @@ std::size_t fileOffsetOf(const ModelIssue& issue, const LevelView& level, int in
       return static_cast<std::size_t>(level.leaves.data() - file) + issue.offset;
     case ModelError::kNormalOutsidePalette:
       return static_cast<std::size_t>(level.normals.data() - file) + issue.offset;
-    case ModelError::kLeafCountMismatch: return row + 8;
+    case ModelError::kLeafCountMismatch:
+      return row + 8;
     case ModelError::kEmptyLevel:
-    case ModelError::kImplausibleLevelSize: return row + 4;
-    default: return row;  // the depth
+    case ModelError::kImplausibleLevelSize:
+      return row + 4;
+    default:
+      return row;  // the depth
   }
 }
 
 }  // namespace
 
-bool ModelView::validateLevels(ModelView& view, ModelIssue* issue, const std::uint8_t* file, std::size_t table_at) {
+bool ModelView::validateLevels(ModelView& view, ModelIssue* issue, const std::uint8_t* file,
+                               std::size_t table_at) {
   int previous_depth = 0;
   for (int i = 0; i < view.level_count_; ++i) {
     const LevelView& level = view.level(i);
@@ -161,11 +185,13 @@ bool ModelView::validateLevels(ModelView& view, ModelIssue* issue, const std::ui
   return true;
 }
 
-bool ModelView::validateNormalPalette(const ModelView& view, ModelIssue* issue, std::size_t offset) {
+bool ModelView::validateNormalPalette(const ModelView& view, ModelIssue* issue,
+                                      std::size_t offset) {
   constexpr std::int64_t kOneSquared = std::int64_t{format::kNormalOne} * format::kNormalOne;
   for (int i = 0; i < view.normal_count_; ++i) {
     const NormalQ14 n = view.normal(i);
-    const std::int64_t squared = std::int64_t{n.x} * n.x + std::int64_t{n.y} * n.y + std::int64_t{n.z} * n.z;
+    const std::int64_t squared =
+        std::int64_t{n.x} * n.x + std::int64_t{n.y} * n.y + std::int64_t{n.z} * n.z;
     if (squared < kOneSquared - format::kNormalLengthTolerance ||
         squared > kOneSquared + format::kNormalLengthTolerance) {
       return fail(issue, ModelError::kBadNormalVector,
@@ -175,10 +201,11 @@ bool ModelView::validateNormalPalette(const ModelView& view, ModelIssue* issue, 
   return true;
 }
 
-bool ModelView::readLevels(std::span<const std::uint8_t> bytes, std::size_t table_at, ModelView& view,
-                           ModelIssue* issue) {
+bool ModelView::readLevels(std::span<const std::uint8_t> bytes, std::size_t table_at,
+                           ModelView& view, ModelIssue* issue) {
   const std::uint8_t* p = bytes.data();
-  const std::size_t table_end = table_at + format::kLevelRowBytes * static_cast<std::size_t>(view.level_count_);
+  const std::size_t table_end =
+      table_at + format::kLevelRowBytes * static_cast<std::size_t>(view.level_count_);
   if (bytes.size() < table_end) return fail(issue, ModelError::kTruncatedHeader, bytes.size());
   const bool with_normals = view.normal_count_ > 0;
   // Sizes are added in 64 bits: three u32 counts per level cannot overflow it, so a hostile
@@ -205,11 +232,13 @@ bool ModelView::readLevels(std::span<const std::uint8_t> bytes, std::size_t tabl
     level.normals = at(data_at + node_bytes + leaf_count, normal_bytes);
     data_at += node_bytes + leaf_count + normal_bytes;
   }
-  if (data_at != bytes.size()) return fail(issue, ModelError::kSizeMismatch, static_cast<std::size_t>(data_at));
+  if (data_at != bytes.size())
+    return fail(issue, ModelError::kSizeMismatch, static_cast<std::size_t>(data_at));
   return true;
 }
 
-std::optional<ModelView> ModelView::fromBytes(std::span<const std::uint8_t> bytes, ModelIssue* issue) {
+std::optional<ModelView> ModelView::fromBytes(std::span<const std::uint8_t> bytes,
+                                              ModelIssue* issue) {
   // Magic and version first: they decide how every other byte is read.
   if (bytes.size() < 6) {
     fail(issue, ModelError::kTruncatedHeader, bytes.size());
@@ -222,9 +251,15 @@ std::optional<ModelView> ModelView::fromBytes(std::span<const std::uint8_t> byte
   ModelView view;
   std::size_t table_at = 0;
   switch (readU16(bytes.data() + 4)) {
-    case format::kVersion1: table_at = readHeaderV1(bytes, view, issue); break;
-    case format::kVersion2: table_at = readHeaderV2(bytes, view, issue); break;
-    default: fail(issue, ModelError::kUnsupportedVersion, 4); return std::nullopt;
+    case format::kVersion1:
+      table_at = readHeaderV1(bytes, view, issue);
+      break;
+    case format::kVersion2:
+      table_at = readHeaderV2(bytes, view, issue);
+      break;
+    default:
+      fail(issue, ModelError::kUnsupportedVersion, 4);
+      return std::nullopt;
   }
   if (table_at == 0 || !readLevels(bytes, table_at, view, issue) ||
       !validateLevels(view, issue, bytes.data(), table_at)) {
@@ -271,15 +306,17 @@ std::optional<ModelView> ModelView::fromEmbedded(const EmbeddedModel& model, Mod
   view.level_count_ = model.level_count;
   for (int i = 0; i < view.level_count_; ++i) {
     const EmbeddedLevel& source = model.levels[i];
-    if (source.nodes == nullptr || source.leaves == nullptr || with_normals != (source.normals != nullptr)) {
+    if (source.nodes == nullptr || source.leaves == nullptr ||
+        with_normals != (source.normals != nullptr)) {
       fail(issue, ModelError::kEmptyLevel, 0, source.depth);
       return std::nullopt;
     }
-    view.levels_[static_cast<std::size_t>(i)] = LevelView{
-        source.depth,
-        {source.nodes, source.node_bytes},
-        {source.leaves, source.leaf_count},
-        with_normals ? std::span<const std::uint8_t>{source.normals, source.leaf_count} : std::span<const std::uint8_t>{}};
+    view.levels_[static_cast<std::size_t>(i)] =
+        LevelView{source.depth,
+                  {source.nodes, source.node_bytes},
+                  {source.leaves, source.leaf_count},
+                  with_normals ? std::span<const std::uint8_t>{source.normals, source.leaf_count}
+                               : std::span<const std::uint8_t>{}};
   }
   if (!validateLevels(view, issue, nullptr, 0)) return std::nullopt;
   view.indexSubtrees();
@@ -290,7 +327,8 @@ std::optional<ModelView> ModelView::fromEmbedded(const EmbeddedModel& model, Mod
 void ModelView::indexSubtrees() {
 #if !defined(OCTOPOINT_BARE_METAL)
   std::size_t total = 0;
-  for (int i = 0; i < level_count_; ++i) total += skipIndexEntries(levels_[static_cast<std::size_t>(i)]);
+  for (int i = 0; i < level_count_; ++i)
+    total += skipIndexEntries(levels_[static_cast<std::size_t>(i)]);
   if (total == 0) return;
   auto ends = std::make_shared<std::vector<SubtreeEnd>>(total);
   std::span<SubtreeEnd> free = *ends;
@@ -310,14 +348,16 @@ Rgb ModelView::paletteColour(int index) const {
 
 NormalQ14 ModelView::normal(int index) const {
   const auto at = 3 * static_cast<std::size_t>(index);
-  if (normal_values_ != nullptr) return {normal_values_[at], normal_values_[at + 1], normal_values_[at + 2]};
+  if (normal_values_ != nullptr)
+    return {normal_values_[at], normal_values_[at + 1], normal_values_[at + 2]};
   const std::uint8_t* entry = normal_bytes_ + 2 * at;
   return {readI16(entry), readI16(entry + 2), readI16(entry + 4)};
 }
 
 const LevelView* ModelView::levelOfDepth(int depth) const {
   for (int i = 0; i < level_count_; ++i) {
-    if (levels_[static_cast<std::size_t>(i)].depth == depth) return &levels_[static_cast<std::size_t>(i)];
+    if (levels_[static_cast<std::size_t>(i)].depth == depth)
+      return &levels_[static_cast<std::size_t>(i)];
   }
   return nullptr;
 }

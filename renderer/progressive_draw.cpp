@@ -12,8 +12,8 @@
 #include <algorithm>
 #include <cstdlib>
 
-#include "renderer/level_of_detail.h"
 #include "octopoint/progressive.h"
+#include "renderer/level_of_detail.h"
 
 namespace octopoint {
 namespace {
@@ -75,9 +75,8 @@ std::optional<int> ProgressiveModel::wantedDepth(const ProgressiveTables& tables
                                                  const Camera& camera) const {
   const auto known = static_cast<std::size_t>(tables.known_levels);
   const std::size_t dense = denseDepthCount(std::span(tables.points).first(known));
-  const std::size_t candidates = dense < known && !every_stored_depth_
-                                     ? dense
-                                     : static_cast<std::size_t>(head_.level_count);
+  const std::size_t candidates =
+      dense < known && !every_stored_depth_ ? dense : static_cast<std::size_t>(head_.level_count);
   std::array<int, chunked::kMaxChunkedLevels> depths{};
   for (std::size_t j = 0; j < candidates; ++j) depths[j] = levelDepth(static_cast<int>(j));
   return autoDepth(std::span<const int>(depths.data(), candidates), camera);

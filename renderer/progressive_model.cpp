@@ -1,9 +1,9 @@
 // ProgressiveModel: taking record tables and chunks, and joining each chunk to the coarser stream
 // it refines. Drawing and fetch priorities are in progressive_draw.cpp.
-#include "octopoint/progressive.h"
-
 #include <algorithm>
 #include <cassert>
+
+#include "octopoint/progressive.h"
 
 namespace octopoint {
 
@@ -295,7 +295,8 @@ std::optional<ProgressiveModel> progressiveModelFromPrefix(std::span<const std::
                                                            ChunkedIssue* issue) {
   std::optional<ProgressiveModel> model = ProgressiveModel::fromHead(bytes, issue);
   if (!model) return std::nullopt;
-  // Where the reading stopped is not needed: `issue` says why, and the model keeps what came before.
+  // Where the reading stopped is not needed: `issue` says why, and the model keeps what came
+  // before.
   static_cast<void>(model->acceptBytes(0, bytes, issue));
   return model;
 }

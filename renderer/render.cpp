@@ -1,6 +1,5 @@
 #include "octopoint/render.h"
 
-
 #include <array>
 #include <vector>
 
@@ -8,22 +7,31 @@ namespace octopoint {
 namespace {
 
 constexpr std::array kVariants = {
-    VariantInfo{Variant::kFixedBaseline, "fixed_baseline", "Algorithm 1: integer recursion down to each leaf"},
-    VariantInfo{Variant::kFixedLeafCall, "fixed_leafcall", "Algorithm 2: leaf parents set their children's pixels"},
-    VariantInfo{Variant::kFixedUnrolled, "fixed_unrolled", "Algorithm 2 with the 8-way child loop unrolled"},
-    VariantInfo{Variant::kFixedSetBits, "fixed_setbits", "Algorithm 2 visiting only the set bits of each mask"},
+    VariantInfo{Variant::kFixedBaseline, "fixed_baseline",
+                "Algorithm 1: integer recursion down to each leaf"},
+    VariantInfo{Variant::kFixedLeafCall, "fixed_leafcall",
+                "Algorithm 2: leaf parents set their children's pixels"},
+    VariantInfo{Variant::kFixedUnrolled, "fixed_unrolled",
+                "Algorithm 2 with the 8-way child loop unrolled"},
+    VariantInfo{Variant::kFixedSetBits, "fixed_setbits",
+                "Algorithm 2 visiting only the set bits of each mask"},
     VariantInfo{Variant::kFixedClipped, "fixed_clipped",
                 "set bits + hierarchical clipping (no bounds checks for subtrees on screen)"},
     VariantInfo{Variant::kFixedFast, "fixed_fast",
                 "clipped, state in registers, no call per leaf parent: the fastest portable one"},
-    VariantInfo{Variant::kFixedDelta, "fixed_delta",
-                "fast's walk, each leaf's pixel from per-child index deltas and packed sub-pixel carries: "
-                "the fastest on few registers (Cortex-M0+)"},
+    VariantInfo{
+        Variant::kFixedDelta, "fixed_delta",
+        "fast's walk, each leaf's pixel from per-child index deltas and packed sub-pixel carries: "
+        "the fastest on few registers (Cortex-M0+)"},
     VariantInfo{Variant::kFixedSimd, "fixed_simd",
-                "clipped walk, three levels per call, eight children at once in AVX2 lanes, branch-free batched plot (x86-64)"},
-    VariantInfo{Variant::kFloatBaseline, "float_baseline", "Algorithm 1 in floating point (reference)"},
-    VariantInfo{Variant::kFloatLeafCall, "float_leafcall", "Algorithm 2 in floating point (reference)"},
-    VariantInfo{Variant::kFloatUnrolled, "float_unrolled", "Algorithm 2 unrolled, floating point (reference)"},
+                "clipped walk, three levels per call, eight children at once in AVX2 lanes, "
+                "branch-free batched plot (x86-64)"},
+    VariantInfo{Variant::kFloatBaseline, "float_baseline",
+                "Algorithm 1 in floating point (reference)"},
+    VariantInfo{Variant::kFloatLeafCall, "float_leafcall",
+                "Algorithm 2 in floating point (reference)"},
+    VariantInfo{Variant::kFloatUnrolled, "float_unrolled",
+                "Algorithm 2 unrolled, floating point (reference)"},
 };
 
 }  // namespace
@@ -46,32 +54,49 @@ std::optional<Variant> variantFromName(std::string_view name) {
   return std::nullopt;
 }
 
-Variant defaultVariant() { return simdDecoderAvailable() ? Variant::kFixedSimd : Variant::kFixedFast; }
+Variant defaultVariant() {
+  return simdDecoderAvailable() ? Variant::kFixedSimd : Variant::kFixedFast;
+}
 
-bool drawsSplats(Variant variant) { return variant == Variant::kFixedFast || variant == Variant::kFixedSimd; }
+bool drawsSplats(Variant variant) {
+  return variant == Variant::kFixedFast || variant == Variant::kFixedSimd;
+}
 
 bool drawsNormals(Variant variant) { return variant != Variant::kFixedDelta; }
 
-bool renderLevel(Variant variant, const LevelView& level, const FrameSetup& setup,
-                 FrameView& frame, const std::atomic<bool>* abort) {
-  if (checkRender(level, setup, frame) != RenderError::kNone) return false;  // refused, nothing drawn
+bool renderLevel(Variant variant, const LevelView& level, const FrameSetup& setup, FrameView& frame,
+                 const std::atomic<bool>* abort) {
+  if (checkRender(level, setup, frame) != RenderError::kNone)
+    return false;  // refused, nothing drawn
   switch (variant) {
-    case Variant::kFixedBaseline: return renderFixedBaseline(level, setup, frame, abort);
-    case Variant::kFixedLeafCall: return renderFixedLeafCall(level, setup, frame, abort);
-    case Variant::kFixedUnrolled: return renderFixedUnrolled(level, setup, frame, abort);
-    case Variant::kFixedSetBits: return renderFixedSetBits(level, setup, frame, abort);
-    case Variant::kFixedClipped: return renderFixedClipped(level, setup, frame, abort);
-    case Variant::kFixedFast: return renderFixedFast(level, setup, frame, abort);
-    case Variant::kFixedDelta: return renderFixedDelta(level, setup, frame, abort);
-    case Variant::kFixedSimd: return renderFixedSimd(level, setup, frame, abort);
+    case Variant::kFixedBaseline:
+      return renderFixedBaseline(level, setup, frame, abort);
+    case Variant::kFixedLeafCall:
+      return renderFixedLeafCall(level, setup, frame, abort);
+    case Variant::kFixedUnrolled:
+      return renderFixedUnrolled(level, setup, frame, abort);
+    case Variant::kFixedSetBits:
+      return renderFixedSetBits(level, setup, frame, abort);
+    case Variant::kFixedClipped:
+      return renderFixedClipped(level, setup, frame, abort);
+    case Variant::kFixedFast:
+      return renderFixedFast(level, setup, frame, abort);
+    case Variant::kFixedDelta:
+      return renderFixedDelta(level, setup, frame, abort);
+    case Variant::kFixedSimd:
+      return renderFixedSimd(level, setup, frame, abort);
 #ifndef OCTOPOINT_INTEGER_ONLY
-    case Variant::kFloatBaseline: return renderFloatBaseline(level, setup, frame, abort);
-    case Variant::kFloatLeafCall: return renderFloatLeafCall(level, setup, frame, abort);
-    case Variant::kFloatUnrolled: return renderFloatUnrolled(level, setup, frame, abort);
+    case Variant::kFloatBaseline:
+      return renderFloatBaseline(level, setup, frame, abort);
+    case Variant::kFloatLeafCall:
+      return renderFloatLeafCall(level, setup, frame, abort);
+    case Variant::kFloatUnrolled:
+      return renderFloatUnrolled(level, setup, frame, abort);
 #else  // bare metal (docs/device.md): the float references are not built
     case Variant::kFloatBaseline:
     case Variant::kFloatLeafCall:
-    case Variant::kFloatUnrolled: return false;
+    case Variant::kFloatUnrolled:
+      return false;
 #endif
   }
   return false;
@@ -81,8 +106,10 @@ bool isFixedPoint(Variant variant) {
   switch (variant) {
     case Variant::kFloatBaseline:
     case Variant::kFloatLeafCall:
-    case Variant::kFloatUnrolled: return false;
-    default: return true;
+    case Variant::kFloatUnrolled:
+      return false;
+    default:
+      return true;
   }
 }
 

@@ -1,20 +1,25 @@
-#include "octopoint/render.h"
-
 #include <algorithm>
 #include <cstdlib>
 #include <limits>
 
+#include "octopoint/render.h"
 
 namespace octopoint {
 
 const char* describe(RenderError error) {
   switch (error) {
-    case RenderError::kNone: return "no error";
-    case RenderError::kBadSetup: return "frame set-up not made by buildFrameSetup (sizes, depth or offsets out of range)";
-    case RenderError::kFrameSizeMismatch: return "framebuffer size differs from the frame set-up's";
-    case RenderError::kDepthMismatch: return "level depth differs from the frame set-up's";
-    case RenderError::kImplausibleLevel: return "level sizes impossible for its depth";
-    case RenderError::kLevelWithoutNormals: return "frame carries normals and the level has none";
+    case RenderError::kNone:
+      return "no error";
+    case RenderError::kBadSetup:
+      return "frame set-up not made by buildFrameSetup (sizes, depth or offsets out of range)";
+    case RenderError::kFrameSizeMismatch:
+      return "framebuffer size differs from the frame set-up's";
+    case RenderError::kDepthMismatch:
+      return "level depth differs from the frame set-up's";
+    case RenderError::kImplausibleLevel:
+      return "level sizes impossible for its depth";
+    case RenderError::kLevelWithoutNormals:
+      return "frame carries normals and the level has none";
   }
   return "unknown error";
 }
@@ -28,7 +33,8 @@ RenderError checkFrameSetup(const FrameSetup& setup) {
   // The bound buildFrameSetup proves (renderer/camera.cpp), on the offsets as they are now: no sum
   // of the root and one offset per level, nor a splat's reach from it, may wrap 32 bits.
   constexpr std::int64_t kLimit = std::numeric_limits<std::int32_t>::max();
-  std::int64_t worst[3] = {std::llabs(setup.root.x), std::llabs(setup.root.y), std::llabs(setup.root.z)};
+  std::int64_t worst[3] = {std::llabs(setup.root.x), std::llabs(setup.root.y),
+                           std::llabs(setup.root.z)};
   std::int64_t largest[3] = {0, 0, 0};
   for (int level = 0; level < setup.depth; ++level) {
     largest[0] = largest[1] = largest[2] = 0;
@@ -46,7 +52,8 @@ RenderError checkFrameSetup(const FrameSetup& setup) {
   if (splat.span_x < 0 || splat.span_y < 0) return RenderError::kBadSetup;
   const std::int64_t reach[3] = {
       std::max(std::llabs(splat.offset_x), std::llabs(std::int64_t{splat.offset_x} + splat.span_x)),
-      std::max(std::llabs(splat.offset_y), std::llabs(std::int64_t{splat.offset_y} + splat.span_y)), 0};
+      std::max(std::llabs(splat.offset_y), std::llabs(std::int64_t{splat.offset_y} + splat.span_y)),
+      0};
   for (int axis = 0; axis < 3; ++axis) {
     if (worst[axis] + reach[axis] >= kLimit) return RenderError::kBadSetup;
   }
@@ -55,12 +62,14 @@ RenderError checkFrameSetup(const FrameSetup& setup) {
 
 RenderError checkRender(const LevelView& level, const FrameSetup& setup, const FrameView& frame) {
   if (const RenderError error = checkFrameSetup(setup); error != RenderError::kNone) return error;
-  if (frame.width() != setup.width || frame.height() != setup.height) return RenderError::kFrameSizeMismatch;
+  if (frame.width() != setup.width || frame.height() != setup.height)
+    return RenderError::kFrameSizeMismatch;
   if (level.depth != setup.depth) return RenderError::kDepthMismatch;
   if (!plausibleLevelSize(level.depth, level.nodes.size(), level.leaves.size())) {
     return RenderError::kImplausibleLevel;
   }
-  if (frame.payload() == PixelPayload::kColourNormal && level.normals.size() != level.leaves.size()) {
+  if (frame.payload() == PixelPayload::kColourNormal &&
+      level.normals.size() != level.leaves.size()) {
     return RenderError::kLevelWithoutNormals;
   }
   return RenderError::kNone;

@@ -9,9 +9,9 @@
 //   there is no call per leaf parent.
 #include "renderer/render_fixed_delta.h"
 
+#include "octopoint/render.h"
 #include "renderer/bit_scan.h"
 #include "renderer/decode_algorithms.h"
-#include "octopoint/render.h"
 
 namespace octopoint {
 namespace {

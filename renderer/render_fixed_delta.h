@@ -16,9 +16,9 @@
 #include <cstdint>
 
 #include "octopoint/camera.h"
-#include "renderer/delta_leaves.h"
 #include "octopoint/framebuffer.h"
 #include "octopoint/model.h"
+#include "renderer/delta_leaves.h"
 #include "renderer/subtree_clip.h"
 
 namespace octopoint {
@@ -42,7 +42,7 @@ class FixedDeltaDecoder {
   const SubtreeClip& clip() const { return clip_; }
 
  private:
-  bool accepted_;             // the set-up and frame passed the checks
+  bool accepted_;            // the set-up and frame passed the checks
   const FrameSetup& setup_;  // the caller's, or when refused an empty one (nothing to prepare)
   SubtreeClip clip_;
   DeltaLeaves leaves_;

@@ -1,5 +1,5 @@
-// fixed_fast: the fastest portable integer decoder (fixed_simd, AVX2 only, is faster). Same frame as
-// fixed_baseline, bit for bit.
+// fixed_fast: the fastest portable integer decoder (fixed_simd, AVX2 only, is faster). Same frame
+// as fixed_baseline, bit for bit.
 //
 // What makes it fast, each measured in bench/render_bench.cpp against the plainer variants:
 // - Algorithm 2 with set-bit iteration: a leaf parent plots its children in a loop over the set
@@ -23,10 +23,10 @@
 #include <type_traits>
 #include <utility>
 
+#include "octopoint/render.h"
 #include "renderer/bit_scan.h"
 #include "renderer/decode_algorithms.h"
 #include "renderer/framebuffer_plot.h"
-#include "octopoint/render.h"
 #include "renderer/skip_runs.h"
 #include "renderer/splat_plot.h"
 #include "renderer/subtree_clip.h"
@@ -62,7 +62,7 @@ struct FastFrame {
   SplatPlot splat;                        // used by the splat path only
   const std::uint8_t* colours = nullptr;  // NormalBesideColourLeaves: the level's palette indices
   const std::uint8_t* normals = nullptr;  // and its normal indices, one each per leaf
-  mutable OffScreenSkip off_screen;        // steps over off-screen subtrees (skip_runs.h)
+  mutable OffScreenSkip off_screen;       // steps over off-screen subtrees (skip_runs.h)
 };
 
 // The next leaf's payload (Framebuffer::packLeaf), and the cursor one leaf on.
@@ -75,8 +75,8 @@ inline std::uint32_t nextLeaf(const FastFrame& f, NormalBesideColourLeaves& leav
   return std::uint32_t{*colour} | std::uint32_t{f.normals[colour - f.colours]} << 8;
 }
 
-// A leaf parent at tree level `level` centred at `c` plots its children: one pixel each, or (kSplat)
-// each its footprint splat.
+// A leaf parent at tree level `level` centred at `c` plots its children: one pixel each, or
+// (kSplat) each its footprint splat.
 template <bool kChecked, bool kSplat, typename Leaves>
 Cursor<Leaves> plotChildren(const FastFrame& f, int level, Vec3 c, Cursor<Leaves> at) {
   if constexpr (kSplat) {
@@ -106,8 +106,8 @@ Cursor<Leaves> plotChildren(const FastFrame& f, int level, Vec3 c, Cursor<Leaves
         continue;
       }
     }
-    const std::size_t index = static_cast<std::size_t>(y) * static_cast<std::size_t>(width) +
-                              static_cast<std::size_t>(x);
+    const std::size_t index =
+        static_cast<std::size_t>(y) * static_cast<std::size_t>(width) + static_cast<std::size_t>(x);
     // FrameSetup::depthKey, inline: (z + bias) >> shift, mod 2^32.
     const std::uint32_t key = (static_cast<std::uint32_t>(c.z + d.z) + depth_bias) >> depth_shift;
     // Branch-free z-test: whether a point is nearer is a coin toss at depth 8 (about half are),
@@ -130,8 +130,9 @@ constexpr int kOnePixel = SplatPlot::kNoBox - 1;
 // (buildFrameSetup). A splat frame polls the abort flag after every leaf parent, as plotting them
 // one call each did.
 template <int kKernel, typename Leaves>
-__attribute__((always_inline)) inline Cursor<Leaves> plotGrandchildren(const FastFrame& f, int level, Vec3 c,
-                                                                      Cursor<Leaves> at) {
+__attribute__((always_inline)) inline Cursor<Leaves> plotGrandchildren(const FastFrame& f,
+                                                                       int level, Vec3 c,
+                                                                       Cursor<Leaves> at) {
   constexpr bool kSplat = kKernel != kOnePixel;
   const SplatPlot splat = f.splat;  // the splat's kernel reads its copy
   std::uint32_t* const pixel = f.target.pixel;
@@ -170,7 +171,8 @@ __attribute__((always_inline)) inline Cursor<Leaves> plotGrandchildren(const Fas
         kept = std::min(kept, word);  // branch-free z-test, as plotChildren
       }
     }
-    if (kSplat && f.abort != nullptr && (f.aborted = f.abort->load(std::memory_order_relaxed))) break;
+    if (kSplat && f.abort != nullptr && (f.aborted = f.abort->load(std::memory_order_relaxed)))
+      break;
   }
   return {node, leaves};
 }
@@ -180,14 +182,16 @@ __attribute__((always_inline)) inline Cursor<Leaves> plotGrandchildren(const Fas
 // the flag is seen), without a call each. Only where the grandparents do not poll otherwise
 // (below kAbortCheckLevel, or nobody can abort; visit checks).
 template <int kKernel, typename Leaves>
-__attribute__((always_inline)) inline Cursor<Leaves> plotGreatGrandchildren(const FastFrame& f, int level, Vec3 c,
-                                                                           Cursor<Leaves> at) {
+__attribute__((always_inline)) inline Cursor<Leaves> plotGreatGrandchildren(const FastFrame& f,
+                                                                            int level, Vec3 c,
+                                                                            Cursor<Leaves> at) {
   constexpr bool kSplat = kKernel != kOnePixel;
   const auto& offsets = (*f.offsets)[static_cast<std::size_t>(level)];
   unsigned mask = *at.node++;
   f.off_screen.enterChildren(level, mask);
   for (; mask != 0; mask &= mask - 1) {
-    if (kSplat && f.abort != nullptr && (f.aborted = f.abort->load(std::memory_order_relaxed))) break;
+    if (kSplat && f.abort != nullptr && (f.aborted = f.abort->load(std::memory_order_relaxed)))
+      break;
     at = plotGrandchildren<kKernel, Leaves>(f, level + 1, c + offsets[lowestChild(mask)], at);
     if (kSplat && f.aborted) break;
   }
@@ -198,21 +202,22 @@ __attribute__((always_inline)) inline Cursor<Leaves> plotGreatGrandchildren(cons
 // with the frame's leaf kernel: one pixel, or the splat's box kernel (SplatPlot::withBoxKernel,
 // chosen per call: a jump, not a test per leaf).
 template <int kKernel, typename Leaves>
-Cursor<Leaves> plotSubtreeWith(const FastFrame& f, int level, int levels_below, Vec3 c, Cursor<Leaves> at) {
+Cursor<Leaves> plotSubtreeWith(const FastFrame& f, int level, int levels_below, Vec3 c,
+                               Cursor<Leaves> at) {
   if (levels_below == 2) return plotGrandchildren<kKernel, Leaves>(f, level, c, at);
   return plotGreatGrandchildren<kKernel, Leaves>(f, level, c, at);
 }
 template <bool kSplat, typename Leaves, int... kBox>
-__attribute__((noinline)) Cursor<Leaves> plotSubtree(const FastFrame& f, int level, int levels_below, Vec3 c,
-                                                     Cursor<Leaves> at, std::integer_sequence<int, kBox...>) {
+__attribute__((noinline)) Cursor<Leaves> plotSubtree(const FastFrame& f, int level,
+                                                     int levels_below, Vec3 c, Cursor<Leaves> at,
+                                                     std::integer_sequence<int, kBox...>) {
   if constexpr (!kSplat) {
     return plotSubtreeWith<kOnePixel, Leaves>(f, level, levels_below, c, at);
   } else {
-    f.splat.withBoxKernel(std::integer_sequence<int, kBox...>{},
-                          [&](auto kernel) __attribute__((always_inline)) {
-                            at = plotSubtreeWith<decltype(kernel)::value, Leaves>(
-                                f, level, levels_below, c, at);
-                          });
+    f.splat.withBoxKernel(
+        std::integer_sequence<int, kBox...>{}, [&](auto kernel) __attribute__((always_inline)) {
+          at = plotSubtreeWith<decltype(kernel)::value, Leaves>(f, level, levels_below, c, at);
+        });
     return at;
   }
 }
@@ -229,7 +234,8 @@ using SubtreeBoxKernels = std::make_integer_sequence<int, kMostBoxSide * kMostBo
 template <bool kChecked, bool kSplat, typename Leaves>
 Cursor<Leaves> visit(const FastFrame& f, int level, Vec3 c, Cursor<Leaves> at) {
   if (level <= kAbortCheckLevel && f.abort != nullptr) {
-    if (!f.aborted && level == kAbortCheckLevel) f.aborted = f.abort->load(std::memory_order_relaxed);
+    if (!f.aborted && level == kAbortCheckLevel)
+      f.aborted = f.abort->load(std::memory_order_relaxed);
     if (f.aborted) return at;
   }
   // A splat frame's level-3 subtree may cover the whole screen: it polls at every node below too,
@@ -273,11 +279,19 @@ Cursor<Leaves> visit(const FastFrame& f, int level, Vec3 c, Cursor<Leaves> at) {
 
 bool renderFixedFast(const LevelView& level, const FrameSetup& setup, FrameView& frame,
                      const std::atomic<bool>* abort) {
-  if (checkRender(level, setup, frame) != RenderError::kNone) return false;  // refused, nothing drawn
+  if (checkRender(level, setup, frame) != RenderError::kNone)
+    return false;  // refused, nothing drawn
   const bool splat = setup.splat.active();
-  FastFrame f{PlotTarget(frame, setup), setup.depth, &setup.child_offset,
-              splat ? SubtreeClip(setup, setup.splat) : SubtreeClip(setup), abort, false, SplatPlot(frame, setup),
-              level.leaves.data(), level.normals.data(), OffScreenSkip(level)};
+  FastFrame f{PlotTarget(frame, setup),
+              setup.depth,
+              &setup.child_offset,
+              splat ? SubtreeClip(setup, setup.splat) : SubtreeClip(setup),
+              abort,
+              false,
+              SplatPlot(frame, setup),
+              level.leaves.data(),
+              level.normals.data(),
+              OffScreenSkip(level)};
   return withLeafCursor(level, frame, [&]<typename Given>(Given given) {
     // A normal frame's cursor: the palette index pointer alone (NormalBesideColourLeaves).
     using Leaves = std::conditional_t<std::is_same_v<Given, ColourNormalLeaves>,

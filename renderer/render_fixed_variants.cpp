@@ -1,9 +1,9 @@
 // The integer decoders: each draws bit-identical frames (tests/core/render_variants_test.cpp).
 
+#include "octopoint/render.h"
 #include "renderer/bit_scan.h"
 #include "renderer/decode_algorithms.h"
 #include "renderer/framebuffer_plot.h"
-#include "octopoint/render.h"
 #include "renderer/subtree_clip.h"
 
 namespace octopoint {
@@ -17,10 +17,15 @@ using InsidePlot = FixedPlot<false, Leaves::kPayload>;
 template <typename Visit>
 bool renderWith(Visit visit, const LevelView& level, const FrameSetup& setup, FrameView& frame,
                 const std::atomic<bool>* abort) {
-  if (checkRender(level, setup, frame) != RenderError::kNone) return false;  // refused, nothing drawn
+  if (checkRender(level, setup, frame) != RenderError::kNone)
+    return false;  // refused, nothing drawn
   return withLeafCursor(level, frame, [&]<typename Leaves>(Leaves leaves) {
-    DecodeState<std::int32_t, CheckedPlot<Leaves>, Leaves> state{
-        level.nodes.data(), leaves, setup.child_offset, setup.depth, CheckedPlot<Leaves>(frame, setup), abort};
+    DecodeState<std::int32_t, CheckedPlot<Leaves>, Leaves> state{level.nodes.data(),
+                                                                 leaves,
+                                                                 setup.child_offset,
+                                                                 setup.depth,
+                                                                 CheckedPlot<Leaves>(frame, setup),
+                                                                 abort};
     visit(state, 0, setup.root);
     return !state.aborted;
   });
@@ -34,10 +39,18 @@ class ClippedWalk {
  public:
   ClippedWalk(const LevelView& level, Leaves leaves, const FrameSetup& setup, FrameView& frame,
               const std::atomic<bool>* abort)
-      : checked_{level.nodes.data(), leaves, setup.child_offset, setup.depth,
-                 CheckedPlot<Leaves>(frame, setup), abort},
-        inside_{level.nodes.data(), leaves, setup.child_offset, setup.depth,
-                InsidePlot<Leaves>(frame, setup), abort},
+      : checked_{level.nodes.data(),
+                 leaves,
+                 setup.child_offset,
+                 setup.depth,
+                 CheckedPlot<Leaves>(frame, setup),
+                 abort},
+        inside_{level.nodes.data(),
+                leaves,
+                setup.child_offset,
+                setup.depth,
+                InsidePlot<Leaves>(frame, setup),
+                abort},
         clip_(setup) {}
 
   bool run(const Vec3& root) {
@@ -86,27 +99,32 @@ class ClippedWalk {
 
 bool renderFixedBaseline(const LevelView& level, const FrameSetup& setup, FrameView& frame,
                          const std::atomic<bool>* abort) {
-  return renderWith([](auto& s, int l, Vec3 p) { visitBaseline(s, l, p); }, level, setup, frame, abort);
+  return renderWith([](auto& s, int l, Vec3 p) { visitBaseline(s, l, p); }, level, setup, frame,
+                    abort);
 }
 
 bool renderFixedLeafCall(const LevelView& level, const FrameSetup& setup, FrameView& frame,
                          const std::atomic<bool>* abort) {
-  return renderWith([](auto& s, int l, Vec3 p) { visitLeafCall(s, l, p); }, level, setup, frame, abort);
+  return renderWith([](auto& s, int l, Vec3 p) { visitLeafCall(s, l, p); }, level, setup, frame,
+                    abort);
 }
 
 bool renderFixedUnrolled(const LevelView& level, const FrameSetup& setup, FrameView& frame,
                          const std::atomic<bool>* abort) {
-  return renderWith([](auto& s, int l, Vec3 p) { visitUnrolled(s, l, p); }, level, setup, frame, abort);
+  return renderWith([](auto& s, int l, Vec3 p) { visitUnrolled(s, l, p); }, level, setup, frame,
+                    abort);
 }
 
 bool renderFixedSetBits(const LevelView& level, const FrameSetup& setup, FrameView& frame,
                         const std::atomic<bool>* abort) {
-  return renderWith([](auto& s, int l, Vec3 p) { visitSetBits(s, l, p); }, level, setup, frame, abort);
+  return renderWith([](auto& s, int l, Vec3 p) { visitSetBits(s, l, p); }, level, setup, frame,
+                    abort);
 }
 
 bool renderFixedClipped(const LevelView& level, const FrameSetup& setup, FrameView& frame,
                         const std::atomic<bool>* abort) {
-  if (checkRender(level, setup, frame) != RenderError::kNone) return false;  // refused, nothing drawn
+  if (checkRender(level, setup, frame) != RenderError::kNone)
+    return false;  // refused, nothing drawn
   return withLeafCursor(level, frame, [&]<typename Leaves>(Leaves leaves) {
     return ClippedWalk<Leaves>(level, leaves, setup, frame, abort).run(setup.root);
   });

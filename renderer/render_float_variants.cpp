@@ -6,8 +6,8 @@
 #include <algorithm>
 #include <cmath>
 
-#include "renderer/decode_algorithms.h"
 #include "octopoint/render.h"
+#include "renderer/decode_algorithms.h"
 
 namespace octopoint {
 namespace {
@@ -34,9 +34,12 @@ FloatFrame floatFrameFrom(const FrameSetup& setup) {
   const float yaw = static_cast<float>(camera.yaw.turns16()) * kRadiansPerUnit;
   const float pitch = static_cast<float>(camera.pitch.turns16()) * kRadiansPerUnit;
   const float roll = static_cast<float>(camera.roll.turns16()) * kRadiansPerUnit;
-  const Matrix3 ry = {{{std::cos(yaw), 0, std::sin(yaw)}, {0, 1, 0}, {-std::sin(yaw), 0, std::cos(yaw)}}};
-  const Matrix3 rx = {{{1, 0, 0}, {0, std::cos(pitch), -std::sin(pitch)}, {0, std::sin(pitch), std::cos(pitch)}}};
-  const Matrix3 rz = {{{std::cos(roll), -std::sin(roll), 0}, {std::sin(roll), std::cos(roll), 0}, {0, 0, 1}}};
+  const Matrix3 ry = {
+      {{std::cos(yaw), 0, std::sin(yaw)}, {0, 1, 0}, {-std::sin(yaw), 0, std::cos(yaw)}}};
+  const Matrix3 rx = {
+      {{1, 0, 0}, {0, std::cos(pitch), -std::sin(pitch)}, {0, std::sin(pitch), std::cos(pitch)}}};
+  const Matrix3 rz = {
+      {{std::cos(roll), -std::sin(roll), 0}, {std::sin(roll), std::cos(roll), 0}, {0, 0, 1}}};
   const Matrix3 r = multiply(rz, multiply(rx, ry));
   const float edge_px = static_cast<float>(camera.zoom.raw()) / 65536.0f *
                         static_cast<float>(std::min(camera.width, camera.height));
@@ -50,7 +53,8 @@ FloatFrame floatFrameFrom(const FrameSetup& setup) {
       const float sign[3] = {k & 4 ? 1.0f : -1.0f, k & 2 ? 1.0f : -1.0f, k & 1 ? 1.0f : -1.0f};
       float v[3];
       for (std::size_t axis = 0; axis < 3; ++axis) {
-        v[axis] = (r[axis][0] * sign[0] + r[axis][1] * sign[1] + r[axis][2] * sign[2]) * half_child_px;
+        v[axis] =
+            (r[axis][0] * sign[0] + r[axis][1] * sign[1] + r[axis][2] * sign[2]) * half_child_px;
       }
       frame.offsets[static_cast<std::size_t>(level)][k] = {v[0], v[1], v[2]};
     }
@@ -73,8 +77,8 @@ struct FloatPlot {
     const auto x = static_cast<std::int32_t>(p.x);
     const auto y = static_cast<std::int32_t>(p.y);
     if (x >= width || y >= height) return;
-    const std::size_t at = static_cast<std::size_t>(y) * static_cast<std::size_t>(width) +
-                           static_cast<std::size_t>(x);
+    const std::size_t at =
+        static_cast<std::size_t>(y) * static_cast<std::size_t>(width) + static_cast<std::size_t>(x);
     const auto z = static_cast<std::int32_t>(std::clamp(p.z * z_scale, -z_limit, z_limit));
     const std::uint32_t word = Framebuffer::packLeaf<kPayload>(setup->depthKey(z), payload);
     if (word < pixel[at]) pixel[at] = word;
@@ -84,15 +88,17 @@ struct FloatPlot {
 template <typename Visit>
 bool renderFloatWith(Visit visit, const LevelView& level, const FrameSetup& setup, FrameView& frame,
                      const std::atomic<bool>* abort) {
-  if (checkRender(level, setup, frame) != RenderError::kNone) return false;  // refused, nothing drawn
+  if (checkRender(level, setup, frame) != RenderError::kNone)
+    return false;  // refused, nothing drawn
   const FloatFrame float_frame = floatFrameFrom(setup);
   // The largest float not above depth_bias: its conversion to int32 stays within the bias.
   const float z_limit = std::nextafter(static_cast<float>(setup.depth_bias), 0.0f);
   return withLeafCursor(level, frame, [&]<typename Leaves>(Leaves leaves) {
-    const FloatPlot<Leaves::kPayload> plot{frame.pixelData(), frame.width(), frame.height(),
-                                           std::ldexp(1.0f, setup.fraction_bits), z_limit, &setup};
-    DecodeState<float, FloatPlot<Leaves::kPayload>, Leaves> state{level.nodes.data(), leaves, float_frame.offsets,
-                                                                  setup.depth, plot, abort};
+    const FloatPlot<Leaves::kPayload> plot{frame.pixelData(), frame.width(),
+                                           frame.height(),    std::ldexp(1.0f, setup.fraction_bits),
+                                           z_limit,           &setup};
+    DecodeState<float, FloatPlot<Leaves::kPayload>, Leaves> state{
+        level.nodes.data(), leaves, float_frame.offsets, setup.depth, plot, abort};
     visit(state, 0, float_frame.root);
     return !state.aborted;
   });
@@ -102,20 +108,20 @@ bool renderFloatWith(Visit visit, const LevelView& level, const FrameSetup& setu
 
 bool renderFloatBaseline(const LevelView& level, const FrameSetup& setup, FrameView& frame,
                          const std::atomic<bool>* abort) {
-  return renderFloatWith([](auto& s, int l, Point3<float> p) { visitBaseline(s, l, p); }, level, setup,
-                         frame, abort);
+  return renderFloatWith([](auto& s, int l, Point3<float> p) { visitBaseline(s, l, p); }, level,
+                         setup, frame, abort);
 }
 
 bool renderFloatLeafCall(const LevelView& level, const FrameSetup& setup, FrameView& frame,
                          const std::atomic<bool>* abort) {
-  return renderFloatWith([](auto& s, int l, Point3<float> p) { visitLeafCall(s, l, p); }, level, setup,
-                         frame, abort);
+  return renderFloatWith([](auto& s, int l, Point3<float> p) { visitLeafCall(s, l, p); }, level,
+                         setup, frame, abort);
 }
 
 bool renderFloatUnrolled(const LevelView& level, const FrameSetup& setup, FrameView& frame,
                          const std::atomic<bool>* abort) {
-  return renderFloatWith([](auto& s, int l, Point3<float> p) { visitUnrolled(s, l, p); }, level, setup,
-                         frame, abort);
+  return renderFloatWith([](auto& s, int l, Point3<float> p) { visitUnrolled(s, l, p); }, level,
+                         setup, frame, abort);
 }
 
 }  // namespace octopoint

@@ -1,6 +1,6 @@
-#include "octopoint/framebuffer.h"
-
 #include <bit>
+
+#include "octopoint/framebuffer.h"
 
 namespace octopoint {
 namespace {

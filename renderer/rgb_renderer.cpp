@@ -12,26 +12,33 @@ std::optional<Q16> zoomRatio(std::int64_t numerator, std::int64_t denominator) {
 
 const char* describe(DrawError error) {
   switch (error) {
-    case DrawError::kNone: return "no error";
-    case DrawError::kBadCamera: return "camera refused";
-    case DrawError::kNoSuchDepth: return "no such depth in the model";
-    case DrawError::kRgbTooSmall: return "RGB buffer smaller than width x height x 3 bytes";
-    case DrawError::kRefused: return "render arguments refused";
+    case DrawError::kNone:
+      return "no error";
+    case DrawError::kBadCamera:
+      return "camera refused";
+    case DrawError::kNoSuchDepth:
+      return "no such depth in the model";
+    case DrawError::kRgbTooSmall:
+      return "RGB buffer smaller than width x height x 3 bytes";
+    case DrawError::kRefused:
+      return "render arguments refused";
   }
   return "unknown error";
 }
 
-DrawError RgbRenderer::draw(const ModelView& model, const Camera& camera, std::span<std::uint8_t> rgb,
-                            const DrawOptions& options) {
+DrawError RgbRenderer::draw(const ModelView& model, const Camera& camera,
+                            std::span<std::uint8_t> rgb, const DrawOptions& options) {
   camera_error_ = CameraError::kNone;
   render_error_ = RenderError::kNone;
   drawn_depth_ = 0;
-  const LevelView* level = options.depth == 0 ? autoLevel(model, camera) : model.levelOfDepth(options.depth);
+  const LevelView* level =
+      options.depth == 0 ? autoLevel(model, camera) : model.levelOfDepth(options.depth);
   if (level == nullptr) return DrawError::kNoSuchDepth;
   FrameSetup setup;
   camera_error_ = buildFrameSetup(camera, level->depth, kDefaultFractionBits, &setup);
   if (camera_error_ != CameraError::kNone) return DrawError::kBadCamera;
-  if (rgb.size() / 3 < static_cast<std::size_t>(camera.width) * static_cast<std::size_t>(camera.height)) {
+  if (rgb.size() / 3 <
+      static_cast<std::size_t>(camera.width) * static_cast<std::size_t>(camera.height)) {
     return DrawError::kRgbTooSmall;
   }
   // The frame follows the camera's size: allocated here only when that size changes.

@@ -1,8 +1,7 @@
-#include "octopoint/styles.h"
-
 #include <algorithm>
 
 #include "fixedpoint/trig.h"
+#include "octopoint/styles.h"
 
 namespace octopoint {
 namespace {

@@ -1,9 +1,8 @@
-#include "octopoint/model.h"
-
 #include <array>
 #include <limits>
 
 #include "octopoint/bands.h"
+#include "octopoint/model.h"
 #include "renderer/bit_scan.h"
 #include "renderer/decode_algorithms.h"
 
@@ -21,7 +20,8 @@ struct EndWalk {
   void visit(const std::uint8_t*& node, const std::uint8_t*& leaf, int level) {
     if (level == index_level) {
       skipSubtree(node, leaf, level, depth);
-      *out++ = {static_cast<std::uint32_t>(node - node_begin), static_cast<std::uint32_t>(leaf - leaf_begin)};
+      *out++ = {static_cast<std::uint32_t>(node - node_begin),
+                static_cast<std::uint32_t>(leaf - leaf_begin)};
       return;
     }
     for (int child = childCount(*node++); child > 0; --child) visit(node, leaf, level + 1);
@@ -47,7 +47,8 @@ std::size_t skipIndexEntries(const LevelView& level) {
 SkipIndex buildSkipIndex(const LevelView& level, std::span<SubtreeEnd> storage) {
   const std::size_t entries = skipIndexEntries(level);
   if (entries == 0 || storage.size() < entries) return {};
-  EndWalk walk{level.nodes.data(), level.leaves.data(), skipIndexLevel(level.depth), level.depth, storage.data()};
+  EndWalk walk{level.nodes.data(), level.leaves.data(), skipIndexLevel(level.depth), level.depth,
+               storage.data()};
   const std::uint8_t* node = walk.node_begin;
   const std::uint8_t* leaf = walk.leaf_begin;
   walk.visit(node, leaf, 0);

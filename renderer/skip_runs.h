@@ -20,10 +20,10 @@
 #include <cstring>
 #include <type_traits>
 
-#include "renderer/bit_scan.h"
 #include "octopoint/camera.h"
-#include "renderer/decode_algorithms.h"
 #include "octopoint/model.h"
+#include "renderer/bit_scan.h"
+#include "renderer/decode_algorithms.h"
 
 namespace octopoint {
 
@@ -88,18 +88,20 @@ void skipSubtreeByRuns(const std::uint8_t*& node_cursor, Leaves& leaves, int lev
   }
   std::size_t skipped = 0;  // leaves
   // A great-grandparent: each of its grandparents is a mask followed by its leaf parents' masks.
-  node_cursor = walkDownTo(node_cursor, great_grandparents, [&](unsigned mask, const std::uint8_t* node) {
-    for (int grandparents = childCount(mask); grandparents != 0; --grandparents) {
-      const auto parents = static_cast<unsigned>(childCount(*node++));
-      if (node_end - node >= 8) {
-        skipped += runBitCount(node, parents);
-        node += parents;
-      } else {  // the stream's last bytes: one at a time
-        for (unsigned k = 0; k < parents; ++k) skipped += static_cast<std::size_t>(childCount(*node++));
-      }
-    }
-    return node;
-  });
+  node_cursor =
+      walkDownTo(node_cursor, great_grandparents, [&](unsigned mask, const std::uint8_t* node) {
+        for (int grandparents = childCount(mask); grandparents != 0; --grandparents) {
+          const auto parents = static_cast<unsigned>(childCount(*node++));
+          if (node_end - node >= 8) {
+            skipped += runBitCount(node, parents);
+            node += parents;
+          } else {  // the stream's last bytes: one at a time
+            for (unsigned k = 0; k < parents; ++k)
+              skipped += static_cast<std::size_t>(childCount(*node++));
+          }
+        }
+        return node;
+      });
   skipLeaves(leaves, skipped);
 }
 
@@ -121,8 +123,9 @@ const std::uint8_t* leafPosition(const Leaves& leaves) {
 // passes. Only the subtree's masks above the index level are read: the children of a node just
 // above it are consecutive entries, stepped over at once to the last one's end.
 template <typename Leaves>
-void skipSubtreeIndexed(const std::uint8_t*& node_cursor, Leaves& leaves, std::size_t& next, int level,
-                        const SkipIndex& index, const std::uint8_t* node_begin, const std::uint8_t* leaf_begin) {
+void skipSubtreeIndexed(const std::uint8_t*& node_cursor, Leaves& leaves, std::size_t& next,
+                        int level, const SkipIndex& index, const std::uint8_t* node_begin,
+                        const std::uint8_t* leaf_begin) {
   std::size_t ordinal = next;  // the index-level nodes passed, at the end the next one's ordinal
   if (level == index.level) {
     ++ordinal;

@@ -15,7 +15,7 @@ AxisFootprint axisFootprint(std::int64_t half, int depth, int fraction_bits) {
   const std::int64_t one_pixel = std::int64_t{1} << fraction_bits;
   const std::int64_t extent = 2 * half;
   if (extent <= one_pixel) return {1, 0, 0, static_cast<std::int32_t>(extent)};
-  const std::int64_t padded = extent + 2 * (depth + 1);  // P
+  const std::int64_t padded = extent + 2 * (depth + 1);                   // P
   const std::int64_t pixels = (padded + one_pixel - 1) >> fraction_bits;  // ceil(P)
   return {static_cast<std::int32_t>(pixels), static_cast<std::int32_t>(one_pixel / 2 - padded / 2),
           static_cast<std::int32_t>(padded - one_pixel), static_cast<std::int32_t>(extent)};
@@ -23,7 +23,8 @@ AxisFootprint axisFootprint(std::int64_t half, int depth, int fraction_bits) {
 
 }  // namespace
 
-SplatFootprint splatFootprint(std::int64_t half_x, std::int64_t half_y, int depth, int fraction_bits) {
+SplatFootprint splatFootprint(std::int64_t half_x, std::int64_t half_y, int depth,
+                              int fraction_bits) {
   const AxisFootprint x = axisFootprint(half_x, depth, fraction_bits);
   const AxisFootprint y = axisFootprint(half_y, depth, fraction_bits);
   SplatFootprint footprint;

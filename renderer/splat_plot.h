@@ -14,9 +14,9 @@
 #include <type_traits>
 #include <utility>
 
+#include "octopoint/camera.h"
 #include "renderer/framebuffer_plot.h"
 #include "renderer/splat_box.h"
-#include "octopoint/camera.h"
 
 namespace octopoint {
 
@@ -43,7 +43,8 @@ struct SplatPlot : PlotTarget {
       assert(x_begin >= 0 && x_end <= width && y_begin >= 0 && y_end <= height);
     }
     for (std::int32_t y = y_begin; y < y_end; ++y) {
-      std::uint32_t* const row = pixel + static_cast<std::size_t>(y) * static_cast<std::size_t>(width);
+      std::uint32_t* const row =
+          pixel + static_cast<std::size_t>(y) * static_cast<std::size_t>(width);
       for (std::int32_t x = x_begin; x < x_end; ++x) row[x] = std::min(row[x], word);
     }
   }
@@ -56,8 +57,8 @@ struct SplatPlot : PlotTarget {
     const std::int32_t y = p.y + footprint.offset_y;
     const std::uint32_t word = Framebuffer::packLeaf<kPayload>(depthKey(p.z), payload);
     if constexpr (kChecked) {
-      fill<true>(x >> fraction_bits, ((x + footprint.span_x) >> fraction_bits) + 1, y >> fraction_bits,
-                 ((y + footprint.span_y) >> fraction_bits) + 1, word);
+      fill<true>(x >> fraction_bits, ((x + footprint.span_x) >> fraction_bits) + 1,
+                 y >> fraction_bits, ((y + footprint.span_y) >> fraction_bits) + 1, word);
     } else {
       plotByKernel(x, y, word);
     }
@@ -82,18 +83,23 @@ struct SplatPlot : PlotTarget {
   // footprint's offset), of packed word `word`, by kernel kBox (withBoxKernel: the caller chooses
   // it once, not per leaf).
   template <int kBox>
-  __attribute__((always_inline)) void plotUnchecked(std::int32_t x, std::int32_t y, std::uint32_t word) const {
-    const std::int32_t x_begin = x >> fraction_bits, x_end = ((x + footprint.span_x) >> fraction_bits) + 1;
-    const std::int32_t y_begin = y >> fraction_bits, y_end = ((y + footprint.span_y) >> fraction_bits) + 1;
+  __attribute__((always_inline)) void plotUnchecked(std::int32_t x, std::int32_t y,
+                                                    std::uint32_t word) const {
+    const std::int32_t x_begin = x >> fraction_bits,
+                       x_end = ((x + footprint.span_x) >> fraction_bits) + 1;
+    const std::int32_t y_begin = y >> fraction_bits,
+                       y_end = ((y + footprint.span_y) >> fraction_bits) + 1;
     if constexpr (kBox != kNoBox) {
       // On screen: the index fits 32 bits (at most 8192^2 pixels).
-      const std::uint32_t at = static_cast<std::uint32_t>(y_begin) * static_cast<std::uint32_t>(width) +
-                               static_cast<std::uint32_t>(x_begin);
+      const std::uint32_t at =
+          static_cast<std::uint32_t>(y_begin) * static_cast<std::uint32_t>(width) +
+          static_cast<std::uint32_t>(x_begin);
       // The box may reach one column or row past the leaf's rectangle: not past the frame's end.
       if (static_cast<std::int32_t>(at) <= box_last_first) {
         constexpr int kColumns = kBox % kMostBoxSide + 1, kRows = kBox / kMostBoxSide + 1;
         minBox<kColumns, kRows>(pixel + at, static_cast<std::size_t>(width), word,
-                                shortOf<kColumns>(x_end - x_begin), shortOf<kRows>(y_end - y_begin));
+                                shortOf<kColumns>(x_end - x_begin),
+                                shortOf<kRows>(y_end - y_begin));
         return;
       }
     }
@@ -106,13 +112,13 @@ struct SplatPlot : PlotTarget {
   // plotUnchecked by this frame's kernel, chosen per leaf: one function whatever the payload or
   // caller, not a copy of the 16 kernels' dispatch inlined into each (about 3.3 KB of Thumb code).
   void plotByKernel(std::int32_t x, std::int32_t y, std::uint32_t word) const {
-    withBoxKernel(std::make_integer_sequence<int, kMostBoxSide * kMostBoxSide>{},
-                  [&](auto kernel) __attribute__((always_inline)) {
-                    plotUnchecked<decltype(kernel)::value>(x, y, word);
-                  });
+    withBoxKernel(
+        std::make_integer_sequence<int, kMostBoxSide * kMostBoxSide>{},
+        [&](auto kernel)
+            __attribute__((always_inline)) { plotUnchecked<decltype(kernel)::value>(x, y, word); });
   }
 
-  int box;                // which box kernel, or kNoBox for footprints past 4 x 4
+  int box;  // which box kernel, or kNoBox for footprints past 4 x 4
   // The last first pixel whose box ends inside the frame: width * height minus the box's reach,
   // (rows - 1) * width + columns; below 0 when no box fits.
   std::int32_t box_last_first;

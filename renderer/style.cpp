@@ -1,6 +1,6 @@
-#include "octopoint/styles.h"
-
 #include <array>
+
+#include "octopoint/styles.h"
 
 namespace octopoint {
 namespace {

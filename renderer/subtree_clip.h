@@ -34,9 +34,11 @@ class SubtreeClip {
         high_x_(std::int64_t{splat.offset_x} + splat.span_x),
         high_y_(std::int64_t{splat.offset_y} + splat.span_y) {
     // Magnitudes and sums in 32 bits: buildFrameSetup bounds |root| plus the sum of the largest
-    // offsets below 2^31. A decoder builds this per call, a band renderer once per subtree and band.
+    // offsets below 2^31. A decoder builds this per call, a band renderer once per subtree and
+    // band.
     const auto magnitude = [](std::int32_t v) {
-      return v < 0 ? std::uint32_t{0} - static_cast<std::uint32_t>(v) : static_cast<std::uint32_t>(v);
+      return v < 0 ? std::uint32_t{0} - static_cast<std::uint32_t>(v)
+                   : static_cast<std::uint32_t>(v);
     };
     std::uint32_t x = 0, y = 0;
     for (int l = setup.depth - 1; l >= 0; --l) {
@@ -50,10 +52,13 @@ class SubtreeClip {
     }
     // Every node centre of this tree lies within |root| + reach[0] of 0; with the splat's pixels
     // and the screen edges below 2^31, no 32-bit sum in classify can wrap.
-    const auto fits = [](std::int64_t root, std::int64_t reach, std::int64_t low, std::int64_t high, std::int64_t end) {
-      return std::llabs(root) + reach + std::max(std::llabs(low), std::llabs(high)) < INT32_MAX && end <= INT32_MAX;
+    const auto fits = [](std::int64_t root, std::int64_t reach, std::int64_t low, std::int64_t high,
+                         std::int64_t end) {
+      return std::llabs(root) + reach + std::max(std::llabs(low), std::llabs(high)) < INT32_MAX &&
+             end <= INT32_MAX;
     };
-    narrow_ = fits(setup.root.x, x, low_x_, high_x_, x_end_) && fits(setup.root.y, y, low_y_, high_y_, y_end_);
+    narrow_ = fits(setup.root.x, x, low_x_, high_x_, x_end_) &&
+              fits(setup.root.y, y, low_y_, high_y_, y_end_);
   }
 
   Clip classify(int level, const Vec3& centre) const {
@@ -64,7 +69,8 @@ class SubtreeClip {
       const std::int32_t right = centre.x + rx + static_cast<std::int32_t>(high_x_);
       const std::int32_t top = centre.y - ry + static_cast<std::int32_t>(low_y_);
       const std::int32_t bottom = centre.y + ry + static_cast<std::int32_t>(high_y_);
-      const auto x_end = static_cast<std::int32_t>(x_end_), y_end = static_cast<std::int32_t>(y_end_);
+      const auto x_end = static_cast<std::int32_t>(x_end_),
+                 y_end = static_cast<std::int32_t>(y_end_);
       if (right < 0 || left >= x_end || bottom < 0 || top >= y_end) return Clip::kOutside;
       if (left >= 0 && right < x_end && top >= 0 && bottom < y_end) return Clip::kInside;
       return Clip::kStraddling;

@@ -1,6 +1,6 @@
-#include "octopoint/interactive.h"
-
 #include <algorithm>
+
+#include "octopoint/interactive.h"
 
 namespace octopoint {
 

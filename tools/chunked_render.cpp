@@ -2,10 +2,10 @@
 
 #include <opencv2/imgproc.hpp>
 
-#include "tools/model_source.h"
-#include "octopoint/http.h"
 #include "octopoint/framebuffer.h"
+#include "octopoint/http.h"
 #include "octopoint/render.h"
+#include "tools/model_source.h"
 
 namespace octopoint {
 

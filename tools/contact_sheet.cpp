@@ -38,7 +38,8 @@ std::vector<SheetRow> sheetRows(const ModelView& model, Style style) {
 }
 
 std::string label(const SheetRow& row) {
-  std::string text = row.level == nullptr ? "depth auto (by projected size)" : "depth " + std::to_string(row.level->depth);
+  std::string text = row.level == nullptr ? "depth auto (by projected size)"
+                                          : "depth " + std::to_string(row.level->depth);
   text += row.fill ? ", hole filling" : ", no filling";
   if (row.style != Style::kColour) text += ", " + std::string(styleName(row.style));
   return text;
@@ -73,12 +74,15 @@ cv::Mat renderContactSheet(const ModelView& model, const Camera& camera, int yaw
     putLabel(sheet, label(row), {4, top + kLabelHeight - 5});
     for (int column = 0; column < yaw_count; ++column) {
       Camera view = camera;
-      view.yaw = camera.yaw + Angle::fromTurns16(std::int64_t{column} * Angle::kUnitsPerTurn / yaw_count);
+      view.yaw =
+          camera.yaw + Angle::fromTurns16(std::int64_t{column} * Angle::kUnitsPerTurn / yaw_count);
       const LevelView* drawn = row.level != nullptr ? row.level : autoLevel(model, view);
       FrameSetup setup;
-      const CameraError error = drawn == nullptr ? CameraError::kOverflow
-                                                 : buildFrameSetup(view, drawn->depth, kDefaultFractionBits, &setup);
-      if (error != CameraError::kNone) throw std::runtime_error(std::string("camera refused: ") + describe(error));
+      const CameraError error =
+          drawn == nullptr ? CameraError::kOverflow
+                           : buildFrameSetup(view, drawn->depth, kDefaultFractionBits, &setup);
+      if (error != CameraError::kNone)
+        throw std::runtime_error(std::string("camera refused: ") + describe(error));
       frame.clear(styler.payload());
       if (!renderLevel(variant, *drawn, setup, frame)) {
         throw std::runtime_error(std::string("draw refused: ") +
@@ -92,7 +96,8 @@ cv::Mat renderContactSheet(const ModelView& model, const Camera& camera, int yaw
         throw std::runtime_error(std::string("style refused: ") + describe(style_error));
       }
       cv::cvtColor(rgb, bgr, cv::COLOR_RGB2BGR);
-      bgr.copyTo(sheet(cv::Rect(column * camera.width, top + kLabelHeight, camera.width, camera.height)));
+      bgr.copyTo(
+          sheet(cv::Rect(column * camera.width, top + kLabelHeight, camera.width, camera.height)));
     }
   }
   return sheet;

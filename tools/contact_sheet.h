@@ -5,13 +5,12 @@
 // model with normals, one row at depth auto per other style (octopoint/styles.h).
 
 #include <cstdint>
-
 #include <opencv2/core.hpp>
 
 #include "octopoint/camera.h"
-#include "octopoint/styles.h"
 #include "octopoint/model.h"
 #include "octopoint/render.h"
+#include "octopoint/styles.h"
 
 namespace octopoint {
 

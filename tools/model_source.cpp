@@ -33,7 +33,9 @@ std::unique_ptr<LoadedModel> loadModel(const std::string& model_name, const std:
     loaded->file_bytes = cli::readInputBytes(model_file, kModelFileInput);
     loaded->label = cli::displayPath(model_file);
     if (looksChunked(loaded->file_bytes)) {
-      if (!accept_chunked) throw ModelLoadError(loaded->label + ": a chunked model (format version 3) cannot be shown here");
+      if (!accept_chunked)
+        throw ModelLoadError(loaded->label +
+                             ": a chunked model (format version 3) cannot be shown here");
       ChunkedIssue chunked_issue;
       loaded->chunked = progressiveModelFromPrefix(loaded->file_bytes, &chunked_issue);
       if (chunked_issue.error == ChunkedError::kNone && loaded->chunked &&
@@ -42,14 +44,18 @@ std::unique_ptr<LoadedModel> loadModel(const std::string& model_name, const std:
       }
       if (chunked_issue.error != ChunkedError::kNone) {
         throw ModelLoadError(loaded->label + ": " + describe(chunked_issue.error) + " (level " +
-                             std::to_string(chunked_issue.level) + ", byte " + std::to_string(chunked_issue.offset) + ")");
+                             std::to_string(chunked_issue.level) + ", byte " +
+                             std::to_string(chunked_issue.offset) + ")");
       }
       return loaded;
     }
     loaded->view = ModelView::fromBytes(loaded->file_bytes, &issue);
   } else {
-    const EmbeddedModel* embedded = model_name.empty() ? models::defaultModel() : models::findModel(model_name);
-    if (embedded == nullptr) throw ModelLoadError("--model: no embedded model " + cli::inQuotes(model_name) + " (see --list)");
+    const EmbeddedModel* embedded =
+        model_name.empty() ? models::defaultModel() : models::findModel(model_name);
+    if (embedded == nullptr)
+      throw ModelLoadError("--model: no embedded model " + cli::inQuotes(model_name) +
+                           " (see --list)");
     loaded->view = ModelView::fromEmbedded(*embedded, &issue);
     loaded->label = embedded->name;
   }

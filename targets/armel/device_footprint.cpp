@@ -56,7 +56,8 @@ std::optional<std::size_t> measureStack(StackProbe probe) {
   const bool started = pthread_create(&thread, &attributes, renderOnPaintedStack, &probe) == 0;
   pthread_attr_destroy(&attributes);
   if (!started || pthread_join(thread, nullptr) != 0 || !probe.complete) return std::nullopt;
-  const auto untouched = std::find_if(stack.begin(), stack.end(), [](std::uint8_t b) { return b != kPaint; });
+  const auto untouched =
+      std::find_if(stack.begin(), stack.end(), [](std::uint8_t b) { return b != kPaint; });
   const std::uintptr_t deepest = reinterpret_cast<std::uintptr_t>(stack.data()) +
                                  static_cast<std::uintptr_t>(untouched - stack.begin());
   return probe.stack_pointer_at_call - deepest;
@@ -67,28 +68,30 @@ int run() {
   const EmbeddedModel& embedded = *models::defaultModel();
   const std::optional<ModelView> model = ModelView::fromEmbedded(embedded, &issue);
   if (!model) {
-    std::fprintf(stderr, "device_footprint: the embedded model '%s' is invalid: %s\n", embedded.name,
-                 describe(issue.error));
+    std::fprintf(stderr, "device_footprint: the embedded model '%s' is invalid: %s\n",
+                 embedded.name, describe(issue.error));
     return 1;
   }
 
   std::printf("ROM: model '%s' (palette %d colours = 768 bytes of RGB888)\n\n", embedded.name,
               model->paletteCount());
-  std::printf("| depth | node bytes | leaf bytes | level total | with palette |\n|---|---|---|---|---|\n");
+  std::printf(
+      "| depth | node bytes | leaf bytes | level total | with palette |\n|---|---|---|---|---|\n");
   std::size_t all_levels = 0;
   for (int i = 0; i < model->levelCount(); ++i) {
     const LevelView& level = model->level(i);
     const std::size_t bytes = level.nodes.size() + level.leaves.size();
     all_levels += bytes;
-    std::printf("| %d | %zu | %zu | %zu | %zu |\n", level.depth, level.nodes.size(), level.leaves.size(),
-                bytes, bytes + 768);
+    std::printf("| %d | %zu | %zu | %zu | %zu |\n", level.depth, level.nodes.size(),
+                level.leaves.size(), bytes, bytes + 768);
   }
   std::printf("| all | | | %zu | %zu |\n\n", all_levels, all_levels + 768);
 
   std::printf("RAM: frame buffers (palette index + int32 z-buffer per pixel)\n\n");
   std::printf("| screen | framebuffer | z-buffer | total |\n|---|---|---|---|\n");
   for (const Screen& screen : kScreens) {
-    const std::size_t pixels = static_cast<std::size_t>(screen.width) * static_cast<std::size_t>(screen.height);
+    const std::size_t pixels =
+        static_cast<std::size_t>(screen.width) * static_cast<std::size_t>(screen.height);
     std::printf("| %dx%d | %zu | %zu | %zu |\n", screen.width, screen.height, pixels,
                 pixels * sizeof(std::int32_t), pixels * (1 + sizeof(std::int32_t)));
   }
@@ -108,7 +111,8 @@ int run() {
     for (int i = 0; i < model->levelCount(); ++i) {
       const LevelView& level = model->level(i);
       FrameSetup setup;
-      if (buildFrameSetup(camera, level.depth, kDefaultFractionBits, &setup) != CameraError::kNone) {
+      if (buildFrameSetup(camera, level.depth, kDefaultFractionBits, &setup) !=
+          CameraError::kNone) {
         std::fprintf(stderr, "device_footprint: camera refused at depth %d\n", level.depth);
         return 1;
       }

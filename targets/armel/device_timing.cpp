@@ -36,11 +36,14 @@ constexpr std::string_view kFloatPrefix = "float_";
 constexpr const char* kUsage =
     "usage: device_timing [--size WxH] [--min-ms N]\n"
     "Renders the embedded default model frontal (yaw 0) and rotated (yaw 30 degrees) with every\n"
-    "render variant at depths 7 and 8 and prints a table of CPU milliseconds per image (frame clear\n"
-    "included; median of 5 runs) and the float/fixed ratio of each algorithm (float_X vs fixed_X).\n"
+    "render variant at depths 7 and 8 and prints a table of CPU milliseconds per image (frame "
+    "clear\n"
+    "included; median of 5 runs) and the float/fixed ratio of each algorithm (float_X vs "
+    "fixed_X).\n"
     "  --size WxH   framebuffer size in pixels, each side 1..8192, at most 16777216 pixels\n"
     "               (default 320x240)\n"
-    "  --min-ms N   time spent per table cell, 1..3600000, at least one frame per run (default 500)\n";
+    "  --min-ms N   time spent per table cell, 1..3600000, at least one frame per run (default "
+    "500)\n";
 
 struct Options {
   std::int32_t width = 320;
@@ -58,8 +61,8 @@ Options parseOptions(int argc, char** argv) {
     } else if (args.is("--min-ms")) {
       options.min_ms = cli::parseInteger(args.name(), args.value(), 1, 3'600'000);
     } else if (args.is("--size")) {
-      const cli::FrameSize size = cli::parseFrameSize(args.name(), args.value(), 1, kMaxViewportSide,
-                                                      std::int64_t{4096} * 4096);
+      const cli::FrameSize size = cli::parseFrameSize(args.name(), args.value(), 1,
+                                                      kMaxViewportSide, std::int64_t{4096} * 4096);
       options.width = size.width;
       options.height = size.height;
     } else {
@@ -124,7 +127,8 @@ struct Row {
 };
 
 const Row* findRow(const std::vector<Row>& rows, std::string_view variant) {
-  const auto found = std::find_if(rows.begin(), rows.end(), [&](const Row& row) { return row.variant == variant; });
+  const auto found = std::find_if(rows.begin(), rows.end(),
+                                  [&](const Row& row) { return row.variant == variant; });
   return found == rows.end() ? nullptr : &*found;
 }
 
@@ -140,7 +144,8 @@ void printBestRatio(const std::vector<Row>& rows) {
         best[is_float] = std::min(best[is_float], row.ns[column]);
       }
     }
-    std::printf(" %s |", best[1] == INT64_MAX ? "no float variant yet" : formatRatio(best[1], best[0]).c_str());
+    std::printf(" %s |", best[1] == INT64_MAX ? "no float variant yet"
+                                              : formatRatio(best[1], best[0]).c_str());
   }
   std::printf("\n");
 }
@@ -154,15 +159,16 @@ int run(const Options& options) {
                  describe(issue.error));
     return 1;
   }
-  std::printf("Default model '%s' at %dx%d, CPU ms per image (frame clear included, median of %d runs)\n\n",
-              embedded.name, options.width, options.height, kRuns);
+  std::printf(
+      "Default model '%s' at %dx%d, CPU ms per image (frame clear included, median of %d runs)\n\n",
+      embedded.name, options.width, options.height, kRuns);
   std::string columns;
   std::string rule = "|---|";
   for (int depth : kDepths) {
     const LevelView* level = model->levelOfDepth(depth);
     for (const View& view : kViews) {
       columns += " depth " + std::to_string(depth) + " " + view.name +
-                (level ? " (" + std::to_string(level->leaves.size()) + " points) |" : " |");
+                 (level ? " (" + std::to_string(level->leaves.size()) + " points) |" : " |");
       rule += "---|";
     }
   }
@@ -174,7 +180,8 @@ int run(const Options& options) {
     for (int depth : kDepths) {
       const LevelView* level = model->levelOfDepth(depth);
       if (level == nullptr) {
-        std::fprintf(stderr, "device_timing: the model '%s' has no depth %d\n", embedded.name, depth);
+        std::fprintf(stderr, "device_timing: the model '%s' has no depth %d\n", embedded.name,
+                     depth);
         return 1;
       }
       for (const View& view : kViews) {
@@ -206,7 +213,9 @@ int run(const Options& options) {
     std::printf("\n");
   }
 
-  std::printf("\nfloat/fixed time ratio per algorithm (float_X ms / fixed_X ms; higher: fixed wins more)\n\n");
+  std::printf(
+      "\nfloat/fixed time ratio per algorithm (float_X ms / fixed_X ms; higher: fixed wins "
+      "more)\n\n");
   std::printf("| algorithm |%s\n%s\n", columns.c_str(), rule.c_str());
   for (const Row& fixed : rows) {
     if (!fixed.variant.starts_with(kFixedPrefix)) continue;
@@ -230,6 +239,7 @@ int run(const Options& options) {
 }  // namespace octopoint
 
 int main(int argc, char** argv) {
-  return octopoint::cli::runTool("device_timing", argc, argv,
-                                 [](int count, char** values) { return octopoint::run(octopoint::parseOptions(count, values)); });
+  return octopoint::cli::runTool("device_timing", argc, argv, [](int count, char** values) {
+    return octopoint::run(octopoint::parseOptions(count, values));
+  });
 }

@@ -1,21 +1,21 @@
 // A frame allocates nothing: once the model view, the framebuffer and the RGB buffer exist, a frame
 // (camera set-up, clear, decode with any variant, palette to RGB) makes no heap allocation. The
-// global operator new of this binary counts every allocation (targets/armel/allocation_counter.h), so the
-// test also sees allocations hidden in the standard library. Runs on the host and on the device
-// (qemu-arm).
+// global operator new of this binary counts every allocation (targets/armel/allocation_counter.h),
+// so the test also sees allocations hidden in the standard library. Runs on the host and on the
+// device (qemu-arm).
 #include <gtest/gtest.h>
 
 #include <vector>
 
-#include "targets/armel/allocation_counter.h"
-#include "tests/support/model_images.h"
 #include "octopoint/models.h"
-#include "octopoint/styles.h"
-#include "renderer/level_of_detail.h"
 #include "octopoint/progressive.h"
 #include "octopoint/render.h"
 #include "octopoint/rgb_renderer.h"
+#include "octopoint/styles.h"
+#include "renderer/level_of_detail.h"
+#include "targets/armel/allocation_counter.h"
 #include "tests/support/dual_resolution_fixture.h"
+#include "tests/support/model_images.h"
 
 namespace octopoint {
 namespace {
@@ -46,7 +46,8 @@ TEST(FrameAllocation, NoVariantAllocatesDuringAFrame) {
         camera.yaw = Angle::fromDegrees(yaw_degrees);
         // The frame: from the camera to the RGB image.
         const long before = heapAllocationCount();
-        const CameraError camera_error = buildFrameSetup(camera, level.depth, kDefaultFractionBits, &setup);
+        const CameraError camera_error =
+            buildFrameSetup(camera, level.depth, kDefaultFractionBits, &setup);
         frame.clear();
         const bool complete = renderLevel(info.variant, level, setup, frame);
         const bool resolved = resolveToRgb(frame, *model, Rgb{}, rgb);
@@ -80,9 +81,11 @@ TEST(FrameAllocation, DepthAutoAndSplatFramesAllocateNothing) {
       const long before = heapAllocationCount();
       const LevelView* level = autoLevel(*model, camera);
       const CameraError camera_error =
-          level == nullptr ? CameraError::kOverflow : buildFrameSetup(camera, level->depth, kDefaultFractionBits, &setup);
+          level == nullptr ? CameraError::kOverflow
+                           : buildFrameSetup(camera, level->depth, kDefaultFractionBits, &setup);
       frame.clear();
-      const bool complete = camera_error == CameraError::kNone && renderLevel(info.variant, *level, setup, frame);
+      const bool complete =
+          camera_error == CameraError::kNone && renderLevel(info.variant, *level, setup, frame);
       const bool resolved = resolveToRgb(frame, *model, Rgb{}, rgb);
       const long allocations = heapAllocationCount() - before;
       ASSERT_EQ(camera_error, CameraError::kNone);
@@ -150,9 +153,10 @@ TEST(FrameAllocation, RgbRendererAllocatesOnlyWhenTheSizeChanges) {
 // to fetch, drawing (with and without a point budget), and asking whether the view is complete
 // allocate nothing; only taking bytes may.
 TEST(FrameAllocation, ProgressiveFramesAllocateNothing) {
-  const std::vector<std::uint8_t> image = fuzzing::chunkedImage(*models::defaultModel(), {5, 6, 7, 8}, {1024, 1500});
-  std::optional<ProgressiveModel> model =
-      progressiveModelFromPrefix(std::span(image).first(image.size() / 2), nullptr);  // half the file
+  const std::vector<std::uint8_t> image =
+      fuzzing::chunkedImage(*models::defaultModel(), {5, 6, 7, 8}, {1024, 1500});
+  std::optional<ProgressiveModel> model = progressiveModelFromPrefix(
+      std::span(image).first(image.size() / 2), nullptr);  // half the file
   ASSERT_TRUE(model.has_value());
   Camera camera;
   Framebuffer frame(camera.width, camera.height);
@@ -216,7 +220,8 @@ TEST(FrameAllocation, StyledFramesAllocateNothing) {
     options.style = info.style;
     ASSERT_EQ(styler.setOptions(options), StyleError::kNone) << info.name;
     const long before = heapAllocationCount();
-    const CameraError camera_error = buildFrameSetup(camera, level->depth, kDefaultFractionBits, &setup);
+    const CameraError camera_error =
+        buildFrameSetup(camera, level->depth, kDefaultFractionBits, &setup);
     frame.clear(styler.payload());
     const bool complete = renderLevel(defaultVariant(), *level, setup, frame);
     styler.beginFrame(setup);

@@ -1,7 +1,8 @@
-// line_pass_timing: the line pass of the line styles (octopoint/styles.h, docs/styles.md) in integer
-// arithmetic against the same pass written in float, as Hekmatzada et al. compared their fixed and
-// float line drawings on a PDA without FPU. Built for the `armel` preset it runs under qemu-arm, an
-// ARMv5TE without FPU, where every float operation is a libgcc soft-float call (docs/device.md).
+// line_pass_timing: the line pass of the line styles (octopoint/styles.h, docs/styles.md) in
+// integer arithmetic against the same pass written in float, as Hekmatzada et al. compared their
+// fixed and float line drawings on a PDA without FPU. Built for the `armel` preset it runs under
+// qemu-arm, an ARMv5TE without FPU, where every float operation is a libgcc soft-float call
+// (docs/device.md).
 //
 // The float pass is a reference written as a float program would be: each pixel's depth in
 // float (the depth key times its unit), the silhouette jump in float, each normal's slope slack
@@ -23,8 +24,8 @@
 
 #include "octopoint/fixed.h"
 #include "octopoint/models.h"
-#include "octopoint/styles.h"
 #include "octopoint/render.h"
+#include "octopoint/styles.h"
 
 namespace octopoint {
 namespace {

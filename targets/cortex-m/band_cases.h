@@ -1,8 +1,8 @@
 #pragma once
-// The frames the bare-metal band test draws (targets/cortex-m/band_test_main.cpp) and the host golden tool
-// (targets/cortex-m/golden_main.cpp) checksums: the same list compiled into both, so the goldens always
-// describe exactly the cases the device renders. Everything is constexpr: on the device the list
-// lives in flash, and no angle conversion (a division) runs there.
+// The frames the bare-metal band test draws (targets/cortex-m/band_test_main.cpp) and the host
+// golden tool (targets/cortex-m/golden_main.cpp) checksums: the same list compiled into both, so
+// the goldens always describe exactly the cases the device renders. Everything is constexpr: on the
+// device the list lives in flash, and no angle conversion (a division) runs there.
 
 #include <array>
 #include <cstddef>
@@ -20,8 +20,8 @@ struct BandCase {
   std::int32_t band_rows;
 };
 
-constexpr Camera makeCamera(std::int32_t width, std::int32_t height, int yaw, int pitch, int zoom_percent,
-                            std::int32_t pan_x, std::int32_t pan_y) {
+constexpr Camera makeCamera(std::int32_t width, std::int32_t height, int yaw, int pitch,
+                            int zoom_percent, std::int32_t pan_x, std::int32_t pan_y) {
   Camera camera;
   camera.width = width;
   camera.height = height;
@@ -61,7 +61,8 @@ inline constexpr std::array<BandCase, kCaseCount> kCases = [] {
   for (int camera = 0; camera < kCameraCount; ++camera) {
     for (const int depth : kDepths) {
       for (const bool fill : {false, true}) {
-        for (const std::int32_t rows : kBandRows) cases[static_cast<std::size_t>(i++)] = {camera, depth, fill, rows};
+        for (const std::int32_t rows : kBandRows)
+          cases[static_cast<std::size_t>(i++)] = {camera, depth, fill, rows};
       }
     }
   }

@@ -1,13 +1,14 @@
 #include "targets/cortex-m/band_check.h"
 
 #include "mcu/golden.h"
-#include "targets/cortex-m/semihosting.h"
 #include "octopoint/models.h"
+#include "targets/cortex-m/semihosting.h"
 
 namespace octopoint::mcu {
 
 GoldenSink::GoldenSink(int case_number, Variant variant, std::int32_t width)
-    : golden_((drawsSplats(variant) ? kGoldenSplatBands : kGoldenPixelBands) + kGoldenFirst[case_number]),
+    : golden_((drawsSplats(variant) ? kGoldenSplatBands : kGoldenPixelBands) +
+              kGoldenFirst[case_number]),
       golden_rows_(kCases[static_cast<std::size_t>(case_number)].band_rows),
       width_(width),
       height_(kCameras[kCases[static_cast<std::size_t>(case_number)].camera].height) {}
@@ -19,7 +20,8 @@ BandSink GoldenSink::sink() {
   return sink;
 }
 
-void GoldenSink::flush(void* user, std::int32_t y0, std::int32_t rows, std::span<const std::uint8_t> rgb565) {
+void GoldenSink::flush(void* user, std::int32_t y0, std::int32_t rows,
+                       std::span<const std::uint8_t> rgb565) {
   const std::uint64_t start = instructionsNow();
   auto& self = *static_cast<GoldenSink*>(user);
   if (y0 != self.next_y0_) ++self.mismatches_;
@@ -28,8 +30,9 @@ void GoldenSink::flush(void* user, std::int32_t y0, std::int32_t rows, std::span
   // The golden band that starts at y0: bands are in order, so step to it.
   for (std::int32_t at = 0; at < rows;) {
     const std::int32_t slice = rows - at < self.golden_rows_ ? rows - at : self.golden_rows_;
-    const std::uint32_t sum = checksum(kChecksumSeed, rgb565.data() + static_cast<std::size_t>(at) * row_bytes,
-                                       static_cast<std::size_t>(slice) * row_bytes);
+    const std::uint32_t sum =
+        checksum(kChecksumSeed, rgb565.data() + static_cast<std::size_t>(at) * row_bytes,
+                 static_cast<std::size_t>(slice) * row_bytes);
     if (sum != *self.golden_++) ++self.mismatches_;
     at += slice;
   }

@@ -6,8 +6,8 @@
 #include <optional>
 #include <span>
 
-#include "targets/cortex-m/band_cases.h"
 #include "octopoint/bands.h"
+#include "targets/cortex-m/band_cases.h"
 
 namespace octopoint::mcu {
 
@@ -23,7 +23,8 @@ class GoldenSink {
   std::uint64_t flushInstructions() const { return flush_instructions_; }
 
  private:
-  static void flush(void* user, std::int32_t y0, std::int32_t rows, std::span<const std::uint8_t> rgb565);
+  static void flush(void* user, std::int32_t y0, std::int32_t rows,
+                    std::span<const std::uint8_t> rgb565);
 
   const std::uint32_t* golden_;
   std::int32_t golden_rows_;

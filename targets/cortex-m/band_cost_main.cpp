@@ -9,9 +9,9 @@
 #include <cstring>
 #include <vector>
 
-#include "targets/cortex-m/band_cases.h"
-#include "octopoint/models.h"
 #include "octopoint/bands.h"
+#include "octopoint/models.h"
+#include "targets/cortex-m/band_cases.h"
 
 using namespace octopoint;
 
@@ -24,18 +24,21 @@ void flush(void*, std::int32_t, std::int32_t, std::span<const std::uint8_t> rgb5
 }
 
 [[gnu::noinline]] bool drawFrame(const LevelView& level, const FrameSetup& setup, std::int32_t rows,
-                                 const BandIndex& index, const Rgb565Palette& palette, std::vector<std::uint32_t>& buffer) {
+                                 const BandIndex& index, const Rgb565Palette& palette,
+                                 std::vector<std::uint32_t>& buffer) {
   if (rows == 0) {
     FrameView frame(buffer.data(), setup.width, setup.height);
     frame.clear();
     const bool drawn = renderLevel(Variant::kFixedFast, level, setup, frame);
-    packedToRgb565(buffer.data(), buffer.size(), palette, reinterpret_cast<std::uint8_t*>(buffer.data()));
+    packedToRgb565(buffer.data(), buffer.size(), palette,
+                   reinterpret_cast<std::uint8_t*>(buffer.data()));
     return drawn;
   }
   BandSink sink;
   sink.flush = flush;
   const BandConfig config{Variant::kFixedFast, rows, false, mcu::kBackground};
-  return renderBands(level, setup, config, index, palette, {buffer, {}, {}}, sink) == BandError::kNone;
+  return renderBands(level, setup, config, index, palette, {buffer, {}, {}}, sink) ==
+         BandError::kNone;
 }
 
 }  // namespace
@@ -52,9 +55,12 @@ int main(int argc, char** argv) {
   const std::optional<ModelView> model = ModelView::fromEmbedded(*models::defaultModel(), &issue);
   const LevelView& level = *model->levelOfDepth(8);
   FrameSetup setup;
-  if (buildFrameSetup(mcu::kCameras[portrait ? 2 : 0], 8, kDefaultFractionBits, &setup) != CameraError::kNone) return 1;
+  if (buildFrameSetup(mcu::kCameras[portrait ? 2 : 0], 8, kDefaultFractionBits, &setup) !=
+      CameraError::kNone)
+    return 1;
   std::vector<SubtreeSize> storage(4096);
-  const BandIndex index = index_level > 0 ? buildBandIndex(level, index_level, storage) : BandIndex{};
+  const BandIndex index =
+      index_level > 0 ? buildBandIndex(level, index_level, storage) : BandIndex{};
   if (index.level != index_level) {
     std::fprintf(stderr, "mcu_band_cost: no index at level %d\n", index_level);
     return 1;

@@ -1,5 +1,6 @@
 // The bare-metal band test (docs/device.md), run under qemu-system-arm by scripts/test-mcu:
-//  1. every case of targets/cortex-m/band_cases.h (three cameras, depths 7 and 8, with and without hole
+//  1. every case of targets/cortex-m/band_cases.h (three cameras, depths 7 and 8, with and without
+//  hole
 //     filling, bands of 1, 7, 8 and 24 rows) drawn by fixed_fast and by fixed_delta with the
 //     level-3 subtree index into two alternating band buffers, every band's checksum compared with
 //     the host's golden;
@@ -12,9 +13,9 @@
 #include <array>
 #include <cstdint>
 
+#include "octopoint/render.h"
 #include "targets/cortex-m/band_check.h"
 #include "targets/cortex-m/semihosting.h"
-#include "octopoint/render.h"
 
 using namespace octopoint;
 using namespace octopoint::mcu;
@@ -24,7 +25,8 @@ namespace {
 constexpr std::int32_t kTallRows = 120;  // two bands of a 240-row frame: about one walk
 constexpr std::size_t kHistoryWords =
     static_cast<std::size_t>(kMaxWidth + 2 * kHoleFillPadColumns) * kHoleFillHistoryRows;
-constexpr std::size_t kBufferWords = static_cast<std::size_t>(kMaxBandRows + 2 * kHoleFillReachRows) * kMaxWidth;
+constexpr std::size_t kBufferWords =
+    static_cast<std::size_t>(kMaxBandRows + 2 * kHoleFillReachRows) * kMaxWidth;
 // One arena: either two band buffers of up to 24 + 4 rows, or one band of 120 rows.
 constexpr std::size_t kArenaWords = static_cast<std::size_t>(kTallRows) * kMaxWidth;
 static_assert(2 * kBufferWords <= kArenaWords);
@@ -65,7 +67,8 @@ bool drawCase(int number, Variant variant, int index_level, std::int32_t rows, b
   const ModelView& model = defaultModel();
   const LevelView& level = *model.levelOfDepth(c.depth);
   FrameSetup setup;
-  if (buildFrameSetup(camera, c.depth, kDefaultFractionBits, &setup) != CameraError::kNone) return false;
+  if (buildFrameSetup(camera, c.depth, kDefaultFractionBits, &setup) != CameraError::kNone)
+    return false;
   const BandConfig config{variant, rows > 0 ? rows : c.band_rows, c.fill, kBackground};
   const std::size_t words = bandBufferWords(camera.width, config);
   BandBuffers buffers{std::span(arena, words), {}, std::span(history)};
@@ -73,7 +76,7 @@ bool drawCase(int number, Variant variant, int index_level, std::int32_t rows, b
   GoldenSink golden(number, variant, camera.width);
   const BandIndex no_index;
   const std::uint64_t start = instructionsNow();
-  const BandIndex& index = index_level == kIndexLevel        ? indexes[c.depth - 7]
+  const BandIndex& index = index_level == kIndexLevel         ? indexes[c.depth - 7]
                            : index_level == kDeeperIndexLevel ? deeper_indexes[c.depth - 7]
                                                               : no_index;
   const BandError error = renderBands(level, setup, config, index, palette, buffers, golden.sink());
@@ -100,17 +103,21 @@ int caseNumber(int camera, int depth, bool fill, std::int32_t rows) {
 int octopoint::mcu::programMain() {
   startInstructionClock();
   if (!calibrateInstructionClock()) {
-    print("the instruction clock does not count one instruction per nanosecond: is qemu run with -icount shift=0?\n");
+    print(
+        "the instruction clock does not count one instruction per nanosecond: is qemu run with "
+        "-icount shift=0?\n");
     return 1;
   }
   const ModelView& model = defaultModel();
   palette = makeRgb565Palette(model, kBackground);
   for (int d = 0; d < 2; ++d) {
     indexes[d] = buildBandIndex(*model.levelOfDepth(7 + d), kIndexLevel, index_storage[d]);
-    deeper_indexes[d] = buildBandIndex(*model.levelOfDepth(7 + d), kDeeperIndexLevel, deeper_index_storage[d]);
+    deeper_indexes[d] =
+        buildBandIndex(*model.levelOfDepth(7 + d), kDeeperIndexLevel, deeper_index_storage[d]);
   }
   if (indexes[0].level != kIndexLevel || indexes[1].level != kIndexLevel ||
-      deeper_indexes[0].level != kDeeperIndexLevel || deeper_indexes[1].level != kDeeperIndexLevel) {
+      deeper_indexes[0].level != kDeeperIndexLevel ||
+      deeper_indexes[1].level != kDeeperIndexLevel) {
     print("the subtree index does not fit its storage\n");
     return 1;
   }

@@ -14,7 +14,8 @@
 using namespace octopoint;
 using namespace octopoint::mcu;
 
-extern "C" std::uint32_t __data_start[], __stack_bottom[];  // targets/cortex-m/sections.ld: RAM's start, static end
+extern "C" std::uint32_t __data_start[],
+    __stack_bottom[];  // targets/cortex-m/sections.ld: RAM's start, static end
 
 namespace {
 
@@ -51,13 +52,15 @@ int octopoint::mcu::programMain() {
   int failures = 0;
   for (const int camera : {0, 1}) {
     const int number = caseNumber(camera, kRows);
-    if (number < 0 || buildFrameSetup(kCameras[camera], 8, kDefaultFractionBits, &setup) != CameraError::kNone) {
+    if (number < 0 ||
+        buildFrameSetup(kCameras[camera], 8, kDefaultFractionBits, &setup) != CameraError::kNone) {
       return 1;
     }
     GoldenSink golden(number, kVariant, kWidth);
     const BandConfig config{kVariant, kRows, false, kBackground};
     const std::uint64_t start = instructionsNow();
-    const BandError error = renderBands(level, setup, config, band_index, palette, {band_buffer, {}, {}}, golden.sink());
+    const BandError error = renderBands(level, setup, config, band_index, palette,
+                                        {band_buffer, {}, {}}, golden.sink());
     const std::uint64_t spent = instructionsNow() - start - golden.flushInstructions();
     const bool passed = error == BandError::kNone && golden.passed();
     failures += passed ? 0 : 1;
@@ -77,8 +80,9 @@ int octopoint::mcu::programMain() {
   report("stack high-water bytes (set-up: model validation, index)", setup_stack);
   report("stack high-water bytes", stackHighWater());
   report("stack region bytes", stackBytes());
-  const auto static_bytes = static_cast<std::uint32_t>(reinterpret_cast<std::uintptr_t>(__stack_bottom) -
-                                                       reinterpret_cast<std::uintptr_t>(__data_start));
+  const auto static_bytes =
+      static_cast<std::uint32_t>(reinterpret_cast<std::uintptr_t>(__stack_bottom) -
+                                 reinterpret_cast<std::uintptr_t>(__data_start));
   report("ram static bytes (.data + .bss)", static_bytes);
   report("ram peak bytes (static + stack high-water)", static_bytes + stackHighWater());
   report("ram linked bytes (static + stack region)", static_bytes + stackBytes());

@@ -19,9 +19,15 @@ constexpr std::uint32_t kRunTimeError = 0x20023;     // ADP_Stopped_RunTimeError
 // Timer 0 of the mps2 boards (an ARM CMSDK APB timer at 0x40000000): a 32-bit down counter at
 // the 25 MHz peripheral clock. Free running from 0xFFFFFFFF, it wraps after 2^32 ticks, 172 s of
 // virtual time, so a difference of two readings is exact for anything shorter.
-volatile std::uint32_t& timerControl() { return *reinterpret_cast<volatile std::uint32_t*>(0x40000000); }
-volatile std::uint32_t& timerValue() { return *reinterpret_cast<volatile std::uint32_t*>(0x40000004); }
-volatile std::uint32_t& timerReload() { return *reinterpret_cast<volatile std::uint32_t*>(0x40000008); }
+volatile std::uint32_t& timerControl() {
+  return *reinterpret_cast<volatile std::uint32_t*>(0x40000000);
+}
+volatile std::uint32_t& timerValue() {
+  return *reinterpret_cast<volatile std::uint32_t*>(0x40000004);
+}
+volatile std::uint32_t& timerReload() {
+  return *reinterpret_cast<volatile std::uint32_t*>(0x40000008);
+}
 constexpr std::uint32_t kInstructionsPerTick = 40;  // 1 ns per instruction, 25 MHz ticks
 
 constexpr std::uint32_t kPaint = 0xC0FFEE5Au;
@@ -40,11 +46,26 @@ void print(const char* text) { semihost(kSysWrite0, text); }
 
 void printUnsigned(std::uint64_t value) {
   // Each digit by repeated subtraction of its power of ten (at most 9 times): no divide.
-  constexpr std::uint64_t kPowers[] = {1u, 10u, 100u, 1000u, 10000u, 100000u, 1000000u, 10000000u,
-                                       100000000u, 1000000000u, 10000000000u, 100000000000u,
-                                       1000000000000u, 10000000000000u, 100000000000000u,
-                                       1000000000000000u, 10000000000000000u, 100000000000000000u,
-                                       1000000000000000000u, 10000000000000000000u};
+  constexpr std::uint64_t kPowers[] = {1u,
+                                       10u,
+                                       100u,
+                                       1000u,
+                                       10000u,
+                                       100000u,
+                                       1000000u,
+                                       10000000u,
+                                       100000000u,
+                                       1000000000u,
+                                       10000000000u,
+                                       100000000000u,
+                                       1000000000000u,
+                                       10000000000000u,
+                                       100000000000000u,
+                                       1000000000000000u,
+                                       10000000000000000u,
+                                       100000000000000000u,
+                                       1000000000000000000u,
+                                       10000000000000000000u};
   char text[21];
   int n = 0;
   int at = 19;
@@ -110,7 +131,8 @@ void paintStack() {
 std::uint32_t stackHighWater() {
   const std::uint32_t* word = __stack_bottom;
   while (word < __stack_top && *word == kPaint) ++word;
-  return static_cast<std::uint32_t>(reinterpret_cast<std::uintptr_t>(__stack_top) - reinterpret_cast<std::uintptr_t>(word));
+  return static_cast<std::uint32_t>(reinterpret_cast<std::uintptr_t>(__stack_top) -
+                                    reinterpret_cast<std::uintptr_t>(word));
 }
 
 std::uint32_t stackBytes() {

@@ -7,7 +7,8 @@
 
 namespace octopoint::mcu {
 
-// The program, called by the reset handler (targets/cortex-m/startup.cpp) once RAM is set up; 0 is success.
+// The program, called by the reset handler (targets/cortex-m/startup.cpp) once RAM is set up; 0 is
+// success.
 int programMain();
 
 void print(const char* text);

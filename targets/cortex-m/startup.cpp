@@ -11,7 +11,6 @@ extern "C" {
 extern std::uint32_t __data_load[], __data_start[], __data_end[], __bss_start[], __bss_end[];
 extern std::uint32_t __stack_top[];
 
-
 [[noreturn]] void Reset_Handler() {
   for (std::uint32_t *from = __data_load, *to = __data_start; to < __data_end;) *to++ = *from++;
   for (std::uint32_t* word = __bss_start; word < __bss_end; ++word) *word = 0;
@@ -27,8 +26,21 @@ extern std::uint32_t __stack_top[];
 using Handler = void (*)();
 // ARMv6-M's 16 system exceptions: initial SP, reset, NMI, HardFault, 7 reserved (faults on v7-M),
 // SVCall, 2 reserved, PendSV, SysTick.
-__attribute__((section(".vectors"), used)) const Handler kVectors[16] = {
-    reinterpret_cast<Handler>(__stack_top), Reset_Handler, Fault_Handler, Fault_Handler,
-    Fault_Handler, Fault_Handler, Fault_Handler, nullptr, nullptr, nullptr, nullptr,
-    Fault_Handler, nullptr, nullptr, Fault_Handler, Fault_Handler};
+__attribute__((section(".vectors"), used))
+const Handler kVectors[16] = {reinterpret_cast<Handler>(__stack_top),
+                              Reset_Handler,
+                              Fault_Handler,
+                              Fault_Handler,
+                              Fault_Handler,
+                              Fault_Handler,
+                              Fault_Handler,
+                              nullptr,
+                              nullptr,
+                              nullptr,
+                              nullptr,
+                              Fault_Handler,
+                              nullptr,
+                              nullptr,
+                              Fault_Handler,
+                              Fault_Handler};
 }

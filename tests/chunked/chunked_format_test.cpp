@@ -8,8 +8,8 @@
 #include <optional>
 #include <vector>
 
-#include "renderer/crc32.h"
 #include "octopoint/progressive.h"
+#include "renderer/crc32.h"
 #include "tests/support/chunked_test_support.h"
 
 namespace octopoint {

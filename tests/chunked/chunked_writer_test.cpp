@@ -10,10 +10,10 @@
 #include "codegen/level_voxels.h"
 #include "codegen/model_writer.h"
 #include "codegen/prepare_error.h"
-#include "tests/support/model_images.h"
 #include "octopoint/models.h"
 #include "octopoint/progressive.h"
 #include "tests/support/chunked_test_support.h"
+#include "tests/support/model_images.h"
 
 namespace octopoint {
 namespace {

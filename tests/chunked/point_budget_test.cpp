@@ -9,10 +9,10 @@
 #include <vector>
 
 #include "codegen/model_writer.h"
-#include "tests/support/model_images.h"
 #include "octopoint/models.h"
 #include "octopoint/progressive.h"
 #include "tests/support/chunked_test_support.h"
+#include "tests/support/model_images.h"
 
 namespace octopoint {
 namespace {

@@ -1,11 +1,9 @@
 // The progressive model (octopoint/progressive.h) against independent references: a model
 // holding every chunk a view needs draws exactly the whole-model stream's frame; a model holding
 // any set of chunks (a prefix of the file, or chunks in any order) draws exactly the frame worked
-// out from the whole-model streams for that set (tests/support/chunked_test_support.h); a damaged chunk is
-// refused without touching the rest; fetch priorities ask for what the view needs and nothing
-// finer.
-#include "octopoint/progressive.h"
-
+// out from the whole-model streams for that set (tests/support/chunked_test_support.h); a damaged
+// chunk is refused without touching the rest; fetch priorities ask for what the view needs and
+// nothing finer.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -13,10 +11,11 @@
 
 #include "codegen/level_voxels.h"
 #include "codegen/model_writer.h"
-#include "renderer/level_of_detail.h"
-#include "tests/support/model_images.h"
 #include "octopoint/models.h"
+#include "octopoint/progressive.h"
+#include "renderer/level_of_detail.h"
 #include "tests/support/chunked_test_support.h"
+#include "tests/support/model_images.h"
 
 namespace octopoint {
 namespace {
@@ -313,9 +312,9 @@ TEST_P(ProgressiveModelTest, ASnapshotDrawsTheModelAsItWasWhileChunksKeepArrivin
   // complete frame.
   const ChunkedHead& head = whole.head();
   const int finest = whole.levelCount() - 1;
-  const std::uint64_t cut =
-      (head.levels[static_cast<std::size_t>(finest - 1)].chunks_offset +
-       head.levels[static_cast<std::size_t>(finest)].chunks_offset) / 2;
+  const std::uint64_t cut = (head.levels[static_cast<std::size_t>(finest - 1)].chunks_offset +
+                             head.levels[static_cast<std::size_t>(finest)].chunks_offset) /
+                            2;
   const std::span<const std::uint8_t> prefix = std::span(f.image).first(cut);
   int incomplete_views = 0;
   for (const Camera& camera : cameras()) {

@@ -25,8 +25,8 @@ class InputFileTest : public ::testing::Test {
  protected:
   void SetUp() override {
     const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-    dir_ = fs::temp_directory_path() / ("octopoint_input_file_" + std::string(info->name()) + "_" +
-                                        std::to_string(::getpid()));
+    dir_ = fs::temp_directory_path() /
+           ("octopoint_input_file_" + std::string(info->name()) + "_" + std::to_string(::getpid()));
     fs::remove_all(dir_);
     fs::create_directories(dir_);
   }
@@ -67,29 +67,39 @@ TEST_F(InputFileTest, EachKindOfNonFileHasItsOwnMessage) {
   EXPECT_EQ(readError(dir_ / "folder"), d + "/folder: is a directory, not a scene file");
   // A FIFO must be refused at once, not read (which would block forever).
   const auto start = std::chrono::steady_clock::now();
-  EXPECT_EQ(readError(dir_ / "fifo"), d + "/fifo: is a FIFO (named pipe), not a regular file: a scene file must be a file");
+  EXPECT_EQ(readError(dir_ / "fifo"),
+            d + "/fifo: is a FIFO (named pipe), not a regular file: a scene file must be a file");
   EXPECT_LT(std::chrono::steady_clock::now() - start, std::chrono::seconds(1));
-  EXPECT_EQ(readError("/dev/zero"), "/dev/zero: is a character device, not a regular file: a scene file must be a file");
-  EXPECT_EQ(readError(dir_ / "dangling"), d + "/dangling: is a dangling symbolic link (what it points to does not exist)");
-  EXPECT_EQ(readError(dir_ / "loop_a"), d + "/loop_a: too many levels of symbolic links (a symlink loop?)");
+  EXPECT_EQ(readError("/dev/zero"),
+            "/dev/zero: is a character device, not a regular file: a scene file must be a file");
+  EXPECT_EQ(readError(dir_ / "dangling"),
+            d + "/dangling: is a dangling symbolic link (what it points to does not exist)");
+  EXPECT_EQ(readError(dir_ / "loop_a"),
+            d + "/loop_a: too many levels of symbolic links (a symlink loop?)");
   EXPECT_EQ(readError(dir_ / "file" / "x"), d + "/file/x: a part of the path is not a directory");
-  EXPECT_EQ(messageOf([] { readInputFile("", kScene); }), "an empty file name was given for a scene file");
-  EXPECT_EQ(messageOf([] { readInputFile("", {"octopoint model", 1}); }),
+  EXPECT_EQ(messageOf([] { readInputFile("", kScene); }),
+            "an empty file name was given for a scene file");
+  EXPECT_EQ(messageOf([] {
+              readInputFile("", {"octopoint model", 1});
+            }),
             "an empty file name was given for an octopoint model");
 }
 
 TEST_F(InputFileTest, AFileOverTheLimitIsRefusedByItsSize) {
   // Sparse: 2 GiB that take no disk space, refused from its size without reading.
-  {
-    std::ofstream big(dir_ / "big.json");
-  }
+  { std::ofstream big(dir_ / "big.json"); }
   fs::resize_file(dir_ / "big.json", 2 * kGiB);
-  EXPECT_EQ(messageOf([&] { checkInputFile(dir_ / "big.json", {"scan", kGiB}); }),
-            (dir_ / "big.json").string() + ": 2147483648 bytes, more than the 1 GiB a scan may have");
+  EXPECT_EQ(
+      messageOf([&] {
+        checkInputFile(dir_ / "big.json", {"scan", kGiB});
+      }),
+      (dir_ / "big.json").string() + ": 2147483648 bytes, more than the 1 GiB a scan may have");
   std::ofstream(dir_ / "limit.json") << std::string(1024, ' ');
   EXPECT_EQ(readInputFile(dir_ / "limit.json", kScene).size(), 1024u);
   std::ofstream(dir_ / "over.json") << std::string(1025, ' ');
-  EXPECT_EQ(readError(dir_ / "over.json"), (dir_ / "over.json").string() + ": 1025 bytes, more than the 1 KiB a scene file may have");
+  EXPECT_EQ(
+      readError(dir_ / "over.json"),
+      (dir_ / "over.json").string() + ": 1025 bytes, more than the 1 KiB a scene file may have");
 }
 
 TEST(DescribeBytes, StatesLimitsInTheirUnit) {

@@ -34,34 +34,44 @@ TEST(ParseInteger, TakesWholeNumbersInRange) {
 }
 
 TEST(ParseInteger, RefusesWhatIsNotWholeOrOutOfRangeNamingTheOption) {
-  EXPECT_EQ(messageOf([] { parseInt("--depth", "8.7", 1, 16); }), "--depth: '8.7' is not a whole number (1..16)");
-  EXPECT_EQ(messageOf([] { parseInt("--depth", "1e300", 1, 16); }), "--depth: '1e300' is not a whole number (1..16)");
+  EXPECT_EQ(messageOf([] { parseInt("--depth", "8.7", 1, 16); }),
+            "--depth: '8.7' is not a whole number (1..16)");
+  EXPECT_EQ(messageOf([] { parseInt("--depth", "1e300", 1, 16); }),
+            "--depth: '1e300' is not a whole number (1..16)");
   EXPECT_EQ(messageOf([] { parseInt("--depth", "40", 1, 16); }), "--depth: 40 is outside 1..16");
   EXPECT_EQ(messageOf([] { parseInt("--depth", "0", 1, 16); }), "--depth: 0 is outside 1..16");
   EXPECT_EQ(messageOf([] { parseInt("--depth", "-1", 1, 16); }), "--depth: -1 is outside 1..16");
   // Past 64 bits: outside the range, never wrapped to a small number.
   EXPECT_EQ(messageOf([] { parseInt("--depth", "18446744073709551624", 1, 16); }),
             "--depth: 18446744073709551624 is outside 1..16");
-  EXPECT_EQ(messageOf([] { parseInt("--depths", "2147483648", 1, 16); }), "--depths: 2147483648 is outside 1..16");
+  EXPECT_EQ(messageOf([] { parseInt("--depths", "2147483648", 1, 16); }),
+            "--depths: 2147483648 is outside 1..16");
   for (const char* bad : {"", " 8", "8 ", "8x", "0x8", "++8", "+-8", "8,", "eight"}) {
-    EXPECT_NE(messageOf([&] { parseInt("--depth", bad, 1, 16); }).find("is not a whole number"), std::string::npos)
+    EXPECT_NE(messageOf([&] { parseInt("--depth", bad, 1, 16); }).find("is not a whole number"),
+              std::string::npos)
         << bad;
   }
 }
 
 TEST(ParseIntList, TakesAscendingListsAndRefusesTheRestByItem) {
-  EXPECT_EQ(parseIntList("--depths", "7,8", 1, 16, 8, ListOrder::kStrictlyAscending), (std::vector<int>{7, 8}));
+  EXPECT_EQ(parseIntList("--depths", "7,8", 1, 16, 8, ListOrder::kStrictlyAscending),
+            (std::vector<int>{7, 8}));
   EXPECT_EQ(parseIntList("--f", "9,3,3", 1, 16, 8, ListOrder::kAny), (std::vector<int>{9, 3, 3}));
-  EXPECT_EQ(messageOf([] { parseIntList("--depths", "0", 1, 16, 8, ListOrder::kStrictlyAscending); }),
-            "--depths: 0 is outside 1..16");
-  EXPECT_EQ(messageOf([] { parseIntList("--depths", "8,7", 1, 16, 8, ListOrder::kStrictlyAscending); }),
-            "--depths: '8,7' is not strictly ascending");
-  EXPECT_EQ(messageOf([] { parseIntList("--depths", "7,,8", 1, 16, 8, ListOrder::kStrictlyAscending); }),
-            "--depths: item 2 of '7,,8' is empty (give a comma-separated list of whole numbers)");
-  EXPECT_EQ(messageOf([] { parseIntList("--depths", "", 1, 16, 8, ListOrder::kStrictlyAscending); }),
-            "--depths: item 1 of '' is empty (give a comma-separated list of whole numbers)");
-  EXPECT_EQ(messageOf([] { parseIntList("--depths", "1,2,3", 1, 16, 2, ListOrder::kStrictlyAscending); }),
-            "--depths: '1,2,3' has more than 2 items");
+  EXPECT_EQ(
+      messageOf([] { parseIntList("--depths", "0", 1, 16, 8, ListOrder::kStrictlyAscending); }),
+      "--depths: 0 is outside 1..16");
+  EXPECT_EQ(
+      messageOf([] { parseIntList("--depths", "8,7", 1, 16, 8, ListOrder::kStrictlyAscending); }),
+      "--depths: '8,7' is not strictly ascending");
+  EXPECT_EQ(
+      messageOf([] { parseIntList("--depths", "7,,8", 1, 16, 8, ListOrder::kStrictlyAscending); }),
+      "--depths: item 2 of '7,,8' is empty (give a comma-separated list of whole numbers)");
+  EXPECT_EQ(
+      messageOf([] { parseIntList("--depths", "", 1, 16, 8, ListOrder::kStrictlyAscending); }),
+      "--depths: item 1 of '' is empty (give a comma-separated list of whole numbers)");
+  EXPECT_EQ(
+      messageOf([] { parseIntList("--depths", "1,2,3", 1, 16, 2, ListOrder::kStrictlyAscending); }),
+      "--depths: '1,2,3' has more than 2 items");
 }
 
 TEST(ParseFrameSize, TakesWxHAndRefusesWrapsAndHugeFrames) {
@@ -81,23 +91,32 @@ TEST(ParseFrameSize, TakesWxHAndRefusesWrapsAndHugeFrames) {
 
 TEST(ParseChoice, NamesTheChoices) {
   EXPECT_EQ(parseChoice("--axes", "y-up", {"y-down", "y-up"}), 1u);
-  EXPECT_EQ(messageOf([] { parseChoice("--axes", "z", {"y-down", "y-up"}); }), "--axes: 'z' is not one of y-down, y-up");
+  EXPECT_EQ(messageOf([] {
+              parseChoice("--axes", "z", {"y-down", "y-up"});
+            }),
+            "--axes: 'z' is not one of y-down, y-up");
 }
 
 TEST(ParseReal, TakesFiniteNumbersInRangeOnly) {
   EXPECT_DOUBLE_EQ(parseReal("--zoom", "1.5", 0, 10), 1.5);
   EXPECT_DOUBLE_EQ(parseReal("--zoom", "+2e-1", 0, 10), 0.2);
   EXPECT_DOUBLE_EQ(parseReal("--yaw", "1e-400", -1, 1), 0.0);  // underflow is zero, not an error
-  EXPECT_EQ(messageOf([] { parseReal("--zoom", "1e400", 0, 10); }), "--zoom: 1e400 is outside 0..10");
+  EXPECT_EQ(messageOf([] { parseReal("--zoom", "1e400", 0, 10); }),
+            "--zoom: 1e400 is outside 0..10");
   EXPECT_EQ(messageOf([] { parseReal("--zoom", "11", 0, 10); }), "--zoom: 11 is outside 0..10");
   for (const char* bad : {"", "nan", "inf", "-inf", "1.5x", " 1", "0x10", "1,5", "--1"}) {
-    EXPECT_NE(messageOf([&] { parseReal("--zoom", bad, -100, 100); }).find("--zoom: "), std::string::npos) << bad;
-    EXPECT_EQ(messageOf([&] { parseReal("--zoom", bad, -100, 100); }).find("no error"), std::string::npos) << bad;
+    EXPECT_NE(messageOf([&] { parseReal("--zoom", bad, -100, 100); }).find("--zoom: "),
+              std::string::npos)
+        << bad;
+    EXPECT_EQ(messageOf([&] { parseReal("--zoom", bad, -100, 100); }).find("no error"),
+              std::string::npos)
+        << bad;
   }
   EXPECT_EQ(messageOf([] { parseZoom("--zoom", "0"); }), "--zoom: 0 is outside 1/65536..32767");
   EXPECT_EQ(parseZoom("--zoom", "1.5").raw(), 3 * 32768);
   EXPECT_EQ(parseDegrees("--yaw", "-90"), Angle::fromDegrees(-90));
-  EXPECT_EQ(messageOf([] { parseDegrees("--yaw", "1e300"); }), "--yaw: 1e300 is outside -1e+06..1e+06");
+  EXPECT_EQ(messageOf([] { parseDegrees("--yaw", "1e300"); }),
+            "--yaw: 1e300 is outside -1e+06..1e+06");
 }
 
 struct Argv {
@@ -139,7 +158,8 @@ TEST(ArgumentReader, RefusesMissingValuesUnknownOptionsAndCutsWhatItEchoes) {
   ArgumentReader b(unknown.argc(), unknown.argv());
   ASSERT_TRUE(b.next());
   const std::string message = messageOf([&] { b.refuseUnknown(); });
-  EXPECT_EQ(message, "unknown option '--frobnicate" + std::string(kMaxQuoted - 12, 'x') + "...' (see --help)");
+  EXPECT_EQ(message, "unknown option '--frobnicate" + std::string(kMaxQuoted - 12, 'x') +
+                         "...' (see --help)");
   Argv switched({"tool", "--fill=yes"});
   ArgumentReader c(switched.argc(), switched.argv());
   ASSERT_TRUE(c.next());

@@ -8,9 +8,9 @@
 #include <unistd.h>
 
 #include <csignal>
-#include <functional>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <set>
 #include <sstream>
 #include <string>
@@ -44,7 +44,8 @@ class OutputFileTest : public ::testing::Test {
   // Every entry of the directory, hidden ones (a staging folder or temporary left behind) included.
   std::set<std::string> entries() const {
     std::set<std::string> names;
-    for (const auto& entry : fs::directory_iterator(dir_)) names.insert(entry.path().filename().string());
+    for (const auto& entry : fs::directory_iterator(dir_))
+      names.insert(entry.path().filename().string());
     return names;
   }
   static std::string messageOf(const std::function<void()>& action) {
@@ -79,15 +80,17 @@ TEST_F(OutputFileTest, ReplacesTheFilesOfAnEarlierRun) {
 TEST_F(OutputFileTest, ANameTakenByADirectoryOrFifoIsRefusedBeforeWriting) {
   fs::create_directories(dir_ / "b.txt");
   put(dir_ / "a.txt", "old a");
-  EXPECT_NE(messageOf([&] { writeFilesAtomically(dir_, {{"a.txt", "new a"}, {"b.txt", "new b"}}); })
-                .find("b.txt: exists and is a directory"),
+  EXPECT_NE(messageOf([&] {
+              writeFilesAtomically(dir_, {{"a.txt", "new a"}, {"b.txt", "new b"}});
+            }).find("b.txt: exists and is a directory"),
             std::string::npos);
   EXPECT_EQ(entries(), (std::set<std::string>{"a.txt", "b.txt"}));
   EXPECT_EQ(contentsOf(dir_ / "a.txt"), "old a");
   fs::remove(dir_ / "b.txt");
   ASSERT_EQ(::mkfifo((dir_ / "b.txt").c_str(), 0600), 0);
-  EXPECT_NE(messageOf([&] { writeFilesAtomically(dir_, {{"a.txt", "new a"}, {"b.txt", "new b"}}); })
-                .find("b.txt: exists and is a FIFO"),
+  EXPECT_NE(messageOf([&] {
+              writeFilesAtomically(dir_, {{"a.txt", "new a"}, {"b.txt", "new b"}});
+            }).find("b.txt: exists and is a FIFO"),
             std::string::npos);
   EXPECT_EQ(contentsOf(dir_ / "a.txt"), "old a");
   EXPECT_TRUE(fs::is_fifo(dir_ / "b.txt"));
@@ -122,7 +125,8 @@ TEST_F(OutputFileTest, AFailureKeepsTheObsoleteFilesOfTheEarlierSet) {
   writeFilesAtomically(dir_, {{"a.txt", "old a"}, {"b.txt", "old b"}});
   fs::create_directories(dir_ / "sub");
   put(dir_ / "sub" / "c.txt", "old c");
-  EXPECT_THROW(writeFilesAtomically(dir_, {{"a.txt", "new a"}, {"missing/x.txt", "x"}}, {"b.txt"}), Error);
+  EXPECT_THROW(writeFilesAtomically(dir_, {{"a.txt", "new a"}, {"missing/x.txt", "x"}}, {"b.txt"}),
+               Error);
   EXPECT_EQ(entries(), (std::set<std::string>{"a.txt", "b.txt", "sub"}));
   // b.txt is taken out first; sub/c.txt cannot be moved aside (no "sub" among the displaced
   // files), so everything is put back.
@@ -196,18 +200,28 @@ TEST_F(OutputFileTest, OutputsThatAreNotRegularFilesAreRefusedAndKept) {
   fs::create_symlink("nowhere", dir_ / "dangling.png");
   fs::create_symlink("loop_b", dir_ / "loop_a");
   fs::create_symlink("loop_a", dir_ / "loop_b");
-  EXPECT_NE(messageOf([] { writeFileAtomically("/dev/null", "x"); }).find("/dev/null: exists and is a character device"),
+  EXPECT_NE(messageOf([] {
+              writeFileAtomically("/dev/null", "x");
+            }).find("/dev/null: exists and is a character device"),
             std::string::npos);
-  EXPECT_NE(messageOf([&] { writeFileAtomically(dir_ / "fifo.png", "x"); }).find("is a FIFO"), std::string::npos);
-  EXPECT_NE(messageOf([&] { writeFileAtomically(dir_ / "sub", "x"); }).find("is a directory"), std::string::npos);
-  EXPECT_NE(messageOf([&] { writeFileAtomically(dir_ / "dangling.png", "x"); }).find("dangling symbolic link"),
+  EXPECT_NE(messageOf([&] { writeFileAtomically(dir_ / "fifo.png", "x"); }).find("is a FIFO"),
             std::string::npos);
-  EXPECT_NE(messageOf([&] { writeFileAtomically(dir_ / "loop_a", "x"); }).find("symlink loop"), std::string::npos);
-  EXPECT_NE(messageOf([&] { writeFileAtomically(dir_ / "missing" / "x.png", "x"); }).find("does not exist"),
+  EXPECT_NE(messageOf([&] { writeFileAtomically(dir_ / "sub", "x"); }).find("is a directory"),
+            std::string::npos);
+  EXPECT_NE(messageOf([&] {
+              writeFileAtomically(dir_ / "dangling.png", "x");
+            }).find("dangling symbolic link"),
+            std::string::npos);
+  EXPECT_NE(messageOf([&] { writeFileAtomically(dir_ / "loop_a", "x"); }).find("symlink loop"),
+            std::string::npos);
+  EXPECT_NE(messageOf([&] {
+              writeFileAtomically(dir_ / "missing" / "x.png", "x");
+            }).find("does not exist"),
             std::string::npos);
   EXPECT_TRUE(fs::is_fifo(dir_ / "fifo.png"));
   EXPECT_TRUE(fs::is_character_file("/dev/null"));
-  EXPECT_EQ(entries(), (std::set<std::string>{"sub", "fifo.png", "dangling.png", "loop_a", "loop_b"}));
+  EXPECT_EQ(entries(),
+            (std::set<std::string>{"sub", "fifo.png", "dangling.png", "loop_a", "loop_b"}));
 }
 
 // An output directory that is a file, a FIFO or a device is named by its kind, before anything
@@ -219,15 +233,22 @@ TEST_F(OutputFileTest, AnOutputDirectoryThatIsNotADirectoryIsNamedByItsKind) {
   fs::create_symlink("loop_b", dir_ / "loop_a");
   fs::create_symlink("loop_a", dir_ / "loop_b");
   fs::create_symlink("nowhere", dir_ / "dangling");
-  EXPECT_EQ(messageOf([&] { writeFilesAtomically(dir_ / "file", {{"a.txt", "a"}}); }),
+  EXPECT_EQ(messageOf([&] {
+              writeFilesAtomically(dir_ / "file", {{"a.txt", "a"}});
+            }),
             (dir_ / "file").string() + ": exists and is not a directory: it is a regular file");
-  EXPECT_EQ(messageOf([&] { writeFilesAtomically(dir_ / "fifo", {{"a.txt", "a"}}); }),
-            (dir_ / "fifo").string() + ": exists and is not a directory: it is a FIFO (named pipe)");
+  EXPECT_EQ(
+      messageOf([&] {
+        writeFilesAtomically(dir_ / "fifo", {{"a.txt", "a"}});
+      }),
+      (dir_ / "fifo").string() + ": exists and is not a directory: it is a FIFO (named pipe)");
   EXPECT_EQ(messageOf([] { checkOutputDirectory("/dev/null"); }),
             "/dev/null: exists and is not a directory: it is a character device");
-  EXPECT_NE(messageOf([&] { checkOutputDirectory(dir_ / "loop_a"); }).find("symlink loop"), std::string::npos);
-  EXPECT_NE(messageOf([&] { checkOutputDirectory(dir_ / "dangling"); }).find("dangling symbolic link"),
+  EXPECT_NE(messageOf([&] { checkOutputDirectory(dir_ / "loop_a"); }).find("symlink loop"),
             std::string::npos);
+  EXPECT_NE(
+      messageOf([&] { checkOutputDirectory(dir_ / "dangling"); }).find("dangling symbolic link"),
+      std::string::npos);
   EXPECT_NO_THROW(checkOutputDirectory(dir_ / "not_yet"));
   EXPECT_NO_THROW(checkOutputDirectory(dir_));
   EXPECT_TRUE(fs::is_fifo(dir_ / "fifo"));

@@ -21,12 +21,13 @@ class ApiMisuse : public ::testing::Test {
     model_ = ModelView::fromEmbedded(*models::defaultModel(), &issue);
     ASSERT_TRUE(model_.has_value()) << describe(issue.error);
     level_ = &model_->finestLevel();
-    ASSERT_EQ(buildFrameSetup(Camera{}, level_->depth, kDefaultFractionBits, &setup_), CameraError::kNone);
+    ASSERT_EQ(buildFrameSetup(Camera{}, level_->depth, kDefaultFractionBits, &setup_),
+              CameraError::kNone);
   }
 
   // Every variant refuses: false, and the frame keeps the marker it was filled with.
-  void expectRefusedByEveryVariant(const FrameSetup& setup, Framebuffer& frame, const LevelView& level,
-                                   RenderError why) {
+  void expectRefusedByEveryVariant(const FrameSetup& setup, Framebuffer& frame,
+                                   const LevelView& level, RenderError why) {
     EXPECT_EQ(checkRender(level, setup, frame), why);
     for (const VariantInfo& info : allVariants()) {
       std::fill(frame.pixelData(), frame.pixelData() + frame.pixels().size(), kMarker);
@@ -75,7 +76,8 @@ TEST_F(ApiMisuse, ASetUpBuildFrameSetupWouldNotMakeIsRefused) {
   expectRefusedByEveryVariant(wrong_bits, frame, *level_, RenderError::kBadSetup);
   FrameSetup wrong_splat = setup_;
   wrong_splat.splat.columns = 50;
-  wrong_splat.splat.span_x = std::numeric_limits<std::int32_t>::max() - 5;  // p + offset + span would wrap
+  wrong_splat.splat.span_x =
+      std::numeric_limits<std::int32_t>::max() - 5;  // p + offset + span would wrap
   expectRefusedByEveryVariant(wrong_splat, frame, *level_, RenderError::kBadSetup);
   wrong_splat.splat.span_x = -1;
   expectRefusedByEveryVariant(wrong_splat, frame, *level_, RenderError::kBadSetup);
@@ -135,7 +137,8 @@ TEST_F(ApiMisuse, RgbRendererDrawsWhatTheDetailedApiDraws) {
   for (const bool fill : {false, true}) {
     const LevelView& level = model_->finestLevel();
     FrameSetup setup;
-    ASSERT_EQ(buildFrameSetup(camera, level.depth, kDefaultFractionBits, &setup), CameraError::kNone);
+    ASSERT_EQ(buildFrameSetup(camera, level.depth, kDefaultFractionBits, &setup),
+              CameraError::kNone);
     Framebuffer frame(setup);
     ASSERT_TRUE(renderLevel(defaultVariant(), level, setup, frame));
     if (fill) {

@@ -12,8 +12,8 @@
 #include <numeric>
 #include <vector>
 
-#include "octopoint/models.h"
 #include "octopoint/bands.h"
+#include "octopoint/models.h"
 #include "octopoint/render.h"
 
 namespace octopoint {
@@ -23,21 +23,24 @@ namespace {
 // pixel's palette index exactly, and background (0xFFFF) is no index.
 Rgb565Palette identityPalette() {
   Rgb565Palette palette;
-  for (std::size_t i = 0; i < palette.colour.size(); ++i) palette.colour[i] = static_cast<std::uint16_t>(i);
+  for (std::size_t i = 0; i < palette.colour.size(); ++i)
+    palette.colour[i] = static_cast<std::uint16_t>(i);
   palette.background = 0xFFFF;
   return palette;
 }
 
 // The whole frame as the desktop draws it (renderLevel, then HoleFiller when filling), in RGB565.
-std::vector<std::uint16_t> wholeFrame(Variant variant, const LevelView& level, const FrameSetup& setup,
-                                      bool fill, const Rgb565Palette& palette) {
+std::vector<std::uint16_t> wholeFrame(Variant variant, const LevelView& level,
+                                      const FrameSetup& setup, bool fill,
+                                      const Rgb565Palette& palette) {
   Framebuffer frame(setup.width, setup.height);
   EXPECT_TRUE(renderLevel(variant, level, setup, frame));
   if (fill) {
     EXPECT_FALSE(HoleFiller(setup.width).fill(frame, bridgeDepthLimit(setup)).refused);
   }
   std::vector<std::uint16_t> rgb(frame.pixels().size());
-  packedToRgb565(frame.pixels().data(), rgb.size(), palette, reinterpret_cast<std::uint8_t*>(rgb.data()));
+  packedToRgb565(frame.pixels().data(), rgb.size(), palette,
+                 reinterpret_cast<std::uint8_t*>(rgb.data()));
   return rgb;
 }
 
@@ -54,10 +57,12 @@ struct Collected {
   BandSink sink() {
     BandSink sink;
     sink.user = this;
-    sink.flush = [](void* user, std::int32_t y0, std::int32_t rows, std::span<const std::uint8_t> bytes) {
+    sink.flush = [](void* user, std::int32_t y0, std::int32_t rows,
+                    std::span<const std::uint8_t> bytes) {
       auto& self = *static_cast<Collected*>(user);
-      self.in_order = self.in_order && y0 == self.next_y0 &&
-                      bytes.size() == static_cast<std::size_t>(rows) * static_cast<std::size_t>(self.width) * 2;
+      self.in_order =
+          self.in_order && y0 == self.next_y0 &&
+          bytes.size() == static_cast<std::size_t>(rows) * static_cast<std::size_t>(self.width) * 2;
       self.next_y0 = y0 + rows;
       const std::size_t at = self.rgb.size();
       self.rgb.resize(at + bytes.size() / 2);
@@ -87,9 +92,9 @@ class BandRenderer : public ::testing::Test {
   }
 
   // Every band height 1..height of one frame: the bands equal `expected`.
-  static void expectEveryBandHeight(const LevelView& level, const FrameSetup& setup, Variant variant,
-                                    bool fill, const BandIndex& index, const std::vector<std::uint16_t>& expected,
-                                    const char* what) {
+  static void expectEveryBandHeight(const LevelView& level, const FrameSetup& setup,
+                                    Variant variant, bool fill, const BandIndex& index,
+                                    const std::vector<std::uint16_t>& expected, const char* what) {
     const Rgb565Palette palette = identityPalette();
     std::vector<std::uint32_t> history(holeFillHistoryWords(setup.width));
     for (std::int32_t rows = 1; rows <= setup.height; ++rows) {
@@ -97,12 +102,13 @@ class BandRenderer : public ::testing::Test {
       std::vector<std::uint32_t> buffer(bandBufferWords(setup.width, config));
       Collected collected;
       collected.width = setup.width;
-      ASSERT_EQ(renderBands(level, setup, config, index, palette, {buffer, {}, history}, collected.sink()),
+      ASSERT_EQ(renderBands(level, setup, config, index, palette, {buffer, {}, history},
+                            collected.sink()),
                 BandError::kNone);
       ASSERT_TRUE(collected.in_order) << what;
       ASSERT_EQ(collected.next_y0, setup.height) << what;
-      ASSERT_TRUE(collected.rgb == expected) << what << ": band rows " << rows << ", fill " << fill
-                                             << ", index level " << index.level;
+      ASSERT_TRUE(collected.rgb == expected)
+          << what << ": band rows " << rows << ", fill " << fill << ", index level " << index.level;
     }
   }
 
@@ -130,11 +136,13 @@ TEST_F(BandRenderer, EveryFixedVariantAtEveryBandHeightIsTheWholeFrame) {
   // fixed_fast and fixed_simd draw and the paper's variants do not: each is compared with its own
   // whole frame.
   const Camera cameras[] = {camera(64, 48, 0, 0, 100, 0, 0), camera(48, 64, 30, -20, 180, 7, -9),
-                            camera(57, 41, -45, 15, 800, -13, 11), camera(64, 48, 20, 10, 1000, 9, -30)};
+                            camera(57, 41, -45, 15, 800, -13, 11),
+                            camera(64, 48, 20, 10, 1000, 9, -30)};
   {  // depth 7, not 8: every variant at every height of four cameras is many frames
     const LevelView& level = *model_->levelOfDepth(7);
     std::array<SubtreeSize, 600> storage_2{}, storage_4{};
-    const BandIndex indexes[] = {BandIndex{}, buildBandIndex(level, 2, storage_2), buildBandIndex(level, 4, storage_4)};
+    const BandIndex indexes[] = {BandIndex{}, buildBandIndex(level, 2, storage_2),
+                                 buildBandIndex(level, 4, storage_4)};
     ASSERT_EQ(indexes[1].level, 2);  // depth 7: levels 2 to 5 can be indexed
     ASSERT_EQ(indexes[2].level, 4);
     for (const Camera& cam : cameras) {
@@ -145,9 +153,11 @@ TEST_F(BandRenderer, EveryFixedVariantAtEveryBandHeightIsTheWholeFrame) {
       for (const VariantInfo& info : allVariants()) {
         if (!supportsBands(info.variant)) continue;
         for (const bool fill : {false, true}) {
-          const std::vector<std::uint16_t> expected = wholeFrame(info.variant, level, setup, fill, palette);
+          const std::vector<std::uint16_t> expected =
+              wholeFrame(info.variant, level, setup, fill, palette);
           for (const BandIndex& index : indexes) {
-            expectEveryBandHeight(level, setup, info.variant, fill, index, expected, info.name.data());
+            expectEveryBandHeight(level, setup, info.variant, fill, index, expected,
+                                  info.name.data());
           }
         }
       }
@@ -162,13 +172,15 @@ TEST_F(BandRenderer, FastestVariantsAtEveryBandHeightOfFullSizeFrames) {
   std::array<SubtreeSize, 600> storage{};
   const BandIndex index = buildBandIndex(level, 4, storage);
   ASSERT_EQ(index.level, 4);
-  for (const Camera& cam : {camera(320, 240, 0, 0, 100, 0, 0), camera(240, 320, 30, -20, 150, 20, 0)}) {
+  for (const Camera& cam :
+       {camera(320, 240, 0, 0, 100, 0, 0), camera(240, 320, 30, -20, 150, 20, 0)}) {
     const FrameSetup setup = setupFor(cam, level.depth);
     for (const Variant variant : {Variant::kFixedFast, Variant::kFixedSimd}) {
       for (const bool fill : {false, true}) {
-        // fixed_fast's whole frame, footprint splats included where a voxel covers more than a pixel
-        // (the portrait camera's): fixed_simd's bands must be it too.
-        const std::vector<std::uint16_t> expected = wholeFrame(Variant::kFixedFast, level, setup, fill, palette);
+        // fixed_fast's whole frame, footprint splats included where a voxel covers more than a
+        // pixel (the portrait camera's): fixed_simd's bands must be it too.
+        const std::vector<std::uint16_t> expected =
+            wholeFrame(Variant::kFixedFast, level, setup, fill, palette);
         expectEveryBandHeight(level, setup, variant, fill, index, expected, "full size");
       }
     }
@@ -203,18 +215,22 @@ TEST_F(BandRenderer, TwoBuffersAlternateAndEachIsWaitedForBeforeItIsDrawnAgain) 
   const LevelView& level = model_->finestLevel();
   const FrameSetup setup = setupFor(camera(320, 240, 0, 0, 100, 0, 0), level.depth);
   const BandConfig config{Variant::kFixedFast, 24, true, Rgb{}};
-  std::vector<std::uint32_t> a(bandBufferWords(320, config)), b(a.size()), history(holeFillHistoryWords(320));
+  std::vector<std::uint32_t> a(bandBufferWords(320, config)), b(a.size()),
+      history(holeFillHistoryWords(320));
   Collected collected;
   collected.width = 320;
-  ASSERT_EQ(renderBands(level, setup, config, {}, identityPalette(), {a, b, history}, collected.sink()),
-            BandError::kNone);
+  ASSERT_EQ(
+      renderBands(level, setup, config, {}, identityPalette(), {a, b, history}, collected.sink()),
+      BandError::kNone);
   ASSERT_EQ(collected.flushes, 10);
   const auto* first = reinterpret_cast<const std::uint8_t*>(a.data());
   const auto* second = reinterpret_cast<const std::uint8_t*>(b.data());
-  for (int band = 0; band < 10; ++band) EXPECT_EQ(collected.flushed[band], band % 2 == 0 ? first : second);
+  for (int band = 0; band < 10; ++band)
+    EXPECT_EQ(collected.flushed[band], band % 2 == 0 ? first : second);
   ASSERT_EQ(collected.waited.size(), 8u);  // bands 2..9 reuse a buffer
   for (int i = 0; i < 8; ++i) EXPECT_EQ(collected.waited[i], i % 2 == 0 ? first : second);
-  EXPECT_TRUE(collected.rgb == wholeFrame(Variant::kFixedFast, level, setup, true, identityPalette()));
+  EXPECT_TRUE(collected.rgb ==
+              wholeFrame(Variant::kFixedFast, level, setup, true, identityPalette()));
 }
 
 TEST_F(BandRenderer, RefusesWhatItCannotDraw) {
@@ -229,12 +245,15 @@ TEST_F(BandRenderer, RefusesWhatItCannotDraw) {
   };
   EXPECT_EQ(bands({Variant::kFloatBaseline, 8, false, {}}, {buffer, {}, {}}, collected.sink()),
             BandError::kUnsupportedVariant);
-  EXPECT_EQ(bands({Variant::kFixedFast, 0, false, {}}, {buffer, {}, {}}, collected.sink()), BandError::kBadBandRows);
+  EXPECT_EQ(bands({Variant::kFixedFast, 0, false, {}}, {buffer, {}, {}}, collected.sink()),
+            BandError::kBadBandRows);
   EXPECT_EQ(bands({Variant::kFixedFast, 13, false, {}}, {buffer, {}, {}}, collected.sink()),
             BandError::kBufferTooSmall);
-  EXPECT_EQ(bands({Variant::kFixedFast, 8, true, {}}, {buffer, {}, {}}, collected.sink()),  // no history
-            BandError::kBufferTooSmall);
-  EXPECT_EQ(bands({Variant::kFixedFast, 8, true, {}}, {buffer, {}, history}, BandSink{}), BandError::kNoSink);
+  EXPECT_EQ(
+      bands({Variant::kFixedFast, 8, true, {}}, {buffer, {}, {}}, collected.sink()),  // no history
+      BandError::kBufferTooSmall);
+  EXPECT_EQ(bands({Variant::kFixedFast, 8, true, {}}, {buffer, {}, history}, BandSink{}),
+            BandError::kNoSink);
   // A level of another depth than the set-up's, a set-up buildFrameSetup would not make, an index
   // level the level cannot have, an index that does not fit the level: refused before a band is
   // flushed (API misuse, as tests/core/api_misuse_test.cpp), by every variant that draws bands.
@@ -249,18 +268,24 @@ TEST_F(BandRenderer, RefusesWhatItCannotDraw) {
     SCOPED_TRACE(info.name);
     const BandConfig config{info.variant, 8, false, {}};
     const BandBuffers one{buffer, {}, {}};
-    ASSERT_EQ(renderBands(level, setup, config, index, palette, one, collected.sink()), BandError::kNone);
+    ASSERT_EQ(renderBands(level, setup, config, index, palette, one, collected.sink()),
+              BandError::kNone);
     collected.flushes = 0;
     const LevelView& coarsest = model_->level(0);
-    EXPECT_EQ(renderBands(coarsest, setup, config, {}, palette, one, collected.sink()), BandError::kRefused);
+    EXPECT_EQ(renderBands(coarsest, setup, config, {}, palette, one, collected.sink()),
+              BandError::kRefused);
     FrameSetup huge_root = setup;
     huge_root.root.x = std::numeric_limits<std::int32_t>::max() - 1;
-    EXPECT_EQ(renderBands(level, huge_root, config, {}, palette, one, collected.sink()), BandError::kRefused);
-    const BandIndex leaf_index{level.depth, {}};  // an index level at the leaves: never allowed
-    EXPECT_EQ(renderBands(level, setup, config, leaf_index, palette, one, collected.sink()), BandError::kRefused);
-    EXPECT_EQ(renderBands(level, setup, config, one_short, palette, one, collected.sink()), BandError::kRefused);
-    EXPECT_EQ(renderBands(level, setup, config, {index.level, lying}, palette, one, collected.sink()),
+    EXPECT_EQ(renderBands(level, huge_root, config, {}, palette, one, collected.sink()),
               BandError::kRefused);
+    const BandIndex leaf_index{level.depth, {}};  // an index level at the leaves: never allowed
+    EXPECT_EQ(renderBands(level, setup, config, leaf_index, palette, one, collected.sink()),
+              BandError::kRefused);
+    EXPECT_EQ(renderBands(level, setup, config, one_short, palette, one, collected.sink()),
+              BandError::kRefused);
+    EXPECT_EQ(
+        renderBands(level, setup, config, {index.level, lying}, palette, one, collected.sink()),
+        BandError::kRefused);
     EXPECT_EQ(collected.flushes, 0);
   }
   FrameSetup band;
@@ -270,11 +295,13 @@ TEST_F(BandRenderer, RefusesWhatItCannotDraw) {
   std::int64_t reach_y = 0;
   for (int l = 0; l < setup.depth; ++l) {
     std::int64_t widest = 0;
-    for (const Vec3& d : setup.child_offset[static_cast<std::size_t>(l)]) widest = std::max<std::int64_t>(widest, std::abs(d.y));
+    for (const Vec3& d : setup.child_offset[static_cast<std::size_t>(l)])
+      widest = std::max<std::int64_t>(widest, std::abs(d.y));
     reach_y += widest;
   }
   FrameSetup tight = setup;
-  tight.root.y = static_cast<std::int32_t>(-(std::int64_t{INT32_MAX} - 1 - reach_y - (std::int64_t{5} << setup.fraction_bits)));
+  tight.root.y = static_cast<std::int32_t>(
+      -(std::int64_t{INT32_MAX} - 1 - reach_y - (std::int64_t{5} << setup.fraction_bits)));
   EXPECT_EQ(bandFrameSetup(tight, 5, 1, &band), CameraError::kNone);
   EXPECT_EQ(bandFrameSetup(tight, 10, 1, &band), CameraError::kOverflow);
 }

@@ -1,10 +1,11 @@
 // The camera's displacement vectors, and the cameras it must refuse.
+#include "octopoint/camera.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
 
 #include "lab/reference_rotation.h"
-#include "octopoint/camera.h"
 
 namespace octopoint {
 namespace {
@@ -40,7 +41,8 @@ TEST(Camera, VectorsMatchTheExactRotationWithinHalfAnUlp) {
   for (int level = 0; level < 8; ++level) {
     for (int k = 0; k < 8; ++k) {
       const double sign[3] = {k & 4 ? 1.0 : -1.0, k & 2 ? 1.0 : -1.0, k & 1 ? 1.0 : -1.0};
-      const Vec3& v = setup.child_offset[static_cast<std::size_t>(level)][static_cast<std::size_t>(k)];
+      const Vec3& v =
+          setup.child_offset[static_cast<std::size_t>(level)][static_cast<std::size_t>(k)];
       const std::int32_t got[3] = {v.x, v.y, v.z};
       for (int axis = 0; axis < 3; ++axis) {
         double exact = 0;
@@ -86,9 +88,11 @@ TEST(Camera, RefusesBadViewportsDepthsAndFractionBits) {
   EXPECT_EQ(buildFrameSetup(camera, 8, kDefaultFractionBits, &setup), CameraError::kBadViewport);
   camera.width = 320;
   EXPECT_EQ(buildFrameSetup(camera, 0, kDefaultFractionBits, &setup), CameraError::kBadDepth);
-  EXPECT_EQ(buildFrameSetup(camera, format::kMaxDepth + 1, kDefaultFractionBits, &setup), CameraError::kBadDepth);
+  EXPECT_EQ(buildFrameSetup(camera, format::kMaxDepth + 1, kDefaultFractionBits, &setup),
+            CameraError::kBadDepth);
   EXPECT_EQ(buildFrameSetup(camera, 8, 0, &setup), CameraError::kBadFractionBits);
-  EXPECT_EQ(buildFrameSetup(camera, 8, kMaxFractionBits + 1, &setup), CameraError::kBadFractionBits);
+  EXPECT_EQ(buildFrameSetup(camera, 8, kMaxFractionBits + 1, &setup),
+            CameraError::kBadFractionBits);
 }
 
 TEST(Camera, RefusesAPanThatWouldOverflow) {

@@ -1,6 +1,6 @@
 // fixed_delta's leaf arithmetic (renderer/delta_leaves.h) at the edges of its preconditions, and
-// the RGB565 conversion's two paths (octopoint/framebuffer.h). The variant's frames at the default set-up
-// are compared with fixed_baseline's with every other variant (render_variants_test.cpp,
+// the RGB565 conversion's two paths (octopoint/framebuffer.h). The variant's frames at the default
+// set-up are compared with fixed_baseline's with every other variant (render_variants_test.cpp,
 // band_renderer_test.cpp).
 #include "renderer/delta_leaves.h"
 
@@ -11,9 +11,9 @@
 #include <random>
 #include <vector>
 
+#include "octopoint/framebuffer.h"
 #include "octopoint/models.h"
 #include "octopoint/render.h"
-#include "octopoint/framebuffer.h"
 
 namespace octopoint {
 namespace {

@@ -12,9 +12,9 @@
 #include <vector>
 
 #include "octopoint/models.h"
+#include "octopoint/render.h"
 #include "octopoint/styles.h"
 #include "renderer/level_of_detail.h"
-#include "octopoint/render.h"
 
 namespace octopoint {
 namespace {

@@ -1,9 +1,7 @@
-// The line pass (octopoint/styles.h) on frames built by hand: silhouettes exactly where a depth step
-// or the object's outline is, one pixel wide on the nearer side; creases between normals further
-// apart than the angle and nowhere else, and not beside a silhouette that already draws them; rows
-// styled in bands exactly as in one piece.
-#include "octopoint/styles.h"
-
+// The line pass (octopoint/styles.h) on frames built by hand: silhouettes exactly where a depth
+// step or the object's outline is, one pixel wide on the nearer side; creases between normals
+// further apart than the angle and nowhere else, and not beside a silhouette that already draws
+// them; rows styled in bands exactly as in one piece.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -14,6 +12,7 @@
 #include <vector>
 
 #include "octopoint/model.h"
+#include "octopoint/styles.h"
 
 namespace octopoint {
 namespace {

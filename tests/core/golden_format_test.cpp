@@ -13,10 +13,10 @@
 #include <vector>
 
 #include "octopoint/camera.h"
-#include "renderer/decode_baseline.h"
 #include "octopoint/framebuffer.h"
 #include "octopoint/model.h"
 #include "octopoint/render.h"
+#include "renderer/decode_baseline.h"
 #include "tests/support/golden_support.h"
 
 namespace octopoint {
@@ -40,8 +40,8 @@ Bytes goldenImage(const Bytes& header16, const Bytes& palette, const Bytes& tabl
 // One level, depth 1: the root has children 0 (x-, y-, z-) and 7 (x+, y+, z+), red and blue.
 const Bytes kCornersDepth1 = goldenImage(
     {'O', 'C', 'T', 'P', 0x01, 0x00, 0x01, 0x00,  // magic, version 1, one level, reserved
-     0x40, 0x42, 0x0f, 0x00,                       // cube edge 1,000,000 um
-     0x02, 0x00, 0x00, 0x00},                      // 2 colours, reserved
+     0x40, 0x42, 0x0f, 0x00,                      // cube edge 1,000,000 um
+     0x02, 0x00, 0x00, 0x00},                     // 2 colours, reserved
     {0xff, 0x00, 0x00, 0x00, 0x00, 0xff},
     {0x01, 0x00, 0x00, 0x00,  // depth 1, reserved
      0x01, 0x00, 0x00, 0x00,  // 1 node byte
@@ -53,27 +53,29 @@ const Bytes kCornersDepth1 = goldenImage(
 // 0 and 1 differ only in z, so they fall on one pixel, and the nearer (child 0) must win although
 // it comes first in the stream.
 const Bytes kOcclusionDepths1And2 = goldenImage(
-    {'O', 'C', 'T', 'P', 0x01, 0x00, 0x02, 0x00,
-     0xe8, 0x03, 0x00, 0x00,  // cube edge 1,000 um
-     0x04, 0x00, 0x00, 0x00},  // 4 colours
+    {'O', 'C', 'T', 'P', 0x01, 0x00, 0x02, 0x00, 0xe8, 0x03, 0x00, 0x00,  // cube edge 1,000 um
+     0x04, 0x00, 0x00, 0x00},                                             // 4 colours
     {0x10, 0x20, 0x30, 0x40, 0x50, 0x60, 0x70, 0x80, 0x90, 0xa0, 0xb0, 0xc0},
-    {0x01, 0x00, 0x00, 0x00, 0x01, 0x00, 0x00, 0x00, 0x01, 0x00, 0x00, 0x00,  // depth 1: 1 node, 1 leaf
-     0x02, 0x00, 0x00, 0x00, 0x02, 0x00, 0x00, 0x00, 0x03, 0x00, 0x00, 0x00,  // depth 2: 2 nodes, 3 leaves
-     0x01,                    // depth 1 nodes
-     0x03,                    // depth 1 leaves
-     0x01, 0x43,              // depth 2 nodes: root -> child 0 -> children 0, 1, 6
-     0x01, 0x02, 0x03});      // depth 2 leaves
+    {0x01, 0x00, 0x00, 0x00, 0x01, 0x00,
+     0x00, 0x00, 0x01, 0x00, 0x00, 0x00,  // depth 1: 1 node, 1 leaf
+     0x02, 0x00, 0x00, 0x00, 0x02, 0x00,
+     0x00, 0x00, 0x03, 0x00, 0x00, 0x00,  // depth 2: 2 nodes, 3 leaves
+     0x01,                                // depth 1 nodes
+     0x03,                                // depth 1 leaves
+     0x01, 0x43,                          // depth 2 nodes: root -> child 0 -> children 0, 1, 6
+     0x01, 0x02, 0x03});                  // depth 2 leaves
 
 // A full palette and a single path down to depth 3, ending in the last colour: child 7 of child 0
 // of child 4 of the root.
 const Bytes kFullPaletteDepth3 = [] {
   Bytes palette;
-  for (int i = 0; i < 256; ++i) palette.insert(palette.end(), {std::uint8_t(i), std::uint8_t(255 - i), 7});
-  return goldenImage({'O', 'C', 'T', 'P', 0x01, 0x00, 0x01, 0x00, 0x00, 0x00, 0x00, 0x00,
-                      0x00, 0x01, 0x00, 0x00},  // cube edge 0, 256 colours
+  for (int i = 0; i < 256; ++i)
+    palette.insert(palette.end(), {std::uint8_t(i), std::uint8_t(255 - i), 7});
+  return goldenImage({'O', 'C', 'T', 'P', 0x01, 0x00, 0x01, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00,
+                      0x01, 0x00, 0x00},  // cube edge 0, 256 colours
                      palette,
-                     {0x03, 0x00, 0x00, 0x00, 0x03, 0x00, 0x00, 0x00, 0x01, 0x00, 0x00, 0x00,
-                      0x10, 0x01, 0x80, 0xff});
+                     {0x03, 0x00, 0x00, 0x00, 0x03, 0x00, 0x00, 0x00, 0x01, 0x00, 0x00, 0x00, 0x10,
+                      0x01, 0x80, 0xff});
 }();
 
 struct Leaf {
@@ -111,8 +113,9 @@ void expectPixels(const LevelView& level, const std::vector<std::string>& expect
     std::vector<std::string> drawn(8, std::string(8, '.'));
     for (int y = 0; y < 8; ++y) {
       for (int x = 0; x < 8; ++x) {
-        if (frame.covered(x, y)) drawn[static_cast<std::size_t>(y)][static_cast<std::size_t>(x)] =
-            static_cast<char>('0' + frame.colourIndexAt(x, y));
+        if (frame.covered(x, y))
+          drawn[static_cast<std::size_t>(y)][static_cast<std::size_t>(x)] =
+              static_cast<char>('0' + frame.colourIndexAt(x, y));
       }
     }
     EXPECT_EQ(drawn, expected) << info.name;
@@ -136,8 +139,8 @@ TEST(GoldenFormat, CornersModelDecodesToTwoOppositeLeaves) {
   const ModelView model = validated(kCornersDepth1);
   const std::vector<Leaf> expected = {{px(2), px(2), px(-2), 0}, {px(6), px(6), px(2), 1}};
   EXPECT_EQ(walk(model.level(0)), expected);
-  expectPixels(model.level(0), {"........", "........", "..0.....", "........",
-                                "........", "........", "......1.", "........"});
+  expectPixels(model.level(0), {"........", "........", "..0.....", "........", "........",
+                                "........", "......1.", "........"});
 }
 
 TEST(GoldenFormat, TwoLevelModelDecodesBothDepths) {
@@ -146,19 +149,19 @@ TEST(GoldenFormat, TwoLevelModelDecodesBothDepths) {
   EXPECT_EQ(model.cubeEdgePicometres(), 1'000'000'000u);  // 1,000 um
   EXPECT_EQ(model.paletteColour(3), (Rgb{0xa0, 0xb0, 0xc0}));
   EXPECT_EQ(walk(*model.levelOfDepth(1)), (std::vector<Leaf>{{px(2), px(2), px(-2), 3}}));
-  const std::vector<Leaf> depth2 = {{px(1), px(1), px(-3), 1},
-                                    {px(1), px(1), px(-1), 2},
-                                    {px(3), px(3), px(-3), 3}};
+  const std::vector<Leaf> depth2 = {
+      {px(1), px(1), px(-3), 1}, {px(1), px(1), px(-1), 2}, {px(3), px(3), px(-3), 3}};
   EXPECT_EQ(walk(*model.levelOfDepth(2)), depth2);
 }
 
 TEST(GoldenFormat, TwoLevelModelDrawsTheNearerOfTwoLeavesOnOnePixel) {
   const ModelView model = validated(kOcclusionDepths1And2);
-  expectPixels(*model.levelOfDepth(2), {"........", ".1......", "........", "...3....",
-                                        "........", "........", "........", "........"});
+  expectPixels(*model.levelOfDepth(2), {"........", ".1......", "........", "...3....", "........",
+                                        "........", "........", "........"});
   Framebuffer frame(8, 8);
   frame.clear();
-  ASSERT_TRUE(renderLevel(Variant::kFixedBaseline, *model.levelOfDepth(2), identitySetup(2), frame));
+  ASSERT_TRUE(
+      renderLevel(Variant::kFixedBaseline, *model.levelOfDepth(2), identitySetup(2), frame));
   EXPECT_EQ(frame.depthKeyAt(1, 1), identitySetup(2).depthKey(px(-3)));
 }
 
@@ -167,9 +170,9 @@ TEST(GoldenFormat, FullPaletteModelReachesTheLastColour) {
   EXPECT_EQ(model.paletteCount(), 256);
   EXPECT_EQ(model.paletteColour(255), (Rgb{255, 0, 7}));
   // Child 4 of the root: x + 2; its child 0: -1 on each axis; that one's child 7: + 0.5 each.
-  EXPECT_EQ(walk(model.level(0)),
-            (std::vector<Leaf>{{px(4) + px(2) - px(1) + px(1) / 2, px(4) - px(2) - px(1) + px(1) / 2,
-                                -px(2) - px(1) + px(1) / 2, 255}}));
+  EXPECT_EQ(walk(model.level(0)), (std::vector<Leaf>{{px(4) + px(2) - px(1) + px(1) / 2,
+                                                      px(4) - px(2) - px(1) + px(1) / 2,
+                                                      -px(2) - px(1) + px(1) / 2, 255}}));
 }
 
 TEST(GoldenFormat, AnyOtherVersionIsRefused) {

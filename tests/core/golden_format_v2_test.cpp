@@ -71,8 +71,10 @@ void expectPixels(const LevelView& level, PixelPayload payload, Index index,
     if (!info.name.starts_with("fixed_")) continue;
     Framebuffer frame(8, 8);
     frame.clear(payload);
-    if (payload == PixelPayload::kColourNormal && !drawsNormals(info.variant)) {  // fixed_delta: refused
-      EXPECT_FALSE(renderLevel(info.variant, level, identitySetup(level.depth), frame)) << info.name;
+    if (payload == PixelPayload::kColourNormal &&
+        !drawsNormals(info.variant)) {  // fixed_delta: refused
+      EXPECT_FALSE(renderLevel(info.variant, level, identitySetup(level.depth), frame))
+          << info.name;
       continue;
     }
     ASSERT_TRUE(renderLevel(info.variant, level, identitySetup(level.depth), frame)) << info.name;

@@ -1,14 +1,13 @@
 // Scanline hole filling: one test per hole type it fills, one per thing it must leave alone.
 // Frames are drawn as ASCII art: 'a'..'z' covered at depth kNear (colour = the letter), 'A'..'Z'
 // covered at depth kFar (a surface behind, more than the bridge limit away), '.' empty.
-#include "octopoint/render.h"
-
 #include <gtest/gtest.h>
 
 #include <string>
 #include <vector>
 
 #include "octopoint/models.h"
+#include "octopoint/render.h"
 
 namespace octopoint {
 namespace {
@@ -24,7 +23,8 @@ Framebuffer frameFromArt(const std::vector<std::string>& art) {
   for (std::int32_t y = 0; y < frame.height(); ++y) {
     for (std::int32_t x = 0; x < frame.width(); ++x) {
       const char c = art[static_cast<std::size_t>(y)][static_cast<std::size_t>(x)];
-      if (c >= 'a' && c <= 'z') frame.plot(x, y, kNear + static_cast<std::uint32_t>(c - 'a'), static_cast<std::uint8_t>(c));
+      if (c >= 'a' && c <= 'z')
+        frame.plot(x, y, kNear + static_cast<std::uint32_t>(c - 'a'), static_cast<std::uint8_t>(c));
       if (c >= 'A' && c <= 'Z') frame.plot(x, y, kFar, static_cast<std::uint8_t>(c - 'A' + 'a'));
     }
   }

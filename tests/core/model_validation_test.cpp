@@ -19,19 +19,24 @@ struct TestLevel {
 };
 
 // Builds a model image by hand, byte by byte, as docs/format.md describes it.
-std::vector<std::uint8_t> modelImage(const std::vector<TestLevel>& levels, std::uint16_t palette_count = 2) {
-  std::vector<std::uint8_t> out = {'O', 'C', 'T', 'P', 1, 0, static_cast<std::uint8_t>(levels.size()), 0};
+std::vector<std::uint8_t> modelImage(const std::vector<TestLevel>& levels,
+                                     std::uint16_t palette_count = 2) {
+  std::vector<std::uint8_t> out = {
+      'O', 'C', 'T', 'P', 1, 0, static_cast<std::uint8_t>(levels.size()), 0};
   const std::uint32_t edge_um = 250000;
-  for (int shift = 0; shift < 32; shift += 8) out.push_back(static_cast<std::uint8_t>(edge_um >> shift));
+  for (int shift = 0; shift < 32; shift += 8)
+    out.push_back(static_cast<std::uint8_t>(edge_um >> shift));
   out.push_back(static_cast<std::uint8_t>(palette_count));
   out.push_back(static_cast<std::uint8_t>(palette_count >> 8));
   out.push_back(0);
   out.push_back(0);
   for (int i = 0; i < format::kPaletteEntries * 3; ++i) {
-    out.push_back(i < 3 * palette_count ? static_cast<std::uint8_t>(i) : std::uint8_t{0});  // unused: 0
+    out.push_back(i < 3 * palette_count ? static_cast<std::uint8_t>(i)
+                                        : std::uint8_t{0});  // unused: 0
   }
   auto put32 = [&](std::size_t value) {
-    for (int shift = 0; shift < 32; shift += 8) out.push_back(static_cast<std::uint8_t>(value >> shift));
+    for (int shift = 0; shift < 32; shift += 8)
+      out.push_back(static_cast<std::uint8_t>(value >> shift));
   };
   for (const TestLevel& level : levels) {
     out.insert(out.end(), {level.depth, 0, 0, 0});
@@ -73,7 +78,8 @@ TEST(ModelValidation, AcceptsAWellFormedTwoLevelModel) {
 TEST(ModelValidation, RejectsEveryTruncationOfAValidModel) {
   const std::vector<std::uint8_t> image = modelImage({kDepthOne, kDepthTwo});
   for (std::size_t length = 0; length < image.size(); ++length) {
-    const std::vector<std::uint8_t> prefix(image.begin(), image.begin() + static_cast<std::ptrdiff_t>(length));
+    const std::vector<std::uint8_t> prefix(image.begin(),
+                                           image.begin() + static_cast<std::ptrdiff_t>(length));
     EXPECT_NE(errorOf(prefix), ModelError::kNone) << "prefix of " << length << " bytes accepted";
   }
 }
@@ -201,8 +207,10 @@ TEST(ModelValidation, ReportsWhereTheStreamWentWrong) {
   EXPECT_EQ(issue.offset, image.size() - 3 + 1);
   EXPECT_EQ(image[issue.offset], 0x00);
   // validateLevelStream itself counts in the stream.
-  const ModelIssue in_stream = validateLevelStream({2, std::span<const std::uint8_t>(image).last(3).first(2),
-                                                    std::span<const std::uint8_t>(image).last(1)}, 1);
+  const ModelIssue in_stream =
+      validateLevelStream({2, std::span<const std::uint8_t>(image).last(3).first(2),
+                           std::span<const std::uint8_t>(image).last(1)},
+                          1);
   EXPECT_EQ(in_stream.offset, 1u);
   EXPECT_FALSE(in_stream.offset_in_file);
 }
@@ -226,7 +234,8 @@ TEST(ModelValidation, ValidatesEmbeddedModelsTheSameWay) {
   const std::uint8_t nodes[] = {0x01, 0x81, 0x01};
   const std::uint8_t leaves[] = {0, 0};
   const EmbeddedLevel level{2, nodes, 3, leaves, 2, nullptr};
-  const EmbeddedModel model{"broken", format::kVersion2, 0, 1000, 1, palette, 0, nullptr, 1, &level};
+  const EmbeddedModel model{"broken", format::kVersion2, 0, 1000,  1, palette,
+                            0,        nullptr,           1, &level};
   ModelIssue issue;
   EXPECT_FALSE(ModelView::fromEmbedded(model, &issue).has_value());
   EXPECT_EQ(issue.error, ModelError::kTrailingNodeBytes);

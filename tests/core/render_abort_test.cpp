@@ -11,8 +11,9 @@ namespace octopoint {
 namespace {
 
 std::size_t coveredPixels(const Framebuffer& frame) {
-  return static_cast<std::size_t>(std::count_if(frame.pixels().begin(), frame.pixels().end(),
-                                                [](std::uint32_t word) { return word != Framebuffer::kEmpty; }));
+  return static_cast<std::size_t>(
+      std::count_if(frame.pixels().begin(), frame.pixels().end(),
+                    [](std::uint32_t word) { return word != Framebuffer::kEmpty; }));
 }
 
 class RenderAbort : public ::testing::Test {
@@ -33,7 +34,8 @@ TEST_F(RenderAbort, EveryVariantCompletesAFrameWhenTheFlagStaysClear) {
   for (const VariantInfo& info : allVariants()) {
     const std::atomic<bool> abort{false};
     frame_.clear();
-    EXPECT_TRUE(renderLevel(info.variant, model_->finestLevel(), setup_, frame_, &abort)) << info.name;
+    EXPECT_TRUE(renderLevel(info.variant, model_->finestLevel(), setup_, frame_, &abort))
+        << info.name;
     EXPECT_GT(coveredPixels(frame_), 10000u) << info.name;
   }
 }
@@ -42,7 +44,8 @@ TEST_F(RenderAbort, EveryVariantStopsAtOnceWhenTheFlagIsAlreadySet) {
   for (const VariantInfo& info : allVariants()) {
     const std::atomic<bool> abort{true};
     frame_.clear();
-    EXPECT_FALSE(renderLevel(info.variant, model_->finestLevel(), setup_, frame_, &abort)) << info.name;
+    EXPECT_FALSE(renderLevel(info.variant, model_->finestLevel(), setup_, frame_, &abort))
+        << info.name;
     EXPECT_EQ(coveredPixels(frame_), 0u) << info.name << ": drew before its first poll";
   }
 }

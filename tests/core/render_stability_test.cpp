@@ -16,8 +16,8 @@
 
 #include "octopoint/fixed.h"
 #include "octopoint/models.h"
-#include "renderer/decode_baseline.h"
 #include "octopoint/render.h"
+#include "renderer/decode_baseline.h"
 #include "tests/support/exact_int128.h"
 
 namespace octopoint {
@@ -34,8 +34,12 @@ class ExactWalk {
     rotation_ = rotationFromYawPitchRoll(camera.yaw, camera.pitch, camera.roll);
     edge_q16_ = static_cast<Int128>(camera.zoom.raw()) * std::min(camera.width, camera.height);
     const int scale_bits = 48 + depth_ - 1 - fraction_bits;
-    root_[0] = (((static_cast<Int128>(camera.width) << fraction_bits) / 2) + (static_cast<Int128>(camera.pan_x_px) << fraction_bits)) << scale_bits;
-    root_[1] = (((static_cast<Int128>(camera.height) << fraction_bits) / 2) + (static_cast<Int128>(camera.pan_y_px) << fraction_bits)) << scale_bits;
+    root_[0] = (((static_cast<Int128>(camera.width) << fraction_bits) / 2) +
+                (static_cast<Int128>(camera.pan_x_px) << fraction_bits))
+               << scale_bits;
+    root_[1] = (((static_cast<Int128>(camera.height) << fraction_bits) / 2) +
+                (static_cast<Int128>(camera.pan_y_px) << fraction_bits))
+               << scale_bits;
     root_[2] = 0;
   }
 
@@ -62,7 +66,8 @@ class ExactWalk {
       std::array<Int128, 3> child = centre;
       for (std::size_t axis = 0; axis < 3; ++axis) {
         Int128 row_dot_sign = 0;
-        for (std::size_t j = 0; j < 3; ++j) row_dot_sign += sign[j] * static_cast<Int128>(rotation_.m_q30[axis][j]);
+        for (std::size_t j = 0; j < 3; ++j)
+          row_dot_sign += sign[j] * static_cast<Int128>(rotation_.m_q30[axis][j]);
         child[axis] += row_dot_sign * edge_q16_ * (static_cast<Int128>(1) << (depth_ - 1 - level));
       }
       visit(level + 1, child);
@@ -81,11 +86,14 @@ class ExactWalk {
 
 // Checks every leaf of `level` seen through `camera` against the exact sum; returns the number of
 // leaves checked.
-std::size_t expectWithinProvenBound(const LevelView& level, const Camera& camera, int fraction_bits) {
+std::size_t expectWithinProvenBound(const LevelView& level, const Camera& camera,
+                                    int fraction_bits) {
   FrameSetup setup;
   EXPECT_EQ(buildFrameSetup(camera, level.depth, fraction_bits, &setup), CameraError::kNone);
   std::vector<Vec3> decoded;
-  auto sink = [&](std::int32_t x, std::int32_t y, std::int32_t z, std::uint8_t) { decoded.push_back({x, y, z}); };
+  auto sink = [&](std::int32_t x, std::int32_t y, std::int32_t z, std::uint8_t) {
+    decoded.push_back({x, y, z});
+  };
   BaselineWalk<decltype(sink)>(level, setup, sink).run();
 
   ExactWalk exact_walk(level, camera, fraction_bits);
@@ -99,7 +107,8 @@ std::size_t expectWithinProvenBound(const LevelView& level, const Camera& camera
       const Int128 error = (static_cast<Int128>(got[axis]) << s) - exact[i][axis];
       if (error > bound || -error > bound) {
         ADD_FAILURE() << "leaf " << i << " axis " << axis << " off by more than " << level.depth
-                      << "/2 ulp; yaw " << camera.yaw.turns16() << " pitch " << camera.pitch.turns16();
+                      << "/2 ulp; yaw " << camera.yaw.turns16() << " pitch "
+                      << camera.pitch.turns16();
         return i;
       }
     }
@@ -148,7 +157,8 @@ TEST(RenderStability, FractionBitsAtBothEndsStayWithinTheBound) {
   if (most < kMaxFractionBits) {
     EXPECT_EQ(buildFrameSetup(camera, 8, most + 1, &setup), CameraError::kOverflow);
   }
-  for (int bits : {kMinFractionBits, 8, 12, 15, most}) expectWithinProvenBound(defaultLevel(8), camera, bits);
+  for (int bits : {kMinFractionBits, 8, 12, 15, most})
+    expectWithinProvenBound(defaultLevel(8), camera, bits);
 }
 
 // The largest zoom the camera accepts for this view, by bisection over the raw Q16.16 value.
@@ -158,13 +168,16 @@ std::int32_t largestAcceptedZoomRaw(Camera camera, int depth) {
   while (low < high) {
     const std::int64_t middle = (low + high + 1) / 2;
     camera.zoom = Q16::fromRaw(static_cast<std::int32_t>(middle));
-    if (buildFrameSetup(camera, depth, kDefaultFractionBits, &setup) == CameraError::kNone) low = middle;
-    else high = middle - 1;
+    if (buildFrameSetup(camera, depth, kDefaultFractionBits, &setup) == CameraError::kNone)
+      low = middle;
+    else
+      high = middle - 1;
   }
   return static_cast<std::int32_t>(low);
 }
 
-TEST(RenderStability, TheSmallestAndLargestAcceptedZoomDrawWithinTheBoundAndOneStepBeyondIsRefused) {
+TEST(RenderStability,
+     TheSmallestAndLargestAcceptedZoomDrawWithinTheBoundAndOneStepBeyondIsRefused) {
   Camera camera;
   camera.yaw = Angle::fromDegrees(45);
   camera.pitch = Angle::fromDegrees(35);
@@ -201,8 +214,9 @@ TEST(RenderStability, DepthKeysAreExactFitTwentyFourBitsAndLoseNoMoreThanTheyMus
     int fraction_bits;
   };
   const std::int32_t largest = largestAcceptedZoomRaw(camera, 8);
-  for (const Case& c : {Case{Q16::kOneRaw, kDefaultFractionBits}, Case{largest, kDefaultFractionBits},
-                        Case{Q16::kOneRaw, 20}, Case{1, kDefaultFractionBits}}) {
+  for (const Case& c :
+       {Case{Q16::kOneRaw, kDefaultFractionBits}, Case{largest, kDefaultFractionBits},
+        Case{Q16::kOneRaw, 20}, Case{1, kDefaultFractionBits}}) {
     camera.zoom = Q16::fromRaw(c.zoom_raw);
     FrameSetup setup;
     ASSERT_EQ(buildFrameSetup(camera, 8, c.fraction_bits, &setup), CameraError::kNone);
@@ -235,7 +249,7 @@ struct HandModel {
 HandModel deepestChain() {
   HandModel model;
   model.nodes.assign(format::kMaxDepth - 1, 0x01);  // always child 0: the cube's low corner
-  model.nodes.push_back(0x81);                       // leaf parent: children 0 and 7
+  model.nodes.push_back(0x81);                      // leaf parent: children 0 and 7
   model.leaves = {0, 0};
   return model;
 }
@@ -248,17 +262,22 @@ HandModel everyFaceOfTheCube() {
     const int size = n >> level;  // this node's edge in voxels
     std::uint8_t mask = 0;
     for (int k = 0; k < 8; ++k) {
-      const int cx = x + (k & 4 ? size / 2 : 0), cy = y + (k & 2 ? size / 2 : 0), cz = z + (k & 1 ? size / 2 : 0);
+      const int cx = x + (k & 4 ? size / 2 : 0), cy = y + (k & 2 ? size / 2 : 0),
+                cz = z + (k & 1 ? size / 2 : 0);
       const int half = size / 2;
-      const bool touches_face = cx == 0 || cy == 0 || cz == 0 || cx + half == n || cy + half == n || cz + half == n;
+      const bool touches_face =
+          cx == 0 || cy == 0 || cz == 0 || cx + half == n || cy + half == n || cz + half == n;
       if (touches_face) mask = static_cast<std::uint8_t>(mask | 1 << k);
     }
     model.nodes.push_back(mask);
     for (int k = 0; k < 8; ++k) {
       if (!(mask & (1 << k))) continue;
-      const int cx = x + (k & 4 ? size / 2 : 0), cy = y + (k & 2 ? size / 2 : 0), cz = z + (k & 1 ? size / 2 : 0);
-      if (level + 1 == 4) model.leaves.push_back(0);
-      else node(level + 1, cx, cy, cz);
+      const int cx = x + (k & 4 ? size / 2 : 0), cy = y + (k & 2 ? size / 2 : 0),
+                cz = z + (k & 1 ? size / 2 : 0);
+      if (level + 1 == 4)
+        model.leaves.push_back(0);
+      else
+        node(level + 1, cx, cy, cz);
     }
   };
   node(0, 0, 0, 0);
@@ -275,7 +294,9 @@ TEST(RenderStability, DepthOneAndTheDeepestDepthDrawWithinTheBound) {
     camera.yaw = Angle::fromDegrees(degrees);
     camera.roll = Angle::fromDegrees(degrees / 2);
     EXPECT_EQ(expectWithinProvenBound(depth_one.level(1), camera, kDefaultFractionBits), 8u);
-    EXPECT_EQ(expectWithinProvenBound(deepest.level(format::kMaxDepth), camera, kDefaultFractionBits), 2u);
+    EXPECT_EQ(
+        expectWithinProvenBound(deepest.level(format::kMaxDepth), camera, kDefaultFractionBits),
+        2u);
   }
 }
 
@@ -315,13 +336,15 @@ TEST(RenderStability, OneByOneAndLargestCommonFramebuffersDrawTheSameWithEveryFi
     Framebuffer reference(width, height), frame(width, height);
     reference.clear();
     ASSERT_TRUE(renderLevel(Variant::kFixedBaseline, defaultLevel(8), setup, reference));
-    EXPECT_GT(std::ranges::count_if(reference.pixels(), [](std::uint32_t word) { return word != Framebuffer::kEmpty; }),
+    EXPECT_GT(std::ranges::count_if(reference.pixels(),
+                                    [](std::uint32_t word) { return word != Framebuffer::kEmpty; }),
               0);  // the model is there
     for (const VariantInfo& info : allVariants()) {
       if (!isFixedPoint(info.variant)) continue;
       frame.clear();
       ASSERT_TRUE(renderLevel(info.variant, defaultLevel(8), setup, frame));
-      EXPECT_TRUE(std::ranges::equal(frame.pixels(), reference.pixels())) << info.name << " " << width;
+      EXPECT_TRUE(std::ranges::equal(frame.pixels(), reference.pixels()))
+          << info.name << " " << width;
     }
   }
 }

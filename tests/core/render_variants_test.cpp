@@ -1,8 +1,8 @@
 // Every fixed variant draws the bit-identical frame (colours and z-buffer) as fixed_baseline at one
 // pixel per leaf, over many cameras and random trees of every depth up to 9; with the set-up's
 // footprint splats, the variants that draw them (fixed_fast, fixed_simd) draw the frame of the
-// splat's definition (tests/support/splat_reference.h), the others still fixed_baseline's; every floating
-// point variant stays within its stated bound of it.
+// splat's definition (tests/support/splat_reference.h), the others still fixed_baseline's; every
+// floating point variant stays within its stated bound of it.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -13,9 +13,9 @@
 #include <string>
 #include <vector>
 
+#include "octopoint/model.h"
 #include "octopoint/models.h"
 #include "octopoint/render.h"
-#include "octopoint/model.h"
 #include "tests/support/splat_reference.h"
 
 namespace octopoint {
@@ -57,7 +57,8 @@ class RenderVariants : public ::testing::Test {
   }
 
   // Draws one level with one variant; returns whether it completed.
-  static void draw(Variant variant, const LevelView& level, const FrameSetup& setup, Framebuffer& frame) {
+  static void draw(Variant variant, const LevelView& level, const FrameSetup& setup,
+                   Framebuffer& frame) {
     frame.clear();
     ASSERT_TRUE(renderLevel(variant, level, setup, frame));
   }
@@ -69,7 +70,8 @@ class RenderVariants : public ::testing::Test {
 // frame: at one pixel per leaf (`setup`'s splat reset) against fixed_baseline's, with the set-up's
 // own footprint against the splat's definition for the variants that draw splats.
 // With `payload` kColourNormal the frames carry the leaves' normal indices too.
-void expectEveryFixedVariantMatches(const LevelView& level, const FrameSetup& natural, const std::string& label,
+void expectEveryFixedVariantMatches(const LevelView& level, const FrameSetup& natural,
+                                    const std::string& label,
                                     PixelPayload payload = PixelPayload::kColour) {
   static const std::atomic<bool> never_set{false};
   FrameSetup one_pixel = natural;
@@ -82,20 +84,26 @@ void expectEveryFixedVariantMatches(const LevelView& level, const FrameSetup& na
   testing_support::ReferenceSplat::draw(level, natural, splatted);
   for (const VariantInfo& info : allVariants()) {
     if (!isFixedPoint(info.variant)) continue;
-    if (payload == PixelPayload::kColourNormal && !drawsNormals(info.variant)) {  // fixed_delta: refused
+    if (payload == PixelPayload::kColourNormal &&
+        !drawsNormals(info.variant)) {  // fixed_delta: refused
       candidate.clear(payload);
-      EXPECT_FALSE(renderLevel(info.variant, level, natural, candidate)) << info.name << " " << label;
-      EXPECT_TRUE(std::ranges::all_of(candidate.pixels(), [](std::uint32_t word) { return word == Framebuffer::kEmpty; }))
+      EXPECT_FALSE(renderLevel(info.variant, level, natural, candidate))
+          << info.name << " " << label;
+      EXPECT_TRUE(std::ranges::all_of(
+          candidate.pixels(), [](std::uint32_t word) { return word == Framebuffer::kEmpty; }))
           << info.name << " drew into a frame it refused, " << label;
       continue;
     }
     for (const FrameSetup* setup : {static_cast<const FrameSetup*>(&one_pixel), &natural}) {
-      const Framebuffer& expected = setup == &natural && drawsSplats(info.variant) ? splatted : baseline;
-      for (const std::atomic<bool>* abort : {static_cast<const std::atomic<bool>*>(nullptr), &never_set}) {
+      const Framebuffer& expected =
+          setup == &natural && drawsSplats(info.variant) ? splatted : baseline;
+      for (const std::atomic<bool>* abort :
+           {static_cast<const std::atomic<bool>*>(nullptr), &never_set}) {
         candidate.clear(payload);
         ASSERT_TRUE(renderLevel(info.variant, level, *setup, candidate, abort));
         ASSERT_TRUE(std::ranges::equal(candidate.pixels(), expected.pixels()))
-            << info.name << " " << label << (setup == &natural ? " with its splats " : " one pixel per leaf ")
+            << info.name << " " << label
+            << (setup == &natural ? " with its splats " : " one pixel per leaf ")
             << (natural.splat.active() ? "(splat active)" : "(no splat)")
             << (abort != nullptr ? " with" : " without") << " an abort flag";
       }
@@ -109,11 +117,13 @@ TEST_F(RenderVariants, EveryFixedVariantDrawsTheBaselineFrameBitForBit) {
     const LevelView& level = model_->level(i);
     for (const Camera& camera : manyCameras()) {
       FrameSetup setup;
-      ASSERT_EQ(buildFrameSetup(camera, level.depth, kDefaultFractionBits, &setup), CameraError::kNone);
+      ASSERT_EQ(buildFrameSetup(camera, level.depth, kDefaultFractionBits, &setup),
+                CameraError::kNone);
       splatting += setup.splat.active() ? 1 : 0;
       ++frames;
-      expectEveryFixedVariantMatches(level, setup, "depth " + std::to_string(level.depth) + " yaw " +
-                                                       std::to_string(camera.yaw.turns16()));
+      expectEveryFixedVariantMatches(
+          level, setup,
+          "depth " + std::to_string(level.depth) + " yaw " + std::to_string(camera.yaw.turns16()));
     }
   }
   EXPECT_GT(splatting, frames / 10);  // both kinds of frame are among these cameras
@@ -129,9 +139,12 @@ TEST_F(RenderVariants, EveryFixedVariantDrawsTheBaselineFrameWithNormalsBitForBi
     const LevelView& level = model_->level(i);
     for (std::size_t c = 0; c < cameras.size(); c += 2) {
       FrameSetup setup;
-      ASSERT_EQ(buildFrameSetup(cameras[c], level.depth, kDefaultFractionBits, &setup), CameraError::kNone);
-      expectEveryFixedVariantMatches(level, setup, "normals, depth " + std::to_string(level.depth) + " camera " + std::to_string(c),
-                                     PixelPayload::kColourNormal);
+      ASSERT_EQ(buildFrameSetup(cameras[c], level.depth, kDefaultFractionBits, &setup),
+                CameraError::kNone);
+      expectEveryFixedVariantMatches(
+          level, setup,
+          "normals, depth " + std::to_string(level.depth) + " camera " + std::to_string(c),
+          PixelPayload::kColourNormal);
     }
   }
 }
@@ -191,7 +204,8 @@ TEST_F(RenderVariants, EveryFixedVariantDrawsTheBaselineFrameOfRandomTreesOfEver
         for (const PixelPayload payload : {PixelPayload::kColour, PixelPayload::kColourNormal}) {
           expectEveryFixedVariantMatches(level, setup,
                                          "depth " + std::to_string(depth) + " leaves " +
-                                             std::to_string(tree.leaves.size()) + " camera " + std::to_string(c),
+                                             std::to_string(tree.leaves.size()) + " camera " +
+                                             std::to_string(c),
                                          payload);
         }
       }
@@ -229,7 +243,8 @@ TEST_F(RenderVariants, FastAndSimdDrawTheSameFrameWithTheSkipIndexAsWithout) {
     plain.skip = SkipIndex{};
     for (const Camera& camera : cameras) {
       FrameSetup natural;
-      ASSERT_EQ(buildFrameSetup(camera, indexed.depth, kDefaultFractionBits, &natural), CameraError::kNone);
+      ASSERT_EQ(buildFrameSetup(camera, indexed.depth, kDefaultFractionBits, &natural),
+                CameraError::kNone);
       FrameSetup one_pixel = natural;
       one_pixel.splat = SplatFootprint{};
       Framebuffer expected(camera.width, camera.height), candidate(camera.width, camera.height);
@@ -241,8 +256,9 @@ TEST_F(RenderVariants, FastAndSimdDrawTheSameFrameWithTheSkipIndexAsWithout) {
             candidate.clear(payload);
             ASSERT_TRUE(renderLevel(variant, indexed, *setup, candidate));
             ASSERT_TRUE(std::ranges::equal(candidate.pixels(), expected.pixels()))
-                << label << ", variant " << static_cast<int>(variant) << (setup == &natural ? ", splats" : ", one pixel")
-                << ", zoom " << camera.zoom.raw() << ", pan " << camera.pan_x_px << "," << camera.pan_y_px;
+                << label << ", variant " << static_cast<int>(variant)
+                << (setup == &natural ? ", splats" : ", one pixel") << ", zoom "
+                << camera.zoom.raw() << ", pan " << camera.pan_x_px << "," << camera.pan_y_px;
             ++frames;
           }
         }
@@ -250,7 +266,8 @@ TEST_F(RenderVariants, FastAndSimdDrawTheSameFrameWithTheSkipIndexAsWithout) {
     }
   };
   for (int i = 0; i < model_->levelCount(); ++i) {
-    expectSameFrames(model_->level(i), "default model depth " + std::to_string(model_->level(i).depth));
+    expectSameFrames(model_->level(i),
+                     "default model depth " + std::to_string(model_->level(i).depth));
   }
   for (int depth = 4; depth <= 9; ++depth) {
     const RandomLevel tree = randomLevel(depth, 5000.0, random);
@@ -271,7 +288,8 @@ TEST_F(RenderVariants, FloatVariantsDifferFromTheFixedFrameInAtMostHalfAPercentO
   for (const Camera& camera : manyCameras()) {
     const LevelView& level = model_->finestLevel();
     FrameSetup setup;
-    ASSERT_EQ(buildFrameSetup(camera, level.depth, kDefaultFractionBits, &setup), CameraError::kNone);
+    ASSERT_EQ(buildFrameSetup(camera, level.depth, kDefaultFractionBits, &setup),
+              CameraError::kNone);
     Framebuffer reference(camera.width, camera.height);
     Framebuffer candidate(camera.width, camera.height);
     draw(Variant::kFixedBaseline, level, setup, reference);
@@ -279,13 +297,16 @@ TEST_F(RenderVariants, FloatVariantsDifferFromTheFixedFrameInAtMostHalfAPercentO
       if (isFixedPoint(info.variant)) continue;
       draw(info.variant, level, setup, candidate);
       std::size_t covered = 0, differing = 0;
-      const std::span<const std::uint32_t> fixed = reference.pixels(), floating = candidate.pixels();
+      const std::span<const std::uint32_t> fixed = reference.pixels(),
+                                           floating = candidate.pixels();
       for (std::size_t p = 0; p < fixed.size(); ++p) {
         const bool a = fixed[p] != Framebuffer::kEmpty;
         const bool b = floating[p] != Framebuffer::kEmpty;
         if (!a && !b) continue;
         ++covered;
-        if (a != b || Framebuffer::colourIndexOf(fixed[p]) != Framebuffer::colourIndexOf(floating[p])) ++differing;
+        if (a != b ||
+            Framebuffer::colourIndexOf(fixed[p]) != Framebuffer::colourIndexOf(floating[p]))
+          ++differing;
       }
       if (covered < 100) continue;  // a handful of pixels says nothing about a share
       EXPECT_LE(static_cast<double>(differing), kMaxDifferingShare * static_cast<double>(covered))

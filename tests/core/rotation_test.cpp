@@ -1,6 +1,4 @@
 // Tests for octopoint/fixed.h against the textbook matrices evaluated in long double.
-#include "octopoint/fixed.h"
-
 #include <gtest/gtest.h>
 
 #include <array>
@@ -12,6 +10,7 @@
 #include <random>
 #include <string>
 
+#include "octopoint/fixed.h"
 
 namespace octopoint {
 

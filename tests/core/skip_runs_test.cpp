@@ -2,6 +2,8 @@
 // steps over an off-screen subtree, leave both cursors where skipSubtree (the byte walk) does, for
 // every node of random trees of depth 1 to 10, sparse and dense, including subtrees that end at the
 // stream's last byte; the skip index (octopoint/model.h) is what ModelView attaches.
+#include "renderer/skip_runs.h"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -12,11 +14,10 @@
 #include <string>
 #include <vector>
 
+#include "octopoint/model.h"
 #include "octopoint/models.h"
 #include "renderer/decode_algorithms.h"
 #include "renderer/leaf_cursor.h"
-#include "octopoint/model.h"
-#include "renderer/skip_runs.h"
 
 namespace octopoint {
 namespace {
@@ -71,7 +72,8 @@ TEST(SkipRuns, LeavesBothCursorsWhereTheByteWalkDoes) {
         const std::uint8_t* run = stream.data() + node.at;
         ColourLeaves run_leaves{colours.data() + node.leaves};
         skipSubtreeByRuns(run, run_leaves, node.level, depth, end);
-        ASSERT_EQ(run, walked) << "depth " << depth << ", node at " << node.at << " (level " << node.level << ")";
+        ASSERT_EQ(run, walked) << "depth " << depth << ", node at " << node.at << " (level "
+                               << node.level << ")";
         ASSERT_EQ(run_leaves.colour, walked_leaves) << "depth " << depth << ", node at " << node.at;
         ++compared;
       }
@@ -98,7 +100,8 @@ TEST(SkipRuns, IndexedSkipLeavesBothCursorsWhereTheByteWalkDoes) {
       const std::vector<std::uint8_t> stream = randomStream(depth, density, random, nodes);
       std::size_t leaf_count = 0;  // the leaf parents' children
       for (const Node& node : nodes) {
-        if (node.level + 1 == depth) leaf_count += static_cast<std::size_t>(std::popcount(stream[node.at]));
+        if (node.level + 1 == depth)
+          leaf_count += static_cast<std::size_t>(std::popcount(stream[node.at]));
       }
       const std::vector<std::uint8_t> colours(leaf_count, 0);
       const LevelView level{depth, stream, colours};
@@ -121,15 +124,20 @@ TEST(SkipRuns, IndexedSkipLeavesBothCursorsWhereTheByteWalkDoes) {
         const std::uint8_t* walked_leaves = colours.data() + node.leaves;
         skipSubtree(walked, walked_leaves, node.level, depth);
         const auto before = [&](std::size_t offset) {  // index-level nodes before `offset`
-          return static_cast<std::size_t>(std::lower_bound(indexed_at.begin(), indexed_at.end(), offset) - indexed_at.begin());
+          return static_cast<std::size_t>(
+              std::lower_bound(indexed_at.begin(), indexed_at.end(), offset) - indexed_at.begin());
         };
         std::size_t next = before(node.at);
         const std::uint8_t* jumped = stream.data() + node.at;
         ColourLeaves jumped_leaves{colours.data() + node.leaves};
-        skipSubtreeIndexed(jumped, jumped_leaves, next, node.level, index, stream.data(), colours.data());
-        ASSERT_EQ(jumped, walked) << "depth " << depth << ", node at " << node.at << " (level " << node.level << ")";
-        ASSERT_EQ(jumped_leaves.colour, walked_leaves) << "depth " << depth << ", node at " << node.at;
-        ASSERT_EQ(next, before(static_cast<std::size_t>(walked - stream.data()))) << "depth " << depth << ", node at " << node.at;
+        skipSubtreeIndexed(jumped, jumped_leaves, next, node.level, index, stream.data(),
+                           colours.data());
+        ASSERT_EQ(jumped, walked) << "depth " << depth << ", node at " << node.at << " (level "
+                                  << node.level << ")";
+        ASSERT_EQ(jumped_leaves.colour, walked_leaves)
+            << "depth " << depth << ", node at " << node.at;
+        ASSERT_EQ(next, before(static_cast<std::size_t>(walked - stream.data())))
+            << "depth " << depth << ", node at " << node.at;
         ++compared;
       }
     }
@@ -154,9 +162,11 @@ TEST(SkipRuns, ModelViewIndexesEveryLevelOfDepthFourOrMore) {
     ASSERT_EQ(level.skip.ends.size(), skipIndexEntries(level));
     std::vector<SubtreeEnd> rebuilt(skipIndexEntries(level));
     const SkipIndex index = buildSkipIndex(level, rebuilt);
-    ASSERT_TRUE(std::ranges::equal(index.ends, level.skip.ends, [](const SubtreeEnd& a, const SubtreeEnd& b) {
-      return a.node == b.node && a.leaf == b.leaf;
-    })) << "depth " << level.depth;
+    ASSERT_TRUE(std::ranges::equal(index.ends, level.skip.ends,
+                                   [](const SubtreeEnd& a, const SubtreeEnd& b) {
+                                     return a.node == b.node && a.leaf == b.leaf;
+                                   }))
+        << "depth " << level.depth;
     // The last index-level subtree ends where the level does.
     EXPECT_EQ(level.skip.ends.back().node, level.nodes.size());
     EXPECT_EQ(level.skip.ends.back().leaf, level.leaves.size());

@@ -3,8 +3,8 @@
 // row for 3 or 4 columns up to 4 rows, one eight-pixel vector per row up to 8 columns, several
 // beyond, renderer/splat_batch.h) and is drawn by fixed_fast's rectangle loop. For every shape from
 // 1 x 2 to 5 x 5 and some wider and taller ones, with points that cover the whole box and points
-// one column or row short, both must draw the splat's definition (tests/support/splat_reference.h) bit
-// for bit, also where the frame's edges (its last pixel included) cut the splats.
+// one column or row short, both must draw the splat's definition (tests/support/splat_reference.h)
+// bit for bit, also where the frame's edges (its last pixel included) cut the splats.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -28,7 +28,9 @@ constexpr int kF = kDefaultFractionBits;
 enum class Cover { kShort, kExact, kJustOver };
 
 const char* describe(Cover cover) {
-  return cover == Cover::kExact ? " exact" : cover == Cover::kShort ? " with short leaves" : " just over";
+  return cover == Cover::kExact   ? " exact"
+         : cover == Cover::kShort ? " with short leaves"
+                                  : " just over";
 }
 
 // A footprint whose box is `columns` x `rows` pixels, covered as `cover` says.
@@ -107,9 +109,9 @@ TEST(SplatKernels, EveryFootprintShapeDrawsItsDefinition) {
           candidate.clear();
           ASSERT_TRUE(renderLevel(info.variant, level, setup, candidate));
           ASSERT_TRUE(std::ranges::equal(candidate.pixels(), reference.pixels()))
-              << info.name << " footprint " << columns << "x" << rows
-              << describe(cover) << " view " << view.width << "x"
-              << view.height << " yaw " << view.yaw << " pan " << view.pan_x << "," << view.pan_y;
+              << info.name << " footprint " << columns << "x" << rows << describe(cover) << " view "
+              << view.width << "x" << view.height << " yaw " << view.yaw << " pan " << view.pan_x
+              << "," << view.pan_y;
         }
       }
       ++shapes_checked;

@@ -12,8 +12,8 @@
 #include <vector>
 
 #include "octopoint/fixed.h"
-#include "renderer/level_of_detail.h"
 #include "octopoint/render.h"
+#include "renderer/level_of_detail.h"
 #include "tests/support/synthetic_levels.h"
 
 namespace octopoint {
@@ -27,8 +27,8 @@ constexpr int kFinestDepth = 6;  // under qemu: the same checks, smaller
 #else
 constexpr int kFinestDepth = 8;
 #endif
-constexpr double kSphereRadius = 0.35;                   // cube units
-constexpr double kBoundaryMargin = 0.01;                 // pixels: centres this close to the edge are not judged
+constexpr double kSphereRadius = 0.35;    // cube units
+constexpr double kBoundaryMargin = 0.01;  // pixels: centres this close to the edge are not judged
 const Square kSquare{{0.8, 0.6, 0.0}, {-0.36, 0.48, 0.8}, 0.6};  // orthonormal u, v
 
 // Every depth 1..kFinestDepth of both surfaces, built once.
@@ -110,8 +110,8 @@ struct Coverage {
   int depth = 0;
 };
 
-Coverage drawAndCount(Variant variant, const std::vector<SyntheticLevel>& levels, const Camera& camera,
-                      const Silhouette& inside, Framebuffer& frame) {
+Coverage drawAndCount(Variant variant, const std::vector<SyntheticLevel>& levels,
+                      const Camera& camera, const Silhouette& inside, Framebuffer& frame) {
   Coverage result;
   const std::optional<int> depth = autoDepth(surfaces().depths, camera);
   EXPECT_TRUE(depth.has_value());
@@ -120,7 +120,8 @@ Coverage drawAndCount(Variant variant, const std::vector<SyntheticLevel>& levels
   FrameSetup setup;
   EXPECT_EQ(buildFrameSetup(camera, *depth, kDefaultFractionBits, &setup), CameraError::kNone);
   frame.clear();
-  EXPECT_TRUE(renderLevel(variant, levels[static_cast<std::size_t>(*depth - 1)].view(), setup, frame));
+  EXPECT_TRUE(
+      renderLevel(variant, levels[static_cast<std::size_t>(*depth - 1)].view(), setup, frame));
   for (int y = 0; y < camera.height; ++y) {
     for (int x = 0; x < camera.width; ++x) {
       if (inside(x + 0.5, y + 0.5) <= kBoundaryMargin) continue;
@@ -147,13 +148,14 @@ void expectNoHoles(const std::vector<Size>& sizes, const std::vector<std::pair<i
         const Projection projection(camera);
         for (const Variant variant : variants) {
           for (const bool sphere : {true, false}) {
-            const Coverage c = drawAndCount(variant, sphere ? surfaces().sphere : surfaces().square, camera,
-                                            sphere ? sphereSilhouette(projection) : squareSilhouette(projection),
-                                            frame);
+            const Coverage c = drawAndCount(
+                variant, sphere ? surfaces().sphere : surfaces().square, camera,
+                sphere ? sphereSilhouette(projection) : squareSilhouette(projection), frame);
             judged += c.judged;
-            EXPECT_EQ(c.holes, 0) << (sphere ? "sphere " : "square ") << size.width << "x" << size.height
-                                  << " zoom " << zoom << " yaw " << yaw << " pitch " << pitch << " depth "
-                                  << c.depth << ": " << c.holes << " of " << c.judged << " pixels empty";
+            EXPECT_EQ(c.holes, 0) << (sphere ? "sphere " : "square ") << size.width << "x"
+                                  << size.height << " zoom " << zoom << " yaw " << yaw << " pitch "
+                                  << pitch << " depth " << c.depth << ": " << c.holes << " of "
+                                  << c.judged << " pixels empty";
           }
         }
       }
@@ -172,8 +174,8 @@ TEST(Splats, DenseSphereAndSquareLeaveNoHoleInsideTheirSilhouetteAtEveryZoomOnSm
 #if defined(__arm__)  // under qemu, with soft-float silhouettes: fewer sizes and angles
   expectNoHoles({{1, 1}, {17, 13}, {64, 48}}, {{0, 0}, {35, 20}}, splattingVariants());
 #else
-  expectNoHoles({{1, 1}, {2, 3}, {17, 13}, {176, 208}, {320, 240}}, {{0, 0}, {30, 0}, {35, 20}, {135, 60}},
-                splattingVariants());
+  expectNoHoles({{1, 1}, {2, 3}, {17, 13}, {176, 208}, {320, 240}},
+                {{0, 0}, {30, 0}, {35, 20}, {135, 60}}, splattingVariants());
 #endif
 }
 
@@ -190,7 +192,8 @@ TEST(Splats, DenseSphereAndSquareLeaveNoHoleInsideTheirSilhouetteAtEveryZoomOnLa
 TEST(Splats, OnePixelPerLeafLeavesHolesWhereSplatsDoNot) {
   const Camera camera = cameraOf(320, 240, 4, 30, 0);
   FrameSetup setup;
-  ASSERT_EQ(buildFrameSetup(camera, kFinestDepth, kDefaultFractionBits, &setup), CameraError::kNone);
+  ASSERT_EQ(buildFrameSetup(camera, kFinestDepth, kDefaultFractionBits, &setup),
+            CameraError::kNone);
   ASSERT_TRUE(setup.splat.active());
   setup.splat = SplatFootprint{};
   Framebuffer frame(camera.width, camera.height);
@@ -199,7 +202,8 @@ TEST(Splats, OnePixelPerLeafLeavesHolesWhereSplatsDoNot) {
   const Silhouette inside = sphereSilhouette(Projection(camera));
   long holes = 0;
   for (int y = 0; y < camera.height; ++y) {
-    for (int x = 0; x < camera.width; ++x) holes += inside(x + 0.5, y + 0.5) > 0 && !frame.covered(x, y) ? 1 : 0;
+    for (int x = 0; x < camera.width; ++x)
+      holes += inside(x + 0.5, y + 0.5) > 0 && !frame.covered(x, y) ? 1 : 0;
   }
   EXPECT_GT(holes, 1000);
 }
@@ -217,7 +221,8 @@ TEST(Splats, BandsOfAFrameConcatenateToTheWholeFrame) {
         camera.pan_x_px = pan;
         camera.pan_y_px = -pan / 2;
         FrameSetup whole;
-        ASSERT_EQ(buildFrameSetup(camera, level.depth, kDefaultFractionBits, &whole), CameraError::kNone);
+        ASSERT_EQ(buildFrameSetup(camera, level.depth, kDefaultFractionBits, &whole),
+                  CameraError::kNone);
         ASSERT_TRUE(whole.splat.active());
         Framebuffer frame(camera.width, camera.height);
         frame.clear();
@@ -231,8 +236,9 @@ TEST(Splats, BandsOfAFrameConcatenateToTheWholeFrame) {
             Framebuffer part(camera.width, rows);
             part.clear();
             ASSERT_TRUE(renderLevel(variant, level.view(), band, part));
-            const auto expected = frame.pixels().subspan(static_cast<std::size_t>(y0) * camera.width,
-                                                         static_cast<std::size_t>(rows) * camera.width);
+            const auto expected =
+                frame.pixels().subspan(static_cast<std::size_t>(y0) * camera.width,
+                                       static_cast<std::size_t>(rows) * camera.width);
             ASSERT_TRUE(std::ranges::equal(part.pixels(), expected))
                 << "zoom " << zoom << " pan " << pan << " band " << y0 << "+" << rows;
           }
@@ -242,7 +248,9 @@ TEST(Splats, BandsOfAFrameConcatenateToTheWholeFrame) {
   }
 }
 
-std::optional<int> autoDepthOf(std::vector<int> depths, const Camera& camera) { return autoDepth(depths, camera); }
+std::optional<int> autoDepthOf(std::vector<int> depths, const Camera& camera) {
+  return autoDepth(depths, camera);
+}
 
 // The rule (renderer/level_of_detail.h) at its boundaries. Frontal on a 256 x 256 frame at zoom 1
 // a depth-8 voxel's edge is exactly one pixel: depth 8 is drawn, one pixel per leaf; a zoom one

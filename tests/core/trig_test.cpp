@@ -41,7 +41,8 @@ long double exactCosineQ30(int64_t units) {
   return std::cos(radians) * kTwoTo30;
 }
 
-// round(value * 65536 / units_per_turn) with ties up, reduced to [0, 65535], via exact 128-bit arithmetic.
+// round(value * 65536 / units_per_turn) with ties up, reduced to [0, 65535], via exact 128-bit
+// arithmetic.
 int32_t referenceUnits(int64_t value, int64_t units_per_turn) {
   const Int128 scaled = Int128{value} * 65536 * 2 + units_per_turn;
   const Int128 divisor = 2 * Int128{units_per_turn};

@@ -13,10 +13,10 @@
 #include <string>
 #include <vector>
 
+#include "codegen/cube_fit.h"
 #include "lab/reference_closure.h"
 #include "lab/reference_render.h"
 #include "lab/reference_surface.h"
-#include "codegen/cube_fit.h"
 
 namespace octopoint::tradeoff {
 namespace {

@@ -10,9 +10,9 @@
 #include <mutex>
 #include <thread>
 
-#include "tests/support/model_images.h"
-#include "octopoint/models.h"
 #include "octopoint/http.h"
+#include "octopoint/models.h"
+#include "tests/support/model_images.h"
 #include "tests/support/net_test_support.h"
 
 namespace octopoint {

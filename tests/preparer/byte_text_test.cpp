@@ -63,7 +63,8 @@ void expectOracle(const std::vector<std::uint8_t>& bytes) {
   const std::string as_strings = oracleStrings(bytes);
   for (unsigned threads : {1u, 2u, 3u}) {
     EXPECT_TRUE(spelled(bytes, EmitStyle::kBytes, threads) == as_bytes) << bytes.size() << " bytes";
-    EXPECT_TRUE(spelled(bytes, EmitStyle::kStrings, threads) == as_strings) << bytes.size() << " bytes";
+    EXPECT_TRUE(spelled(bytes, EmitStyle::kStrings, threads) == as_strings)
+        << bytes.size() << " bytes";
   }
 }
 

@@ -9,8 +9,8 @@
 #include "codegen/octree_encoder.h"
 #include "codegen/voxelizer.h"
 #include "octopoint/camera.h"
-#include "renderer/decode_baseline.h"
 #include "octopoint/model.h"
+#include "renderer/decode_baseline.h"
 
 namespace octopoint {
 namespace {
@@ -80,7 +80,8 @@ TEST(OctreeRoundTrip, RandomVoxelSetsAtDepthsOneToTen) {
 
 TEST(OctreeRoundTrip, StreamHasOneBytePerInnerNode) {
   // Two voxels in opposite corners at depth 2: root, two leaf parents.
-  const std::vector<std::uint64_t> keys = {prepare::mortonKey(0, 0, 0, 2), prepare::mortonKey(3, 3, 3, 2)};
+  const std::vector<std::uint64_t> keys = {prepare::mortonKey(0, 0, 0, 2),
+                                           prepare::mortonKey(3, 3, 3, 2)};
   EXPECT_EQ(prepare::encodeOctree(keys, 2), (std::vector<std::uint8_t>{0x81, 0x01, 0x80}));
 }
 

@@ -1,7 +1,6 @@
 // PCL as the oracle of our geometry: OctreePointCloud::serializeTree writes one occupancy byte per
 // branch node, depth-first, child = (x << 2) | (y << 1) | z, which is our stream's definition.
 #include <gtest/gtest.h>
-
 #include <pcl/octree/octree_pointcloud.h>
 #include <pcl/point_types.h>
 
@@ -37,7 +36,8 @@ TEST(PclOracle, OurStreamEqualsSerializeTreeForRandomVoxelSets) {
     std::mt19937 random(static_cast<std::uint32_t>(depth));
     std::uniform_int_distribution<std::uint32_t> index(0, (1u << depth) - 1);
     std::set<std::uint64_t> unique;
-    for (int i = 0; i < 3000; ++i) unique.insert(prepare::mortonKey(index(random), index(random), index(random), depth));
+    for (int i = 0; i < 3000; ++i)
+      unique.insert(prepare::mortonKey(index(random), index(random), index(random), depth));
     const std::vector<std::uint64_t> keys(unique.begin(), unique.end());
     EXPECT_EQ(prepare::encodeOctree(keys, depth), pclStream(keys, depth)) << "depth " << depth;
   }
@@ -51,9 +51,11 @@ TEST(PclOracle, OurStreamEqualsSerializeTreeForAVoxelizedSphere) {
   for (int x = 0; x < n; ++x) {
     for (int y = 0; y < n; ++y) {
       for (int z = 0; z < n; ++z) {
-        const int r2 = (2 * x - n) * (2 * x - n) + (2 * y - n) * (2 * y - n) + (2 * z - n) * (2 * z - n);
+        const int r2 =
+            (2 * x - n) * (2 * x - n) + (2 * y - n) * (2 * y - n) + (2 * z - n) * (2 * z - n);
         if (r2 > (n - 8) * (n - 8) && r2 <= n * n) {
-          unique.insert(prepare::mortonKey(static_cast<std::uint32_t>(x), static_cast<std::uint32_t>(y),
+          unique.insert(prepare::mortonKey(static_cast<std::uint32_t>(x),
+                                           static_cast<std::uint32_t>(y),
                                            static_cast<std::uint32_t>(z), depth));
         }
       }

@@ -1,4 +1,6 @@
 // The preparer's pipeline on synthetic scans with known answers, drawn by the real renderer.
+#include "codegen/prepare.h"
+
 #include <gtest/gtest.h>
 
 #include <map>
@@ -6,7 +8,6 @@
 #include "codegen/cube_fit.h"
 #include "codegen/model_writer.h"
 #include "codegen/palette.h"
-#include "codegen/prepare.h"
 #include "codegen/prepare_error.h"
 #include "octopoint/framebuffer.h"
 #include "octopoint/render.h"
@@ -17,7 +18,8 @@ namespace {
 
 using prepare::Rgb8;
 
-constexpr Rgb8 kRed{255, 0, 0}, kGreen{0, 255, 0}, kBlue{0, 0, 255}, kYellow{255, 255, 0}, kWhite{255, 255, 255};
+constexpr Rgb8 kRed{255, 0, 0}, kGreen{0, 255, 0}, kBlue{0, 0, 255}, kYellow{255, 255, 0},
+    kWhite{255, 255, 255};
 constexpr Rgb kBackground{1, 2, 3};
 
 // Five points on the corners and edges of the unit cube: at depth 2 they fall in voxels
@@ -51,22 +53,26 @@ std::vector<Rgb> renderThroughOctFile(const prepare::Scan& scan, int depth, cons
   std::vector<std::uint8_t> rgb(static_cast<std::size_t>(camera.width * camera.height) * 3);
   EXPECT_TRUE(resolveToRgb(frame, *model, kBackground, rgb));
   std::vector<Rgb> pixels;
-  for (std::size_t i = 0; i < rgb.size(); i += 3) pixels.push_back({rgb[i], rgb[i + 1], rgb[i + 2]});
+  for (std::size_t i = 0; i < rgb.size(); i += 3)
+    pixels.push_back({rgb[i], rgb[i + 1], rgb[i + 2]});
   return pixels;
 }
 
 Rgb rgb(const Rgb8& c) { return {c[0], c[1], c[2]}; }
 
-std::vector<Rgb> expectedFrame(int width, const std::map<std::pair<int, int>, Rgb8>& lit, int height) {
+std::vector<Rgb> expectedFrame(int width, const std::map<std::pair<int, int>, Rgb8>& lit,
+                               int height) {
   std::vector<Rgb> pixels(static_cast<std::size_t>(width * height), kBackground);
-  for (const auto& [xy, colour] : lit) pixels[static_cast<std::size_t>(xy.second * width + xy.first)] = rgb(colour);
+  for (const auto& [xy, colour] : lit)
+    pixels[static_cast<std::size_t>(xy.second * width + xy.first)] = rgb(colour);
   return pixels;
 }
 
 TEST(PrepareAndRender, FivePointScanFromTheFrontLightsExactlyTheExpectedPixels) {
   Camera camera;
   camera.width = camera.height = 4;  // one pixel per voxel at depth 2
-  const auto expected = expectedFrame(4, {{{0, 0}, kRed}, {{3, 3}, kBlue}, {{3, 0}, kGreen}, {{0, 3}, kWhite}}, 4);
+  const auto expected =
+      expectedFrame(4, {{{0, 0}, kRed}, {{3, 3}, kBlue}, {{3, 0}, kGreen}, {{0, 3}, kWhite}}, 4);
   EXPECT_TRUE(renderThroughOctFile(fivePointScan(), 2, camera) == expected);
 }
 
@@ -82,7 +88,8 @@ TEST(PrepareAndRender, FivePointScanFromBehindShowsTheHiddenPointMirrored) {
 TEST(PrepareAndRender, ZoomHalfWithPanMergesNeighbouringVoxelsIntoOnePixel) {
   Camera camera;
   camera.width = camera.height = 4;
-  camera.zoom = Q16::fromRaw(Q16::kOneRaw / 2);  // the cube spans 2 pixels: voxels half a pixel apart
+  camera.zoom =
+      Q16::fromRaw(Q16::kOneRaw / 2);  // the cube spans 2 pixels: voxels half a pixel apart
   camera.pan_x_px = 1;
   // Voxel i lands on pixel floor(2 + 0.5 * (i + 0.5 - 2)) = 1, 1, 2, 2 for i = 0..3, plus the pan.
   const auto expected =
@@ -112,7 +119,8 @@ TEST(PrepareModel, RefusesPointsThatAreAllIdentical) {
     prepare::prepareModel(scan, "dot.pcd", options);
     FAIL() << "identical points were accepted";
   } catch (const prepare::PrepareError& error) {
-    EXPECT_NE(std::string(error.what()).find("dot.pcd: all 10 points are at the same position"), std::string::npos)
+    EXPECT_NE(std::string(error.what()).find("dot.pcd: all 10 points are at the same position"),
+              std::string::npos)
         << error.what();
   }
 }
@@ -124,14 +132,16 @@ TEST(Palette, ReducesManyColoursTo256WithSmallError) {
   double squared_error = 0;
   for (const Rgb8& colour : cloud.colours) {
     const Rgb8& chosen = palette.colours()[palette.indexOf(colour)];
-    for (std::size_t ch = 0; ch < 3; ++ch) squared_error += (colour[ch] - chosen[ch]) * (colour[ch] - chosen[ch]);
+    for (std::size_t ch = 0; ch < 3; ++ch)
+      squared_error += (colour[ch] - chosen[ch]) * (colour[ch] - chosen[ch]);
   }
   // Uniform random RGB cut into 256 cells of about 40^3: RMS error per channel near 12.
   EXPECT_LT(std::sqrt(squared_error / (3.0 * static_cast<double>(cloud.colours.size()))), 16.0);
 }
 
 TEST(Palette, HonoursASmallerColourCount) {
-  const prepare::Palette palette = prepare::Palette::build(testing::randomCloud(2000, 3).colours, 16);
+  const prepare::Palette palette =
+      prepare::Palette::build(testing::randomCloud(2000, 3).colours, 16);
   EXPECT_EQ(palette.colours().size(), 16u);
 }
 

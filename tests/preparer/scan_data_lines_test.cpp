@@ -48,16 +48,20 @@ class ScanDataLinesTest : public ::testing::Test {
   fs::path dir_;
 };
 
-std::string pcd(const std::string& fields, int points, const std::string& data, const std::string& body) {
-  return "VERSION 0.7\n" + fields + "WIDTH " + std::to_string(points) + "\nHEIGHT 1\nVIEWPOINT 0 0 0 1 0 0 0\nPOINTS " +
-         std::to_string(points) + "\nDATA " + data + "\n" + body;
+std::string pcd(const std::string& fields, int points, const std::string& data,
+                const std::string& body) {
+  return "VERSION 0.7\n" + fields + "WIDTH " + std::to_string(points) +
+         "\nHEIGHT 1\nVIEWPOINT 0 0 0 1 0 0 0\nPOINTS " + std::to_string(points) + "\nDATA " +
+         data + "\n" + body;
 }
 const std::string kXyz = "FIELDS x y z\nSIZE 4 4 4\nTYPE F F F\nCOUNT 1 1 1\n";
 const std::string kXyzLabel = "FIELDS x y z label\nSIZE 4 4 4 1\nTYPE F F F U\nCOUNT 1 1 1 1\n";
 
 std::string ply(const std::string& body) {
-  return "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\n"
-         "element face 1\nproperty list uchar int vertex_indices\nend_header\n" + body;
+  return "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty "
+         "float z\n"
+         "element face 1\nproperty list uchar int vertex_indices\nend_header\n" +
+         body;
 }
 
 TEST_F(ScanDataLinesTest, AsciiPcdValuesThatDoNotParseAreRefusedNamingTheLine) {
@@ -66,7 +70,8 @@ TEST_F(ScanDataLinesTest, AsciiPcdValuesThatDoNotParseAreRefusedNamingTheLine) {
             "'oops' is not a float32 (field 'z') (line 12)");
   EXPECT_EQ(errorOf("comma.pcd", pcd(kXyz, 2, "ascii", "1 2 3\n1,5 2 3\n")),
             "'1,5' is not a float32 (field 'x') (line 12)");
-  EXPECT_EQ(errorOf("huge.pcd", pcd(kXyz, 1, "ascii", "1 2 1e39\n")), "'1e39' is not a float32 (field 'z') (line 11)");
+  EXPECT_EQ(errorOf("huge.pcd", pcd(kXyz, 1, "ascii", "1 2 1e39\n")),
+            "'1e39' is not a float32 (field 'z') (line 11)");
   EXPECT_EQ(errorOf("label.pcd", pcd(kXyzLabel, 2, "ascii", "1 2 3 255\n1 2 3 256\n")),
             "'256' is not a uint8 (field 'label') (line 12)");
   EXPECT_EQ(errorOf("negative.pcd", pcd(kXyzLabel, 1, "ascii", "1 2 3 -1\n")),
@@ -76,14 +81,16 @@ TEST_F(ScanDataLinesTest, AsciiPcdValuesThatDoNotParseAreRefusedNamingTheLine) {
 }
 
 TEST_F(ScanDataLinesTest, AsciiPcdLinesOfTheWrongLengthOrNumberAreRefused) {
-  EXPECT_EQ(errorOf("short.pcd", pcd(kXyz, 2, "ascii", "1 2 3\n4 5\n6 7 8\n")),
-            "a data line of 2 values, short of what the header declares for a point item (line 12)");
+  EXPECT_EQ(
+      errorOf("short.pcd", pcd(kXyz, 2, "ascii", "1 2 3\n4 5\n6 7 8\n")),
+      "a data line of 2 values, short of what the header declares for a point item (line 12)");
   EXPECT_EQ(errorOf("long.pcd", pcd(kXyz, 2, "ascii", "1 2 3 4\n5 6 7\n")),
             "more values than the header declares for a point item (line 11)");
   EXPECT_EQ(errorOf("extra.pcd", pcd(kXyz, 1, "ascii", "1 2 3\n4 5 6\n")),
             "more data lines than the header declares (line 12)");
   EXPECT_EQ(errorOf("cut.pcd", pcd(kXyz, 2, "ascii", "1 2 3\n4 5")),
-            "truncated: a data line of 2 values, short of what the header declares for a point item (line 12)");
+            "truncated: a data line of 2 values, short of what the header declares for a point "
+            "item (line 12)");
   EXPECT_EQ(errorOf("few.pcd", pcd(kXyz, 3, "ascii", "1 2 3\n4 5 6\n")),
             "truncated: header declares 3 points but the ascii data has 2 data lines (line 13)");
 }
@@ -92,15 +99,18 @@ TEST_F(ScanDataLinesTest, AsciiPcdLinesOfTheWrongLengthOrNumberAreRefused) {
 // the data a point short: that is not a truncated file, and the first blank line is named.
 TEST_F(ScanDataLinesTest, ABlankLineWhereAPointWasMeantIsNamedNotCalledTruncated) {
   EXPECT_EQ(errorOf("blank.pcd", pcd(kXyz, 3, "ascii", "1 2 3\n\n7 8 9\n")),
-            "header declares 3 points but the ascii data has 2 data lines and 1 blank line, which holds no point "
+            "header declares 3 points but the ascii data has 2 data lines and 1 blank line, which "
+            "holds no point "
             "(line 12)");
   EXPECT_EQ(errorOf("blanks.pcd", pcd(kXyz, 4, "ascii", "1 2 3\n  \n7 8 9\r\n\r\n\n")),
-            "header declares 4 points but the ascii data has 2 data lines and 3 blank lines, which hold no point "
+            "header declares 4 points but the ascii data has 2 data lines and 3 blank lines, which "
+            "hold no point "
             "(the first at line 12)");
 }
 
 TEST_F(ScanDataLinesTest, GoodAsciiPcdWithBlankLinesAndNanIsRead) {
-  const Scan scan = loadScan(write("good.pcd", pcd(kXyz, 3, "ascii", "1 2 3\n\n+4 5e0 6\nnan 1 2\n\n")));
+  const Scan scan =
+      loadScan(write("good.pcd", pcd(kXyz, 3, "ascii", "1 2 3\n\n+4 5e0 6\nnan 1 2\n\n")));
   ASSERT_EQ(scan.positions.size(), 2u);
   EXPECT_EQ(scan.positions[1], (std::array<float, 3>{4, 5, 6}));
   EXPECT_EQ(scan.dropped_non_finite, 1u);
@@ -128,13 +138,15 @@ TEST_F(ScanDataLinesTest, BinaryCompressedSizeBeyondLzfsRatioIsRefusedAtOnce) {
   const int points = 357913941;  // x 12 bytes = 4294967292, just below 2^32
   const std::string body = le32(40) + le32(12u * points) + std::string(40, '\0');
   const auto start = std::chrono::steady_clock::now();
-  EXPECT_NE(errorOf("lzf.pcd", pcd(kXyz, points, "binary_compressed", body)).find("more than LZF's largest ratio (88x)"),
+  EXPECT_NE(errorOf("lzf.pcd", pcd(kXyz, points, "binary_compressed", body))
+                .find("more than LZF's largest ratio (88x)"),
             std::string::npos);
   EXPECT_LT(std::chrono::steady_clock::now() - start, std::chrono::seconds(1));
   // At the bound itself the size is possible, and the data decides (here: truncated).
   const std::string at_bound = le32(36) + le32(88 * 36) + std::string(20, '\0');
   EXPECT_EQ(errorOf("bound.pcd", pcd(kXyz, 88 * 36 / 12, "binary_compressed", at_bound)),
-            "truncated: header declares 36 bytes of compressed data, but 20 bytes follow (data at byte 136)");
+            "truncated: header declares 36 bytes of compressed data, but 20 bytes follow (data at "
+            "byte 136)");
 }
 
 }  // namespace

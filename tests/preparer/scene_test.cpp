@@ -1,4 +1,6 @@
 // Scene files: parsing, the errors that name the key, the sampled cameras and the automatic depths.
+#include "codegen/scene.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -7,7 +9,6 @@
 #include "codegen/outlier_filter.h"
 #include "codegen/prepare.h"
 #include "codegen/prepare_error.h"
-#include "codegen/scene.h"
 #include "codegen/scene_views.h"
 #include "tests/support/synthetic_scans.h"
 
@@ -53,17 +54,21 @@ TEST(SceneFile, ReadsEveryKey) {
 
 TEST(SceneFile, ErrorsNameTheKeyOnOneLine) {
   EXPECT_EQ(errorOf(R"({"yaw": [-30, 30], "colour": 1})"), "scene.json: key 'colour': unknown key");
-  EXPECT_EQ(errorOf(R"({"palette": {"colors": 3}})"), "scene.json: key 'palette.colors': unknown key");
+  EXPECT_EQ(errorOf(R"({"palette": {"colors": 3}})"),
+            "scene.json: key 'palette.colors': unknown key");
   EXPECT_EQ(errorOf(R"({"yaw": [30, -30]})"), "scene.json: key 'yaw': empty range: 30 > -30");
   EXPECT_EQ(errorOf(R"({"pitch": [-100, 0]})"), "scene.json: key 'pitch': -100 is outside -90..90");
   EXPECT_EQ(errorOf(R"({"zoom": [0, 2]})"), "scene.json: key 'zoom': zoom must be greater than 0");
   EXPECT_EQ(errorOf(R"({"zoom": -1})"), "scene.json: key 'zoom': zoom must be greater than 0");
   EXPECT_EQ(errorOf(R"({"depths": [0, 8]})"), "scene.json: key 'depths': 0 is outside 1..16");
   EXPECT_EQ(errorOf(R"({"depths": [8, 17]})"), "scene.json: key 'depths': 17 is outside 1..16");
-  EXPECT_EQ(errorOf(R"({"depths": [8, 7]})"), "scene.json: key 'depths': depths must be strictly ascending");
-  EXPECT_EQ(errorOf(R"({"framebuffer": [320]})"), "scene.json: key 'framebuffer': expected [width, height]");
-  EXPECT_EQ(errorOf(R"({"viewpoints": [{"yaw": 0, "pitch": 0}], "yaw": [0, 1]})"),
-            "scene.json: key 'viewpoints': give either viewpoints or yaw and pitch ranges, not both");
+  EXPECT_EQ(errorOf(R"({"depths": [8, 7]})"),
+            "scene.json: key 'depths': depths must be strictly ascending");
+  EXPECT_EQ(errorOf(R"({"framebuffer": [320]})"),
+            "scene.json: key 'framebuffer': expected [width, height]");
+  EXPECT_EQ(
+      errorOf(R"({"viewpoints": [{"yaw": 0, "pitch": 0}], "yaw": [0, 1]})"),
+      "scene.json: key 'viewpoints': give either viewpoints or yaw and pitch ranges, not both");
   const std::string syntax = errorOf("{\"yaw\": [-30, 30],\n \"pitch\": }");
   EXPECT_EQ(syntax.find("scene.json: not valid JSON: parse error at line 2"), 0u) << syntax;
   EXPECT_EQ(syntax.find('\n'), std::string::npos);
@@ -91,29 +96,37 @@ TEST(SceneFile, DuplicateKeysDeepNestingAndKeysInsideListsAreNamed) {
   EXPECT_EQ(errorOf(R"({"yaw": [-30, 30], "yaw": [0, 1]})"), "scene.json: key 'yaw': given twice");
   EXPECT_EQ(errorOf(R"({"palette": {"colours": 4, "colours": 8}})"),
             "scene.json: key 'palette.colours': given twice");
-  EXPECT_EQ(errorOf(std::string(100000, '[')), "scene.json: objects and lists nested deeper than 8 levels");
+  EXPECT_EQ(errorOf(std::string(100000, '[')),
+            "scene.json: objects and lists nested deeper than 8 levels");
   EXPECT_EQ(errorOf(R"({"crop": {"min": [[[[[[[[1]]]]]]]]}})"),
             "scene.json: objects and lists nested deeper than 8 levels (key 'crop.min')");
   EXPECT_EQ(errorOf(R"({"viewpoints": [{"yaw": 0, "pitch": 0}, {"yaw": 1e400, "pitch": 0}]})"),
             "scene.json: not valid JSON: number overflow parsing '1e400' (key 'viewpoints.yaw')");
   // The same key in two objects of a list is not a duplicate.
-  EXPECT_NO_THROW(parseScene(R"({"viewpoints": [{"yaw": 0, "pitch": 0}, {"yaw": 1, "pitch": 0}]})", "scene.json"));
+  EXPECT_NO_THROW(parseScene(R"({"viewpoints": [{"yaw": 0, "pitch": 0}, {"yaw": 1, "pitch": 0}]})",
+                             "scene.json"));
 }
 
 TEST(SceneViews, ASceneAskingForUnboundedWorkIsRefusedSayingHowToShrinkIt) {
-  const std::string message = errorOf(R"({"yaw": [-180, 180], "pitch": [-90, 90], "angle_step": 0.1})");
-  EXPECT_EQ(message.find("scene.json: the scene asks for 6485401 views (3601 yaw x 1801 pitch x 1 zoom samples) "
-                         "of 320x240 pixels"),
-            0u)
+  const std::string message =
+      errorOf(R"({"yaw": [-180, 180], "pitch": [-90, 90], "angle_step": 0.1})");
+  EXPECT_EQ(
+      message.find(
+          "scene.json: the scene asks for 6485401 views (3601 yaw x 1801 pitch x 1 zoom samples) "
+          "of 320x240 pixels"),
+      0u)
       << message;
   EXPECT_NE(message.find("raise angle_step (now 0.1)"), std::string::npos) << message;
   EXPECT_NE(errorOf(R"({"yaw": [-180, 180], "pitch": [-90, 90], "framebuffer": [8192, 8192]})")
                 .find("shrink the framebuffer"),
             std::string::npos);
   // The full sphere at the default step, and the same without pruning, are fine.
-  EXPECT_EQ(sceneWork(parseScene(R"({"yaw": [-180, 180], "pitch": [-90, 90]})", "scene.json")).views, 181.0 * 91);
-  EXPECT_NO_THROW(parseScene(R"({"yaw": [-180, 180], "pitch": [-90, 90], "angle_step": 0.1, "prune": false})",
-                             "scene.json"));
+  EXPECT_EQ(
+      sceneWork(parseScene(R"({"yaw": [-180, 180], "pitch": [-90, 90]})", "scene.json")).views,
+      181.0 * 91);
+  EXPECT_NO_THROW(
+      parseScene(R"({"yaw": [-180, 180], "pitch": [-90, 90], "angle_step": 0.1, "prune": false})",
+                 "scene.json"));
 }
 
 TEST(SceneViews, SampleBothEndsOfEveryRangeAtMostOneStepApart) {
@@ -135,9 +148,10 @@ TEST(SceneViews, SampleBothEndsOfEveryRangeAtMostOneStepApart) {
 }
 
 TEST(SceneViews, ExplicitViewpointsAreTakenAsTheyAreAtEverySampledZoom) {
-  const Scene scene = parseScene(R"({"viewpoints": [{"yaw": 10, "pitch": -5}, {"yaw": -20, "pitch": 0, "roll": 90}],
+  const Scene scene =
+      parseScene(R"({"viewpoints": [{"yaw": 10, "pitch": -5}, {"yaw": -20, "pitch": 0, "roll": 90}],
                                      "zoom": [1, 2], "zoom_step": 2})",
-                                 "scene.json");
+                 "scene.json");
   const std::vector<Camera> cameras = sceneCameras(scene);
   ASSERT_EQ(cameras.size(), 4u);  // 2 viewpoints x zoom 1 and 2
   EXPECT_EQ(cameras[0].yaw.turns16(), Angle::fromDegrees(10).turns16());

@@ -1,5 +1,7 @@
 // Visibility pruning against the real renderer: pruned and unpruned models of the same scan are
 // prepared, serialized, validated and drawn, and their frames compared.
+#include "codegen/visibility.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -9,7 +11,6 @@
 #include "codegen/model_writer.h"
 #include "codegen/prepare.h"
 #include "codegen/scene_views.h"
-#include "codegen/visibility.h"
 #include "codegen/voxelizer.h"
 #include "octopoint/framebuffer.h"
 #include "octopoint/render.h"
@@ -54,7 +55,8 @@ ModelPair prepareBoth(const prepare::Scan& scan, const std::vector<Camera>& came
   return pair;
 }
 
-Framebuffer draw(const ModelView& model, const Camera& camera, Variant variant = Variant::kFixedBaseline) {
+Framebuffer draw(const ModelView& model, const Camera& camera,
+                 Variant variant = Variant::kFixedBaseline) {
   FrameSetup setup;
   EXPECT_EQ(buildFrameSetup(camera, kDepth, kDefaultFractionBits, &setup), CameraError::kNone);
   Framebuffer frame(camera.width, camera.height);
@@ -69,7 +71,8 @@ struct Comparison {
   std::size_t extra = 0;          // covered only in the pruned frame (must never happen)
 };
 
-Comparison compare(const ModelPair& pair, const Camera& camera, Variant variant = Variant::kFixedBaseline) {
+Comparison compare(const ModelPair& pair, const Camera& camera,
+                   Variant variant = Variant::kFixedBaseline) {
   const Framebuffer expected = draw(pair.unpruned(), camera, variant);
   const Framebuffer actual = draw(pair.pruned(), camera, variant);
   Comparison result;
@@ -96,7 +99,8 @@ TEST(VisibilityPruning, EverySampledViewDrawsPixelIdenticalToTheUnprunedModel) {
   for (const Camera& camera : cameras) {
     const Comparison result = compare(pair, camera);
     ASSERT_GT(result.object_pixels, 500u);
-    ASSERT_EQ(result.differing, 0u) << "yaw " << camera.yaw.turns16() << " pitch " << camera.pitch.turns16();
+    ASSERT_EQ(result.differing, 0u)
+        << "yaw " << camera.yaw.turns16() << " pitch " << camera.pitch.turns16();
     ASSERT_EQ(result.extra, 0u);
   }
 }
@@ -118,7 +122,8 @@ TEST(VisibilityPruning, ZoomedInSampledViewsDrawTheUnprunedFrameWithSplatsAndWit
       ASSERT_TRUE(setup.splat.active());
       const Comparison result = compare(pair, camera, variant);
       ASSERT_GT(result.object_pixels, 500u);
-      ASSERT_EQ(result.differing, 0u) << "variant " << static_cast<int>(variant) << " yaw " << camera.yaw.turns16();
+      ASSERT_EQ(result.differing, 0u)
+          << "variant " << static_cast<int>(variant) << " yaw " << camera.yaw.turns16();
       ASSERT_EQ(result.extra, 0u);
     }
   }
@@ -134,16 +139,20 @@ void expectRandomViewsNearlyIdentical(const prepare::Scan& scan) {
   std::uniform_real_distribution<double> yaw(-30, 30), pitch(-20, 20), log_zoom(0, std::log(2.0));
   Comparison total;
   for (int view = 0; view < 200; ++view) {
-    const Camera camera = prepare::cameraFor(yaw(random), pitch(random), 0, 0.5 * std::exp(log_zoom(random)), kWidth, kHeight);
+    const Camera camera = prepare::cameraFor(yaw(random), pitch(random), 0,
+                                             0.5 * std::exp(log_zoom(random)), kWidth, kHeight);
     const Comparison result = compare(pair, camera);
     total.object_pixels += result.object_pixels;
     total.differing += result.differing;
     total.extra += result.extra;
   }
-  const double identical = 1.0 - static_cast<double>(total.differing) / static_cast<double>(total.object_pixels);
-  std::printf("identical object pixels over 200 random views: %.4f%% (%zu of %zu differ), size %zu -> %zu bytes\n",
-              100 * identical, total.differing, total.object_pixels, pair.unpruned_image.size(),
-              pair.pruned_image.size());
+  const double identical =
+      1.0 - static_cast<double>(total.differing) / static_cast<double>(total.object_pixels);
+  std::printf(
+      "identical object pixels over 200 random views: %.4f%% (%zu of %zu differ), size %zu -> %zu "
+      "bytes\n",
+      100 * identical, total.differing, total.object_pixels, pair.unpruned_image.size(),
+      pair.pruned_image.size());
   EXPECT_GE(identical, 0.995);
   EXPECT_EQ(total.extra, 0u);
 }
@@ -157,19 +166,23 @@ TEST(VisibilityPruning, RandomViewsInsideTheRangeKeepAtLeast995PermilleOfPixelsO
 }
 
 TEST(VisibilityPruning, AFrontalOnlySceneRemovesTheBackOfAClosedSphereEntirely) {
-  // A million points: about 20 per surface voxel, so the shell has no holes to see the back through.
+  // A million points: about 20 per surface voxel, so the shell has no holes to see the back
+  // through.
   const prepare::Scan sphere = testing::colouredSphere(1000000);
   const prepare::CubeFit fit = prepare::fitCube(sphere.positions, "sphere.pcd");
   const prepare::VoxelSet voxels = prepare::voxelize(sphere, fit, kDepth);
   prepare::Scene scene = frontalScene();
   scene.yaw_deg = prepare::Range{0, 0};
   scene.pitch_deg = prepare::Range{0, 0};
-  const std::vector<std::uint8_t> visible = prepare::visibleVoxels(voxels.keys, kDepth, prepare::sceneCameras(scene));
+  const std::vector<std::uint8_t> visible =
+      prepare::visibleVoxels(voxels.keys, kDepth, prepare::sceneCameras(scene));
   constexpr std::uint32_t kCentre = 1u << (kDepth - 1);  // z index of the cube's middle plane
   std::size_t kept = 0, back = 0, back_kept = 0;
   for (std::size_t i = 0; i < voxels.keys.size(); ++i) {
-    const std::uint32_t z = prepare::mortonDecode(voxels.keys[i], kDepth)[2];  // away from the viewer
-    const bool is_back = z >= kCentre + 2;  // behind the silhouette's rim, which straddles the middle
+    const std::uint32_t z =
+        prepare::mortonDecode(voxels.keys[i], kDepth)[2];  // away from the viewer
+    const bool is_back =
+        z >= kCentre + 2;  // behind the silhouette's rim, which straddles the middle
     back += is_back;
     kept += visible[i];
     back_kept += is_back && visible[i];

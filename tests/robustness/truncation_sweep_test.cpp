@@ -9,9 +9,9 @@
 #include <span>
 #include <vector>
 
-#include "tests/support/model_images.h"
-#include "octopoint/models.h"
 #include "octopoint/model.h"
+#include "octopoint/models.h"
+#include "tests/support/model_images.h"
 
 #if defined(__SANITIZE_ADDRESS__)
 #include <sanitizer/asan_interface.h>
@@ -70,7 +70,8 @@ TEST(TruncationSweep, EveryPrefixOfTheDefaultModelIsRefused) {
   for (std::size_t length = 0; length < buffer.fullSize(); ++length) {
     ModelIssue issue;
     const bool valid = ModelView::fromBytes(buffer.prefix(length), &issue).has_value();
-    const ModelError expected = length < table_end ? ModelError::kTruncatedHeader : ModelError::kSizeMismatch;
+    const ModelError expected =
+        length < table_end ? ModelError::kTruncatedHeader : ModelError::kSizeMismatch;
     if (valid || issue.error != expected) {
       ++accepted;
       ADD_FAILURE() << "prefix of " << length << " bytes: " << describe(issue.error);
@@ -84,7 +85,7 @@ TEST(TruncationSweep, EveryPrefixOfTheDefaultModelIsRefused) {
 // poisoned buffer, so a read past it cannot land in the next part. Every walk costs the length
 // of the stream, so not every prefix is tried (see swept).
 bool swept(std::size_t length, std::size_t size, bool every_length) {
-  constexpr std::size_t kStride = 61;      // a prime: cuts fall at every position within a node
+  constexpr std::size_t kStride = 61;        // a prime: cuts fall at every position within a node
   constexpr std::size_t kNearTheEnd = 1024;  // the cuts that leave the walk the least to find
   return every_length || length % kStride == 0 || length + kNearTheEnd >= size;
 }
@@ -103,22 +104,26 @@ TEST(TruncationSweep, PrefixesOfEachStreamAreRefused) {
       if (!swept(length, nodes.size(), i == 0)) continue;
       const LevelView view{level.depth, node_prefixes.prefix(length), leaves};
       const ModelError error = validateLevelStream(view, model.palette_count).error;
-      const bool clean = error == ModelError::kStreamTruncated || error == ModelError::kImplausibleLevelSize ||
+      const bool clean = error == ModelError::kStreamTruncated ||
+                         error == ModelError::kImplausibleLevelSize ||
                          (length == 0 && error == ModelError::kEmptyLevel);
       if (!clean) {
         ++failures;
-        ADD_FAILURE() << "depth " << level.depth << ", " << length << " node bytes: " << describe(error);
+        ADD_FAILURE() << "depth " << level.depth << ", " << length
+                      << " node bytes: " << describe(error);
       }
     }
     for (std::size_t length = 0; length < leaves.size() && failures < 10; ++length) {
       if (!swept(length, leaves.size(), false)) continue;
       const LevelView view{level.depth, nodes, leaf_prefixes.prefix(length)};
       const ModelError error = validateLevelStream(view, model.palette_count).error;
-      const bool clean = error == ModelError::kLeafCountMismatch || error == ModelError::kImplausibleLevelSize ||
+      const bool clean = error == ModelError::kLeafCountMismatch ||
+                         error == ModelError::kImplausibleLevelSize ||
                          (length == 0 && error == ModelError::kEmptyLevel);
       if (!clean) {
         ++failures;
-        ADD_FAILURE() << "depth " << level.depth << ", " << length << " leaves: " << describe(error);
+        ADD_FAILURE() << "depth " << level.depth << ", " << length
+                      << " leaves: " << describe(error);
       }
     }
   }

@@ -7,11 +7,11 @@
 #include <vector>
 
 #include "codegen/prepared_model.h"
-#include "tests/support/model_images.h"
 #include "octopoint/camera.h"
 #include "octopoint/framebuffer.h"
 #include "octopoint/progressive.h"
 #include "octopoint/render.h"
+#include "tests/support/model_images.h"
 
 namespace octopoint::testing {
 

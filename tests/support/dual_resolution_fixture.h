@@ -1,8 +1,8 @@
 #pragma once
 // The fixture of the dual-resolution tests (dual_resolution_test.cpp,
-// dual_resolution_window_test.cpp, targets/armel/frame_allocation_test.cpp): the default model's coarsest
-// and finest levels, a manual clock, "slow" fine renderers that are the real decoder repeated, the
-// frame a view should give, drawn directly, and a user's turn of the view.
+// dual_resolution_window_test.cpp, targets/armel/frame_allocation_test.cpp): the default model's
+// coarsest and finest levels, a manual clock, "slow" fine renderers that are the real decoder
+// repeated, the frame a view should give, drawn directly, and a user's turn of the view.
 #include <gtest/gtest.h>
 #include <time.h>
 
@@ -11,8 +11,8 @@
 #include <memory>
 #include <optional>
 
-#include "octopoint/models.h"
 #include "octopoint/interactive.h"
+#include "octopoint/models.h"
 
 namespace octopoint::dual_resolution_testing {
 
@@ -115,7 +115,8 @@ class Round {
       now_us_ += 20'000;
       clock_.set(now_us_);
       seen_generation_ = renderer_.status().latest.generation;
-      if (!renderer_.waitUntil(new_frame_, kPatience) || renderer_.acquireLatest(nullptr) == nullptr)
+      if (!renderer_.waitUntil(new_frame_, kPatience) ||
+          renderer_.acquireLatest(nullptr) == nullptr)
         failed_ = true;
     }
     renderer_.handle({now_us_, ViewEventKind::kRelease, NavigationKey::kYawRight});

@@ -27,13 +27,16 @@ class Int128 {
     }
   }
   template <std::integral T>
-  constexpr explicit operator T() const { return static_cast<T>(low_); }
+  constexpr explicit operator T() const {
+    return static_cast<T>(low_);
+  }
 
   friend constexpr Int128 operator+(Int128 a, Int128 b) {
     Int128 sum;
     sum.low_ = a.low_ + b.low_;
-    sum.high_ = static_cast<std::int64_t>(static_cast<std::uint64_t>(a.high_) +
-                                          static_cast<std::uint64_t>(b.high_) + (sum.low_ < a.low_));
+    sum.high_ =
+        static_cast<std::int64_t>(static_cast<std::uint64_t>(a.high_) +
+                                  static_cast<std::uint64_t>(b.high_) + (sum.low_ < a.low_));
     return sum;
   }
   friend constexpr Int128 operator-(Int128 a) { return ~a + Int128(1); }
@@ -94,7 +97,8 @@ class Int128 {
     const std::uint64_t middle = (low_low >> 32) + (a_high * b_low & 0xffffffffu) + a_low * b_high;
     Int128 product;
     product.low_ = (middle << 32) | (low_low & 0xffffffffu);
-    product.high_ = static_cast<std::int64_t>(a_high * b_high + (a_high * b_low >> 32) + (middle >> 32));
+    product.high_ =
+        static_cast<std::int64_t>(a_high * b_high + (a_high * b_low >> 32) + (middle >> 32));
     return product;
   }
 

@@ -1,7 +1,7 @@
 #pragma once
-// Writing LAS files for tests and scale runs (tests/support/make_large_scan.cpp): any version 1.0 to
-// 1.4, any point format 0 to 10, with VLRs, EVLRs, extra bytes per record and 8- or 16-bit colour,
-// streamed point by point. The header's counts and bounds are patched in by finish().
+// Writing LAS files for tests and scale runs (tests/support/make_large_scan.cpp): any version 1.0
+// to 1.4, any point format 0 to 10, with VLRs, EVLRs, extra bytes per record and 8- or 16-bit
+// colour, streamed point by point. The header's counts and bounds are patched in by finish().
 
 #include <array>
 #include <cstdint>

@@ -25,10 +25,11 @@ struct Point {
 
 // `rows` > 1: an organized scan of points / rows columns.
 std::string pcdHeader(std::size_t points, const char* data, std::size_t rows = 1) {
-  return "# .PCD v0.7 - Point Cloud Data file format\nVERSION 0.7\nFIELDS x y z rgba\nSIZE 4 4 4 4\n"
-         "TYPE F F F U\nCOUNT 1 1 1 1\nWIDTH " + std::to_string(points / rows) + "\nHEIGHT " +
-         std::to_string(rows) + "\nVIEWPOINT 0 0 0 1 0 0 0\nPOINTS " + std::to_string(points) +
-         "\nDATA " + data + "\n";
+  return "# .PCD v0.7 - Point Cloud Data file format\nVERSION 0.7\nFIELDS x y z rgba\nSIZE 4 4 4 "
+         "4\n"
+         "TYPE F F F U\nCOUNT 1 1 1 1\nWIDTH " +
+         std::to_string(points / rows) + "\nHEIGHT " + std::to_string(rows) +
+         "\nVIEWPOINT 0 0 0 1 0 0 0\nPOINTS " + std::to_string(points) + "\nDATA " + data + "\n";
 }
 
 std::string binaryPcd(const std::vector<Point>& points, std::size_t rows = 1) {
@@ -41,8 +42,8 @@ std::string asciiPcd(const std::vector<Point>& points) {
   std::string out = pcdHeader(points.size(), "ascii");
   for (const Point& p : points) {
     char line[128];
-    std::snprintf(line, sizeof line, "%.9g %.9g %.9g %u\n", static_cast<double>(p.x), static_cast<double>(p.y),
-                  static_cast<double>(p.z), p.rgba);
+    std::snprintf(line, sizeof line, "%.9g %.9g %.9g %u\n", static_cast<double>(p.x),
+                  static_cast<double>(p.y), static_cast<double>(p.z), p.rgba);
     out += line;
   }
   return out;
@@ -73,8 +74,8 @@ std::vector<Point> depthImageOfBall() {
       const double discriminant = b * b - 4 * a * c;
       const bool ball = discriminant >= 0;
       const double t = ball ? (-b - std::sqrt(discriminant)) / (2 * a) : kWallZ;
-      points.push_back({static_cast<float>(t * dx), static_cast<float>(t * dy), static_cast<float>(t),
-                        ball ? 0xffd04020u : 0xff8090a0u});
+      points.push_back({static_cast<float>(t * dx), static_cast<float>(t * dy),
+                        static_cast<float>(t), ball ? 0xffd04020u : 0xff8090a0u});
     }
   }
   return points;
@@ -95,7 +96,8 @@ int main(int argc, char** argv) {
   for (std::size_t i = 0; i < sphere.positions.size(); ++i) {
     const auto& p = sphere.positions[i];
     const auto& c = sphere.colours[i];
-    points.push_back({p[0], p[1], p[2], 0xff000000u | std::uint32_t{c[0]} << 16 | std::uint32_t{c[1]} << 8 | c[2]});
+    points.push_back({p[0], p[1], p[2],
+                      0xff000000u | std::uint32_t{c[0]} << 16 | std::uint32_t{c[1]} << 8 | c[2]});
   }
   write(out / "sphere.pcd", binaryPcd(points));
   write(out / "depth_image.pcd", binaryPcd(depthImageOfBall(), 120));
@@ -104,19 +106,25 @@ int main(int argc, char** argv) {
   const std::string valid = binaryPcd(points);
   write(out / "bad" / "truncated.pcd", valid.substr(0, valid.size() / 2));
   std::string garbage(4096, '\0');
-  for (std::size_t i = 0; i < garbage.size(); ++i) garbage[i] = static_cast<char>((i * 2654435761u) >> 13);
+  for (std::size_t i = 0; i < garbage.size(); ++i)
+    garbage[i] = static_cast<char>((i * 2654435761u) >> 13);
   write(out / "bad" / "garbage.pcd", garbage);
   write(out / "bad" / "garbage.ply", garbage);
   write(out / "bad" / "truncated.ply",
-        "ply\nformat binary_little_endian 1.0\nelement vertex 1000\nproperty float x\nproperty float y\n"
-        "property float z\nend_header\n" + std::string(100, '\0'));
+        "ply\nformat binary_little_endian 1.0\nelement vertex 1000\nproperty float x\nproperty "
+        "float y\n"
+        "property float z\nend_header\n" +
+            std::string(100, '\0'));
   write(out / "bad" / "empty.pcd", asciiPcd({}));
-  write(out / "bad" / "all_nan.pcd", asciiPcd({{nan, nan, nan, 0}, {nan, 1, 2, 0}, {3, nan, 1, 0}}));
+  write(out / "bad" / "all_nan.pcd",
+        asciiPcd({{nan, nan, nan, 0}, {nan, 1, 2, 0}, {3, nan, 1, 0}}));
   write(out / "bad" / "identical.pcd", asciiPcd({{1, 2, 3, 0}, {1, 2, 3, 0}, {1, 2, 3, 0}}));
   write(out / "bad" / "absurd.pcd", asciiPcd({{0, 0, 0, 0}, {1, 1, 1, 0}, {1e30f, 0, 0, 0}}));
   // Distinct points 0.1 nm apart (in metres): smaller than the model format's 1 nm cube.
-  write(out / "bad" / "sub_nanometre.pcd", asciiPcd({{0, 0, 0, 0}, {1e-10f, 0, 0, 0}, {0, 5e-11f, 0, 0}}));
-  write(out / "bad" / "good_small.pcd", asciiPcd({{0, 0, 0, 0}, {1, 1, 1, 0}, {0.5f, 0.2f, 0.1f, 0}}));
+  write(out / "bad" / "sub_nanometre.pcd",
+        asciiPcd({{0, 0, 0, 0}, {1e-10f, 0, 0, 0}, {0, 5e-11f, 0, 0}}));
+  write(out / "bad" / "good_small.pcd",
+        asciiPcd({{0, 0, 0, 0}, {1, 1, 1, 0}, {0.5f, 0.2f, 0.1f, 0}}));
   fs::create_directories(out / "bad" / "directory.pcd");
   return 0;
 }

@@ -7,9 +7,9 @@
 #include "codegen/level_voxels.h"
 #include "codegen/model_writer.h"
 #include "codegen/octree_encoder.h"
+#include "octopoint/model.h"
 #include "renderer/crc32.h"
 #include "renderer/little_endian.h"
-#include "octopoint/model.h"
 
 namespace octopoint::fuzzing {
 namespace {
@@ -52,7 +52,8 @@ struct KeyLister {
 using Bytes = std::vector<std::uint8_t>;
 
 void putU32(Bytes& image, std::size_t at, std::uint32_t value) {
-  for (int i = 0; i < 4; ++i) image[at + static_cast<std::size_t>(i)] = static_cast<std::uint8_t>(value >> (8 * i));
+  for (int i = 0; i < 4; ++i)
+    image[at + static_cast<std::size_t>(i)] = static_cast<std::uint8_t>(value >> (8 * i));
 }
 
 // The records' chunk CRCs and each table's CRC in the level table, as far as they lie in the file.
@@ -93,9 +94,11 @@ prepare::PreparedModel preparedModel(const EmbeddedModel& model, const std::vect
   prepare::PreparedModel prepared = preparedShell(model);
   for (int i = 0; i < model.level_count; ++i) {
     const EmbeddedLevel& level = model.levels[i];
-    prepare::PreparedLevel copy{level.depth, {level.nodes, level.nodes + level.node_bytes},
+    prepare::PreparedLevel copy{level.depth,
+                                {level.nodes, level.nodes + level.node_bytes},
                                 {level.leaves, level.leaves + level.leaf_count}};
-    if (level.normals != nullptr) copy.normals.assign(level.normals, level.normals + level.leaf_count);
+    if (level.normals != nullptr)
+      copy.normals.assign(level.normals, level.normals + level.leaf_count);
     prepared.levels.push_back(std::move(copy));
   }
   if (!depths.empty()) {
@@ -103,7 +106,8 @@ prepare::PreparedModel preparedModel(const EmbeddedModel& model, const std::vect
     std::vector<prepare::PreparedLevel> levels;
     for (int depth : depths) {
       levels.push_back(depth == finest.depth ? prepared.levels.back()
-                                             : prepare::encodeLevel(prepare::coarsen(finest, depth, prepared.palette)));
+                                             : prepare::encodeLevel(prepare::coarsen(
+                                                   finest, depth, prepared.palette)));
     }
     prepared.levels = std::move(levels);
     // Coarsened levels have no normals: keep the set consistent (the chunked format carries none).
@@ -121,7 +125,6 @@ std::vector<std::uint8_t> chunkedImage(const EmbeddedModel& model, const std::ve
                                        const prepare::ChunkedOptions& options) {
   return prepare::serializeChunkedModel(preparedModel(model, depths), options);
 }
-
 
 std::vector<std::uint8_t> coarsenedOctImage(const EmbeddedModel& model, int depth) {
   const EmbeddedLevel& finest = model.levels[model.level_count - 1];

@@ -8,8 +8,8 @@
 #include <cstdint>
 
 #include "octopoint/camera.h"
-#include "renderer/decode_baseline.h"
 #include "octopoint/framebuffer.h"
+#include "renderer/decode_baseline.h"
 
 namespace octopoint::testing_support {
 
@@ -23,15 +23,19 @@ class ReferenceSplat {
   // `payload`: the palette index, or (in a PixelPayload::kColourNormal frame) palette index |
   // normal index << 8.
   void operator()(std::int32_t x, std::int32_t y, std::int32_t z, std::uint32_t payload) {
-    const std::uint32_t word = frame_.payload() == PixelPayload::kColourNormal
-                                   ? Framebuffer::packColourNormal(setup_.depthKey(z), payload)
-                                   : Framebuffer::pack(setup_.depthKey(z), static_cast<std::uint8_t>(payload));
+    const std::uint32_t word =
+        frame_.payload() == PixelPayload::kColourNormal
+            ? Framebuffer::packColourNormal(setup_.depthKey(z), payload)
+            : Framebuffer::pack(setup_.depthKey(z), static_cast<std::uint8_t>(payload));
     const auto [x0, x1] = pixelRange(x, setup_.splat.extent_x);
     const auto [y0, y1] = pixelRange(y, setup_.splat.extent_y);
-    for (std::int64_t py = std::max<std::int64_t>(y0, 0); py <= std::min<std::int64_t>(y1, frame_.height() - 1); ++py) {
-      for (std::int64_t px = std::max<std::int64_t>(x0, 0); px <= std::min<std::int64_t>(x1, frame_.width() - 1); ++px) {
-        std::uint32_t& pixel =
-            frame_.pixelData()[static_cast<std::size_t>(py) * static_cast<std::size_t>(frame_.width()) + static_cast<std::size_t>(px)];
+    for (std::int64_t py = std::max<std::int64_t>(y0, 0);
+         py <= std::min<std::int64_t>(y1, frame_.height() - 1); ++py) {
+      for (std::int64_t px = std::max<std::int64_t>(x0, 0);
+           px <= std::min<std::int64_t>(x1, frame_.width() - 1); ++px) {
+        std::uint32_t& pixel = frame_.pixelData()[static_cast<std::size_t>(py) *
+                                                      static_cast<std::size_t>(frame_.width()) +
+                                                  static_cast<std::size_t>(px)];
         pixel = std::min(pixel, word);
       }
     }

@@ -67,10 +67,14 @@ SyntheticLevel encodeLevel(std::vector<std::uint64_t> keys, int depth, Colour co
   return level;
 }
 
-inline std::uint8_t colourOf(std::uint64_t key) { return static_cast<std::uint8_t>((key * 2654435761u) >> 24); }
+inline std::uint8_t colourOf(std::uint64_t key) {
+  return static_cast<std::uint8_t>((key * 2654435761u) >> 24);
+}
 
 // The centre of voxel index i at `depth`, in cube units.
-inline double voxelCentre(std::uint32_t i, int depth) { return (i + 0.5) / std::ldexp(1.0, depth) - 0.5; }
+inline double voxelCentre(std::uint32_t i, int depth) {
+  return (i + 0.5) / std::ldexp(1.0, depth) - 0.5;
+}
 
 // A sphere of `radius` (cube units) about the cube's centre: the voxels whose cube meets its
 // surface (nearest point of the cube inside the sphere, farthest outside or on it).
@@ -82,12 +86,14 @@ inline SyntheticLevel sphereLevel(double radius, int depth) {
     for (std::uint32_t j = 0; j < n; ++j) {
       for (std::uint32_t k = 0; k < n; ++k) {
         double nearest = 0, farthest = 0;
-        for (const double c : {voxelCentre(i, depth), voxelCentre(j, depth), voxelCentre(k, depth)}) {
+        for (const double c :
+             {voxelCentre(i, depth), voxelCentre(j, depth), voxelCentre(k, depth)}) {
           const double a = std::fabs(c);
           nearest += std::max(0.0, a - half) * std::max(0.0, a - half);
           farthest += (a + half) * (a + half);
         }
-        if (nearest <= radius * radius && radius * radius <= farthest) keys.push_back(mortonKey(i, j, k, depth));
+        if (nearest <= radius * radius && radius * radius <= farthest)
+          keys.push_back(mortonKey(i, j, k, depth));
       }
     }
   }
@@ -114,9 +120,13 @@ inline SyntheticLevel squareLevel(const Square& square, int depth) {
   for (std::uint32_t i = 0; i < n; ++i) {
     for (std::uint32_t j = 0; j < n; ++j) {
       for (std::uint32_t k = 0; k < n; ++k) {
-        const std::array<double, 3> c = {voxelCentre(i, depth), voxelCentre(j, depth), voxelCentre(k, depth)};
-        auto dot = [&](const std::array<double, 3>& w) { return c[0] * w[0] + c[1] * w[1] + c[2] * w[2]; };
-        if (std::fabs(dot(normal)) <= slab && std::fabs(dot(square.u)) <= reach && std::fabs(dot(square.v)) <= reach) {
+        const std::array<double, 3> c = {voxelCentre(i, depth), voxelCentre(j, depth),
+                                         voxelCentre(k, depth)};
+        auto dot = [&](const std::array<double, 3>& w) {
+          return c[0] * w[0] + c[1] * w[1] + c[2] * w[2];
+        };
+        if (std::fabs(dot(normal)) <= slab && std::fabs(dot(square.u)) <= reach &&
+            std::fabs(dot(square.v)) <= reach) {
           keys.push_back(mortonKey(i, j, k, depth));
         }
       }

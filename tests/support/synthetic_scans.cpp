@@ -32,7 +32,8 @@ prepare::Scan randomCloud(std::size_t count, std::uint32_t seed) {
   scan.shading = prepare::ScanShading::kColour;
   for (std::size_t i = 0; i < count; ++i) {
     scan.positions.push_back({unit(random), unit(random), unit(random)});
-    scan.colours.push_back({static_cast<std::uint8_t>(byte(random)), static_cast<std::uint8_t>(byte(random)),
+    scan.colours.push_back({static_cast<std::uint8_t>(byte(random)),
+                            static_cast<std::uint8_t>(byte(random)),
                             static_cast<std::uint8_t>(byte(random))});
   }
   scan.points_in_file = count;
@@ -44,16 +45,20 @@ prepare::Scan faceLikeHeightField(int samples_per_side) {
   scan.shading = prepare::ScanShading::kColour;
   for (int row = 0; row < samples_per_side; ++row) {
     for (int column = 0; column < samples_per_side; ++column) {
-      const float x = -1.0f + 2.0f * static_cast<float>(column) / static_cast<float>(samples_per_side - 1);
-      const float y = -1.0f + 2.0f * static_cast<float>(row) / static_cast<float>(samples_per_side - 1);
+      const float x =
+          -1.0f + 2.0f * static_cast<float>(column) / static_cast<float>(samples_per_side - 1);
+      const float y =
+          -1.0f + 2.0f * static_cast<float>(row) / static_cast<float>(samples_per_side - 1);
       if (x * x + 0.6f * y * y > 1.0f) continue;  // an oval outline
       const float nose = 0.35f * std::exp(-(x * x + y * y) * 12.0f);
-      const float eyes = -0.08f * (std::exp(-((x - 0.35f) * (x - 0.35f) + (y + 0.3f) * (y + 0.3f)) * 40.0f) +
-                                   std::exp(-((x + 0.35f) * (x + 0.35f) + (y + 0.3f) * (y + 0.3f)) * 40.0f));
+      const float eyes =
+          -0.08f * (std::exp(-((x - 0.35f) * (x - 0.35f) + (y + 0.3f) * (y + 0.3f)) * 40.0f) +
+                    std::exp(-((x + 0.35f) * (x + 0.35f) + (y + 0.3f) * (y + 0.3f)) * 40.0f));
       const float z = 0.5f * (x * x + y * y) - nose - eyes;  // nearer (smaller z) at the nose
       scan.positions.push_back({x, y, z});
       const auto shade = static_cast<std::uint8_t>(std::clamp(200.0f - 200.0f * z, 0.0f, 255.0f));
-      scan.colours.push_back({shade, static_cast<std::uint8_t>(shade * 3 / 4), static_cast<std::uint8_t>(shade / 2)});
+      scan.colours.push_back(
+          {shade, static_cast<std::uint8_t>(shade * 3 / 4), static_cast<std::uint8_t>(shade / 2)});
     }
   }
   scan.points_in_file = scan.positions.size();

@@ -1,7 +1,7 @@
 #pragma once
 // Synthetic range scans of surfaces whose normals are known, with scanner noise: what the normal
-// estimation targets are measured on (tests/preparer/normal_estimation_test.cpp). The sensor sits at the
-// origin looking along +z (the preparer's y-down axes), as a real range scanner's frame.
+// estimation targets are measured on (tests/preparer/normal_estimation_test.cpp). The sensor sits
+// at the origin looking along +z (the preparer's y-down axes), as a real range scanner's frame.
 
 #include <array>
 #include <cstdint>
