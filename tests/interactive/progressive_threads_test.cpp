@@ -105,7 +105,8 @@ std::vector<Drawn> drawWhileFed(Streaming& s, int coarser) {
     Framebuffer again(s.camera.width, s.camera.height);
     while (s.accepted_now.load() < std::min(d.items + 8, s.items.size())) {
       again.clear();
-      s.model.draw(snapshot, s.camera, Variant::kFixedFast, again, nullptr, nullptr, coarser);
+      EXPECT_TRUE(
+          s.model.draw(snapshot, s.camera, Variant::kFixedFast, again, nullptr, nullptr, coarser));
       EXPECT_TRUE(samePixels(again, d.frame)) << "a snapshot changed while it was drawn";
       ++d.repeats_while_feeding;
       ++s.redraws;
@@ -123,7 +124,7 @@ TEST(ProgressiveThreads, ChunksArriveWhileTwoThreadsDrawSnapshotsWithoutTheLock)
   ASSERT_TRUE(whole.has_value());
   std::optional<ProgressiveModel> model = ProgressiveModel::fromHead(image, nullptr);
   ASSERT_TRUE(model.has_value());
-  Streaming s{image, fileOrderItems(*whole), *model, {}};
+  Streaming s{image, fileOrderItems(*whole), *model, {}, {}};
   ASSERT_GT(s.items.size(), 40u);
   s.camera.width = 160;
   s.camera.height = 120;
