@@ -332,7 +332,7 @@ std::string sweepMarkdown(const std::string& label, const std::string& models,
        << " |\n";
   }
   md << "\n" << ceilingTable(cells);
-  md << "\nTargets (issue 11), from the numbers above:\n\n";
+  md << "\nTargets, from the numbers above:\n\n";
   for (const Verdict& v : checkTargets(cells)) {
     md << "- " << v.statement << ": "
        << (v.checked ? (v.met ? "**met**" : "**missed**") + std::string(", ") + v.numbers

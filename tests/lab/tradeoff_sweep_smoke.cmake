@@ -32,7 +32,7 @@ foreach(line IN LISTS lines)
   endif()
 endforeach()
 file(READ ${OUT}/sweep.md page)
-foreach(expected "| 160x120 | 4 |" "Targets (issue 11)" "Empty share of the silhouette"
+foreach(expected "| 160x120 | 4 |" "Targets, from the numbers" "Empty share of the silhouette"
         "Palette ceiling")
   string(FIND "${page}" "${expected}" at)
   if(at EQUAL -1)
