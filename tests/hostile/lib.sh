@@ -37,11 +37,8 @@ sweepInit() {
     [ -x "$tool" ] || { echo "hostile-sweep: $tool is not built (cmake --build --preset release)" >&2; return 1; }
   done
   [ -x "$VIEW" ] || VIEW=""
-  if [ ! -x /usr/bin/time ]; then  # GNU time measures CPU and peak memory (Debian package "time")
-    local sudo=""
-    [ "$(id -u)" -eq 0 ] || sudo=sudo
-    $sudo apt-get install -y -qq time >&2 || return 1
-  fi
+  # GNU time measures CPU and peak memory.
+  "$(dirname "${BASH_SOURCE[0]}")/../../scripts/install-packages" time || return 1
   W=$(mktemp -d "${TMPDIR:-/tmp}/octopoint-hostile.XXXXXX") || return 1
   trap 'rm -rf "$W"' EXIT
   META=$W/meta IN=$W/work/in
