@@ -38,14 +38,39 @@ write_app() {  # OUTDIR NAME...
     printf '; }\n'
   } >"$out/app.cpp"
 }
+compile() {  # STD (-I DIR | FILE)...: -fsyntax-only, as strict as an app's build
+  local std=$1
+  shift
+  "$cxx" -std="$std" -fsyntax-only -Wall -Wextra -Werror -I"$source_dir/include" "$@" >"$work/log" 2>&1
+}
+prepared=()
 for name in "${names[@]}"; do
   out="$work/out_$name"
   prepare_as "$name" strings "$out" || continue
+  prepared+=("$name")
   write_app "$out" "$name"
-  for std in c++20 gnu++20; do  # GNU mode predefines lower-case macros (linux, unix)
-    "$cxx" -std=$std -fsyntax-only -Wall -Wextra -Werror -I"$source_dir/include" -I"$out" "$out"/*.cpp >"$work/log" 2>&1 ||
+done
+for std in c++20 gnu++20; do  # GNU mode predefines lower-case macros (linux, unix)
+  # Each model's sources alone (their anonymous namespaces would clash in one unit), then one app
+  # with every model's header after the C library's: a header parsed once instead of once a name.
+  for name in "${prepared[@]}"; do
+    out="$work/out_$name"
+    sources=()
+    for source in "$out"/*.cpp; do [ "$source" = "$out/app.cpp" ] || sources+=("$source"); done
+    compile "$std" -I"$out" "${sources[@]}" ||
       fail "--name $name, -std=$std does not compile: $(head -5 "$work/log")"
   done
+  mkdir -p "$work/all"
+  write_app "$work/all" "${prepared[@]}"
+  if ! compile "$std" "${prepared[@]/#/-I$work/out_}" "$work/all/app.cpp"; then
+    together=$(head -5 "$work/log") failures_before=$failures
+    for name in "${prepared[@]}"; do  # which header: each in an app of its own
+      compile "$std" -I"$work/out_$name" "$work/out_$name/app.cpp" ||
+        fail "--name $name, -std=$std: its header does not compile: $(head -5 "$work/log")"
+    done
+    [ "$failures" -gt "$failures_before" ] ||
+      fail "-std=$std: the headers compile alone but not in one app: $together"
+  fi
 done
 # Both emit styles, and two models whose names look like each other's arrays, linked into one app.
 prepare_as x bytes "$work/two" && prepare_as x_depth3_nodes strings "$work/two" && {
