@@ -29,7 +29,16 @@ foreach(target IN LISTS octopoint_exported)
   target_include_directories(${target} PUBLIC $<INSTALL_INTERFACE:${CMAKE_INSTALL_INCLUDEDIR}>)
   set_target_properties(${target} PROPERTIES EXPORT_NAME ${name})
 endforeach()
-install(DIRECTORY ${PROJECT_SOURCE_DIR}/include/octopoint DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
+# A header is installed only with the library that defines what it declares.
+set(octopoint_unbuilt_headers)
+if(NOT TARGET octopoint_interactive)
+  list(APPEND octopoint_unbuilt_headers PATTERN interactive.h EXCLUDE)
+endif()
+if(NOT TARGET octopoint_net)
+  list(APPEND octopoint_unbuilt_headers PATTERN http.h EXCLUDE)
+endif()
+install(DIRECTORY ${PROJECT_SOURCE_DIR}/include/octopoint DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}
+        ${octopoint_unbuilt_headers})
 # The warnings target travels along only as a link-only dependency of the static libraries.
 set_target_properties(octopoint_warnings PROPERTIES EXPORT_NAME warnings)
 install(TARGETS ${octopoint_exported} octopoint_warnings EXPORT octopointTargets

@@ -27,8 +27,6 @@ set(CPACK_DEBIAN_PACKAGE_SHLIBDEPS ON)
 # The headers' and the CMake package's own dependencies, which no binary shows dpkg-shlibdeps.
 set(CPACK_DEBIAN_PACKAGE_DEPENDS "pkg-config, libcpp-httplib-dev")
 # Debian keeps a package's licence in /usr/share/doc/PACKAGE/copyright.
-if(EXISTS ${PROJECT_SOURCE_DIR}/LICENSE)
-  install(FILES ${PROJECT_SOURCE_DIR}/LICENSE DESTINATION ${CMAKE_INSTALL_DOCDIR} RENAME copyright)
-  set(CPACK_RESOURCE_FILE_LICENSE ${PROJECT_SOURCE_DIR}/LICENSE)
-endif()
+install(FILES ${PROJECT_SOURCE_DIR}/LICENSE DESTINATION ${CMAKE_INSTALL_DOCDIR} RENAME copyright)
+set(CPACK_RESOURCE_FILE_LICENSE ${PROJECT_SOURCE_DIR}/LICENSE)
 include(CPack)
