@@ -180,9 +180,11 @@ const char* describe(BandError error) {
   return "unknown error";
 }
 
-BandError renderBands(const LevelView& level, const FrameSetup& setup, const BandConfig& config,
-                      const BandIndex& index, const Rgb565Palette& palette,
-                      const BandBuffers& buffers, const BandSink& sink) {
+namespace {
+
+// What renderBands checks before it draws a band: kNone when every band can be drawn.
+BandError checkBands(const LevelView& level, const FrameSetup& setup, const BandConfig& config,
+                     const BandIndex& index, const BandBuffers& buffers, const BandSink& sink) {
   if (!supportsBands(config.variant)) return BandError::kUnsupportedVariant;
   if (config.band_rows < 1) return BandError::kBadBandRows;
   if (sink.flush == nullptr) return BandError::kNoSink;
@@ -194,12 +196,24 @@ BandError renderBands(const LevelView& level, const FrameSetup& setup, const Ban
       (index.level != 0 && !indexLevelAllowed(level.depth, index.level))) {
     return BandError::kRefused;
   }
-  const std::int32_t width = setup.width, height = setup.height;
-  const std::size_t words = bandBufferWords(width, config);
+  const std::size_t words = bandBufferWords(setup.width, config);
   if (buffers.first.size() < words || (!buffers.second.empty() && buffers.second.size() < words) ||
-      (config.fill && buffers.fill_history.size() < holeFillHistoryWords(width))) {
+      (config.fill && buffers.fill_history.size() < holeFillHistoryWords(setup.width))) {
     return BandError::kBufferTooSmall;
   }
+  return BandError::kNone;
+}
+
+}  // namespace
+
+BandError renderBands(const LevelView& level, const FrameSetup& setup, const BandConfig& config,
+                      const BandIndex& index, const Rgb565Palette& palette,
+                      const BandBuffers& buffers, const BandSink& sink) {
+  if (const BandError error = checkBands(level, setup, config, index, buffers, sink);
+      error != BandError::kNone) {
+    return error;
+  }
+  const std::int32_t width = setup.width, height = setup.height;
   const std::int32_t margin = bandMarginRows(config);
   const std::int32_t band_rows = std::min(config.band_rows, height);
   // One set-up on the stack (1.6 KB: it counts on a microcontroller): without an index, each band's

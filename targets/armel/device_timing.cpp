@@ -150,6 +150,36 @@ void printBestRatio(const std::vector<Row>& rows) {
   std::printf("\n");
 }
 
+// The time table, then the float/fixed ratio table, under the same columns.
+void printTables(const std::vector<Row>& rows, const std::string& columns,
+                 const std::string& rule) {
+  std::printf("| variant |%s\n%s\n", columns.c_str(), rule.c_str());
+  for (const Row& row : rows) {
+    std::printf("| %.*s |", static_cast<int>(row.variant.size()), row.variant.data());
+    for (std::int64_t ns : row.ns) std::printf(" %s |", formatMs(ns).c_str());
+    std::printf("\n");
+  }
+
+  std::printf(
+      "\nfloat/fixed time ratio per algorithm (float_X ms / fixed_X ms; higher: fixed wins "
+      "more)\n\n");
+  std::printf("| algorithm |%s\n%s\n", columns.c_str(), rule.c_str());
+  for (const Row& fixed : rows) {
+    if (!fixed.variant.starts_with(kFixedPrefix)) continue;
+    const std::string_view algorithm = fixed.variant.substr(kFixedPrefix.size());
+    std::printf("| %.*s |", static_cast<int>(algorithm.size()), algorithm.data());
+    const Row* floating = findRow(rows, std::string(kFloatPrefix) + std::string(algorithm));
+    if (floating == nullptr) {
+      std::printf(" no float variant yet |\n");
+      continue;
+    }
+    for (std::size_t column = 0; column < fixed.ns.size(); ++column) {
+      std::printf(" %s |", formatRatio(floating->ns[column], fixed.ns[column]).c_str());
+    }
+    std::printf("\n");
+  }
+}
+
 int run(const Options& options) {
   ModelIssue issue;
   const EmbeddedModel& embedded = *models::defaultModel();
@@ -206,31 +236,7 @@ int run(const Options& options) {
     rows.push_back(std::move(row));
   }
 
-  std::printf("| variant |%s\n%s\n", columns.c_str(), rule.c_str());
-  for (const Row& row : rows) {
-    std::printf("| %.*s |", static_cast<int>(row.variant.size()), row.variant.data());
-    for (std::int64_t ns : row.ns) std::printf(" %s |", formatMs(ns).c_str());
-    std::printf("\n");
-  }
-
-  std::printf(
-      "\nfloat/fixed time ratio per algorithm (float_X ms / fixed_X ms; higher: fixed wins "
-      "more)\n\n");
-  std::printf("| algorithm |%s\n%s\n", columns.c_str(), rule.c_str());
-  for (const Row& fixed : rows) {
-    if (!fixed.variant.starts_with(kFixedPrefix)) continue;
-    const std::string_view algorithm = fixed.variant.substr(kFixedPrefix.size());
-    std::printf("| %.*s |", static_cast<int>(algorithm.size()), algorithm.data());
-    const Row* floating = findRow(rows, std::string(kFloatPrefix) + std::string(algorithm));
-    if (floating == nullptr) {
-      std::printf(" no float variant yet |\n");
-      continue;
-    }
-    for (std::size_t column = 0; column < fixed.ns.size(); ++column) {
-      std::printf(" %s |", formatRatio(floating->ns[column], fixed.ns[column]).c_str());
-    }
-    std::printf("\n");
-  }
+  printTables(rows, columns, rule);
   printBestRatio(rows);
   return 0;
 }
