@@ -1,6 +1,8 @@
 #include "tools/model_source.h"
 
+#include "cli/error.h"
 #include "cli/input_file.h"
+#include "cli/numbers.h"
 #include "cli/text.h"
 #include "octopoint/models.h"
 
@@ -24,6 +26,27 @@ std::string issueText(const ModelIssue& issue) {
 }
 
 }  // namespace
+
+bool parseModelSourceOption(cli::ArgumentReader& args, ModelSourceOptions& source) {
+  if (args.is("--model")) {
+    source.model_name = args.value();
+  } else if (args.is("--file")) {
+    source.model_file = args.value();
+  } else if (args.is("--url")) {
+    source.url = args.value();
+  } else if (args.is("--point-budget")) {
+    source.point_budget = static_cast<std::uint64_t>(
+        cli::parseInteger(args.name(), args.value(), 1, std::int64_t{1} << 40));
+  } else {
+    return false;
+  }
+  return true;
+}
+
+void checkOneModelSource(const ModelSourceOptions& source) {
+  if (!source.model_name.empty() + !source.model_file.empty() + !source.url.empty() > 1)
+    throw cli::Error("give one of --model, --file and --url");
+}
 
 std::unique_ptr<LoadedModel> loadModel(const std::string& model_name, const std::string& model_file,
                                        bool accept_chunked) {

@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "cli/arguments.h"
 #include "cli/input_file.h"
 #include "octopoint/model.h"
 #include "octopoint/progressive.h"
@@ -22,6 +23,20 @@ struct ModelLoadError : std::runtime_error {
 
 // A model file: a regular file of at most 1 GiB (cli/input_file.h), stated in the tools' --help.
 inline constexpr cli::InputKind kModelFileInput{"model file", cli::kGiB};
+
+// The options that name a tool's model, as octopoint-render and octopoint-view read them: --model
+// NAME, --file M.oct, --url URL (at most one of the three) and --point-budget N.
+struct ModelSourceOptions {
+  std::string model_name;
+  std::string model_file;
+  std::string url;
+  std::uint64_t point_budget = 0;  // points drawn a frame of a chunked model; 0: no budget
+};
+
+// Reads the option `args` is at into `source`: false when it is none of the four.
+bool parseModelSourceOption(cli::ArgumentReader& args, ModelSourceOptions& source);
+// Throws cli::Error when more than one of --model, --file and --url was given.
+void checkOneModelSource(const ModelSourceOptions& source);
 
 struct LoadedModel {
   std::vector<std::uint8_t> file_bytes;  // the .oct image the view points into (empty if embedded)

@@ -101,10 +101,8 @@ with status 1, writing nothing.
 constexpr Rgb kBackground{236, 236, 240};  // light grey: range scans are often dark
 
 struct Options {
-  std::string model_name;
-  std::string model_file;
-  std::string url;
-  UrlFetchOptions fetch;
+  ModelSourceOptions source;
+  UrlFetchOptions fetch;  // its point budget is the source's
   std::string output;
   Camera camera;
   std::optional<int> depth;  // none: depth auto
@@ -187,23 +185,13 @@ bool parseStyleOption(cli::ArgumentReader& args, StyleOptions& style) {
   return true;
 }
 
-// The model's source (--model, --file, --url) and how a URL is fetched: false when `args` holds
-// another option.
-bool parseSourceOption(cli::ArgumentReader& args, Options& options) {
-  if (args.is("--model")) {
-    options.model_name = args.value();
-  } else if (args.is("--file")) {
-    options.model_file = args.value();
-  } else if (args.is("--url")) {
-    options.url = args.value();
-  } else if (args.is("--point-budget")) {
-    options.fetch.point_budget = static_cast<std::uint64_t>(
-        cli::parseInteger(args.name(), args.value(), 1, std::int64_t{1} << 40));
-  } else if (args.is("--bytes")) {
-    options.fetch.bytes = static_cast<std::uint64_t>(
+// How a URL is fetched (--bytes, --timeout): false when `args` holds another option.
+bool parseFetchOption(cli::ArgumentReader& args, UrlFetchOptions& fetch) {
+  if (args.is("--bytes")) {
+    fetch.bytes = static_cast<std::uint64_t>(
         cli::parseInteger(args.name(), args.value(), 1, std::int64_t{1} << 50));
   } else if (args.is("--timeout")) {
-    options.fetch.timeout_seconds = cli::parseInt(args.name(), args.value(), 1, 86400);
+    fetch.timeout_seconds = cli::parseInt(args.name(), args.value(), 1, 86400);
   } else {
     return false;
   }
@@ -212,11 +200,10 @@ bool parseSourceOption(cli::ArgumentReader& args, Options& options) {
 
 // The options that exclude or need each other.
 void checkCombination(const Options& options) {
-  if (!options.model_name.empty() + !options.model_file.empty() + !options.url.empty() > 1) {
-    throw cli::Error("give one of --model, --file and --url");
-  }
-  if (options.url.empty() && options.fetch.bytes > 0) throw cli::Error("--bytes needs --url");
-  if (!options.url.empty() && (options.depth || options.sheet > 0)) {
+  checkOneModelSource(options.source);
+  const bool url = !options.source.url.empty();
+  if (!url && options.fetch.bytes > 0) throw cli::Error("--bytes needs --url");
+  if (url && (options.depth || options.sheet > 0)) {
     throw cli::Error("--url draws the depth the view needs: --depth and --sheet do not apply");
   }
   if (!options.list && options.output.empty()) throw cli::Error("no output given: use -o OUT.png");
@@ -232,7 +219,8 @@ Options parseOptions(int argc, char** argv) {
     } else if (args.is("--list")) {
       args.noValue();
       options.list = true;
-    } else if (parseSourceOption(args, options) || parseViewOption(args, options.camera) ||
+    } else if (parseModelSourceOption(args, options.source) ||
+               parseFetchOption(args, options.fetch) || parseViewOption(args, options.camera) ||
                parseStyleOption(args, options.style)) {
       continue;
     } else if (args.is("--depth")) {
@@ -260,6 +248,7 @@ Options parseOptions(int argc, char** argv) {
     }
   }
   checkCombination(options);
+  options.fetch.point_budget = options.source.point_budget;
   return options;
 }
 
@@ -297,11 +286,11 @@ int renderUrl(const Options& options) {
   cli::checkOutputFile(
       options.output);  // before fetching: a FIFO, a device or a directory is refused
   std::string report;
-  const cv::Mat image = renderFromUrl(options.url, options.camera, options.variant, options.fill,
-                                      kBackground, options.fetch, &report);
+  const cv::Mat image = renderFromUrl(options.source.url, options.camera, options.variant,
+                                      options.fill, kBackground, options.fetch, &report);
   writePng(options.output, image);
-  std::printf("%s: %s -> %s (%dx%d)\n", options.url.c_str(), report.c_str(), options.output.c_str(),
-              options.camera.width, options.camera.height);
+  std::printf("%s: %s -> %s (%dx%d)\n", options.source.url.c_str(), report.c_str(),
+              options.output.c_str(), options.camera.width, options.camera.height);
   return 0;
 }
 
@@ -423,9 +412,9 @@ int run(int argc, char** argv) {
     listModels();
     return 0;
   }
-  if (!options.url.empty()) return renderUrl(options);
+  if (!options.source.url.empty()) return renderUrl(options);
   const std::unique_ptr<LoadedModel> loaded =
-      loadModel(options.model_name, options.model_file, true);
+      loadModel(options.source.model_name, options.source.model_file, true);
   if (loaded->chunked) return renderChunked(options, *loaded);
   if (options.fetch.point_budget > 0) {
     throw cli::Error(loaded->label +

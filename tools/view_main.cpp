@@ -71,15 +71,8 @@ ViewerOptions parseOptions(int argc, char** argv) {
     if (args.is("-h") || args.is("--help")) {
       std::cout << kUsage << Viewer::keyTable(nullptr).helpText() << kUsageEnd;
       std::exit(0);
-    } else if (args.is("--model")) {
-      options.model_name = args.value();
-    } else if (args.is("--file")) {
-      options.model_file = args.value();
-    } else if (args.is("--url")) {
-      options.url = args.value();
-    } else if (args.is("--point-budget")) {
-      options.point_budget = static_cast<std::uint64_t>(
-          cli::parseInteger(args.name(), args.value(), 1, std::int64_t{1} << 40));
+    } else if (parseModelSourceOption(args, options.source)) {
+      continue;
     } else if (args.is("--size")) {
       const cli::FrameSize size =
           cli::parseFrameSize(args.name(), args.value(), kMinFrameSide, kMaxFrameSide);
@@ -93,20 +86,18 @@ ViewerOptions parseOptions(int argc, char** argv) {
       args.refuseUnknown();
     }
   }
-  if (!options.model_name.empty() + !options.model_file.empty() + !options.url.empty() > 1) {
-    throw cli::Error("give one of --model, --file and --url");
-  }
-  if (options.point_budget > 0 && options.url.empty())
+  checkOneModelSource(options.source);
+  if (options.source.point_budget > 0 && options.source.url.empty())
     throw cli::Error("--point-budget needs --url");
   return options;
 }
 
 int run(int argc, char** argv) {
   const ViewerOptions options = parseOptions(argc, argv);
-  if (!options.url.empty()) {
+  if (!options.source.url.empty()) {
     std::string why;
-    const std::optional<net::HttpUrl> url = net::parseHttpUrl(options.url, &why);
-    if (!url) throw cli::Error("--url: " + cli::inQuotes(options.url) + ": " + why);
+    const std::optional<net::HttpUrl> url = net::parseHttpUrl(options.source.url, &why);
+    if (!url) throw cli::Error("--url: " + cli::inQuotes(options.source.url) + ": " + why);
     net::ModelStream stream(*url, net::StreamOptions{});  // prefetches the rest once the view is in
     Camera first_view;  // the renderer's initial view, until its first frame says otherwise
     first_view.width = options.width;
@@ -121,7 +112,8 @@ int run(int argc, char** argv) {
     stream.stop();
     return 0;
   }
-  const std::unique_ptr<LoadedModel> loaded = loadModel(options.model_name, options.model_file);
+  const std::unique_ptr<LoadedModel> loaded =
+      loadModel(options.source.model_name, options.source.model_file);
   Viewer viewer(options, &*loaded->view, nullptr);
   viewer.run();
   return 0;

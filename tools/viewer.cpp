@@ -31,6 +31,17 @@ double signedDegreesOf(Angle angle) {
 }
 double zoomOf(Q16 zoom) { return static_cast<double>(zoom.raw()) / Q16::kOneRaw; }
 
+// The camera a frame was drawn with (its view and size).
+Camera cameraOf(const FrameInfo& info) {
+  Camera camera;
+  camera.yaw = info.view.yaw;
+  camera.pitch = info.view.pitch;
+  camera.zoom = info.view.zoom;
+  camera.width = info.width;
+  camera.height = info.height;
+  return camera;
+}
+
 InteractiveConfig interactiveConfig(const ViewerOptions& options, ViewWindow& window) {
   InteractiveConfig config;
   config.width = options.width;
@@ -84,7 +95,7 @@ Viewer::Viewer(const ViewerOptions& options, const ModelView* model, net::ModelS
       renderer_(model != nullptr ? std::make_unique<DualResolutionRenderer>(
                                        *model, clock_, interactiveConfig(options, window_, *model))
                                  : std::make_unique<DualResolutionRenderer>(
-                                       streamDrawer(*stream, options.point_budget), clock_,
+                                       streamDrawer(*stream, options.source.point_budget), clock_,
                                        interactiveConfig(options, window_))),
       keys_(keyTable(this)),
       resolve_(
@@ -122,12 +133,7 @@ void Viewer::followView() {
   if (stream_ == nullptr) return;
   const FrameInfo latest = renderer_->status().latest;
   if (latest.generation == 0) return;
-  Camera camera;
-  camera.yaw = latest.view.yaw;
-  camera.pitch = latest.view.pitch;
-  camera.zoom = latest.view.zoom;
-  camera.width = latest.width;
-  camera.height = latest.height;
+  const Camera camera = cameraOf(latest);
   const bool same =
       followed_view_ && followed_view_->yaw == camera.yaw &&
       followed_view_->pitch == camera.pitch && followed_view_->zoom.raw() == camera.zoom.raw() &&
@@ -189,12 +195,7 @@ void Viewer::moveLight(int azimuth_steps, int elevation_steps) {
 
 void Viewer::resolveStyled(const Framebuffer& frame, const FrameInfo& info,
                            std::span<std::uint8_t> rgb) {
-  Camera camera;
-  camera.yaw = info.view.yaw;
-  camera.pitch = info.view.pitch;
-  camera.zoom = info.view.zoom;
-  camera.width = info.width;
-  camera.height = info.height;
+  const Camera camera = cameraOf(info);
   FrameSetup setup;
   const bool styled =
       styler_->options().style != Style::kColour && info.depth > 0 &&

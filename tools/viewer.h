@@ -16,6 +16,7 @@
 #include "octopoint/interactive.h"
 #include "octopoint/model.h"
 #include "octopoint/styles.h"
+#include "tools/model_source.h"
 #include "tools/view_keys.h"
 #include "tools/view_overlay.h"
 #include "tools/view_window.h"
@@ -28,14 +29,11 @@ constexpr int kMinFrameSide = 16;
 
 // octopoint-view's command line.
 struct ViewerOptions {
-  std::string model_name;
-  std::string model_file;
-  std::string url;
+  ModelSourceOptions source;  // the point budget applies with --url only
   int width = 640;
   int height = 480;
   int scale = 1;
   int degrees_per_second = 90;
-  std::uint64_t point_budget = 0;  // with --url; 0: none
 };
 
 class Viewer {
