@@ -31,19 +31,29 @@ TEST_F(ScanLoaderTest, XyzLoadsExactPositionsWithoutColoursInEveryEncoding) {
   }
 }
 
-TEST_F(ScanLoaderTest, PackedFloatRgbLoadsExactColoursInEveryEncoding) {
-  pcl::PointCloud<pcl::PointXYZRGB> cloud;
+// kPoints points, each at positionOf(i) with colourOf(i) (alpha, where the point has one, varies).
+template <typename Point>
+pcl::PointCloud<Point> colouredCloud() {
+  pcl::PointCloud<Point> cloud;
   for (int i = 0; i < kPoints; ++i) {
-    pcl::PointXYZRGB& point = cloud.emplace_back();
+    Point& point = cloud.emplace_back();
     setPosition(point, i);
     const auto rgb = colourOf(i);
     point.r = rgb[0];
     point.g = rgb[1];
     point.b = rgb[2];
+    if constexpr (requires { point.a; }) point.a = static_cast<uint8_t>(17 * i);
   }
+  return cloud;
+}
+
+// Every encoding of colouredCloud<Point>() loads with its exact positions and colours.
+template <typename Point>
+void expectExactColoursInEveryEncoding(const ScanLoaderTest& test) {
+  const pcl::PointCloud<Point> cloud = colouredCloud<Point>();
   for (Encoding encoding : kAllEncodings) {
     SCOPED_TRACE(encodingName(encoding));
-    const Scan scan = loadScan(write(cloud, encoding));
+    const Scan scan = loadScan(test.write(cloud, encoding));
     expectPositions(scan);
     EXPECT_EQ(scan.shading, ScanShading::kColour);
     ASSERT_EQ(scan.colours.size(), static_cast<std::size_t>(kPoints));
@@ -51,25 +61,12 @@ TEST_F(ScanLoaderTest, PackedFloatRgbLoadsExactColoursInEveryEncoding) {
   }
 }
 
+TEST_F(ScanLoaderTest, PackedFloatRgbLoadsExactColoursInEveryEncoding) {
+  expectExactColoursInEveryEncoding<pcl::PointXYZRGB>(*this);
+}
+
 TEST_F(ScanLoaderTest, Uint32RgbaLoadsExactColoursIgnoringAlphaInEveryEncoding) {
-  pcl::PointCloud<pcl::PointXYZRGBA> cloud;
-  for (int i = 0; i < kPoints; ++i) {
-    pcl::PointXYZRGBA& point = cloud.emplace_back();
-    setPosition(point, i);
-    const auto rgb = colourOf(i);
-    point.r = rgb[0];
-    point.g = rgb[1];
-    point.b = rgb[2];
-    point.a = static_cast<uint8_t>(17 * i);
-  }
-  for (Encoding encoding : kAllEncodings) {
-    SCOPED_TRACE(encodingName(encoding));
-    const Scan scan = loadScan(write(cloud, encoding));
-    expectPositions(scan);
-    EXPECT_EQ(scan.shading, ScanShading::kColour);
-    ASSERT_EQ(scan.colours.size(), static_cast<std::size_t>(kPoints));
-    for (int i = 0; i < kPoints; ++i) EXPECT_EQ(scan.colours[i], colourOf(i)) << "point " << i;
-  }
+  expectExactColoursInEveryEncoding<pcl::PointXYZRGBA>(*this);
 }
 
 TEST_F(ScanLoaderTest, HandWrittenRgbFieldAsUint32IsReadAsPackedColour) {

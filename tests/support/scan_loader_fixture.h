@@ -57,7 +57,7 @@ inline bool isPly(Encoding encoding) {
 }
 
 class ScanLoaderTest : public ::testing::Test {
- protected:
+ public:  // its helpers are called from the tests' own helper templates too
   void SetUp() override {
     const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
     dir_ = fs::temp_directory_path() / ("octopoint_scan_loader_" + std::string(info->name()) + "_" +
