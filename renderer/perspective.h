@@ -1,0 +1,114 @@
+#pragma once
+// The perspective camera's integer core: where the eye is, how a point of the model projects, and
+// how far a subtree's projection is from the affine map at its centre (docs/perspective.md).
+//
+// Units and Q formats:
+// - Model space: the model cube [-1/2, 1/2)^3 centred on the origin, in the scan's camera frame
+//   (x right, y down, z away: the orthographic camera's frame), in Q.24 cube edges (int64). A
+//   voxel of depth 16 is 2^8 units, its centre 2^7 units from its corner: exact.
+// - Camera space: the same units, rotated so that the eye looks along +z, x right, y down.
+// - Screen: Q(32-F).F pixels (F = fraction_bits), the orthographic decoders' format; depth is the
+//   camera-space z in Q.24 cube edges.
+//
+// Projection: x = width / 2 + f * c.x / c.z, y = height / 2 + f * c.y / c.z with the focal length
+// f = (height / 2) / tan(fov / 2) pixels. The per-level displacement vectors of the decoders are
+// affine, which a perspective projection is not; around a camera-space centre c the projection of
+// c + d differs from its affine (first-order) map by
+//   err_x = f * d.z * (c.x * d.z - d.x * c.z) / (c.z^2 * (c.z + d.z)),
+// so for a box whose every point has |d.x|, |d.y|, |d.z| <= r, in front of the eye (c.z > r):
+//   |err_x| <= f * r^2 * (|c.x| + c.z) / (c.z^2 * (c.z - r)),
+// and the same with c.y for y: about f * (r / z)^2 pixels near the view's axis. That bound decides
+// where a walk may add vectors and where it must project anew.
+
+#include <cstdint>
+#include <optional>
+
+#include "octopoint/camera.h"
+#include "octopoint/fixed.h"
+
+namespace octopoint {
+
+inline constexpr int kPerspectiveUnitBits = 24;  // Q.24 cube edges
+inline constexpr std::int64_t kPerspectiveUnit = std::int64_t{1} << kPerspectiveUnitBits;
+// The eye lies within this many cube edges of the cube's centre on every axis: then every
+// camera-space coordinate of a model point is a sum of three products below 2^62 (exact in int64).
+inline constexpr std::int64_t kMaxEyeDistance = 128;
+inline constexpr int kMinFieldOfViewDegrees = 10;
+inline constexpr int kMaxFieldOfViewDegrees = 120;
+
+using ModelPoint = Point3<std::int64_t>;   // Q.24 cube edges, model space
+using CameraPoint = Point3<std::int64_t>;  // Q.24 cube edges, camera space
+
+struct PerspectiveCamera {
+  ModelPoint eye{0, 0, -2 * kPerspectiveUnit};  // Q.24 cube edges: two edges before the cube
+  Angle yaw;    // turns the view right (towards +x); 0 looks along +z
+  Angle pitch;  // turns the view up (towards -y)
+  Angle roll;   // turns the picture clockwise
+  Angle fov = Angle::fromDegrees(60);  // vertical field of view, 10 to 120 degrees
+  std::int64_t near = kPerspectiveUnit / 64;  // Q.24 cube edges, > 0: nearer points are not drawn
+  std::int32_t width = 320;
+  std::int32_t height = 240;
+};
+
+enum class PerspectiveError : std::uint8_t {
+  kNone,
+  kBadViewport,      // width or height outside 1..kMaxViewportSide
+  kBadFieldOfView,   // outside 10..120 degrees
+  kBadNearPlane,     // near <= 0 or farther than kMaxEyeDistance cube edges
+  kEyeTooFar,        // an eye coordinate beyond kMaxEyeDistance cube edges
+  kBadFractionBits,  // outside kMinFractionBits..kMaxFractionBits
+};
+
+const char* describe(PerspectiveError error);
+
+// One frame's perspective view, built once (buildPerspectiveView) and only read afterwards.
+struct PerspectiveView {
+  PerspectiveCamera camera;
+  Rotation world_to_camera;  // Q1.30
+  std::int64_t focal_q16 = 0;  // f in pixels, Q.16
+  int fraction_bits = kDefaultFractionBits;
+  std::int64_t centre_x = 0;  // width / 2, Q(32-F).F
+  std::int64_t centre_y = 0;  // height / 2, Q(32-F).F
+};
+
+[[nodiscard]] PerspectiveError buildPerspectiveView(const PerspectiveCamera& camera,
+                                                    int fraction_bits, PerspectiveView* view);
+
+// The camera-space position of a model point within kMaxEyeDistance cube edges of the centre:
+// each coordinate rounded once to the nearest unit (error <= 1/2 unit plus the rotation's).
+CameraPoint toCameraSpace(const PerspectiveView& view, const ModelPoint& point);
+
+struct ScreenPoint {
+  std::int32_t x = 0;  // Q(32-F).F pixels
+  std::int32_t y = 0;
+  std::int64_t z = 0;  // camera-space depth, Q.24 cube edges
+};
+
+// The projection of a camera-space point, each coordinate within 1/2 + 2^-10 unit in the last
+// place of the exact projection of that point; nullopt when it lies nearer than the near plane or
+// projects beyond what Q(32-F).F holds (far outside the screen).
+std::optional<ScreenPoint> project(const PerspectiveView& view, const CameraPoint& point);
+
+// The bound above, in Q(32-F).F pixels rounded up, for a box of half-extent `reach` (every point
+// within `reach` units of `centre` on every camera axis); nullopt when the box reaches the near
+// plane (or its centre is so near the eye that the bound does not fit int64).
+std::optional<std::int64_t> affineErrorBound(const PerspectiveView& view,
+                                             const CameraPoint& centre, std::int64_t reach);
+
+// The first-order map of the projection at a camera-space centre: a model-space displacement d
+// (Q.24 cube edges) lands at centre + sum over axes a of axis[a] * d_a / 2^24 on screen.
+struct AffineProjection {
+  ScreenPoint centre;
+  // axis[a]: the screen displacement of one cube edge along model axis a: x and y in Q(32-F).F
+  // pixels, z in Q.24 cube edges (int64: near the eye one edge spans millions of pixels).
+  Point3<std::int64_t> axis[3];
+};
+
+// nullopt when `centre` does not project (project) or an axis vector does not fit int64.
+std::optional<AffineProjection> affineAt(const PerspectiveView& view, const CameraPoint& centre);
+
+// A rotated cube of half-edge `half` (Q.24) reaches at most this far on any camera axis
+// (half * sqrt(3), rounded up).
+std::int64_t rotatedCubeReach(std::int64_t half);
+
+}  // namespace octopoint
