@@ -17,8 +17,7 @@ bool fitsInt32(std::int64_t value) { return value >= INT32_MIN && value <= INT32
 
 // round(numerator * 2^shift / denominator) for a shift that may be negative (then the denominator
 // takes the power of two): the screen's F against a Q.16 focal length.
-std::optional<std::int64_t> divScaled(std::int64_t numerator, std::int64_t denominator,
-                                      int shift) {
+std::optional<std::int64_t> divScaled(std::int64_t numerator, std::int64_t denominator, int shift) {
   if (shift >= 0) return divShiftRound(numerator, denominator, shift);
   return divShiftRound(numerator, denominator << -shift, 0);
 }
@@ -118,8 +117,8 @@ std::optional<ScreenPoint> project(const PerspectiveView& view, const CameraPoin
                      point.z};
 }
 
-std::optional<std::int64_t> affineErrorBound(const PerspectiveView& view,
-                                             const CameraPoint& centre, std::int64_t reach) {
+std::optional<std::int64_t> affineErrorBound(const PerspectiveView& view, const CameraPoint& centre,
+                                             std::int64_t reach) {
   assert(reach >= 0 && reach < (std::int64_t{1} << 32));
   if (centre.z - reach < view.camera.near) return std::nullopt;
   // f * (r / z)^2 * (m + z) / (z - r), every factor rounded up: a = r / z in Q.30, b = (m + z) /

@@ -41,10 +41,10 @@ using CameraPoint = Point3<std::int64_t>;  // Q.24 cube edges, camera space
 
 struct PerspectiveCamera {
   ModelPoint eye{0, 0, -2 * kPerspectiveUnit};  // Q.24 cube edges: two edges before the cube
-  Angle yaw;    // turns the view right (towards +x); 0 looks along +z
-  Angle pitch;  // turns the view up (towards -y)
-  Angle roll;   // turns the picture clockwise
-  Angle fov = Angle::fromDegrees(60);  // vertical field of view, 10 to 120 degrees
+  Angle yaw;                                  // turns the view right (towards +x); 0 looks along +z
+  Angle pitch;                                // turns the view up (towards -y)
+  Angle roll;                                 // turns the picture clockwise
+  Angle fov = Angle::fromDegrees(60);         // vertical field of view, 10 to 120 degrees
   std::int64_t near = kPerspectiveUnit / 64;  // Q.24 cube edges, > 0: nearer points are not drawn
   std::int32_t width = 320;
   std::int32_t height = 240;
@@ -64,7 +64,7 @@ const char* describe(PerspectiveError error);
 // One frame's perspective view, built once (buildPerspectiveView) and only read afterwards.
 struct PerspectiveView {
   PerspectiveCamera camera;
-  Rotation world_to_camera;  // Q1.30
+  Rotation world_to_camera;    // Q1.30
   std::int64_t focal_q16 = 0;  // f in pixels, Q.16
   int fraction_bits = kDefaultFractionBits;
   std::int64_t centre_x = 0;  // width / 2, Q(32-F).F
@@ -92,8 +92,8 @@ std::optional<ScreenPoint> project(const PerspectiveView& view, const CameraPoin
 // The bound above, in Q(32-F).F pixels rounded up, for a box of half-extent `reach` (every point
 // within `reach` units of `centre` on every camera axis); nullopt when the box reaches the near
 // plane (or its centre is so near the eye that the bound does not fit int64).
-std::optional<std::int64_t> affineErrorBound(const PerspectiveView& view,
-                                             const CameraPoint& centre, std::int64_t reach);
+std::optional<std::int64_t> affineErrorBound(const PerspectiveView& view, const CameraPoint& centre,
+                                             std::int64_t reach);
 
 // The first-order map of the projection at a camera-space centre: a model-space displacement d
 // (Q.24 cube edges) lands at centre + sum over axes a of axis[a] * d_a / 2^24 on screen.

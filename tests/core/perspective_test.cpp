@@ -11,49 +11,10 @@
 #include <cstdint>
 #include <random>
 
+#include "tests/support/perspective_reference.h"
+
 namespace octopoint {
 namespace {
-
-constexpr double kUnit = static_cast<double>(kPerspectiveUnit);
-constexpr double kPi = 3.14159265358979323846;
-
-double radiansOf(Angle angle) { return angle.turns16() * 2 * kPi / Angle::kUnitsPerTurn; }
-
-using Matrix = std::array<std::array<double, 3>, 3>;
-
-Matrix multiply(const Matrix& a, const Matrix& b) {
-  Matrix product{};
-  for (int i = 0; i < 3; ++i)
-    for (int j = 0; j < 3; ++j)
-      for (int k = 0; k < 3; ++k) product[i][j] += a[i][k] * b[k][j];
-  return product;
-}
-
-// World to camera in double: Rz(-roll) * Rx(-pitch) * Ry(-yaw), as octopoint/fixed.h defines them.
-Matrix worldToCamera(const PerspectiveCamera& camera) {
-  const double y = -radiansOf(camera.yaw), p = -radiansOf(camera.pitch),
-               r = -radiansOf(camera.roll);
-  const Matrix ry{{{std::cos(y), 0, std::sin(y)}, {0, 1, 0}, {-std::sin(y), 0, std::cos(y)}}};
-  const Matrix rx{{{1, 0, 0}, {0, std::cos(p), -std::sin(p)}, {0, std::sin(p), std::cos(p)}}};
-  const Matrix rz{{{std::cos(r), -std::sin(r), 0}, {std::sin(r), std::cos(r), 0}, {0, 0, 1}}};
-  return multiply(rz, multiply(rx, ry));
-}
-
-double focalOf(const PerspectiveCamera& camera) {
-  // The view halves the angle in whole units, as the integer code does.
-  const double half = (camera.fov.turns16() / 2) * 2 * kPi / Angle::kUnitsPerTurn;
-  return camera.height / 2.0 / std::tan(half);
-}
-
-struct Projected {
-  double x, y;  // pixels
-};
-
-// The exact projection of a camera-space point given in units.
-Projected exactProjection(const PerspectiveCamera& camera, double x, double y, double z) {
-  const double f = focalOf(camera);
-  return {camera.width / 2.0 + f * x / z, camera.height / 2.0 + f * y / z};
-}
 
 PerspectiveView viewOf(const PerspectiveCamera& camera, int fraction_bits = kDefaultFractionBits) {
   PerspectiveView view;
@@ -127,14 +88,13 @@ TEST(PerspectiveCamera, ProjectionIsWithinHalfAnUlpOfTheExactOne) {
                                 std::llround(z)};
         const std::optional<ScreenPoint> screen = project(view, point);
         if (!screen) continue;  // beyond what Q(32-F).F holds
-        const Projected exact = exactProjection(camera, static_cast<double>(point.x),
-                                                static_cast<double>(point.y),
-                                                static_cast<double>(point.z));
+        const Projected exact =
+            exactProjection(camera, static_cast<double>(point.x), static_cast<double>(point.y),
+                            static_cast<double>(point.z));
         worst = std::max({worst, std::abs(pixelsOf(screen->x, fraction_bits) - exact.x),
                           std::abs(pixelsOf(screen->y, fraction_bits) - exact.y)});
       }
-      EXPECT_LE(worst, ulp / 2 + std::ldexp(1.0, -15))
-          << fov << " degrees, F = " << fraction_bits;
+      EXPECT_LE(worst, ulp / 2 + std::ldexp(1.0, -15)) << fov << " degrees, F = " << fraction_bits;
     }
   }
 }
@@ -217,7 +177,8 @@ TEST(PerspectiveCamera, AffineMapStaysWithinTheStatedBound) {
           const Projected exact =
               exactProjection(camera, static_cast<double>(c.x) + dc[0],
                               static_cast<double>(c.y) + dc[1], static_cast<double>(c.z) + dc[2]);
-          double x = static_cast<double>(affine->centre.x), y = static_cast<double>(affine->centre.y);
+          double x = static_cast<double>(affine->centre.x),
+                 y = static_cast<double>(affine->centre.y);
           for (int a = 0; a < 3; ++a) {
             x += static_cast<double>(affine->axis[a].x) * static_cast<double>(d[a]) / kUnit;
             y += static_cast<double>(affine->axis[a].y) * static_cast<double>(d[a]) / kUnit;

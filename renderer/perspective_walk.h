@@ -1,0 +1,180 @@
+#pragma once
+// The perspective walk over one level (docs/perspective.md): down the tree in camera space, where
+// the rotation keeps every step an addition; a subtree wholly outside the frustum or behind the
+// near plane is passed over; a subtree whose affine map is within `max_error` of the projection
+// (affineErrorBound) is drawn from that map with per-level screen vectors, additions only, as the
+// orthographic decoders do; a leaf reached before any such subtree is projected exactly.
+
+#include <array>
+#include <atomic>
+#include <cstddef>
+#include <cstdint>
+
+#include "octopoint/camera.h"
+#include "octopoint/framebuffer.h"
+#include "octopoint/model.h"
+#include "renderer/perspective.h"
+
+namespace octopoint {
+
+// A leaf as the walk hands it over: its index in the level's leaf stream (and payload: palette
+// index, and normal index << 8 when the level has normals and the walk reads them), its screen
+// position in Q(32-F).F pixels (int64: a leaf may lie far off the screen) and its camera-space
+// depth in Q.24 cube edges.
+struct PerspectiveLeaf {
+  std::size_t index = 0;
+  std::int64_t x = 0;
+  std::int64_t y = 0;
+  std::int64_t z = 0;
+};
+
+// Per-frame tables of the walk: each level's child offsets in camera space, each level's reach,
+// the frustum's side slopes. Built once per frame and level depth (about 1.6 KB).
+struct PerspectiveWalkTables {
+  std::array<std::array<CameraPoint, 8>, kMaxRenderDepth> child_offset{};
+  std::array<std::int64_t, kMaxRenderDepth + 1> reach{};  // a node of level l: Q.24 cube edges
+  std::int64_t slope_x_q30 = 0;  // (width / 2) / f: the frustum's side planes are x = +-slope * z
+  std::int64_t slope_y_q30 = 0;
+  std::int64_t max_error = 0;  // Q(32-F).F pixels
+  int depth = 0;
+};
+
+// `max_error` in Q(32-F).F pixels, >= 0; depth 1..kMaxRenderDepth.
+PerspectiveWalkTables perspectiveWalkTables(const PerspectiveView& view, int depth,
+                                            std::int64_t max_error);
+
+// Calls sink(const PerspectiveLeaf&) for every leaf in front of the near plane whose subtree
+// meets the frustum, in stream order. Returns false when `abort` was set (checked per subtree).
+template <typename Sink>
+class PerspectiveWalk {
+ public:
+  PerspectiveWalk(const LevelView& level, const PerspectiveView& view,
+                  const PerspectiveWalkTables& tables, Sink& sink,
+                  const std::atomic<bool>* abort = nullptr)
+      : view_(view), tables_(tables), sink_(sink), abort_(abort), node_(level.nodes.data()) {}
+
+  bool run() {
+    // The root's centre is the model's origin.
+    visit(0, toCameraSpace(view_, ModelPoint{0, 0, 0}));
+    return !aborted_;
+  }
+
+ private:
+  void visit(int level, const CameraPoint& centre) {
+    if (level == tables_.depth) {
+      if (const std::optional<ScreenPoint> p = project(view_, centre))
+        sink_(PerspectiveLeaf{leaf_, p->x, p->y, p->z});
+      ++leaf_;
+      return;
+    }
+    if (abort_ != nullptr && abort_->load(std::memory_order_relaxed)) aborted_ = true;
+    const std::uint8_t mask = *node_++;
+    const std::int64_t reach = tables_.reach[static_cast<std::size_t>(level)];
+    if (aborted_ || outsideFrustum(centre, reach)) {
+      skipChildren(level, mask);
+      return;
+    }
+    if (const std::optional<std::int64_t> bound = affineErrorBound(view_, centre, reach);
+        bound && *bound <= tables_.max_error) {
+      if (const std::optional<AffineProjection> affine = affineAt(view_, centre)) {
+        drawAffine(level, mask, *affine);
+        return;
+      }
+    }
+    const auto& offsets = tables_.child_offset[static_cast<std::size_t>(level)];
+    for (unsigned k = 0; k < 8; ++k) {
+      if (mask & (1u << k)) {
+        const CameraPoint& o = offsets[k];
+        visit(level + 1, {centre.x + o.x, centre.y + o.y, centre.z + o.z});
+      }
+    }
+  }
+
+  // Wholly behind the near plane, or wholly beyond one of the four side planes: every point of
+  // the box has x >= centre.x - reach and z <= centre.z + reach, so centre.x - reach >
+  // slope * (centre.z + reach) puts it right of the plane x = slope * z whatever its z.
+  bool outsideFrustum(const CameraPoint& c, std::int64_t reach) const {
+    const std::int64_t far_z = c.z + reach;
+    if (far_z < view_.camera.near) return true;
+    const std::optional<std::int64_t> side_x = mulShiftRound(far_z, tables_.slope_x_q30, 30);
+    const std::optional<std::int64_t> side_y = mulShiftRound(far_z, tables_.slope_y_q30, 30);
+    // Rounded to nearest: one unit less keeps the test conservative.
+    return (side_x && (c.x - reach > *side_x + 1 || c.x + reach < -*side_x - 1)) ||
+           (side_y && (c.y - reach > *side_y + 1 || c.y + reach < -*side_y - 1));
+  }
+
+  void skipChildren(int level, std::uint8_t mask) {
+    for (unsigned k = 0; k < 8; ++k) {
+      if (mask & (1u << k)) skipNode(level + 1);
+    }
+  }
+  void skipNode(int level) {
+    if (level == tables_.depth) {
+      ++leaf_;
+      return;
+    }
+    skipChildren(level, *node_++);
+  }
+
+  // The subtree below a node of `level` whose children are `mask`, from the affine map at its
+  // centre: per level below, eight screen vectors from the three axis vectors (a child of a node
+  // of level m lies 2^-(m+2) cube edges from it along each axis), each rounded once.
+  void drawAffine(int level, std::uint8_t mask, const AffineProjection& affine) {
+    for (int m = level; m < tables_.depth; ++m) {
+      for (unsigned k = 0; k < 8; ++k) {
+        const std::int64_t sx = (k & 4) ? 1 : -1, sy = (k & 2) ? 1 : -1, sz = (k & 1) ? 1 : -1;
+        const auto& a = affine.axis;
+        const int shift = m + 2;
+        screen_offset_[static_cast<std::size_t>(m)][k] = {
+            roundShiftRight(sx * a[0].x + sy * a[1].x + sz * a[2].x, shift),
+            roundShiftRight(sx * a[0].y + sy * a[1].y + sz * a[2].y, shift),
+            roundShiftRight(sx * a[0].z + sy * a[1].z + sz * a[2].z, shift)};
+      }
+    }
+    const Point3<std::int64_t> centre{affine.centre.x, affine.centre.y, affine.centre.z};
+    const auto& offsets = screen_offset_[static_cast<std::size_t>(level)];
+    for (unsigned k = 0; k < 8; ++k) {
+      if (mask & (1u << k)) visitAffine(level + 1, add(centre, offsets[k]));
+    }
+  }
+  void visitAffine(int level, const Point3<std::int64_t>& p) {
+    if (level == tables_.depth) {
+      sink_(PerspectiveLeaf{leaf_++, p.x, p.y, p.z});
+      return;
+    }
+    const std::uint8_t mask = *node_++;
+    const auto& offsets = screen_offset_[static_cast<std::size_t>(level)];
+    for (unsigned k = 0; k < 8; ++k) {
+      if (mask & (1u << k)) visitAffine(level + 1, add(p, offsets[k]));
+    }
+  }
+  static Point3<std::int64_t> add(const Point3<std::int64_t>& a, const Point3<std::int64_t>& b) {
+    return {a.x + b.x, a.y + b.y, a.z + b.z};
+  }
+
+  const PerspectiveView& view_;
+  const PerspectiveWalkTables& tables_;
+  Sink& sink_;
+  const std::atomic<bool>* abort_;
+  const std::uint8_t* node_;
+  std::size_t leaf_ = 0;
+  bool aborted_ = false;
+  // The screen vectors of the subtree drawn from its affine map: Q(32-F).F, depth in Q.24.
+  std::array<std::array<Point3<std::int64_t>, 8>, kMaxRenderDepth> screen_offset_{};
+};
+
+}  // namespace octopoint
+
+namespace octopoint {
+
+// The depth key a perspective leaf writes: camera-space z in units of 2^-14 cube edge (z >> 10),
+// which keeps every z the eye can see (below 2^33.5 units) within FrameView::kMaxDepthKey.
+inline constexpr int kPerspectiveDepthShift = 10;
+
+// Draws `level` into `frame` (cleared by the caller) one pixel per leaf, each within `max_error`
+// plus depth / 2 units in the last place of its exact projection. False when aborted.
+bool drawPerspective(const LevelView& level, const PerspectiveView& view,
+                     const PerspectiveWalkTables& tables, FrameView& frame,
+                     const std::atomic<bool>* abort = nullptr);
+
+}  // namespace octopoint

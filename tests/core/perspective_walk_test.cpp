@@ -1,0 +1,154 @@
+// The perspective walk against a double-precision projection of every leaf of the default model:
+// each drawn leaf within half a pixel of it, at fields of view 30 to 120 degrees, the eye outside
+// the cube, at its face and deep inside; no leaf in view left out; none behind the eye drawn.
+
+#include "renderer/perspective_walk.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "octopoint/framebuffer.h"
+#include "octopoint/model.h"
+#include "octopoint/models.h"
+#include "tests/support/perspective_reference.h"
+
+namespace octopoint {
+namespace {
+
+// Every leaf centre of `level` in model space (Q.24 cube edges), in stream order.
+void collectLeaves(const std::uint8_t*& node, int level, int depth, ModelPoint centre,
+                   std::vector<ModelPoint>& leaves) {
+  if (level == depth) {
+    leaves.push_back(centre);
+    return;
+  }
+  const std::uint8_t mask = *node++;
+  const std::int64_t step = kPerspectiveUnit >> (level + 2);
+  for (unsigned k = 0; k < 8; ++k) {
+    if (!(mask & (1u << k))) continue;
+    const ModelPoint child{centre.x + ((k & 4) ? step : -step),
+                           centre.y + ((k & 2) ? step : -step),
+                           centre.z + ((k & 1) ? step : -step)};
+    collectLeaves(node, level + 1, depth, child, leaves);
+  }
+}
+
+std::vector<ModelPoint> leafCentres(const LevelView& level) {
+  std::vector<ModelPoint> leaves;
+  const std::uint8_t* node = level.nodes.data();
+  collectLeaves(node, 0, level.depth, {0, 0, 0}, leaves);
+  return leaves;
+}
+
+struct View {
+  std::string name;
+  ModelPoint eye;
+  int yaw, pitch;
+};
+
+class PerspectiveWalkTest : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    ModelIssue issue;
+    model_ = ModelView::fromEmbedded(*models::defaultModel(), &issue);
+    ASSERT_TRUE(model_.has_value()) << describe(issue.error);
+  }
+  std::optional<ModelView> model_;
+};
+
+TEST_F(PerspectiveWalkTest, EveryLeafInViewIsDrawnWithinHalfAPixelOfItsExactProjection) {
+  const LevelView& level = model_->finestLevel();
+  const std::vector<ModelPoint> leaves = leafCentres(level);
+  const std::int64_t u = kPerspectiveUnit;
+  const std::vector<View> views{{"outside", {0, 0, -2 * u}, 0, 0},
+                                {"outside, turned", {u, -u / 2, -u}, -45, -20},
+                                {"at the cube's face", {0, 0, -u / 2}, 10, -5},
+                                {"deep inside", {u / 16, u / 8, 0}, 170, 30},
+                                {"inside, looking up", {0, u / 4, u / 8}, 0, 90}};
+  constexpr int kF = kDefaultFractionBits;
+  for (int fov : {30, 60, 90, 120}) {
+    for (const View& v : views) {
+      SCOPED_TRACE(v.name + ", " + std::to_string(fov) + " degrees");
+      PerspectiveCamera camera;
+      camera.eye = v.eye;
+      camera.yaw = Angle::fromDegrees(v.yaw);
+      camera.pitch = Angle::fromDegrees(v.pitch);
+      camera.fov = Angle::fromDegrees(fov);
+      camera.width = 640;
+      camera.height = 480;
+      PerspectiveView view;
+      ASSERT_EQ(buildPerspectiveView(camera, kF, &view), PerspectiveError::kNone);
+      const PerspectiveWalkTables tables =
+          perspectiveWalkTables(view, level.depth, std::int64_t{1} << (kF - 2));
+      std::vector<bool> drawn(leaves.size(), false);
+      double worst = 0;
+      const Matrix m = worldToCamera(camera);
+      auto check = [&](const PerspectiveLeaf& leaf) {
+        ASSERT_LT(leaf.index, leaves.size());
+        drawn[leaf.index] = true;
+        const ModelPoint& p = leaves[leaf.index];
+        const double d[3] = {static_cast<double>(p.x - v.eye.x), static_cast<double>(p.y - v.eye.y),
+                             static_cast<double>(p.z - v.eye.z)};
+        double c[3];
+        for (int row = 0; row < 3; ++row) c[row] = m[row][0] * d[0] + m[row][1] * d[1] + m[row][2] * d[2];
+        ASSERT_GT(c[2], 0) << "leaf " << leaf.index << " behind the eye was drawn";
+        const Projected exact = exactProjection(camera, c[0], c[1], c[2]);
+        worst = std::max({worst, std::abs(std::ldexp(static_cast<double>(leaf.x), -kF) - exact.x),
+                          std::abs(std::ldexp(static_cast<double>(leaf.y), -kF) - exact.y)});
+      };
+      PerspectiveWalk<decltype(check)> walk(level, view, tables, check);
+      ASSERT_TRUE(walk.run());
+      EXPECT_LE(worst, 0.5);
+      // A leaf whose exact projection lies on the screen, a voxel in front of the near plane, was
+      // handed over.
+      std::size_t in_view = 0;
+      for (std::size_t i = 0; i < leaves.size(); ++i) {
+        const ModelPoint& p = leaves[i];
+        const double d[3] = {static_cast<double>(p.x - v.eye.x), static_cast<double>(p.y - v.eye.y),
+                             static_cast<double>(p.z - v.eye.z)};
+        double c[3];
+        for (int row = 0; row < 3; ++row) c[row] = m[row][0] * d[0] + m[row][1] * d[1] + m[row][2] * d[2];
+        if (c[2] < static_cast<double>(camera.near) + kUnit / 256) continue;
+        const Projected exact = exactProjection(camera, c[0], c[1], c[2]);
+        if (exact.x < 0 || exact.y < 0 || exact.x >= camera.width || exact.y >= camera.height)
+          continue;
+        ++in_view;
+        ASSERT_TRUE(drawn[i]) << "leaf " << i << " in view at " << exact.x << "," << exact.y;
+      }
+      if (v.name != "inside, looking up") {
+        EXPECT_GT(in_view, 0u);  // the view shows some of the model
+      }
+    }
+  }
+}
+
+// Drawn into a frame, the outside view covers pixels, and the same view drawn twice is the same.
+TEST_F(PerspectiveWalkTest, DrawsTheSameFrameTwice) {
+  const LevelView& level = model_->finestLevel();
+  PerspectiveCamera camera;
+  camera.width = 320;
+  camera.height = 240;
+  PerspectiveView view;
+  ASSERT_EQ(buildPerspectiveView(camera, kDefaultFractionBits, &view), PerspectiveError::kNone);
+  const PerspectiveWalkTables tables = perspectiveWalkTables(view, level.depth, 1 << 13);
+  Framebuffer first(320, 240), second(320, 240);
+  first.clear();
+  second.clear();
+  ASSERT_TRUE(drawPerspective(level, view, tables, first));
+  ASSERT_TRUE(drawPerspective(level, view, tables, second));
+  int covered = 0;
+  for (std::int32_t y = 0; y < 240; ++y) {
+    for (std::int32_t x = 0; x < 320; ++x) {
+      ASSERT_EQ(first.pixelAt(x, y), second.pixelAt(x, y));
+      covered += first.covered(x, y);
+    }
+  }
+  EXPECT_GT(covered, 1000);
+}
+
+}  // namespace
+}  // namespace octopoint

@@ -1,0 +1,53 @@
+#pragma once
+// The perspective camera in double precision, as renderer/perspective.h defines it: the reference
+// its integer core and walk are tested against.
+
+#include <array>
+#include <cmath>
+
+#include "renderer/perspective.h"
+
+namespace octopoint {
+
+inline constexpr double kUnit = static_cast<double>(kPerspectiveUnit);
+inline constexpr double kPi = 3.14159265358979323846;
+
+inline double radiansOf(Angle angle) { return angle.turns16() * 2 * kPi / Angle::kUnitsPerTurn; }
+
+using Matrix = std::array<std::array<double, 3>, 3>;
+
+inline Matrix multiply(const Matrix& a, const Matrix& b) {
+  Matrix product{};
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j)
+      for (int k = 0; k < 3; ++k) product[i][j] += a[i][k] * b[k][j];
+  return product;
+}
+
+// World to camera in double: Rz(-roll) * Rx(-pitch) * Ry(-yaw), as octopoint/fixed.h defines them.
+inline Matrix worldToCamera(const PerspectiveCamera& camera) {
+  const double y = -radiansOf(camera.yaw), p = -radiansOf(camera.pitch),
+               r = -radiansOf(camera.roll);
+  const Matrix ry{{{std::cos(y), 0, std::sin(y)}, {0, 1, 0}, {-std::sin(y), 0, std::cos(y)}}};
+  const Matrix rx{{{1, 0, 0}, {0, std::cos(p), -std::sin(p)}, {0, std::sin(p), std::cos(p)}}};
+  const Matrix rz{{{std::cos(r), -std::sin(r), 0}, {std::sin(r), std::cos(r), 0}, {0, 0, 1}}};
+  return multiply(rz, multiply(rx, ry));
+}
+
+inline double focalOf(const PerspectiveCamera& camera) {
+  // The view halves the angle in whole units, as the integer code does.
+  const double half = (camera.fov.turns16() / 2) * 2 * kPi / Angle::kUnitsPerTurn;
+  return camera.height / 2.0 / std::tan(half);
+}
+
+struct Projected {
+  double x, y;  // pixels
+};
+
+// The exact projection of a camera-space point given in units.
+inline Projected exactProjection(const PerspectiveCamera& camera, double x, double y, double z) {
+  const double f = focalOf(camera);
+  return {camera.width / 2.0 + f * x / z, camera.height / 2.0 + f * y / z};
+}
+
+}  // namespace octopoint
