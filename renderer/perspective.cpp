@@ -80,6 +80,47 @@ PerspectiveError buildPerspectiveView(const PerspectiveCamera& camera, int fract
   return PerspectiveError::kNone;
 }
 
+PerspectiveError orbitPerspective(const Camera& camera, Angle fov, int fraction_bits,
+                                  PerspectiveView* view) {
+  PerspectiveCamera perspective;
+  perspective.width = camera.width;
+  perspective.height = camera.height;
+  perspective.fov = fov;
+  // The orbit turns the model by R = Rz(roll) Rx(pitch) Ry(yaw); a perspective camera turned by
+  // the opposite angles has R as its world-to-camera rotation.
+  perspective.yaw = -camera.yaw;
+  perspective.pitch = -camera.pitch;
+  perspective.roll = -camera.roll;
+  PerspectiveView built;
+  if (const PerspectiveError error = buildPerspectiveView(perspective, fraction_bits, &built);
+      error != PerspectiveError::kNone) {
+    return error;
+  }
+  // A cube edge spans zoom * min(W, H) pixels in the orthographic view and f / D at distance D:
+  // D = f / (zoom * min(W, H)) cube edges, Q.24 (the zoom is Q16.16, as f is).
+  const std::int64_t pixels_per_edge_q16 =
+      std::int64_t{camera.zoom.raw()} * std::min(camera.width, camera.height);
+  if (pixels_per_edge_q16 <= 0) return PerspectiveError::kBadViewport;
+  const std::optional<std::int64_t> distance =
+      divShiftRound(built.focal_q16, pixels_per_edge_q16, kPerspectiveUnitBits);
+  if (!distance || *distance > kMaxEyeDistance * kPerspectiveUnit)
+    return PerspectiveError::kEyeTooFar;
+  // The eye lies at -D along the line of sight, which in model space is R's third row.
+  const Rotation turn = rotationFromYawPitchRoll(camera.yaw, camera.pitch, camera.roll);
+  const auto& row = turn.m_q30[2];
+  perspective.eye = {roundShiftRight(-*distance * row[0], 30),
+                     roundShiftRight(-*distance * row[1], 30),
+                     roundShiftRight(-*distance * row[2], 30)};
+  if (const PerspectiveError error = buildPerspectiveView(perspective, fraction_bits, &built);
+      error != PerspectiveError::kNone) {
+    return error;
+  }
+  built.centre_x += std::int64_t{camera.pan_x_px} << fraction_bits;
+  built.centre_y += std::int64_t{camera.pan_y_px} << fraction_bits;
+  *view = built;
+  return PerspectiveError::kNone;
+}
+
 CameraPoint toCameraSpace(const PerspectiveView& view, const ModelPoint& point) {
   // |point| <= one cube edge and |eye| <= 128 edges: |d| < 2^31.1, each product below 2^61.1,
   // each sum of three below 2^62.7.

@@ -74,6 +74,14 @@ struct PerspectiveView {
 [[nodiscard]] PerspectiveError buildPerspectiveView(const PerspectiveCamera& camera,
                                                     int fraction_bits, PerspectiveView* view);
 
+// The orbit camera of the orthographic view (`camera`: its turn, zoom, pan and size) seen in
+// perspective with the field of view `fov`: the eye on the line of sight through the cube's
+// centre, at the distance where a cube edge at the centre's depth spans as many pixels as in the
+// orthographic view, so that a narrow field of view converges to its picture; the pan moves the
+// picture as it does there. kEyeTooFar when that distance exceeds kMaxEyeDistance cube edges.
+[[nodiscard]] PerspectiveError orbitPerspective(const Camera& camera, Angle fov, int fraction_bits,
+                                                PerspectiveView* view);
+
 // The camera-space position of a model point within kMaxEyeDistance cube edges of the centre:
 // each coordinate rounded once to the nearest unit (error <= 1/2 unit plus the rotation's).
 CameraPoint toCameraSpace(const PerspectiveView& view, const ModelPoint& point);

@@ -38,17 +38,42 @@ PerspectiveWalkTables perspectiveWalkTables(const PerspectiveView& view, int dep
   return tables;
 }
 
+namespace {
+
+// The pixels [first, last] whose centres lie within [p - half, p + half] on one axis (Q(32-F).F),
+// clipped to [0, size); the pixel p >> F alone when no centre does.
+struct PixelSpan {
+  std::int64_t first, last;
+};
+PixelSpan pixelSpan(std::int64_t p, std::int64_t half, int fraction_bits, std::int32_t size) {
+  const std::int64_t one = std::int64_t{1} << fraction_bits, mid = one >> 1;
+  std::int64_t first = (p - half - mid + one - 1) >> fraction_bits;
+  std::int64_t last = (p + half - mid) >> fraction_bits;
+  if (last < first) first = last = p >> fraction_bits;
+  return {std::max<std::int64_t>(first, 0), std::min<std::int64_t>(last, size - 1)};
+}
+
+}  // namespace
+
 bool drawPerspective(const LevelView& level, const PerspectiveView& view,
                      const PerspectiveWalkTables& tables, FrameView& frame,
                      const std::atomic<bool>* abort) {
   const int fraction_bits = view.fraction_bits;
+  // How far a leaf may lie from its exact position (the affine map's error, the additions'
+  // rounding): its neighbour may lie as far the other way, so each widens its splat by that much.
+  const std::int64_t padding = tables.max_error + tables.depth + 1;
   const auto plot = [&](const PerspectiveLeaf& leaf) {
-    const std::int64_t x = leaf.x >> fraction_bits, y = leaf.y >> fraction_bits;
-    if (x < 0 || y < 0 || x >= frame.width() || y >= frame.height()) return;
+    const PixelSpan columns =
+        pixelSpan(leaf.x, leaf.half_x + padding, fraction_bits, frame.width());
+    const PixelSpan rows = pixelSpan(leaf.y, leaf.half_y + padding, fraction_bits, frame.height());
     const std::uint32_t key = static_cast<std::uint32_t>(
         std::min<std::int64_t>(leaf.z >> kPerspectiveDepthShift, FrameView::kMaxDepthKey));
-    frame.plot(static_cast<std::int32_t>(x), static_cast<std::int32_t>(y), key,
-               level.leaves[leaf.index]);
+    for (std::int64_t y = rows.first; y <= rows.last; ++y) {
+      for (std::int64_t x = columns.first; x <= columns.last; ++x) {
+        frame.plot(static_cast<std::int32_t>(x), static_cast<std::int32_t>(y), key,
+                   level.leaves[leaf.index]);
+      }
+    }
   };
   PerspectiveWalk<decltype(plot)> walk(level, view, tables, plot, abort);
   return walk.run();

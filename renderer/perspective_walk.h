@@ -26,7 +26,23 @@ struct PerspectiveLeaf {
   std::int64_t x = 0;
   std::int64_t y = 0;
   std::int64_t z = 0;
+  // Half the voxel's projected extent per screen axis, Q(32-F).F: from the affine map of the
+  // subtree it was drawn with, or at the leaf itself (0 when even that cannot be had).
+  std::int64_t half_x = 0;
+  std::int64_t half_y = 0;
 };
+
+// Half the projected extent of a voxel of `depth` under an affine map, per screen axis: the sum
+// of the axis vectors' magnitudes (a cube's shadow) over 2^(depth + 1), rounded up.
+inline Point3<std::int64_t> voxelHalfExtent(const AffineProjection& affine, int depth) {
+  const auto& a = affine.axis;
+  const auto sum = [](std::int64_t p, std::int64_t q, std::int64_t r) {
+    return (p < 0 ? -p : p) + (q < 0 ? -q : q) + (r < 0 ? -r : r);
+  };
+  const std::int64_t round_up = (std::int64_t{1} << (depth + 1)) - 1;
+  return {(sum(a[0].x, a[1].x, a[2].x) + round_up) >> (depth + 1),
+          (sum(a[0].y, a[1].y, a[2].y) + round_up) >> (depth + 1), 0};
+}
 
 // Per-frame tables of the walk: each level's child offsets in camera space, each level's reach,
 // the frustum's side slopes. Built once per frame and level depth (about 1.6 KB).
@@ -62,8 +78,12 @@ class PerspectiveWalk {
  private:
   void visit(int level, const CameraPoint& centre) {
     if (level == tables_.depth) {
-      if (const std::optional<ScreenPoint> p = project(view_, centre))
-        sink_(PerspectiveLeaf{leaf_, p->x, p->y, p->z});
+      if (const std::optional<ScreenPoint> p = project(view_, centre)) {
+        const std::optional<AffineProjection> affine = affineAt(view_, centre);
+        const Point3<std::int64_t> half =
+            affine ? voxelHalfExtent(*affine, tables_.depth) : Point3<std::int64_t>{};
+        sink_(PerspectiveLeaf{leaf_, p->x, p->y, p->z, half.x, half.y});
+      }
       ++leaf_;
       return;
     }
@@ -77,6 +97,7 @@ class PerspectiveWalk {
     if (const std::optional<std::int64_t> bound = affineErrorBound(view_, centre, reach);
         bound && *bound <= tables_.max_error) {
       if (const std::optional<AffineProjection> affine = affineAt(view_, centre)) {
+        centre_z_ = centre.z;
         drawAffine(level, mask, *affine);
         return;
       }
@@ -131,6 +152,12 @@ class PerspectiveWalk {
             roundShiftRight(sx * a[0].z + sy * a[1].z + sz * a[2].z, shift)};
       }
     }
+    // The map's voxel is the size at the centre's depth; nearer voxels of the subtree are larger,
+    // by up to z / (z - reach): widened by that much, the subtree's splats leave no crack.
+    const Point3<std::int64_t> half = voxelHalfExtent(affine, tables_.depth);
+    const std::int64_t z = centre_z_, reach = tables_.reach[static_cast<std::size_t>(level)];
+    const std::int64_t growth_q16 = divShiftRound(z, z - reach, 16).value_or(INT64_MAX >> 24);
+    half_ = {(half.x * growth_q16 >> 16) + 1, (half.y * growth_q16 >> 16) + 1, 0};
     const Point3<std::int64_t> centre{affine.centre.x, affine.centre.y, affine.centre.z};
     const auto& offsets = screen_offset_[static_cast<std::size_t>(level)];
     for (unsigned k = 0; k < 8; ++k) {
@@ -139,7 +166,7 @@ class PerspectiveWalk {
   }
   void visitAffine(int level, const Point3<std::int64_t>& p) {
     if (level == tables_.depth) {
-      sink_(PerspectiveLeaf{leaf_++, p.x, p.y, p.z});
+      sink_(PerspectiveLeaf{leaf_++, p.x, p.y, p.z, half_.x, half_.y});
       return;
     }
     const std::uint8_t mask = *node_++;
@@ -161,6 +188,8 @@ class PerspectiveWalk {
   bool aborted_ = false;
   // The screen vectors of the subtree drawn from its affine map: Q(32-F).F, depth in Q.24.
   std::array<std::array<Point3<std::int64_t>, 8>, kMaxRenderDepth> screen_offset_{};
+  Point3<std::int64_t> half_{};  // voxelHalfExtent of that subtree, widened for its nearest voxels
+  std::int64_t centre_z_ = 0;    // that subtree's camera-space depth
 };
 
 }  // namespace octopoint
@@ -171,8 +200,10 @@ namespace octopoint {
 // which keeps every z the eye can see (below 2^33.5 units) within FrameView::kMaxDepthKey.
 inline constexpr int kPerspectiveDepthShift = 10;
 
-// Draws `level` into `frame` (cleared by the caller) one pixel per leaf, each within `max_error`
-// plus depth / 2 units in the last place of its exact projection. False when aborted.
+// Draws `level` into `frame` (cleared by the caller): each leaf covers the pixels whose centres lie
+// within its voxel's projected extent (padded by the rounding), or its one pixel where that
+// extent holds no pixel centre; its position is within `max_error` plus depth / 2 units in the
+// last place of its exact projection. False when aborted.
 bool drawPerspective(const LevelView& level, const PerspectiveView& view,
                      const PerspectiveWalkTables& tables, FrameView& frame,
                      const std::atomic<bool>* abort = nullptr);

@@ -27,6 +27,7 @@
 #include "tools/chunked_render.h"
 #include "tools/contact_sheet.h"
 #include "tools/model_source.h"
+#include "tools/perspective_render.h"
 
 namespace {
 
@@ -62,6 +63,12 @@ nor --file nor --url it draws the default model embedded in this binary.
   --zoom X           magnification, 1/65536..32767 (default 1: the model cube spans the shorter
                      side)
   --pan X,Y          move the picture X pixels right and Y down, each |.| <= 1e6 (default 0,0)
+  --perspective      draw in perspective: the eye on the line of sight through the model's centre,
+                     where the centre's depth is as large on screen as in the orthographic view
+                     of the same zoom (so a narrow --fov converges to it); colour only, one
+                     stored depth (--depth, or depth auto's), no --fill or --sheet yet
+                     (docs/perspective.md)
+  --fov DEG          with --perspective: the vertical field of view, 10..120 (default 60)
   --size WxH         framebuffer size in pixels, each side 1..8192 and at most 16777216 pixels
                      (4096x4096) in all (default 320x240)
   --depth N|auto     which of the model's depths to draw (default auto: depth by projected size,
@@ -98,7 +105,8 @@ Numbers are parsed whole and range-checked. On any error prints one line on stde
 with status 1, writing nothing.
 )";
 
-constexpr Rgb kBackground{236, 236, 240};  // light grey: range scans are often dark
+constexpr Rgb kBackground{236, 236, 240};
+constexpr int kDefaultPerspectiveFovDegrees = 60;  // light grey: range scans are often dark
 
 struct Options {
   ModelSourceOptions source;
@@ -110,6 +118,8 @@ struct Options {
   bool list = false;
   bool fill = false;
   int sheet = 0;  // yaw angles of the contact sheet; 0: a single view
+  bool perspective = false;
+  std::optional<Angle> fov;  // with --perspective; none: kDefaultPerspectiveFovDegrees
   StyleOptions style;
 };
 
@@ -198,6 +208,10 @@ bool parseFetchOption(cli::ArgumentReader& args, UrlFetchOptions& fetch) {
   return true;
 }
 
+Angle fovOf(const Options& options) {
+  return options.fov.value_or(Angle::fromDegrees(kDefaultPerspectiveFovDegrees));
+}
+
 // The options that exclude or need each other.
 void checkCombination(const Options& options) {
   checkOneModelSource(options.source);
@@ -205,6 +219,13 @@ void checkCombination(const Options& options) {
   if (!url && options.fetch.bytes > 0) throw cli::Error("--bytes needs --url");
   if (url && (options.depth || options.sheet > 0)) {
     throw cli::Error("--url draws the depth the view needs: --depth and --sheet do not apply");
+  }
+  if (options.fov && !options.perspective) throw cli::Error("--fov needs --perspective");
+  if (options.perspective &&
+      (url || options.fill || options.sheet > 0 || options.style.style != Style::kColour)) {
+    throw cli::Error(
+        "--perspective draws a model file or an embedded model in colour: --url, --fill, --sheet "
+        "and --style do not apply yet");
   }
   if (!options.list && options.output.empty()) throw cli::Error("no output given: use -o OUT.png");
 }
@@ -230,6 +251,14 @@ Options parseOptions(int argc, char** argv) {
       } else {
         options.depth = cli::parseInt(args.name(), text, 1, format::kMaxDepth);
       }
+    } else if (args.is("--perspective")) {
+      args.noValue();
+      options.perspective = true;
+    } else if (args.is("--fov")) {
+      options.fov = Angle::fromMilliDegrees(
+          std::llround(cli::parseReal(args.name(), args.value(), kMinFieldOfViewDegrees,
+                                      kMaxFieldOfViewDegrees) *
+                       1000));
     } else if (args.is("--variant")) {
       const std::string name = args.value();
       const std::optional<Variant> variant = variantFromName(name);
@@ -248,6 +277,9 @@ Options parseOptions(int argc, char** argv) {
     }
   }
   checkCombination(options);
+  // The camera is known now: a perspective eye that cannot be placed is refused before any file is
+  // read or checked.
+  if (options.perspective) static_cast<void>(orbitPerspectiveView(options.camera, fovOf(options)));
   options.fetch.point_budget = options.source.point_budget;
   return options;
 }
@@ -406,6 +438,16 @@ int renderFrame(const LevelView& level, FrameStyler& styler, const std::string& 
   return 0;
 }
 
+int renderPerspectiveFrame(const ModelView& model, const LevelView& level,
+                           const std::string& model_label, const Options& options) {
+  const PerspectiveView view = orbitPerspectiveView(options.camera, fovOf(options));
+  writePng(options.output, renderPerspective(model, level, view, kBackground));
+  std::printf("%s: depth %d%s, %zu points, perspective -> %s (%dx%d)\n", model_label.c_str(),
+              level.depth, options.depth ? "" : " (auto)", level.leaves.size(),
+              options.output.c_str(), options.camera.width, options.camera.height);
+  return 0;
+}
+
 int run(int argc, char** argv) {
   const Options options = parseOptions(argc, argv);
   if (options.list) {
@@ -415,6 +457,8 @@ int run(int argc, char** argv) {
   if (!options.source.url.empty()) return renderUrl(options);
   const std::unique_ptr<LoadedModel> loaded =
       loadModel(options.source.model_name, options.source.model_file, true);
+  if (loaded->chunked && options.perspective)
+    throw cli::Error(loaded->label + ": --perspective does not draw chunked models yet");
   if (loaded->chunked) return renderChunked(options, *loaded);
   if (options.fetch.point_budget > 0) {
     throw cli::Error(loaded->label +
@@ -430,6 +474,7 @@ int run(int argc, char** argv) {
   cli::checkOutputFile(
       options.output);  // before drawing: a FIFO, a device or a directory is refused
   if (options.sheet > 0) return renderSheet(model, model_label, options, style);
+  if (options.perspective) return renderPerspectiveFrame(model, level, model_label, options);
   return renderFrame(level, styler, model_label, options);
 }
 

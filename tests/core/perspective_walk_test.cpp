@@ -14,6 +14,7 @@
 #include "octopoint/framebuffer.h"
 #include "octopoint/model.h"
 #include "octopoint/models.h"
+#include "octopoint/render.h"
 #include "tests/support/perspective_reference.h"
 
 namespace octopoint {
@@ -30,8 +31,7 @@ void collectLeaves(const std::uint8_t*& node, int level, int depth, ModelPoint c
   const std::int64_t step = kPerspectiveUnit >> (level + 2);
   for (unsigned k = 0; k < 8; ++k) {
     if (!(mask & (1u << k))) continue;
-    const ModelPoint child{centre.x + ((k & 4) ? step : -step),
-                           centre.y + ((k & 2) ? step : -step),
+    const ModelPoint child{centre.x + ((k & 4) ? step : -step), centre.y + ((k & 2) ? step : -step),
                            centre.z + ((k & 1) ? step : -step)};
     collectLeaves(node, level + 1, depth, child, leaves);
   }
@@ -94,7 +94,8 @@ TEST_F(PerspectiveWalkTest, EveryLeafInViewIsDrawnWithinHalfAPixelOfItsExactProj
         const double d[3] = {static_cast<double>(p.x - v.eye.x), static_cast<double>(p.y - v.eye.y),
                              static_cast<double>(p.z - v.eye.z)};
         double c[3];
-        for (int row = 0; row < 3; ++row) c[row] = m[row][0] * d[0] + m[row][1] * d[1] + m[row][2] * d[2];
+        for (int row = 0; row < 3; ++row)
+          c[row] = m[row][0] * d[0] + m[row][1] * d[1] + m[row][2] * d[2];
         ASSERT_GT(c[2], 0) << "leaf " << leaf.index << " behind the eye was drawn";
         const Projected exact = exactProjection(camera, c[0], c[1], c[2]);
         worst = std::max({worst, std::abs(std::ldexp(static_cast<double>(leaf.x), -kF) - exact.x),
@@ -111,7 +112,8 @@ TEST_F(PerspectiveWalkTest, EveryLeafInViewIsDrawnWithinHalfAPixelOfItsExactProj
         const double d[3] = {static_cast<double>(p.x - v.eye.x), static_cast<double>(p.y - v.eye.y),
                              static_cast<double>(p.z - v.eye.z)};
         double c[3];
-        for (int row = 0; row < 3; ++row) c[row] = m[row][0] * d[0] + m[row][1] * d[1] + m[row][2] * d[2];
+        for (int row = 0; row < 3; ++row)
+          c[row] = m[row][0] * d[0] + m[row][1] * d[1] + m[row][2] * d[2];
         if (c[2] < static_cast<double>(camera.near) + kUnit / 256) continue;
         const Projected exact = exactProjection(camera, c[0], c[1], c[2]);
         if (exact.x < 0 || exact.y < 0 || exact.x >= camera.width || exact.y >= camera.height)
@@ -123,6 +125,47 @@ TEST_F(PerspectiveWalkTest, EveryLeafInViewIsDrawnWithinHalfAPixelOfItsExactProj
         EXPECT_GT(in_view, 0u);  // the view shows some of the model
       }
     }
+  }
+}
+
+// The orbit camera in perspective converges to the orthographic picture of the same zoom as its
+// field of view narrows: the model's centre is as large on screen in both.
+TEST_F(PerspectiveWalkTest, NarrowFieldOfViewConvergesToTheOrthographicPicture) {
+  const LevelView& level = model_->finestLevel();
+  Camera camera;
+  camera.width = 640;
+  camera.height = 480;
+  camera.yaw = Angle::fromDegrees(20);
+  camera.pitch = Angle::fromDegrees(10);
+  FrameSetup setup;
+  ASSERT_EQ(buildFrameSetup(camera, level.depth, kDefaultFractionBits, &setup), CameraError::kNone);
+  Framebuffer orthographic(camera.width, camera.height);
+  orthographic.clear();
+  ASSERT_TRUE(renderLevel(Variant::kFixedFast, level, setup, orthographic));
+  std::int64_t previous_mismatch = INT64_MAX;
+  for (int fov : {60, 30, 10}) {
+    PerspectiveView view;
+    ASSERT_EQ(orbitPerspective(camera, Angle::fromDegrees(fov), kDefaultFractionBits, &view),
+              PerspectiveError::kNone);
+    Framebuffer perspective(camera.width, camera.height);
+    perspective.clear();
+    ASSERT_TRUE(drawPerspective(level, view, perspectiveWalkTables(view, level.depth, 1 << 13),
+                                perspective));
+    std::int64_t covered = 0, mismatch = 0;
+    for (std::int32_t y = 0; y < camera.height; ++y) {
+      for (std::int32_t x = 0; x < camera.width; ++x) {
+        covered += orthographic.covered(x, y);
+        mismatch += orthographic.covered(x, y) != perspective.covered(x, y);
+      }
+    }
+    SCOPED_TRACE(std::to_string(fov) + " degrees");
+    EXPECT_LT(mismatch, previous_mismatch);  // narrower is nearer the orthographic picture
+    previous_mismatch = mismatch;
+    // Depth varies by +-half a cube edge about the centre's distance, f / (zoom * min(W, H))
+    // edges, so the picture's scale by about +-tan(fov / 2): the silhouette differs by less than
+    // twice that share.
+    const double tangent = std::tan(fov * kPi / 360);
+    EXPECT_LT(static_cast<double>(mismatch), 2 * tangent * static_cast<double>(covered));
   }
 }
 
