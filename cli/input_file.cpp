@@ -4,6 +4,7 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <cstring>
 
@@ -67,21 +68,6 @@ void checkStatus(const std::filesystem::path& path, const struct stat& status,
   }
 }
 
-// Closes the descriptor on every way out.
-class Descriptor {
- public:
-  explicit Descriptor(int fd) : fd_(fd) {}
-  ~Descriptor() {
-    if (fd_ >= 0) ::close(fd_);
-  }
-  Descriptor(const Descriptor&) = delete;
-  Descriptor& operator=(const Descriptor&) = delete;
-  int get() const { return fd_; }
-
- private:
-  int fd_;
-};
-
 }  // namespace
 
 std::string describeBytes(std::uint64_t bytes) {
@@ -100,35 +86,82 @@ std::uint64_t checkInputFile(const std::filesystem::path& path, const InputKind&
   return static_cast<std::uint64_t>(status.st_size);
 }
 
+InputFile::InputFile(const std::filesystem::path& path, const InputKind& input)
+    : path_(path), input_(input) {
+  checkInputFile(path, input);
+  fd_ = ::open(path.c_str(), O_RDONLY | O_NONBLOCK | O_CLOEXEC);
+  if (fd_ < 0) fail(path, statFailure(path, errno));
+  struct stat status {};
+  if (::fstat(fd_, &status) != 0) {
+    const int error = errno;
+    ::close(fd_);
+    fail(path, statFailure(path, error));
+  }
+  try {
+    checkStatus(path, status, input);  // what was opened, in case the name changed hands
+  } catch (...) {
+    ::close(fd_);
+    throw;
+  }
+  size_ = static_cast<std::uint64_t>(status.st_size);
+}
+
+InputFile::~InputFile() { ::close(fd_); }
+
+std::size_t InputFile::readInto(char* at, std::size_t count) {
+  std::size_t have = 0;
+  while (have < count) {
+    const ssize_t got = ::read(fd_, at + have, count - have);
+    if (got < 0 && errno == EINTR) continue;
+    if (got < 0) fail(path_, std::string("read failed: ") + std::strerror(errno));
+    if (got == 0) break;
+    have += static_cast<std::size_t>(got);
+  }
+  return have;
+}
+
+void InputFile::readUpTo(std::vector<std::uint8_t>& bytes, std::size_t count) {
+  const std::size_t old_size = bytes.size();
+  bytes.resize(old_size + count);
+  bytes.resize(old_size + readInto(reinterpret_cast<char*>(bytes.data()) + old_size, count));
+}
+
+template <typename Bytes>
+void InputFile::readRestInto(Bytes& bytes) {
+  // The size as opened in one buffer, never grown: growing it would copy the whole file.
+  const std::size_t expected = static_cast<std::size_t>(size_);
+  std::size_t have = bytes.size();
+  if (have < expected) {
+    bytes.resize(expected);
+    have += readInto(reinterpret_cast<char*>(bytes.data()) + have, expected - have);
+    bytes.resize(have);
+  }
+  // Whatever the file grew by meanwhile, in small reads, to one byte past the limit.
+  char more[4096];
+  for (;;) {
+    const std::size_t room = static_cast<std::size_t>(std::min<std::uint64_t>(
+        sizeof more, input_.max_bytes + 1 - std::min<std::uint64_t>(have, input_.max_bytes)));
+    const std::size_t got = readInto(more, room);
+    if (got == 0) break;
+    bytes.insert(bytes.end(), more, more + got);
+    have += got;
+    if (have > input_.max_bytes) {
+      fail(path_, "grew past the " + describeBytes(input_.max_bytes) + " " +
+                      withArticle(input_.kind) + " may have while being read");
+    }
+  }
+}
+
+void InputFile::readRest(std::vector<std::uint8_t>& bytes) { readRestInto(bytes); }
+void InputFile::readRest(std::string& bytes) { readRestInto(bytes); }
+
 namespace {
 
 template <typename Bytes>
 Bytes readWhole(const std::filesystem::path& path, const InputKind& input) {
-  checkInputFile(path, input);
-  const Descriptor file(::open(path.c_str(), O_RDONLY | O_NONBLOCK | O_CLOEXEC));
-  if (file.get() < 0) fail(path, statFailure(path, errno));
-  struct stat status {};
-  if (::fstat(file.get(), &status) != 0) fail(path, statFailure(path, errno));
-  checkStatus(path, status, input);  // what was opened, in case the name changed hands
-  Bytes bytes(static_cast<std::size_t>(status.st_size), 0);
-  std::size_t have = 0;
-  for (;;) {
-    if (have == bytes.size()) {
-      if (bytes.size() >= input.max_bytes + 1) break;  // grew past the limit: refused below
-      bytes.resize(std::min<std::uint64_t>(bytes.size() + 4096, input.max_bytes + 1));
-    }
-    const ssize_t got =
-        ::read(file.get(), reinterpret_cast<char*>(bytes.data()) + have, bytes.size() - have);
-    if (got < 0 && errno == EINTR) continue;
-    if (got < 0) fail(path, std::string("read failed: ") + std::strerror(errno));
-    if (got == 0) break;
-    have += static_cast<std::size_t>(got);
-  }
-  if (have > input.max_bytes) {
-    fail(path, "grew past the " + describeBytes(input.max_bytes) + " " + withArticle(input.kind) +
-                   " may have while being read");
-  }
-  bytes.resize(have);
+  InputFile file(path, input);
+  Bytes bytes;
+  file.readRest(bytes);
   return bytes;
 }
 

@@ -32,8 +32,38 @@ struct InputKind {
 //   "big.pcd: 2147483648 bytes, more than the 1 GiB a scan may have".
 std::uint64_t checkInputFile(const std::filesystem::path& path, const InputKind& input);
 
-// checkInputFile, then the whole file. The file is opened without blocking (a FIFO put in its
-// place after the check cannot hang the read) and read at most to the limit, also if it grows.
+// A file read in parts, front to back, for readers that check what its first bytes declare
+// before they read the rest: checked as checkInputFile does, then opened without blocking (a FIFO
+// put in its place after the check cannot hang a read) and checked again as opened.
+class InputFile {
+ public:
+  InputFile(const std::filesystem::path& path, const InputKind& input);
+  ~InputFile();
+  InputFile(const InputFile&) = delete;
+  InputFile& operator=(const InputFile&) = delete;
+
+  std::uint64_t size() const { return size_; }  // as opened
+  // Appends the next `count` bytes to `bytes`: fewer where the file ends.
+  void readUpTo(std::vector<std::uint8_t>& bytes, std::size_t count);
+  // Appends the rest: up to the size the file had when opened, in one piece, and whatever it has
+  // grown by since, to the limit (past it: cli::Error).
+  void readRest(std::vector<std::uint8_t>& bytes);
+  void readRest(std::string& bytes);
+
+ private:
+  template <typename Bytes>
+  void readRestInto(Bytes& bytes);
+  // Reads into [at, at + count) until it is full or the file ends; returns the bytes read.
+  std::size_t readInto(char* at, std::size_t count);
+
+  std::filesystem::path path_;
+  InputKind input_;
+  int fd_ = -1;
+  std::uint64_t size_ = 0;
+};
+
+// checkInputFile, then the whole file (InputFile::readRest): read at most to the limit, also if
+// it grows.
 std::string readInputFile(const std::filesystem::path& path, const InputKind& input);
 // The same, as bytes.
 std::vector<std::uint8_t> readInputBytes(const std::filesystem::path& path, const InputKind& input);

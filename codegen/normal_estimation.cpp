@@ -110,21 +110,48 @@ std::vector<float> distanceToEdges(const Scan& scan, float max_depth_change) {
   return distance;
 }
 
+// PCL's integral images trust their input's shape: they skip a border of int(smoothing) cells
+// with unsigned loops that run wild on a grid narrower than twice that (1xN, 3x3), and read a
+// window of up to smoothing + depth / 10 cells around a point, unchecked, so that a scan in
+// millimetres (depth 1000: 100 more cells) reads far outside the grid. Where either could happen
+// the grid gets a margin of NaN cells: PCL ends its windows at depth gaps, so no window then
+// reaches past the margin, and its loops have room. Otherwise none, and the estimates are the ones
+// PCL gives on the bare grid.
+std::size_t integralImageMargin(const Scan& scan, float smoothing) {
+  const auto border = static_cast<std::size_t>(smoothing);
+  float deepest = 0;
+  for (const Vec3f& p : scan.positions) deepest = std::max(deepest, p[2]);
+  const double widest_window = std::floor(static_cast<double>(smoothing) + deepest / 10.0);
+  const bool fits = scan.grid_width > 2 * border && scan.grid_height > 2 * border &&
+                    (widest_window + 1) / 2 <= static_cast<double>(border);
+  return fits ? 0 : border + 1;
+}
+
+// The scan's sensor grid as PCL takes it, `margin` NaN cells wide on every side; sets `cell[i]`
+// (one per point) to where point i lies in it.
+pcl::PointCloud<pcl::PointXYZ>::Ptr paddedGrid(const Scan& scan, std::size_t margin,
+                                               std::vector<std::size_t>& cell) {
+  const std::size_t width = scan.grid_width + 2 * margin;
+  const std::size_t height = scan.grid_height + 2 * margin;
+  auto grid = std::make_shared<pcl::PointCloud<pcl::PointXYZ>>(static_cast<std::uint32_t>(width),
+                                                               static_cast<std::uint32_t>(height),
+                                                               pcl::PointXYZ(kNaN, kNaN, kNaN));
+  grid->is_dense = false;
+  for (std::size_t i = 0; i < scan.positions.size(); ++i) {
+    const std::size_t x = scan.grid_index[i] % scan.grid_width;
+    const std::size_t y = scan.grid_index[i] / scan.grid_width;
+    cell[i] = (y + margin) * width + x + margin;
+    const Vec3f& p = scan.positions[i];
+    (*grid)[cell[i]] = pcl::PointXYZ(p[0], p[1], p[2]);
+  }
+  return grid;
+}
+
 // Integral images over the sensor grid. Points whose window was cut to less than
 // kLeastWindowShare of its size by an edge nearby, or held too little, get no estimate (k-NN PCA
 // then gives them one).
 std::vector<Estimate> integralImageEstimates(const Scan& scan, double voxel_edge,
                                              const NormalOptions& options) {
-  auto grid = std::make_shared<pcl::PointCloud<pcl::PointXYZ>>(scan.grid_width, scan.grid_height,
-                                                               pcl::PointXYZ(kNaN, kNaN, kNaN));
-  grid->is_dense = false;
-  for (std::size_t i = 0; i < scan.positions.size(); ++i) {
-    const Vec3f& p = scan.positions[i];
-    (*grid)[scan.grid_index[i]] = pcl::PointXYZ(p[0], p[1], p[2]);
-  }
-  pcl::IntegralImageNormalEstimation<pcl::PointXYZ, pcl::Normal> estimation;
-  estimation.setNormalEstimationMethod(
-      estimation.COVARIANCE_MATRIX);  // the only one with curvature
   float smoothing = options.smoothing_pixels;
   if (smoothing <= 0) {  // kSmoothingVoxels voxel edges, in grid pixels
     const double spacing = gridSpacing(scan);
@@ -133,18 +160,30 @@ std::vector<Estimate> integralImageEstimates(const Scan& scan, double voxel_edge
                                                     kMinSmoothingPixels, kMaxSmoothingPixels))
                     : kMinSmoothingPixels;
   }
-  estimation.setNormalSmoothingSize(smoothing);
   const std::vector<float> edge_distance = distanceToEdges(scan, options.max_depth_change);
+  std::vector<Estimate> estimates(scan.positions.size());
+  const auto kept = [&](std::size_t i) {
+    return edge_distance[scan.grid_index[i]] >= kLeastWindowShare * smoothing;
+  };
+  bool any_kept = false;
+  for (std::size_t i = 0; i < scan.positions.size() && !any_kept; ++i) any_kept = kept(i);
+  if (!any_kept) return estimates;  // a grid too narrow for the window: k-NN PCA for every point
+
+  std::vector<std::size_t> cell(scan.positions.size());
+  const pcl::PointCloud<pcl::PointXYZ>::Ptr grid =
+      paddedGrid(scan, integralImageMargin(scan, smoothing), cell);
+  pcl::IntegralImageNormalEstimation<pcl::PointXYZ, pcl::Normal> estimation;
+  estimation.setNormalEstimationMethod(
+      estimation.COVARIANCE_MATRIX);  // the only one with curvature
+  estimation.setNormalSmoothingSize(smoothing);
   estimation.setMaxDepthChangeFactor(options.max_depth_change);
   estimation.setDepthDependentSmoothing(true);
   estimation.setViewPoint(scan.sensor_origin[0], scan.sensor_origin[1], scan.sensor_origin[2]);
   estimation.setInputCloud(grid);
   pcl::PointCloud<pcl::Normal> normals;
   estimation.compute(normals);
-  std::vector<Estimate> estimates(scan.positions.size());
   for (std::size_t i = 0; i < scan.positions.size(); ++i) {
-    if (edge_distance[scan.grid_index[i]] >= kLeastWindowShare * smoothing)
-      estimates[i] = fromPcl(normals[scan.grid_index[i]], i);
+    if (kept(i)) estimates[i] = fromPcl(normals[cell[i]], i);
   }
   return estimates;
 }

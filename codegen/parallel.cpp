@@ -5,6 +5,7 @@
 #include <exception>
 #include <limits>
 #include <mutex>
+#include <system_error>
 #include <thread>
 #include <vector>
 
@@ -43,7 +44,13 @@ void parallelFor(unsigned threads, std::size_t count,
       static_cast<unsigned>(std::min<std::size_t>(threads, std::max<std::size_t>(count, 1))) - 1;
   std::vector<std::thread> pool;
   pool.reserve(helpers);
-  for (unsigned worker = 1; worker <= helpers; ++worker) pool.emplace_back(work, worker);
+  for (unsigned worker = 1; worker <= helpers; ++worker) {
+    try {
+      pool.emplace_back(work, worker);
+    } catch (const std::system_error&) {
+      break;  // a process or address-space limit: the threads already started do all the work
+    }
+  }
   work(0);
   for (std::thread& thread : pool) thread.join();
   if (failure) std::rethrow_exception(failure);

@@ -1,11 +1,11 @@
 #include "codegen/visibility.h"
 
 #include <algorithm>
-#include <atomic>
 #include <limits>
 #include <thread>
 
 #include "codegen/octree_encoder.h"
+#include "codegen/parallel.h"
 #include "codegen/prepare_error.h"
 #include "codegen/progress.h"
 #include "renderer/decode_baseline.h"
@@ -105,23 +105,17 @@ std::vector<std::uint8_t> visibleVoxels(std::span<const std::uint64_t> sorted_ke
   const unsigned threads = std::clamp(std::thread::hardware_concurrency(), 1u, kMaxThreads);
   std::vector<std::vector<std::uint8_t>> visible(threads,
                                                  std::vector<std::uint8_t>(sorted_keys.size(), 0));
-  std::atomic<std::size_t> next_view{0};
+  std::vector<std::vector<std::uint32_t>> nearest(threads);
+  std::vector<FrameSetup> setups(threads);
   Progress progress("pruning depth " + std::to_string(depth), cameras.size());
-  auto work = [&](unsigned thread) {
-    std::vector<std::uint32_t> nearest;
-    FrameSetup setup;
-    for (std::size_t view; (view = next_view.fetch_add(1)) < cameras.size();) {
-      // Every camera was accepted above, before any thread started.
-      if (buildFrameSetup(cameras[view], depth, kDefaultFractionBits, &setup) != CameraError::kNone)
-        continue;
-      markWinners(level, setup, nearest, visible[thread]);
-      if (thread == 0) progress.update(view);
-    }
-  };
-  std::vector<std::thread> helpers;
-  for (unsigned t = 1; t < threads; ++t) helpers.emplace_back(work, t);
-  work(0);
-  for (std::thread& helper : helpers) helper.join();
+  parallelFor(threads, cameras.size(), [&](std::size_t view, unsigned thread) {
+    // Every camera was accepted above, before any thread started.
+    if (buildFrameSetup(cameras[view], depth, kDefaultFractionBits, &setups[thread]) !=
+        CameraError::kNone)
+      return;
+    markWinners(level, setups[thread], nearest[thread], visible[thread]);
+    if (thread == 0) progress.update(view);
+  });
   for (unsigned t = 1; t < threads; ++t) {
     for (std::size_t i = 0; i < sorted_keys.size(); ++i) visible[0][i] |= visible[t][i];
   }

@@ -78,13 +78,25 @@ bool plausibleLevelSize(int depth, std::uint64_t nodes, std::uint64_t leaves) {
   return true;
 }
 
+namespace {
+
+// What a level's row of the level table shows wrong without any of the level's bytes: its depth,
+// against the level before it (0 for none), and its sizes, against any tree of that depth.
+ModelIssue levelRowIssue(int depth, int previous_depth, std::uint64_t nodes, std::uint64_t leaves) {
+  if (depth < 1 || depth > format::kMaxDepth) return {ModelError::kBadDepth, 0, depth};
+  if (depth <= previous_depth) return {ModelError::kDepthsNotAscending, 0, depth};
+  if (nodes == 0 || leaves == 0) return {ModelError::kEmptyLevel, 0, depth};
+  if (!plausibleLevelSize(depth, nodes, leaves))
+    return {ModelError::kImplausibleLevelSize, 0, depth};
+  return {};
+}
+
+}  // namespace
+
 ModelIssue validateLevelStream(const LevelView& level, int palette_count, int normal_count) {
   const int depth = level.depth;
-  if (depth < 1 || depth > format::kMaxDepth) return {ModelError::kBadDepth, 0, depth};
-  if (level.nodes.empty() || level.leaves.empty()) return {ModelError::kEmptyLevel, 0, depth};
-  if (!plausibleLevelSize(depth, level.nodes.size(), level.leaves.size())) {
-    return {ModelError::kImplausibleLevelSize, 0, depth};
-  }
+  const ModelIssue row_issue = levelRowIssue(depth, 0, level.nodes.size(), level.leaves.size());
+  if (row_issue.error != ModelError::kNone) return row_issue;
 
   // Depth-first walk with an explicit stack of "children still to visit" per tree level, so a
   // hostile stream cannot drive the recursion; the stack is bounded by the depth.
@@ -133,6 +145,13 @@ ModelIssue validateLevelStream(const LevelView& level, int palette_count, int no
 
 namespace {
 
+// The bytes of level data a level table row declares: node bytes, then a palette index per leaf
+// and, in a model with normals, a normal index per leaf.
+std::uint64_t levelDataBytes(const std::uint8_t* row, bool with_normals) {
+  const std::uint64_t leaf_count = readU32(row + 8);
+  return readU32(row + 4) + leaf_count * (with_normals ? 2 : 1);
+}
+
 // Where level `index`'s problem lies in a whole model image starting at `file`: in its node
 // stream, its leaves, or its row of the level table (depth, then node bytes, then leaf count).
 std::size_t fileOffsetOf(const ModelIssue& issue, const LevelView& level, int index,
@@ -164,14 +183,10 @@ bool ModelView::validateLevels(ModelView& view, ModelIssue* issue, const std::ui
   int previous_depth = 0;
   for (int i = 0; i < view.level_count_; ++i) {
     const LevelView& level = view.level(i);
-    ModelIssue found;
-    if (level.depth < 1 || level.depth > format::kMaxDepth) {
-      found = {ModelError::kBadDepth, 0, level.depth};
-    } else if (level.depth <= previous_depth) {
-      found = {ModelError::kDepthsNotAscending, 0, level.depth};
-    } else {
+    ModelIssue found =
+        levelRowIssue(level.depth, previous_depth, level.nodes.size(), level.leaves.size());
+    if (found.error == ModelError::kNone)
       found = validateLevelStream(level, view.palette_count_, view.normal_count_);
-    }
     previous_depth = level.depth;
     if (found.error != ModelError::kNone) {
       if (file != nullptr) {
@@ -201,13 +216,13 @@ bool ModelView::validateNormalPalette(const ModelView& view, ModelIssue* issue,
   return true;
 }
 
-bool ModelView::readLevels(std::span<const std::uint8_t> bytes, std::size_t table_at,
-                           ModelView& view, ModelIssue* issue) {
-  const std::uint8_t* p = bytes.data();
+bool ModelView::checkLevelTable(std::span<const std::uint8_t> head, std::size_t table_at,
+                                std::uint64_t image_bytes, const ModelView& view,
+                                ModelIssue* issue) {
+  const std::uint8_t* p = head.data();
   const std::size_t table_end =
       table_at + format::kLevelRowBytes * static_cast<std::size_t>(view.level_count_);
-  if (bytes.size() < table_end) return fail(issue, ModelError::kTruncatedHeader, bytes.size());
-  const bool with_normals = view.normal_count_ > 0;
+  if (head.size() < table_end) return fail(issue, ModelError::kTruncatedHeader, head.size());
   // Sizes are added in 64 bits: three u32 counts per level cannot overflow it, so a hostile
   // header cannot wrap the sum around to the real length.
   std::uint64_t data_at = table_end;
@@ -216,51 +231,80 @@ bool ModelView::readLevels(std::span<const std::uint8_t> bytes, std::size_t tabl
     if (row[1] != 0 || row[2] != 0 || row[3] != 0) {
       return fail(issue, ModelError::kBadReservedField, static_cast<std::size_t>(row - p) + 1);
     }
-    const std::uint64_t node_bytes = readU32(row + 4);
-    const std::uint64_t leaf_count = readU32(row + 8);
-    const std::uint64_t normal_bytes = with_normals ? leaf_count : 0;
-    if (data_at + node_bytes + leaf_count + normal_bytes > bytes.size()) {
-      return fail(issue, ModelError::kSizeMismatch, bytes.size(), row[0]);
+    data_at += levelDataBytes(row, view.normal_count_ > 0);
+    if (data_at > image_bytes) {
+      return fail(issue, ModelError::kSizeMismatch, static_cast<std::size_t>(image_bytes), row[0]);
     }
+  }
+  if (data_at != image_bytes)
+    return fail(issue, ModelError::kSizeMismatch, static_cast<std::size_t>(data_at));
+  return true;
+}
+
+bool ModelView::readLevels(std::span<const std::uint8_t> bytes, std::size_t table_at,
+                           ModelView& view, ModelIssue* issue) {
+  if (!checkLevelTable(bytes, table_at, bytes.size(), view, issue)) return false;
+  const bool with_normals = view.normal_count_ > 0;
+  std::size_t data_at =
+      table_at + format::kLevelRowBytes * static_cast<std::size_t>(view.level_count_);
+  for (int i = 0; i < view.level_count_; ++i) {
+    const std::uint8_t* row =
+        bytes.data() + table_at + format::kLevelRowBytes * static_cast<std::size_t>(i);
+    const std::size_t node_bytes = readU32(row + 4);
+    const std::size_t leaf_count = readU32(row + 8);
+    const std::size_t normal_bytes = with_normals ? leaf_count : 0;
     LevelView& level = view.levels_[static_cast<std::size_t>(i)];
-    const auto at = [&](std::uint64_t offset, std::uint64_t size) {
-      return bytes.subspan(static_cast<std::size_t>(offset), static_cast<std::size_t>(size));
-    };
     level.depth = row[0];
-    level.nodes = at(data_at, node_bytes);
-    level.leaves = at(data_at + node_bytes, leaf_count);
-    level.normals = at(data_at + node_bytes + leaf_count, normal_bytes);
+    level.nodes = bytes.subspan(data_at, node_bytes);
+    level.leaves = bytes.subspan(data_at + node_bytes, leaf_count);
+    level.normals = bytes.subspan(data_at + node_bytes + leaf_count, normal_bytes);
     data_at += node_bytes + leaf_count + normal_bytes;
   }
-  if (data_at != bytes.size())
-    return fail(issue, ModelError::kSizeMismatch, static_cast<std::size_t>(data_at));
+  return true;
+}
+
+std::size_t ModelView::readHeader(std::span<const std::uint8_t> bytes, ModelView& view,
+                                  ModelIssue* issue) {
+  // Magic and version first: they decide how every other byte is read.
+  if (bytes.size() < 6)
+    return model_bytes::refuse(issue, ModelError::kTruncatedHeader, bytes.size());
+  if (std::memcmp(bytes.data(), format::kMagic, sizeof format::kMagic) != 0)
+    return model_bytes::refuse(issue, ModelError::kBadMagic, 0);
+  switch (readU16(bytes.data() + 4)) {
+    case format::kVersion1:
+      return readHeaderV1(bytes, view, issue);
+    case format::kVersion2:
+      return readHeaderV2(bytes, view, issue);
+    default:
+      return model_bytes::refuse(issue, ModelError::kUnsupportedVersion, 4);
+  }
+}
+
+bool ModelView::checkDeclaredSizes(std::span<const std::uint8_t> head, std::uint64_t image_bytes,
+                                   ModelIssue* issue) {
+  ModelView view;
+  const std::size_t table_at = readHeader(head, view, issue);
+  if (table_at == 0 || !checkLevelTable(head, table_at, image_bytes, view, issue)) return false;
+  int previous_depth = 0;
+  for (int i = 0; i < view.level_count_; ++i) {
+    const std::uint8_t* row =
+        head.data() + table_at + format::kLevelRowBytes * static_cast<std::size_t>(i);
+    ModelIssue found = levelRowIssue(row[0], previous_depth, readU32(row + 4), readU32(row + 8));
+    if (found.error != ModelError::kNone) {
+      found.offset = fileOffsetOf(found, LevelView{}, i, head.data(), table_at);
+      found.offset_in_file = true;
+      if (issue != nullptr) *issue = found;
+      return false;
+    }
+    previous_depth = row[0];
+  }
   return true;
 }
 
 std::optional<ModelView> ModelView::fromBytes(std::span<const std::uint8_t> bytes,
                                               ModelIssue* issue) {
-  // Magic and version first: they decide how every other byte is read.
-  if (bytes.size() < 6) {
-    fail(issue, ModelError::kTruncatedHeader, bytes.size());
-    return std::nullopt;
-  }
-  if (std::memcmp(bytes.data(), format::kMagic, sizeof format::kMagic) != 0) {
-    fail(issue, ModelError::kBadMagic, 0);
-    return std::nullopt;
-  }
   ModelView view;
-  std::size_t table_at = 0;
-  switch (readU16(bytes.data() + 4)) {
-    case format::kVersion1:
-      table_at = readHeaderV1(bytes, view, issue);
-      break;
-    case format::kVersion2:
-      table_at = readHeaderV2(bytes, view, issue);
-      break;
-    default:
-      fail(issue, ModelError::kUnsupportedVersion, 4);
-      return std::nullopt;
-  }
+  const std::size_t table_at = readHeader(bytes, view, issue);
   if (table_at == 0 || !readLevels(bytes, table_at, view, issue) ||
       !validateLevels(view, issue, bytes.data(), table_at)) {
     return std::nullopt;

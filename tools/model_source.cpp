@@ -25,6 +25,52 @@ std::string issueText(const ModelIssue& issue) {
   return text;
 }
 
+// "file size does not fit the tables and chunk offsets (level 0, byte 1073741824)".
+std::string chunkedIssueText(const ChunkedIssue& issue) {
+  return std::string(describe(issue.error)) + " (level " + std::to_string(issue.level) + ", byte " +
+         std::to_string(issue.offset) + ")";
+}
+
+// What a model file's first bytes must hold for its declared sizes to be checked: the largest
+// version 1 or 2 header with its level table (2,414 bytes), or a chunked file's fixed header.
+constexpr std::size_t kModelHeadProbe = 4096;
+
+// Refuses a file whose head (read into `bytes`, whole when the head says how long it is) declares
+// another size than the file's, before its body is read: a lie costs a few kilobytes to refuse,
+// not the file's size in memory.
+void checkDeclaredSize(cli::InputFile& file, std::vector<std::uint8_t>& bytes,
+                       const std::string& label, bool accept_chunked) {
+  if (!looksChunked(bytes)) {
+    ModelIssue issue;
+    if (!ModelView::checkDeclaredSizes(bytes, file.size(), &issue))
+      throw ModelLoadError(label + ": " + issueText(issue));
+    return;
+  }
+  if (!accept_chunked)
+    throw ModelLoadError(label + ": a chunked model (format version 3) cannot be shown here");
+  ChunkedIssue issue;
+  const std::optional<std::uint64_t> head_bytes = chunkedHeadBytes(bytes, &issue);
+  if (head_bytes && *head_bytes > file.size()) issue = {ChunkedError::kBadFileSize, file.size(), 0};
+  if (issue.error == ChunkedError::kNone && bytes.size() < *head_bytes)
+    file.readUpTo(bytes, static_cast<std::size_t>(*head_bytes - bytes.size()));
+  const std::optional<ChunkedHead> head =
+      issue.error == ChunkedError::kNone ? parseChunkedHead(bytes, &issue) : std::nullopt;
+  if (head && head->file_bytes != file.size()) issue = {ChunkedError::kBadFileSize, file.size(), 0};
+  if (issue.error != ChunkedError::kNone)
+    throw ModelLoadError(label + ": " + chunkedIssueText(issue));
+}
+
+// The bytes of a model file, read only when its head accounts for exactly the file's size.
+std::vector<std::uint8_t> readModelFile(const std::string& path, const std::string& label,
+                                        bool accept_chunked) {
+  cli::InputFile file(path, kModelFileInput);
+  std::vector<std::uint8_t> bytes;
+  file.readUpTo(bytes, kModelHeadProbe);
+  if (bytes.size() < file.size()) checkDeclaredSize(file, bytes, label, accept_chunked);
+  file.readRest(bytes);
+  return bytes;
+}
+
 }  // namespace
 
 bool parseModelSourceOption(cli::ArgumentReader& args, ModelSourceOptions& source) {
@@ -53,8 +99,8 @@ std::unique_ptr<LoadedModel> loadModel(const std::string& model_name, const std:
   auto loaded = std::make_unique<LoadedModel>();
   ModelIssue issue;
   if (!model_file.empty()) {
-    loaded->file_bytes = cli::readInputBytes(model_file, kModelFileInput);
     loaded->label = cli::displayPath(model_file);
+    loaded->file_bytes = readModelFile(model_file, loaded->label, accept_chunked);
     if (looksChunked(loaded->file_bytes)) {
       if (!accept_chunked)
         throw ModelLoadError(loaded->label +
@@ -65,11 +111,8 @@ std::unique_ptr<LoadedModel> loadModel(const std::string& model_name, const std:
           loaded->chunked->head().file_bytes != loaded->file_bytes.size()) {
         chunked_issue = {ChunkedError::kBadFileSize, loaded->file_bytes.size(), 0};
       }
-      if (chunked_issue.error != ChunkedError::kNone) {
-        throw ModelLoadError(loaded->label + ": " + describe(chunked_issue.error) + " (level " +
-                             std::to_string(chunked_issue.level) + ", byte " +
-                             std::to_string(chunked_issue.offset) + ")");
-      }
+      if (chunked_issue.error != ChunkedError::kNone)
+        throw ModelLoadError(loaded->label + ": " + chunkedIssueText(chunked_issue));
       return loaded;
     }
     loaded->view = ModelView::fromBytes(loaded->file_bytes, &issue);

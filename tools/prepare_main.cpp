@@ -104,7 +104,8 @@ same byte for byte whatever --memory and --threads (docs/preparer.md).
                         larger when needed to keep the file within the version-1 size
   --memory MB           memory budget for the points in flight (default 1024, 1..1048576):
                         beyond it they go to temporary files; the model itself comes on top
-  --threads N           threads to use (default: every core; 1..1024)
+  --threads N           threads to use (default: every core; 1..1024); fewer when the system
+                        refuses more (an address-space or process limit), with the same output
   --temp-dir DIR        where the temporary files go (default: $TMPDIR, else /tmp); they are
                         deleted as soon as they are made, so nothing is left behind
   --progress            show progress on stderr (phase, points done, points/s, time left) even
@@ -368,10 +369,13 @@ std::size_t writeModel(const Arguments& args, const octopoint::prepare::Prepared
                        octopoint::prepare::ChunkedLayout& layout) {
   using namespace octopoint::prepare;
   // The .oct image is made on a second thread while the sources are: both only read the model.
-  std::future<std::vector<std::uint8_t>> image_made = std::async(std::launch::async, [&] {
-    return args.chunked ? serializeChunkedModel(model, args.chunking, &layout)
-                        : serializeModel(model);
-  });
+  // Where the system refuses that thread (a process or address-space limit), it is made by this
+  // one when asked for (deferred).
+  std::future<std::vector<std::uint8_t>> image_made =
+      std::async(std::launch::async | std::launch::deferred, [&] {
+        return args.chunked ? serializeChunkedModel(model, args.chunking, &layout)
+                            : serializeModel(model);
+      });
   std::vector<OutputFile> files = emitSources(model, args.emit);
   const std::vector<std::uint8_t> image = image_made.get();
   std::string image_text;

@@ -247,6 +247,14 @@ class ModelView {
   // The view points into `bytes`, which must outlive it.
   [[nodiscard]] static std::optional<ModelView> fromBytes(std::span<const std::uint8_t> bytes,
                                                           ModelIssue* issue);
+  // The checks of fromBytes that need no level data, for a reader that has only the image's first
+  // bytes (`head`: at least the header and the level table, at most 2,414 bytes; more are
+  // ignored) and its size (`image_bytes`): the header; the level table's sizes adding up to
+  // exactly `image_bytes`; each level's depth, and its sizes possible for a tree of that depth.
+  // So a file whose header lies is refused before its body is read. False with the issue (as
+  // fromBytes would report it) otherwise.
+  [[nodiscard]] static bool checkDeclaredSizes(std::span<const std::uint8_t> head,
+                                               std::uint64_t image_bytes, ModelIssue* issue);
   // Validates a model compiled into the app by the preparer's generated sources.
   [[nodiscard]] static std::optional<ModelView> fromEmbedded(const EmbeddedModel& model,
                                                              ModelIssue* issue);
@@ -276,6 +284,13 @@ class ModelView {
                                   ModelIssue* issue);
   static std::size_t readHeaderV2(std::span<const std::uint8_t> bytes, ModelView& view,
                                   ModelIssue* issue);
+  // Magic and version, then the header of that version: where the level table starts, or 0.
+  static std::size_t readHeader(std::span<const std::uint8_t> bytes, ModelView& view,
+                                ModelIssue* issue);
+  // The level table at `table_at` in `head` (reserved bytes, and sizes adding up to exactly
+  // `image_bytes`), without reading any level data.
+  static bool checkLevelTable(std::span<const std::uint8_t> head, std::size_t table_at,
+                              std::uint64_t image_bytes, const ModelView& view, ModelIssue* issue);
   // The level table and the level data that follow it (the same in both versions, with the normal
   // indices only where the header announced normals).
   static bool readLevels(std::span<const std::uint8_t> bytes, std::size_t table_at, ModelView& view,
