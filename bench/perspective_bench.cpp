@@ -50,8 +50,8 @@ void timeFrames(benchmark::State& state, int width, int height, const Draw& draw
   }
   const auto leaves = static_cast<double>(model().finestLevel().leaves.size());
   state.counters["leaves"] = leaves;
-  state.counters["ns_per_leaf"] = seconds_in_all * 1e9 / static_cast<double>(state.iterations()) /
-                                  leaves;
+  state.counters["ns_per_leaf"] =
+      seconds_in_all * 1e9 / static_cast<double>(state.iterations()) / leaves;
 }
 
 void orthographic(benchmark::State& state, int width, int height) {
@@ -77,9 +77,8 @@ void perspective(benchmark::State& state, int width, int height, int fov_degrees
   }
   const PerspectiveWalkTables tables =
       perspectiveWalkTables(view, level.depth, std::int64_t{1} << (kDefaultFractionBits - 2));
-  timeFrames(state, width, height, [&](Framebuffer& frame) {
-    return drawPerspective(level, view, tables, frame);
-  });
+  timeFrames(state, width, height,
+             [&](Framebuffer& frame) { return drawPerspective(level, view, tables, frame); });
 }
 
 }  // namespace
@@ -92,10 +91,9 @@ void registerAll() {
         ->UseManualTime()
         ->Unit(benchmark::kMicrosecond);
     for (int fov : {60, 10}) {
-      benchmark::RegisterBenchmark(("perspective/tabletop/depth8/" + size + "/fov" +
-                                    std::to_string(fov))
-                                       .c_str(),
-                                   perspective, width, height, fov)
+      benchmark::RegisterBenchmark(
+          ("perspective/tabletop/depth8/" + size + "/fov" + std::to_string(fov)).c_str(),
+          perspective, width, height, fov)
           ->UseManualTime()
           ->Unit(benchmark::kMicrosecond);
     }

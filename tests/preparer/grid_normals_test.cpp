@@ -94,7 +94,8 @@ class GridNormalsTest : public ::testing::Test {
 };
 
 TEST_F(GridNormalsTest, TheShapesThatCrashed) {
-  const std::uint32_t shapes[][2] = {{2, 2}, {3, 3}, {1, 100}, {2, 100}, {100, 2}, {1, 3}, {1, 640}};
+  const std::uint32_t shapes[][2] = {{2, 2},   {3, 3}, {1, 100}, {2, 100},
+                                     {100, 2}, {1, 3}, {1, 640}};
   for (const auto& shape : shapes) {
     for (const bool holes : {false, true}) expectPlaneNormals(shape[0], shape[1], 1.0, holes);
   }

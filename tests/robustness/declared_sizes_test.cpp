@@ -34,14 +34,19 @@ std::span<const std::uint8_t> headOf(const std::vector<std::uint8_t>& image) {
 
 // The errors fromBytes finds without reading a level's data.
 bool isHeaderError(ModelError error) {
-  static const std::set<ModelError> kHeaderErrors = {
-      ModelError::kTruncatedHeader,   ModelError::kBadMagic,
-      ModelError::kUnsupportedVersion, ModelError::kBadLevelCount,
-      ModelError::kBadReservedField,  ModelError::kBadPaletteCount,
-      ModelError::kBadDepth,          ModelError::kDepthsNotAscending,
-      ModelError::kSizeMismatch,      ModelError::kEmptyLevel,
-      ModelError::kImplausibleLevelSize, ModelError::kBadNormalCount,
-      ModelError::kBadNormalVector};
+  static const std::set<ModelError> kHeaderErrors = {ModelError::kTruncatedHeader,
+                                                     ModelError::kBadMagic,
+                                                     ModelError::kUnsupportedVersion,
+                                                     ModelError::kBadLevelCount,
+                                                     ModelError::kBadReservedField,
+                                                     ModelError::kBadPaletteCount,
+                                                     ModelError::kBadDepth,
+                                                     ModelError::kDepthsNotAscending,
+                                                     ModelError::kSizeMismatch,
+                                                     ModelError::kEmptyLevel,
+                                                     ModelError::kImplausibleLevelSize,
+                                                     ModelError::kBadNormalCount,
+                                                     ModelError::kBadNormalVector};
   return kHeaderErrors.count(error) != 0;
 }
 
@@ -70,8 +75,8 @@ void expectAgreement(const std::vector<std::uint8_t>& image) {
 
 TEST(DeclaredSizes, TheDefaultModelPasses) {
   ModelIssue issue;
-  EXPECT_TRUE(ModelView::checkDeclaredSizes(headOf(defaultModelImage()),
-                                            defaultModelImage().size(), &issue))
+  EXPECT_TRUE(ModelView::checkDeclaredSizes(headOf(defaultModelImage()), defaultModelImage().size(),
+                                            &issue))
       << describe(issue.error);
 }
 
