@@ -298,14 +298,19 @@ class ModelStream::Impl {
       if (plan.head) head_in_flight_ = false;
       if (result.status == FetchStatus::kOk) {
         backoff_ = std::chrono::milliseconds(0);
+        failures_in_a_row_ = 0;
       } else if (!stopping_ && !failed_) {
         ++failed_requests_;
-        error_ =
-            url_.text() + ": " + result.message +
-            (result.http_status > 0 ? " (HTTP " + std::to_string(result.http_status) + ")" : "");
+        error_ = url_.text() + ": " + result.message;
         if (plan.head && result.status == FetchStatus::kHttpStatus && result.http_status >= 400 &&
             result.http_status < 500 && result.http_status != 408 && result.http_status != 429) {
           fail(error_);
+        }
+        // Slowness is the --timeout's to judge; anything else is the server's answer.
+        if (!failed_ && result.status != FetchStatus::kTooSlow &&
+            result.status != FetchStatus::kCancelled && options_.give_up_after > 0 &&
+            ++failures_in_a_row_ >= options_.give_up_after) {
+          fail(error_ + " (" + std::to_string(failures_in_a_row_) + " times in a row)");
         }
         backoff_ = std::clamp(backoff_ * 2, std::chrono::milliseconds(100),
                               std::chrono::milliseconds(2000));
@@ -340,6 +345,7 @@ class ModelStream::Impl {
   bool failed_ = false;
   std::string error_;
   std::chrono::milliseconds backoff_{0};
+  int failures_in_a_row_ = 0;
   Clock::time_point retry_after_{};
   std::uint32_t requests_ = 0, failed_requests_ = 0, refused_items_ = 0;
   std::vector<FetchItem> priority_, sorted_;

@@ -43,6 +43,8 @@ cv::Mat renderFromUrl(const std::string& url_text, const Camera& camera, Variant
   stream_options.byte_budget = options.bytes;
   stream_options.connections = options.bytes > 0 ? 1 : 2;
   stream_options.prefetch_invisible = false;
+  // A server that refuses, errs or lies three times in a row is reported at once, not waited for.
+  stream_options.give_up_after = 3;
   if (options.bytes > 0)
     stream_options.first_request_bytes = std::min<std::uint64_t>(options.bytes, 4096);
   net::ModelStream stream(*url, stream_options);
@@ -51,7 +53,17 @@ cv::Mat renderFromUrl(const std::string& url_text, const Camera& camera, Variant
   const net::StreamStatus status =
       stream.waitUntilSettled(std::chrono::seconds(options.timeout_seconds));
   stream.stop();
-  if (status.failed && !status.head_known) throw ModelLoadError(status.error);
+  // A stream that failed (a lie about the file, a server that kept refusing) or settled without
+  // the view (its chunks damaged every time they came) would draw an incomplete picture as if it
+  // were the file's: refused instead. Only a byte budget or the timeout leaves a view unfinished.
+  if (status.failed) throw ModelLoadError(status.error);
+  if (status.settled && !status.view_complete && options.bytes == 0) {
+    throw ModelLoadError(url->text() + ": " + std::to_string(status.chunks_pending) +
+                         " of the view's chunks came damaged " +
+                         std::to_string(ProgressiveModel::kMaxChunkAttempts) + " times (" +
+                         std::to_string(status.refused_items) + " refused; last: " + status.error +
+                         ")");
+  }
   cv::Mat image;
   ProgressiveDrawStats stats;
   stream.withModel([&](ProgressiveModel* model) {

@@ -33,11 +33,15 @@ struct HttpUrl {
 
 }  // namespace octopoint::net
 
-// Fetching byte ranges of one file over HTTP/1.1 (cpp-httplib), from any static server with Range
+// Fetching byte ranges of one file over HTTP/1.1 (octopoint's own client over POSIX sockets,
+// bounded everywhere: docs/robustness.md, "The HTTP client"), from any static server with Range
 // support (octopoint-serve, nginx, ...), trusting nothing the server says: the status must be 206
-// with a Content-Range naming exactly the bytes asked for (or 200 with the whole file when that is
-// what was asked), the body must be exactly that long (a longer or endless body is cut off and
-// refused), and it must arrive at a useful rate (cut off otherwise). One connection, kept alive.
+// with a Content-Range naming the bytes asked for (or cut at the file's end, or 200 with the whole
+// file when it starts at 0 and is no longer than asked), the body must be exactly that long (a
+// longer or endless body is cut off and refused), and it must arrive at a useful rate (cut off
+// otherwise). One connection, kept alive; no redirect followed, no Transfer-Encoding accepted. A
+// refused or broken connection, an error status or a lie ends the fetch at once, saying in words
+// what the server did.
 
 namespace octopoint::net {
 
@@ -99,7 +103,8 @@ class RangeClient {
 // model the moment its last byte arrives, so a slow link refines the picture within a request.
 //
 // It survives what a network does: a failed or short request is retried after a back-off (100 ms,
-// doubling to 2 s, for as long as it runs: when the server comes back, the stream resumes); a chunk
+// doubling to 2 s, for as long as it runs: when the server comes back, the stream resumes; or,
+// with StreamOptions::give_up_after, until that many have failed in a row); a chunk
 // that arrives damaged is refused by the model and fetched again, at most
 // ProgressiveModel::kMaxChunkAttempts times in all; responses of the wrong length or endless ones
 // are cut off (octopoint/http.h). Only a head that is not a chunked model, or a file that changed
@@ -119,6 +124,10 @@ struct StreamOptions {
   std::uint64_t max_request_bytes = 256 * 1024;  // so that a turn of the view is soon obeyed
   std::uint64_t merge_gap_bytes = 2048;          // fetch a gap this small rather than a new request
   bool prefetch_invisible = true;                // once the view is complete, fetch the rest
+  // End the stream (failed) after this many failed requests in a row that were not slowness:
+  // a refused connection, an error status, a response that lies. 0: retry for as long as it runs
+  // (a viewer waiting for its server to come back); a one-shot client wants a few.
+  int give_up_after = 0;
   RangeTimeouts timeouts;
 };
 
