@@ -85,8 +85,8 @@ std::string HttpConnection::connect(const std::string& host, int port, Clock::ti
     return "cannot resolve " + host + ": " + ::gai_strerror(error);
   std::string why = "no address for " + host;
   for (addrinfo* at = found; at != nullptr; at = at->ai_next) {
-    socket_ = ::socket(at->ai_family, at->ai_socktype | SOCK_NONBLOCK | SOCK_CLOEXEC,
-                       at->ai_protocol);
+    socket_ =
+        ::socket(at->ai_family, at->ai_socktype | SOCK_NONBLOCK | SOCK_CLOEXEC, at->ai_protocol);
     if (socket_ < 0) {
       why = "cannot make a socket: " + reason(errno);
       continue;
@@ -104,8 +104,10 @@ std::string HttpConnection::connect(const std::string& host, int port, Clock::ti
           break;
         }
         socklen_t length = sizeof error;
-        if (outcome == Outcome::kTimeout) error = ETIMEDOUT;
-        else ::getsockopt(socket_, SOL_SOCKET, SO_ERROR, &error, &length);
+        if (outcome == Outcome::kTimeout)
+          error = ETIMEDOUT;
+        else
+          ::getsockopt(socket_, SOL_SOCKET, SO_ERROR, &error, &length);
       }
     }
     if (error == 0) break;

@@ -21,8 +21,7 @@ std::string_view trim(std::string_view text) {
 
 std::string printable(std::string_view text, std::size_t limit) {
   std::string out;
-  for (char c : text.substr(0, limit))
-    out += (c >= 0x20 && c < 0x7f) ? c : '?';
+  for (char c : text.substr(0, limit)) out += (c >= 0x20 && c < 0x7f) ? c : '?';
   if (text.size() > limit) out += "...";
   return out;
 }
@@ -80,8 +79,8 @@ std::size_t ResponseHeadParser::feed(std::string_view data) {
 void ResponseHeadParser::takeLine(std::string_view line) {
   if (!status_read_) {
     // HTTP/1.x SP 3DIGIT [SP reason]
-    if (line.size() < 12 || !line.starts_with("HTTP/1.") ||
-        (line[7] != '0' && line[7] != '1') || line[8] != ' ' ||
+    if (line.size() < 12 || !line.starts_with("HTTP/1.") || (line[7] != '0' && line[7] != '1') ||
+        line[8] != ' ' ||
         !std::all_of(line.begin() + 9, line.begin() + 12,
                      [](char c) { return c >= '0' && c <= '9'; }) ||
         (line.size() > 12 && line[12] != ' ')) {
@@ -106,8 +105,9 @@ void ResponseHeadParser::takeLine(std::string_view line) {
     return failWith("a malformed header line: '" + printable(line, 40) + "'");
   }
   std::string key(name);
-  std::transform(key.begin(), key.end(), key.begin(),
-                 [](char c) { return static_cast<char>(std::tolower(static_cast<unsigned char>(c))); });
+  std::transform(key.begin(), key.end(), key.begin(), [](char c) {
+    return static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  });
   head_.headers.emplace_back(std::move(key), std::string(trim(line.substr(colon + 1))));
 }
 

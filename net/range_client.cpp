@@ -332,6 +332,17 @@ void RangeClient::Impl::readBody(const Request& request, std::string_view first)
              std::to_string(expected_) + " bytes");
     return;
   }
+  if (!close_after_) {
+    // Bytes already waiting past the body would be read as the next response: too long.
+    char probe = 0;
+    const HttpConnection::Io more = connection_.receive({&probe, 1}, Clock::now());
+    if (more.outcome == HttpConnection::Outcome::kDone) {
+      fail(result, FetchStatus::kTooLong,
+           "the server sent more than the " + std::to_string(expected_) + " bytes it announced");
+      return;
+    }
+    close_after_ = more.outcome != HttpConnection::Outcome::kTimeout;  // closed or broken
+  }
   result.status = FetchStatus::kOk;
   result.message = describe(FetchStatus::kOk);
   if (close_after_) connection_.close();
