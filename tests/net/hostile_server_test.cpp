@@ -2,6 +2,8 @@
 // RangeClient must refuse each lie at once (never waiting out a timeout for anything but
 // slowness), say in words what the server did, and hold no more memory than its limits allow;
 // the response-head parser must hold its limits at their exact bounds, fed whole or byte by byte.
+#include "tests/support/hostile_server.h"
+
 #include <gtest/gtest.h>
 #include <netinet/in.h>
 #include <sys/socket.h>
@@ -13,7 +15,6 @@
 #include "net/http_response.h"
 #include "octopoint/http.h"
 #include "octopoint/models.h"
-#include "tests/support/hostile_server.h"
 #include "tests/support/model_images.h"
 
 namespace octopoint {
@@ -109,7 +110,7 @@ std::vector<LieCase> everyLie() {
 
 TEST(HostileServer, EveryLieIsRefusedAtOnceInWordsWithBoundedMemory) {
   net::RangeTimeouts timeouts;
-  timeouts.read_seconds = 1;            // silence: the only case that waits, this long
+  timeouts.read_seconds = 1;             // silence: the only case that waits, this long
   timeouts.min_bytes_per_second = 4000;  // the trickle: cut off after 1 s + 4000 B / 4000 B/s
   for (const LieCase& c : everyLie()) {
     HostileServer server(modelImage(), c.options);
@@ -204,9 +205,8 @@ TEST(HostileServer, AStreamGivesUpOnALyingServerSoon) {
 net::ResponseHeadParser::State parse(const std::string& text, bool bytewise, std::string* error) {
   net::ResponseHeadParser parser;
   if (bytewise) {
-    for (std::size_t i = 0; i < text.size() && parser.state() ==
-                                                    net::ResponseHeadParser::State::kNeedMore;
-         ++i)
+    for (std::size_t i = 0;
+         i < text.size() && parser.state() == net::ResponseHeadParser::State::kNeedMore; ++i)
       parser.feed(std::string_view(text).substr(i, 1));
   } else {
     parser.feed(text);
@@ -222,7 +222,8 @@ TEST(ResponseHeadParser, HoldsEachLimitAtItsBound) {
   };
   const auto fields = [](std::size_t count, std::size_t value) {
     std::string head = "HTTP/1.1 206 OK\r\n";
-    for (std::size_t i = 0; i < count; ++i) head += "F" + std::to_string(i) + ": " + std::string(value, 'v') + "\r\n";
+    for (std::size_t i = 0; i < count; ++i)
+      head += "F" + std::to_string(i) + ": " + std::string(value, 'v') + "\r\n";
     return head + "\r\n";
   };
   const std::vector<std::tuple<std::string, State, const char*>> cases = {

@@ -78,8 +78,8 @@ bool HostileServer::sendAll(int sock, const std::string& bytes) {
   while (sent < bytes.size() && !stopping_) {
     pollfd entry{sock, POLLOUT, 0};
     if (::poll(&entry, 1, 50) <= 0) continue;
-    const ssize_t n = ::send(sock, bytes.data() + sent, bytes.size() - sent,
-                             MSG_NOSIGNAL | MSG_DONTWAIT);
+    const ssize_t n =
+        ::send(sock, bytes.data() + sent, bytes.size() - sent, MSG_NOSIGNAL | MSG_DONTWAIT);
     if (n < 0 && (errno == EAGAIN || errno == EINTR)) continue;
     if (n <= 0) return false;
     sent += static_cast<std::size_t>(n);
@@ -149,9 +149,8 @@ int HostileServer::lieInHead(int sock, const std::string& honest_head, const std
   const std::size_t n = options_.size;
   switch (options_.lie) {
     case Lie::kLongStatus:
-      return sendAll(sock, "HTTP/1.1 206 " + std::string(n, 'x') + "\r\n" + fields + body)
-                 ? kKeep
-                 : kClose;
+      return sendAll(sock, "HTTP/1.1 206 " + std::string(n, 'x') + "\r\n" + fields + body) ? kKeep
+                                                                                           : kClose;
     case Lie::kEndlessStatus:
       return sendEndless(sock, "HTTP/1.1 206 ", 'x') ? kKeep : kClose;
     case Lie::kLongHeader:
@@ -176,8 +175,9 @@ int HostileServer::lieInHead(int sock, const std::string& honest_head, const std
       }
       return kKeep;
     case Lie::kRedirect:
-      sendAll(sock, "HTTP/1.1 301 Moved Permanently\r\nLocation: http://127.0.0.1:1/else.oct\r\n"
-                    "Content-Length: 0\r\n\r\n");
+      sendAll(sock,
+              "HTTP/1.1 301 Moved Permanently\r\nLocation: http://127.0.0.1:1/else.oct\r\n"
+              "Content-Length: 0\r\n\r\n");
       return kKeep;
     case Lie::kCloseMidHead:
       sendAll(sock, honest_head.substr(0, std::min(n, honest_head.size() - 1)));
@@ -236,8 +236,8 @@ int HostileServer::lieAboutRange(int sock, std::uint64_t first, std::uint64_t la
       verdict = kReset;
       break;
     case Lie::kChunkedEncoding:
-      sent = "HTTP/1.1 206 Partial Content\r\nContent-Range: bytes " + std::to_string(first) +
-             "-" + std::to_string(last) + "/" + std::to_string(total) +
+      sent = "HTTP/1.1 206 Partial Content\r\nContent-Range: bytes " + std::to_string(first) + "-" +
+             std::to_string(last) + "/" + std::to_string(total) +
              "\r\nTransfer-Encoding: chunked\r\n\r\n" + hex(body.size()) + "\r\n" + body +
              "\r\n0\r\n\r\n";
       break;

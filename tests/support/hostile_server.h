@@ -15,34 +15,34 @@
 namespace octopoint::testing {
 
 enum class Lie {
-  kNone,            // honest 206 answers
-  kLongStatus,      // a reason phrase of `size` bytes
-  kEndlessStatus,   // a status line that never ends
-  kLongHeader,      // one header line of `size` bytes
-  kEndlessHeader,   // a header line that never ends
-  kManyHeaders,     // `size` short header fields
-  kStatus,          // status `size` (500, 416, 200 (the whole file), 503, ...)
-  kRedirect,        // 301 with a Location
-  kWrongOffset,     // Content-Range starting a byte late
-  kWrongEnd,        // Content-Range ending a byte early
-  kWrongTotal,      // Content-Range total one byte more than the file
-  kGarbageRange,    // Content-Range "bytes garbage"
-  kShortLength,     // Content-Length one byte less than the range
-  kLongLength,      // Content-Length one byte more, and a byte more of body
-  kTruncatedBody,   // the body cut after `size` bytes, then the connection closed
-  kOverlongBody,    // the range's body and `size` bytes more
-  kCloseMidHead,    // the head cut after `size` bytes, then closed
-  kReset,           // the head and `size` body bytes, then a reset (SO_LINGER 0)
-  kSilence,         // reads the request, answers nothing, keeps the connection
-  kTrickle,         // the honest answer, one byte every `size` milliseconds
-  kChunkedEncoding, // Transfer-Encoding: chunked
-  kDamage,          // the honest head with a body byte flipped
+  kNone,             // honest 206 answers
+  kLongStatus,       // a reason phrase of `size` bytes
+  kEndlessStatus,    // a status line that never ends
+  kLongHeader,       // one header line of `size` bytes
+  kEndlessHeader,    // a header line that never ends
+  kManyHeaders,      // `size` short header fields
+  kStatus,           // status `size` (500, 416, 200 (the whole file), 503, ...)
+  kRedirect,         // 301 with a Location
+  kWrongOffset,      // Content-Range starting a byte late
+  kWrongEnd,         // Content-Range ending a byte early
+  kWrongTotal,       // Content-Range total one byte more than the file
+  kGarbageRange,     // Content-Range "bytes garbage"
+  kShortLength,      // Content-Length one byte less than the range
+  kLongLength,       // Content-Length one byte more, and a byte more of body
+  kTruncatedBody,    // the body cut after `size` bytes, then the connection closed
+  kOverlongBody,     // the range's body and `size` bytes more
+  kCloseMidHead,     // the head cut after `size` bytes, then closed
+  kReset,            // the head and `size` body bytes, then a reset (SO_LINGER 0)
+  kSilence,          // reads the request, answers nothing, keeps the connection
+  kTrickle,          // the honest answer, one byte every `size` milliseconds
+  kChunkedEncoding,  // Transfer-Encoding: chunked
+  kDamage,           // the honest head with a body byte flipped
 };
 
 struct HostileOptions {
   Lie lie = Lie::kNone;
-  std::uint64_t size = 0;        // the lie's size or position (see Lie)
-  std::uint64_t lie_from = 0;    // honest for ranges starting before this byte of the file
+  std::uint64_t size = 0;      // the lie's size or position (see Lie)
+  std::uint64_t lie_from = 0;  // honest for ranges starting before this byte of the file
 };
 
 class HostileServer {
