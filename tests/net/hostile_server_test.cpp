@@ -104,7 +104,10 @@ std::vector<LieCase> everyLie() {
       {"a reset in the body", {Lie::kReset, 1000}, S::kTooShort, "reset"},
       {"a chunked body", {Lie::kChunkedEncoding}, S::kBadResponse, "Transfer-Encoding"},
       {"silence", {Lie::kSilence}, S::kTooSlow, "no byte for 1 s"},
-      {"a trickle of a byte per 50 ms", {Lie::kTrickle, 50}, S::kTooSlow, "slower than"},
+      {"a trickle of a byte per 50 ms",
+       {Lie::kTrickle, 50},
+       S::kTooSlow,
+       "no complete response head"},
   };
 }
 
