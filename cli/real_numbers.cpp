@@ -13,11 +13,7 @@
 namespace octopoint::cli {
 namespace {
 
-std::string range(double low, double high) {
-  char text[64];
-  std::snprintf(text, sizeof text, "%g..%g", low, high);
-  return text;
-}
+std::string range(double low, double high) { return realText(low) + ".." + realText(high); }
 
 }  // namespace
 

@@ -1,5 +1,8 @@
 #include "cli/text.h"
 
+#include <charconv>
+#include <system_error>
+
 namespace octopoint::cli {
 namespace {
 
@@ -37,6 +40,18 @@ std::string oneLine(std::string_view message) {
     if (static_cast<unsigned char>(c) < 0x20 || c == 0x7f) c = ' ';
   }
   return out;
+}
+
+std::string realText(double value) {
+  char text[64];
+  // Plain digits where they stay short (1000000, not 1e+06); exponents for the far ends.
+  const double size = value < 0 ? -value : value;
+  const bool plain = size == 0 || (size >= 1e-6 && size < 1e16);
+  const auto [end, error] =
+      plain ? std::to_chars(text, text + sizeof text, value, std::chars_format::fixed)
+            : std::to_chars(text, text + sizeof text, value);
+  if (error != std::errc()) return "?";  // 64 characters hold every double
+  return std::string(text, end);
 }
 
 }  // namespace octopoint::cli

@@ -26,4 +26,9 @@ std::string displayPath(const std::filesystem::path& path);
 // One line: every line break or other control character of `message` as a space.
 std::string oneLine(std::string_view message);
 
+// `value` as the shortest text that reads back as the same double (1000000.0625, not %g's
+// 1e+06), in plain digits from 1e-6 to 1e16 and with an exponent beyond: a message about a
+// number shows the number given, not a neighbour of it.
+std::string realText(double value);
+
 }  // namespace octopoint::cli

@@ -41,6 +41,7 @@
 #include <system_error>
 
 #include "cli/input_file.h"
+#include "cli/text.h"
 #include "codegen/intensity_grey.h"
 #include "codegen/prepare_error.h"
 #include "codegen/scan_header_check.h"
@@ -169,7 +170,8 @@ void collectPoints(const fs::path& path, const pcl::PointCloud<PointT>& points, 
       if (std::fabs(xyz[axis]) > kMaxAbsCoordinate) {
         std::ostringstream what;
         what << "absurd coordinate "
-             << "xyz"[axis] << " = " << xyz[axis] << ", beyond +-" << kMaxAbsCoordinate;
+             << "xyz"[axis] << " = " << cli::realText(xyz[axis]) << ", beyond +-"
+             << cli::realText(kMaxAbsCoordinate);
         fail(path, what.str(), "point " + std::to_string(i));
       }
     }

@@ -33,7 +33,8 @@ class SceneReader {
     if (!value.is_number()) fail(key, "expected a number");
     const double x = value.get<double>();
     if (!(x >= low && x <= high)) {
-      fail(key, format("%g is outside %g..%g", x, low, high));
+      fail(key,
+           cli::realText(x) + " is outside " + cli::realText(low) + ".." + cli::realText(high));
     }
     return x;
   }
@@ -53,7 +54,8 @@ class SceneReader {
   Range range(const json& value, const std::string& key, double min, double max) const {
     if (!value.is_array() || value.size() != 2) fail(key, "expected [low, high]");
     Range r{number(value[0], key, min, max), number(value[1], key, min, max)};
-    if (r.low > r.high) fail(key, format("empty range: %g > %g", r.low, r.high));
+    if (r.low > r.high)
+      fail(key, "empty range: " + cli::realText(r.low) + " > " + cli::realText(r.high));
     return r;
   }
 
@@ -214,6 +216,11 @@ void readViews(const SceneReader& reader, const json& root, Scene& scene) {
     scene.zoom = zoom.is_number() ? Range{zoom.get<double>(), zoom.get<double>()}
                                   : reader.range(zoom, "zoom", -kMaxZoom, kMaxZoom);
     if (!(scene.zoom.low > 0)) reader.fail("zoom", "zoom must be greater than 0");
+    // Zooms are 16.16 fixed point: below 1/65536 a zoom would round to nothing.
+    if (scene.zoom.low < 1.0 / 65536) {
+      reader.fail("zoom", "zoom " + cli::realText(scene.zoom.low) +
+                              " is too small: it must be at least 1/65536");
+    }
     if (!(scene.zoom.high <= kMaxZoom)) reader.fail("zoom", "zoom must be at most 32767");
   }
   if (root.contains("framebuffer")) {

@@ -10,6 +10,7 @@
 #include <sstream>
 
 #include "cli/file_size_signal.h"
+#include "cli/text.h"
 #include "codegen/bin_voxelizer.h"
 #include "codegen/cube_fit.h"
 #include "codegen/file_io.h"
@@ -110,7 +111,7 @@ struct FirstPass {
                              std::size_t axis, double limit, std::uint64_t index) {
   std::ostringstream what;
   what << "absurd coordinate "
-       << "xyz"[axis] << " = " << p[axis] << ", beyond +-" << limit;
+       << "xyz"[axis] << " = " << cli::realText(p[axis]) << ", beyond +-" << cli::realText(limit);
   throw PrepareError(path + ": " + what.str() + " (point " + std::to_string(index) + ")");
 }
 

@@ -103,6 +103,7 @@ class ModelStream::Impl {
  private:
   std::uint64_t budgetLeft() const {
     if (options_.byte_budget == 0) return UINT64_MAX;
+    if (budget_spent_) return 0;
     const std::uint64_t used = received_ + outstanding_;
     return used >= options_.byte_budget ? 0 : options_.byte_budget - used;
   }
@@ -187,6 +188,13 @@ class ModelStream::Impl {
     while (!plan.items.empty() &&
            plan.items.back().offset + plan.items.back().bytes > plan.offset + plan.size) {
       plan.items.pop_back();  // beyond the budget: not asked for
+    }
+    if (plan.items.empty()) {
+      // What is left of the budget cannot hold the most urgent item: its bytes would be of no
+      // use, and when the head already brought them all the plan would ask for nothing and be
+      // made again at once, for ever. The budget counts as spent, and the stream settles.
+      budget_spent_ = true;
+      return false;
     }
     for (const FetchItem& item : plan.items) in_flight_.insert(itemKey(item));
     if (plan.offset < head_.size()) {
@@ -341,6 +349,7 @@ class ModelStream::Impl {
   Camera view_;
   std::unordered_set<std::uint64_t> in_flight_;
   std::uint64_t received_ = 0, outstanding_ = 0;
+  bool budget_spent_ = false;  // the budget left cannot hold the next item
   int busy_ = 0;
   bool failed_ = false;
   std::string error_;

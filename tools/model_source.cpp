@@ -86,6 +86,13 @@ bool parseModelSourceOption(cli::ArgumentReader& args, ModelSourceOptions& sourc
   } else {
     return false;
   }
+  // An empty name would otherwise count as no source at all, and the default model be drawn.
+  if (args.is("--model") || args.is("--file") || args.is("--url")) {
+    const std::string& given = args.is("--model")  ? source.model_name
+                               : args.is("--file") ? source.model_file
+                                                   : source.url;
+    if (given.empty()) throw cli::Error(std::string(args.name()) + ": empty (give a value)");
+  }
   return true;
 }
 

@@ -78,7 +78,8 @@ nor --file nor --url it draws the default model embedded in this binary.
   --fill, --no-fill  scanline hole filling after decoding, as the paper does (default --no-fill:
                      footprint splats leave no holes; docs/holefill.md)
   --style NAME       colour (default), shaded, lines, toon or outlined (docs/styles.md); all but
-                     colour need a model with normals (octopoint-prepare --normals)
+                     colour need a model with normals (octopoint-prepare --normals), so a
+                     chunked model (a chunked file or --url) is drawn in colour only
   --light AZ,EL      where the light of shaded and toon comes from, in degrees relative to the
                      viewer: azimuth to the right (negative: left), elevation up, each within
                      +-90; 0,0 is at the viewer's eye (default -30,35)
@@ -219,6 +220,10 @@ void checkCombination(const Options& options) {
   if (!url && options.fetch.bytes > 0) throw cli::Error("--bytes needs --url");
   if (url && (options.depth || options.sheet > 0)) {
     throw cli::Error("--url draws the depth the view needs: --depth and --sheet do not apply");
+  }
+  if (url && options.style.style != Style::kColour) {
+    throw cli::Error("--style " + std::string(styleName(options.style.style)) +
+                     ": --url draws a chunked model, in colour only (it stores no normals)");
   }
   if (options.fov && !options.perspective) throw cli::Error("--fov needs --perspective");
   if (options.perspective &&
@@ -459,6 +464,11 @@ int run(int argc, char** argv) {
       loadModel(options.source.model_name, options.source.model_file, true);
   if (loaded->chunked && options.perspective)
     throw cli::Error(loaded->label + ": --perspective does not draw chunked models yet");
+  if (loaded->chunked && options.style.style != Style::kColour) {
+    throw cli::Error("--style " + std::string(styleName(options.style.style)) + ": " +
+                     loaded->label +
+                     ": a chunked model is drawn in colour only (it stores no normals)");
+  }
   if (loaded->chunked) return renderChunked(options, *loaded);
   if (options.fetch.point_budget > 0) {
     throw cli::Error(loaded->label +

@@ -116,7 +116,7 @@ TEST(ParseReal, TakesFiniteNumbersInRangeOnly) {
   EXPECT_EQ(parseZoom("--zoom", "1.5").raw(), 3 * 32768);
   EXPECT_EQ(parseDegrees("--yaw", "-90"), Angle::fromDegrees(-90));
   EXPECT_EQ(messageOf([] { parseDegrees("--yaw", "1e300"); }),
-            "--yaw: 1e300 is outside -1e+06..1e+06");
+            "--yaw: 1e300 is outside -1000000..1000000");
 }
 
 struct Argv {
@@ -174,6 +174,25 @@ TEST(Text, PrintableOneLineAndShort) {
   const std::string shown = displayPath(long_path);
   EXPECT_LE(shown.size(), kMaxPathShown + 3);
   EXPECT_EQ(shown.substr(shown.size() - 9), "/scan.pcd");
+}
+
+// Numbers in messages read back as the number given: every digit kept, plain where short.
+TEST(RealText, ReadsBackAsTheSameNumber) {
+  EXPECT_EQ(realText(1000000.0625), "1000000.0625");
+  EXPECT_EQ(realText(1e6), "1000000");
+  EXPECT_EQ(realText(-90), "-90");
+  EXPECT_EQ(realText(0), "0");
+  EXPECT_EQ(realText(0.1), "0.1");
+  EXPECT_EQ(realText(1e-300), "1e-300");
+  EXPECT_EQ(realText(1.5e300), "1.5e+300");
+  for (const double value : {1000000.0625, 123456.789, 3.0e-7, 9.999999999999998e15, 1e16, -2.5e-7,
+                             0.30000000000000004, 65536.0 + 1.0 / 65536}) {
+    EXPECT_EQ(std::stod(realText(value)), value) << realText(value);
+  }
+  EXPECT_EQ(messageOf([] { parseReal("--zoom", "1000000.0625", 0, 10); }),
+            "--zoom: 1000000.0625 is outside 0..10");
+  EXPECT_EQ(messageOf([] { parseReal("--zoom", "11", 0.0625, 10.5); }),
+            "--zoom: 11 is outside 0.0625..10.5");
 }
 
 }  // namespace

@@ -13,6 +13,7 @@
 #include <random>
 #include <string>
 
+#include "cli/text.h"
 #include "codegen/scan_loader.h"
 #include "tests/support/scan_loader_fixture.h"
 
@@ -197,8 +198,16 @@ TEST_F(ScanLoaderTest, AbsurdCoordinateIsRefusedNamingPointAndValue) {
   cloud.push_back(pcl::PointXYZ(kNaN, 0.0f, 0.0f));
   cloud.push_back(pcl::PointXYZ(1.0f, 2.0f, 3.0f));
   cloud.push_back(pcl::PointXYZ(1.0f, -2.5e6f, 3.0f));
-  expectError(write(cloud, Encoding::kPcdBinary), "absurd coordinate y = -2.5e+06");
+  expectError(write(cloud, Encoding::kPcdBinary), "absurd coordinate y = -2500000");
   expectError(write(cloud, Encoding::kPcdBinary), "(point 2)");
+  // Just past the limit, the value shown is the one in the file, every digit of it.
+  for (const float x : {1000000.0625f, -1000000.125f, 1.5e30f}) {
+    pcl::PointCloud<pcl::PointXYZ> near;
+    near.push_back(pcl::PointXYZ(x, 0.0f, 0.0f));
+    const std::string shown = cli::realText(x);
+    EXPECT_EQ(std::stof(shown), x) << shown;
+    expectError(write(near, Encoding::kPcdBinary), "absurd coordinate x = " + shown + ", beyond");
+  }
 }
 
 // ---- truncation: every cut ends in PrepareError, never a crash or a silently short cloud ----

@@ -60,6 +60,21 @@ TEST(SceneFile, ErrorsNameTheKeyOnOneLine) {
   EXPECT_EQ(errorOf(R"({"pitch": [-100, 0]})"), "scene.json: key 'pitch': -100 is outside -90..90");
   EXPECT_EQ(errorOf(R"({"zoom": [0, 2]})"), "scene.json: key 'zoom': zoom must be greater than 0");
   EXPECT_EQ(errorOf(R"({"zoom": -1})"), "scene.json: key 'zoom': zoom must be greater than 0");
+  // Below 16.16's smallest step a zoom is too small, not "not greater than 0"; the numbers in
+  // messages are the numbers given, not %g's six digits.
+  for (const char* tiny : {"1e-300", "5e-324", "0.0000152", "[1e-10, 2]"}) {
+    const std::string error = errorOf(std::string(R"({"zoom": )") + tiny + "}");
+    EXPECT_EQ(error.rfind("scene.json: key 'zoom': zoom ", 0), 0u) << tiny;
+    EXPECT_NE(error.find(" is too small: it must be at least 1/65536"), std::string::npos) << tiny;
+  }
+  EXPECT_EQ(errorOf(R"({"zoom": 1e-300})"),
+            "scene.json: key 'zoom': zoom 1e-300 is too small: it must be at least 1/65536");
+  EXPECT_EQ(errorOf(R"({"pitch": [0, 1000000.0625]})"),
+            "scene.json: key 'pitch': 1000000.0625 is outside -90..90");
+  EXPECT_EQ(errorOf(R"({"yaw": [180.5, 180.5]})"),
+            "scene.json: key 'yaw': 180.5 is outside -180..180");
+  EXPECT_EQ(errorOf(R"({"yaw": [0.125, 0.0625]})"),
+            "scene.json: key 'yaw': empty range: 0.125 > 0.0625");
   EXPECT_EQ(errorOf(R"({"depths": [0, 8]})"), "scene.json: key 'depths': 0 is outside 1..16");
   EXPECT_EQ(errorOf(R"({"depths": [8, 17]})"), "scene.json: key 'depths': 17 is outside 1..16");
   EXPECT_EQ(errorOf(R"({"depths": [8, 7]})"),
