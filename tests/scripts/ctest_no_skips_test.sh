@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # scripts/ctest-no-skips on a small project of its own: a skipped test fails the run and is named,
-# unless --allow-skip names it; a failed test still fails it; a clean run passes.
+# unless an --allow-skip pattern matches its whole name; a failed test still fails it; a clean run passes.
 set -uo pipefail
 script=$1 work=$2
 fail() { echo "FAIL: $*" >&2; exit 1; }
@@ -20,6 +20,10 @@ run -- --test-dir "$work/build" -R 'skips|passes' && fail "a skipped test passed
 grep -q "ctest-no-skips: .*skips.one" "$work/err" || fail "the skipped test is not named"
 run --allow-skip skips.one -- --test-dir "$work/build" -R 'skips|passes' ||
   fail "an allowed skip failed the run"
+run --allow-skip 'skips\.[a-z]+' -- --test-dir "$work/build" -R 'skips|passes' ||
+  fail "a pattern matching the skip failed the run"
+run --allow-skip skips -- --test-dir "$work/build" -R 'skips|passes' &&
+  fail "a pattern matching only part of the name allowed the skip"
 run --allow-skip skips.one -- --test-dir "$work/build" && fail "a failed test passed the run"
 run -- --test-dir "$work/build" -R passes || fail "a clean run failed"
 echo "ok: skips fail unless allowed, failures fail, a clean run passes"
