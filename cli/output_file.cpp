@@ -4,6 +4,8 @@
 // place, one by one. A file of an earlier run that a new one replaces is moved into the staging
 // folder first, so that if a later rename fails every file already put in place is taken out again
 // and the earlier ones are put back: the directory holds the old set or the new set, never a mix.
+// Only SIGKILL (or a power cut) during those renames could leave a mix, so where Linux can swap
+// two folders in one step the whole folder is swapped instead (cli/folder_swap.h).
 #include "cli/output_file.h"
 
 #include <fcntl.h>
@@ -16,6 +18,7 @@
 
 #include "cli/error.h"
 #include "cli/file_size_signal.h"
+#include "cli/folder_swap.h"
 #include "cli/signals.h"
 #include "cli/text.h"
 
@@ -123,14 +126,7 @@ void unpublish(const std::vector<Published>& published) {
 void removeStaleStaging(const fs::path& directory) {
   std::error_code error;
   for (fs::directory_iterator it(directory, error), end; !error && it != end; it.increment(error)) {
-    const std::string name = it->path().filename().string();
-    if (name.rfind(kStagingPrefix, 0) != 0) continue;
-    const std::string digits = name.substr(kStagingPrefix.size());
-    if (digits.empty() || digits.find_first_not_of("0123456789") != std::string::npos ||
-        digits.size() > 9)
-      continue;
-    const pid_t pid = static_cast<pid_t>(std::stol(digits));
-    if (pid == ::getpid() || ::kill(pid, 0) == 0 || errno != ESRCH) continue;
+    if (!leftByDeadWriter(it->path().filename().string(), kStagingPrefix)) continue;
     std::error_code ignored;
     fs::remove_all(it->path(), ignored);
   }
@@ -220,6 +216,18 @@ void writeFilesAtomically(const fs::path& directory, const std::vector<OutputFil
   }
   const TerminationSignalsHeld signals_held;
   const FileSizeSignalIgnored file_size_signal_ignored;
+  if (existed) {  // the folder is there, so a failed check leaves nothing to clean up
+    for (const OutputFile& file : files) checkOutputFile(directory / file.name);
+    std::vector<std::string> replaced = obsolete;
+    for (const OutputFile& file : files) replaced.push_back(file.name);
+    const auto write_new = [&](const fs::path& folder) {
+      for (const OutputFile& file : files) {
+        writeNewFile(folder / file.name, file.contents, directory / file.name);
+        throwIfInterrupted(directory / file.name);
+      }
+    };
+    if (swapFolder(directory, replaced, write_new)) return;
+  }
   const fs::path staging = directory / (std::string(kStagingPrefix) + std::to_string(::getpid()));
   const fs::path displaced = staging / "displaced";
   std::vector<Published> published;
