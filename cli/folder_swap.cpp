@@ -53,8 +53,7 @@ bool linkKept(const fs::path& from, const fs::path& to, const std::vector<std::s
     if (name.rfind(kStagingPrefix, 0) == 0) continue;
     if (std::find(replaced.begin(), replaced.end(), name) != replaced.end()) continue;
     // linkat without AT_SYMLINK_FOLLOW links a symbolic link itself, as the folder held it.
-    if (::linkat(AT_FDCWD, it->path().c_str(), AT_FDCWD, (to / name).c_str(), 0) != 0)
-      return false;
+    if (::linkat(AT_FDCWD, it->path().c_str(), AT_FDCWD, (to / name).c_str(), 0) != 0) return false;
   }
   return !error;
 }
@@ -82,14 +81,13 @@ bool swapFolder(const fs::path& directory, const std::vector<std::string>& repla
   if (!onlyFiles(tidy)) return false;
   const fs::path parent = tidy.has_parent_path() ? tidy.parent_path() : fs::path(".");
   removeStaleSiblings(parent, name);
-  const fs::path sibling = parent / ("." + name + std::string(kSwapInfix) +
-                                     std::to_string(::getpid()));
+  const fs::path sibling =
+      parent / ("." + name + std::string(kSwapInfix) + std::to_string(::getpid()));
   std::error_code error;
   fs::remove_all(sibling, error);
   if (::mkdir(sibling.c_str(), 0700) != 0) return false;  // a read-only parent: file by file
   // The new folder keeps the old one's permissions and, where allowed, its owner.
-  if (::chmod(sibling.c_str(), status.st_mode & 07777) != 0 ||
-      !linkKept(tidy, sibling, replaced)) {
+  if (::chmod(sibling.c_str(), status.st_mode & 07777) != 0 || !linkKept(tidy, sibling, replaced)) {
     fs::remove_all(sibling, error);
     return false;
   }

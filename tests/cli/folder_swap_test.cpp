@@ -1,6 +1,8 @@
 // The output folder swap (cli/folder_swap.h): SIGKILL, which no handler sees, at any moment of
 // writeFilesAtomically leaves the old set or the new one in the folder, never a mix, and the next
 // run removes what the killed one left beside it.
+#include "cli/folder_swap.h"
+
 #include <gtest/gtest.h>
 #include <signal.h>
 #include <sys/wait.h>
@@ -15,7 +17,6 @@
 #include <thread>
 #include <vector>
 
-#include "cli/folder_swap.h"
 #include "cli/output_file.h"
 
 namespace octopoint::cli {

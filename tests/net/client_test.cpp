@@ -11,8 +11,6 @@
 #include <thread>
 
 #include "octopoint/http.h"
-#include "octopoint/models.h"
-#include "tests/support/model_images.h"
 #include "tests/support/net_test_support.h"
 
 namespace octopoint {
@@ -22,11 +20,7 @@ using namespace std::chrono_literals;
 using Bytes = std::vector<std::uint8_t>;
 using octopoint::testing::ScriptedServer;
 
-const Bytes& modelImage() {
-  static const Bytes image =
-      fuzzing::chunkedImage(*models::defaultModel(), {5, 6, 7, 8}, {1024, 1500});
-  return image;
-}
+const Bytes& modelImage() { return testing::streamedModelImage(); }
 
 net::HttpUrl urlOf(int port, const std::string& path = "/model.oct") {
   return *net::parseHttpUrl("http://127.0.0.1:" + std::to_string(port) + path, nullptr);

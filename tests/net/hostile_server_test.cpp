@@ -14,8 +14,7 @@
 
 #include "net/http_response.h"
 #include "octopoint/http.h"
-#include "octopoint/models.h"
-#include "tests/support/model_images.h"
+#include "tests/support/net_test_support.h"
 
 namespace octopoint {
 namespace {
@@ -27,11 +26,7 @@ using testing::HostileOptions;
 using testing::HostileServer;
 using testing::Lie;
 
-const Bytes& modelImage() {
-  static const Bytes image =
-      fuzzing::chunkedImage(*models::defaultModel(), {5, 6, 7, 8}, {1024, 1500});
-  return image;
-}
+const Bytes& modelImage() { return testing::streamedModelImage(); }
 
 // The process's peak resident memory so far, in MB (VmHWM).
 long peakMegabytes() {

@@ -44,3 +44,13 @@ start_octopoint_serve() {
   done
   fail "octopoint-serve did not say where it listens: $(cat "$log")"
 }
+
+# Prepares a small chunked model from scan $3 with octopoint-prepare ($1) into $4/models/small.oct
+# (two stored depths, a few chunks) and serves that folder with octopoint-serve ($2): sets
+# SERVE_PID and SERVE_PORT like start_octopoint_serve.
+serve_small_chunked_model() {
+  local prepare=$1 serve=$2 scan=$3 work=$4
+  "$prepare" "$scan" -o "$work/models" --name small --depths 4,6 --chunked >/dev/null ||
+    fail "could not prepare the model"
+  start_octopoint_serve "$serve" "$work/models"
+}

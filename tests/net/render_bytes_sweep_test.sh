@@ -7,9 +7,7 @@ set -uo pipefail
 . "$(dirname "$0")/net_script_lib.sh"
 prepare=$1 serve=$2 render=$3 scan=$4 work=$5
 rm -rf "$work" && mkdir -p "$work"
-"$prepare" "$scan" -o "$work/models" --name small --depths 4,6 --chunked >/dev/null ||
-  fail "could not prepare the model"
-start_octopoint_serve "$serve" "$work/models"
+serve_small_chunked_model "$prepare" "$serve" "$scan" "$work"
 trap 'stop_pid "$SERVE_PID"' EXIT
 url="http://127.0.0.1:$SERVE_PORT/small.oct"
 size=$(stat -c %s "$work/models/small.oct")

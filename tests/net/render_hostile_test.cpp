@@ -30,11 +30,7 @@ using testing::HostileOptions;
 using testing::HostileServer;
 using testing::Lie;
 
-const Bytes& modelImage() {
-  static const Bytes image =
-      fuzzing::chunkedImage(*models::defaultModel(), {5, 6, 7, 8}, {1024, 1500});
-  return image;
-}
+const Bytes& modelImage() { return testing::streamedModelImage(); }
 
 struct RenderRun {
   int exit_code = -1;  // or 128 + the signal

@@ -11,6 +11,9 @@
 #include <fstream>
 #include <stdexcept>
 
+#include "octopoint/models.h"
+#include "tests/support/model_images.h"
+
 namespace octopoint::testing {
 namespace {
 
@@ -59,6 +62,12 @@ bool readSome(int sock, std::string& into, Clock::time_point deadline) {
 }
 
 }  // namespace
+
+const std::vector<std::uint8_t>& streamedModelImage() {
+  static const std::vector<std::uint8_t> image =
+      fuzzing::chunkedImage(*models::defaultModel(), {5, 6, 7, 8}, {1024, 1500});
+  return image;
+}
 
 TempFolder::TempFolder() {
   std::string pattern = (std::filesystem::temp_directory_path() / "octopoint-net-XXXXXX").string();

@@ -18,6 +18,10 @@
 
 namespace octopoint::testing {
 
+// The default model as a chunked file (depths 5 to 8, chunks of 1024 and 1500 bytes): what the
+// transport's tests serve, made once.
+const std::vector<std::uint8_t>& streamedModelImage();
+
 // A fresh folder under the system's temporary directory, removed with everything in it.
 class TempFolder {
  public:
