@@ -78,7 +78,9 @@ bool swapFolder(const fs::path& directory, const std::vector<std::string>& repla
   if (name.empty() || name == "." || name == "..") return false;
   struct stat status {};
   if (::lstat(tidy.c_str(), &status) != 0 || !S_ISDIR(status.st_mode)) return false;  // a link
-  if (!onlyFiles(tidy)) return false;
+  // A folder we may not write into is left to the file-by-file way and its error (we could not
+  // remove the old folder after the swap either).
+  if (::access(tidy.c_str(), W_OK) != 0 || !onlyFiles(tidy)) return false;
   const fs::path parent = tidy.has_parent_path() ? tidy.parent_path() : fs::path(".");
   removeStaleSiblings(parent, name);
   const fs::path sibling =
@@ -86,19 +88,21 @@ bool swapFolder(const fs::path& directory, const std::vector<std::string>& repla
   std::error_code error;
   fs::remove_all(sibling, error);
   if (::mkdir(sibling.c_str(), 0700) != 0) return false;  // a read-only parent: file by file
-  // The new folder keeps the old one's permissions and, where allowed, its owner.
-  if (::chmod(sibling.c_str(), status.st_mode & 07777) != 0 || !linkKept(tidy, sibling, replaced)) {
+  if (!linkKept(tidy, sibling, replaced)) {
     fs::remove_all(sibling, error);
     return false;
   }
-  [[maybe_unused]] const int owner_kept = ::chown(sibling.c_str(), status.st_uid, status.st_gid);
   try {
     write_new(sibling);
   } catch (...) {
     fs::remove_all(sibling, error);
     throw;
   }
-  if (::renameat2(AT_FDCWD, sibling.c_str(), AT_FDCWD, tidy.c_str(), RENAME_EXCHANGE) != 0) {
+  // The new folder keeps the old one's permissions (set once it is written: a read-only folder
+  // stays read-only) and, where allowed, its owner.
+  [[maybe_unused]] const int owner_kept = ::chown(sibling.c_str(), status.st_uid, status.st_gid);
+  if (::chmod(sibling.c_str(), status.st_mode & 07777) != 0 ||
+      ::renameat2(AT_FDCWD, sibling.c_str(), AT_FDCWD, tidy.c_str(), RENAME_EXCHANGE) != 0) {
     fs::remove_all(sibling, error);  // EINVAL, ENOSYS, EBUSY (a mount point): file by file
     return false;
   }
