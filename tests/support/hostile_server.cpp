@@ -1,7 +1,5 @@
 #include "tests/support/hostile_server.h"
 
-#include <arpa/inet.h>
-#include <netinet/in.h>
 #include <poll.h>
 #include <sys/socket.h>
 #include <unistd.h>
@@ -9,7 +7,8 @@
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
-#include <stdexcept>
+
+#include "tests/support/net_test_support.h"
 
 namespace octopoint::testing {
 namespace {
@@ -33,20 +32,7 @@ std::string hex(std::size_t value) {
 
 HostileServer::HostileServer(std::vector<std::uint8_t> file, HostileOptions options)
     : file_(std::move(file)), options_(options) {
-  listener_ = ::socket(AF_INET, SOCK_STREAM | SOCK_CLOEXEC, 0);
-  const int yes = 1;
-  ::setsockopt(listener_, SOL_SOCKET, SO_REUSEADDR, &yes, sizeof yes);
-  sockaddr_in address{};
-  address.sin_family = AF_INET;
-  address.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
-  if (::bind(listener_, reinterpret_cast<sockaddr*>(&address), sizeof address) != 0 ||
-      ::listen(listener_, 16) != 0) {
-    ::close(listener_);
-    throw std::runtime_error("hostile server: cannot listen");
-  }
-  socklen_t length = sizeof address;
-  ::getsockname(listener_, reinterpret_cast<sockaddr*>(&address), &length);
-  port_ = ntohs(address.sin_port);
+  listener_ = listenOnLoopback(0, &port_, "hostile server");
   thread_ = std::thread([this] { serve(); });
 }
 

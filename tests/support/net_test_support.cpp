@@ -140,22 +140,27 @@ std::string IdleConnection::read(std::chrono::milliseconds timeout) {
   return got;
 }
 
-ScriptedServer::ScriptedServer(Respond respond, int port) : respond_(std::move(respond)) {
-  listener_ = ::socket(AF_INET, SOCK_STREAM, 0);
+int listenOnLoopback(int port, int* bound_port, const char* who) {
+  const int listener = ::socket(AF_INET, SOCK_STREAM | SOCK_CLOEXEC, 0);
   const int yes = 1;
-  ::setsockopt(listener_, SOL_SOCKET, SO_REUSEADDR, &yes, sizeof yes);
+  ::setsockopt(listener, SOL_SOCKET, SO_REUSEADDR, &yes, sizeof yes);
   sockaddr_in address{};
   address.sin_family = AF_INET;
   address.sin_port = htons(static_cast<std::uint16_t>(port));
   address.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
-  if (::bind(listener_, reinterpret_cast<sockaddr*>(&address), sizeof address) != 0 ||
-      ::listen(listener_, 16) != 0) {
-    ::close(listener_);
-    throw std::runtime_error("scripted server: cannot listen");
+  if (::bind(listener, reinterpret_cast<sockaddr*>(&address), sizeof address) != 0 ||
+      ::listen(listener, 16) != 0) {
+    ::close(listener);
+    throw std::runtime_error(std::string(who) + ": cannot listen");
   }
   socklen_t length = sizeof address;
-  ::getsockname(listener_, reinterpret_cast<sockaddr*>(&address), &length);
-  port_ = ntohs(address.sin_port);
+  ::getsockname(listener, reinterpret_cast<sockaddr*>(&address), &length);
+  *bound_port = ntohs(address.sin_port);
+  return listener;
+}
+
+ScriptedServer::ScriptedServer(Respond respond, int port) : respond_(std::move(respond)) {
+  listener_ = listenOnLoopback(port, &port_, "scripted server");
   thread_ = std::thread([this] { serve(); });
 }
 

@@ -18,6 +18,10 @@
 
 namespace octopoint::testing {
 
+// A socket listening on 127.0.0.1:`port` (0: a free port, which `*bound_port` receives). Throws
+// std::runtime_error "WHO: cannot listen" when it cannot bind or listen.
+int listenOnLoopback(int port, int* bound_port, const char* who);
+
 // The default model as a chunked file (depths 5 to 8, chunks of 1024 and 1500 bytes): what the
 // transport's tests serve, made once.
 const std::vector<std::uint8_t>& streamedModelImage();
