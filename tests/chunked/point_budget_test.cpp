@@ -21,7 +21,7 @@ using octopoint::testing::Bytes;
 using octopoint::testing::makeCamera;
 
 // The default model at depths 4..8 in small chunks (as tests/chunked/progressive_model_test.cpp).
-struct Fixture {
+struct BudgetFixture {
   prepare::PreparedModel prepared =
       fuzzing::preparedModel(*models::defaultModel(), {4, 5, 6, 7, 8});
   Bytes image = prepare::serializeChunkedModel(prepared, {64, 600});
@@ -39,8 +39,8 @@ struct Fixture {
   }
 };
 
-const Fixture& fixture() {
-  static const Fixture f;
+const BudgetFixture& fixture() {
+  static const BudgetFixture f;
   return f;
 }
 
@@ -84,7 +84,7 @@ Vec3 regionCentre(const ProgressiveModel& model, const Camera& camera, int level
 }
 
 TEST(PointBudget, ChunksOverTheBudgetAreDrawnAsIfTheyHadNotArrived) {
-  const Fixture& f = fixture();
+  const BudgetFixture& f = fixture();
   const ProgressiveModel model = f.whole();
   for (const Camera& camera : {makeCamera(30, -20, 1, 320, 240), makeCamera(0, 0, 2, 320, 240),
                                makeCamera(160, 30, 0.5, 320, 240)}) {
@@ -126,7 +126,7 @@ TEST(PointBudget, ChunksOverTheBudgetAreDrawnAsIfTheyHadNotArrived) {
 // Zoomed out so that every region lies whole on screen: all are as large on screen, so the budget
 // keeps the nearest (smallest z) and draws the farther ones coarser.
 TEST(PointBudget, KeepsTheNearestChunksAtTheirDepth) {
-  const Fixture& f = fixture();
+  const BudgetFixture& f = fixture();
   const ProgressiveModel model = f.whole();
   for (const int yaw : {0, 180, 90}) {
     const Camera camera = makeCamera(yaw, 10, 0.5, 320, 240);
@@ -156,7 +156,7 @@ TEST(PointBudget, KeepsTheNearestChunksAtTheirDepth) {
 // whose chunks then all give way to the base): the frame of a model that has only the record
 // tables, drawn that many levels coarser.
 TEST(PointBudget, ABudgetTooSmallForOneDepthCoarserDrawsALevelAbove) {
-  const Fixture& f = fixture();
+  const BudgetFixture& f = fixture();
   const ProgressiveModel model = f.whole();
   ProgressiveModel tables_only = f.headOnly();
   octopoint::testing::feedTables(tables_only, f.image);
@@ -175,7 +175,7 @@ TEST(PointBudget, ABudgetTooSmallForOneDepthCoarserDrawsALevelAbove) {
 }
 
 TEST(PointBudget, ABudgetTheViewFitsChangesNothing) {
-  const Fixture& f = fixture();
+  const BudgetFixture& f = fixture();
   const ProgressiveModel model = f.whole();
   const Camera camera = makeCamera(30, -20, 1, 320, 240);
   ProgressiveFrame snapshot;

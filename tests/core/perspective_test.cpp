@@ -34,7 +34,7 @@ TEST(PerspectiveCamera, LooksAlongZAndTurnsRightUpAndRollsAsDocumented) {
   const std::int64_t u = kPerspectiveUnit / 2;
   for (const Case& c : {Case{0, 0, {0, 0, u}}, Case{90, 0, {u, 0, 0}}, Case{-90, 0, {-u, 0, 0}},
                         Case{0, 90, {0, -u, 0}}, Case{0, -90, {0, u, 0}}}) {
-    SCOPED_TRACE(testing::Message() << "yaw " << c.yaw << " pitch " << c.pitch);
+    SCOPED_TRACE(::testing::Message() << "yaw " << c.yaw << " pitch " << c.pitch);
     camera.yaw = Angle::fromDegrees(c.yaw);
     camera.pitch = Angle::fromDegrees(c.pitch);
     const PerspectiveView view = viewOf(camera);

@@ -37,8 +37,9 @@ using octopoint::Rotation;
 using octopoint::rotationFromYawPitchRoll;
 using Matrix = std::array<std::array<long double, 3>, 3>;
 
-constexpr int32_t kOneQ30 = int32_t{1} << 30;
-constexpr long double kTwoTo30 = 1073741824.0L;
+// 1.0 in Q1.30, the rotation entries' format, and its scale as a long double.
+constexpr int32_t kRotationOne = int32_t{1} << 30;
+constexpr long double kRotationScale = 1073741824.0L;
 // Documented bound (rotation.h), in Q30 ulps per entry, and for row/column dot products.
 constexpr long double kEntryBoundUlp = 3.5L;
 constexpr long double kOrthonormalBoundUlp = 12.2L;
@@ -78,7 +79,7 @@ long double maxEntryErrorUlp(const Rotation& actual, const Matrix& exact) {
   long double worst = 0;
   for (int row = 0; row < 3; ++row) {
     for (int col = 0; col < 3; ++col) {
-      worst = std::max(worst, std::fabs(actual.m_q30[row][col] - exact[row][col] * kTwoTo30));
+      worst = std::max(worst, std::fabs(actual.m_q30[row][col] - exact[row][col] * kRotationScale));
     }
   }
   return worst;
@@ -98,7 +99,7 @@ TEST(Rotation, ZeroAnglesGiveTheIdentityExactly) {
   const Rotation identity = octopoint::identityRotation();
   for (int row = 0; row < 3; ++row) {
     for (int col = 0; col < 3; ++col) {
-      EXPECT_EQ(identity.m_q30[row][col], row == col ? kOneQ30 : 0);
+      EXPECT_EQ(identity.m_q30[row][col], row == col ? kRotationOne : 0);
     }
   }
   EXPECT_EQ(rotationFromYawPitchRoll(Angle{}, Angle{}, Angle{}), identity);
@@ -150,7 +151,7 @@ TEST(Rotation, ComposedAnglesMatchRzRxRyWithinBound) {
 }
 
 TEST(Rotation, RowsAndColumnsAreOrthonormalWithinBound) {
-  const int64_t bound_q60 = static_cast<int64_t>(kOrthonormalBoundUlp * kTwoTo30);
+  const int64_t bound_q60 = static_cast<int64_t>(kOrthonormalBoundUlp * kRotationScale);
   for (int64_t yaw_units = 7; yaw_units < Angle::kUnitsPerTurn; yaw_units += 2711) {
     for (int64_t pitch_units = 1; pitch_units < Angle::kUnitsPerTurn; pitch_units += 2711) {
       for (int64_t roll_units = 13; roll_units < Angle::kUnitsPerTurn; roll_units += 2711) {
@@ -179,17 +180,17 @@ TEST(Rotation, RowsAndColumnsAreOrthonormalWithinBound) {
 TEST(Rotation, QuarterTurnsAreExactSignedPermutations) {
   // Yaw +90: x -> -z and z -> +x (y down, z away: turning the head right).
   const Rotation yaw = rotationFromYawPitchRoll(Angle::fromDegrees(90), Angle{}, Angle{});
-  EXPECT_EQ(apply(yaw, {1, 0, 0}), (std::array<int64_t, 3>{0, 0, -kOneQ30}));
-  EXPECT_EQ(apply(yaw, {0, 0, 1}), (std::array<int64_t, 3>{kOneQ30, 0, 0}));
-  EXPECT_EQ(apply(yaw, {0, 1, 0}), (std::array<int64_t, 3>{0, kOneQ30, 0}));
+  EXPECT_EQ(apply(yaw, {1, 0, 0}), (std::array<int64_t, 3>{0, 0, -kRotationOne}));
+  EXPECT_EQ(apply(yaw, {0, 0, 1}), (std::array<int64_t, 3>{kRotationOne, 0, 0}));
+  EXPECT_EQ(apply(yaw, {0, 1, 0}), (std::array<int64_t, 3>{0, kRotationOne, 0}));
   // Pitch +90: y -> +z and z -> -y.
   const Rotation pitch = rotationFromYawPitchRoll(Angle{}, Angle::fromDegrees(90), Angle{});
-  EXPECT_EQ(apply(pitch, {0, 1, 0}), (std::array<int64_t, 3>{0, 0, kOneQ30}));
-  EXPECT_EQ(apply(pitch, {0, 0, 1}), (std::array<int64_t, 3>{0, -kOneQ30, 0}));
+  EXPECT_EQ(apply(pitch, {0, 1, 0}), (std::array<int64_t, 3>{0, 0, kRotationOne}));
+  EXPECT_EQ(apply(pitch, {0, 0, 1}), (std::array<int64_t, 3>{0, -kRotationOne, 0}));
   // Roll +90: x -> +y and y -> -x.
   const Rotation roll = rotationFromYawPitchRoll(Angle{}, Angle{}, Angle::fromDegrees(90));
-  EXPECT_EQ(apply(roll, {1, 0, 0}), (std::array<int64_t, 3>{0, kOneQ30, 0}));
-  EXPECT_EQ(apply(roll, {0, 1, 0}), (std::array<int64_t, 3>{-kOneQ30, 0, 0}));
+  EXPECT_EQ(apply(roll, {1, 0, 0}), (std::array<int64_t, 3>{0, kRotationOne, 0}));
+  EXPECT_EQ(apply(roll, {0, 1, 0}), (std::array<int64_t, 3>{-kRotationOne, 0, 0}));
   // Every combination of quarter turns is the exact signed permutation of the textbook product.
   for (int yaw_q = 0; yaw_q < 4; ++yaw_q) {
     for (int pitch_q = 0; pitch_q < 4; ++pitch_q) {
@@ -202,7 +203,7 @@ TEST(Rotation, QuarterTurnsAreExactSignedPermutations) {
         for (int row = 0; row < 3; ++row) {
           int nonzero = 0;
           for (int col = 0; col < 3; ++col) {
-            const auto expected = static_cast<int32_t>(std::lround(exact[row][col])) * kOneQ30;
+            const auto expected = static_cast<int32_t>(std::lround(exact[row][col])) * kRotationOne;
             ASSERT_EQ(actual.m_q30[row][col], expected) << ::testing::PrintToString(actual);
             nonzero += expected != 0 ? 1 : 0;
           }
@@ -221,9 +222,9 @@ TEST(Rotation, MultiplyRotationsRoundsEachEntryToNearestWithTiesUp) {
     for (int row = 0; row < 3; ++row) {
       for (int col = 0; col < 3; ++col) {  // Q1.30 entries in [-1/2, 1/2]: sums stay in [-3/4, 3/4]
         lhs.m_q30[row][col] = static_cast<int32_t>(
-            static_cast<int64_t>(rng() % (uint64_t{1} << 30 | 1)) - kOneQ30 / 2);
+            static_cast<int64_t>(rng() % (uint64_t{1} << 30 | 1)) - kRotationOne / 2);
         rhs.m_q30[row][col] = static_cast<int32_t>(
-            static_cast<int64_t>(rng() % (uint64_t{1} << 30 | 1)) - kOneQ30 / 2);
+            static_cast<int64_t>(rng() % (uint64_t{1} << 30 | 1)) - kRotationOne / 2);
       }
     }
     const Rotation product = octopoint::multiplyRotations(lhs, rhs);
@@ -236,7 +237,7 @@ TEST(Rotation, MultiplyRotationsRoundsEachEntryToNearestWithTiesUp) {
         // floor(sum / 2^30 + 1/2), with floor division written out for negative sums.
         const int64_t shifted = sum_q60 + (int64_t{1} << 29);
         const int64_t expected =
-            shifted >= 0 ? shifted / kOneQ30 : -((-shifted + kOneQ30 - 1) / kOneQ30);
+            shifted >= 0 ? shifted / kRotationOne : -((-shifted + kRotationOne - 1) / kRotationOne);
         ASSERT_EQ(product.m_q30[row][col], expected)
             << ::testing::PrintToString(lhs) << ::testing::PrintToString(rhs);
       }
@@ -246,9 +247,9 @@ TEST(Rotation, MultiplyRotationsRoundsEachEntryToNearestWithTiesUp) {
   Rotation tiny{};
   tiny.m_q30[0][0] = 1;
   Rotation half{};
-  half.m_q30[0][0] = kOneQ30 / 2;
+  half.m_q30[0][0] = kRotationOne / 2;
   EXPECT_EQ(octopoint::multiplyRotations(tiny, half).m_q30[0][0], 1);
-  half.m_q30[0][0] = -kOneQ30 / 2;
+  half.m_q30[0][0] = -kRotationOne / 2;
   EXPECT_EQ(octopoint::multiplyRotations(tiny, half).m_q30[0][0], 0);
 }
 

@@ -59,7 +59,7 @@ std::vector<std::pair<int, int>> shapes() {
   return list;
 }
 
-std::vector<VariantInfo> splattingVariants() {
+std::vector<VariantInfo> splattingVariantInfos() {
   std::vector<VariantInfo> variants;
   for (const VariantInfo& info : allVariants()) {
     if (drawsSplats(info.variant)) variants.push_back(info);
@@ -105,7 +105,7 @@ TEST(SplatKernels, EveryFootprintShapeDrawsItsDefinition) {
         Framebuffer reference(view.width, view.height), candidate(view.width, view.height);
         reference.clear();
         testing_support::ReferenceSplat::draw(level, setup, reference);
-        for (const VariantInfo& info : splattingVariants()) {
+        for (const VariantInfo& info : splattingVariantInfos()) {
           candidate.clear();
           ASSERT_TRUE(renderLevel(info.variant, level, setup, candidate));
           ASSERT_TRUE(std::ranges::equal(candidate.pixels(), reference.pixels()))

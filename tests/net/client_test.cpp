@@ -20,8 +20,6 @@ using namespace std::chrono_literals;
 using Bytes = std::vector<std::uint8_t>;
 using octopoint::testing::ScriptedServer;
 
-const Bytes& modelImage() { return testing::streamedModelImage(); }
-
 net::HttpUrl urlOf(int port, const std::string& path = "/model.oct") {
   return *net::parseHttpUrl("http://127.0.0.1:" + std::to_string(port) + path, nullptr);
 }
@@ -33,7 +31,7 @@ std::string slice(const Bytes& file, std::uint64_t first, std::uint64_t last) {
 
 // A correct answer for [first, last] of the model, last clamped to the file.
 bool answerHonestly(std::uint64_t first, std::uint64_t last, int sock) {
-  const Bytes& file = modelImage();
+  const Bytes& file = testing::streamedModelImage();
   last = std::min<std::uint64_t>(last, file.size() - 1);
   ScriptedServer::sendAll(
       sock, ScriptedServer::partialHeader(first, last, file.size(), last - first + 1) +
@@ -55,12 +53,13 @@ TEST(RangeClient, TakesAnHonestAnswer) {
   Bytes body;
   const net::FetchResult result = fetchFrom(server.port(), 100, 50, &body);
   EXPECT_EQ(result.status, net::FetchStatus::kOk) << result.message;
-  EXPECT_EQ(body, Bytes(modelImage().begin() + 100, modelImage().begin() + 150));
-  EXPECT_EQ(result.file_size, modelImage().size());
+  EXPECT_EQ(body, Bytes(testing::streamedModelImage().begin() + 100,
+                        testing::streamedModelImage().begin() + 150));
+  EXPECT_EQ(result.file_size, testing::streamedModelImage().size());
 }
 
 TEST(RangeClient, RefusesEveryWrongAnswer) {
-  const Bytes& file = modelImage();
+  const Bytes& file = testing::streamedModelImage();
   struct Case {
     const char* what;
     ScriptedServer::Respond respond;
@@ -135,7 +134,7 @@ TEST(RangeClient, RefusesEveryWrongAnswer) {
 }
 
 TEST(RangeClient, GivesUpOnAStalledOrTricklingServer) {
-  const Bytes& file = modelImage();
+  const Bytes& file = testing::streamedModelImage();
   ScriptedServer stall([&](std::uint64_t first, std::uint64_t last, int sock) {
     ScriptedServer::sendAll(
         sock, ScriptedServer::partialHeader(first, last, file.size(), last - first + 1) +
@@ -153,7 +152,10 @@ TEST(RangeClient, GivesUpOnAStalledOrTricklingServer) {
 
 std::uint64_t firstChunkOffset() {
   static const std::uint64_t offset =
-      ProgressiveModel::fromHead(modelImage(), nullptr)->head().levels[1].chunks_offset;
+      ProgressiveModel::fromHead(testing::streamedModelImage(), nullptr)
+          ->head()
+          .levels[1]
+          .chunks_offset;
   return offset;
 }
 
@@ -169,7 +171,7 @@ struct DamagingServer {
   std::mutex mutex;
   std::map<std::uint64_t, int> answers;  // per last byte asked for: per item (one per request)
   ScriptedServer server{[this](std::uint64_t first, std::uint64_t last, int sock) {
-    const Bytes& file = modelImage();
+    const Bytes& file = testing::streamedModelImage();
     last = std::min<std::uint64_t>(last, file.size() - 1);
     std::string body = slice(file, first, last);
     int seen = 0;
@@ -195,7 +197,8 @@ Framebuffer drawnFrame(net::ModelStream& stream, const Camera& camera) {
 }
 
 Framebuffer wholeFileFrame(const Camera& camera) {
-  std::optional<ProgressiveModel> whole = progressiveModelFromPrefix(modelImage(), nullptr);
+  std::optional<ProgressiveModel> whole =
+      progressiveModelFromPrefix(testing::streamedModelImage(), nullptr);
   Framebuffer frame(camera.width, camera.height);
   frame.clear();
   EXPECT_TRUE(whole->draw(camera, Variant::kFixedFast, frame));
@@ -240,7 +243,8 @@ TEST(ModelStream, GivesUpOnAChunkDamagedEveryTimeAndNeverDrawsIt) {
   for (const auto& [last, count] : damaging.answers)
     EXPECT_LE(count, ProgressiveModel::kMaxChunkAttempts);
   // What it draws is the base alone: the head, which is whole.
-  std::optional<ProgressiveModel> head_only = ProgressiveModel::fromHead(modelImage(), nullptr);
+  std::optional<ProgressiveModel> head_only =
+      ProgressiveModel::fromHead(testing::streamedModelImage(), nullptr);
   Framebuffer base(camera.width, camera.height);
   base.clear();
   EXPECT_TRUE(head_only->draw(camera, Variant::kFixedFast, base));
@@ -249,7 +253,7 @@ TEST(ModelStream, GivesUpOnAChunkDamagedEveryTimeAndNeverDrawsIt) {
 
 TEST(ModelStream, KeepsWhatItHasWhenTheServerDiesAndResumesWhenItReturns) {
   testing::TempFolder folder;
-  folder.write("model.oct", modelImage());
+  folder.write("model.oct", testing::streamedModelImage());
   net::ServerOptions options;
   options.root = folder.path();
   options.port = 0;

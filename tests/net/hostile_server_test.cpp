@@ -26,8 +26,6 @@ using testing::HostileOptions;
 using testing::HostileServer;
 using testing::Lie;
 
-const Bytes& modelImage() { return testing::streamedModelImage(); }
-
 // The process's peak resident memory so far, in MB (VmHWM).
 long peakMegabytes() {
   std::ifstream status("/proc/self/status");
@@ -111,7 +109,7 @@ TEST(HostileServer, EveryLieIsRefusedAtOnceInWordsWithBoundedMemory) {
   timeouts.read_seconds = 1;             // silence: the only case that waits, this long
   timeouts.min_bytes_per_second = 4000;  // the trickle: cut off after 1 s + 4000 B / 4000 B/s
   for (const LieCase& c : everyLie()) {
-    HostileServer server(modelImage(), c.options);
+    HostileServer server(testing::streamedModelImage(), c.options);
     const Fetched fetched = fetchFrom(server.url(), 1000, 4000, timeouts);
     const std::string& message = fetched.result.message;
     EXPECT_EQ(fetched.result.status, c.expected) << c.what << ": " << message;
@@ -130,7 +128,7 @@ TEST(HostileServer, WhatIsWithinTheLimitsIsTaken) {
   for (const HostileOptions& options :
        {HostileOptions{Lie::kNone}, HostileOptions{Lie::kLongStatus, 8'000},
         HostileOptions{Lie::kLongHeader, 8'000}, HostileOptions{Lie::kManyHeaders, 98}}) {
-    HostileServer server(modelImage(), options);
+    HostileServer server(testing::streamedModelImage(), options);
     const Fetched fetched = fetchFrom(server.url(), 1000, 4000, {});
     EXPECT_EQ(fetched.result.status, net::FetchStatus::kOk)
         << static_cast<int>(options.lie) << " " << options.size << ": " << fetched.result.message;
@@ -139,8 +137,8 @@ TEST(HostileServer, WhatIsWithinTheLimitsIsTaken) {
 }
 
 TEST(HostileServer, ARangeCutAtTheFilesEndIsTakenAndOnlyThere) {
-  HostileServer server(modelImage(), {});
-  const std::uint64_t size = modelImage().size();
+  HostileServer server(testing::streamedModelImage(), {});
+  const std::uint64_t size = testing::streamedModelImage().size();
   for (const std::uint64_t before_end : {1u, 100u, 4095u}) {
     const Fetched fetched = fetchFrom(server.url(), size - before_end, 4096, {});
     EXPECT_EQ(fetched.result.status, net::FetchStatus::kOk) << fetched.result.message;
@@ -174,7 +172,10 @@ TEST(HostileServer, ARefusedConnectionIsReportedAtOnce) {
 // head fails the stream within a second or two, saying why.
 TEST(HostileServer, AStreamGivesUpOnALyingServerSoon) {
   const std::uint64_t after_head =
-      ProgressiveModel::fromHead(modelImage(), nullptr)->head().levels[1].chunks_offset;
+      ProgressiveModel::fromHead(testing::streamedModelImage(), nullptr)
+          ->head()
+          .levels[1]
+          .chunks_offset;
   const std::vector<std::pair<HostileOptions, const char*>> cases = {
       {{Lie::kStatus, 500, after_head}, "answered 500"},
       {{Lie::kWrongTotal, 0, 0}, "changed"},
@@ -184,7 +185,7 @@ TEST(HostileServer, AStreamGivesUpOnALyingServerSoon) {
       {{Lie::kRedirect, 0, 0}, "redirect"},
   };
   for (const auto& [options, says] : cases) {
-    HostileServer server(modelImage(), options);
+    HostileServer server(testing::streamedModelImage(), options);
     net::StreamOptions stream_options;
     stream_options.give_up_after = 3;
     stream_options.prefetch_invisible = false;

@@ -22,7 +22,7 @@ namespace {
 // Depth 7 (128 voxels per cube edge) on a 160x120 frame at zoom 0.5..1: the cube spans 60..120
 // pixels, so a voxel covers at most one pixel, as "depths": "auto" would choose. (At a larger zoom
 // the decoder's one pixel per leaf leaves gaps in a surface, and voxels behind it win there.)
-constexpr int kDepth = 7;
+constexpr int kVisibilityDepth = 7;
 constexpr int kWidth = 160;
 constexpr int kHeight = 120;
 
@@ -47,7 +47,7 @@ struct ModelPair {
 ModelPair prepareBoth(const prepare::Scan& scan, const std::vector<Camera>& cameras) {
   prepare::PrepareOptions options;
   options.name = "scene_test";
-  options.depths = {kDepth};
+  options.depths = {kVisibilityDepth};
   ModelPair pair;
   pair.unpruned_image = prepare::serializeModel(prepare::prepareModel(scan, "scan.pcd", options));
   options.visibility_cameras = cameras;
@@ -58,7 +58,8 @@ ModelPair prepareBoth(const prepare::Scan& scan, const std::vector<Camera>& came
 Framebuffer draw(const ModelView& model, const Camera& camera,
                  Variant variant = Variant::kFixedBaseline) {
   FrameSetup setup;
-  EXPECT_EQ(buildFrameSetup(camera, kDepth, kDefaultFractionBits, &setup), CameraError::kNone);
+  EXPECT_EQ(buildFrameSetup(camera, kVisibilityDepth, kDefaultFractionBits, &setup),
+            CameraError::kNone);
   Framebuffer frame(camera.width, camera.height);
   frame.clear();
   EXPECT_TRUE(renderLevel(variant, model.finestLevel(), setup, frame));
@@ -118,7 +119,8 @@ TEST(VisibilityPruning, ZoomedInSampledViewsDrawTheUnprunedFrameWithSplatsAndWit
   for (const Variant variant : {defaultVariant(), Variant::kFixedBaseline}) {
     for (const Camera& camera : cameras) {
       FrameSetup setup;
-      ASSERT_EQ(buildFrameSetup(camera, kDepth, kDefaultFractionBits, &setup), CameraError::kNone);
+      ASSERT_EQ(buildFrameSetup(camera, kVisibilityDepth, kDefaultFractionBits, &setup),
+                CameraError::kNone);
       ASSERT_TRUE(setup.splat.active());
       const Comparison result = compare(pair, camera, variant);
       ASSERT_GT(result.object_pixels, 500u);
@@ -170,17 +172,18 @@ TEST(VisibilityPruning, AFrontalOnlySceneRemovesTheBackOfAClosedSphereEntirely) 
   // through.
   const prepare::Scan sphere = testing::colouredSphere(1000000);
   const prepare::CubeFit fit = prepare::fitCube(sphere.positions, "sphere.pcd");
-  const prepare::VoxelSet voxels = prepare::voxelize(sphere, fit, kDepth);
+  const prepare::VoxelSet voxels = prepare::voxelize(sphere, fit, kVisibilityDepth);
   prepare::Scene scene = frontalScene();
   scene.yaw_deg = prepare::Range{0, 0};
   scene.pitch_deg = prepare::Range{0, 0};
   const std::vector<std::uint8_t> visible =
-      prepare::visibleVoxels(voxels.keys, kDepth, prepare::sceneCameras(scene));
-  constexpr std::uint32_t kCentre = 1u << (kDepth - 1);  // z index of the cube's middle plane
+      prepare::visibleVoxels(voxels.keys, kVisibilityDepth, prepare::sceneCameras(scene));
+  constexpr std::uint32_t kCentre =
+      1u << (kVisibilityDepth - 1);  // z index of the cube's middle plane
   std::size_t kept = 0, back = 0, back_kept = 0;
   for (std::size_t i = 0; i < voxels.keys.size(); ++i) {
     const std::uint32_t z =
-        prepare::mortonDecode(voxels.keys[i], kDepth)[2];  // away from the viewer
+        prepare::mortonDecode(voxels.keys[i], kVisibilityDepth)[2];  // away from the viewer
     const bool is_back =
         z >= kCentre + 2;  // behind the silhouette's rim, which straddles the middle
     back += is_back;

@@ -47,20 +47,20 @@ class GrowingPrefix {
   std::vector<std::uint8_t> bytes_;
 };
 
-const std::vector<std::uint8_t>& defaultModelImage() {
+const std::vector<std::uint8_t>& truncatedModelSource() {
   static const std::vector<std::uint8_t> image = fuzzing::octImage(*models::defaultModel());
   return image;
 }
 
 TEST(TruncationSweep, TheWholeDefaultModelValidates) {
   ModelIssue issue;
-  const auto model = ModelView::fromBytes(defaultModelImage(), &issue);
+  const auto model = ModelView::fromBytes(truncatedModelSource(), &issue);
   ASSERT_TRUE(model.has_value()) << describe(issue.error) << " at byte " << issue.offset;
   EXPECT_EQ(model->levelCount(), models::defaultModel()->level_count);
 }
 
 TEST(TruncationSweep, EveryPrefixOfTheDefaultModelIsRefused) {
-  const std::vector<std::uint8_t>& image = defaultModelImage();
+  const std::vector<std::uint8_t>& image = truncatedModelSource();
   // Version 2: 788 header bytes, 6 per normal palette entry (count at byte 18), 12 per level row.
   ASSERT_EQ(image[4], 2);
   const std::size_t normal_count = image[18] | std::size_t{image[19]} << 8;
