@@ -12,9 +12,10 @@ trap 'stop_pid "$SERVE_PID"' EXIT
 url="http://127.0.0.1:$SERVE_PORT/small.oct"
 size=$(stat -c %s "$work/models/small.oct")
 [ "$size" -lt 200000 ] || fail "the model is $size bytes, not a small one"
-# Every 197 bytes (so that the cuts fall at many offsets within requests) and a few around the
-# size; smaller steps near the first requests, where the budget ends inside them.
-cuts=$( (seq 1 197 $((size + 500)); seq 3000 41 9000; echo $((size - 1)) "$size" $((size + 1))) |
+# Every 997 bytes and a few around the size; smaller steps near the first requests, where the
+# budget ends inside them. The stream itself is cut every 13 bytes in-process (ByteBudget in
+# net_tests); here each cut is a whole octopoint-render run.
+cuts=$( (seq 1 997 $((size + 500)); seq 3000 211 9000; echo $((size - 1)) "$size" $((size + 1))) |
   sort -nu)
 drawn=0
 for n in $cuts; do
@@ -30,5 +31,5 @@ for n in $cuts; do
     *) fail "--bytes $n: exit $rc: $(cat "$work/err")" ;;
   esac
 done
-[ "$drawn" -gt 10 ] || fail "only $drawn cuts drew a picture"
+[ "$drawn" -gt 5 ] || fail "only $drawn cuts drew a picture"
 echo "ok: $(echo "$cuts" | wc -w) cuts of a $size-byte model, $drawn drew at once, none hung"
