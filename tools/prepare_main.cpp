@@ -105,7 +105,8 @@ same byte for byte whatever --memory and --threads (docs/preparer.md).
   --memory MB           memory budget for the points in flight (default 1024, 1..1048576):
                         beyond it they go to temporary files; the model itself comes on top
   --threads N           threads to use (default: every core; 1..1024); fewer when the system
-                        refuses more (an address-space or process limit), with the same output
+                        refuses more (an address-space or process limit), with the same output;
+                        --normals' estimation (PCL, OpenMP) takes at most one per core
   --temp-dir DIR        where the temporary files go (default: $TMPDIR, else /tmp); they are
                         deleted as soon as they are made, so nothing is left behind
   --progress            show progress on stderr (phase, points done, points/s, time left) even
