@@ -14,6 +14,9 @@ namespace fs = std::filesystem;
 
 // No number a scan writer writes is longer (a double with 17 digits, sign and exponent is ~24).
 constexpr std::size_t kMaxValueChars = 64;
+// PCL skips blank lines and any spaces; a writer pads columns with a few. 64 KiB of nothing else
+// in a row is not data.
+constexpr std::uint64_t kMaxSpaceRun = 1 << 16;
 
 // The whole of `text` as a value of `type`: floats may be nan or inf (dropped points are written
 // so); integers must be whole and fit the size. Sets `value` for integers (a PLY list's count).
@@ -61,19 +64,29 @@ class BodyChecker {
     skipFinishedElements();
   }
 
+  // A value longer than any number, or a long run of white space, fails where it starts to be
+  // one: a 1 GiB body of NUL bytes or of spaces is refused after 64 KiB, not after reading it all.
   void feed(std::string_view chunk) {
     for (char c : chunk) {
       if (c == ' ' || c == '\t' || c == '\r' || c == '\n') {
         endValue();
+        if (++space_run_ > kMaxSpaceRun) {
+          fail(path_,
+               "more than " + std::to_string(kMaxSpaceRun) +
+                   " bytes of white space in a row (spaces or blank lines): not scan data",
+               where());
+        }
         if (c == '\n') endLine(false);
-      } else if (token_.size() <= kMaxValueChars) {
+      } else {
+        space_run_ = 0;
         token_ += c;
+        if (token_.size() > kMaxValueChars) endValue();  // fails: no value is that long
       }
     }
   }
 
   void finish() {
-    endValue();
+    endValue(true);
     const std::size_t end_line = line_;  // the last line, or the empty one after a final newline
     endLine(true);
     if (element_ < elements_.size()) {
@@ -124,7 +137,8 @@ class BodyChecker {
     return false;
   }
 
-  void endValue() {
+  // `at_end_of_file`: the file ends right after this value, so one that does not parse may be cut.
+  void endValue(bool at_end_of_file = false) {
     if (token_.empty()) return;
     if (element_ == elements_.size()) {
       fail(path_, "more data lines than the header declares", where());
@@ -140,10 +154,14 @@ class BodyChecker {
     const ValueType& type = is_count ? property.list_count : property.type;
     std::uint64_t value = 0;
     if (token_.size() > kMaxValueChars || !parsesAs(token_, type, &value)) {
+      std::string quoted(1, '\'');  // appended: GCC 12 warns (-Wrestrict, wrongly) on "'" + s
+      quoted.append(printable(token_)).append("'");
+      const std::string expected = std::string(is_count ? "a list length, " : "") + "a " +
+                                   typeName(type) + " (" + elements_[element_].property_word +
+                                   " '" + printable(property.name) + "')";
       fail(path_,
-           "'" + printable(token_) + "' is not " + (is_count ? "a list length, " : "") + "a " +
-               typeName(type) + " (" + elements_[element_].property_word + " '" +
-               printable(property.name) + "')",
+           at_end_of_file ? "truncated: the data ends in " + quoted + ", which is not " + expected
+                          : quoted + " is not " + expected,
            where());
     }
     if (is_count) {
@@ -189,6 +207,7 @@ class BodyChecker {
   std::uint64_t blank_lines_ = 0;  // lines without a value among the data, skipped
   std::size_t first_blank_line_ = 0;
   std::string token_;
+  std::uint64_t space_run_ = 0;  // white space bytes since the last value byte
 };
 
 }  // namespace

@@ -27,6 +27,7 @@ struct AsciiProperty {
   std::uint64_t repeat = 1;
   bool is_list = false;
   ValueType list_count;
+  std::size_t header_line = 0;  // the header line that declares it, for messages
 };
 
 // `count` data lines, one per item (a PCD has one element: its points).

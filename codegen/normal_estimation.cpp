@@ -12,6 +12,7 @@
 #include <cmath>
 #include <limits>
 #include <memory>
+#include <thread>
 
 #include "codegen/prepare_error.h"
 #include "codegen/progress.h"
@@ -191,9 +192,13 @@ std::vector<Estimate> integralImageEstimates(const Scan& scan, double voxel_edge
 // k-NN PCA for the points listed in `todo`.
 void pcaEstimates(const pcl::PointCloud<pcl::PointXYZ>::ConstPtr& cloud,
                   const pcl::search::KdTree<pcl::PointXYZ>::Ptr& tree, const Scan& scan,
-                  int neighbours, const pcl::IndicesPtr& todo, std::vector<Estimate>& estimates) {
+                  int neighbours, unsigned threads, const pcl::IndicesPtr& todo,
+                  std::vector<Estimate>& estimates) {
   if (todo->empty()) return;
-  pcl::NormalEstimationOMP<pcl::PointXYZ, pcl::Normal> estimation;
+  // PCL's default (0) is a thread per core, whatever --threads said.
+  const unsigned cores = std::max(1u, std::thread::hardware_concurrency());
+  pcl::NormalEstimationOMP<pcl::PointXYZ, pcl::Normal> estimation(
+      threads == 0 ? cores : std::min(threads, cores));
   estimation.setInputCloud(cloud);
   estimation.setIndices(todo);
   estimation.setSearchMethod(tree);
@@ -341,7 +346,7 @@ std::vector<Vec3f> estimateNormals(const Scan& scan, double voxel_edge,
   }
   const int neighbours = std::min<int>(
       options.neighbours > 0 ? options.neighbours : kMaxPcaNeighbours, static_cast<int>(count));
-  pcaEstimates(cloud, tree, scan, neighbours, todo, estimates);
+  pcaEstimates(cloud, tree, scan, neighbours, options.threads, todo, estimates);
   if (!options.sharpen) {
     std::vector<Vec3f> normals;
     for (const Estimate& e : estimates) normals.push_back(e.normal);

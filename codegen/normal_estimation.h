@@ -36,6 +36,9 @@ struct NormalOptions {
   float smoothing_pixels = 0;
   float max_depth_change = 0.02f;  // integral images: a depth step of more than this x depth
   bool sharpen = true;             // the shifted-neighbourhood step (off: measurements only)
+  // Threads of the k-NN PCA (PCL's OpenMP estimator): octopoint-prepare --threads, at most one
+  // per core (libgomp ends the process when it cannot start one); 0: one per core.
+  unsigned threads = 0;
 };
 
 // Measured on synthetic spheres and planes with half a voxel of noise (docs/styles.md): a

@@ -89,7 +89,8 @@ VoxelSet keepVisible(const VoxelSet& voxels, const std::vector<std::uint8_t>& vi
 
 // Estimates the scan's normals, in the scan's own axes (integral images need the sensor's);
 // turning them moves no extent, so this fit's edge is the model's. Returns the neighbours used.
-int estimateScanNormals(Scan& scan, const std::string& scan_path, const PrepareOptions& options) {
+int estimateScanNormals(Scan& scan, const std::string& scan_path, const PrepareOptions& options,
+                        unsigned threads) {
   const CubeFit scan_fit = fitCube(scan.positions, scan_path);
   // The finest depth the model will keep (the same rule as voxelizeDepths', on the same counts).
   std::vector<std::size_t> counts;
@@ -97,6 +98,7 @@ int estimateScanNormals(Scan& scan, const std::string& scan_path, const PrepareO
   const std::size_t kept = options.stop_at_sparse_depth ? denseDepthCount(counts) : counts.size();
   const int finest = options.depths[kept - 1];
   NormalOptions normal_options = *options.normals;
+  normal_options.threads = threads;
   if (normal_options.neighbours == 0) {
     const auto voxels = static_cast<double>(counts[kept - 1]);
     normal_options.neighbours =
@@ -185,10 +187,11 @@ PreparedLevel storedLevel(VoxelSet& voxels, const Palette& palette,
 // The whole-scan pipeline, kept for models with normals: estimating a point's normal needs its
 // neighbours, which the streamed preparer's bins do not keep together.
 PreparedModel prepareWithNormals(const Scan& full_scan, const std::string& scan_path,
-                                 const PrepareOptions& options) {
+                                 const PrepareOptions& options, unsigned threads) {
   Scan scan = cleanScan(full_scan, scan_path, options);
   const auto normals_start = std::chrono::steady_clock::now();
-  const int normal_neighbours = options.normals ? estimateScanNormals(scan, scan_path, options) : 0;
+  const int normal_neighbours =
+      options.normals ? estimateScanNormals(scan, scan_path, options, threads) : 0;
   turnAxes(scan, options.axes);
   const CubeFit fit = fitCube(scan.positions, scan_path);
   std::vector<int> sparse_depths;
@@ -222,7 +225,7 @@ PreparedModel prepareWithNormals(const Scan& full_scan, const std::string& scan_
 
 PreparedModel prepareModel(const Scan& full_scan, const std::string& scan_path,
                            const PrepareOptions& options, unsigned threads) {
-  if (options.normals) return prepareWithNormals(full_scan, scan_path, options);
+  if (options.normals) return prepareWithNormals(full_scan, scan_path, options, threads);
   const Scan scan = modelPoints(full_scan, scan_path, options);
   PrepareOptions streamed = options;  // the points are cropped, cleaned and turned already
   streamed.crop.reset();

@@ -86,7 +86,8 @@ void turnAxes(Scan& scan, ScanAxes axes);
 // Throws PrepareError (naming `scan_path`) when the scan cannot be made into a model. The scan is
 // in memory already, so it is prepared in memory (codegen/streamed_prepare.h, with a budget that
 // holds it all) on `threads` threads (0: every core); the output does not depend on their number.
-// With normals (options.normals) it runs the whole-scan pipeline normal estimation was written on.
+// With normals (options.normals) it runs the whole-scan pipeline normal estimation was written on;
+// its k-NN PCA takes `threads` too, at most one per core (NormalOptions::threads).
 PreparedModel prepareModel(const Scan& scan, const std::string& scan_path,
                            const PrepareOptions& options, unsigned threads = 0);
 

@@ -15,6 +15,8 @@
 #include <cstring>
 #include <stdexcept>
 
+#include "net/name_lookup.h"
+
 namespace octopoint::net {
 namespace {
 
@@ -76,15 +78,10 @@ HttpConnection::Outcome HttpConnection::wait(short events, Clock::time_point dea
 
 std::string HttpConnection::connect(const std::string& host, int port, Clock::time_point deadline) {
   close();
-  addrinfo hints{};
-  hints.ai_family = AF_UNSPEC;
-  hints.ai_socktype = SOCK_STREAM;
-  addrinfo* found = nullptr;
-  const std::string service = std::to_string(port);
-  if (const int error = ::getaddrinfo(host.c_str(), service.c_str(), &hints, &found); error != 0)
-    return "cannot resolve " + host + ": " + ::gai_strerror(error);
+  Addresses found;
+  if (std::string why = lookUp(host, port, deadline, wake_, found); !why.empty()) return why;
   std::string why = "no address for " + host;
-  for (addrinfo* at = found; at != nullptr; at = at->ai_next) {
+  for (addrinfo* at = found.get(); at != nullptr; at = at->ai_next) {
     socket_ =
         ::socket(at->ai_family, at->ai_socktype | SOCK_NONBLOCK | SOCK_CLOEXEC, at->ai_protocol);
     if (socket_ < 0) {
@@ -115,7 +112,6 @@ std::string HttpConnection::connect(const std::string& host, int port, Clock::ti
           (error == ETIMEDOUT ? "no answer in time" : reason(error));
     close();
   }
-  ::freeaddrinfo(found);
   return socket_ >= 0 ? std::string() : why;
 }
 

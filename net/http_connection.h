@@ -21,7 +21,8 @@ class HttpConnection {
   HttpConnection(const HttpConnection&) = delete;
   HttpConnection& operator=(const HttpConnection&) = delete;
 
-  // Resolves `host` and connects to `port` before `deadline`; "" when connected, else why.
+  // Resolves `host` (net/name_lookup.h) and connects to `port` before `deadline`, the lookup
+  // included; "" when connected, else why.
   [[nodiscard]] std::string connect(const std::string& host, int port, Clock::time_point deadline);
   bool connected() const { return socket_ >= 0; }
   void close();

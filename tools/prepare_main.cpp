@@ -47,9 +47,10 @@ constexpr const char* kUsage = R"(usage: octopoint-prepare SCAN -o OUTDIR --name
 Turns a range scan (.las, .pcd or .ply: XYZ, XYZRGB/RGBA or XYZI, organized or not) into an
 octopoint model: OUTDIR/NAME.h, OUTDIR/NAME.cpp and OUTDIR/NAME_depthD.cpp (const arrays an app
 compiles in) and OUTDIR/NAME.oct (the same model as one binary file, for octopoint-render --file).
-LAS (1.0 to 1.4, point formats 0 to 10) and binary PCD/PLY are streamed: any number of points in
-bounded memory, on every core; other PCD/PLY files are loaded whole through PCL. The output is the
-same byte for byte whatever --memory and --threads (docs/preparer.md).
+LAS (1.0 to 1.4, point formats 0 to 10) and binary PCD/PLY (PLY of either byte order) are
+streamed: any number of points in bounded memory, on every core; other PCD/PLY files are loaded
+whole through PCL. The output is the same byte for byte whatever --memory and --threads
+(docs/preparer.md).
 
   SCAN                  the scan to read: a regular file, streamed ones of at most 4 TiB, those
                         PCL loads of at most 1 GiB; points with a NaN or infinite coordinate are
@@ -105,7 +106,8 @@ same byte for byte whatever --memory and --threads (docs/preparer.md).
   --memory MB           memory budget for the points in flight (default 1024, 1..1048576):
                         beyond it they go to temporary files; the model itself comes on top
   --threads N           threads to use (default: every core; 1..1024); fewer when the system
-                        refuses more (an address-space or process limit), with the same output
+                        refuses more (an address-space or process limit), with the same output;
+                        --normals' estimation (PCL, OpenMP) takes at most one per core
   --temp-dir DIR        where the temporary files go (default: $TMPDIR, else /tmp); they are
                         deleted as soon as they are made, so nothing is left behind
   --progress            show progress on stderr (phase, points done, points/s, time left) even

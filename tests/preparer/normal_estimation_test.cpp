@@ -8,9 +8,12 @@
 
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
+#include <thread>
 
 #include "codegen/cube_fit.h"
 #include "codegen/normal_palette.h"
+#include "codegen/prepare.h"
 #include "codegen/voxelizer.h"
 #include "tests/support/synthetic_surfaces.h"
 
@@ -118,6 +121,29 @@ TEST(NormalEstimation, NormalsFaceTheSensor) {
     const auto& n = scan.normals[i];
     ASSERT_LT(n[0] * p[0] + n[1] * p[1] + n[2] * p[2], 0.0f) << "point " << i;  // toward the origin
   }
+}
+
+// Threads this process has now.
+std::size_t threadsNow() {
+  std::size_t count = 0;
+  for ([[maybe_unused]] const auto& task : std::filesystem::directory_iterator("/proc/self/task"))
+    ++count;
+  return count;
+}
+
+// --threads 1 --normals: PCL's OpenMP estimator took a thread per core whatever it was told, and
+// libgomp keeps them after the estimate (idle, in its pool), which is what is counted here.
+TEST(NormalEstimation, TakesTheThreadsThePreparerIsGiven) {
+  if (std::thread::hardware_concurrency() < 2) GTEST_SKIP() << "one core: one thread either way";
+  const prepare::Scan scan = testing::scatteredScan(kPlane, 3000, 0.0, 5);
+  prepare::PrepareOptions options;
+  options.name = "plane";
+  options.depths = {4, 5};
+  options.normals = prepare::NormalOptions{};
+  const std::size_t before = threadsNow();
+  const prepare::PreparedModel model = prepare::prepareModel(scan, "plane", options, 1);
+  EXPECT_GT(model.normal_neighbours, 0);  // the k-NN PCA ran
+  EXPECT_EQ(threadsNow(), before);
 }
 
 TEST(NormalEstimation, RefusesFewerThanThreePoints) {
