@@ -231,7 +231,12 @@ fs::path bigEndianCopy(const fs::path& little, const fs::path& big) {
     if (keyword == "property") elements.back().second.push_back(plyTypeBytes(type));
     header += line + "\n";
   }
-  std::string body((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  // Read by size: GCC 12 warns of a null dereference in istreambuf_iterator here (unity build).
+  const std::streampos body_start = in.tellg();
+  in.seekg(0, std::ios::end);
+  std::string body(static_cast<std::size_t>(in.tellg() - body_start), '\0');
+  in.seekg(body_start);
+  in.read(body.data(), static_cast<std::streamsize>(body.size()));
   std::size_t at = 0;
   for (const auto& [count, sizes] : elements) {
     for (std::uint64_t item = 0; item < count; ++item) {
