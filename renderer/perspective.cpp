@@ -183,11 +183,13 @@ std::optional<AffineProjection> affineAt(const PerspectiveView& view, const Came
   if (!projected) return std::nullopt;
   assert(magnitude(centre.x) < (std::int64_t{1} << 32) &&
          magnitude(centre.y) < (std::int64_t{1} << 32));
-  // f / z in Q.16 pixels per cube edge; the slopes x / z and y / z in Q.30.
+  // f / z in Q.16 pixels per cube edge; the slopes x / z and y / z in Q.30. Each numerator is
+  // shifted first (f < 2^32, |x|, |y| < 2^32: below 2^62), so that divShiftRound is one hardware
+  // division, not a loop of one quotient bit per shift step: this runs once per subtree drawn.
   const std::optional<std::int64_t> inverse =
-      divShiftRound(view.focal_q16, centre.z, kPerspectiveUnitBits);
-  const std::optional<std::int64_t> slope_x = divShiftRound(centre.x, centre.z, 30);
-  const std::optional<std::int64_t> slope_y = divShiftRound(centre.y, centre.z, 30);
+      divShiftRound(view.focal_q16 * (std::int64_t{1} << kPerspectiveUnitBits), centre.z, 0);
+  const std::optional<std::int64_t> slope_x = divShiftRound(centre.x * kQ30One, centre.z, 0);
+  const std::optional<std::int64_t> slope_y = divShiftRound(centre.y * kQ30One, centre.z, 0);
   if (!inverse || !slope_x || !slope_y) return std::nullopt;
   AffineProjection affine;
   affine.centre = *projected;
