@@ -162,18 +162,20 @@ class PerspectiveWalk {
   // so four are made and four negated. No division.
   void drawAffine(int level, std::uint8_t mask, const AffineProjection& affine) {
     const auto& a = affine.axis;
-    Point3<std::int64_t> sums[4];
-    for (unsigned k = 0; k < 4; ++k) {  // x's sign is - (bit 4 clear)
-      const std::int64_t sy = (k & 2) ? 1 : -1, sz = (k & 1) ? 1 : -1;
-      sums[k] = {sy * a[1].x + sz * a[2].x - a[0].x, sy * a[1].y + sz * a[2].y - a[0].y,
-                 sy * a[1].z + sz * a[2].z - a[0].z};
-    }
+    // Children 0 to 3 (x's sign -): -a0 -+ a1 -+ a2.
+    const Point3<std::int64_t> down = sub(neg(a[0]), a[1]), up = add(neg(a[0]), a[1]);
+    const Point3<std::int64_t> sums[4] = {sub(down, a[2]), add(down, a[2]), sub(up, a[2]),
+                                          add(up, a[2])};
     for (int m = level; m < tables_.depth; ++m) {
+      // roundShiftRight, with the half added once per level (the sums are far below 2^62).
+      const int shift = m + 2;
+      const std::int64_t half = std::int64_t{1} << (shift - 1);
       auto& offsets = screen_offset_[static_cast<std::size_t>(m)];
       for (unsigned k = 0; k < 4; ++k) {
-        offsets[k] = {roundShiftRight(sums[k].x, m + 2), roundShiftRight(sums[k].y, m + 2),
-                      roundShiftRight(sums[k].z, m + 2)};
-        offsets[7 - k] = {-offsets[k].x, -offsets[k].y, -offsets[k].z};
+        const std::int64_t x = (sums[k].x + half) >> shift, y = (sums[k].y + half) >> shift,
+                           z = (sums[k].z + half) >> shift;
+        offsets[k] = {x, y, z};
+        offsets[7 - k] = {-x, -y, -z};
       }
     }
     // The map's voxel is the size at the centre's depth; nearer voxels of the subtree are larger,
@@ -218,6 +220,10 @@ class PerspectiveWalk {
   static Point3<std::int64_t> add(const Point3<std::int64_t>& a, const Point3<std::int64_t>& b) {
     return {a.x + b.x, a.y + b.y, a.z + b.z};
   }
+  static Point3<std::int64_t> sub(const Point3<std::int64_t>& a, const Point3<std::int64_t>& b) {
+    return {a.x - b.x, a.y - b.y, a.z - b.z};
+  }
+  static Point3<std::int64_t> neg(const Point3<std::int64_t>& a) { return {-a.x, -a.y, -a.z}; }
 
   const PerspectiveView& view_;
   const PerspectiveWalkTables& tables_;
