@@ -137,8 +137,8 @@ TEST(PerspectiveDraw, GrowthBoundsTheNearestVoxelOfEverySubtreeDrawnFromItsMap) 
         const auto l = static_cast<std::size_t>(level);
         const std::int64_t nearest = tables.affine_depth[l], reach = tables.reach[l];
         if (nearest > (std::int64_t{1} << 40)) continue;  // no depth the eye sees
-        for (const std::int64_t z : {nearest, nearest + 1, nearest + nearest / 3, 2 * nearest,
-                                     10 * nearest}) {
+        for (const std::int64_t z :
+             {nearest, nearest + 1, nearest + nearest / 3, 2 * nearest, 10 * nearest}) {
           if (z - reach < view.camera.near) continue;  // the walk projects such a node anew
           SCOPED_TRACE(std::to_string(fov) + " degrees, level " + std::to_string(level));
           // growth >= z / (z - reach), in integers.
