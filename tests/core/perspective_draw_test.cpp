@@ -81,7 +81,7 @@ std::vector<Case> cases() {
   // straddling and off-screen subtrees; small splats far away and large ones near the eye.
   add("outside, 60 degrees", {0, 0, -2 * u}, 0, 0, 60, 320, 240);
   add("outside, 10 degrees", {0, 0, -6 * u}, 5, 3, 10, 320, 240);
-  add("off the left edge", {u / 2, 0, -u}, -25, 0, 60, 200, 150);
+  add("off the left edge", {0, 0, -u}, 25, 0, 60, 200, 150);
   add("at the cube's face", {0, 0, -u / 2}, 10, -5, 90, 320, 240);
   add("deep inside", {u / 16, u / 8, 0}, 170, 30, 120, 320, 240);
   add("large frame", {u / 4, -u / 4, -3 * u / 2}, -10, -10, 30, 1280, 960);
@@ -156,7 +156,7 @@ TEST(PerspectiveDraw, GrowthBoundsTheNearestVoxelOfEverySubtreeDrawnFromItsMap) 
 // splat rule that moves a pixel changes them (then check the new frames and update them).
 TEST(PerspectiveDraw, FramesHaveTheirFixedChecksums) {
   const LevelView& level = finestLevel();
-  const std::uint32_t expected[] = {0x90228f60, 0x4ea315cd, 0x6b33b2f2,
+  const std::uint32_t expected[] = {0x90228f60, 0x4ea315cd, 0x5a31a9d5,
                                     0xa6710b01, 0x68ea891b, 0x3223e34c};
   const std::vector<Case> all = cases();
   ASSERT_EQ(all.size(), std::size(expected));
