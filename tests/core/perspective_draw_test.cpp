@@ -20,10 +20,10 @@
 namespace octopoint {
 namespace {
 
-constexpr int kF = kDefaultFractionBits;
-constexpr std::int64_t kQuarterPixel = std::int64_t{1} << (kF - 2);
+constexpr int kDrawFractionBits = kDefaultFractionBits;
+constexpr std::int64_t kDrawQuarterPixel = std::int64_t{1} << (kDrawFractionBits - 2);
 
-const LevelView& finestLevel() {
+const LevelView& drawnLevel() {
   static const ModelView model = [] {
     ModelIssue issue;
     return *ModelView::fromEmbedded(*models::defaultModel(), &issue);
@@ -36,14 +36,15 @@ const LevelView& finestLevel() {
 // does; clipped to the frame; the nearer word wins.
 void plotByTheRule(const LevelView& level, const PerspectiveLeaf& leaf, std::int64_t padding,
                    Framebuffer& frame) {
-  const std::int64_t one = std::int64_t{1} << kF;
+  const std::int64_t one = std::int64_t{1} << kDrawFractionBits;
   const auto span = [&](std::int64_t p, std::int64_t half) {
     std::vector<std::int64_t> pixels;
-    for (std::int64_t i = ((p - half) >> kF) - 1; i <= ((p + half) >> kF) + 1; ++i) {
+    for (std::int64_t i = ((p - half) >> kDrawFractionBits) - 1;
+         i <= ((p + half) >> kDrawFractionBits) + 1; ++i) {
       const std::int64_t centre = i * one + one / 2;
       if (centre >= p - half && centre <= p + half) pixels.push_back(i);
     }
-    if (pixels.empty()) pixels.push_back(p >> kF);
+    if (pixels.empty()) pixels.push_back(p >> kDrawFractionBits);
     return pixels;
   };
   const std::uint32_t key = static_cast<std::uint32_t>(
@@ -58,14 +59,14 @@ void plotByTheRule(const LevelView& level, const PerspectiveLeaf& leaf, std::int
   }
 }
 
-struct Case {
+struct DrawCase {
   std::string name;
   PerspectiveCamera camera;
 };
 
-std::vector<Case> cases() {
+std::vector<DrawCase> drawCases() {
   const std::int64_t u = kPerspectiveUnit;
-  std::vector<Case> all;
+  std::vector<DrawCase> all;
   const auto add = [&](std::string name, ModelPoint eye, int yaw, int pitch, int fov, int width,
                        int height) {
     PerspectiveCamera camera;
@@ -89,12 +90,13 @@ std::vector<Case> cases() {
 }
 
 TEST(PerspectiveDraw, FrameIsTheSplatRuleAppliedToEveryLeafHandedOver) {
-  const LevelView& level = finestLevel();
-  for (const Case& c : cases()) {
+  const LevelView& level = drawnLevel();
+  for (const DrawCase& c : drawCases()) {
     SCOPED_TRACE(c.name);
     PerspectiveView view;
-    ASSERT_EQ(buildPerspectiveView(c.camera, kF, &view), PerspectiveError::kNone);
-    const PerspectiveWalkTables tables = perspectiveWalkTables(view, level.depth, kQuarterPixel);
+    ASSERT_EQ(buildPerspectiveView(c.camera, kDrawFractionBits, &view), PerspectiveError::kNone);
+    const PerspectiveWalkTables tables =
+        perspectiveWalkTables(view, level.depth, kDrawQuarterPixel);
     Framebuffer drawn(c.camera.width, c.camera.height), expected(c.camera.width, c.camera.height);
     drawn.clear();
     expected.clear();
@@ -125,13 +127,14 @@ TEST(PerspectiveDraw, FrameIsTheSplatRuleAppliedToEveryLeafHandedOver) {
 TEST(PerspectiveDraw, GrowthBoundsTheNearestVoxelOfEverySubtreeDrawnFromItsMap) {
   int checked = 0;
   for (int fov : {10, 30, 60, 90, 120}) {
-    for (const std::int64_t max_error : {kQuarterPixel / 4, kQuarterPixel, 4 * kQuarterPixel}) {
+    for (const std::int64_t max_error :
+         {kDrawQuarterPixel / 4, kDrawQuarterPixel, 4 * kDrawQuarterPixel}) {
       PerspectiveCamera camera;
       camera.fov = Angle::fromDegrees(fov);
       camera.width = 640;
       camera.height = 480;
       PerspectiveView view;
-      ASSERT_EQ(buildPerspectiveView(camera, kF, &view), PerspectiveError::kNone);
+      ASSERT_EQ(buildPerspectiveView(camera, kDrawFractionBits, &view), PerspectiveError::kNone);
       const PerspectiveWalkTables tables = perspectiveWalkTables(view, 12, max_error);
       for (int level = 0; level <= 12; ++level) {
         const auto l = static_cast<std::size_t>(level);
@@ -155,19 +158,19 @@ TEST(PerspectiveDraw, GrowthBoundsTheNearestVoxelOfEverySubtreeDrawnFromItsMap) 
 // that scripts/test-armel checks an ARMv5 draws the same frames. A change of the walk or the
 // splat rule that moves a pixel changes them (then check the new frames and update them).
 TEST(PerspectiveDraw, FramesHaveTheirFixedChecksums) {
-  const LevelView& level = finestLevel();
+  const LevelView& level = drawnLevel();
   const std::uint32_t expected[] = {0x90228f60, 0x4ea315cd, 0x5a31a9d5,
                                     0xa6710b01, 0x68ea891b, 0x3223e34c};
-  const std::vector<Case> all = cases();
+  const std::vector<DrawCase> all = drawCases();
   ASSERT_EQ(all.size(), std::size(expected));
   for (std::size_t i = 0; i < all.size(); ++i) {
-    const Case& c = all[i];
+    const DrawCase& c = all[i];
     PerspectiveView view;
-    ASSERT_EQ(buildPerspectiveView(c.camera, kF, &view), PerspectiveError::kNone);
+    ASSERT_EQ(buildPerspectiveView(c.camera, kDrawFractionBits, &view), PerspectiveError::kNone);
     Framebuffer frame(c.camera.width, c.camera.height);
     frame.clear();
-    ASSERT_TRUE(drawPerspective(level, view,
-                                perspectiveWalkTables(view, level.depth, kQuarterPixel), frame));
+    ASSERT_TRUE(drawPerspective(
+        level, view, perspectiveWalkTables(view, level.depth, kDrawQuarterPixel), frame));
     std::vector<std::uint8_t> bytes;
     for (std::int32_t y = 0; y < c.camera.height; ++y) {
       for (std::int32_t x = 0; x < c.camera.width; ++x) {
