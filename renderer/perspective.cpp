@@ -22,6 +22,16 @@ std::optional<std::int64_t> divScaled(std::int64_t numerator, std::int64_t denom
   return divShiftRound(numerator, denominator << -shift, 0);
 }
 
+// round(numerator / denominator), ties toward +infinity as divShiftRound rounds, by one hardware
+// division; denominator > 0, |numerator| < 2^63.
+std::int64_t divideRounded(std::int64_t numerator, std::int64_t denominator) {
+  const std::int64_t quotient = numerator / denominator;               // truncated towards zero
+  const std::int64_t twice_remainder = 2 * (numerator % denominator);  // |.| < 2 * denominator
+  if (twice_remainder >= denominator) return quotient + 1;
+  if (twice_remainder < -denominator) return quotient - 1;
+  return quotient;
+}
+
 }  // namespace
 
 const char* describe(PerspectiveError error) {
@@ -179,28 +189,51 @@ std::optional<std::int64_t> affineErrorBound(const PerspectiveView& view, const 
 }
 
 std::optional<AffineProjection> affineAt(const PerspectiveView& view, const CameraPoint& centre) {
-  const std::optional<ScreenPoint> projected = project(view, centre);
-  if (!projected) return std::nullopt;
+  if (centre.z < view.camera.near) return std::nullopt;
   assert(magnitude(centre.x) < (std::int64_t{1} << 32) &&
          magnitude(centre.y) < (std::int64_t{1} << 32));
-  // f / z in Q.16 pixels per cube edge; the slopes x / z and y / z in Q.30.
-  const std::optional<std::int64_t> inverse =
-      divShiftRound(view.focal_q16, centre.z, kPerspectiveUnitBits);
-  const std::optional<std::int64_t> slope_x = divShiftRound(centre.x, centre.z, 30);
-  const std::optional<std::int64_t> slope_y = divShiftRound(centre.y, centre.z, 30);
-  if (!inverse || !slope_x || !slope_y) return std::nullopt;
+  // f / z in Q.16 pixels per cube edge; the slopes x / z and y / z in Q.30: three hardware
+  // divisions (numerators below 2^62), this runs once per subtree drawn from its map.
+  const std::int64_t z = centre.z;
+  const std::int64_t inverse = divideRounded(view.focal_q16 << kPerspectiveUnitBits, z);
+  const std::int64_t slope_x = divideRounded(centre.x * kQ30One, z);
+  const std::int64_t slope_y = divideRounded(centre.y * kQ30One, z);
+  // The centre's projection f * slope, Q.16 * Q.30 to Q(32-F).F: within 1/2 ulp plus f * 2^-31
+  // pixel of the exact one (the slope's rounding).
+  const int shift = 46 - view.fraction_bits;
+  const std::optional<std::int64_t> dx = mulShiftRoundQuick(view.focal_q16, slope_x, shift);
+  const std::optional<std::int64_t> dy = mulShiftRoundQuick(view.focal_q16, slope_y, shift);
+  if (!dx || !dy) return std::nullopt;
+  const std::int64_t screen_x = view.centre_x + *dx, screen_y = view.centre_y + *dy;
+  if (!fitsInt32(screen_x) || !fitsInt32(screen_y)) return std::nullopt;
   AffineProjection affine;
-  affine.centre = *projected;
-  const int shift = 46 - view.fraction_bits;  // Q.16 * Q.30 to Q(32-F).F
+  affine.centre = {static_cast<std::int32_t>(screen_x), static_cast<std::int32_t>(screen_y), z};
+  const auto& m = view.world_to_camera.m_q30;
+  // The projection's derivative along w: (f / z) * (w.x - (x / z) * w.z), likewise for y. With
+  // |slope| < 2 (31 bits, Q.30) and f / z below 2^30 (Q.16), every product below fits int64
+  // (|w| <= 2^30, |w - tilt| < 2^32): one multiplication each, no check per product.
+  const auto bits = [](std::int64_t v) {
+    return std::bit_width(static_cast<std::uint64_t>(v < 0 ? -v : v));
+  };
+  if (bits(slope_x) <= 31 && bits(slope_y) <= 31 && bits(inverse) <= 30) {
+    const auto product = [](std::int64_t a, std::int64_t b, int by) {
+      return (a * b + (std::int64_t{1} << (by - 1))) >> by;  // >> of a negative is floor
+    };
+    for (int a = 0; a < 3; ++a) {
+      const std::int64_t w_z = m[2][a];
+      affine.axis[a] = {product(inverse, m[0][a] - product(slope_x, w_z, 30), shift),
+                        product(inverse, m[1][a] - product(slope_y, w_z, 30), shift),
+                        roundShiftRight(w_z, 30 - kPerspectiveUnitBits)};
+    }
+    return affine;
+  }
   for (int a = 0; a < 3; ++a) {
-    const auto& m = view.world_to_camera.m_q30;
     const std::int64_t w_x = m[0][a], w_y = m[1][a], w_z = m[2][a];
-    // The projection's derivative along w: (f / z) * (w.x - (x / z) * w.z), likewise for y.
-    const std::optional<std::int64_t> tilt_x = mulShiftRound(*slope_x, w_z, 30);
-    const std::optional<std::int64_t> tilt_y = mulShiftRound(*slope_y, w_z, 30);
+    const std::optional<std::int64_t> tilt_x = mulShiftRoundQuick(slope_x, w_z, 30);
+    const std::optional<std::int64_t> tilt_y = mulShiftRoundQuick(slope_y, w_z, 30);
     if (!tilt_x || !tilt_y) return std::nullopt;
-    const std::optional<std::int64_t> x = mulShiftRound(*inverse, w_x - *tilt_x, shift);
-    const std::optional<std::int64_t> y = mulShiftRound(*inverse, w_y - *tilt_y, shift);
+    const std::optional<std::int64_t> x = mulShiftRoundQuick(inverse, w_x - *tilt_x, shift);
+    const std::optional<std::int64_t> y = mulShiftRoundQuick(inverse, w_y - *tilt_y, shift);
     if (!x || !y) return std::nullopt;
     affine.axis[a] = {*x, *y, roundShiftRight(w_z, 30 - kPerspectiveUnitBits)};
   }

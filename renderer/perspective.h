@@ -20,6 +20,7 @@
 // and the same with c.y for y: about f * (r / z)^2 pixels near the view's axis. That bound decides
 // where a walk may add vectors and where it must project anew.
 
+#include <bit>
 #include <cstdint>
 #include <optional>
 
@@ -35,6 +36,21 @@ inline constexpr std::int64_t kPerspectiveUnit = std::int64_t{1} << kPerspective
 inline constexpr std::int64_t kMaxEyeDistance = 128;
 inline constexpr int kMinFieldOfViewDegrees = 10;
 inline constexpr int kMaxFieldOfViewDegrees = 120;
+
+// mulShiftRound's result (round(a * b / 2^shift), ties toward +infinity), by one 64-bit
+// multiplication where |a| and |b| have at most 62 significant bits between them (the product and
+// the rounding half then fit int64), by mulShiftRound's wide product otherwise: most of the
+// walk's products are that small, and the wide one costs tens of instructions.
+[[nodiscard]] inline std::optional<std::int64_t> mulShiftRoundQuick(std::int64_t a, std::int64_t b,
+                                                                    int shift) {
+  const auto magnitude = [](std::int64_t v) {
+    return v < 0 ? std::uint64_t{0} - static_cast<std::uint64_t>(v) : static_cast<std::uint64_t>(v);
+  };
+  if (shift >= 1 && shift <= 62 &&
+      std::bit_width(magnitude(a)) + std::bit_width(magnitude(b)) <= 62)
+    return (a * b + (std::int64_t{1} << (shift - 1))) >> shift;  // >> of a negative is floor
+  return mulShiftRound(a, b, shift);
+}
 
 using ModelPoint = Point3<std::int64_t>;   // Q.24 cube edges, model space
 using CameraPoint = Point3<std::int64_t>;  // Q.24 cube edges, camera space
@@ -112,7 +128,10 @@ struct AffineProjection {
   Point3<std::int64_t> axis[3];
 };
 
-// nullopt when `centre` does not project (project) or an axis vector does not fit int64.
+// Its centre is within 1/2 unit in the last place plus f * 2^-31 pixel of the exact projection
+// (f the focal length in pixels: below 0.71 ulp of Q17.15 at any field of view and height).
+// nullopt when `centre` lies nearer than the near plane, projects beyond what Q(32-F).F holds, or
+// an axis vector does not fit int64.
 std::optional<AffineProjection> affineAt(const PerspectiveView& view, const CameraPoint& centre);
 
 // A rotated cube of half-edge `half` (Q.24) reaches at most this far on any camera axis

@@ -13,6 +13,7 @@
 #include "octopoint/camera.h"
 #include "octopoint/framebuffer.h"
 #include "octopoint/model.h"
+#include "renderer/bit_scan.h"
 #include "renderer/perspective.h"
 
 namespace octopoint {
@@ -44,6 +45,16 @@ inline Point3<std::int64_t> voxelHalfExtent(const AffineProjection& affine, int 
           (sum(a[0].y, a[1].y, a[2].y) + round_up) >> (depth + 1), 0};
 }
 
+// A subtree the walk draws from one affine map, announced to a sink that has enterAffine (and
+// leaveAffine, called when its last leaf was handed over): every leaf it hands over meanwhile
+// lies within `reach_x`, `reach_y` (Q(32-F).F) and `reach_z` (Q.24) of `centre`, and has the
+// half extents `half_x`, `half_y`. A sink may then drop what it checks per leaf.
+struct AffineSubtree {
+  Point3<std::int64_t> centre;
+  std::int64_t reach_x = 0, reach_y = 0, reach_z = 0;
+  std::int64_t half_x = 0, half_y = 0;
+};
+
 // Per-frame tables of the walk: each level's child offsets in camera space, each level's reach,
 // the frustum's side slopes. Built once per frame and level depth (about 1.6 KB).
 struct PerspectiveWalkTables {
@@ -56,6 +67,10 @@ struct PerspectiveWalkTables {
   // its affine map wherever it meets the frustum (see perspectiveWalkTables): one comparison per
   // node instead of affineErrorBound's divisions.
   std::array<std::int64_t, kMaxRenderDepth + 1> affine_depth{};
+  // How much larger than the affine map's voxel a voxel of a subtree drawn from it (a node of
+  // level l, depth >= affine_depth[l]) may be on screen: z / (z - reach) at its worst, Q.16
+  // rounded up, so that no subtree divides for it.
+  std::array<std::int64_t, kMaxRenderDepth + 1> growth_q16{};
   int depth = 0;
 };
 
@@ -101,7 +116,6 @@ class PerspectiveWalk {
     if (centre.z >= tables_.affine_depth[static_cast<std::size_t>(level)] &&
         centre.z - reach >= view_.camera.near) {
       if (const std::optional<AffineProjection> affine = affineAt(view_, centre)) {
-        centre_z_ = centre.z;
         drawAffine(level, mask, *affine);
         return;
       }
@@ -121,8 +135,8 @@ class PerspectiveWalk {
   bool outsideFrustum(const CameraPoint& c, std::int64_t reach) const {
     const std::int64_t far_z = c.z + reach;
     if (far_z < view_.camera.near) return true;
-    const std::optional<std::int64_t> side_x = mulShiftRound(far_z, tables_.slope_x_q30, 30);
-    const std::optional<std::int64_t> side_y = mulShiftRound(far_z, tables_.slope_y_q30, 30);
+    const std::optional<std::int64_t> side_x = mulShiftRoundQuick(far_z, tables_.slope_x_q30, 30);
+    const std::optional<std::int64_t> side_y = mulShiftRoundQuick(far_z, tables_.slope_y_q30, 30);
     // Rounded to nearest: one unit less keeps the test conservative.
     return (side_x && (c.x - reach > *side_x + 1 || c.x + reach < -*side_x - 1)) ||
            (side_y && (c.y - reach > *side_y + 1 || c.y + reach < -*side_y - 1));
@@ -142,46 +156,74 @@ class PerspectiveWalk {
   }
 
   // The subtree below a node of `level` whose children are `mask`, from the affine map at its
-  // centre: per level below, eight screen vectors from the three axis vectors (a child of a node
-  // of level m lies 2^-(m+2) cube edges from it along each axis), each rounded once.
+  // centre: per level m below, eight screen vectors, each the sum of the map's three axis vectors
+  // with the child's signs times 2^-(m+2) (a child of a node of level m lies 2^-(m+2) cube edges
+  // from it along each axis), rounded once; child 7 - k is child k mirrored (every sign flipped),
+  // so four are made and four negated. No division.
   void drawAffine(int level, std::uint8_t mask, const AffineProjection& affine) {
+    const auto& a = affine.axis;
+    // Children 0 to 3 (x's sign -): -a0 -+ a1 -+ a2.
+    const Point3<std::int64_t> down = sub(neg(a[0]), a[1]), up = add(neg(a[0]), a[1]);
+    const Point3<std::int64_t> sums[4] = {sub(down, a[2]), add(down, a[2]), sub(up, a[2]),
+                                          add(up, a[2])};
     for (int m = level; m < tables_.depth; ++m) {
-      for (unsigned k = 0; k < 8; ++k) {
-        const std::int64_t sx = (k & 4) ? 1 : -1, sy = (k & 2) ? 1 : -1, sz = (k & 1) ? 1 : -1;
-        const auto& a = affine.axis;
-        const int shift = m + 2;
-        screen_offset_[static_cast<std::size_t>(m)][k] = {
-            roundShiftRight(sx * a[0].x + sy * a[1].x + sz * a[2].x, shift),
-            roundShiftRight(sx * a[0].y + sy * a[1].y + sz * a[2].y, shift),
-            roundShiftRight(sx * a[0].z + sy * a[1].z + sz * a[2].z, shift)};
+      // roundShiftRight, with the half added once per level (the sums are far below 2^62).
+      const int shift = m + 2;
+      const std::int64_t half = std::int64_t{1} << (shift - 1);
+      auto& offsets = screen_offset_[static_cast<std::size_t>(m)];
+      for (unsigned k = 0; k < 4; ++k) {
+        const std::int64_t x = (sums[k].x + half) >> shift, y = (sums[k].y + half) >> shift,
+                           z = (sums[k].z + half) >> shift;
+        offsets[k] = {x, y, z};
+        offsets[7 - k] = {-x, -y, -z};
       }
     }
     // The map's voxel is the size at the centre's depth; nearer voxels of the subtree are larger,
-    // by up to z / (z - reach): widened by that much, the subtree's splats leave no crack.
+    // by up to z / (z - reach) (growth_q16): widened by that much, the subtree's splats leave no
+    // crack.
     const Point3<std::int64_t> half = voxelHalfExtent(affine, tables_.depth);
-    const std::int64_t z = centre_z_, reach = tables_.reach[static_cast<std::size_t>(level)];
-    const std::int64_t growth_q16 = divShiftRound(z, z - reach, 16).value_or(INT64_MAX >> 24);
+    const std::int64_t growth_q16 = tables_.growth_q16[static_cast<std::size_t>(level)];
     half_ = {(half.x * growth_q16 >> 16) + 1, (half.y * growth_q16 >> 16) + 1, 0};
     const Point3<std::int64_t> centre{affine.centre.x, affine.centre.y, affine.centre.z};
-    const auto& offsets = screen_offset_[static_cast<std::size_t>(level)];
-    for (unsigned k = 0; k < 8; ++k) {
-      if (mask & (1u << k)) visitAffine(level + 1, add(centre, offsets[k]));
+    if constexpr (requires { sink_.enterAffine(AffineSubtree{}); }) {
+      // Every leaf of the subtree lies within the sum of the levels' largest vectors of its
+      // centre: |a0| + |a1| + |a2| per screen axis over 2^(m+2) for m from `level`, each rounded
+      // (half a unit, counted as one).
+      const auto sum = [](std::int64_t p, std::int64_t q, std::int64_t r) {
+        return (p < 0 ? -p : p) + (q < 0 ? -q : q) + (r < 0 ? -r : r);
+      };
+      const std::int64_t levels = tables_.depth - level;
+      sink_.enterAffine(AffineSubtree{centre, (sum(a[0].x, a[1].x, a[2].x) >> (level + 1)) + levels,
+                                      (sum(a[0].y, a[1].y, a[2].y) >> (level + 1)) + levels,
+                                      (sum(a[0].z, a[1].z, a[2].z) >> (level + 1)) + levels,
+                                      half_.x, half_.y});
     }
+    visitAffine(level, mask, centre);
+    if constexpr (requires { sink_.leaveAffine(); }) sink_.leaveAffine();
   }
-  void visitAffine(int level, const Point3<std::int64_t>& p) {
-    if (level == tables_.depth) {
-      sink_(PerspectiveLeaf{leaf_++, p.x, p.y, p.z, half_.x, half_.y});
+  // A node of a subtree drawn from its affine map, at `p`, its children `mask`: set-bit
+  // iteration over them, and a leaf parent hands its leaves over in one loop (no call per leaf).
+  void visitAffine(int level, unsigned mask, const Point3<std::int64_t>& p) {
+    const auto& offsets = screen_offset_[static_cast<std::size_t>(level)];
+    if (level + 1 == tables_.depth) {
+      for (unsigned bits = mask; bits != 0; bits &= bits - 1) {
+        const Point3<std::int64_t>& d = offsets[lowestChild(bits)];
+        sink_(PerspectiveLeaf{leaf_++, p.x + d.x, p.y + d.y, p.z + d.z, half_.x, half_.y});
+      }
       return;
     }
-    const std::uint8_t mask = *node_++;
-    const auto& offsets = screen_offset_[static_cast<std::size_t>(level)];
-    for (unsigned k = 0; k < 8; ++k) {
-      if (mask & (1u << k)) visitAffine(level + 1, add(p, offsets[k]));
+    for (unsigned bits = mask; bits != 0; bits &= bits - 1) {
+      const unsigned child_mask = *node_++;
+      visitAffine(level + 1, child_mask, add(p, offsets[lowestChild(bits)]));
     }
   }
   static Point3<std::int64_t> add(const Point3<std::int64_t>& a, const Point3<std::int64_t>& b) {
     return {a.x + b.x, a.y + b.y, a.z + b.z};
   }
+  static Point3<std::int64_t> sub(const Point3<std::int64_t>& a, const Point3<std::int64_t>& b) {
+    return {a.x - b.x, a.y - b.y, a.z - b.z};
+  }
+  static Point3<std::int64_t> neg(const Point3<std::int64_t>& a) { return {-a.x, -a.y, -a.z}; }
 
   const PerspectiveView& view_;
   const PerspectiveWalkTables& tables_;
@@ -193,7 +235,6 @@ class PerspectiveWalk {
   // The screen vectors of the subtree drawn from its affine map: Q(32-F).F, depth in Q.24.
   std::array<std::array<Point3<std::int64_t>, 8>, kMaxRenderDepth> screen_offset_{};
   Point3<std::int64_t> half_{};  // voxelHalfExtent of that subtree, widened for its nearest voxels
-  std::int64_t centre_z_ = 0;    // that subtree's camera-space depth
 };
 
 }  // namespace octopoint
