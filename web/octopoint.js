@@ -97,7 +97,9 @@
   canvas.addEventListener('pointermove', (event) => {
     if (dragging === null) return;
     // Half a degree a pixel: a drag across a 320-pixel canvas turns the model 160 degrees.
-    view.yaw += (event.clientX - dragging.x) * 0.5;
+    // Kept within [-180, 180): the same turn (angles wrap), and never past the C interface's int32
+    // thousandths of a degree however long the drag.
+    view.yaw = (((view.yaw + (event.clientX - dragging.x) * 0.5) % 360) + 540) % 360 - 180;
     view.pitch = Math.max(-90, Math.min(90, view.pitch + (event.clientY - dragging.y) * 0.5));
     dragging = {x: event.clientX, y: event.clientY};
     requestDraw();
