@@ -80,6 +80,23 @@ int octopoint_web_create(void) {
 int octopoint_web_draw(std::int32_t yaw_millidegrees, std::int32_t pitch_millidegrees,
                        std::int32_t roll_millidegrees, std::int32_t zoom_q16, std::int32_t width,
                        std::int32_t height) {
+  return octopoint::web::drawWith(defaultVariant(), yaw_millidegrees, pitch_millidegrees,
+                                  roll_millidegrees, zoom_q16, width, height);
+}
+
+const std::uint8_t* octopoint_web_pixels(void) {
+  return renderer() ? renderer()->rgba.data() : nullptr;
+}
+
+const char* octopoint_web_error(void) { return g_error; }
+
+}  // extern "C"
+
+namespace octopoint::web {
+
+int drawWith(Variant variant, std::int32_t yaw_millidegrees, std::int32_t pitch_millidegrees,
+             std::int32_t roll_millidegrees, std::int32_t zoom_q16, std::int32_t width,
+             std::int32_t height) {
   if (!renderer()) return fail("octopoint_web_create was not called");
   WebRenderer& web = *renderer();
   if (width < 1 || height < 1 || width > kMaxViewportSide || height > kMaxViewportSide ||
@@ -102,7 +119,7 @@ int octopoint_web_draw(std::int32_t yaw_millidegrees, std::int32_t pitch_millide
   }
   Framebuffer frame(width, height);
   frame.clear(web.styler.payload());
-  if (!renderLevel(defaultVariant(), *level, setup, frame)) return fail("the draw was refused");
+  if (!renderLevel(variant, *level, setup, frame)) return fail("the draw was refused");
   web.rgb.resize(static_cast<std::size_t>(width) * static_cast<std::size_t>(height) * 3);
   web.styler.beginFrame(setup);
   if (web.styler.resolve(frame, web.rgb) != StyleError::kNone) return fail("the style refused");
@@ -111,10 +128,4 @@ int octopoint_web_draw(std::int32_t yaw_millidegrees, std::int32_t pitch_millide
   return 0;
 }
 
-const std::uint8_t* octopoint_web_pixels(void) {
-  return renderer() ? renderer()->rgba.data() : nullptr;
-}
-
-const char* octopoint_web_error(void) { return g_error; }
-
-}  // extern "C"
+}  // namespace octopoint::web

@@ -4,6 +4,8 @@
 
 #include <cstdint>
 
+#include "octopoint/render.h"
+
 extern "C" {
 
 // Validates the embedded default model and prepares its renderer (once; a second call does
@@ -21,3 +23,13 @@ const std::uint8_t* octopoint_web_pixels(void);
 // Why the last call failed, in words ("" after a success).
 const char* octopoint_web_error(void);
 }
+
+namespace octopoint::web {
+
+// octopoint_web_draw with the decoder variant given (it draws with defaultVariant()): for the
+// native benchmark of the page's draw (bench/web_draw_bench.cpp), fixed_fast against fixed_simd.
+int drawWith(Variant variant, std::int32_t yaw_millidegrees, std::int32_t pitch_millidegrees,
+             std::int32_t roll_millidegrees, std::int32_t zoom_q16, std::int32_t width,
+             std::int32_t height);
+
+}  // namespace octopoint::web
