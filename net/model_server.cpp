@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "net/byte_range.h"
+#include "net/content_type.h"
 #include "net/served_path.h"
 
 namespace octopoint::net {
@@ -277,6 +278,10 @@ class ModelServer::Impl : public httplib::Server {
     const RangeVerdict verdict =
         parseRange(request.get_header_value("Range"), request.has_header("Range"), size, &range);
     response.set_header("Accept-Ranges", "bytes");
+    // The browser must not guess another type than the one sent (a model is never a page).
+    response.set_header("X-Content-Type-Options", "nosniff");
+    const std::string name = file.filename().string();
+    if (isPage(name)) response.set_header("Content-Security-Policy", std::string(kPagePolicy));
     if (verdict == RangeVerdict::kUnsatisfiable) {
       response.status = 416;
       response.set_header("Content-Range", "bytes */" + std::to_string(size));
@@ -304,7 +309,7 @@ class ModelServer::Impl : public httplib::Server {
     const std::uint64_t slice =
         rate == 0 ? 64 * 1024 : std::clamp<std::uint64_t>(rate / 50, 1, 64 * 1024);
     response.set_content_provider(
-        "application/octet-stream",
+        std::string(contentTypeFor(name)),
         [this, in, range, length, rate, slice, start](std::size_t sent, httplib::DataSink& sink) {
           if (sent >= length) {
             sink.done();

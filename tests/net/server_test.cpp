@@ -75,6 +75,41 @@ TEST(ModelServer, ServesWholeFilesAndSingleRanges) {
   EXPECT_TRUE(bodyOf(head).empty());
 }
 
+// The page (web/) is served beside the models: each kind of file with its type, whatever the case
+// of its extension and whether whole or a range; a page with its policy against inline scripts.
+TEST(ModelServer, SendsEachFileWithItsContentTypeAndAPageWithItsPolicy) {
+  const Served served;
+  const struct {
+    const char* name;
+    const char* type;
+  } cases[] = {{"index.html", "text/html; charset=utf-8"},
+               {"octopoint.js", "text/javascript; charset=utf-8"},
+               {"octopoint.css", "text/css; charset=utf-8"},
+               {"octopoint_web.wasm", "application/wasm"},
+               {"SHOUT.WASM", "application/wasm"},
+               {"Page.HTML", "text/html; charset=utf-8"},
+               {"shot.png", "image/png"},
+               {"model.oct", "application/octet-stream"},
+               {"wasm", "application/octet-stream"},
+               {"notes.wasm.bak", "application/octet-stream"}};
+  for (const auto& c : cases) {
+    if (std::string(c.name) != "model.oct") served.folder.write(c.name, counting(100));
+    for (const std::string range : {"", "Range: bytes=10-19\r\n"}) {
+      SCOPED_TRACE(std::string(c.name) + (range.empty() ? " whole" : " range"));
+      const Exchange exchange = served.get("/" + std::string(c.name), range);
+      EXPECT_EQ(exchange.status(), range.empty() ? 200 : 206);
+      EXPECT_NE(exchange.response.find("Content-Type: " + std::string(c.type) + "\r\n"),
+                std::string::npos);
+      EXPECT_NE(exchange.response.find("X-Content-Type-Options: nosniff\r\n"), std::string::npos);
+      const bool page = std::string(c.type).starts_with("text/html");
+      EXPECT_EQ(exchange.response.find("Content-Security-Policy: default-src 'self'; script-src "
+                                       "'self' 'wasm-unsafe-eval'; ") != std::string::npos,
+                page);
+      EXPECT_EQ(exchange.response.find("unsafe-inline"), std::string::npos);
+    }
+  }
+}
+
 TEST(ModelServer, RefusesEveryPathOutsideItsFolder) {
   const Served served;
   for (const std::string target : {"/../etc/passwd",
