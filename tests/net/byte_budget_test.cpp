@@ -33,8 +33,8 @@ TEST(ByteBudget, EveryCutOfASmallModelSettlesAtOnceWithinItsBytes) {
   server_options.root = folder.path();
   server_options.port = 0;
   testing::RunningServer server(server_options);
-  const net::HttpUrl url =
-      *net::parseHttpUrl("http://127.0.0.1:" + std::to_string(server.port()) + "/small.oct", nullptr);
+  const net::HttpUrl url = *net::parseHttpUrl(
+      "http://127.0.0.1:" + std::to_string(server.port()) + "/small.oct", nullptr);
   const Camera camera;
   int drawable = 0;
   // Every 13 bytes from 1 to past the end: cuts at many offsets within every request.
