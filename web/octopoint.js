@@ -1,12 +1,16 @@
 // The page: reads the camera from the address (the meaning of octopoint-render's --yaw, --pitch,
-// --roll, --zoom and --size), draws the embedded model with the integer renderer compiled to
-// WebAssembly (web/octopoint_web.cpp), and orbits with a mouse drag and zooms with the wheel.
+// --roll, --zoom, --size and --style), draws the embedded model with the integer renderer compiled
+// to WebAssembly (web/octopoint_web.cpp), and orbits with a mouse drag and zooms with the wheel;
+// the style from the address, the menu, or the keys c (the next, as the viewer's) and 1-5.
 'use strict';
 
 (function () {
   const canvas = document.getElementById('view');
   const status = document.getElementById('status');
+  const styleMenu = document.getElementById('style');
   const params = new URLSearchParams(window.location.search);
+  // octopoint-render's --style names, in its order (the c key steps through them, as the viewer's).
+  const kStyles = ['colour', 'shaded', 'lines', 'toon', 'outlined'];
   // emscripten's loader (octopoint_web.js, loaded after this file) takes this object as its
   // Module and calls onRuntimeInitialized once the wasm is compiled.
   const Module = {};
@@ -42,7 +46,16 @@
     zoom: numberParam('zoom', 1, 1 / 65536, 32767),
     width: Math.trunc(numberParam('w', 320, 1, 4096)),
     height: Math.trunc(numberParam('h', 240, 1, 4096)),
+    style: 'colour',
   };
+  if (params.has('style')) {
+    if (kStyles.includes(params.get('style'))) {
+      view.style = params.get('style');
+    } else {
+      report('style=' + params.get('style') + ' is not one of ' + kStyles.join(', ') +
+             ': using colour', true);
+    }
+  }
   if (params.get('bare') === '1') document.body.classList.add('bare');
 
   let api = null;
@@ -68,8 +81,8 @@
     const elapsed = performance.now() - started;
     if (!document.body.classList.contains('bare')) {
       report('yaw ' + view.yaw.toFixed(1) + ', pitch ' + view.pitch.toFixed(1) + ', zoom ' +
-             view.zoom.toFixed(3) + ', ' + view.width + 'x' + view.height + ': ' +
-             elapsed.toFixed(1) + ' ms', false);
+             view.zoom.toFixed(3) + ', ' + view.style + ', ' + view.width + 'x' + view.height +
+             ': ' + elapsed.toFixed(1) + ' ms', false);
     }
     document.body.dataset.frames = String(Number(document.body.dataset.frames || 0) + 1);
   }
@@ -85,8 +98,43 @@
     params.set('yaw', view.yaw.toFixed(2));
     params.set('pitch', view.pitch.toFixed(2));
     params.set('zoom', view.zoom.toFixed(4));
+    if (view.style === 'colour') params.delete('style'); else params.set('style', view.style);
     window.history.replaceState(null, '', '?' + params.toString());
   }
+
+  // Takes a style by name (the menu, a key, the address); false when the renderer refused it.
+  function setStyle(name) {
+    if (api !== null && api.setStyle(name) !== 0) {
+      report('style ' + name + ' refused: ' + api.error(), true);
+      styleMenu.value = view.style;
+      return false;
+    }
+    view.style = name;
+    styleMenu.value = name;
+    return true;
+  }
+
+  styleMenu.addEventListener('change', () => {
+    if (setStyle(styleMenu.value)) {
+      rememberView();
+      requestDraw();
+    }
+  });
+  window.addEventListener('keydown', (event) => {
+    if (event.ctrlKey || event.metaKey || event.altKey) return;
+    if (event.target instanceof HTMLSelectElement) return;  // the menu has its own keys
+    let name = null;
+    if (event.key === 'c') name = kStyles[(kStyles.indexOf(view.style) + 1) % kStyles.length];
+    if (event.key >= '1' && event.key <= String(kStyles.length)) {
+      name = kStyles[Number(event.key) - 1];
+    }
+    if (name === null) return;
+    event.preventDefault();
+    if (setStyle(name)) {
+      rememberView();
+      requestDraw();
+    }
+  });
 
   let dragging = null;
   canvas.addEventListener('pointerdown', (event) => {
@@ -123,6 +171,7 @@
     api = {
       draw: Module.cwrap('octopoint_web_draw', 'number',
                          ['number', 'number', 'number', 'number', 'number', 'number']),
+      setStyle: Module.cwrap('octopoint_web_set_style', 'number', ['string']),
       pixels: Module.cwrap('octopoint_web_pixels', 'number', []),
       error: () => Module.UTF8ToString(Module.ccall('octopoint_web_error', 'number', [], [])),
     };
@@ -131,6 +180,7 @@
       api = null;
       return;
     }
+    if (!setStyle(view.style)) setStyle('colour');
     draw();
   };
 })();
