@@ -1,6 +1,7 @@
-// The page's input (loaded before web/octopoint.js, which calls it): orbit with a mouse drag, zoom
-// with the wheel, and the style keys. It changes the view object it is given and calls back;
-// drawing is octopoint.js's.
+// The page's input (loaded before web/octopoint.js, which calls it): orbit with a mouse drag or
+// one finger, zoom with the wheel or a two-finger pinch (pointer events, so a pen works too), and
+// the style keys. It changes the view object it is given and calls back; drawing is
+// octopoint.js's.
 'use strict';
 
 // view: {yaw, pitch, zoom} in degrees and a factor (octopoint-render's meaning).
@@ -10,7 +11,6 @@ window.octopointInput = function (canvas, view, onChange, onSettled, onKey) {
   const kMinZoom = 1 / 65536;  // octopoint-render's --zoom range
   const kMaxZoom = 32767;
   const pointers = new Map();  // pointerId -> its last position, while pressed on the canvas
-  // (one mouse: touch comes later)
 
   function zoomBy(factor) {
     view.zoom = Math.max(kMinZoom, Math.min(kMaxZoom, view.zoom * factor));
@@ -24,17 +24,33 @@ window.octopointInput = function (canvas, view, onChange, onSettled, onKey) {
     view.pitch = Math.max(-90, Math.min(90, view.pitch + dy * 0.5));
   }
 
+  // The distance between the first two pointers pressed (a pinch), or 0.
+  function spread() {
+    const [a, b] = pointers.values();
+    return b === undefined ? 0 : Math.hypot(a.x - b.x, a.y - b.y);
+  }
+
   canvas.addEventListener('pointerdown', (event) => {
-    if (event.pointerType !== 'mouse' || event.button !== 0) return;
+    if (event.pointerType === 'mouse' && event.button !== 0) return;
     pointers.set(event.pointerId, {x: event.clientX, y: event.clientY});
     canvas.setPointerCapture(event.pointerId);
   });
   canvas.addEventListener('pointermove', (event) => {
     const last = pointers.get(event.pointerId);
     if (last === undefined) return;
-    orbit(event.clientX - last.x, event.clientY - last.y);
-    last.x = event.clientX;
-    last.y = event.clientY;
+    if (pointers.size === 1) {
+      orbit(event.clientX - last.x, event.clientY - last.y);
+      last.x = event.clientX;
+      last.y = event.clientY;
+    } else {
+      // Two fingers: the zoom follows the ratio of their distances (a pinch to half the distance
+      // halves the zoom). Only the first two count: a third finger changes nothing.
+      const before = spread();
+      last.x = event.clientX;
+      last.y = event.clientY;
+      const after = spread();
+      if (before > 0 && after > 0) zoomBy(after / before);
+    }
     onChange();
   });
   const release = (event) => {
