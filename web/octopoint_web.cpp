@@ -1,8 +1,9 @@
 // The C interface the page (web/octopoint.js) calls: one renderer for the embedded default model,
 // a camera, a draw, and the RGBA pixels of the last frame in the module's memory. The frame is
-// drawn exactly as octopoint-render draws one view (depth auto, colour style, its background and
-// the variant defaultVariant() picks, fixed_fast on WebAssembly), so that the page's frames can be
-// compared with the native PNG pixel for pixel.
+// drawn exactly as octopoint-render draws one view (depth auto, the style chosen, its background
+// and the variant defaultVariant() picks, fixed_fast on WebAssembly), so that the page's frames can
+// be compared with the native PNG pixel for pixel. The style is octopoint-render's --style, with
+// its defaults for the light and the crease angle.
 #include "web/octopoint_web.h"
 
 #include <cstdint>
@@ -86,6 +87,19 @@ int octopoint_web_draw(std::int32_t yaw_millidegrees, std::int32_t pitch_millide
 
 const std::uint8_t* octopoint_web_pixels(void) {
   return renderer() ? renderer()->rgba.data() : nullptr;
+}
+
+int octopoint_web_set_style(const char* name) {
+  if (!renderer()) return fail("octopoint_web_create was not called");
+  const std::optional<Style> style = name == nullptr ? std::nullopt : styleFromName(name);
+  if (!style) return fail("no such style (colour, shaded, lines, toon, outlined)");
+  StyleOptions options = renderer()->styler.options();
+  options.style = *style;
+  if (const StyleError error = renderer()->styler.setOptions(options); error != StyleError::kNone) {
+    return fail(describe(error));
+  }
+  g_error = "";
+  return 0;
 }
 
 const char* octopoint_web_error(void) { return g_error; }

@@ -17,6 +17,10 @@ int octopoint_web_create(void);
 int octopoint_web_draw(std::int32_t yaw_millidegrees, std::int32_t pitch_millidegrees,
                        std::int32_t roll_millidegrees, std::int32_t zoom_q16, std::int32_t width,
                        std::int32_t height);
+// The style of the next draws, by octopoint-render's --style name (colour, shaded, lines, toon,
+// outlined), with its default light and crease angle; an unknown name, or a style the model cannot
+// draw, is refused and the style stays.
+int octopoint_web_set_style(const char* name);
 // The last frame, width * height RGBA pixels, row after row from the top; null before a draw.
 // Valid until the next draw.
 const std::uint8_t* octopoint_web_pixels(void);
