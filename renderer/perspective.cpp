@@ -212,18 +212,14 @@ std::optional<AffineProjection> affineAt(const PerspectiveView& view, const Came
   // The projection's derivative along w: (f / z) * (w.x - (x / z) * w.z), likewise for y. With
   // |slope| < 2 (31 bits, Q.30) and f / z below 2^30 (Q.16), every product below fits int64
   // (|w| <= 2^30, |w - tilt| < 2^32): one multiplication each, no check per product.
-  const auto bits = [](std::int64_t v) {
-    return std::bit_width(static_cast<std::uint64_t>(v < 0 ? -v : v));
-  };
-  if (bits(slope_x) <= 31 && bits(slope_y) <= 31 && bits(inverse) <= 30) {
-    const auto product = [](std::int64_t a, std::int64_t b, int by) {
-      return (a * b + (std::int64_t{1} << (by - 1))) >> by;  // >> of a negative is floor
-    };
+  if (significantBits(slope_x) <= 31 && significantBits(slope_y) <= 31 &&
+      significantBits(inverse) <= 30) {
     for (int a = 0; a < 3; ++a) {
       const std::int64_t w_z = m[2][a];
-      affine.axis[a] = {product(inverse, m[0][a] - product(slope_x, w_z, 30), shift),
-                        product(inverse, m[1][a] - product(slope_y, w_z, 30), shift),
-                        roundShiftRight(w_z, 30 - kPerspectiveUnitBits)};
+      affine.axis[a] = {
+          mulShiftRoundSmall(inverse, m[0][a] - mulShiftRoundSmall(slope_x, w_z, 30), shift),
+          mulShiftRoundSmall(inverse, m[1][a] - mulShiftRoundSmall(slope_y, w_z, 30), shift),
+          roundShiftRight(w_z, 30 - kPerspectiveUnitBits)};
     }
     return affine;
   }

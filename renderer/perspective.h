@@ -37,18 +37,26 @@ inline constexpr std::int64_t kMaxEyeDistance = 128;
 inline constexpr int kMinFieldOfViewDegrees = 10;
 inline constexpr int kMaxFieldOfViewDegrees = 120;
 
-// mulShiftRound's result (round(a * b / 2^shift), ties toward +infinity), by one 64-bit
-// multiplication where |a| and |b| have at most 62 significant bits between them (the product and
-// the rounding half then fit int64), by mulShiftRound's wide product otherwise: most of the
-// walk's products are that small, and the wide one costs tens of instructions.
+// The number of bits |v| takes (0 for 0, 64 for INT64_MIN).
+inline int significantBits(std::int64_t v) {
+  return std::bit_width(v < 0 ? std::uint64_t{0} - static_cast<std::uint64_t>(v)
+                              : static_cast<std::uint64_t>(v));
+}
+
+// round(a * b / 2^shift), ties toward +infinity as mulShiftRound rounds, by one 64-bit
+// multiplication: only where significantBits(a) + significantBits(b) <= 62 and 1 <= shift <= 62
+// (the product and the rounding half then fit int64).
+inline std::int64_t mulShiftRoundSmall(std::int64_t a, std::int64_t b, int shift) {
+  return (a * b + (std::int64_t{1} << (shift - 1))) >> shift;  // >> of a negative is floor
+}
+
+// mulShiftRound's result, by mulShiftRoundSmall where the operands are that small and by
+// mulShiftRound's wide product otherwise: most of the walk's products are that small, and the
+// wide one costs tens of instructions.
 [[nodiscard]] inline std::optional<std::int64_t> mulShiftRoundQuick(std::int64_t a, std::int64_t b,
                                                                     int shift) {
-  const auto magnitude = [](std::int64_t v) {
-    return v < 0 ? std::uint64_t{0} - static_cast<std::uint64_t>(v) : static_cast<std::uint64_t>(v);
-  };
-  if (shift >= 1 && shift <= 62 &&
-      std::bit_width(magnitude(a)) + std::bit_width(magnitude(b)) <= 62)
-    return (a * b + (std::int64_t{1} << (shift - 1))) >> shift;  // >> of a negative is floor
+  if (shift >= 1 && shift <= 62 && significantBits(a) + significantBits(b) <= 62)
+    return mulShiftRoundSmall(a, b, shift);
   return mulShiftRound(a, b, shift);
 }
 

@@ -33,16 +33,21 @@ struct PerspectiveLeaf {
   std::int64_t half_y = 0;
 };
 
-// Half the projected extent of a voxel of `depth` under an affine map, per screen axis: the sum
-// of the axis vectors' magnitudes (a cube's shadow) over 2^(depth + 1), rounded up.
-inline Point3<std::int64_t> voxelHalfExtent(const AffineProjection& affine, int depth) {
+// The sum of an affine map's axis vectors' magnitudes, per axis: the extent of the shadow of a
+// cube of edge 1 (screen x and y in Q(32-F).F, depth in Q.24).
+inline Point3<std::int64_t> cubeShadow(const AffineProjection& affine) {
   const auto& a = affine.axis;
   const auto sum = [](std::int64_t p, std::int64_t q, std::int64_t r) {
     return (p < 0 ? -p : p) + (q < 0 ? -q : q) + (r < 0 ? -r : r);
   };
+  return {sum(a[0].x, a[1].x, a[2].x), sum(a[0].y, a[1].y, a[2].y), sum(a[0].z, a[1].z, a[2].z)};
+}
+
+// Half the projected extent of a voxel of `depth` under an affine map whose cube's shadow is
+// `shadow`, per screen axis: the shadow over 2^(depth + 1), rounded up.
+inline Point3<std::int64_t> voxelHalfExtent(const Point3<std::int64_t>& shadow, int depth) {
   const std::int64_t round_up = (std::int64_t{1} << (depth + 1)) - 1;
-  return {(sum(a[0].x, a[1].x, a[2].x) + round_up) >> (depth + 1),
-          (sum(a[0].y, a[1].y, a[2].y) + round_up) >> (depth + 1), 0};
+  return {(shadow.x + round_up) >> (depth + 1), (shadow.y + round_up) >> (depth + 1), 0};
 }
 
 // A subtree the walk draws from one affine map, announced to a sink that has enterAffine (and
@@ -100,7 +105,7 @@ class PerspectiveWalk {
       if (const std::optional<ScreenPoint> p = project(view_, centre)) {
         const std::optional<AffineProjection> affine = affineAt(view_, centre);
         const Point3<std::int64_t> half =
-            affine ? voxelHalfExtent(*affine, tables_.depth) : Point3<std::int64_t>{};
+            affine ? voxelHalfExtent(cubeShadow(*affine), tables_.depth) : Point3<std::int64_t>{};
         sink_(PerspectiveLeaf{leaf_, p->x, p->y, p->z, half.x, half.y});
       }
       ++leaf_;
@@ -181,22 +186,19 @@ class PerspectiveWalk {
     // The map's voxel is the size at the centre's depth; nearer voxels of the subtree are larger,
     // by up to z / (z - reach) (growth_q16): widened by that much, the subtree's splats leave no
     // crack.
-    const Point3<std::int64_t> half = voxelHalfExtent(affine, tables_.depth);
+    const Point3<std::int64_t> shadow = cubeShadow(affine);
+    const Point3<std::int64_t> half = voxelHalfExtent(shadow, tables_.depth);
     const std::int64_t growth_q16 = tables_.growth_q16[static_cast<std::size_t>(level)];
     half_ = {(half.x * growth_q16 >> 16) + 1, (half.y * growth_q16 >> 16) + 1, 0};
     const Point3<std::int64_t> centre{affine.centre.x, affine.centre.y, affine.centre.z};
     if constexpr (requires { sink_.enterAffine(AffineSubtree{}); }) {
       // Every leaf of the subtree lies within the sum of the levels' largest vectors of its
-      // centre: |a0| + |a1| + |a2| per screen axis over 2^(m+2) for m from `level`, each rounded
-      // (half a unit, counted as one).
-      const auto sum = [](std::int64_t p, std::int64_t q, std::int64_t r) {
-        return (p < 0 ? -p : p) + (q < 0 ? -q : q) + (r < 0 ? -r : r);
-      };
+      // centre: the cube's shadow over 2^(m+2) for m from `level`, each rounded (half a unit,
+      // counted as one).
       const std::int64_t levels = tables_.depth - level;
-      sink_.enterAffine(AffineSubtree{centre, (sum(a[0].x, a[1].x, a[2].x) >> (level + 1)) + levels,
-                                      (sum(a[0].y, a[1].y, a[2].y) >> (level + 1)) + levels,
-                                      (sum(a[0].z, a[1].z, a[2].z) >> (level + 1)) + levels,
-                                      half_.x, half_.y});
+      sink_.enterAffine(AffineSubtree{centre, (shadow.x >> (level + 1)) + levels,
+                                      (shadow.y >> (level + 1)) + levels,
+                                      (shadow.z >> (level + 1)) + levels, half_.x, half_.y});
     }
     visitAffine(level, mask, centre);
     if constexpr (requires { sink_.leaveAffine(); }) sink_.leaveAffine();
