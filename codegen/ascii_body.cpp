@@ -5,6 +5,7 @@
 #include <string_view>
 #include <system_error>
 
+#include "cli/text.h"
 #include "codegen/scan_header_check.h"
 
 namespace octopoint::prepare {
@@ -154,8 +155,7 @@ class BodyChecker {
     const ValueType& type = is_count ? property.list_count : property.type;
     std::uint64_t value = 0;
     if (token_.size() > kMaxValueChars || !parsesAs(token_, type, &value)) {
-      std::string quoted(1, '\'');  // appended: GCC 12 warns (-Wrestrict, wrongly) on "'" + s
-      quoted.append(printable(token_)).append("'");
+      const std::string quoted = cli::inQuotes(token_);
       const std::string expected = std::string(is_count ? "a list length, " : "") + "a " +
                                    typeName(type) + " (" + elements_[element_].property_word +
                                    " '" + printable(property.name) + "')";

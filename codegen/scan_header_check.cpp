@@ -406,10 +406,8 @@ PlyHeader parsePlyHeader(const fs::path& path, const std::vector<HeaderLine>& li
       const auto count = line.words.size() == 3 ? parseUnsigned(line.words[2]) : std::nullopt;
       if (!count) fail(path, "PLY element line without a non-negative count", where);
       header.elements.push_back({std::string(line.words[1]), *count, 0, 0});
-      // Appended piece by piece: GCC 12 warns (-Wrestrict, wrongly) on "'" + std::string.
-      std::string plural(1, '\'');
-      plural.append(printable(line.words[1])).append("' items");
-      header.ascii_layout.push_back({std::string(line.words[1]), plural, *count, {}});
+      header.ascii_layout.push_back(
+          {std::string(line.words[1]), cli::inQuotes(line.words[1]) + " items", *count, {}});
     } else if (keyword == "property") {
       addPlyProperty(path, line, where, header);
     } else {

@@ -10,6 +10,11 @@ namespace octopoint::prepare {
 
 namespace fs = std::filesystem;
 
+void failWithoutFloatAxis(const fs::path& path, const char* axis, const std::string& field_list) {
+  fail(path, std::string("no float32 '") + axis + "' field: x, y and z are required",
+       "field list: " + field_list);
+}
+
 void requireFloatXyz(const fs::path& path, const AsciiElement& point) {
   const auto& properties = point.properties;
   for (const char* axis : {"x", "y", "z"}) {
@@ -21,8 +26,7 @@ void requireFloatXyz(const fs::path& path, const AsciiElement& point) {
     std::string names;
     for (const AsciiProperty& property : properties)
       names += (names.empty() ? "" : " ") + property.name;
-    fail(path, std::string("no float32 '") + axis + "' field: x, y and z are required",
-         "field list: " + printable(names));
+    failWithoutFloatAxis(path, axis, printable(names));
   }
 }
 

@@ -6,10 +6,17 @@
 // what and where.
 
 #include <filesystem>
+#include <string>
 
 #include "codegen/ascii_body.h"
 
 namespace octopoint::prepare {
+
+// Throws PrepareError for a scan without `axis` (x, y or z) as one float32 value, naming the
+// fields it has (`field_list`, printable): what the header check and loadScan, after PCL read the
+// file, both say.
+[[noreturn]] void failWithoutFloatAxis(const std::filesystem::path& path, const char* axis,
+                                       const std::string& field_list);
 
 // Fails unless `point` holds x, y and z each as one float32 (the first field of each name, the
 // one PCL's findField takes), with the message loadScan gives after reading.

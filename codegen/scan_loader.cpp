@@ -45,6 +45,7 @@
 #include "codegen/intensity_grey.h"
 #include "codegen/prepare_error.h"
 #include "codegen/scan_header_check.h"
+#include "codegen/scan_layout_check.h"
 
 namespace octopoint::prepare {
 namespace {
@@ -222,8 +223,7 @@ pcl::PCLPointCloud2 readCloud(const fs::path& path, bool is_ply, std::uint64_t d
   for (const char* axis : {"x", "y", "z"}) {
     const Field* field = findField(cloud, axis);
     if (field == nullptr || !isScalarOf(*field, Field::FLOAT32)) {
-      fail(path, std::string("no float32 '") + axis + "' field: x, y and z are required",
-           "field list: " + fieldList(cloud));
+      failWithoutFloatAxis(path, axis, fieldList(cloud));
     }
   }
   return cloud;
