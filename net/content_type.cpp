@@ -42,6 +42,6 @@ std::string_view contentTypeFor(std::string_view name) {
   return "application/octet-stream";
 }
 
-bool isPage(std::string_view name) { return endsWithIgnoringCase(name, ".html"); }
+bool isPage(std::string_view name) { return contentTypeFor(name).starts_with("text/html"); }
 
 }  // namespace octopoint::net
