@@ -11,7 +11,7 @@
   const params = new URLSearchParams(window.location.search);
   // octopoint-render's --style names, in its order (the c key steps through them, as the viewer's).
   const kStyles = ['colour', 'shaded', 'lines', 'toon', 'outlined'];
-  // octopoint-render's largest frame: 1..8192 a side, 16777216 pixels in all.
+  // The page's largest side: a square of it is octopoint-render's most pixels (16777216).
   const kMaxSide = 4096;
   // emscripten's loader (octopoint_web.js, loaded after this file) takes this object as its
   // Module and calls onRuntimeInitialized once the wasm is compiled.
@@ -82,6 +82,7 @@
 
   let api = null;
   let pending = false;
+  let image = null;  // the last frame's pixels, reused while the size stays
 
   function draw() {
     pending = false;
@@ -95,16 +96,18 @@
       return;
     }
     const bytes = size.width * size.height * 4;
-    // A copy: the module's memory may grow (and move) at the next draw.
-    const pixels = new Uint8ClampedArray(bytes);
-    pixels.set(new Uint8Array(Module.HEAPU8.buffer, api.pixels(), bytes));
+    // Copied into an image kept between frames of the same size (the module's memory may grow,
+    // and move, at a draw of another size).
+    if (image === null || image.width !== size.width || image.height !== size.height)
+      image = new ImageData(size.width, size.height);
+    image.data.set(new Uint8Array(Module.HEAPU8.buffer, api.pixels(), bytes));
     if (canvas.width !== size.width) canvas.width = size.width;
     if (canvas.height !== size.height) canvas.height = size.height;
     if (size.css !== null) {
       canvas.style.width = size.css.width + 'px';
       canvas.style.height = size.css.height + 'px';
     }
-    canvas.getContext('2d').putImageData(new ImageData(pixels, size.width, size.height), 0, 0);
+    canvas.getContext('2d').putImageData(image, 0, 0);
     const elapsed = performance.now() - started;
     if (!document.body.classList.contains('bare')) {
       report((problem ? problem + '. ' : '') + 'yaw ' + view.yaw.toFixed(1) + ', pitch ' +

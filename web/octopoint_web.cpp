@@ -24,7 +24,8 @@ using namespace octopoint;
 
 // octopoint-render's background (tools/render_main.cpp): the frames must match its PNGs.
 constexpr Rgb kBackground{236, 236, 240};
-// The largest frame octopoint-render writes (4096x4096 pixels), and so the page's.
+// The most pixels octopoint-render writes in a frame (it allows sides up to 8192), and so the
+// page's.
 constexpr std::int64_t kMaxPixels = std::int64_t{4096} * 4096;
 
 struct WebRenderer {
@@ -32,6 +33,9 @@ struct WebRenderer {
   FrameStyler styler;
   std::vector<std::uint8_t> rgb;   // what the styler writes, 3 bytes a pixel
   std::vector<std::uint8_t> rgba;  // what the page copies into its canvas, 4 bytes a pixel
+  // Kept between draws and made anew only when the size changes: no allocation per frame (the
+  // vectors above keep their capacity too).
+  std::optional<Framebuffer> frame;
   explicit WebRenderer(const ModelView& view) : model(view), styler(model) {}
 };
 
@@ -131,7 +135,9 @@ int drawWith(Variant variant, std::int32_t yaw_millidegrees, std::int32_t pitch_
       error != CameraError::kNone) {
     return fail(describe(error));
   }
-  Framebuffer frame(width, height);
+  if (!web.frame || web.frame->width() != width || web.frame->height() != height)
+    web.frame.emplace(width, height);
+  Framebuffer& frame = *web.frame;
   frame.clear(web.styler.payload());
   if (!renderLevel(variant, *level, setup, frame)) return fail("the draw was refused");
   web.rgb.resize(static_cast<std::size_t>(width) * static_cast<std::size_t>(height) * 3);
