@@ -14,6 +14,7 @@
 #include <string_view>
 #include <vector>
 
+#include "codegen/laz_reader.h"
 #include "codegen/scan_header_check.h"
 
 namespace octopoint::prepare {
@@ -28,12 +29,10 @@ constexpr std::array<std::uint64_t, 5> kHeaderBytes = {227, 227, 227, 235,
 // Offsets of the red channel in the formats that have colour (0 = none).
 constexpr std::array<std::uint16_t, 11> kRgbOffset = {0, 0, 20, 28, 0, 28, 0, 30, 30, 0, 30};
 // LASzip marks compressed point data in the format byte (bit 7; bit 6 for its 1.4 "native" layers)
-// and with a VLR of this user ID.
+// and describes it in a VLR of this user ID and record ID.
 constexpr std::uint8_t kLazFormatBits = 0xc0;
 constexpr std::string_view kLazVlrUser = "laszip encoded";
-constexpr const char* kLazAdvice =
-    "compressed LAZ is not supported; decompress it first, e.g. with `laszip -i IN.laz -o OUT.las` "
-    "or `pdal translate IN.laz OUT.las`";
+constexpr std::uint16_t kLazVlrRecord = 22204;
 
 template <typename T>
 T readLittle(const std::uint8_t* bytes) {
@@ -89,9 +88,9 @@ void checkScaleAndOffset(const InputFile& file, const LasHeader& header) {
   }
 }
 
-// Walks the VLRs between the header and the point data; refuses LAZ by its VLR.
+// Walks the VLRs between the header and the point data; notes LASzip's.
 void walkVlrs(const InputFile& file, ByteWindow& window, std::uint64_t header_bytes,
-              const LasHeader& header) {
+              LasHeader& header) {
   const std::uint64_t room = header.point_offset - header_bytes;
   if (header.vlr_count > room / kVlrHeaderBytes) {
     fail(file.path(),
@@ -110,8 +109,12 @@ void walkVlrs(const InputFile& file, ByteWindow& window, std::uint64_t header_by
     }
     const std::uint8_t* record = window.at(at, kVlrHeaderBytes, where);
     const std::string_view user(reinterpret_cast<const char*>(record + 2), 16);
-    if (user.substr(0, user.find('\0')) == kLazVlrUser) fail(file.path(), kLazAdvice, where);
     const std::uint64_t length = readLittle<std::uint16_t>(record + 20);
+    if (user.substr(0, user.find('\0')) == kLazVlrUser &&
+        readLittle<std::uint16_t>(record + 18) == kLazVlrRecord) {
+      header.laszip_vlr_offset = at + kVlrHeaderBytes;
+      header.laszip_vlr_bytes = static_cast<std::uint16_t>(length);
+    }
     at += kVlrHeaderBytes + length;
     if (at > header.point_offset) {
       fail(file.path(),
@@ -201,12 +204,10 @@ LasHeader readFixedHeader(const InputFile& file, std::vector<std::uint8_t>& head
          byteWhere(24));
   }
   const std::uint8_t format_byte = head[104];
-  if (format_byte & kLazFormatBits)
-    fail(path, kLazAdvice, "point format byte " + std::to_string(format_byte));
-
   LasHeader header;
   header.version_minor = minor;
-  header.point_format = format_byte;
+  header.compressed = (format_byte & kLazFormatBits) != 0;
+  header.point_format = format_byte & ~kLazFormatBits;
   header_bytes = readLittle<std::uint16_t>(&head[94]);
   const std::uint64_t minimum = kHeaderBytes[static_cast<std::size_t>(minor)];
   if (header_bytes < minimum) {
@@ -319,6 +320,28 @@ std::uint64_t extendedRecordsEnd(const InputFile& file, ByteWindow& window,
   return accounted_end;
 }
 
+// LAZ: where the compressed point data ends (the first EVLR, else the end of the file), after
+// checking that LASzip's VLR is there and walking the EVLRs. The chunk table is the LAZ reader's.
+std::uint64_t compressedPointsEnd(const InputFile& file, ByteWindow& window,
+                                  const std::vector<std::uint8_t>& head, const LasHeader& header) {
+  if (header.laszip_vlr_offset == 0) {
+    fail(file.path(),
+         "the point format byte says LAZ (compressed), but no LASzip VLR (\"laszip encoded\") "
+         "describes the compression",
+         byteWhere(104));
+  }
+  if (header.evlr_count == 0) return file.size();
+  const std::uint64_t evlr_start = readLittle<std::uint64_t>(&head[235]);
+  if (evlr_start < header.point_offset || evlr_start > file.size()) {
+    fail(file.path(),
+         "the first EVLR at byte " + std::to_string(evlr_start) + " lies outside the point data (" +
+             std::to_string(header.point_offset) + " to " + std::to_string(file.size()) + ")",
+         byteWhere(235));
+  }
+  walkExtendedRecords(file, window, evlr_start, header.evlr_count, "EVLR");
+  return evlr_start;
+}
+
 }  // namespace
 
 LasHeader readLasHeader(const InputFile& file) {
@@ -332,7 +355,12 @@ LasHeader readLasHeader(const InputFile& file) {
   walkVlrs(file, window, header_bytes, header);
   if (header.point_count == 0) fail(path, "empty cloud (0 points)", "LAS header point count");
   checkScaleAndOffset(file, header);
+  if (header.compressed) {
+    header.points_end = compressedPointsEnd(file, window, head, header);
+    return header;
+  }
   const std::uint64_t points_end = pointDataEnd(file, header);
+  header.points_end = points_end;
   const std::uint64_t accounted_end = extendedRecordsEnd(file, window, head, header, points_end);
   // A count too small (a 1.2 file past 2^32 points, a header that lies) leaves points unread:
   // refuse rather than silently drop them. Less than one record is padding some writers add.
@@ -353,22 +381,45 @@ LasHeader readLasHeader(const InputFile& file) {
   return header;
 }
 
+SourceInfo lasSourceInfo(const LasHeader& header) {
+  SourceInfo info;
+  info.points = header.point_count;
+  info.payload = header.rgb_offset ? PointPayload::kRgb : PointPayload::kIntensity;
+  info.shading = header.rgb_offset ? ScanShading::kColour : ScanShading::kIntensity;
+  info.colour_bits_detected = header.rgb_offset != 0;
+  info.has_intensity = true;
+  info.float_coordinates = false;
+  info.format = std::string(header.compressed ? "LAZ" : "LAS") + " 1." +
+                std::to_string(header.version_minor) + ", point format " +
+                std::to_string(header.point_format) + ", " + std::to_string(header.record_length) +
+                "-byte records";
+  return info;
+}
+
+void decodeLasRecords(const LasHeader& header, const std::uint8_t* records, PointChunk& chunk) {
+  const std::size_t stride = header.record_length;
+  const std::uint8_t* record = records;
+  for (std::size_t i = 0; i < chunk.xyz.size(); ++i, record += stride) {
+    for (std::size_t axis = 0; axis < 3; ++axis) {
+      const auto raw = readLittle<std::int32_t>(record + 4 * axis);
+      chunk.xyz[i][axis] = static_cast<double>(raw) * header.scale[axis] + header.offset[axis];
+    }
+    chunk.intensity[i] = readLittle<std::uint16_t>(record + 12);
+    if (header.rgb_offset) {
+      for (std::size_t ch = 0; ch < 3; ++ch) {
+        chunk.rgb[i][ch] = readLittle<std::uint16_t>(record + header.rgb_offset + 2 * ch);
+      }
+    }
+  }
+}
+
 namespace {
 
 class LasSource final : public PointSource {
  public:
-  explicit LasSource(const std::filesystem::path& path)
-      : file_(path), header_(readLasHeader(file_)) {
-    info_.points = header_.point_count;
-    info_.payload = header_.rgb_offset ? PointPayload::kRgb : PointPayload::kIntensity;
-    info_.shading = header_.rgb_offset ? ScanShading::kColour : ScanShading::kIntensity;
-    info_.colour_bits_detected = header_.rgb_offset != 0;
-    info_.has_intensity = true;
-    info_.float_coordinates = false;
-    info_.format = "LAS 1." + std::to_string(header_.version_minor) + ", point format " +
-                   std::to_string(header_.point_format) + ", " +
-                   std::to_string(header_.record_length) + "-byte records";
-    file_.adviseSequential();
+  LasSource(std::unique_ptr<InputFile> file, const LasHeader& header)
+      : file_(std::move(file)), header_(header), info_(lasSourceInfo(header)) {
+    file_->adviseSequential();
   }
 
   const SourceInfo& info() const override { return info_; }
@@ -377,25 +428,13 @@ class LasSource final : public PointSource {
     std::vector<std::uint8_t>& bytes = chunk.raw;
     const std::size_t stride = header_.record_length;
     bytes.resize(count * stride);
-    file_.readAt(header_.point_offset + first * stride, bytes, "point " + std::to_string(first));
+    file_->readAt(header_.point_offset + first * stride, bytes, "point " + std::to_string(first));
     chunk.resize(count, info_);
-    const std::uint8_t* record = bytes.data();
-    for (std::size_t i = 0; i < count; ++i, record += stride) {
-      for (std::size_t axis = 0; axis < 3; ++axis) {
-        const auto raw = readLittle<std::int32_t>(record + 4 * axis);
-        chunk.xyz[i][axis] = static_cast<double>(raw) * header_.scale[axis] + header_.offset[axis];
-      }
-      chunk.intensity[i] = readLittle<std::uint16_t>(record + 12);
-      if (header_.rgb_offset) {
-        for (std::size_t ch = 0; ch < 3; ++ch) {
-          chunk.rgb[i][ch] = readLittle<std::uint16_t>(record + header_.rgb_offset + 2 * ch);
-        }
-      }
-    }
+    decodeLasRecords(header_, bytes.data(), chunk);
   }
 
  private:
-  InputFile file_;
+  std::unique_ptr<InputFile> file_;
   LasHeader header_;
   SourceInfo info_;
 };
@@ -403,7 +442,10 @@ class LasSource final : public PointSource {
 }  // namespace
 
 std::unique_ptr<PointSource> openLasSource(const std::filesystem::path& path) {
-  return std::make_unique<LasSource>(path);
+  auto file = std::make_unique<InputFile>(path);
+  const LasHeader header = readLasHeader(*file);
+  if (header.compressed) return openLazSource(std::move(file), header);
+  return std::make_unique<LasSource>(std::move(file), header);
 }
 
 }  // namespace octopoint::prepare

@@ -2,7 +2,8 @@
 // LAS 1.0 to 1.4 (ASPRS), read by hand: Debian ships no LAS library. Point formats 0 to 10, the
 // coordinates as int32 * scale + offset in double, intensity, RGB where the format has it, the
 // 64-bit point count of 1.4, VLRs and EVLRs (walked and checked, their contents skipped), records
-// longer than their format (user "extra bytes", skipped). LAZ (compressed) is refused by name.
+// longer than their format (user "extra bytes", skipped). LAZ, the same file with its points
+// compressed by LASzip, is read by codegen/laz_reader.h from the header read here.
 //
 // Every count, offset and length in the header is checked against the file size before anything is
 // read or allocated, so a header that lies costs nothing: readLasHeader throws one PrepareError
@@ -41,13 +42,25 @@ struct LasHeader {
   std::uint32_t vlr_count = 0;
   std::uint32_t evlr_count = 0;
   std::uint16_t rgb_offset = 0;  // byte of red in the record; 0 when the format has no colour
+  // LAZ: the point format byte has LASzip's compression bits and LASzip's VLR describes the items.
+  bool compressed = false;
+  std::uint64_t laszip_vlr_offset = 0;  // the VLR's payload
+  std::uint16_t laszip_vlr_bytes = 0;
+  std::uint64_t points_end = 0;  // where the point data ends: the EVLRs' start, else the file's end
 };
 
-// Reads and checks the header, every VLR and every EVLR of `file`.
+// Reads and checks the header, every VLR and every EVLR of `file`. For LAZ the compressed point
+// data is checked by its reader, not here.
 LasHeader readLasHeader(const InputFile& file);
 
-// A LAS file as a point source: payload kRgb with colour_bits_detected (and the intensity beside
-// it) for formats with colour, else kIntensity.
+// What a LAS (or LAZ) file's points carry: payload kRgb with colour_bits_detected (and the
+// intensity beside it) for formats with colour, else kIntensity.
+SourceInfo lasSourceInfo(const LasHeader& header);
+
+// Decodes `chunk.xyz.size()` LAS records from `records` into `chunk` (already resized).
+void decodeLasRecords(const LasHeader& header, const std::uint8_t* records, PointChunk& chunk);
+
+// A LAS or LAZ file as a point source (lasSourceInfo).
 std::unique_ptr<PointSource> openLasSource(const std::filesystem::path& path);
 
 }  // namespace octopoint::prepare

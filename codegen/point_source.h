@@ -64,6 +64,15 @@ struct PointChunk {
   }
 };
 
+// A run of consecutive records.
+struct PointRange {
+  std::uint64_t first = 0;
+  std::size_t count = 0;
+};
+
+// Records a pass reads at once, unless the source has pieces of its own.
+inline constexpr std::size_t kPiecePoints = 1 << 16;
+
 class PointSource {
  public:
   virtual ~PointSource() = default;
@@ -71,6 +80,17 @@ class PointSource {
   // Decodes records [first, first + count) into `chunk` (resized to count). Safe to call from
   // several threads at once. Throws PrepareError on a read error.
   virtual void read(std::uint64_t first, std::size_t count, PointChunk& chunk) const = 0;
+  // The pieces a pass reads, in order, each record in one: runs of kPiecePoints, or a compressed
+  // file's chunks (LAZ), which decode only from their start and so are read whole, each by one
+  // thread.
+  virtual std::size_t pieceCount() const {
+    return static_cast<std::size_t>((info().points + kPiecePoints - 1) / kPiecePoints);
+  }
+  virtual PointRange piece(std::size_t index) const {
+    const std::uint64_t first = std::uint64_t{index} * kPiecePoints;
+    const std::uint64_t left = info().points - first;
+    return {first, static_cast<std::size_t>(left < kPiecePoints ? left : kPiecePoints)};
+  }
 };
 
 // Serves an in-memory scan (already cropped or not; its colours are final 8-bit colours, the

@@ -27,7 +27,6 @@ namespace {
 
 namespace fs = std::filesystem;
 
-constexpr std::size_t kChunkPoints = 1 << 16;  // records decoded at once by one thread
 // Bins are the nodes at this level (8^4 = 4096), or at the finest depth when it is shallower: small
 // enough for a thread's share of the budget in any real scan, many enough to keep threads busy.
 constexpr int kBinLevel = 4;
@@ -35,10 +34,6 @@ constexpr int kSubBinLevels = 2;  // a bin too large is split this many levels d
 constexpr std::size_t kMinBinPoints = 1024;
 // A worker voxelizing a bin holds per point: the point, a sort buffer, and its key.
 constexpr std::uint64_t kBytesPerBinPoint = 2 * sizeof(BinnedPoint) + sizeof(std::uint64_t);
-
-std::size_t chunkCount(std::uint64_t points) {
-  return static_cast<std::size_t>((points + kChunkPoints - 1) / kChunkPoints);
-}
 
 // The points that go into the model, turned into its axes: finite (the caller checks), inside
 // the crop box (compared in the scan's own axes, as cropScan does), y-up turned by 180 degrees
@@ -207,14 +202,12 @@ class StreamedPreparer {
     std::atomic<std::uint64_t> done{0};
     Progress progress(label, info_.points, "points");
     parallelFor(
-        threads_, chunkCount(info_.points),
-        [&](std::size_t chunk_index, unsigned worker) {
-          const std::uint64_t first = chunk_index * kChunkPoints;
-          const auto count =
-              static_cast<std::size_t>(std::min<std::uint64_t>(kChunkPoints, info_.points - first));
-          source_.read(first, count, chunks[worker]);
-          visit(chunks[worker], first, worker);
-          done += count;
+        threads_, source_.pieceCount(),
+        [&](std::size_t piece_index, unsigned worker) {
+          const PointRange piece = source_.piece(piece_index);
+          source_.read(piece.first, piece.count, chunks[worker]);
+          visit(chunks[worker], piece.first, worker);
+          done += piece.count;
         },
         [&] { progress.update(done.load()); });
   }

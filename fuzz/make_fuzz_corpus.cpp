@@ -8,6 +8,7 @@
 //    and a chunk (first byte 3: spliced, CRCs recomputed). See fuzz/chunked_fuzzer.cpp.
 //  - las: a small LAS file of every point format, and 1.0, 1.1 and 1.4 with VLRs, EVLRs and extra
 //    bytes (tests/support/las_writer.h), so the fuzzer starts from every layout the reader knows.
+//  - laz: small LAZ files of point formats 0 to 3, fixed and variable chunks of a few points.
 // usage: make_fuzz_corpus OUTDIR
 #include <cstdio>
 #include <cstring>
@@ -134,6 +135,30 @@ void writeLasSeeds(const fs::path& dir) {
   las("rich.las", rich);
 }
 
+// Small LAZ files of every point format the tests' encoder writes, every field varied, in chunks
+// of a few points, fixed and variable (laz_fuzzer).
+void writeLazSeeds(const fs::path& dir) {
+  using octopoint::testing::LasLayout;
+  const octopoint::testing::Landscape landscape;
+  for (int format = 0; format <= 3; ++format) {
+    for (bool variable : {false, true}) {
+      LasLayout layout;
+      layout.format = format;
+      layout.vlrs = 0;
+      layout.laz = true;
+      layout.varied_fields = true;
+      layout.laz_chunk_points = 5;
+      layout.laz_variable_chunks = variable;
+      layout.extra_bytes = format == 3 ? 2 : 0;
+      const std::string name =
+          "format" + std::to_string(format) + (variable ? "_variable" : "") + ".laz";
+      octopoint::testing::LasWriter writer(dir / name, layout);
+      for (std::uint64_t i = 0; i < 12; ++i) writer.add(landscape.point(i));
+      writer.finish();
+    }
+  }
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -146,6 +171,7 @@ int main(int argc, char** argv) {
     fs::create_directories(out / "model");
     fs::create_directories(out / "scan_header");
     fs::create_directories(out / "las");
+    fs::create_directories(out / "laz");
     const octopoint::EmbeddedModel& model = *octopoint::models::defaultModel();
     write(out / "model" / (std::string(model.name) + ".oct"), octopoint::fuzzing::octImage(model));
     const int finest = model.levels[model.level_count - 1].depth;
@@ -156,6 +182,7 @@ int main(int argc, char** argv) {
     writeScanHeaders(out / "scan_header");
     writeChunkedSeeds(out / "chunked", model);
     writeLasSeeds(out / "las");
+    writeLazSeeds(out / "laz");
   } catch (const std::exception& error) {
     std::fprintf(stderr, "make_fuzz_corpus: %s\n", error.what());
     return 1;

@@ -3,7 +3,8 @@
 
 # The streamed preparer against the in-memory reference, across budgets and threads; the LAS
 # reader with every format, corner and damaged header. PCL writes the PCD/PLY files to compare with.
-add_executable(streamed_tests preparer/las_reader_test.cpp preparer/streamed_prepare_test.cpp)
+add_executable(streamed_tests preparer/las_reader_test.cpp preparer/laz_coder_test.cpp
+               preparer/laz_reader_test.cpp preparer/streamed_prepare_test.cpp)
 target_link_libraries(streamed_tests PRIVATE octopoint_prepare octopoint_scan_tools
                       octopoint_test_scans pcl_common pcl_io GTest::gtest_main octopoint_warnings)
 gtest_discover_tests(streamed_tests DISCOVERY_MODE PRE_TEST)
@@ -81,7 +82,7 @@ bad_las_test(scale_zero "absurd X scale factor 0" scale_zero.las)
 bad_las_test(scale_huge "absurd Y scale factor 1e+300" scale_huge.las)
 bad_las_test(offset_nan "absurd Z offset nan" offset_nan.las)
 bad_las_test(vlr_overrun "runs into the point data" vlr_overrun.las)
-bad_las_test(laz "compressed LAZ is not supported; decompress it first" compressed.laz)
+bad_las_test(laz_without_vlr "says LAZ (compressed), but no LASzip VLR" compressed.laz)
 bad_las_test(sparse_1tb "the point data has a hole" sparse_1tb.las)
 
 # The streamed preparer's own options and limits.
@@ -105,3 +106,17 @@ stream_error_test(las_outliers
                   --scene ${CMAKE_CURRENT_BINARY_DIR}/outliers_scene.json)
 stream_error_test(las_normals "normal estimation (--normals) needs the whole scan in memory"
                   ${las_scans}/format0.las -o ${cli_out}/las_normals --name m --normals)
+
+# An independent decoder for the LAZ that make_large_scan writes: laz-perf (WebAssembly, from npm,
+# installed under build/node by scripts/fetch-laz-perf), run by Node.
+find_program(OCTOPOINT_NODE NAMES node nodejs)
+if(OCTOPOINT_NODE)
+  add_test(NAME laz.laz_perf_decodes_our_files
+           COMMAND ${CMAKE_COMMAND} -DMAKE=$<TARGET_FILE:make_large_scan> -DNODE=${OCTOPOINT_NODE}
+                   -DMODULES=${PROJECT_SOURCE_DIR}/build/node/node_modules
+                   -DSCRIPT=${CMAKE_CURRENT_SOURCE_DIR}/laz/laz_perf_decode.cjs
+                   -DOUT=${CMAKE_CURRENT_BINARY_DIR}/laz_perf -P
+                   ${CMAKE_CURRENT_SOURCE_DIR}/laz/laz_perf_check.cmake)
+  set_tests_properties(laz.laz_perf_decodes_our_files PROPERTIES
+                       SKIP_REGULAR_EXPRESSION "laz-perf is not installed" TIMEOUT 300)
+endif()

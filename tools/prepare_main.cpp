@@ -47,15 +47,16 @@ constexpr const char* kUsage = R"(usage: octopoint-prepare SCAN -o OUTDIR --name
 Turns a range scan (.las, .pcd or .ply: XYZ, XYZRGB/RGBA or XYZI, organized or not) into an
 octopoint model: OUTDIR/NAME.h, OUTDIR/NAME.cpp and OUTDIR/NAME_depthD.cpp (const arrays an app
 compiles in) and OUTDIR/NAME.oct (the same model as one binary file, for octopoint-render --file).
-LAS (1.0 to 1.4, point formats 0 to 10) and binary PCD/PLY (PLY of either byte order) are
-streamed: any number of points in bounded memory, on every core; other PCD/PLY files are loaded
+LAS (1.0 to 1.4, point formats 0 to 10), LAZ (LASzip-compressed LAS, point formats 0 to 5, read
+natively) and binary PCD/PLY (PLY of either byte order) are streamed: any number of points in
+bounded memory, on every core (LAZ chunks decoded in parallel); other PCD/PLY files are loaded
 whole through PCL. The output is the same byte for byte whatever --memory and --threads
 (docs/preparer.md).
 
-  SCAN                  the scan to read: a regular file, streamed ones of at most 4 TiB, those
-                        PCL loads of at most 1 GiB; points with a NaN or infinite coordinate are
-                        dropped. LAS colour is used when the format has it and it is not all 0
-                        (8- or 16-bit, detected), else the intensity; compressed LAZ is refused
+  SCAN                  the scan to read (.las, .laz, .pcd, .ply): a regular file, streamed ones
+                        of at most 4 TiB, those PCL loads of at most 1 GiB; points with a NaN or
+                        infinite coordinate are dropped. LAS/LAZ colour is used when the format
+                        has it and it is not all 0 (8- or 16-bit, detected), else the intensity
   -o, --output OUTDIR   where to write (created if missing); all files appear or none do, also
                         when interrupted (SIGINT, SIGTERM); existing outputs must be regular files.
                         A rerun replaces NAME's set: NAME_depthD.cpp files of an earlier run that

@@ -119,6 +119,32 @@ for size in 1G 900000000; do
   fi
 done
 
+# LAZ whose header, LASzip VLR or chunk table lies, and whose chunks are corrupt: refused from the
+# chunk table, or at the first chunk whose arithmetic code runs past its bytes (make_large_scan
+# writes the good LAZ: 3000 points in chunks of 1000).
+MAKE_SCAN=$(dirname "$PREPARE")/../tests/support/make_large_scan
+if [ -x "$MAKE_SCAN" ]; then
+  "$MAKE_SCAN" --points 3000 --format laz --las-format 3 --varied-fields --chunk-points 1000 \
+    -o "$IN/good.laz" >/dev/null || { echo "hostile-sweep: cannot write good.laz" >&2; exit 1; }
+  laz_points=$(od -An -tu4 -j96 -N4 "$IN/good.laz" | tr -d ' ')
+  laz_vlr=$(($(grep -boa 'laszip encoded' "$IN/good.laz" | head -n 1 | cut -d: -f1) - 2 + 54))
+  lazCopy() {  # lazCopy NAME OFFSET BYTES: good.laz with bytes replaced
+    cp "$IN/good.laz" "$I1/$1"
+    printf "$3" | dd of="$I1/$1" bs=1 seek="$2" conv=notrunc status=none
+  }
+  lazCopy laz_count_4e9.laz 107 '\000\050\153\356'       # 4,000,000,000 points
+  lazCopy laz_no_table.laz "$laz_points" "$(le32 "$laz_points")\000\000\000\000"  # interrupted
+  lazCopy laz_huge_chunks.laz $((laz_vlr + 12)) '\000\000\020\000'  # chunks of 2^20 points
+  lazCopy laz_corrupt.laz $((laz_points + 8 + 200)) '\125\252\125\252\125\252\125\252'
+  cp "$IN/good.laz" "$I1/laz_cut.laz"
+  truncate -s $(($(stat -c %s "$IN/good.laz") / 2)) "$I1/laz_cut.laz"
+  refuse 1 q:laz_count_4e9 "the header declares 4000000000 points" "$PREPARE" "$I1/laz_count_4e9.laz" -o "$W/work/out/p" --name m
+  refuse 1 laz_no_table "no chunk table" "$PREPARE" "$I1/laz_no_table.laz" -o "$W/work/out/p" --name m
+  refuse 1 laz_huge_chunks "chunks of 1048576, the chunk table lists 3" "$PREPARE" "$I1/laz_huge_chunks.laz" -o "$W/work/out/p" --name m
+  refuse 1 q:laz_corrupt "corrupt LAZ" "$PREPARE" "$I1/laz_corrupt.laz" -o "$W/work/out/p" --name m
+  refuse 1 laz_cut "lies outside the point data" "$PREPARE" "$I1/laz_cut.laz" -o "$W/work/out/p" --name m
+fi
+
 # --- 3: not a regular file, or past the stated size, for every tool that reads one -------------
 I3=$IN/kind
 mkdir -p "$I3/directory"

@@ -27,6 +27,8 @@ void putText(std::vector<std::uint8_t>& bytes, std::size_t at, const std::string
   std::memcpy(bytes.data() + at, text.data(), std::min(text.size(), width));
 }
 
+constexpr std::uint16_t kLaszipRecordId = 22204;
+
 std::uint64_t headerBytes(int minor) { return minor <= 2 ? 227 : minor == 3 ? 235 : 375; }
 
 // A record of the extended-record shape: reserved, user ID, record ID, length, description.
@@ -68,10 +70,53 @@ LasWriter::LasWriter(const std::filesystem::path& path, const LasLayout& layout)
     const std::vector<std::uint8_t> vlr = extendedRecord(false, i);
     head.insert(head.end(), vlr.begin(), vlr.end());
   }
+  if (layout.laz) {  // LASzip's VLR
+    laz_ = std::make_unique<LazChunkEncoder>(layout.format, layout.extra_bytes);
+    const std::vector<std::uint8_t> payload =
+        laz_->vlrPayload(layout.laz_variable_chunks ? 0xffffffffu : layout.laz_chunk_points);
+    std::vector<std::uint8_t> vlr(54, 0);
+    putText(vlr, 2, "laszip encoded", 16);
+    put<std::uint16_t>(vlr, 18, kLaszipRecordId);
+    put<std::uint16_t>(vlr, 20, static_cast<std::uint16_t>(payload.size()));
+    putText(vlr, 22, "octopoint tests LAZ", 32);
+    head.insert(head.end(), vlr.begin(), vlr.end());
+    head.insert(head.end(), payload.begin(), payload.end());
+  }
   if (layout.minor() == 0)
     head.insert(head.end(), {0xdd, 0xcc});  // 1.0's point data start signature
   point_offset_ = head.size();
+  if (laz_) head.resize(head.size() + 8, 0);  // where the chunk table will be, patched in finish()
   out_.write(reinterpret_cast<const char*>(head.data()), static_cast<std::streamsize>(head.size()));
+}
+
+// Variable chunks cycle through a full chunk, one of a third and one of a single point.
+std::uint64_t LasWriter::nextChunkPoints() const {
+  if (!layout_.laz_variable_chunks) return layout_.laz_chunk_points;
+  const std::size_t kind = chunk_points_.size() % 3;
+  return kind == 0 ? layout_.laz_chunk_points : kind == 1 ? layout_.laz_chunk_points / 3 + 1 : 1;
+}
+
+void LasWriter::finishLazChunk() {
+  if (laz_->points() == 0) return;
+  chunk_points_.push_back(laz_->points());
+  const std::vector<std::uint8_t> chunk = laz_->finishChunk();
+  chunk_bytes_.push_back(chunk.size());
+  out_.write(reinterpret_cast<const char*>(chunk.data()),
+             static_cast<std::streamsize>(chunk.size()));
+}
+
+// The last chunk, the chunk table, and the pointer to it before the first chunk.
+void LasWriter::finishLaz() {
+  finishLazChunk();
+  const auto table_start = static_cast<std::uint64_t>(out_.tellp());
+  const std::vector<std::uint8_t> table =
+      lazChunkTable(chunk_points_, chunk_bytes_, layout_.laz_variable_chunks);
+  out_.write(reinterpret_cast<const char*>(table.data()),
+             static_cast<std::streamsize>(table.size()));
+  evlr_start_ = table_start + table.size();
+  out_.seekp(static_cast<std::streamoff>(point_offset_));
+  out_.write(reinterpret_cast<const char*>(&table_start), 8);
+  out_.seekp(0, std::ios::end);
 }
 
 void LasWriter::add(const LandscapePoint& point) {
@@ -87,6 +132,7 @@ void LasWriter::add(const LandscapePoint& point) {
   }
   std::memcpy(record + 12, &point.intensity, 2);
   record[14] = layout_.format >= 6 ? 0x11 : 0x09;  // return 1 of 1 (a return number is never 0)
+  if (layout_.varied_fields) varyFields(record);
   if (const std::uint16_t rgb = kRgbOffset[static_cast<std::size_t>(layout_.format)]) {
     for (std::size_t ch = 0; ch < 3; ++ch) {
       const std::uint16_t value =
@@ -97,7 +143,43 @@ void LasWriter::add(const LandscapePoint& point) {
   for (int i = 0; i < layout_.extra_bytes; ++i)
     record[kFormatBytes[static_cast<std::size_t>(layout_.format)] + i] = 0xee;
   ++count_;
+  if (laz_) {
+    laz_->add(record);
+    buffer_.clear();
+    if (laz_->points() == nextChunkPoints()) finishLazChunk();
+    return;
+  }
   if (buffer_.size() >= kFlushBytes) flush();
+}
+
+// Deterministic, from the point's index: runs of equal values broken now and then, as in scans.
+void LasWriter::varyFields(std::uint8_t* record) const {
+  const std::uint64_t i = count_;
+  const std::uint64_t hash = (i * 0x9e3779b97f4a7c15ull) >> 40;
+  if (layout_.format < 6) {
+    const std::uint64_t returns = 1 + hash % 3;
+    const std::uint64_t number = 1 + (hash >> 3) % returns;
+    record[14] = static_cast<std::uint8_t>(number | (returns << 3) | ((i / 40 % 2) << 6) |
+                                           ((hash % 97 == 0 ? 1u : 0u) << 7));
+    record[15] = static_cast<std::uint8_t>(i / 7 % 5 == 0 ? hash % 19 : 2);
+    record[16] =
+        static_cast<std::uint8_t>(static_cast<std::int8_t>(static_cast<int>(i / 50 % 60) - 30));
+    record[17] = static_cast<std::uint8_t>(hash % 3 == 0 ? hash >> 8 : 7);
+    const auto source = static_cast<std::uint16_t>(i / 1000 + (hash % 501 == 0 ? 40000 : 0));
+    std::memcpy(record + 18, &source, 2);
+  }
+  const bool has_time = layout_.format == 1 || layout_.format >= 3;
+  if (has_time) {
+    const std::size_t at = layout_.format >= 6 ? 22 : 20;
+    // Two flight lines interleaved in runs, each steady but for a pulse now and then out of step
+    // (by up to 600 periods either way); now and then a jump or a repeat.
+    const double line = (i / 37) % 3 == 0 ? 250000.0 : 0.0;
+    const double out_of_step = hash % 7 == 0 ? static_cast<double>(hash % 1200) - 600.0 : 0.0;
+    double time = 1000.0 + line + (static_cast<double>(i) + out_of_step) * 1.5e-5;
+    if (hash % 211 == 0) time += 1e6;
+    if (hash % 13 == 0) time = 1000.0 + line;
+    std::memcpy(record + at, &time, 8);
+  }
 }
 
 void LasWriter::flush() {
@@ -110,7 +192,12 @@ void LasWriter::finish() {
   flush();
   using namespace las_offsets;
   const int minor = layout_.minor();
-  const std::uint64_t evlr_start = point_offset_ + count_ * recordLength(layout_);
+  if (laz_) {
+    finishLaz();
+  } else {
+    evlr_start_ = point_offset_ + count_ * recordLength(layout_);
+  }
+  const std::uint64_t evlr_start = evlr_start_;
   for (int i = 0; i < layout_.evlrs; ++i) {
     const std::vector<std::uint8_t> evlr = extendedRecord(true, i);
     out_.write(reinterpret_cast<const char*>(evlr.data()),
@@ -124,8 +211,8 @@ void LasWriter::finish() {
   putText(head, 58, "octopoint tests/tools", 32);
   put<std::uint16_t>(head, kHeaderSize, static_cast<std::uint16_t>(headerBytes(minor)));
   put<std::uint32_t>(head, kPointOffset, static_cast<std::uint32_t>(point_offset_));
-  put<std::uint32_t>(head, kVlrCount, static_cast<std::uint32_t>(layout_.vlrs));
-  head[kFormat] = static_cast<std::uint8_t>(layout_.format);
+  put<std::uint32_t>(head, kVlrCount, static_cast<std::uint32_t>(layout_.vlrs + (laz_ ? 1 : 0)));
+  head[kFormat] = static_cast<std::uint8_t>(layout_.format | (laz_ ? 0x80 : 0));  // LASzip's mark
   put<std::uint16_t>(head, kRecordLength, recordLength(layout_));
   const bool legacy =
       minor < 4 || (layout_.format < 6 && count_ <= std::numeric_limits<std::uint32_t>::max());

@@ -1,7 +1,8 @@
 #pragma once
 // Writing LAS files for tests and scale runs (tests/support/make_large_scan.cpp): any version 1.0
 // to 1.4, any point format 0 to 10, with VLRs, EVLRs, extra bytes per record and 8- or 16-bit
-// colour, streamed point by point. The header's counts and bounds are patched in by finish().
+// colour, streamed point by point, as LAS or LAZ. The header's counts and bounds are patched in by
+// finish().
 
 #include <array>
 #include <cstdint>
@@ -10,6 +11,7 @@
 #include <vector>
 
 #include "tests/support/landscape.h"
+#include "tests/support/laz_encoder.h"
 
 namespace octopoint::testing {
 
@@ -24,6 +26,15 @@ struct LasLayout {
   std::array<double, 3> scale{0.001, 0.001, 0.001};
   std::array<double, 3> offset{500000, 4100000,
                                0};  // a UTM-like origin, far beyond float precision
+  // LAZ (formats 0 to 3): the records compressed as LASzip does (tests/support/laz_encoder.h), in
+  // chunks of laz_chunk_points, or of varying sizes listed in the chunk table.
+  bool laz = false;
+  // Every field varied (returns, classes, scan angles, user data, sources, GPS times in two
+  // interleaved flight lines with jumps), so that a LAZ coder meets each of its cases; else the
+  // fields a landscape has (position, intensity, colour) and constant others.
+  bool varied_fields = false;
+  std::uint32_t laz_chunk_points = 50000;
+  bool laz_variable_chunks = false;
 
   int minor() const {
     return version_minor >= 0 ? version_minor : format <= 3 ? 2 : format <= 5 ? 3 : 4;
@@ -46,11 +57,21 @@ class LasWriter {
 
   static std::uint16_t recordLength(const LasLayout& layout);
   std::uint64_t pointOffset() const { return point_offset_; }
+  // LAZ: each chunk's points and bytes, as the chunk table lists them.
+  const std::vector<std::uint64_t>& lazChunkPoints() const { return chunk_points_; }
+  const std::vector<std::uint64_t>& lazChunkBytes() const { return chunk_bytes_; }
 
  private:
   void flush();
+  void varyFields(std::uint8_t* record) const;
+  std::uint64_t nextChunkPoints() const;
+  void finishLazChunk();
+  void finishLaz();
 
   LasLayout layout_;
+  std::unique_ptr<LazChunkEncoder> laz_;
+  std::vector<std::uint64_t> chunk_points_, chunk_bytes_;
+  std::uint64_t evlr_start_ = 0;
   std::ofstream out_;
   std::uint64_t point_offset_ = 0;
   std::uint64_t count_ = 0;

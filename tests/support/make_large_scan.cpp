@@ -1,5 +1,5 @@
 // make_large_scan: a scan of any size of the procedural landscape (tests/support/landscape.h), as
-// LAS or binary PLY, written point by point, so 10^8 points need no more memory than 100.
+// LAS, LAZ or binary PLY, written point by point, so 10^8 points need no more memory than 100.
 #include <charconv>
 #include <cstdio>
 #include <cstring>
@@ -23,13 +23,20 @@ using octopoint::testing::LasLayout;
 constexpr std::int64_t kMaxPoints = std::int64_t{1} << 40;
 
 constexpr const char* kUsage =
-    R"(usage: make_large_scan --points N --format las|ply [options] -o FILE
+    R"(usage: make_large_scan --points N --format las|laz|ply [options] -o FILE
 
 Writes N points of a procedural landscape (hills, meadows, rock, a lake, a town of buildings with
 coloured roofs) to FILE, point by point in constant memory; the same options give the same file.
 
   --points N            how many points, 1..2^40
-  --format las|ply      LAS, or binary little-endian PLY (float x y z, uchar red green blue)
+  --format las|laz|ply  LAS; LAZ, the same compressed as LASzip does (point formats 0 to 3,
+                        point-wise items version 2, chunked, with a chunk table); or binary
+                        little-endian PLY (float x y z, uchar red green blue)
+  --chunk-points N      LAZ points per chunk (default 50000, LASzip's)
+  --variable-chunks     LAZ chunks of varying sizes, listed in the chunk table
+  --varied-fields       vary every LAS field (returns, classes, scan angles, user data, point
+                        sources, GPS times of interleaved flight lines), not only those a
+                        landscape has
   --las-format F        LAS point format 0..10 (default 2: XYZ, intensity, 16-bit RGB);
                         formats 0, 1, 4, 6 and 9 have no colour, only intensity
   --las-version 1.N     LAS minor version 0..4 (default: the first that has the format)
@@ -84,8 +91,17 @@ int run(int argc, char** argv) {
       points = static_cast<std::uint64_t>(
           octopoint::cli::parseInteger(args.name(), args.value(), 1, kMaxPoints));
     } else if (args.is("--format")) {
-      format = octopoint::cli::parseChoice(args.name(), args.value(), {"las", "ply"}) == 0 ? "las"
-                                                                                           : "ply";
+      const char* const formats[] = {"las", "laz", "ply"};
+      format =
+          formats[octopoint::cli::parseChoice(args.name(), args.value(), {"las", "laz", "ply"})];
+      layout.laz = format == std::string("laz");
+    } else if (args.is("--chunk-points")) {
+      layout.laz_chunk_points =
+          static_cast<std::uint32_t>(parseInt(args.name(), args.value(), 1, 1 << 20));
+    } else if (args.is("--variable-chunks")) {
+      layout.laz_variable_chunks = true;
+    } else if (args.is("--varied-fields")) {
+      layout.varied_fields = true;
     } else if (args.is("--las-format")) {
       layout.format = parseInt(args.name(), args.value(), 0, 10);
     } else if (args.is("--las-version")) {
@@ -113,9 +129,13 @@ int run(int argc, char** argv) {
     }
   }
   if (points == 0 || output.empty() || format.empty()) {
-    throw std::runtime_error("need --points N, --format las|ply and -o FILE (see --help)");
+    throw std::runtime_error("need --points N, --format las|laz|ply and -o FILE (see --help)");
   }
   if (layout.evlrs && layout.minor() < 4) throw std::runtime_error("--evlrs needs LAS 1.4");
+  if (layout.laz && layout.format > 3) {
+    throw std::runtime_error("--format laz writes point formats 0 to 3, not " +
+                             std::to_string(layout.format));
+  }
   const Landscape landscape(seed);
   if (format == "ply") {
     writePly(output, points, landscape);

@@ -1,0 +1,266 @@
+// The LAZ arithmetic coder and its models (codegen/laz_arithmetic.h).
+
+#include "codegen/laz_arithmetic.h"
+
+#include <algorithm>
+
+namespace octopoint::laz {
+namespace {
+
+constexpr std::uint32_t kBitModelMaxCount = 1u << kBitModelShift;
+constexpr std::uint32_t kSymbolModelMaxCount = 1u << kSymbolModelShift;
+constexpr std::uint32_t kBitModelMaxCycle = 64;
+constexpr std::uint32_t kMaxSymbols = 1u << 11;
+constexpr std::uint32_t kSmallestTabledAlphabet = 17;  // smaller ones bisect in a step or four
+
+}  // namespace
+
+void BitModel::reset() {
+  count_0 = 1;
+  count = 2;
+  probability_0 = 1u << (kBitModelShift - 1);
+  cycle = until_update = 4;  // adapt fast at first
+}
+
+void BitModel::update() {
+  count += cycle;
+  if (count > kBitModelMaxCount) {  // halve, so that the model keeps following the data
+    count = (count + 1) >> 1;
+    count_0 = (count_0 + 1) >> 1;
+    if (count_0 == count) ++count;
+  }
+  const std::uint32_t scale = 0x80000000u / count;        // Q31 / count
+  probability_0 = (count_0 * scale) >> (31 - kBitModelShift);  // Q13
+  cycle = std::min((5 * cycle) >> 2, kBitModelMaxCycle);
+  until_update = cycle;
+}
+
+SymbolModel::SymbolModel(std::uint32_t symbols, bool for_decoding)
+    : symbols_(std::clamp(symbols, 2u, kMaxSymbols)) {
+  distribution.resize(symbols_);
+  counts.resize(symbols_);
+  if (for_decoding && symbols_ >= kSmallestTabledAlphabet) {
+    std::uint32_t table_bits = 3;
+    while (symbols_ > (1u << (table_bits + 2))) ++table_bits;
+    table_size = 1u << table_bits;
+    table_shift = kSymbolModelShift - table_bits;
+    table.resize(table_size + 2);
+  }
+  reset();
+}
+
+void SymbolModel::reset() {
+  total_ = 0;
+  cycle_ = symbols_;
+  std::fill(counts.begin(), counts.end(), 1u);
+  update();
+  until_update = cycle_ = (symbols_ + 6) >> 1;
+}
+
+void SymbolModel::update() {
+  total_ += cycle_;
+  if (total_ > kSymbolModelMaxCount) {  // halve, so that the model keeps following the data
+    total_ = 0;
+    for (std::uint32_t& count : counts) total_ += (count = (count + 1) >> 1);
+  }
+  const std::uint32_t scale = 0x80000000u / total_;  // Q31 / total
+  std::uint32_t sum = 0;
+  std::uint32_t filled = 0;  // table entries set so far
+  for (std::uint32_t s = 0; s < symbols_; ++s) {
+    distribution[s] = (scale * sum) >> (31 - kSymbolModelShift);  // Q15
+    sum += counts[s];
+    if (table.empty()) continue;
+    const std::uint32_t quantile = distribution[s] >> table_shift;
+    while (filled < quantile) table[++filled] = s - 1;
+  }
+  if (!table.empty()) {
+    table[0] = 0;
+    while (filled <= table_size) table[++filled] = symbols_ - 1;
+  }
+  cycle_ = std::min((5 * cycle_) >> 2, (symbols_ + 6) << 3);
+  until_update = cycle_;
+}
+
+void ArithmeticDecoder::attach(ByteInput& input) {
+  input_ = &input;
+  next_ = end_ = nullptr;
+  overrun_ = 0;
+  failed_ = false;
+}
+
+void ArithmeticDecoder::start() {
+  length_ = kMaxLength;
+  value_ = 0;
+  for (int i = 0; i < 4; ++i) value_ = (value_ << 8) | nextByte();
+}
+
+std::uint8_t ArithmeticDecoder::refill() {
+  const std::span<const std::uint8_t> window = input_ ? input_->more() : std::span<const std::uint8_t>{};
+  if (window.empty()) {
+    ++overrun_;
+    return 0;
+  }
+  next_ = window.data();
+  end_ = next_ + window.size();
+  return *next_++;
+}
+
+std::uint32_t ArithmeticDecoder::decodeBit(BitModel& model) {
+  const std::uint32_t split = model.probability_0 * (length_ >> kBitModelShift);
+  const std::uint32_t bit = value_ >= split;
+  if (bit == 0) {
+    length_ = split;
+    ++model.count_0;
+  } else {
+    value_ -= split;
+    length_ -= split;
+  }
+  if (length_ < kMinLength) renormalise();
+  if (--model.until_update == 0) model.update();
+  return bit;
+}
+
+std::uint32_t ArithmeticDecoder::decodeSymbol(SymbolModel& model) {
+  const std::uint32_t* distribution = model.distribution.data();
+  const std::uint32_t last = model.symbols() - 1;
+  std::uint32_t symbol = 0;
+  std::uint32_t low = 0;
+  std::uint32_t high = length_;
+  length_ >>= kSymbolModelShift;
+  if (!model.table.empty()) {
+    // The table narrows the search to the symbols of one quantile, then bisection.
+    const std::uint32_t quantile_value = value_ / length_;
+    const std::uint32_t t = std::min(quantile_value >> model.table_shift, model.table_size);
+    symbol = model.table[t];
+    std::uint32_t above = model.table[t + 1] + 1;
+    while (above > symbol + 1) {
+      const std::uint32_t middle = (symbol + above) >> 1;
+      if (distribution[middle] > quantile_value) {
+        above = middle;
+      } else {
+        symbol = middle;
+      }
+    }
+    low = distribution[symbol] * length_;
+    if (symbol != last) high = distribution[symbol + 1] * length_;
+  } else {
+    std::uint32_t above = model.symbols();
+    std::uint32_t middle = above >> 1;
+    do {
+      const std::uint32_t z = length_ * distribution[middle];
+      if (z > value_) {
+        above = middle;
+        high = z;
+      } else {
+        symbol = middle;
+        low = z;
+      }
+    } while ((middle = (symbol + above) >> 1) != symbol);
+  }
+  value_ -= low;
+  length_ = high - low;
+  if (length_ < kMinLength) renormalise();
+  ++model.counts[symbol];
+  if (--model.until_update == 0) model.update();
+  return symbol;
+}
+
+std::uint32_t ArithmeticDecoder::readBits(int bits) {
+  if (bits > 19) {  // wider values come as a low 16-bit half and the rest
+    const std::uint32_t low = readBits(16);
+    return (readBits(bits - 16) << 16) | low;
+  }
+  length_ >>= bits;
+  std::uint32_t value = value_ / length_;
+  value_ -= length_ * value;
+  if (length_ < kMinLength) renormalise();
+  if (value >> bits) {  // only a corrupt stream gets here
+    failed_ = true;
+    value &= (1u << bits) - 1;
+  }
+  return value;
+}
+
+void ArithmeticEncoder::start() {
+  start_ = out_.size();
+  base_ = 0;
+  length_ = kMaxLength;
+}
+
+void ArithmeticEncoder::carry() {
+  std::size_t at = out_.size();
+  while (at > start_ && out_[at - 1] == 0xff) out_[--at] = 0;
+  if (at > start_) ++out_[at - 1];
+}
+
+void ArithmeticEncoder::renormalise() {
+  do {
+    out_.push_back(static_cast<std::uint8_t>(base_ >> 24));
+    base_ <<= 8;
+    length_ <<= 8;
+  } while (length_ < kMinLength);
+}
+
+void ArithmeticEncoder::encodeBit(BitModel& model, std::uint32_t bit) {
+  const std::uint32_t split = model.probability_0 * (length_ >> kBitModelShift);
+  if (bit == 0) {
+    length_ = split;
+    ++model.count_0;
+  } else {
+    const std::uint32_t old_base = base_;
+    base_ += split;
+    length_ -= split;
+    if (old_base > base_) carry();
+  }
+  if (length_ < kMinLength) renormalise();
+  if (--model.until_update == 0) model.update();
+}
+
+void ArithmeticEncoder::encodeSymbol(SymbolModel& model, std::uint32_t symbol) {
+  const std::uint32_t old_base = base_;
+  if (symbol == model.symbols() - 1) {  // the last symbol takes the rest of the interval
+    const std::uint32_t low = model.distribution[symbol] * (length_ >> kSymbolModelShift);
+    base_ += low;
+    length_ -= low;
+  } else {
+    length_ >>= kSymbolModelShift;
+    const std::uint32_t low = model.distribution[symbol] * length_;
+    base_ += low;
+    length_ = model.distribution[symbol + 1] * length_ - low;
+  }
+  if (old_base > base_) carry();
+  if (length_ < kMinLength) renormalise();
+  ++model.counts[symbol];
+  if (--model.until_update == 0) model.update();
+}
+
+void ArithmeticEncoder::writeBits(int bits, std::uint32_t value) {
+  if (bits > 19) {
+    writeBits(16, value & 0xffff);
+    value >>= 16;
+    bits -= 16;
+  }
+  const std::uint32_t old_base = base_;
+  base_ += value * (length_ >>= bits);
+  if (old_base > base_) carry();
+  if (length_ < kMinLength) renormalise();
+}
+
+void ArithmeticEncoder::finish() {
+  const std::uint32_t old_base = base_;
+  bool another_byte = true;
+  if (length_ > 2 * kMinLength) {
+    base_ += kMinLength;
+    length_ = kMinLength >> 1;
+  } else {
+    base_ += kMinLength >> 1;
+    length_ = kMinLength >> 9;
+    another_byte = false;
+  }
+  if (old_base > base_) carry();
+  renormalise();
+  // The decoder reads four bytes ahead: these let it end exactly where the stream ends.
+  out_.insert(out_.end(), another_byte ? 3 : 2, 0);
+}
+
+}  // namespace octopoint::laz

@@ -1,0 +1,151 @@
+#pragma once
+// The adaptive arithmetic coder of LAZ (the LASzip compression), written from its published
+// description: a 32-bit range coder after Amir Said ("Introduction to Arithmetic Coding", HPL-2004-76)
+// with adaptive models whose counts are refreshed at growing intervals. A LAZ decoder must reproduce
+// the encoder's every rounding, so each constant below is part of the format:
+//
+//  - the interval is [base, base + length) with length kept in [2^24, 2^32): it is renormalised a
+//    byte at a time (shifted left 8) whenever it drops below 2^24;
+//  - a bit model holds P(0) in Q13 (length >> 13 times it splits the interval); a symbol model holds
+//    a cumulative distribution in Q15 (length >> 15 times it);
+//  - models recompute their probabilities after update_cycle symbols, the cycle growing by 5/4 up to
+//    a cap, and halve their counts past 2^13 (bits) or 2^15 (symbols) so that they keep adapting;
+//  - raw bits (readBits) split the interval evenly.
+//
+// The decoder never reads outside its input: past the end it reads zero bytes and counts them
+// (overrun()), and a raw value out of range marks it failed(): the caller checks both at the end of
+// a chunk and refuses the chunk, so that a corrupt stream costs its own length and no more.
+
+#include <cstddef>
+#include <cstdint>
+#include <span>
+#include <vector>
+
+namespace octopoint::laz {
+
+inline constexpr std::uint32_t kMinLength = 1u << 24;  // below it the interval is renormalised
+inline constexpr std::uint32_t kMaxLength = 0xffffffffu;
+inline constexpr int kBitModelShift = 13;     // bit probabilities are Q13
+inline constexpr int kSymbolModelShift = 15;  // symbol distributions are Q15
+
+// An adaptive model of one bit.
+class BitModel {
+ public:
+  BitModel() { reset(); }
+  void reset();
+  void update();
+
+  std::uint32_t probability_0 = 0;  // Q13
+  std::uint32_t count_0 = 0;
+  std::uint32_t count = 0;
+  std::uint32_t until_update = 0;
+  std::uint32_t cycle = 0;
+};
+
+// An adaptive model of `symbols` symbols (2 to 2048), with a lookup table that finds a symbol's
+// interval in one step for the decoder of larger alphabets.
+class SymbolModel {
+ public:
+  explicit SymbolModel(std::uint32_t symbols, bool for_decoding = true);
+  void reset();
+  void update();
+  std::uint32_t symbols() const { return symbols_; }
+
+  std::vector<std::uint32_t> distribution;  // Q15 cumulative: distribution[s] = P(< s)
+  std::vector<std::uint32_t> counts;
+  std::vector<std::uint32_t> table;  // decoder: table[q] = the first symbol of Q15 quantile q
+  std::uint32_t table_shift = 0;
+  std::uint32_t table_size = 0;
+  std::uint32_t until_update = 0;
+
+ private:
+  std::uint32_t symbols_;
+  std::uint32_t total_ = 0;
+  std::uint32_t cycle_ = 0;
+};
+
+// Where a decoder takes its bytes from: windows handed out one after another, empty at the end.
+class ByteInput {
+ public:
+  virtual ~ByteInput() = default;
+  virtual std::span<const std::uint8_t> more() = 0;
+};
+
+// Bytes already in memory.
+class MemoryInput final : public ByteInput {
+ public:
+  explicit MemoryInput(std::span<const std::uint8_t> bytes) : bytes_(bytes) {}
+  std::span<const std::uint8_t> more() override {
+    const auto out = bytes_;
+    bytes_ = {};
+    return out;
+  }
+
+ private:
+  std::span<const std::uint8_t> bytes_;
+};
+
+class ArithmeticDecoder {
+ public:
+  // Reads from `input` from now on; raw bytes may be taken (rawByte) before start().
+  void attach(ByteInput& input);
+  // Starts the arithmetic code: reads its first four bytes.
+  void start();
+  std::uint32_t decodeBit(BitModel& model);
+  std::uint32_t decodeSymbol(SymbolModel& model);
+  std::uint32_t readBits(int bits);  // 1 to 32 raw bits
+  std::uint32_t readInt() { return readBits(32); }
+  // Zero bytes read past the end of the input; a valid stream needs none.
+  std::uint64_t overrun() const { return overrun_; }
+  // Bytes of the last window handed over but not read yet.
+  std::size_t unread() const { return static_cast<std::size_t>(end_ - next_); }
+  bool failed() const { return failed_; }
+  // A byte outside the arithmetic code (a chunk's first point is stored raw): only before start().
+  std::uint8_t rawByte() { return nextByte(); }
+
+ private:
+  std::uint8_t nextByte() {
+    if (next_ == end_) [[unlikely]]
+      return refill();
+    return *next_++;
+  }
+  std::uint8_t refill();
+  void renormalise() {
+    do {
+      value_ = (value_ << 8) | nextByte();
+      length_ <<= 8;
+    } while (length_ < kMinLength);
+  }
+
+  ByteInput* input_ = nullptr;
+  const std::uint8_t* next_ = nullptr;
+  const std::uint8_t* end_ = nullptr;
+  std::uint32_t value_ = 0;
+  std::uint32_t length_ = kMaxLength;
+  std::uint64_t overrun_ = 0;
+  bool failed_ = false;
+};
+
+// The encoder: the exact inverse of ArithmeticDecoder, writing to a byte vector.
+class ArithmeticEncoder {
+ public:
+  explicit ArithmeticEncoder(std::vector<std::uint8_t>& out) : out_(out) {}
+  void start();
+  void encodeBit(BitModel& model, std::uint32_t bit);
+  void encodeSymbol(SymbolModel& model, std::uint32_t symbol);
+  void writeBits(int bits, std::uint32_t value);
+  void writeInt(std::uint32_t value) { writeBits(32, value); }
+  // Flushes the interval so that a decoder reads exactly the bytes written, no more.
+  void finish();
+
+ private:
+  void carry();
+  void renormalise();
+
+  std::vector<std::uint8_t>& out_;
+  std::size_t start_ = 0;  // where this stream's bytes begin in out_
+  std::uint32_t base_ = 0;
+  std::uint32_t length_ = kMaxLength;
+};
+
+}  // namespace octopoint::laz

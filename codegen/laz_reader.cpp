@@ -1,0 +1,438 @@
+// LAZ read natively (codegen/laz_reader.h): LASzip's VLR, the chunk table, and the chunks decoded
+// by the item decoders (codegen/laz_pointwise.h) in parallel, each thread with its own decoder.
+
+#include "codegen/laz_reader.h"
+
+#include <algorithm>
+#include <cstring>
+#include <mutex>
+#include <string>
+#include <vector>
+
+#include "codegen/laz_arithmetic.h"
+#include "codegen/laz_integer.h"
+#include "codegen/laz_pointwise.h"
+#include "codegen/scan_header_check.h"
+
+namespace octopoint::prepare {
+namespace {
+
+using laz::Item;
+using laz::ItemType;
+
+enum class Compressor : std::uint16_t { kNone = 0, kPointwise = 1, kPointwiseChunked = 2, kLayered = 3 };
+
+constexpr std::uint32_t kVariableChunks = 0xffffffffu;
+constexpr std::size_t kVlrFixedBytes = 34;  // before the items, 6 bytes each
+constexpr std::size_t kInputWindow = 1 << 16;
+// The most chunks a chunk table may list (24 bytes each in memory): 2 * 10^11 points in LASzip's
+// chunks of 50,000.
+constexpr std::uint64_t kMaxLazChunks = 1u << 22;
+
+template <typename T>
+T readLittle(const std::uint8_t* bytes) {
+  T value;
+  std::memcpy(&value, bytes, sizeof value);
+  return value;
+}
+
+struct LazLayout {
+  Compressor compressor = Compressor::kNone;
+  std::uint32_t chunk_size = 0;  // kVariableChunks: each chunk's size is in the chunk table
+  std::vector<Item> items;
+  std::string description;  // for the summary
+};
+
+// One chunk: its points and where its bytes lie.
+struct Chunk {
+  std::uint64_t first_point = 0;
+  std::uint64_t points = 0;
+  std::uint64_t offset = 0;
+  std::uint64_t bytes = 0;
+};
+
+// The items each point format has, in order (extra bytes come after, as a BYTE item).
+std::vector<ItemType> formatItems(int format) {
+  std::vector<ItemType> items = {ItemType::kPoint10};
+  if (format == 1 || format >= 3) items.push_back(ItemType::kGpsTime11);
+  if (format == 2 || format == 3 || format == 5) items.push_back(ItemType::kRgb12);
+  if (format == 4 || format == 5) items.push_back(ItemType::kWavePacket13);
+  return items;
+}
+
+std::uint16_t itemBytes(ItemType type) {
+  switch (type) {
+    case ItemType::kPoint10: return 20;
+    case ItemType::kGpsTime11: return 8;
+    case ItemType::kRgb12: return 6;
+    case ItemType::kWavePacket13: return 29;
+    default: return 0;
+  }
+}
+
+// LASzip's VLR: the compressor, the chunk size and the items, checked against the point format.
+LazLayout readLaszipVlr(const InputFile& file, const LasHeader& header) {
+  const std::string where = "LASzip VLR at byte " + std::to_string(header.laszip_vlr_offset);
+  const auto refuse = [&](const std::string& what) { fail(file.path(), what, where); };
+  if (header.laszip_vlr_bytes < kVlrFixedBytes) {
+    refuse("the VLR has " + std::to_string(header.laszip_vlr_bytes) + " bytes, at least " +
+           std::to_string(kVlrFixedBytes) + " needed");
+  }
+  std::vector<std::uint8_t> vlr(header.laszip_vlr_bytes);
+  file.readAt(header.laszip_vlr_offset, vlr, where);
+  LazLayout layout;
+  const auto compressor = readLittle<std::uint16_t>(&vlr[0]);
+  layout.chunk_size = readLittle<std::uint32_t>(&vlr[12]);
+  const auto item_count = readLittle<std::uint16_t>(&vlr[32]);
+  if (kVlrFixedBytes + 6u * item_count > vlr.size()) {
+    refuse("the VLR lists " + std::to_string(item_count) + " items, its " +
+           std::to_string(vlr.size()) + " bytes hold " +
+           std::to_string((vlr.size() - kVlrFixedBytes) / 6));
+  }
+  std::uint32_t total = 0;
+  for (std::size_t i = 0; i < item_count; ++i) {
+    const std::uint8_t* at = &vlr[kVlrFixedBytes + 6 * i];
+    Item item{static_cast<ItemType>(readLittle<std::uint16_t>(at)), readLittle<std::uint16_t>(at + 2),
+              readLittle<std::uint16_t>(at + 4)};
+    total += item.size;
+    layout.items.push_back(item);
+  }
+  if (compressor == static_cast<std::uint16_t>(Compressor::kLayered) || header.point_format > 5) {
+    refuse("LAZ of point format " + std::to_string(header.point_format) +
+           " with LASzip's layered compressor (LAS 1.4 items version 3) is not read yet; only the "
+           "point-wise items of formats 0 to 5");
+  }
+  if (compressor != static_cast<std::uint16_t>(Compressor::kPointwise) &&
+      compressor != static_cast<std::uint16_t>(Compressor::kPointwiseChunked)) {
+    refuse("unknown LASzip compressor " + std::to_string(compressor) +
+           " (1 point-wise, 2 point-wise chunked, 3 layered chunked)");
+  }
+  layout.compressor = static_cast<Compressor>(compressor);
+  // The items must be the point format's, in its order, then at most one BYTE item, and make up
+  // exactly the record.
+  const std::vector<ItemType> expected = formatItems(header.point_format);
+  std::size_t matched = 0;
+  for (const Item& item : layout.items) {
+    const bool in_place = matched < expected.size() ? item.type == expected[matched]
+                                                    : item.type == ItemType::kByte && matched == expected.size();
+    if (!in_place || (item.type != ItemType::kByte && item.size != itemBytes(item.type)) ||
+        item.size == 0) {
+      refuse("the items (" + laz::itemName(item) + " of " + std::to_string(item.size) +
+             " bytes, item " + std::to_string(matched + 1) + ") do not fit point format " +
+             std::to_string(header.point_format));
+    }
+    ++matched;
+  }
+  if (matched < expected.size() || total != header.record_length) {
+    refuse("the items make " + std::to_string(total) + "-byte records with " +
+           std::to_string(matched) + " items, point format " +
+           std::to_string(header.point_format) + " has " + std::to_string(header.record_length) +
+           "-byte records");
+  }
+  laz::ArithmeticDecoder probe;
+  for (const Item& item : layout.items) {
+    if (!laz::pointwiseDecoder(item, probe)) {
+      refuse("unknown LAZ item " + laz::itemName(item) + ": this reader knows versions 1 and 2 "
+             "of POINT10, GPSTIME11, RGB12 and BYTE, and WAVEPACKET13 version 1");
+    }
+  }
+  if (layout.compressor == Compressor::kPointwiseChunked &&
+      (layout.chunk_size == 0 ||
+       (layout.chunk_size != kVariableChunks && layout.chunk_size > kMaxLazChunkPoints))) {
+    refuse("chunks of " + std::to_string(layout.chunk_size) + " points are not read (1 to " +
+           std::to_string(kMaxLazChunkPoints) + ", or variable)");
+  }
+  layout.description = layout.compressor == Compressor::kPointwise
+                           ? "point-wise, one chunk"
+                           : layout.chunk_size == kVariableChunks
+                                 ? "point-wise, variable chunks"
+                                 : "point-wise, chunks of " + std::to_string(layout.chunk_size);
+  return layout;
+}
+
+// The bytes of [offset, end) of a file, handed to a decoder a window at a time.
+class FileInput final : public laz::ByteInput {
+ public:
+  FileInput(const InputFile& file, std::uint64_t offset, std::uint64_t end, std::string what)
+      : file_(file), next_(offset), end_(end), what_(std::move(what)) {}
+
+  std::span<const std::uint8_t> more() override {
+    const auto n = static_cast<std::size_t>(std::min<std::uint64_t>(kInputWindow, end_ - next_));
+    if (n == 0) return {};
+    window_.resize(n);
+    file_.readAt(next_, window_, what_);
+    next_ += n;
+    handed_ += n;
+    return window_;
+  }
+  std::uint64_t handed() const { return handed_; }
+
+ private:
+  const InputFile& file_;
+  std::uint64_t next_;
+  std::uint64_t end_;
+  std::string what_;
+  std::vector<std::uint8_t> window_;
+  std::uint64_t handed_ = 0;
+};
+
+// The chunk table: where each chunk starts and, for variable chunks, how many points it has.
+std::vector<Chunk> readChunkTable(const InputFile& file, const LasHeader& header,
+                                  const LazLayout& layout) {
+  const auto& path = file.path();
+  const std::uint64_t data_start = header.point_offset + 8;
+  const std::string where = "chunk table pointer at byte " + std::to_string(header.point_offset);
+  if (header.points_end < data_start)
+    fail(path, "truncated: the point data ends before its chunk table pointer", where);
+  std::uint8_t pointer_bytes[8];
+  file.readAt(header.point_offset, pointer_bytes, where);
+  auto table_offset = readLittle<std::int64_t>(pointer_bytes);
+  if (table_offset == -1) {  // written by a streaming compressor: the pointer is at the file's end
+    file.readAt(file.size() - 8, pointer_bytes, "chunk table pointer at the end of the file");
+    table_offset = readLittle<std::int64_t>(pointer_bytes);
+  }
+  if (table_offset == static_cast<std::int64_t>(header.point_offset)) {
+    fail(path, "no chunk table: the compressor was interrupted before writing it", where);
+  }
+  if (table_offset < static_cast<std::int64_t>(data_start) ||
+      static_cast<std::uint64_t>(table_offset) + 8 > header.points_end) {
+    fail(path,
+         "the chunk table at byte " + std::to_string(table_offset) +
+             " lies outside the point data (" + std::to_string(data_start) + " to " +
+             std::to_string(header.points_end) + ")",
+         where);
+  }
+  const auto table_start = static_cast<std::uint64_t>(table_offset);
+  const std::string table_where = "chunk table at byte " + std::to_string(table_start);
+  std::uint8_t head[8];
+  file.readAt(table_start, head, table_where);
+  if (readLittle<std::uint32_t>(head) != 0) {
+    fail(path, "unknown chunk table version " + std::to_string(readLittle<std::uint32_t>(head)),
+         table_where);
+  }
+  const std::uint64_t chunk_count = readLittle<std::uint32_t>(head + 4);
+  // Every chunk holds at least its first point raw.
+  const std::uint64_t room = table_start - data_start;
+  if (chunk_count == 0 || chunk_count > room / header.record_length) {
+    fail(path,
+         "the chunk table declares " + std::to_string(chunk_count) + " chunks, the " +
+             std::to_string(room) + " bytes of point data hold 1 to " +
+             std::to_string(room / header.record_length),
+         table_where);
+  }
+  const bool variable = layout.chunk_size == kVariableChunks;
+  if (!variable && chunk_count != (header.point_count + layout.chunk_size - 1) / layout.chunk_size) {
+    fail(path,
+         "the header declares " + std::to_string(header.point_count) + " points, which take " +
+             std::to_string((header.point_count + layout.chunk_size - 1) / layout.chunk_size) +
+             " chunks of " + std::to_string(layout.chunk_size) + ", the chunk table lists " +
+             std::to_string(chunk_count),
+         table_where);
+  }
+  if (chunk_count > kMaxLazChunks) {
+    fail(path,
+         "the chunk table declares " + std::to_string(chunk_count) + " chunks, more than the " +
+             std::to_string(kMaxLazChunks) + " read",
+         table_where);
+  }
+  FileInput input(file, table_start + 8, header.points_end, table_where);
+  laz::ArithmeticDecoder decoder;
+  decoder.attach(input);
+  decoder.start();
+  laz::IntegerModels sizes(32, 2);
+  sizes.reset();
+  std::vector<Chunk> chunks(static_cast<std::size_t>(chunk_count));
+  std::uint64_t first_point = 0;
+  std::uint64_t offset = data_start;
+  std::int32_t last_points = 0;
+  std::int32_t last_bytes = 0;
+  for (std::size_t i = 0; i < chunks.size(); ++i) {
+    Chunk& chunk = chunks[i];
+    if (variable) last_points = sizes.decode(decoder, last_points, 0);
+    last_bytes = sizes.decode(decoder, last_bytes, 1);
+    if (decoder.overrun() > 0) {
+      fail(path,
+           "truncated: the chunk table ends after " + std::to_string(i) + " of its " +
+               std::to_string(chunk_count) + " chunks",
+           table_where);
+    }
+    chunk.points = variable ? static_cast<std::uint32_t>(last_points)
+                            : std::min<std::uint64_t>(layout.chunk_size,
+                                                      header.point_count - std::min(header.point_count, first_point));
+    chunk.bytes = static_cast<std::uint32_t>(last_bytes);
+    chunk.first_point = first_point;
+    chunk.offset = offset;
+    const std::string chunk_where = "chunk " + std::to_string(i + 1) + " of " +
+                                    std::to_string(chunk_count) + ", " + table_where;
+    if (chunk.points == 0 || chunk.points > kMaxLazChunkPoints) {
+      fail(path,
+           "a chunk of " + std::to_string(chunk.points) + " points (1 to " +
+               std::to_string(kMaxLazChunkPoints) + " are read)",
+           chunk_where);
+    }
+    if (chunk.bytes < header.record_length || chunk.bytes > table_start - offset) {
+      fail(path,
+           "a chunk of " + std::to_string(chunk.bytes) + " bytes at byte " +
+               std::to_string(offset) + " does not fit between its first point's " +
+               std::to_string(header.record_length) + " bytes and the chunk table",
+           chunk_where);
+    }
+    first_point += chunk.points;
+    offset += chunk.bytes;
+    if (first_point > header.point_count) break;  // reported below
+  }
+  if (first_point != header.point_count) {
+    fail(path,
+         "the header declares " + std::to_string(header.point_count) + " points, the " +
+             std::to_string(chunk_count) + " chunks of the chunk table hold " +
+             (first_point > header.point_count ? "more" : std::to_string(first_point)),
+         table_where);
+  }
+  return chunks;
+}
+
+// A point-wise LAZ file without chunks: one chunk of every point.
+std::vector<Chunk> wholeFileChunk(const InputFile& file, const LasHeader& header) {
+  if (header.point_count > kMaxLazChunkPoints) {
+    fail(file.path(),
+         "LAZ without chunks (LASzip's point-wise compressor) of more than " +
+             std::to_string(kMaxLazChunkPoints) + " points is not read",
+         "LASzip VLR");
+  }
+  return {Chunk{0, header.point_count, header.point_offset, header.points_end - header.point_offset}};
+}
+
+// One thread's chunk decoder: the arithmetic decoder and an item decoder per item.
+class ChunkDecoder {
+ public:
+  explicit ChunkDecoder(const LazLayout& layout) {
+    std::size_t at = 0;
+    for (const Item& item : layout.items) {
+      items_.push_back({laz::pointwiseDecoder(item, decoder_), at});
+      at += item.size;
+    }
+    record_bytes_ = at;
+  }
+
+  // Decodes the chunk's points [skip, skip + take) into `out`.
+  void decode(const InputFile& file, const Chunk& chunk, std::size_t chunk_index,
+              std::uint64_t skip, std::size_t take, std::uint8_t* out) {
+    const std::string where = "LAZ chunk " + std::to_string(chunk_index + 1) + " at byte " +
+                              std::to_string(chunk.offset);
+    FileInput input(file, chunk.offset, chunk.offset + chunk.bytes, where);
+    decoder_.attach(input);
+    scratch_.resize(record_bytes_);
+    std::uint8_t* record = skip == 0 ? out : scratch_.data();
+    for (std::size_t b = 0; b < record_bytes_; ++b) record[b] = decoder_.rawByte();
+    decoder_.start();
+    for (auto& [item, at] : items_) item->start(record + at);
+    const std::uint64_t end = skip + take;
+    for (std::uint64_t i = 1; i < end; ++i) {
+      std::uint8_t* next = i >= skip ? out + (i - skip) * record_bytes_ : scratch_.data();
+      for (auto& [item, at] : items_) item->decode(next + at);
+      if (decoder_.overrun() > 0) [[unlikely]] {  // stop a corrupt chunk at once
+        fail(file.path(),
+             "corrupt LAZ: the arithmetic code runs past the chunk's " +
+                 std::to_string(chunk.bytes) + " bytes at its point " + std::to_string(i + 1) +
+                 " of " + std::to_string(chunk.points),
+             where);
+      }
+    }
+    if (decoder_.failed()) fail(file.path(), "corrupt LAZ: a raw value out of range", where);
+    // A whole chunk's code ends exactly where the chunk does (LASzip's reader checks the same): a
+    // chunk table that lies about a size or an offset cannot go unnoticed.
+    const std::uint64_t consumed = input.handed() - decoder_.unread();
+    if (end == chunk.points && consumed != chunk.bytes) {
+      fail(file.path(),
+           "corrupt LAZ: the chunk table gives the chunk " + std::to_string(chunk.bytes) +
+               " bytes, its " + std::to_string(chunk.points) + " points take " +
+               std::to_string(consumed),
+           where);
+    }
+  }
+
+ private:
+  struct Part {
+    std::unique_ptr<laz::ItemDecoder> decoder;
+    std::size_t at;
+  };
+  laz::ArithmeticDecoder decoder_;
+  std::vector<Part> items_;
+  std::size_t record_bytes_ = 0;
+  std::vector<std::uint8_t> scratch_;
+};
+
+class LazSource final : public PointSource {
+ public:
+  LazSource(std::unique_ptr<InputFile> file, const LasHeader& header)
+      : file_(std::move(file)), header_(header), info_(lasSourceInfo(header)) {
+    layout_ = readLaszipVlr(*file_, header_);
+    chunks_ = layout_.compressor == Compressor::kPointwise ? wholeFileChunk(*file_, header_)
+                                                           : readChunkTable(*file_, header_, layout_);
+    info_.format += ", " + layout_.description;
+    file_->adviseSequential();
+  }
+
+  const SourceInfo& info() const override { return info_; }
+  std::size_t pieceCount() const override { return chunks_.size(); }
+  PointRange piece(std::size_t index) const override {
+    return {chunks_[index].first_point, static_cast<std::size_t>(chunks_[index].points)};
+  }
+
+  void read(std::uint64_t first, std::size_t count, PointChunk& chunk) const override {
+    chunk.raw.resize(count * header_.record_length);
+    std::unique_ptr<ChunkDecoder> decoder = takeDecoder();
+    // The chunks that hold [first, first + count): the last one starting at or before `first`, on.
+    auto it = std::upper_bound(chunks_.begin(), chunks_.end(), first,
+                               [](std::uint64_t point, const Chunk& c) { return point < c.first_point; });
+    std::size_t index = static_cast<std::size_t>(it - chunks_.begin()) - 1;
+    std::uint64_t done = 0;
+    while (done < count) {
+      const Chunk& c = chunks_[index];
+      const std::uint64_t skip = first + done - c.first_point;
+      const auto take = static_cast<std::size_t>(std::min<std::uint64_t>(c.points - skip, count - done));
+      decoder->decode(*file_, c, index, skip, take,
+                      chunk.raw.data() + done * header_.record_length);
+      done += take;
+      ++index;
+    }
+    giveBack(std::move(decoder));
+    chunk.resize(count, info_);
+    decodeLasRecords(header_, chunk.raw.data(), chunk);
+  }
+
+ private:
+  // Decoders are kept between reads (their models are a few MB to set up), one per thread at most.
+  std::unique_ptr<ChunkDecoder> takeDecoder() const {
+    {
+      const std::lock_guard lock(mutex_);
+      if (!idle_.empty()) {
+        auto decoder = std::move(idle_.back());
+        idle_.pop_back();
+        return decoder;
+      }
+    }
+    return std::make_unique<ChunkDecoder>(layout_);
+  }
+  void giveBack(std::unique_ptr<ChunkDecoder> decoder) const {
+    const std::lock_guard lock(mutex_);
+    idle_.push_back(std::move(decoder));
+  }
+
+  std::unique_ptr<InputFile> file_;
+  LasHeader header_;
+  SourceInfo info_;
+  LazLayout layout_;
+  std::vector<Chunk> chunks_;
+  mutable std::mutex mutex_;
+  mutable std::vector<std::unique_ptr<ChunkDecoder>> idle_;
+};
+
+}  // namespace
+
+std::unique_ptr<PointSource> openLazSource(std::unique_ptr<InputFile> file,
+                                           const LasHeader& header) {
+  return std::make_unique<LazSource>(std::move(file), header);
+}
+
+}  // namespace octopoint::prepare

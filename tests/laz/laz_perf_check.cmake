@@ -1,0 +1,30 @@
+# laz.laz_perf_decodes_our_files: make_large_scan writes each point format its LAZ encoder knows
+# (every field varied, extra bytes, fixed and variable chunks) as LAZ and as LAS, and laz-perf
+# (tests/laz/laz_perf_decode.cjs) must decode the LAZ to the LAS file's records.
+# usage: cmake -DMAKE=make_large_scan -DNODE=node -DMODULES=dir -DSCRIPT=laz_perf_decode.cjs
+#              -DOUT=dir -P laz_perf_check.cmake
+file(REMOVE_RECURSE "${OUT}")
+file(MAKE_DIRECTORY "${OUT}")
+set(cases "0 --extra-bytes 0" "1 --extra-bytes 3" "2 --chunk-points 777" "3 --variable-chunks")
+foreach(case IN LISTS cases)
+  separate_arguments(case)
+  list(GET case 0 format)
+  list(SUBLIST case 1 -1 options)
+  set(name "${OUT}/format${format}")
+  foreach(kind las laz)
+    execute_process(COMMAND "${MAKE}" --points 60000 --format ${kind} --las-format ${format}
+                            --varied-fields ${options} -o "${name}.${kind}"
+                    RESULT_VARIABLE status)
+    if(NOT status EQUAL 0)
+      message(FATAL_ERROR "make_large_scan failed for ${name}.${kind}")
+    endif()
+  endforeach()
+  execute_process(COMMAND "${NODE}" "${SCRIPT}" "${MODULES}" "${name}.laz" "${name}.las"
+                  RESULT_VARIABLE status)
+  if(status EQUAL 77)  # a skip (SKIP_REGULAR_EXPRESSION), which scripts/ctest-no-skips fails
+    message(FATAL_ERROR "laz-perf is not installed: run scripts/fetch-laz-perf")
+  endif()
+  if(NOT status EQUAL 0)
+    message(FATAL_ERROR "laz-perf decodes ${name}.laz otherwise than ${name}.las has it")
+  endif()
+endforeach()
