@@ -3,8 +3,9 @@
 // 10M points from memory (the same steps after loading) to show that time grows linearly.
 //   prepare_bench --benchmark_repetitions=3
 // The real scan defaults to data/scans/milk_cartoon_all_small_clorox.pcd (scripts/fetch-scans);
-// OCTOPOINT_BENCH_SCAN names another. BM_PrepareStreamedLas: the streamed preparer on LAS files of
-// the procedural landscape, one thread against two.
+// OCTOPOINT_BENCH_SCAN names another. BM_PrepareStreamedLas and BM_PrepareStreamedLaz: the
+// streamed preparer on LAS and LAZ files of the procedural landscape, one thread against two;
+// BM_DecodeLandscape: reading alone, LAS against LAZ, on one thread.
 #include <benchmark/benchmark.h>
 
 #include <cmath>
@@ -106,20 +107,22 @@ BENCHMARK(BM_PrepareSyntheticScan)
 // model, on one thread and on two side by side: what the second core buys. The file is written
 // once into the temporary directory and removed at exit. Reading it is in the time (the page cache
 // holds it after the first iteration, as it would after make_large_scan).
-const std::string& landscapeLas(std::size_t points) {
-  static std::map<std::size_t, std::string> written;
-  std::string& path = written[points];
+const std::string& landscapeLas(std::size_t points, bool laz = false) {
+  static std::map<std::pair<std::size_t, bool>, std::string> written;
+  std::string& path = written[{points, laz}];
   if (!path.empty()) return path;
   path = (std::filesystem::temp_directory_path() /
-          ("octopoint_bench_" + std::to_string(points) + ".las"))
+          ("octopoint_bench_" + std::to_string(points) + (laz ? ".laz" : ".las")))
              .string();
-  octopoint::testing::LasWriter writer(path, octopoint::testing::LasLayout{});
+  octopoint::testing::LasLayout layout;
+  layout.laz = laz;
+  octopoint::testing::LasWriter writer(path, layout);
   const octopoint::testing::Landscape landscape;
   for (std::size_t i = 0; i < points; ++i) writer.add(landscape.point(i));
   writer.finish();
   static struct Cleanup {
     ~Cleanup() {
-      for (const auto& [count, file] : written) std::filesystem::remove(file);
+      for (const auto& [key, file] : written) std::filesystem::remove(file);
     }
   } cleanup;
   return path;
@@ -144,6 +147,56 @@ void BM_PrepareStreamedLas(benchmark::State& state) {
 BENCHMARK(BM_PrepareStreamedLas)
     ->ArgsProduct({{1'000'000, 4'000'000}, {1, 2}})
     ->ArgNames({"points", "threads"})
+    ->Unit(benchmark::kMillisecond)
+    ->MeasureProcessCPUTime()
+    ->UseRealTime();
+
+// The same from the LAZ file of the same points (make_large_scan --format laz: format 2, chunks of
+// 50,000): what decoding costs the whole preparer, against BM_PrepareStreamedLas.
+void BM_PrepareStreamedLaz(benchmark::State& state) {
+  const auto points = static_cast<std::size_t>(state.range(0));
+  const std::string& path = landscapeLas(points, true);
+  PrepareOptions options;
+  options.name = "bench";
+  options.depths = {12};
+  StreamOptions stream;
+  stream.threads = static_cast<unsigned>(state.range(1));
+  for (auto _ : state) {
+    const auto source = openPointSource(path);
+    benchmark::DoNotOptimize(prepareFromSource(*source, path, options, stream).levels.size());
+  }
+  state.counters["M_points_per_s"] = benchmark::Counter(
+      static_cast<double>(points) * static_cast<double>(state.iterations()) / 1e6,
+      benchmark::Counter::kIsRate);
+}
+BENCHMARK(BM_PrepareStreamedLaz)
+    ->ArgsProduct({{1'000'000, 4'000'000}, {1, 2}})
+    ->ArgNames({"points", "threads"})
+    ->Unit(benchmark::kMillisecond)
+    ->MeasureProcessCPUTime()
+    ->UseRealTime();
+
+// Decoding alone on one thread, every piece in order into PointChunk (doubles, colour,
+// intensity), as a pass reads them: LAZ points per second per core, and LAS beside it.
+void BM_DecodeLandscape(benchmark::State& state) {
+  const auto points = static_cast<std::size_t>(state.range(0));
+  const std::string& path = landscapeLas(points, state.range(1) != 0);
+  const auto source = openPointSource(path);
+  PointChunk chunk;
+  for (auto _ : state) {
+    for (std::size_t i = 0; i < source->pieceCount(); ++i) {
+      const PointRange piece = source->piece(i);
+      source->read(piece.first, piece.count, chunk);
+      benchmark::DoNotOptimize(chunk.xyz.data());
+    }
+  }
+  state.counters["M_points_per_s"] = benchmark::Counter(
+      static_cast<double>(points) * static_cast<double>(state.iterations()) / 1e6,
+      benchmark::Counter::kIsRate);
+}
+BENCHMARK(BM_DecodeLandscape)
+    ->ArgsProduct({{10'000'000}, {0, 1}})
+    ->ArgNames({"points", "laz"})
     ->Unit(benchmark::kMillisecond)
     ->MeasureProcessCPUTime()
     ->UseRealTime();

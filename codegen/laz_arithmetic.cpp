@@ -29,7 +29,7 @@ void BitModel::update() {
     count_0 = (count_0 + 1) >> 1;
     if (count_0 == count) ++count;
   }
-  const std::uint32_t scale = 0x80000000u / count;        // Q31 / count
+  const std::uint32_t scale = 0x80000000u / count;             // Q31 / count
   probability_0 = (count_0 * scale) >> (31 - kBitModelShift);  // Q13
   cycle = std::min((5 * cycle) >> 2, kBitModelMaxCycle);
   until_update = cycle;
@@ -95,7 +95,8 @@ void ArithmeticDecoder::start() {
 }
 
 std::uint8_t ArithmeticDecoder::refill() {
-  const std::span<const std::uint8_t> window = input_ ? input_->more() : std::span<const std::uint8_t>{};
+  const std::span<const std::uint8_t> window =
+      input_ ? input_->more() : std::span<const std::uint8_t>{};
   if (window.empty()) {
     ++overrun_;
     return 0;

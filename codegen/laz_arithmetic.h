@@ -1,14 +1,16 @@
 #pragma once
 // The adaptive arithmetic coder of LAZ (the LASzip compression), written from its published
-// description: a 32-bit range coder after Amir Said ("Introduction to Arithmetic Coding", HPL-2004-76)
-// with adaptive models whose counts are refreshed at growing intervals. A LAZ decoder must reproduce
-// the encoder's every rounding, so each constant below is part of the format:
+// description: a 32-bit range coder after Amir Said ("Introduction to Arithmetic Coding",
+// HPL-2004-76) with adaptive models whose counts are refreshed at growing intervals. A LAZ decoder
+// must reproduce the encoder's every rounding, so each constant below is part of the format:
 //
 //  - the interval is [base, base + length) with length kept in [2^24, 2^32): it is renormalised a
 //    byte at a time (shifted left 8) whenever it drops below 2^24;
-//  - a bit model holds P(0) in Q13 (length >> 13 times it splits the interval); a symbol model holds
+//  - a bit model holds P(0) in Q13 (length >> 13 times it splits the interval); a symbol model
+//  holds
 //    a cumulative distribution in Q15 (length >> 15 times it);
-//  - models recompute their probabilities after update_cycle symbols, the cycle growing by 5/4 up to
+//  - models recompute their probabilities after update_cycle symbols, the cycle growing by 5/4 up
+//  to
 //    a cap, and halve their counts past 2^13 (bits) or 2^15 (symbols) so that they keep adapting;
 //  - raw bits (readBits) split the interval evenly.
 //

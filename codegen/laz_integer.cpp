@@ -8,8 +8,7 @@
 namespace octopoint::laz {
 
 IntegerModels::IntegerModels(int bits, std::uint32_t contexts, bool for_decoding)
-    : corrector_bits_(bits),
-      corrector_range_(bits < 32 ? 1u << bits : 0),
+    : corrector_range_(bits < 32 ? 1u << bits : 0),
       corrector_min_(bits < 32 ? -static_cast<std::int32_t>(corrector_range_ / 2) : INT32_MIN),
       corrector_max_(bits < 32 ? static_cast<std::int32_t>(corrector_range_ / 2 - 1) : INT32_MAX) {
   k_models_.reserve(contexts);
@@ -62,8 +61,8 @@ std::int32_t IntegerModels::decode(ArithmeticDecoder& decoder, std::int32_t pred
 
 void IntegerModels::encode(ArithmeticEncoder& encoder, std::int32_t prediction, std::int32_t value,
                            std::uint32_t context) {
-  std::int32_t corrector =
-      static_cast<std::int32_t>(static_cast<std::uint32_t>(value) - static_cast<std::uint32_t>(prediction));
+  std::int32_t corrector = static_cast<std::int32_t>(static_cast<std::uint32_t>(value) -
+                                                     static_cast<std::uint32_t>(prediction));
   if (corrector_range_ != 0) {  // into [corrector_min, corrector_max]
     if (corrector < corrector_min_) {
       corrector += static_cast<std::int32_t>(corrector_range_);

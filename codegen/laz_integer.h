@@ -29,13 +29,12 @@ class IntegerModels {
  private:
   static constexpr int kHighBits = 8;  // corrector bits coded with a model; the rest are raw
 
-  int corrector_bits_;
   std::uint32_t corrector_range_;  // 2^bits, 0 for 32 bits (all of uint32 arithmetic)
   std::int32_t corrector_min_;
   std::int32_t corrector_max_;
-  std::vector<SymbolModel> k_models_;    // by context
-  BitModel zero_or_one_;                 // k = 0
-  std::vector<SymbolModel> corrector_;   // by k - 1
+  std::vector<SymbolModel> k_models_;   // by context
+  BitModel zero_or_one_;                // k = 0
+  std::vector<SymbolModel> corrector_;  // by k - 1
   std::uint32_t k_ = 0;
 };
 

@@ -73,8 +73,8 @@ class Point10V2 final : public ItemDecoder {
     const std::uint32_t m = kReturnContext[count][number];
     const std::uint32_t level = returnLevel(count, number);
     if (changed & 16) {
-      last_intensity_[m] = static_cast<std::uint16_t>(
-          intensity_.decode(d_, last_intensity_[m], m < 3 ? m : 3));
+      last_intensity_[m] =
+          static_cast<std::uint16_t>(intensity_.decode(d_, last_intensity_[m], m < 3 ? m : 3));
     }
     // A point with nothing changed keeps the last point's intensity, whatever its context's.
     if (changed) store<std::uint16_t>(&last[kIntensity], last_intensity_[m]);
@@ -85,9 +85,8 @@ class Point10V2 final : public ItemDecoder {
     }
     if (changed & 2) last[kUserData] = user_data_.decode(d_, last[kUserData]);
     if (changed & 1) {
-      store<std::uint16_t>(&last[kSourceId],
-                           static_cast<std::uint16_t>(source_id_.decode(
-                               d_, load<std::uint16_t>(&last[kSourceId]), 0)));
+      store<std::uint16_t>(&last[kSourceId], static_cast<std::uint16_t>(source_id_.decode(
+                                                 d_, load<std::uint16_t>(&last[kSourceId]), 0)));
     }
     const std::uint32_t single = count == 1;
     const std::int32_t dx = dx_.decode(d_, x_median_[m].get(), single);
@@ -99,7 +98,8 @@ class Point10V2 final : public ItemDecoder {
     store(&last[kY], addWrapping(load<std::int32_t>(&last[kY]), dy));
     y_median_[m].add(dy);
     k = (dx_.k() + dy_.k()) / 2;
-    const std::int32_t z = z_.decode(d_, last_height_[level], single + (k < 18 ? evenBelow(k) : 18));
+    const std::int32_t z =
+        z_.decode(d_, last_height_[level], single + (k < 18 ? evenBelow(k) : 18));
     store(&last[kZ], z);
     last_height_[level] = z;
     std::memcpy(item, last, kPoint10Bytes);
@@ -159,14 +159,12 @@ class Point10V1 final : public ItemDecoder {
     if (changed & 16) last[kFlags] = flags_.decode(d_, last[kFlags]);
     if (changed & 8) last[kClass] = classes_.decode(d_, last[kClass]);
     if (changed & 4) {
-      last[kScanAngle] =
-          static_cast<std::uint8_t>(scan_angle_.decode(d_, last[kScanAngle], k < 3));
+      last[kScanAngle] = static_cast<std::uint8_t>(scan_angle_.decode(d_, last[kScanAngle], k < 3));
     }
     if (changed & 2) last[kUserData] = user_data_.decode(d_, last[kUserData]);
     if (changed & 1) {
-      store<std::uint16_t>(&last[kSourceId],
-                           static_cast<std::uint16_t>(source_id_.decode(
-                               d_, load<std::uint16_t>(&last[kSourceId]), 0)));
+      store<std::uint16_t>(&last[kSourceId], static_cast<std::uint16_t>(source_id_.decode(
+                                                 d_, load<std::uint16_t>(&last[kSourceId]), 0)));
     }
     x_diffs_[next_] = dx;
     y_diffs_[next_] = dy;
@@ -262,8 +260,8 @@ class GpsTime11V2 final : public ItemDecoder {
     }
     const std::uint32_t multi = d_.decodeSymbol(multi_);
     if (multi == 1) {
-      times_[last_] += static_cast<std::uint64_t>(
-          static_cast<std::int64_t>(time_.decode(d_, last_diff, 1)));
+      times_[last_] +=
+          static_cast<std::uint64_t>(static_cast<std::int64_t>(time_.decode(d_, last_diff, 1)));
       extreme_[last_] = 0;
     } else if (multi < kMultiUnchanged) {
       if (multi == 0) {
@@ -390,8 +388,8 @@ class Rgb12V2 final : public ItemDecoder {
     const auto lo = [](std::uint32_t v) { return static_cast<std::int32_t>(v & 0xff); };
     const auto hi = [](std::uint32_t v) { return static_cast<std::int32_t>(v >> 8); };
     rgb[0] = (used & 1) ? foldByte(symbol(0) + lo(last_[0])) : lo(last_[0]);
-    rgb[0] |= (used & 2) ? std::uint32_t{foldByte(symbol(1) + hi(last_[0]))} << 8
-                         : last_[0] & 0xff00u;
+    rgb[0] |=
+        (used & 2) ? std::uint32_t{foldByte(symbol(1) + hi(last_[0]))} << 8 : last_[0] & 0xff00u;
     if (used & 64) {
       std::int32_t diff = lo(rgb[0]) - lo(last_[0]);
       rgb[1] = (used & 4) ? foldByte(symbol(2) + clampByte(diff + lo(last_[1]))) : lo(last_[1]);
@@ -402,8 +400,9 @@ class Rgb12V2 final : public ItemDecoder {
         rgb[2] = lo(last_[2]);
       }
       diff = hi(rgb[0]) - hi(last_[0]);
-      rgb[1] |= (used & 8) ? std::uint32_t{foldByte(symbol(3) + clampByte(diff + hi(last_[1])))} << 8
-                           : last_[1] & 0xff00u;
+      rgb[1] |= (used & 8)
+                    ? std::uint32_t{foldByte(symbol(3) + clampByte(diff + hi(last_[1])))} << 8
+                    : last_[1] & 0xff00u;
       if (used & 32) {
         diff = (diff + (hi(rgb[1]) - hi(last_[1]))) / 2;
         rgb[2] |= std::uint32_t{foldByte(symbol(5) + clampByte(diff + hi(last_[2])))} << 8;
@@ -447,14 +446,15 @@ class Rgb12V1 final : public ItemDecoder {
     for (std::uint32_t c = 0; c < 3; ++c) {
       const std::uint32_t low_bit = 1u << (2 * c);
       const std::uint32_t high_bit = low_bit << 1;
-      std::uint32_t value = (used & low_bit)
-                                ? static_cast<std::uint32_t>(bytes_.decode(
-                                      d_, last_[c] & 0xff, 2 * c)) & 0xffffu
-                                : last_[c] & 0xffu;
-      value |= (used & high_bit)
-                   ? (static_cast<std::uint32_t>(bytes_.decode(d_, last_[c] >> 8, 2 * c + 1)) & 0xffffu)
-                         << 8
-                   : last_[c] & 0xff00u;
+      std::uint32_t value =
+          (used & low_bit)
+              ? static_cast<std::uint32_t>(bytes_.decode(d_, last_[c] & 0xff, 2 * c)) & 0xffffu
+              : last_[c] & 0xffu;
+      value |=
+          (used & high_bit)
+              ? (static_cast<std::uint32_t>(bytes_.decode(d_, last_[c] >> 8, 2 * c + 1)) & 0xffffu)
+                    << 8
+              : last_[c] & 0xff00u;
       last_[c] = static_cast<std::uint16_t>(value);
       store(item + 2 * c, last_[c]);
     }
@@ -467,8 +467,8 @@ class Rgb12V1 final : public ItemDecoder {
   IntegerModels bytes_{8, 6};
 };
 
-// WAVEPACKET13 version 1: the descriptor index, the offset of the waveform (same, following the last
-// packet, a difference, or whole), and the packet's size, return point and direction.
+// WAVEPACKET13 version 1: the descriptor index, the offset of the waveform (same, following the
+// last packet, a difference, or whole), and the packet's size, return point and direction.
 class WavePacket13V1 final : public ItemDecoder {
  public:
   explicit WavePacket13V1(ArithmeticDecoder& decoder) : d_(decoder) {}
@@ -577,17 +577,38 @@ class BytesV1 final : public ItemDecoder {
 std::string itemName(const Item& item) {
   std::string name;
   switch (item.type) {
-    case ItemType::kByte: name = "BYTE"; break;
-    case ItemType::kPoint10: name = "POINT10"; break;
-    case ItemType::kGpsTime11: name = "GPSTIME11"; break;
-    case ItemType::kRgb12: name = "RGB12"; break;
-    case ItemType::kWavePacket13: name = "WAVEPACKET13"; break;
-    case ItemType::kPoint14: name = "POINT14"; break;
-    case ItemType::kRgb14: name = "RGB14"; break;
-    case ItemType::kRgbNir14: name = "RGBNIR14"; break;
-    case ItemType::kWavePacket14: name = "WAVEPACKET14"; break;
-    case ItemType::kByte14: name = "BYTE14"; break;
-    default: name = "item type " + std::to_string(static_cast<unsigned>(item.type));
+    case ItemType::kByte:
+      name = "BYTE";
+      break;
+    case ItemType::kPoint10:
+      name = "POINT10";
+      break;
+    case ItemType::kGpsTime11:
+      name = "GPSTIME11";
+      break;
+    case ItemType::kRgb12:
+      name = "RGB12";
+      break;
+    case ItemType::kWavePacket13:
+      name = "WAVEPACKET13";
+      break;
+    case ItemType::kPoint14:
+      name = "POINT14";
+      break;
+    case ItemType::kRgb14:
+      name = "RGB14";
+      break;
+    case ItemType::kRgbNir14:
+      name = "RGBNIR14";
+      break;
+    case ItemType::kWavePacket14:
+      name = "WAVEPACKET14";
+      break;
+    case ItemType::kByte14:
+      name = "BYTE14";
+      break;
+    default:
+      name = "item type " + std::to_string(static_cast<unsigned>(item.type));
   }
   return name + " version " + std::to_string(item.version);
 }

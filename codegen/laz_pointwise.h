@@ -1,9 +1,9 @@
 #pragma once
-// The point-wise LAZ items (LAS point formats 0 to 5): each point record is cut into items (POINT10,
-// the 20 bytes every format has; GPSTIME11; RGB12; WAVEPACKET13; BYTE, the extra bytes), and each
-// item is predicted from the same item of the previous point of the chunk, all items of a point
-// coded in one arithmetic stream. Versions 1 (LASzip 1.x) and 2 (LASzip 2 and later, laz-perf) of
-// each item differ in their predictions and contexts.
+// The point-wise LAZ items (LAS point formats 0 to 5): each point record is cut into items
+// (POINT10, the 20 bytes every format has; GPSTIME11; RGB12; WAVEPACKET13; BYTE, the extra bytes),
+// and each item is predicted from the same item of the previous point of the chunk, all items of a
+// point coded in one arithmetic stream. Versions 1 (LASzip 1.x) and 2 (LASzip 2 and later,
+// laz-perf) of each item differ in their predictions and contexts.
 
 #include <cstdint>
 #include <memory>

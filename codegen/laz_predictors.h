@@ -24,24 +24,28 @@ void store(std::uint8_t* at, T value) {
 
 // POINT10's fields (LAS "Point Data Record Format 0").
 inline constexpr std::size_t kX = 0, kY = 4, kZ = 8, kIntensity = 12, kFlags = 14, kClass = 15,
-                      kScanAngle = 16, kUserData = 17, kSourceId = 18, kPoint10Bytes = 20;
+                             kScanAngle = 16, kUserData = 17, kSourceId = 18, kPoint10Bytes = 20;
 
 inline std::uint32_t returnNumber(std::uint8_t flags) { return flags & 7u; }
 inline std::uint32_t returnCount(std::uint8_t flags) { return (flags >> 3) & 7u; }
 inline std::uint32_t scanDirection(std::uint8_t flags) { return (flags >> 6) & 1u; }
 
-inline std::uint8_t foldByte(std::int32_t value) { return static_cast<std::uint8_t>(value); }  // mod 256
-inline std::int32_t clampByte(std::int32_t value) { return value < 0 ? 0 : value > 255 ? 255 : value; }
+inline std::uint8_t foldByte(std::int32_t value) {
+  return static_cast<std::uint8_t>(value);
+}  // mod 256
+inline std::int32_t clampByte(std::int32_t value) {
+  return value < 0 ? 0 : value > 255 ? 255 : value;
+}
 
 inline std::uint32_t evenBelow(std::uint32_t k) { return k & ~1u; }
 
 // Contexts by (number of returns, return number): the 15 valid pairs get their own, the rest share
 // ones that keep files with swapped or zero-based fields compressing well.
 inline constexpr std::uint8_t kReturnContext[8][8] = {
-    {15, 14, 13, 12, 11, 10, 9, 8},   {14, 0, 1, 3, 6, 10, 10, 9},
-    {13, 1, 2, 4, 7, 11, 11, 10},     {12, 3, 4, 5, 8, 12, 12, 11},
-    {11, 6, 7, 8, 9, 13, 13, 12},     {10, 10, 11, 12, 13, 14, 14, 13},
-    {9, 10, 11, 12, 13, 14, 15, 14},  {8, 9, 10, 11, 12, 13, 14, 15}};
+    {15, 14, 13, 12, 11, 10, 9, 8},  {14, 0, 1, 3, 6, 10, 10, 9},
+    {13, 1, 2, 4, 7, 11, 11, 10},    {12, 3, 4, 5, 8, 12, 12, 11},
+    {11, 6, 7, 8, 9, 13, 13, 12},    {10, 10, 11, 12, 13, 14, 14, 13},
+    {9, 10, 11, 12, 13, 14, 15, 14}, {8, 9, 10, 11, 12, 13, 14, 15}};
 
 // The height context: how far a return is from the last of its pulse.
 inline std::uint32_t returnLevel(std::uint32_t count, std::uint32_t number) {

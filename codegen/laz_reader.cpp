@@ -20,7 +20,12 @@ namespace {
 using laz::Item;
 using laz::ItemType;
 
-enum class Compressor : std::uint16_t { kNone = 0, kPointwise = 1, kPointwiseChunked = 2, kLayered = 3 };
+enum class Compressor : std::uint16_t {
+  kNone = 0,
+  kPointwise = 1,
+  kPointwiseChunked = 2,
+  kLayered = 3
+};
 
 constexpr std::uint32_t kVariableChunks = 0xffffffffu;
 constexpr std::size_t kVlrFixedBytes = 34;  // before the items, 6 bytes each
@@ -62,11 +67,16 @@ std::vector<ItemType> formatItems(int format) {
 
 std::uint16_t itemBytes(ItemType type) {
   switch (type) {
-    case ItemType::kPoint10: return 20;
-    case ItemType::kGpsTime11: return 8;
-    case ItemType::kRgb12: return 6;
-    case ItemType::kWavePacket13: return 29;
-    default: return 0;
+    case ItemType::kPoint10:
+      return 20;
+    case ItemType::kGpsTime11:
+      return 8;
+    case ItemType::kRgb12:
+      return 6;
+    case ItemType::kWavePacket13:
+      return 29;
+    default:
+      return 0;
   }
 }
 
@@ -92,8 +102,8 @@ LazLayout readLaszipVlr(const InputFile& file, const LasHeader& header) {
   std::uint32_t total = 0;
   for (std::size_t i = 0; i < item_count; ++i) {
     const std::uint8_t* at = &vlr[kVlrFixedBytes + 6 * i];
-    Item item{static_cast<ItemType>(readLittle<std::uint16_t>(at)), readLittle<std::uint16_t>(at + 2),
-              readLittle<std::uint16_t>(at + 4)};
+    Item item{static_cast<ItemType>(readLittle<std::uint16_t>(at)),
+              readLittle<std::uint16_t>(at + 2), readLittle<std::uint16_t>(at + 4)};
     total += item.size;
     layout.items.push_back(item);
   }
@@ -113,8 +123,9 @@ LazLayout readLaszipVlr(const InputFile& file, const LasHeader& header) {
   const std::vector<ItemType> expected = formatItems(header.point_format);
   std::size_t matched = 0;
   for (const Item& item : layout.items) {
-    const bool in_place = matched < expected.size() ? item.type == expected[matched]
-                                                    : item.type == ItemType::kByte && matched == expected.size();
+    const bool in_place = matched < expected.size()
+                              ? item.type == expected[matched]
+                              : item.type == ItemType::kByte && matched == expected.size();
     if (!in_place || (item.type != ItemType::kByte && item.size != itemBytes(item.type)) ||
         item.size == 0) {
       refuse("the items (" + laz::itemName(item) + " of " + std::to_string(item.size) +
@@ -125,14 +136,14 @@ LazLayout readLaszipVlr(const InputFile& file, const LasHeader& header) {
   }
   if (matched < expected.size() || total != header.record_length) {
     refuse("the items make " + std::to_string(total) + "-byte records with " +
-           std::to_string(matched) + " items, point format " +
-           std::to_string(header.point_format) + " has " + std::to_string(header.record_length) +
-           "-byte records");
+           std::to_string(matched) + " items, point format " + std::to_string(header.point_format) +
+           " has " + std::to_string(header.record_length) + "-byte records");
   }
   laz::ArithmeticDecoder probe;
   for (const Item& item : layout.items) {
     if (!laz::pointwiseDecoder(item, probe)) {
-      refuse("unknown LAZ item " + laz::itemName(item) + ": this reader knows versions 1 and 2 "
+      refuse("unknown LAZ item " + laz::itemName(item) +
+             ": this reader knows versions 1 and 2 "
              "of POINT10, GPSTIME11, RGB12 and BYTE, and WAVEPACKET13 version 1");
     }
   }
@@ -142,11 +153,10 @@ LazLayout readLaszipVlr(const InputFile& file, const LasHeader& header) {
     refuse("chunks of " + std::to_string(layout.chunk_size) + " points are not read (1 to " +
            std::to_string(kMaxLazChunkPoints) + ", or variable)");
   }
-  layout.description = layout.compressor == Compressor::kPointwise
-                           ? "point-wise, one chunk"
-                           : layout.chunk_size == kVariableChunks
-                                 ? "point-wise, variable chunks"
-                                 : "point-wise, chunks of " + std::to_string(layout.chunk_size);
+  layout.description = layout.compressor == Compressor::kPointwise ? "point-wise, one chunk"
+                       : layout.chunk_size == kVariableChunks
+                           ? "point-wise, variable chunks"
+                           : "point-wise, chunks of " + std::to_string(layout.chunk_size);
   return layout;
 }
 
@@ -221,7 +231,8 @@ std::vector<Chunk> readChunkTable(const InputFile& file, const LasHeader& header
          table_where);
   }
   const bool variable = layout.chunk_size == kVariableChunks;
-  if (!variable && chunk_count != (header.point_count + layout.chunk_size - 1) / layout.chunk_size) {
+  if (!variable &&
+      chunk_count != (header.point_count + layout.chunk_size - 1) / layout.chunk_size) {
     fail(path,
          "the header declares " + std::to_string(header.point_count) + " points, which take " +
              std::to_string((header.point_count + layout.chunk_size - 1) / layout.chunk_size) +
@@ -257,8 +268,9 @@ std::vector<Chunk> readChunkTable(const InputFile& file, const LasHeader& header
            table_where);
     }
     chunk.points = variable ? static_cast<std::uint32_t>(last_points)
-                            : std::min<std::uint64_t>(layout.chunk_size,
-                                                      header.point_count - std::min(header.point_count, first_point));
+                            : std::min<std::uint64_t>(
+                                  layout.chunk_size,
+                                  header.point_count - std::min(header.point_count, first_point));
     chunk.bytes = static_cast<std::uint32_t>(last_bytes);
     chunk.first_point = first_point;
     chunk.offset = offset;
@@ -299,7 +311,8 @@ std::vector<Chunk> wholeFileChunk(const InputFile& file, const LasHeader& header
              std::to_string(kMaxLazChunkPoints) + " points is not read",
          "LASzip VLR");
   }
-  return {Chunk{0, header.point_count, header.point_offset, header.points_end - header.point_offset}};
+  return {
+      Chunk{0, header.point_count, header.point_offset, header.points_end - header.point_offset}};
 }
 
 // One thread's chunk decoder: the arithmetic decoder and an item decoder per item.
@@ -317,8 +330,8 @@ class ChunkDecoder {
   // Decodes the chunk's points [skip, skip + take) into `out`.
   void decode(const InputFile& file, const Chunk& chunk, std::size_t chunk_index,
               std::uint64_t skip, std::size_t take, std::uint8_t* out) {
-    const std::string where = "LAZ chunk " + std::to_string(chunk_index + 1) + " at byte " +
-                              std::to_string(chunk.offset);
+    const std::string where =
+        "LAZ chunk " + std::to_string(chunk_index + 1) + " at byte " + std::to_string(chunk.offset);
     FileInput input(file, chunk.offset, chunk.offset + chunk.bytes, where);
     decoder_.attach(input);
     scratch_.resize(record_bytes_);
@@ -367,8 +380,9 @@ class LazSource final : public PointSource {
   LazSource(std::unique_ptr<InputFile> file, const LasHeader& header)
       : file_(std::move(file)), header_(header), info_(lasSourceInfo(header)) {
     layout_ = readLaszipVlr(*file_, header_);
-    chunks_ = layout_.compressor == Compressor::kPointwise ? wholeFileChunk(*file_, header_)
-                                                           : readChunkTable(*file_, header_, layout_);
+    chunks_ = layout_.compressor == Compressor::kPointwise
+                  ? wholeFileChunk(*file_, header_)
+                  : readChunkTable(*file_, header_, layout_);
     info_.format += ", " + layout_.description;
     file_->adviseSequential();
   }
@@ -383,14 +397,16 @@ class LazSource final : public PointSource {
     chunk.raw.resize(count * header_.record_length);
     std::unique_ptr<ChunkDecoder> decoder = takeDecoder();
     // The chunks that hold [first, first + count): the last one starting at or before `first`, on.
-    auto it = std::upper_bound(chunks_.begin(), chunks_.end(), first,
-                               [](std::uint64_t point, const Chunk& c) { return point < c.first_point; });
+    auto it =
+        std::upper_bound(chunks_.begin(), chunks_.end(), first,
+                         [](std::uint64_t point, const Chunk& c) { return point < c.first_point; });
     std::size_t index = static_cast<std::size_t>(it - chunks_.begin()) - 1;
     std::uint64_t done = 0;
     while (done < count) {
       const Chunk& c = chunks_[index];
       const std::uint64_t skip = first + done - c.first_point;
-      const auto take = static_cast<std::size_t>(std::min<std::uint64_t>(c.points - skip, count - done));
+      const auto take =
+          static_cast<std::size_t>(std::min<std::uint64_t>(c.points - skip, count - done));
       decoder->decode(*file_, c, index, skip, take,
                       chunk.raw.data() + done * header_.record_length);
       done += take;

@@ -96,9 +96,12 @@ std::vector<std::uint8_t> encodeSteps(const std::vector<CoderStep>& steps) {
   CoderModels models(false);
   for (const CoderStep& step : steps) {
     switch (step.kind) {
-      case 0: encoder.encodeBit(models.bit, static_cast<std::uint32_t>(step.value)); break;
+      case 0:
+        encoder.encodeBit(models.bit, static_cast<std::uint32_t>(step.value));
+        break;
       case 1:
-        encoder.encodeSymbol(models.symbolModel(step.parameter), static_cast<std::uint32_t>(step.value));
+        encoder.encodeSymbol(models.symbolModel(step.parameter),
+                             static_cast<std::uint32_t>(step.value));
         break;
       case 2:
         encoder.writeBits(static_cast<int>(step.parameter), static_cast<std::uint32_t>(step.value));
@@ -116,8 +119,8 @@ std::vector<std::uint8_t> encodeSteps(const std::vector<CoderStep>& steps) {
 }
 
 // Decodes `steps` from `bytes`; returns the index of the first step that differs, or steps.size().
-std::size_t firstMismatch(const std::vector<CoderStep>& steps, const std::vector<std::uint8_t>& bytes,
-                          std::uint64_t* overrun) {
+std::size_t firstMismatch(const std::vector<CoderStep>& steps,
+                          const std::vector<std::uint8_t>& bytes, std::uint64_t* overrun) {
   MemoryInput input(bytes);
   ArithmeticDecoder decoder;
   decoder.attach(input);
@@ -127,15 +130,22 @@ std::size_t firstMismatch(const std::vector<CoderStep>& steps, const std::vector
     const CoderStep& step = steps[i];
     std::int64_t got = 0;
     switch (step.kind) {
-      case 0: got = decoder.decodeBit(models.bit); break;
-      case 1: got = decoder.decodeSymbol(models.symbolModel(step.parameter)); break;
-      case 2: got = decoder.readBits(static_cast<int>(step.parameter)); break;
+      case 0:
+        got = decoder.decodeBit(models.bit);
+        break;
+      case 1:
+        got = decoder.decodeSymbol(models.symbolModel(step.parameter));
+        break;
+      case 2:
+        got = decoder.readBits(static_cast<int>(step.parameter));
+        break;
       default: {
         // The context is the value's low bits: known to the decoder only through the test.
         got = models.integers_[step.parameter].decode(decoder, models.previous[step.parameter],
                                                       static_cast<std::uint32_t>(step.value & 3));
         models.previous[step.parameter] = static_cast<std::int32_t>(got);
-        if (kIntegerWidths[step.parameter] < 32) got &= (std::int64_t{1} << kIntegerWidths[step.parameter]) - 1;
+        if (kIntegerWidths[step.parameter] < 32)
+          got &= (std::int64_t{1} << kIntegerWidths[step.parameter]) - 1;
       }
     }
     if (got != step.value) return i;

@@ -54,7 +54,8 @@ class LazReaderTest : public ::testing::Test {
   }
 
   // The LAS and the LAZ file of the same points and layout.
-  std::pair<fs::path, fs::path> twins(const std::string& name, LasLayout layout, std::size_t count) {
+  std::pair<fs::path, fs::path> twins(const std::string& name, LasLayout layout,
+                                      std::size_t count) {
     layout.laz = false;
     const fs::path las = write(name + ".las", layout, count);
     layout.laz = true;
@@ -86,7 +87,8 @@ class LazReaderTest : public ::testing::Test {
     StreamOptions stream;
     stream.memory_bytes = 1 << 20;
     stream.threads = threads;
-    return serializeModel(prepareFromSource(*openPointSource(path), path.string(), options, stream));
+    return serializeModel(
+        prepareFromSource(*openPointSource(path), path.string(), options, stream));
   }
 
   fs::path writeBytes(const std::string& name, const std::string& bytes) {
@@ -144,7 +146,8 @@ TEST_F(LazReaderTest, EveryFormatDecodesToTheRecordsOfItsLasTwin) {
       std::size_t pieces = 0;
       const std::vector<std::uint8_t> decoded = records(laz, &pieces);
       EXPECT_EQ(pieces, 3u);  // the reader reads its chunks whole: 5000, 5000, 2345
-      ASSERT_TRUE(decoded == records(las)) << "format " << format << ", extra bytes " << extra_bytes;
+      ASSERT_TRUE(decoded == records(las))
+          << "format " << format << ", extra bytes " << extra_bytes;
       EXPECT_LT(fs::file_size(laz), fs::file_size(las) * 3 / 4) << format;  // it did compress
     }
   }
@@ -243,8 +246,8 @@ TEST_F(LazBadInputTest, EveryTruncationIsRefusedWithOneLine) {
   // Every length in the chunk table and around the chunks' starts; a stride through the rest.
   for (std::uint64_t length = parts.point_offset; length < parts.bytes.size();
        length += length + 64 >= parts.table && length < parts.point_offset + 64 ? 1
-                 : length + 64 >= parts.table                                  ? 1
-                                                                               : 29) {
+                 : length + 64 >= parts.table                                   ? 1
+                                                                                : 29) {
     const fs::path cut = writeBytes("cut.laz", parts.bytes.substr(0, length));
     try {
       records(cut);
@@ -259,7 +262,8 @@ TEST_F(LazBadInputTest, EveryTruncationIsRefusedWithOneLine) {
 TEST_F(LazBadInputTest, AMissingChunkTableIsRefused) {
   const LazParts parts = smallLaz(good());
   std::string interrupted = parts.bytes.substr(0, parts.table);
-  patchAt<std::int64_t>(interrupted, parts.point_offset, static_cast<std::int64_t>(parts.point_offset));
+  patchAt<std::int64_t>(interrupted, parts.point_offset,
+                        static_cast<std::int64_t>(parts.point_offset));
   expectRefused(writeBytes("interrupted.laz", interrupted), "no chunk table");
   std::string at_end = parts.bytes;  // -1: the pointer is in the file's last 8 bytes, here garbage
   patchAt<std::int64_t>(at_end, parts.point_offset, -1);
@@ -278,7 +282,8 @@ TEST_F(LazBadInputTest, AChunkTableThatLiesIsRefused) {
   ASSERT_EQ(sizes.size(), 3u);
   ASSERT_EQ(withTable(parts, {1000, 1000, 1000}, sizes, false), parts.bytes);  // the true table
   const auto lie = [&](const std::string& name, std::vector<std::uint64_t> points,
-                       std::vector<std::uint64_t> bytes, bool variable, const std::string& expected) {
+                       std::vector<std::uint64_t> bytes, bool variable,
+                       const std::string& expected) {
     expectRefused(writeBytes(name, withTable(parts, points, bytes, variable)), expected);
   };
   // A chunk one byte longer or shorter: each chunk's code must end where the table says.
@@ -349,11 +354,12 @@ TEST_F(LazBadInputTest, UnknownItemsAndCompressorsAreRefusedByName) {
   expectRefused(writeBytes("layered.laz", damaged(vlr, 3)),
                 "layered compressor (LAS 1.4 items version 3) is not read yet");
   expectRefused(writeBytes("items.laz", damaged(vlr + 32, 40)), "the VLR lists 40 items");
-  expectRefused(writeBytes("chunk_huge.laz", [&] {
-                  std::string bytes = parts.bytes;
-                  patchAt<std::uint32_t>(bytes, vlr + 12, 1u << 30);
-                  return bytes;
-                }()),
+  expectRefused(writeBytes("chunk_huge.laz",
+                           [&] {
+                             std::string bytes = parts.bytes;
+                             patchAt<std::uint32_t>(bytes, vlr + 12, 1u << 30);
+                             return bytes;
+                           }()),
                 "chunks of 1073741824 points are not read");
 }
 

@@ -62,13 +62,13 @@ class Point10 final : public Encoder {
     const std::uint32_t m = kReturnContext[count][number];
     const std::uint32_t level = returnLevel(count, number);
     const auto intensity = load<std::uint16_t>(item + kIntensity);
-    const std::uint32_t changed =
-        (std::uint32_t{last[kFlags] != item[kFlags]} << 5) |
-        (std::uint32_t{last_intensity_[m] != intensity} << 4) |
-        (std::uint32_t{last[kClass] != item[kClass]} << 3) |
-        (std::uint32_t{last[kScanAngle] != item[kScanAngle]} << 2) |
-        (std::uint32_t{last[kUserData] != item[kUserData]} << 1) |
-        std::uint32_t{load<std::uint16_t>(last + kSourceId) != load<std::uint16_t>(item + kSourceId)};
+    const std::uint32_t changed = (std::uint32_t{last[kFlags] != item[kFlags]} << 5) |
+                                  (std::uint32_t{last_intensity_[m] != intensity} << 4) |
+                                  (std::uint32_t{last[kClass] != item[kClass]} << 3) |
+                                  (std::uint32_t{last[kScanAngle] != item[kScanAngle]} << 2) |
+                                  (std::uint32_t{last[kUserData] != item[kUserData]} << 1) |
+                                  std::uint32_t{load<std::uint16_t>(last + kSourceId) !=
+                                                load<std::uint16_t>(item + kSourceId)};
     e.encodeSymbol(changed_, changed);
     if (changed & 32) flags_.encode(e, last[kFlags], item[kFlags]);
     if (changed & 16) {
@@ -82,15 +82,17 @@ class Point10 final : public Encoder {
     }
     if (changed & 2) user_data_.encode(e, last[kUserData], item[kUserData]);
     if (changed & 1) {
-      source_id_.encode(e, load<std::uint16_t>(last + kSourceId), load<std::uint16_t>(item + kSourceId),
-                        0);
+      source_id_.encode(e, load<std::uint16_t>(last + kSourceId),
+                        load<std::uint16_t>(item + kSourceId), 0);
     }
     const std::uint32_t single = count == 1;
-    const std::int32_t dx = difference(load<std::int32_t>(item + kX), load<std::int32_t>(last + kX));
+    const std::int32_t dx =
+        difference(load<std::int32_t>(item + kX), load<std::int32_t>(last + kX));
     dx_.encode(e, x_median_[m].get(), dx, single);
     x_median_[m].add(dx);
     std::uint32_t k = dx_.k();
-    const std::int32_t dy = difference(load<std::int32_t>(item + kY), load<std::int32_t>(last + kY));
+    const std::int32_t dy =
+        difference(load<std::int32_t>(item + kY), load<std::int32_t>(last + kY));
     dy_.encode(e, y_median_[m].get(), dy, single + (k < 20 ? evenBelow(k) : 20));
     y_median_[m].add(dy);
     k = (dx_.k() + dy_.k()) / 2;
@@ -197,7 +199,8 @@ class GpsTime11 final : public Encoder {
       const float ratio = static_cast<float>(diff) / static_cast<float>(last_diff);
       const auto multi = static_cast<std::int32_t>(ratio >= 0 ? ratio + 0.5f : ratio - 0.5f);
       const auto times = [](std::int32_t a, std::int32_t b) {
-        return static_cast<std::int32_t>(static_cast<std::uint32_t>(a) * static_cast<std::uint32_t>(b));
+        return static_cast<std::int32_t>(static_cast<std::uint32_t>(a) *
+                                         static_cast<std::uint32_t>(b));
       };
       if (multi == 1) {
         e.encodeSymbol(multi_, 1);
@@ -307,7 +310,8 @@ class Bytes final : public Encoder {
   void start(const std::uint8_t* first) override { std::memcpy(last_.data(), first, last_.size()); }
 
   void encode(ArithmeticEncoder& e, const std::uint8_t* item) override {
-    for (std::size_t i = 0; i < last_.size(); ++i) e.encodeSymbol(models_[i], foldByte(item[i] - last_[i]));
+    for (std::size_t i = 0; i < last_.size(); ++i)
+      e.encodeSymbol(models_[i], foldByte(item[i] - last_[i]));
     std::memcpy(last_.data(), item, last_.size());
   }
 
@@ -323,11 +327,12 @@ struct ItemSpec {
 
 std::vector<ItemSpec> itemsOf(int format, int extra_bytes) {
   if (format < 0 || format > 3) {
-    throw std::runtime_error("LAZ is written for point formats 0 to 3, not " + std::to_string(format));
+    throw std::runtime_error("LAZ is written for point formats 0 to 3, not " +
+                             std::to_string(format));
   }
-  std::vector<ItemSpec> items = {{6, 20}};                    // POINT10
-  if (format == 1 || format == 3) items.push_back({7, 8});  // GPSTIME11
-  if (format >= 2) items.push_back({8, 6});                 // RGB12
+  std::vector<ItemSpec> items = {{6, 20}};                                             // POINT10
+  if (format == 1 || format == 3) items.push_back({7, 8});                             // GPSTIME11
+  if (format >= 2) items.push_back({8, 6});                                            // RGB12
   if (extra_bytes > 0) items.push_back({0, static_cast<std::uint16_t>(extra_bytes)});  // BYTE
   return items;
 }
@@ -349,10 +354,18 @@ struct LazChunkEncoder::State {
     encoders.clear();
     for (const ItemSpec& item : items) {
       switch (item.type) {
-        case 6: encoders.push_back(std::make_unique<Point10>()); break;
-        case 7: encoders.push_back(std::make_unique<GpsTime11>()); break;
-        case 8: encoders.push_back(std::make_unique<Rgb12>()); break;
-        default: encoders.push_back(std::make_unique<Bytes>(item.size)); break;
+        case 6:
+          encoders.push_back(std::make_unique<Point10>());
+          break;
+        case 7:
+          encoders.push_back(std::make_unique<GpsTime11>());
+          break;
+        case 8:
+          encoders.push_back(std::make_unique<Rgb12>());
+          break;
+        default:
+          encoders.push_back(std::make_unique<Bytes>(item.size));
+          break;
       }
     }
   }
