@@ -41,6 +41,7 @@
       controllers.add(controller);
       let stall = window.setTimeout(() => controller.abort(), kStallMs);
       const last = offset + size - 1;
+      let got = 0;
       try {
         const response = await fetch(url, {
           headers: {Range: 'bytes=' + offset + '-' + last},
@@ -72,6 +73,7 @@
           stall = window.setTimeout(() => controller.abort(), kStallMs);
           const bytes = piece.value;
           if (bytes.length === 0) continue;
+          got += bytes.length;
           // The module's memory may grow (and move) in octopoint_web_input: HEAPU8 after it.
           const room = c.input(bytes.length);
           if (room === 0) return c.error();
@@ -85,8 +87,9 @@
           changed();
         }
       } catch (error) {
-        return controller.signal.aborted ? 'no byte came for ' + kStallMs / 1000 + ' s' :
-                                           'the request failed: ' + error.message;
+        if (controller.signal.aborted) return 'no byte came for ' + kStallMs / 1000 + ' s';
+        return got > 0 ? 'the body broke off after ' + got + ' of the ' + size + ' bytes asked for' :
+                         'the request failed: ' + error.message;
       } finally {
         window.clearTimeout(stall);
         controllers.delete(controller);

@@ -161,8 +161,8 @@ std::int32_t octopoint_web_stream_next(void) {
   if (s.failed) return fail(s.failure);
   Request request;
   if (!s.model) {
-    const bool head_asked = std::any_of(s.requests.begin(), s.requests.end(),
-                                        [](const Request& r) { return r.head; });
+    const bool head_asked =
+        std::any_of(s.requests.begin(), s.requests.end(), [](const Request& r) { return r.head; });
     if (head_asked) return 0;
     // Until the fixed header is in, ask for the first bytes; then for the rest of the head.
     std::uint64_t want = s.head_bytes > 0 ? s.head_bytes : kFirstRequestBytes;
@@ -208,17 +208,15 @@ int octopoint_web_stream_receive(std::int32_t id, std::int32_t bytes) {
   }
   request->body.insert(request->body.end(), piece.begin(), piece.end());
   std::string refusal;
-  request->next = s.planner.deliver(*s.model, request->range, request->body, request->next,
-                                    [&](const FetchItem& item, const ChunkedIssue& issue) {
-                                      if (issue.error == ChunkedError::kNone) return;
-                                      ++s.refused;
-                                      refusal = std::string("refused a damaged ") +
-                                                (item.kind == FetchItem::Kind::kChunk
-                                                     ? "chunk"
-                                                     : "record table") +
-                                                " of level " + std::to_string(item.level) + ": " +
-                                                where(issue);
-                                    });
+  request->next = s.planner.deliver(
+      *s.model, request->range, request->body, request->next,
+      [&](const FetchItem& item, const ChunkedIssue& issue) {
+        if (issue.error == ChunkedError::kNone) return;
+        ++s.refused;
+        refusal = std::string("refused a damaged ") +
+                  (item.kind == FetchItem::Kind::kChunk ? "chunk" : "record table") + " of level " +
+                  std::to_string(item.level) + ": " + where(issue);
+      });
   if (refusal.empty()) return succeed();
   fail(refusal);
   return 1;  // the request goes on: its other items may be whole

@@ -74,8 +74,8 @@ Bytes nativeChunkedFrame(std::span<const std::uint8_t> image, const WebView& vie
 // What a served request saw.
 struct Served {
   int requests = 0;
-  int refusals = 0;  // receive() answered 1: a damaged part refused
-  int damaged = 0;   // requests whose bytes were damaged on the way
+  int refusals = 0;     // receive() answered 1: a damaged part refused
+  int damaged = 0;      // requests whose bytes were damaged on the way
   std::string refusal;  // the module's words for the last refusal
 };
 
@@ -128,7 +128,8 @@ class WebStream : public ::testing::Test {
 TEST_F(WebStream, DrawsNothingBeforeTheHeadThenTheCompleteViewAsOctopointRenderDoes) {
   const WebView view;
   EXPECT_EQ(drawWebView(view), -1);  // the head has not arrived
-  const Served served = serveAll(image, view, 1000, [](std::uint64_t, std::uint64_t) { return -1; });
+  const Served served =
+      serveAll(image, view, 1000, [](std::uint64_t, std::uint64_t) { return -1; });
   EXPECT_GT(served.requests, 2);
   const std::uint32_t* status = octopoint_web_stream_status();
   EXPECT_EQ(status[0], 2u);  // drawing
