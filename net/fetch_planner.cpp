@@ -46,7 +46,7 @@ FetchPlanner::Outcome FetchPlanner::next(ProgressiveModel& model, const Camera& 
   std::uint64_t end = lead.offset + lead.bytes;
   for (auto it = std::upper_bound(
            sorted_.begin(), sorted_.end(), lead.offset,
-           [](std::uint64_t at, const FetchItem& item) { return at < item.offset; });
+           [](std::uint64_t at, const FetchItem&item) { return at < item.offset; });
        it != sorted_.end(); ++it) {
     if (!free(*it) || it->offset < end || it->offset - end > options_.merge_gap_bytes ||
         it->offset + it->bytes - range.offset > options_.max_request_bytes) {
