@@ -4,7 +4,8 @@
 // drawn exactly as octopoint-render draws one view (depth auto, the style chosen, its background
 // and the variant defaultVariant() picks, fixed_fast on WebAssembly), so that the page's frames can
 // be compared with the native PNG pixel for pixel. The style is octopoint-render's --style, with
-// its defaults for the light and the crease angle.
+// its defaults for the light and the crease angle. Built with OCTOPOINT_WEB_EMBEDDED_MODEL=0 (the
+// page without a model, build/wasm/web-nomodel/), it embeds none and draws only chunked models.
 #include "web/octopoint_web.h"
 
 #include <cstdint>
@@ -14,7 +15,9 @@
 #include "octopoint/camera.h"
 #include "octopoint/framebuffer.h"
 #include "octopoint/model.h"
+#if OCTOPOINT_WEB_EMBEDDED_MODEL
 #include "octopoint/models.h"
+#endif
 #include "octopoint/render.h"
 #include "octopoint/styles.h"
 #include "renderer/level_of_detail.h"
@@ -41,11 +44,17 @@ std::optional<WebRenderer>& renderer() {
   return instance;
 }
 
+bool& created() {
+  static bool done = false;
+  return done;
+}
+
 }  // namespace
 
 extern "C" {
 
 int octopoint_web_create(void) {
+#if OCTOPOINT_WEB_EMBEDDED_MODEL
   if (renderer()) return 0;
   ModelIssue issue;
   const std::optional<ModelView> view = ModelView::fromEmbedded(*models::defaultModel(), &issue);
@@ -57,6 +66,8 @@ int octopoint_web_create(void) {
     renderer().reset();
     return fail("the colour style is refused");
   }
+#endif
+  created() = true;
   return 0;
 }
 
@@ -72,11 +83,12 @@ const std::uint8_t* octopoint_web_pixels(void) {
 }
 
 int octopoint_web_set_style(const char* name) {
-  if (!renderer()) return fail("octopoint_web_create was not called");
+  if (!created()) return fail("octopoint_web_create was not called");
   const std::optional<Style> style = name == nullptr ? std::nullopt : styleFromName(name);
   if (!style) return fail("no such style (colour, shaded, lines, toon, outlined)");
-  if (*style != Style::kColour && web::streamOpen())
+  if (*style != Style::kColour && (web::streamOpen() || !renderer()))
     return fail("a chunked model is drawn in colour only (it stores no normals)");
+  if (!renderer()) return succeed();  // no embedded model: colour is all there is
   StyleOptions options = renderer()->styler.options();
   options.style = *style;
   if (const StyleError error = renderer()->styler.setOptions(options); error != StyleError::kNone) {
@@ -94,7 +106,7 @@ namespace octopoint::web {
 int drawWith(Variant variant, std::int32_t yaw_millidegrees, std::int32_t pitch_millidegrees,
              std::int32_t roll_millidegrees, std::int32_t zoom_q16, std::int32_t width,
              std::int32_t height) {
-  if (!renderer()) return fail("octopoint_web_create was not called");
+  if (!created()) return fail("octopoint_web_create was not called");
   if (width < 1 || height < 1 || width > kMaxViewportSide || height > kMaxViewportSide ||
       std::int64_t{width} * height > kMaxPixels) {
     return fail("the size must be 1..8192 a side and 16777216 pixels at most");
@@ -107,6 +119,7 @@ int drawWith(Variant variant, std::int32_t yaw_millidegrees, std::int32_t pitch_
   camera.width = width;
   camera.height = height;
   if (streamOpen()) return drawStream(variant, camera);
+  if (!renderer()) return fail("this page embeds no model: open a chunked one (model=NAME.oct)");
   WebRenderer& web = *renderer();
   const LevelView* level = autoLevel(web.model, camera);
   if (level == nullptr) return fail(describe(CameraError::kOverflow));

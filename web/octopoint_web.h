@@ -58,10 +58,11 @@ int octopoint_web_stream_end(std::int32_t id);
 // The most points a frame of the chunked model draws (ProgressiveModel's point budget, the
 // native --point-budget); 0: no budget.
 int octopoint_web_set_point_budget(std::int32_t points);
-// The stream as the overlay shows it, ten words: state (1 waiting for the head, 2 drawing, 3
+// The stream as the overlay shows it, eleven words: state (1 waiting for the head, 2 drawing, 3
 // failed), bytes received (low, high), the file's bytes (low, high), chunks held, the view's
 // tables and chunks still to come, whether the view is complete (1), parts refused as damaged,
-// requests in flight. Null when no model is open. Valid until the next call.
+// requests in flight, points the last draw drew. Null when no model is open. Valid until the next
+// call.
 const std::uint32_t* octopoint_web_stream_status(void);
 }
 

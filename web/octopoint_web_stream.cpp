@@ -55,7 +55,8 @@ struct Stream {
   std::string failure;  // why
   // octopoint_web_stream_request's and octopoint_web_stream_status's answers.
   std::array<std::uint32_t, 3> request_words{};
-  std::array<std::uint32_t, 10> status_words{};
+  std::array<std::uint32_t, 11> status_words{};
+  std::uint64_t drawn_points = 0;  // leaves the last draw drew
 };
 
 std::optional<Stream>& stream() {
@@ -125,7 +126,9 @@ int drawStream(Variant variant, const Camera& camera) {
   Framebuffer& frame = out.sized(camera);
   frame.clear();
   s.model->setPointBudget(s.point_budget);
-  if (!s.model->draw(camera, variant, frame)) return fail(describe(CameraError::kOverflow));
+  ProgressiveDrawStats stats;
+  if (!s.model->draw(camera, variant, frame, &stats)) return fail(describe(CameraError::kOverflow));
+  s.drawn_points = stats.points;
   if (!resolveToRgb(frame, s.model->baseModel(), kBackground, out.rgb))
     return fail("the frame could not be resolved");
   out.toRgba();
@@ -244,7 +247,7 @@ int octopoint_web_set_point_budget(std::int32_t points) {
 const std::uint32_t* octopoint_web_stream_status(void) {
   if (!stream()) return nullptr;
   Stream& s = *stream();
-  std::array<std::uint32_t, 10>& words = s.status_words;
+  std::array<std::uint32_t, 11>& words = s.status_words;
   words.fill(0);
   words[0] = s.failed ? 3 : s.model ? 2 : 1;
   words[1] = static_cast<std::uint32_t>(s.received);
@@ -261,6 +264,7 @@ const std::uint32_t* octopoint_web_stream_status(void) {
   }
   words[8] = s.refused;
   words[9] = static_cast<std::uint32_t>(s.requests.size());
+  words[10] = static_cast<std::uint32_t>(std::min<std::uint64_t>(s.drawn_points, UINT32_MAX));
   return words.data();
 }
 

@@ -7,3 +7,6 @@ set(octopoint_web_sources
     # The native client's choice of the next byte range (transport-free), so that the page asks
     # for what octopoint-view would.
     ${PROJECT_SOURCE_DIR}/net/fetch_planner.cpp)
+# With the default model compiled in (OCTOPOINT_WEB_EMBEDDED_MODEL=1, what the benchmark and the
+# tests use); the wasm build also makes the page without it.
+set(octopoint_web_definitions OCTOPOINT_WEB_EMBEDDED_MODEL=1)

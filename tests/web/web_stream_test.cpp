@@ -137,6 +137,14 @@ TEST_F(WebStream, DrawsNothingBeforeTheHeadThenTheCompleteViewAsOctopointRenderD
   EXPECT_EQ(status[7], 1u);  // the view complete
   ASSERT_EQ(drawWebView(view), 0) << octopoint_web_error();
   EXPECT_EQ(webPixels(view), nativeChunkedFrame(image, view));
+  // The point budget bounds what a frame draws, and the status says how many it drew.
+  const std::uint32_t all = octopoint_web_stream_status()[10];
+  ASSERT_EQ(octopoint_web_set_point_budget(std::int32_t(all / 4)), 0);
+  ASSERT_EQ(drawWebView(view), 0) << octopoint_web_error();
+  const std::uint32_t budgeted = octopoint_web_stream_status()[10];
+  EXPECT_LT(budgeted, all);
+  EXPECT_GT(budgeted, 0u);
+  EXPECT_NE(webPixels(view), nativeChunkedFrame(image, view));
 }
 
 TEST_F(WebStream, RefusesADamagedChunkAndAsksForItAgain) {
