@@ -1,9 +1,9 @@
 #include <algorithm>
 #include <atomic>
 #include <thread>
-#include <unordered_set>
 #include <vector>
 
+#include "net/fetch_planner.h"
 #include "octopoint/http.h"
 
 namespace octopoint::net {
@@ -11,31 +11,24 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
-std::uint64_t itemKey(const FetchItem& item) {
-  return (item.kind == FetchItem::Kind::kRecordTable ? std::uint64_t{1} << 63 : 0) |
-         std::uint64_t(item.level) << 32 | item.index;
-}
-
-// One request: a byte range, and the tables and chunks lying whole in it, in file order. Bytes
+// One request: the head's first bytes, or a byte range of tables and chunks (FetchPlanner). Bytes
 // the first request already brought (it reads past the head) are not asked for again: `known`
 // holds them, and the request starts after them.
-struct Plan {
+struct Plan : FetchRange {
   bool head = false;
-  std::uint64_t offset = 0;
-  std::uint64_t size = 0;
-  std::vector<FetchItem> items;
   std::vector<std::uint8_t> known;  // the bytes from `offset` on that are already here
 };
 
-constexpr std::size_t kPriorityWindow = 512;  // items considered per request
+FetchPlanOptions planOptions(const StreamOptions& options) {
+  return {options.max_request_bytes, options.merge_gap_bytes, options.prefetch_invisible};
+}
 
 }  // namespace
 
 class ModelStream::Impl {
  public:
-  Impl(const HttpUrl& url, const StreamOptions& options) : url_(url), options_(options) {
-    priority_.resize(kPriorityWindow);
-  }
+  Impl(const HttpUrl& url, const StreamOptions& options)
+      : url_(url), options_(options), planner_(planOptions(options)) {}
   ~Impl() { stop(); }
 
   void start() {
@@ -150,53 +143,24 @@ class ModelStream::Impl {
       if (head_bytes_ > 0) want = head_bytes_;
       want = std::max<std::uint64_t>(want, chunked::kFixedHeaderBytes);
       if (want <= head_.size()) want = head_.size() + 1;
-      plan = Plan{true, head_.size(), std::min(want - head_.size(), budget), {}, {}};
+      plan.head = true;
+      plan.offset = head_.size();
+      plan.size = std::min(want - head_.size(), budget);
       head_in_flight_ = true;
       return true;
     }
-    std::size_t count = model_->fetchPriority(view_, false, priority_);
-    const auto free = [&](const FetchItem& item) { return !in_flight_.contains(itemKey(item)); };
-    auto first = std::find_if(priority_.begin(),
-                              priority_.begin() + static_cast<std::ptrdiff_t>(count), free);
-    if (first == priority_.begin() + static_cast<std::ptrdiff_t>(count) &&
-        options_.prefetch_invisible) {
-      count = model_->fetchPriority(view_, true, priority_);
-      first = std::find_if(priority_.begin(),
-                           priority_.begin() + static_cast<std::ptrdiff_t>(count), free);
-    }
-    if (first == priority_.begin() + static_cast<std::ptrdiff_t>(count)) return false;
-    // Extend the most urgent item with the wanted items that follow it in the file, across gaps
-    // smaller than merge_gap_bytes, up to max_request_bytes.
-    const FetchItem lead = *first;
-    sorted_.assign(priority_.begin(), priority_.begin() + static_cast<std::ptrdiff_t>(count));
-    std::sort(sorted_.begin(), sorted_.end(),
-              [](const FetchItem& a, const FetchItem& b) { return a.offset < b.offset; });
-    plan = Plan{false, lead.offset, lead.bytes, {lead}, {}};
-    std::uint64_t end = lead.offset + lead.bytes;
-    for (auto it = std::upper_bound(
-             sorted_.begin(), sorted_.end(), lead.offset,
-             [](std::uint64_t at, const FetchItem&item) { return at < item.offset; });
-         it != sorted_.end(); ++it) {
-      if (!free(*it) || it->offset < end || it->offset - end > options_.merge_gap_bytes ||
-          it->offset + it->bytes - plan.offset > options_.max_request_bytes) {
+    switch (planner_.next(*model_, view_, budget, plan)) {
+      case FetchPlanner::Outcome::kRange:
         break;
-      }
-      end = it->offset + it->bytes;
-      plan.items.push_back(*it);
+      case FetchPlanner::Outcome::kNothing:
+        return false;
+      case FetchPlanner::Outcome::kBudgetTooSmall:
+        // The most urgent item's bytes would be of no use, and when the head already brought them
+        // all the plan would ask for nothing and be made again at once, for ever. The budget
+        // counts as spent, and the stream settles.
+        budget_spent_ = true;
+        return false;
     }
-    plan.size = std::min(end - plan.offset, budget);
-    while (!plan.items.empty() &&
-           plan.items.back().offset + plan.items.back().bytes > plan.offset + plan.size) {
-      plan.items.pop_back();  // beyond the budget: not asked for
-    }
-    if (plan.items.empty()) {
-      // What is left of the budget cannot hold the most urgent item: its bytes would be of no
-      // use, and when the head already brought them all the plan would ask for nothing and be
-      // made again at once, for ever. The budget counts as spent, and the stream settles.
-      budget_spent_ = true;
-      return false;
-    }
-    for (const FetchItem& item : plan.items) in_flight_.insert(itemKey(item));
     if (plan.offset < head_.size()) {
       const std::uint64_t known = std::min<std::uint64_t>(head_.size() - plan.offset, plan.size);
       plan.known.assign(head_.begin() + static_cast<std::ptrdiff_t>(plan.offset),
@@ -236,22 +200,15 @@ class ModelStream::Impl {
 
   // Under the lock: hands the model every planned item whose bytes have all arrived.
   void deliver(const Plan& plan, const std::vector<std::uint8_t>& buffer, std::size_t& next) {
-    while (next < plan.items.size()) {
-      const FetchItem& item = plan.items[next];
-      const std::uint64_t end = item.offset + item.bytes - plan.offset;
-      if (end > buffer.size()) return;
-      const std::span<const std::uint8_t> bytes(buffer.data() + (item.offset - plan.offset),
-                                                item.bytes);
-      const ChunkedIssue issue = model_->accept(item, bytes);
-      in_flight_.erase(itemKey(item));
-      ++next;
-      if (issue.error != ChunkedError::kNone) {
-        ++refused_items_;
-        error_ = std::string("refused: ") + describe(issue.error);
-      } else if (on_accepted_) {
-        on_accepted_(*model_, received_);
-      }
-    }
+    next = planner_.deliver(*model_, plan, buffer, next,
+                            [this](const FetchItem&, const ChunkedIssue& issue) {
+                              if (issue.error != ChunkedError::kNone) {
+                                ++refused_items_;
+                                error_ = std::string("refused: ") + describe(issue.error);
+                              } else if (on_accepted_) {
+                                on_accepted_(*model_, received_);
+                              }
+                            });
   }
 
   void work() {
@@ -274,8 +231,7 @@ class ModelStream::Impl {
       const std::uint64_t fetch_offset = plan.offset + buffer.size();
       const std::uint64_t fetch_size = plan.size - buffer.size();
       if (fetch_size == 0) {
-        for (std::size_t i = next; i < plan.items.size(); ++i)
-          in_flight_.erase(itemKey(plan.items[i]));
+        planner_.abandon(plan, next);
         continue;
       }
       ++busy_;
@@ -301,8 +257,7 @@ class ModelStream::Impl {
       lock.lock();
       outstanding_ -= fetch_size - result.bytes;
       --busy_;
-      for (std::size_t i = next; i < plan.items.size(); ++i)
-        in_flight_.erase(itemKey(plan.items[i]));
+      planner_.abandon(plan, next);
       if (plan.head) head_in_flight_ = false;
       if (result.status == FetchStatus::kOk) {
         backoff_ = std::chrono::milliseconds(0);
@@ -347,7 +302,7 @@ class ModelStream::Impl {
   std::uint64_t head_bytes_ = 0;
   bool head_in_flight_ = false;
   Camera view_;
-  std::unordered_set<std::uint64_t> in_flight_;
+  FetchPlanner planner_;
   std::uint64_t received_ = 0, outstanding_ = 0;
   bool budget_spent_ = false;  // the budget left cannot hold the next item
   int busy_ = 0;
@@ -357,7 +312,6 @@ class ModelStream::Impl {
   int failures_in_a_row_ = 0;
   Clock::time_point retry_after_{};
   std::uint32_t requests_ = 0, failed_requests_ = 0, refused_items_ = 0;
-  std::vector<FetchItem> priority_, sorted_;
   std::function<void(ProgressiveModel&, std::uint64_t)> on_accepted_;
 };
 

@@ -1,13 +1,18 @@
 // The page: reads the view from the address (the meaning of octopoint-render's --yaw, --pitch,
 // --roll, --zoom, --size and --style), draws the embedded model with the integer renderer compiled
-// to WebAssembly (web/octopoint_web.cpp), follows the window's size when the address gives none,
-// and shows the frame time in an overlay. Input is web/octopoint_input.js's.
+// to WebAssembly (web/octopoint_web.cpp), or a chunked model from the same server as it arrives
+// (model=NAME.oct or the model field; web/octopoint_stream.js fetches it), follows the window's
+// size when the address gives none, and shows the frame time, and for a chunked model the bytes
+// received and the chunks pending, in an overlay. Input is web/octopoint_input.js's.
 'use strict';
 
 (function () {
   const canvas = document.getElementById('view');
   const status = document.getElementById('status');
   const styleMenu = document.getElementById('style');
+  const budgetMenu = document.getElementById('budget');
+  const modelForm = document.getElementById('open');
+  const modelField = document.getElementById('model');
   const params = new URLSearchParams(window.location.search);
   // octopoint-render's --style names, in its order (the c key steps through them, as the viewer's).
   const kStyles = ['colour', 'shaded', 'lines', 'toon', 'outlined'];
@@ -64,6 +69,10 @@
       report(problem, true);
     }
   }
+  // A chunked model's point budget (octopoint-render's --point-budget; 0: none), from the menu's
+  // choices (the b key steps through them).
+  const kBudgets = Array.from(budgetMenu.options, (option) => Number(option.value));
+  view.budget = Math.trunc(numberParam('budget', 0, 0, 2147483647));
   document.body.classList.add(fixed ? 'fixed' : 'fit');
   if (params.get('bare') === '1') document.body.classList.add('bare');
 
@@ -83,6 +92,31 @@
   let api = null;
   let pending = false;
   let image = null;  // the last frame's pixels, reused while the size stays
+  let stream = null;  // the chunked model's fetching (web/octopoint_stream.js), once one is open
+  let streamProblem = '';  // what its server did wrong, kept in the overlay
+
+  function kilobytes(bytes) {
+    return (bytes / 1000).toFixed(1) + ' kB';
+  }
+
+  // The overlay's words about the chunked model: bytes received, chunks pending, what went wrong.
+  function streamWords() {
+    const now = stream.status();
+    if (now === null) return '';
+    let words = modelField.value + ': ' + kilobytes(now.received) +
+                (now.fileBytes > 0 ? ' of ' + kilobytes(now.fileBytes) : '') + ' received, ';
+    if (now.state !== 'drawing') words += now.state;
+    else if (now.complete) words += 'view complete';
+    else words += now.pending + ' chunks pending';
+    if (now.refused > 0) words += ', ' + now.refused + ' damaged parts refused';
+    // For the checks (scripts/test-web): the state, the bytes, the refusals, the server's fault.
+    document.body.dataset.stream = now.complete ? 'complete' : now.state;
+    document.body.dataset.received = String(now.received);
+    document.body.dataset.refused = String(now.refused);
+    document.body.dataset.problem = streamProblem;
+    document.body.dataset.pending = String(now.pending);
+    return words + (streamProblem ? ' (' + streamProblem + ')' : '') + '. ';
+  }
 
   function draw() {
     pending = false;
@@ -92,7 +126,13 @@
                             roundAway(view.roll * 1000), Math.round(view.zoom * 65536),
                             size.width, size.height);
     if (failed !== 0) {
-      report('draw refused: ' + api.error(), true);
+      const why = api.error();
+      if (stream !== null) {
+        report(streamWords() + why, streamProblem !== '');
+        stream.pump();  // the view the module's order follows is this draw's
+      } else {
+        report('draw refused: ' + why, true);
+      }
       return;
     }
     const bytes = size.width * size.height * 4;
@@ -109,11 +149,21 @@
     }
     canvas.getContext('2d').putImageData(image, 0, 0);
     const elapsed = performance.now() - started;
+    let streamed = '';
+    if (stream !== null) {
+      stream.pump();  // a new view asks for its own chunks first
+      streamed = streamWords();
+      // For the checks and measurements (scripts/test-web): when the first picture of the model
+      // was shown, in ms from the page's request (performance.now's origin).
+      if (!('firstPicture' in document.body.dataset))
+        document.body.dataset.firstPicture = performance.now().toFixed(1);
+    }
     if (!document.body.classList.contains('bare')) {
-      report((problem ? problem + '. ' : '') + 'yaw ' + view.yaw.toFixed(1) + ', pitch ' +
+      report((problem ? problem + '. ' : '') + streamed + 'yaw ' +
+             view.yaw.toFixed(1) + ', pitch ' +
              view.pitch.toFixed(1) + ', zoom ' + view.zoom.toFixed(3) + ', ' + view.style +
              ', ' + size.width + 'x' + size.height + ': ' + elapsed.toFixed(1) + ' ms a frame',
-             problem !== '');
+             problem !== '' || streamProblem !== '');
     }
     document.body.dataset.frames = String(Number(document.body.dataset.frames || 0) + 1);
   }
@@ -130,6 +180,8 @@
     params.set('pitch', view.pitch.toFixed(2));
     params.set('zoom', view.zoom.toFixed(4));
     if (view.style === 'colour') params.delete('style'); else params.set('style', view.style);
+    if (view.budget === 0) params.delete('budget'); else params.set('budget', String(view.budget));
+    if (stream === null) params.delete('model'); else params.set('model', modelField.value);
     window.history.replaceState(null, '', '?' + params.toString());
   }
 
@@ -145,7 +197,51 @@
     return true;
   }
 
+  // The point budget of a chunked model's frames (0: none).
+  function setBudget(points) {
+    view.budget = points;
+    if (!kBudgets.includes(points)) {
+      const option = document.createElement('option');
+      option.value = String(points);
+      option.textContent = points.toLocaleString('en') + ' points';
+      budgetMenu.appendChild(option);
+      kBudgets.push(points);
+    }
+    budgetMenu.value = String(points);
+    if (api !== null) api.setBudget(points);
+  }
+
+  // Opens a chunked model by its address on this server (a name beside the page, or a path):
+  // from now on the page draws it, coarse to fine as it arrives.
+  function openModel(name) {
+    const url = new URL(name, window.location.href);
+    if (url.origin !== window.location.origin) {
+      report('model=' + name + ': only a model on this server can be opened', true);
+      return;
+    }
+    if (stream !== null) stream.stop();
+    modelField.value = name;
+    streamProblem = '';
+    setStyle('colour');  // a chunked model stores no normals: colour only
+    Module.ccall('octopoint_web_stream_open', 'number', [], []);
+    api.setBudget(view.budget);
+    stream = window.octopointStream(Module, url.href, requestDraw, (text, isError) => {
+      streamProblem = isError ? text : '';
+      requestDraw();
+    });
+    document.body.dataset.stream = 'waiting for the head';
+    document.body.dataset.opened = performance.now().toFixed(1);  // for the time to first picture
+    rememberView();
+    requestDraw();
+  }
+
   function onKey(key) {
+    if (key === 'b') {
+      setBudget(kBudgets[(kBudgets.indexOf(view.budget) + 1) % kBudgets.length]);
+      rememberView();
+      requestDraw();
+      return true;
+    }
     let name = null;
     if (key === 'c') name = kStyles[(kStyles.indexOf(view.style) + 1) % kStyles.length];
     if (key >= '1' && key <= String(kStyles.length)) name = kStyles[Number(key) - 1];
@@ -163,6 +259,15 @@
       requestDraw();
     }
   });
+  budgetMenu.addEventListener('change', () => {
+    setBudget(Number(budgetMenu.value));
+    rememberView();
+    requestDraw();
+  });
+  modelForm.addEventListener('submit', (event) => {
+    event.preventDefault();
+    if (api !== null && modelField.value !== '') openModel(modelField.value);
+  });
   window.octopointInput(canvas, view, requestDraw, rememberView, onKey);
   // A new window size or device pixel ratio (a browser zoom, a move to another screen) fires it.
   if (!fixed) window.addEventListener('resize', requestDraw);
@@ -173,6 +278,7 @@
                          ['number', 'number', 'number', 'number', 'number', 'number']),
       setStyle: Module.cwrap('octopoint_web_set_style', 'number', ['string']),
       pixels: Module.cwrap('octopoint_web_pixels', 'number', []),
+      setBudget: Module.cwrap('octopoint_web_set_point_budget', 'number', ['number']),
       error: () => Module.UTF8ToString(Module.ccall('octopoint_web_error', 'number', [], [])),
     };
     if (Module.ccall('octopoint_web_create', 'number', [], []) !== 0) {
@@ -181,6 +287,8 @@
       return;
     }
     if (!setStyle(view.style)) setStyle('colour');
+    setBudget(view.budget);
+    if (params.has('model') && params.get('model') !== '') openModel(params.get('model'));
     draw();
   };
 })();

@@ -68,7 +68,8 @@ window.octopointInput = function (canvas, view, onChange, onSettled, onKey) {
   }, {passive: false});
   window.addEventListener('keydown', (event) => {
     if (event.ctrlKey || event.metaKey || event.altKey) return;
-    if (event.target instanceof HTMLSelectElement) return;  // the menu has its own keys
+    // The menus have their own keys, and the model field takes letters.
+    if (event.target instanceof HTMLSelectElement || event.target instanceof HTMLInputElement) return;
     if (onKey(event.key)) event.preventDefault();
   });
 };

@@ -26,6 +26,44 @@ int octopoint_web_set_style(const char* name);
 const std::uint8_t* octopoint_web_pixels(void);
 // Why the last call failed, in words ("" after a success).
 const char* octopoint_web_error(void);
+
+// Streaming a chunked model (docs/web.md, "Streaming"; web/octopoint_web_stream.cpp). The page
+// fetches byte ranges; the module says which (the native client's order for the view of the last
+// draw), checks every byte as the native renderer does and draws what it holds.
+//
+// Opens a new chunked model (forgetting any other): from now on octopoint_web_draw draws it, in
+// colour (it fails, drawing nothing, until the model's head has arrived).
+int octopoint_web_stream_open(void);
+// Forgets the chunked model: octopoint_web_draw draws the embedded model again.
+int octopoint_web_stream_close(void);
+// The next request to make: its id (> 0; octopoint_web_stream_request says which bytes), 0 when
+// there is none to make now (every wanted part in flight, or the view complete and the rest
+// fetched), -1 when the stream cannot go on (no model open, or its head is not a chunked model).
+std::int32_t octopoint_web_stream_next(void);
+// The last request octopoint_web_stream_next made: the first byte's offset (low and high 32 bits)
+// and the bytes to ask for (Range: bytes=offset-(offset+size-1)).
+const std::uint32_t* octopoint_web_stream_request(void);
+// Room in the module for `bytes` (1..16777216) bytes the page copies in before
+// octopoint_web_stream_receive; valid until the next call (the module's memory may move).
+std::uint8_t* octopoint_web_input(std::int32_t bytes);
+// The next `bytes` bytes of request `id`'s body, copied into octopoint_web_input's room. Every
+// record table and chunk whose last byte arrived is validated and taken, or refused (and asked for
+// again by a later request). 0: taken; 1: a part was refused as damaged (octopoint_web_error says
+// which; the request goes on); -1: the request is ended (more bytes than asked, an unknown id) or
+// the head is refused for good.
+int octopoint_web_stream_receive(std::int32_t id, std::int32_t bytes);
+// Request `id` ended (its body complete, or the page gave up on it): its parts that did not arrive
+// whole are asked for again by a later request. -1 when fewer bytes came than were asked for.
+int octopoint_web_stream_end(std::int32_t id);
+// The most points a frame of the chunked model draws (ProgressiveModel's point budget, the
+// native --point-budget); 0: no budget.
+int octopoint_web_set_point_budget(std::int32_t points);
+// The stream as the overlay shows it, eleven words: state (1 waiting for the head, 2 drawing, 3
+// failed), bytes received (low, high), the file's bytes (low, high), chunks held, the view's
+// tables and chunks still to come, whether the view is complete (1), parts refused as damaged,
+// requests in flight, points the last draw drew. Null when no model is open. Valid until the next
+// call.
+const std::uint32_t* octopoint_web_stream_status(void);
 }
 
 namespace octopoint::web {

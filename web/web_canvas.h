@@ -1,0 +1,46 @@
+#pragma once
+// What the page's two models share in the module (web/octopoint_web.cpp draws the embedded model,
+// web/octopoint_web_stream.cpp a chunked one): the frame and its pixels, kept between draws of one
+// size, the camera of the page's view, and the message of the last failure.
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "octopoint/camera.h"
+#include "octopoint/framebuffer.h"
+#include "octopoint/render.h"
+
+namespace octopoint::web {
+
+// octopoint-render's background (tools/render_main.cpp): the frames must match its PNGs.
+inline constexpr Rgb kBackground{236, 236, 240};
+
+struct Canvas {
+  std::vector<std::uint8_t> rgb;   // what the styler or resolveToRgb writes, 3 bytes a pixel
+  std::vector<std::uint8_t> rgba;  // what the page copies into its canvas, 4 bytes a pixel
+  // Kept between draws and made anew only when the size changes: no allocation per frame (the
+  // vectors above keep their capacity too).
+  std::optional<Framebuffer> frame;
+
+  // The frame at the camera's size (not cleared) and rgb sized to match.
+  Framebuffer& sized(const Camera& camera);
+  // Widens rgb into opaque RGBA, the layout of a canvas's ImageData.
+  void toRgba();
+};
+
+Canvas& canvas();
+
+// Records why the call failed (octopoint_web_error) and returns -1; succeed() clears it, returns 0.
+int fail(std::string message);
+int succeed();
+const char* errorText();  // "" after a success
+
+// The chunked model's part (web/octopoint_web_stream.cpp): whether the page opened one (then the
+// draws are of it, in colour), and its draw of the camera (the camera also becomes the view its
+// fetch order follows).
+bool streamOpen();
+int drawStream(Variant variant, const Camera& camera);
+
+}  // namespace octopoint::web
