@@ -1,11 +1,10 @@
 // Smooth splats (octopoint/smooth.h, docs/splats.md "Smooth splats"): passes 2 and 3 over a box
 // frame. Integers only: weights Q8 per axis, their product Q12, colour sums in 32 bits.
 
-#include "octopoint/smooth.h"
-
 #include <algorithm>
 #include <array>
 
+#include "octopoint/smooth.h"
 #include "renderer/bit_scan.h"
 #include "renderer/decode_algorithms.h"
 #include "renderer/subtree_clip.h"
@@ -30,7 +29,8 @@ constexpr std::array<std::uint16_t, kKernelSteps> kKernel = [] {
     // 256 (1 - 3t^2 + 2t^3) = (256 kOne^3 - 768 i^2 kOne + 512 i^3) / kOne^3, rounded.
     const std::int64_t scaled = 256 * kOne * kOne * kOne - 768 * i * i * kOne + 512 * i * i * i;
     const std::int64_t weight = (scaled + kOne * kOne * kOne / 2) / (kOne * kOne * kOne);
-    table[static_cast<std::size_t>(i)] = static_cast<std::uint16_t>(std::max<std::int64_t>(weight, 1));
+    table[static_cast<std::size_t>(i)] =
+        static_cast<std::uint16_t>(std::max<std::int64_t>(weight, 1));
   }
   return table;
 }();
@@ -89,7 +89,8 @@ class BlendWalk {
   // Q(32-F).F; at least one pixel, so that a leaf always reaches the pixel it lies in.
   static std::int64_t radiusOf(const FrameSetup& setup) {
     const auto edge = static_cast<std::int64_t>(voxelEdgeOnScreen(setup));
-    const std::int64_t edge_or_pixel = std::max<std::int64_t>(edge, std::int64_t{1} << setup.fraction_bits);
+    const std::int64_t edge_or_pixel =
+        std::max<std::int64_t>(edge, std::int64_t{1} << setup.fraction_bits);
     return std::max<std::int64_t>(edge_or_pixel * kRadiusSixteenths / 16, 1);
   }
 
@@ -181,7 +182,7 @@ class BlendWalk {
   std::uint16_t* column_weight_;
   std::uint16_t* row_weight_;
   const std::atomic<bool>* abort_;
-  std::int64_t radius_x_, radius_y_;    // the kernel's radius, Q(32-F).F
+  std::int64_t radius_x_, radius_y_;     // the kernel's radius, Q(32-F).F
   std::uint64_t inverse_x_, inverse_y_;  // kKernelSteps 2^32 / radius: distance to table step
   std::uint32_t tolerance_;              // depth-key units
   SubtreeClip clip_;
@@ -220,7 +221,8 @@ std::string_view splatModeName(SplatMode mode) {
 
 PaletteRgb paletteOf(const ModelView& model) {
   PaletteRgb palette{};
-  for (int i = 0; i < model.paletteCount(); ++i) palette[static_cast<std::size_t>(i)] = model.paletteColour(i);
+  for (int i = 0; i < model.paletteCount(); ++i)
+    palette[static_cast<std::size_t>(i)] = model.paletteColour(i);
   return palette;
 }
 
@@ -239,7 +241,11 @@ bool SmoothSplats::fits(const FrameSetup& setup, const FrameView& frame) const {
 
 bool SmoothSplats::begin(const FrameSetup& setup, const FrameView& frame) {
   if (!fits(setup, frame)) return false;
-  blended_ = setup.splat.active();
+  // Magnified: a voxel's edge longer than a pixel. A turned voxel of depth auto (edge at most a
+  // pixel, footprint up to 2 x 2) is drawn as the box frame draws it: its kernel would be under
+  // a pixel wide, and blending it cost 4 to 8 times the box frame (docs/splats.md).
+  blended_ =
+      setup.splat.active() && voxelEdgeOnScreen(setup) > (std::uint64_t{1} << setup.fraction_bits);
   blended_rect_ = blended_ ? frame.drawnRect() : PixelRect{};
   if (blended_rect_.empty()) return true;
   const auto width = static_cast<std::size_t>(width_);
@@ -291,8 +297,8 @@ bool SmoothSplats::blend(const LevelView& level, const FrameSetup& setup, FrameV
   return begin(setup, frame) && accumulate(level, setup, frame, palette, abort) && finish(frame);
 }
 
-bool SmoothSplats::resolveToRgb(const FrameView& frame, const PaletteRgb& palette,
-                                Rgb background, std::span<std::uint8_t> rgb) const {
+bool SmoothSplats::resolveToRgb(const FrameView& frame, const PaletteRgb& palette, Rgb background,
+                                std::span<std::uint8_t> rgb) const {
   if (width_ == 0 || frame.width() != width_ || frame.height() != height_ ||
       rgb.size() < pixelCount(width_, height_) * 3) {
     return false;

@@ -12,8 +12,9 @@
 //      pixel's nearest depth adds its weighted colour and its weight (integer sums commute);
 //   3. per pixel, covered where the summed weight passes a threshold (round silhouettes, not the
 //      voxels' staircase), its colour the weighted mean.
-// Where a voxel covers at most one pixel per axis (FrameSetup::splat inactive) nothing is blended:
-// the frame and its colours are the box frame's, bit for bit.
+// Where a voxel's edge is at most one pixel (voxelEdgeOnScreen: depth auto's voxels, even where a
+// turned one's footprint is 2 x 1 or 2 x 2) nothing is blended: the frame and its colours are the
+// box frame's, bit for bit.
 
 #include <array>
 #include <atomic>
@@ -84,8 +85,8 @@ class SmoothSplats {
   // where empty; after a set-up without splats, the palette colours of the box frame exactly as
   // octopoint::resolveToRgb gives them. `rgb` must hold width * height * 3 bytes and `frame` be
   // the buffers' size: otherwise nothing is written and the result is false.
-  [[nodiscard]] bool resolveToRgb(const FrameView& frame, const PaletteRgb& palette,
-                                  Rgb background, std::span<std::uint8_t> rgb) const;
+  [[nodiscard]] bool resolveToRgb(const FrameView& frame, const PaletteRgb& palette, Rgb background,
+                                  std::span<std::uint8_t> rgb) const;
 
   std::int32_t width() const { return width_; }
   std::int32_t height() const { return height_; }

@@ -53,8 +53,9 @@ struct SmoothFrame {
 
 SmoothFrame drawSmooth(Variant variant, const LevelView& level, const FrameSetup& setup,
                        const PaletteRgb& palette) {
-  SmoothFrame out{Framebuffer(setup), std::vector<std::uint8_t>(
-                                          static_cast<std::size_t>(setup.width * setup.height) * 3)};
+  SmoothFrame out{
+      Framebuffer(setup),
+      std::vector<std::uint8_t>(static_cast<std::size_t>(setup.width * setup.height) * 3)};
   SmoothSplats smooth(setup);
   out.frame.clear();
   EXPECT_TRUE(renderSmooth(variant, level, setup, out.frame, smooth, palette));
@@ -81,10 +82,13 @@ TEST(SmoothSplats, FrameIsTheBoxFrameWhereVoxelsAreAtMostAPixel) {
   const PaletteRgb palette = paletteOf(model);
   const LevelView& level = *model.levelOfDepth(8);
   int cases = 0;
+  int turned = 0;  // footprints wider than a pixel, edges at most a pixel
   for (const Camera& camera : {smoothCamera(320, 240, 1, 0), smoothCamera(320, 240, 0.5, 30),
-                               smoothCamera(176, 208, 1, 0, 20), smoothCamera(256, 256, 1, 90)}) {
+                               smoothCamera(176, 208, 1, 0, 20), smoothCamera(256, 256, 1, 90),
+                               smoothCamera(320, 240, 1, 30, 10), smoothCamera(256, 256, 1, 45)}) {
     const FrameSetup setup = smoothSetup(camera, level.depth);
-    ASSERT_FALSE(setup.splat.active());
+    ASSERT_LE(voxelEdgeOnScreen(setup), std::uint64_t{1} << setup.fraction_bits);
+    turned += setup.splat.active() ? 1 : 0;
     for (const Variant variant : splatVariants()) {
       Framebuffer box(setup);
       box.clear();
@@ -97,7 +101,8 @@ TEST(SmoothSplats, FrameIsTheBoxFrameWhereVoxelsAreAtMostAPixel) {
       ++cases;
     }
   }
-  EXPECT_GE(cases, 4);
+  EXPECT_GE(cases, 6);
+  EXPECT_EQ(turned, 2);
 }
 
 // The sphere's voxels in three random parts, each its own level: drawn into one frame (box pass
@@ -125,11 +130,13 @@ TEST(SmoothSplats, FrameDoesNotDependOnTheOrderLeavesArriveIn) {
       do {
         Framebuffer frame(setup);
         frame.clear();
-        for (const int i : order) ASSERT_TRUE(renderLevel(Variant::kFixedFast, levels[i].view(), setup, frame));
+        for (const int i : order)
+          ASSERT_TRUE(renderLevel(Variant::kFixedFast, levels[i].view(), setup, frame));
         SmoothSplats smooth(setup);
         ASSERT_TRUE(smooth.begin(setup, frame));
         for (const int i : order) {
-          ASSERT_TRUE(smooth.accumulate(levels[static_cast<std::size_t>(i)].view(), setup, frame, palette));
+          ASSERT_TRUE(
+              smooth.accumulate(levels[static_cast<std::size_t>(i)].view(), setup, frame, palette));
         }
         ASSERT_TRUE(smooth.finish(frame));
         std::vector<std::uint8_t> rgb(expected.rgb.size());
@@ -149,8 +156,10 @@ TEST(SmoothSplats, FastAndSimdBlendTheSameFrames) {
     for (const int yaw : {0, 30, 135}) {
       const Camera camera = smoothCamera(320, 240, zoom, yaw, 15);
       const FrameSetup setup = smoothSetup(camera, 8);
-      const SmoothFrame fast = drawSmooth(Variant::kFixedFast, *model.levelOfDepth(8), setup, palette);
-      const SmoothFrame simd = drawSmooth(Variant::kFixedSimd, *model.levelOfDepth(8), setup, palette);
+      const SmoothFrame fast =
+          drawSmooth(Variant::kFixedFast, *model.levelOfDepth(8), setup, palette);
+      const SmoothFrame simd =
+          drawSmooth(Variant::kFixedSimd, *model.levelOfDepth(8), setup, palette);
       EXPECT_TRUE(std::ranges::equal(fast.frame.pixels(), simd.frame.pixels()));
       EXPECT_EQ(fast.rgb, simd.rgb) << "zoom " << zoom << ", yaw " << yaw;
     }
@@ -179,14 +188,14 @@ OutlineMeasure measureOutline(const FrameView& frame, const Camera& camera, int 
   OutlineMeasure m;
   for (std::int32_t y = 0; y < frame.height(); ++y) {
     for (std::int32_t x = 0; x < frame.width(); ++x) {
-      const double inside = radius_px - std::hypot(x + 0.5 - camera.width / 2.0,
-                                                   y + 0.5 - camera.height / 2.0);
+      const double inside =
+          radius_px - std::hypot(x + 0.5 - camera.width / 2.0, y + 0.5 - camera.height / 2.0);
       const bool covered = frame.covered(x, y);
       const auto empty_at = [&](std::int32_t u, std::int32_t v) {
         return u >= 0 && v >= 0 && u < frame.width() && v < frame.height() && !frame.covered(u, v);
       };
-      if (covered && (empty_at(x - 1, y) || empty_at(x + 1, y) || empty_at(x, y - 1) ||
-                      empty_at(x, y + 1))) {
+      if (covered &&
+          (empty_at(x - 1, y) || empty_at(x + 1, y) || empty_at(x, y - 1) || empty_at(x, y + 1))) {
         m.outline_sum += std::fabs(inside) / voxel_px;
         ++m.outline_pixels;
       }
@@ -250,8 +259,10 @@ TEST(SmoothSplats, FramesHaveTheirFixedChecksums) {
   const std::uint32_t expected[] = {0xa9b15697, 0x82dbe994, 0xdf3c032c};
   for (std::size_t i = 0; i < std::size(cameras); ++i) {
     const FrameSetup setup = smoothSetup(cameras[i], 8);
-    const SmoothFrame smooth = drawSmooth(Variant::kFixedFast, *model.levelOfDepth(8), setup, palette);
-    EXPECT_EQ(rgbChecksum(smooth.rgb), expected[i]) << i << std::hex << ": 0x" << rgbChecksum(smooth.rgb);
+    const SmoothFrame smooth =
+        drawSmooth(Variant::kFixedFast, *model.levelOfDepth(8), setup, palette);
+    EXPECT_EQ(rgbChecksum(smooth.rgb), expected[i])
+        << i << std::hex << ": 0x" << rgbChecksum(smooth.rgb);
   }
 }
 
