@@ -74,10 +74,10 @@ void registerAll() {
   for (const View& view : views) {
     for (const auto& [variant, name] : variants) {
       for (const SplatMode mode : {SplatMode::kBox, SplatMode::kSmooth}) {
-        benchmark::RegisterBenchmark(("smooth/" + name + "/tabletop/" + view.name + "/" +
-                                      std::string(splatModeName(mode)))
-                                         .c_str(),
-                                     drawFrame, variant, mode, view.width, view.height, view.zoom)
+        benchmark::RegisterBenchmark(
+            ("smooth/" + name + "/tabletop/" + view.name + "/" + std::string(splatModeName(mode)))
+                .c_str(),
+            drawFrame, variant, mode, view.width, view.height, view.zoom)
             ->Unit(benchmark::kMicrosecond);
       }
     }
