@@ -22,6 +22,7 @@
 #include "octopoint/model.h"
 #include "octopoint/models.h"
 #include "octopoint/render.h"
+#include "octopoint/smooth.h"
 #include "octopoint/styles.h"
 #include "renderer/level_of_detail.h"
 #include "tools/chunked_render.h"
@@ -75,6 +76,11 @@ nor --file nor --url it draws the default model embedded in this binary.
                      below); N, 1..16, must be one the model stores
   --variant NAME     decoder variant (default: the fastest this CPU runs, fixed_simd with AVX2,
                      else fixed_fast; see --list)
+  --splats MODE      how a magnified voxel is drawn: box (default), a flat rectangle of its colour,
+                     or smooth, blended with its neighbours by an integer kernel, with round
+                     silhouettes (docs/splats.md); smooth needs fixed_fast or fixed_simd, colour
+                     style, a single view, no --fill or --perspective; where voxels are at most a
+                     pixel both draw the same frame
   --fill, --no-fill  scanline hole filling after decoding, as the paper does (default --no-fill:
                      footprint splats leave no holes; docs/holefill.md)
   --style NAME       colour (default), shaded, lines, toon or outlined (docs/styles.md); all but
@@ -118,6 +124,7 @@ struct Options {
   Variant variant = defaultVariant();
   bool list = false;
   bool fill = false;
+  SplatMode splats = SplatMode::kBox;
   int sheet = 0;  // yaw angles of the contact sheet; 0: a single view
   bool perspective = false;
   std::optional<Angle> fov;  // with --perspective; none: kDefaultPerspectiveFovDegrees
@@ -232,6 +239,14 @@ void checkCombination(const Options& options) {
         "--perspective draws a model file or an embedded model in colour: --url, --fill, --sheet "
         "and --style do not apply yet");
   }
+  if (options.splats == SplatMode::kSmooth &&
+      (url || options.fill || options.sheet > 0 || options.perspective ||
+       options.style.style != Style::kColour || !drawsSplats(options.variant))) {
+    throw cli::Error(
+        "--splats smooth draws a single orthographic view in colour with fixed_fast or "
+        "fixed_simd: --url, --fill, --sheet, --perspective, --style and other variants do not "
+        "apply yet");
+  }
   if (!options.list && options.output.empty()) throw cli::Error("no output given: use -o OUT.png");
 }
 
@@ -270,6 +285,13 @@ Options parseOptions(int argc, char** argv) {
       if (!variant)
         throw cli::Error("--variant: unknown variant " + cli::inQuotes(name) + " (see --list)");
       options.variant = *variant;
+    } else if (args.is("--splats")) {
+      const std::string name = args.value();
+      const std::optional<SplatMode> mode = splatModeFromName(name);
+      if (!mode) {
+        throw cli::Error("--splats: unknown mode " + cli::inQuotes(name) + " (box or smooth)");
+      }
+      options.splats = *mode;
     } else if (args.is("--fill") || args.is("--no-fill")) {
       args.noValue();
       options.fill = args.is("--fill");
@@ -411,8 +433,19 @@ int renderSheet(const ModelView& model, const std::string& model_label, const Op
   return 0;
 }
 
-int renderFrame(const LevelView& level, FrameStyler& styler, const std::string& model_label,
-                const Options& options) {
+// --splats smooth: the box frame, blended (octopoint/smooth.h), as RGB888.
+void drawSmooth(Variant variant, const LevelView& level, const FrameSetup& setup,
+                const ModelView& model, Framebuffer& frame, std::span<std::uint8_t> rgb) {
+  SmoothSplats smooth(setup);
+  const PaletteRgb palette = paletteOf(model);
+  if (!renderSmooth(variant, level, setup, frame, smooth, palette) ||
+      !smooth.resolveToRgb(frame, palette, kBackground, rgb)) {
+    throw cli::Error(std::string("draw refused: ") + describe(checkRender(level, setup, frame)));
+  }
+}
+
+int renderFrame(const ModelView& model, const LevelView& level, FrameStyler& styler,
+                const std::string& model_label, const Options& options) {
   FrameSetup setup;
   const CameraError camera_error =
       buildFrameSetup(options.camera, level.depth, kDefaultFractionBits, &setup);
@@ -421,16 +454,19 @@ int renderFrame(const LevelView& level, FrameStyler& styler, const std::string& 
 
   Framebuffer frame(options.camera.width, options.camera.height);
   frame.clear(styler.payload());
-  if (!renderLevel(options.variant, level, setup, frame))
-    throw cli::Error(std::string("draw refused: ") + describe(checkRender(level, setup, frame)));
-  if (options.fill && HoleFiller(frame.width()).fill(frame, bridgeDepthLimit(setup)).refused)
-    throw cli::Error("hole filling refused the frame");
-
   cv::Mat rgb(options.camera.height, options.camera.width, CV_8UC3);
-  styler.beginFrame(setup);
-  if (const StyleError error = styler.resolve(frame, {rgb.data, rgb.total() * 3});
-      error != StyleError::kNone) {
-    throw cli::Error(std::string("style refused: ") + describe(error));
+  if (options.splats == SplatMode::kSmooth) {
+    drawSmooth(options.variant, level, setup, model, frame, {rgb.data, rgb.total() * 3});
+  } else {
+    if (!renderLevel(options.variant, level, setup, frame))
+      throw cli::Error(std::string("draw refused: ") + describe(checkRender(level, setup, frame)));
+    if (options.fill && HoleFiller(frame.width()).fill(frame, bridgeDepthLimit(setup)).refused)
+      throw cli::Error("hole filling refused the frame");
+    styler.beginFrame(setup);
+    if (const StyleError error = styler.resolve(frame, {rgb.data, rgb.total() * 3});
+        error != StyleError::kNone) {
+      throw cli::Error(std::string("style refused: ") + describe(error));
+    }
   }
   cv::Mat bgr;
   cv::cvtColor(rgb, bgr, cv::COLOR_RGB2BGR);
@@ -485,7 +521,7 @@ int run(int argc, char** argv) {
       options.output);  // before drawing: a FIFO, a device or a directory is refused
   if (options.sheet > 0) return renderSheet(model, model_label, options, style);
   if (options.perspective) return renderPerspectiveFrame(model, level, model_label, options);
-  return renderFrame(level, styler, model_label, options);
+  return renderFrame(model, level, styler, model_label, options);
 }
 
 }  // namespace

@@ -201,6 +201,16 @@
 //   StylePass and the *Rows functions
 //                            the styler's parts, for band renderers that style rows themselves.
 //
+// octopoint/smooth.h: smooth close-ups, blended splats in integers (docs/splats.md)
+//   SplatMode                box (flat footprints, the default), smooth; allSplatModes(),
+//                            splatModeFromName (optional), splatModeName.
+//   SmoothSplats(width, height)
+//                            16 bytes a pixel, allocated once. blend(level, setup, frame, palette)
+//                            over a box frame (kColour) drawn by fixed_fast or fixed_simd, then
+//                            resolveToRgb(frame, palette, background, rgb). Never allocates.
+//   renderSmooth(variant, level, setup, frame, smooth, palette)
+//                            renderLevel, then blend. paletteOf(model): the 256 colours.
+//
 // octopoint/bands.h: a frame in bands of a few rows, for RAM smaller than a frame (Example 2)
 //   renderBands(level, setup, config, index, palette, buffers, sink)
 //                            draws the frame top to bottom into the caller's band buffers and calls
@@ -271,4 +281,5 @@
 #include "octopoint/models.h"
 #include "octopoint/render.h"
 #include "octopoint/rgb_renderer.h"
+#include "octopoint/smooth.h"
 #include "octopoint/styles.h"

@@ -11,6 +11,7 @@
 #include "octopoint/progressive.h"
 #include "octopoint/render.h"
 #include "octopoint/rgb_renderer.h"
+#include "octopoint/smooth.h"
 #include "octopoint/styles.h"
 #include "renderer/level_of_detail.h"
 #include "targets/armel/allocation_counter.h"
@@ -96,6 +97,43 @@ TEST(FrameAllocation, DepthAutoAndSplatFramesAllocateNothing) {
     }
   }
   EXPECT_GE(splatting, 2);  // the splat path ran
+}
+
+// Smooth splats (octopoint/smooth.h): once its buffers exist, a blended frame (set-up, clear,
+// box pass, blend, RGB) allocates nothing, whatever the size of its splats.
+TEST(FrameAllocation, SmoothFramesAllocateNothing) {
+  ModelIssue issue;
+  const auto model = ModelView::fromEmbedded(*models::defaultModel(), &issue);
+  ASSERT_TRUE(model.has_value()) << describe(issue.error);
+  Camera camera;
+  Framebuffer frame(camera.width, camera.height);
+  SmoothSplats smooth(camera.width, camera.height);
+  const PaletteRgb palette = paletteOf(*model);
+  std::vector<std::uint8_t> rgb(static_cast<std::size_t>(camera.width * camera.height) * 3);
+  FrameSetup setup;
+  const LevelView& level = model->finestLevel();
+  int blended = 0;
+  for (const VariantInfo& info : allVariants()) {
+    if (!drawsSplats(info.variant)) continue;
+    for (const int zoom : {1, 4, 16}) {
+      camera.zoom = Q16::fromRaw(zoom * Q16::kOneRaw);
+      camera.yaw = Angle::fromDegrees(30);
+      const long before = heapAllocationCount();
+      const CameraError camera_error =
+          buildFrameSetup(camera, level.depth, kDefaultFractionBits, &setup);
+      frame.clear();
+      const bool complete = camera_error == CameraError::kNone &&
+                            renderSmooth(info.variant, level, setup, frame, smooth, palette);
+      const bool resolved = smooth.resolveToRgb(frame, palette, Rgb{}, rgb);
+      const long allocations = heapAllocationCount() - before;
+      ASSERT_EQ(camera_error, CameraError::kNone);
+      EXPECT_TRUE(complete) << info.name;
+      EXPECT_TRUE(resolved);
+      EXPECT_EQ(allocations, 0) << info.name << " at zoom " << zoom;
+      blended += setup.splat.active() ? 1 : 0;
+    }
+  }
+  EXPECT_GE(blended, 3);
 }
 
 // The interactive renderer's threads after the window was resized and zoomed in (H at depth auto

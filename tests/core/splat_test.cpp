@@ -49,13 +49,7 @@ const Surfaces& surfaces() {
 }
 
 Camera cameraOf(int width, int height, double zoom, int yaw, int pitch) {
-  Camera camera;
-  camera.width = width;
-  camera.height = height;
-  camera.zoom = Q16::fromRaw(static_cast<std::int32_t>(std::lround(zoom * Q16::kOneRaw)));
-  camera.yaw = Angle::fromDegrees(yaw);
-  camera.pitch = Angle::fromDegrees(pitch);
-  return camera;
+  return testing_support::viewOf(width, height, zoom, yaw, pitch);
 }
 
 // The exact screen projection the renderer approximates: s = R q * edge + (w/2, h/2), with R the

@@ -14,6 +14,8 @@
 #include <cstdint>
 #include <vector>
 
+#include "octopoint/camera.h"
+#include "octopoint/fixed.h"
 #include "octopoint/model.h"
 
 namespace octopoint::testing_support {
@@ -67,6 +69,18 @@ SyntheticLevel encodeLevel(std::vector<std::uint64_t> keys, int depth, Colour co
   return level;
 }
 
+// A camera of width x height pixels at `zoom`, turned `yaw` and `pitch` degrees: the views the
+// tests of synthetic surfaces draw.
+inline Camera viewOf(int width, int height, double zoom, int yaw, int pitch = 0) {
+  Camera camera;
+  camera.width = width;
+  camera.height = height;
+  camera.zoom = Q16::fromRaw(static_cast<std::int32_t>(std::lround(zoom * Q16::kOneRaw)));
+  camera.yaw = Angle::fromDegrees(yaw);
+  camera.pitch = Angle::fromDegrees(pitch);
+  return camera;
+}
+
 inline std::uint8_t colourOf(std::uint64_t key) {
   return static_cast<std::uint8_t>((key * 2654435761u) >> 24);
 }
@@ -78,7 +92,7 @@ inline double voxelCentre(std::uint32_t i, int depth) {
 
 // A sphere of `radius` (cube units) about the cube's centre: the voxels whose cube meets its
 // surface (nearest point of the cube inside the sphere, farthest outside or on it).
-inline SyntheticLevel sphereLevel(double radius, int depth) {
+inline std::vector<std::uint64_t> sphereKeys(double radius, int depth) {
   const std::uint32_t n = 1u << depth;
   const double half = 0.5 / n;
   std::vector<std::uint64_t> keys;
@@ -97,7 +111,11 @@ inline SyntheticLevel sphereLevel(double radius, int depth) {
       }
     }
   }
-  return encodeLevel(std::move(keys), depth, colourOf);
+  return keys;
+}
+
+inline SyntheticLevel sphereLevel(double radius, int depth) {
+  return encodeLevel(sphereKeys(radius, depth), depth, colourOf);
 }
 
 // A flat square through the cube's centre: the points a * u + b * v with |a|, |b| <= side / 2,

@@ -1,0 +1,117 @@
+#pragma once
+// octopoint/smooth.h: Smooth close-ups, blended splats in integer arithmetic (docs/splats.md,
+// "Smooth splats"). The manual of the whole library is octopoint/octopoint.h.
+//
+// Magnified, a box splat (octopoint/camera.h) is a flat square of one palette colour. A smooth
+// frame reconstructs a surface instead, as EWA surface splatting does (Zwicker et al. 2001) but in
+// integers: every leaf adds weight * colour to the pixels within its kernel's reach, the weight
+// falling off from the leaf's centre by a separable integer table, and each pixel divides by the
+// weights it received. Three passes, each independent of the order leaves arrive in:
+//   1. the box frame (renderLevel by fixed_fast or fixed_simd): each pixel's nearest depth;
+//   2. every leaf within the kernel's reach of a pixel and within the depth tolerance of that
+//      pixel's nearest depth adds its weighted colour and its weight (integer sums commute);
+//   3. per pixel, covered where the summed weight passes a threshold (round silhouettes, not the
+//      voxels' staircase), its colour the weighted mean.
+// Where a voxel's edge is at most one pixel (voxelEdgeOnScreen: depth auto's voxels, even where a
+// turned one's footprint is 2 x 1 or 2 x 2) nothing is blended: the frame and its colours are the
+// box frame's, bit for bit.
+
+#include <array>
+#include <atomic>
+#include <cstddef>
+#include <cstdint>
+#include <optional>
+#include <span>
+#include <string_view>
+#include <vector>
+
+#include "octopoint/camera.h"
+#include "octopoint/framebuffer.h"
+#include "octopoint/model.h"
+#include "octopoint/render.h"
+
+namespace octopoint {
+
+// How a magnified leaf is drawn: `box` (the default) fills its footprint with its colour, `smooth`
+// blends it with its neighbours.
+enum class SplatMode : std::uint8_t { kBox, kSmooth };
+
+struct SplatModeInfo {
+  SplatMode mode;
+  std::string_view name;  // what users pass to `octopoint-render --splats`
+  std::string_view summary;
+};
+
+std::span<const SplatModeInfo> allSplatModes();
+[[nodiscard]] std::optional<SplatMode> splatModeFromName(std::string_view name);
+std::string_view splatModeName(SplatMode mode);
+
+// A model's 256 palette colours (entries past its palette are black).
+using PaletteRgb = std::array<Rgb, 256>;
+PaletteRgb paletteOf(const ModelView& model);
+
+// The blending buffers for frames of one size: kBytesPerPixel a pixel besides the frame's own 4,
+// allocated once, at construction; blending never allocates.
+class SmoothSplats {
+ public:
+  // Red, green, blue and weight sums, 32 bits each.
+  static constexpr std::size_t kBytesPerPixel = 16;
+
+  // For frames of width x height pixels, each 1..kMaxViewportSide; any other size makes buffers
+  // that refuse every frame.
+  SmoothSplats(std::int32_t width, std::int32_t height);
+  explicit SmoothSplats(const FrameSetup& setup) : SmoothSplats(setup.width, setup.height) {}
+
+  // Passes 2 and 3 over `frame`, which holds `level`'s box frame drawn with `setup` by a variant
+  // that draws splats (drawsSplats), cleared to PixelPayload::kColour: begin, accumulate, finish.
+  // Pixels whose blended weight stays below the threshold become kEmpty in `frame`; the others
+  // keep their box word (depth and palette index) and get a blended colour here, read by
+  // resolveToRgb. A frame of another size than the buffers', of normals, or a set-up checkRender
+  // refuses for `level` are refused: false, nothing changed. When `abort` becomes true, returns
+  // false at the next poll (the frame is then incomplete). Returns true for a complete frame.
+  [[nodiscard]] bool blend(const LevelView& level, const FrameSetup& setup, FrameView& frame,
+                           const PaletteRgb& palette, const std::atomic<bool>* abort = nullptr);
+
+  // The three steps of blend, for a frame several levels share (each drawn into it first, as
+  // renderLevel allows): begin once, accumulate each level (in any order: the frame is the
+  // same), finish once. Each refuses (false) what blend refuses.
+  [[nodiscard]] bool begin(const FrameSetup& setup, const FrameView& frame);
+  [[nodiscard]] bool accumulate(const LevelView& level, const FrameSetup& setup,
+                                const FrameView& frame, const PaletteRgb& palette,
+                                const std::atomic<bool>* abort = nullptr);
+  [[nodiscard]] bool finish(FrameView& frame);
+
+  // RGB888 of the last blended frame (`frame` as blend left it): blended colours, `background`
+  // where empty; after a set-up without splats, the palette colours of the box frame exactly as
+  // octopoint::resolveToRgb gives them. `rgb` must hold width * height * 3 bytes and `frame` be
+  // the buffers' size: otherwise nothing is written and the result is false.
+  [[nodiscard]] bool resolveToRgb(const FrameView& frame, const PaletteRgb& palette, Rgb background,
+                                  std::span<std::uint8_t> rgb) const;
+
+  std::int32_t width() const { return width_; }
+  std::int32_t height() const { return height_; }
+
+  struct Sums {
+    std::uint32_t r, g, b, weight;
+  };
+
+ private:
+  bool fits(const FrameSetup& setup, const FrameView& frame) const;
+
+  std::int32_t width_;
+  std::int32_t height_;
+  bool blended_ = false;    // whether the frame blends (begin's set-up had splats)
+  PixelRect blended_rect_;  // where the sums are kept: the box frame's drawn rectangle
+  std::vector<Sums> sums_;  // width * height; pass 3 leaves the colour packed in r
+  // One leaf's weights per column and row within its reach (Q8), kept here so that a leaf of any
+  // size costs no allocation.
+  std::vector<std::uint16_t> column_weight_, row_weight_;
+};
+
+// Draws `level` smoothly: renderLevel(variant, ...) into `frame` (cleared by the caller to
+// PixelPayload::kColour), then smooth.blend. False when either refuses or is aborted.
+[[nodiscard]] bool renderSmooth(Variant variant, const LevelView& level, const FrameSetup& setup,
+                                FrameView& frame, SmoothSplats& smooth, const PaletteRgb& palette,
+                                const std::atomic<bool>* abort = nullptr);
+
+}  // namespace octopoint
