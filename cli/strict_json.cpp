@@ -18,8 +18,8 @@ nlohmann::json parseStrictJson(const std::string& text, const std::string& path,
                                std::string_view kind) {
   const std::size_t nul = text.find('\0');
   if (nul != std::string::npos) {
-    throw Error(displayPath(path) + ": a NUL byte at byte " + std::to_string(nul) +
-                       ": " + std::string(kind) + " is JSON text");
+    throw Error(displayPath(path) + ": a NUL byte at byte " + std::to_string(nul) + ": " +
+                std::string(kind) + " is JSON text");
   }
   struct Open {  // an object or list being read
     bool object = false;
@@ -39,18 +39,16 @@ nlohmann::json parseStrictJson(const std::string& text, const std::string& path,
       case json::parse_event_t::object_start:
       case json::parse_event_t::array_start:
         if (open.size() == kMaxNesting) {
-          throw Error(
-              displayPath(path) + ": objects and lists nested deeper than " +
-              std::to_string(kMaxNesting) + " levels" +
-              (where().empty() ? std::string() : " (key " + inQuotes(where()) + ")"));
+          throw Error(displayPath(path) + ": objects and lists nested deeper than " +
+                      std::to_string(kMaxNesting) + " levels" +
+                      (where().empty() ? std::string() : " (key " + inQuotes(where()) + ")"));
         }
         open.push_back({event == json::parse_event_t::object_start, {}, {}});
         break;
       case json::parse_event_t::key:
         open.back().key = parsed.get<std::string>();
         if (!open.back().keys.insert(open.back().key).second) {
-          throw Error(displayPath(path) + ": key " + inQuotes(where()) +
-                             ": given twice");
+          throw Error(displayPath(path) + ": key " + inQuotes(where()) + ": given twice");
         }
         break;
       case json::parse_event_t::object_end:
@@ -71,9 +69,8 @@ nlohmann::json parseStrictJson(const std::string& text, const std::string& path,
     const std::size_t cut = message.find("] ");
     if (cut != std::string::npos) message = message.substr(cut + 2);
     const std::string key = where();
-    throw Error(displayPath(path) +
-                       ": not valid JSON: " + printable(message, 160) +
-                       (key.empty() ? std::string() : " (key " + inQuotes(key) + ")"));
+    throw Error(displayPath(path) + ": not valid JSON: " + printable(message, 160) +
+                (key.empty() ? std::string() : " (key " + inQuotes(key) + ")"));
   }
 }
 

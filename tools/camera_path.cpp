@@ -33,8 +33,7 @@ PathKey readKey(const PathReader& reader, const json& item, std::size_t index, b
   const std::string where = "keys[" + std::to_string(index) + "]";
   reader.onlyKeys(item, where, {"time", "eye", "look"});
   if (!item.contains("eye")) reader.fail(where, "has no \"eye\"");
-  if (timed != item.contains("time"))
-    reader.fail(where, "give \"time\" in every key or in none");
+  if (timed != item.contains("time")) reader.fail(where, "give \"time\" in every key or in none");
   PathKey key;
   key.time = timed ? reader.number(item["time"], where + ".time", -kMaxTime, kMaxTime)
                    : static_cast<double>(index);
@@ -102,8 +101,8 @@ CameraPath parseCameraPath(const std::string& text, const std::string& path) {
 }
 
 CameraPath loadCameraPath(const std::string& path) {
-  return parseCameraPath(
-      cli::readInputFile(path, cli::InputKind{"camera path", kMaxPathFileBytes}), path);
+  return parseCameraPath(cli::readInputFile(path, cli::InputKind{"camera path", kMaxPathFileBytes}),
+                         path);
 }
 
 std::vector<PathPose> samplePath(const CameraPath& path, int frames) {
@@ -127,8 +126,9 @@ std::vector<PathPose> samplePath(const CameraPath& path, int frames) {
   }
   std::vector<PathPose> poses;
   for (int i = 0; i < frames; ++i) {
-    const double t = frames == 1 ? times.front()
-                                 : times.front() + (times.back() - times.front()) * i / (frames - 1);
+    const double t = frames == 1
+                         ? times.front()
+                         : times.front() + (times.back() - times.front()) * i / (frames - 1);
     std::array<double, 6> at{};
     for (std::size_t c = 0; c < at.size(); ++c) at[c] = hermite(times, values[c], t);
     poses.push_back({{at[0], at[1], at[2]}, {angleOf(at[3]), angleOf(at[4]), angleOf(at[5])}});

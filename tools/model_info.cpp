@@ -63,7 +63,8 @@ std::string chunkedInfo(const ProgressiveModel& model) {
   out += line("depth %d (base): %zu leaves\n", head.levels[0].depth, head.base_leaves.size());
   for (int level = 1; level < model.levelCount(); ++level) {
     unsigned long long leaves = 0;
-    for (std::uint32_t i = 0; i < model.chunkCount(level); ++i) leaves += model.record(level, i).points;
+    for (std::uint32_t i = 0; i < model.chunkCount(level); ++i)
+      leaves += model.record(level, i).points;
     out += line("depth %d: %llu leaves in %u chunks\n", model.levelDepth(level), leaves,
                 model.chunkCount(level));
   }

@@ -20,12 +20,11 @@ using V4Bytes = std::vector<std::uint8_t>;
 
 // The placement block: corner (-1.5, 2, 0.25) and edge 5000 scan units (binary64, little-endian),
 // a y-up scan, 7 reserved bytes.
-const V4Bytes kPlacementBlock = {
-    0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0xf8, 0xbf,  // -1.5
-    0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0x40,  // 2
-    0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0xd0, 0x3f,  // 0.25
-    0x00, 0x00, 0x00, 0x00, 0x00, 0x88, 0xb3, 0x40,  // 5000
-    0x01, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00};  // y-up, reserved
+const V4Bytes kPlacementBlock = {0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0xf8, 0xbf,   // -1.5
+                                 0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0x40,   // 2
+                                 0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0xd0, 0x3f,   // 0.25
+                                 0x00, 0x00, 0x00, 0x00, 0x00, 0x88, 0xb3, 0x40,   // 5000
+                                 0x01, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00};  // y-up, reserved
 
 // Depth 1, children 0 and 7 of the root, red and blue, a 5 km cube, placed by `placement`.
 V4Bytes placedCorners(const V4Bytes& placement) {
@@ -35,10 +34,10 @@ V4Bytes placedCorners(const V4Bytes& placement) {
                    0xff, 0x00, 0x00, 0x00, 0x00, 0xff};             // red, blue
   image.resize(788, 0);  // the rest of the palette; no normal palette
   image.insert(image.end(), placement.begin(), placement.end());  // at 788
-  const V4Bytes table_and_stream = {0x01, 0x00, 0x00, 0x00,  // depth 1, reserved
-                                    0x01, 0x00, 0x00, 0x00,  // 1 node byte
-                                    0x02, 0x00, 0x00, 0x00,  // 2 leaves
-                                    0x81, 0x00, 0x01};       // root, leaf colours
+  const V4Bytes table_and_stream = {0x01, 0x00, 0x00, 0x00,       // depth 1, reserved
+                                    0x01, 0x00, 0x00, 0x00,       // 1 node byte
+                                    0x02, 0x00, 0x00, 0x00,       // 2 leaves
+                                    0x81, 0x00, 0x01};            // root, leaf colours
   image.insert(image.end(), table_and_stream.begin(), table_and_stream.end());
   return image;
 }
@@ -80,9 +79,9 @@ TEST(GoldenFormatV4, EachPlacementRuleHasItsRefusal) {
   std::size_t offset = 0;
   // A NaN corner, an infinite one (exponent all ones), a negative edge, an infinite edge, unknown
   // axes, a reserved byte: each refused, at the block.
-  for (const V4Bytes& image : {broken({{7, 0x7f}}), broken({{14, 0xf0}, {15, 0xff}}),
-                               broken({{31, 0xc0}}), broken({{30, 0xf0}, {31, 0x7f}}),
-                               broken({{32, 2}}), broken({{39, 1}})}) {
+  for (const V4Bytes& image :
+       {broken({{7, 0x7f}}), broken({{14, 0xf0}, {15, 0xff}}), broken({{31, 0xc0}}),
+        broken({{30, 0xf0}, {31, 0x7f}}), broken({{32, 2}}), broken({{39, 1}})}) {
     EXPECT_EQ(v4Refusal(image, &offset), ModelError::kBadCubePlacement);
     EXPECT_EQ(offset, 788u);
   }
