@@ -30,7 +30,8 @@ struct Level {
 
 std::size_t headBytes(std::size_t palette_count, std::size_t levels, const PreparedLevel& base) {
   return chunked::kFixedHeaderBytes + 3 * palette_count + chunked::kLevelRowBytes * levels +
-         base.nodes.size() + base.leaves.size() + chunked::kHeadCrcBytes;
+         base.nodes.size() + base.leaves.size() + format::kCubePlacementBytes +
+         chunked::kHeadCrcBytes;
 }
 
 // What each coarse voxel becomes at the finer depth: its refinement's mask bytes (a single 0 when
@@ -235,6 +236,7 @@ std::vector<std::uint8_t> serializeLevels(const PreparedModel& model,
   }
   out.insert(out.end(), base_level.nodes.begin(), base_level.nodes.end());
   out.insert(out.end(), base_level.leaves.begin(), base_level.leaves.end());
+  putCubePlacement(out, model.cube);
   putU32(out, crc32(out));
   assert(out.size() == head_bytes);
   for (const std::vector<std::uint8_t>& table : records.tables)

@@ -1,5 +1,5 @@
 #pragma once
-// Writing a prepared model as a chunked file (format version 3, octopoint/progressive.h,
+// Writing a prepared model as a chunked file (format version 5, octopoint/progressive.h,
 // docs/format.md): `octopoint-prepare --chunked`. No PCL here, so tools and tests without the
 // scan loader can write chunked files too.
 

@@ -1,6 +1,7 @@
 #include "codegen/cube_fit.h"
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <cstdio>
 #include <limits>
@@ -43,6 +44,22 @@ std::uint64_t cubeEdgePicometres(const CubeFit& fit, double metres_per_scan_unit
                        " m; the model format records cube edges from 1 nm to 18,446 km");
   }
   return static_cast<std::uint64_t>(picometres);
+}
+
+CubePlacement cubePlacement(const CubeFit& fit, bool scan_axes_y_up) {
+  std::array<double, 3> corner = fit.origin;
+  if (scan_axes_y_up) {
+    corner[1] = -(fit.origin[1] + fit.edge);
+    corner[2] = -(fit.origin[2] + fit.edge);
+  }
+  CubePlacement cube;
+  for (std::size_t axis = 0; axis < 3; ++axis) {
+    // + 0.0 turns a corner of -0 into +0: the same place, one spelling.
+    cube.corner_bits[axis] = std::bit_cast<std::uint64_t>(corner[axis] + 0.0);
+  }
+  cube.edge_bits = std::bit_cast<std::uint64_t>(fit.edge);
+  cube.scan_axes = scan_axes_y_up ? format::kScanAxesYUp : format::kScanAxesYDown;
+  return cube;
 }
 
 }  // namespace octopoint::prepare

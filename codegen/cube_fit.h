@@ -10,6 +10,8 @@
 #include <span>
 #include <string>
 
+#include "octopoint/model.h"
+
 namespace octopoint::prepare {
 
 struct CubeFit {
@@ -57,6 +59,11 @@ inline constexpr double kMinCubeEdgeMetres = 1e-9;
 // so no scan is stored with a wrong size.
 std::uint64_t cubeEdgePicometres(const CubeFit& fit, double metres_per_scan_unit,
                                  const std::string& path);
+
+// The cube's placement as the model format records it (octopoint/model.h): `fit` is in the
+// model's axes; with `scan_axes_y_up` the scan's are those turned back (180 degrees about x), so
+// the corner recorded, the lowest in the scan's own axes, is (x0, -(y0 + edge), -(z0 + edge)).
+CubePlacement cubePlacement(const CubeFit& fit, bool scan_axes_y_up);
 
 // The voxel index along one axis at `depth`, in 0..2^depth - 1 (the far face of the cube belongs to
 // the last voxel). Every path of the preparer computes keys with exactly this expression; inline,

@@ -75,6 +75,7 @@ PreparedModel assembleModel(std::vector<EncodedLevel> levels, const CubeFit& fit
   model.name = options.name;
   model.source_description = options.source_description;
   model.cube_edge_pm = cubeEdgePicometres(fit, options.metres_per_scan_unit, path);
+  model.cube = cubePlacement(fit, options.axes == ScanAxes::kYUp);
   model.palette = palette.colours();
   model.sparse_depths_dropped = sparse_depths;
   for (EncodedLevel& encoded : levels) {

@@ -1,4 +1,4 @@
-// The `.oct` binary image of a prepared model, in the layout of octopoint/model.h.
+// The `.oct` binary image of a prepared model, in the layout of octopoint/model.h (version 4).
 #include <cassert>
 
 #include "codegen/byte_output.h"
@@ -13,14 +13,15 @@ std::vector<std::uint8_t> serializeModel(const PreparedModel& model) {
   assert(!model.palette.empty() && model.palette.size() <= format::kPaletteEntries);
   assert(model.normal_palette.size() <= format::kMaxNormals);
   const bool with_normals = !model.normal_palette.empty();
-  std::size_t size = format::v2::kNormalPaletteOffset + 6 * model.normal_palette.size();
+  std::size_t size = format::v2::kNormalPaletteOffset + 6 * model.normal_palette.size() +
+                     format::kCubePlacementBytes;
   for (const PreparedLevel& level : model.levels) {
     size += 12 + level.nodes.size() + level.leaves.size() + level.normals.size();
   }
   std::vector<std::uint8_t> out(format::kMagic, format::kMagic + sizeof format::kMagic);
   out.reserve(size);  // megabytes for a large model: no copy as it grows, on huge pages
   adviseHugePages(out.data() + out.size(), size - out.size());
-  putU16(out, format::kVersion2);
+  putU16(out, format::kVersion4);
   out.push_back(static_cast<std::uint8_t>(model.levels.size()));
   out.push_back(
       static_cast<std::uint8_t>((with_normals ? format::v2::kFlagNormals : 0) |
@@ -36,6 +37,7 @@ std::vector<std::uint8_t> serializeModel(const PreparedModel& model) {
   for (const auto& normal : model.normal_palette) {
     for (std::int16_t component : normal) putU16(out, static_cast<std::uint16_t>(component));
   }
+  putCubePlacement(out, model.cube);
   for (const PreparedLevel& level : model.levels) {
     assert(level.normals.size() == (with_normals ? level.leaves.size() : 0));
     out.push_back(static_cast<std::uint8_t>(level.depth));

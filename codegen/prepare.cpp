@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <array>
+#include <bit>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -204,6 +205,7 @@ PreparedModel prepareWithNormals(const Scan& full_scan, const std::string& scan_
   model.name = options.name;
   model.source_description = options.source_description;
   model.cube_edge_pm = cubeEdgePicometres(fit, options.metres_per_scan_unit, scan_path);
+  model.cube = cubePlacement(fit, options.axes == ScanAxes::kYUp);
   model.palette = palette.colours();
   model.sparse_depths_dropped = sparse_depths;
   model.synthetic_colour = scan.shading == ScanShading::kNone && !options.greyscale;
@@ -234,7 +236,17 @@ PreparedModel prepareModel(const Scan& full_scan, const std::string& scan_path,
   StreamOptions stream;
   stream.threads = threads;
   stream.memory_bytes = std::max<std::uint64_t>(kDefaultMemoryBytes, 64 * scan.positions.size());
-  return prepareFromSource(*memorySource(scan), scan_path, streamed, stream);
+  PreparedModel model = prepareFromSource(*memorySource(scan), scan_path, streamed, stream);
+  // The points were turned before the streamed preparer saw them: the placement it recorded is in
+  // the model's axes, the scan's are the ones asked for.
+  if (options.axes == ScanAxes::kYUp) {
+    CubeFit fit;
+    for (std::size_t axis = 0; axis < 3; ++axis)
+      fit.origin[axis] = std::bit_cast<double>(model.cube.corner_bits[axis]);
+    fit.edge = std::bit_cast<double>(model.cube.edge_bits);
+    model.cube = cubePlacement(fit, true);
+  }
+  return model;
 }
 
 }  // namespace octopoint::prepare

@@ -7,6 +7,8 @@
 #include <string>
 #include <vector>
 
+#include "octopoint/model.h"
+
 namespace octopoint::prepare {
 
 using Rgb8 = std::array<std::uint8_t, 3>;
@@ -26,6 +28,7 @@ struct PreparedModel {
   std::string name;                // a C++ identifier
   std::string source_description;  // where it came from, for the generated comments
   std::uint64_t cube_edge_pm = 0;  // the cube's edge in picometres (octopoint/model.h)
+  CubePlacement cube;              // where the cube lies in the scan (octopoint/model.h)
   std::vector<Rgb8> palette;       // 1..256 colours
   bool synthetic_colour = false;   // the scan had no colour: the palette is a depth shade
   // Unit vectors in Q1.14, 1..255 of them when the levels carry normals, else none.

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "cli/input_file.h"
+#include "cli/strict_json.h"
 #include "cli/text.h"
 #include "codegen/prepare_error.h"
 #include "codegen/scene_views.h"
@@ -21,23 +22,9 @@ using nlohmann::json;
 constexpr double kMaxZoom = 32767;
 constexpr int kMaxNeighbours = 100;
 
-class SceneReader {
+class SceneReader : public cli::JsonReader<PrepareError> {
  public:
-  explicit SceneReader(const std::string& path) : path_(cli::displayPath(path)) {}
-
-  [[noreturn]] void fail(const std::string& key, const std::string& what) const {
-    throw PrepareError(path_ + ": key " + cli::inQuotes(key) + ": " + what);
-  }
-
-  double number(const json& value, const std::string& key, double low, double high) const {
-    if (!value.is_number()) fail(key, "expected a number");
-    const double x = value.get<double>();
-    if (!(x >= low && x <= high)) {
-      fail(key,
-           cli::realText(x) + " is outside " + cli::realText(low) + ".." + cli::realText(high));
-    }
-    return x;
-  }
+  using JsonReader::JsonReader;
 
   int integer(const json& value, const std::string& key, int low, int high) const {
     if (!value.is_number_integer()) fail(key, "expected a whole number");
@@ -59,27 +46,12 @@ class SceneReader {
     return r;
   }
 
-  // Fails when `object` has a key outside `known`.
-  void onlyKeys(const json& object, const std::string& where,
-                std::initializer_list<const char*> known) const {
-    if (!object.is_object()) fail(where, "expected an object");
-    const std::set<std::string> allowed(known.begin(), known.end());
-    for (const auto& item : object.items()) {
-      if (!allowed.count(item.key())) {
-        fail(where.empty() ? item.key() : where + "." + item.key(), "unknown key");
-      }
-    }
-  }
-
   template <typename... Args>
   static std::string format(const char* pattern, Args... args) {
     char text[160];
     std::snprintf(text, sizeof text, pattern, args...);
     return text;
   }
-
- private:
-  std::string path_;
 };
 
 std::array<double, 3> point(const SceneReader& reader, const json& value, const std::string& key) {
@@ -128,72 +100,12 @@ void readViewpoints(const SceneReader& reader, const json& value, Scene& scene) 
   }
 }
 
-// How deep objects and lists may nest: a scene needs 3 ({"viewpoints": [{...}]}); the limit
-// keeps a file of a million '[' from costing a million nested values.
-constexpr std::size_t kMaxNesting = 8;
-
-// Parses the JSON text, naming in a failure the key whose value was being read: nlohmann's own
-// message says "number overflow parsing '1e400'" but not where. A key given twice in one object
-// (JSON leaves its meaning open, nlohmann keeps the last) and nesting past kMaxNesting are errors.
+// The scene's JSON, strictly (cli/strict_json.h): a scene nests 3 deep ({"viewpoints": [{...}]}).
 json parseJson(const std::string& text, const std::string& path) {
-  const std::size_t nul = text.find('\0');
-  if (nul != std::string::npos) {
-    throw PrepareError(cli::displayPath(path) + ": a NUL byte at byte " + std::to_string(nul) +
-                       ": a scene file is JSON text");
-  }
-  struct Open {  // an object or list being read
-    bool object = false;
-    std::string key;  // the object's key being read
-    std::set<std::string> keys;
-  };
-  std::vector<Open> open;
-  auto where = [&open] {
-    std::string keys;
-    for (const Open& level : open) {
-      if (level.object && !level.key.empty()) keys += (keys.empty() ? "" : ".") + level.key;
-    }
-    return keys;
-  };
-  const json::parser_callback_t track_keys = [&](int, json::parse_event_t event, json& parsed) {
-    switch (event) {
-      case json::parse_event_t::object_start:
-      case json::parse_event_t::array_start:
-        if (open.size() == kMaxNesting) {
-          throw PrepareError(
-              cli::displayPath(path) + ": objects and lists nested deeper than " +
-              std::to_string(kMaxNesting) + " levels" +
-              (where().empty() ? std::string() : " (key " + cli::inQuotes(where()) + ")"));
-        }
-        open.push_back({event == json::parse_event_t::object_start, {}, {}});
-        break;
-      case json::parse_event_t::key:
-        open.back().key = parsed.get<std::string>();
-        if (!open.back().keys.insert(open.back().key).second) {
-          throw PrepareError(cli::displayPath(path) + ": key " + cli::inQuotes(where()) +
-                             ": given twice");
-        }
-        break;
-      case json::parse_event_t::object_end:
-      case json::parse_event_t::array_end:
-        if (!open.empty()) open.pop_back();
-        break;
-      case json::parse_event_t::value:
-        break;
-    }
-    return true;
-  };
   try {
-    return json::parse(text, track_keys);
-  } catch (const json::exception& error) {
-    // nlohmann's message reads "[json.exception.parse_error.101] parse error at line L, column C:
-    // ...".
-    std::string message = error.what();
-    const std::size_t cut = message.find("] ");
-    if (cut != std::string::npos) message = message.substr(cut + 2);
-    const std::string key = where();
-    throw PrepareError(cli::displayPath(path) +
-                       ": not valid JSON: " + cli::printable(message, 160) +
-                       (key.empty() ? std::string() : " (key " + cli::inQuotes(key) + ")"));
+    return cli::parseStrictJson(text, path, "a scene file");
+  } catch (const cli::Error& error) {
+    throw PrepareError(error.what());
   }
 }
 

@@ -1,6 +1,7 @@
 // The C++ sources of a prepared model: const arrays that an app compiles in, so drawing the model
 // needs no file I/O. Bytes are written either as decimal initialiser lists or as string literals
 // (EmitStyle; docs/embedding.md compares their compile time and memory).
+#include <bit>
 #include <cstdio>
 #include <sstream>
 #include <string>
@@ -130,6 +131,24 @@ void appendNormalPalette(std::ostringstream& out, const PreparedModel& model) {
   out << "\n};\n";
 }
 
+// The cube's placement as an initialiser: the binary64 bit patterns (the model format's, exact),
+// then the numbers they are in a comment for the reader.
+std::string cubePlacementText(const CubePlacement& cube) {
+  char text[320];
+  const auto number = [](std::uint64_t bits) { return std::bit_cast<double>(bits); };
+  std::snprintf(text, sizeof text,
+                "    // where the cube lies in the scan: its lowest corner %.17g,%.17g,%.17g\n"
+                "    // and its edge %.17g, in the scan's units and axes\n"
+                "    {{0x%016llxu, 0x%016llxu, 0x%016llxu}, 0x%016llxu, %u},\n",
+                number(cube.corner_bits[0]), number(cube.corner_bits[1]),
+                number(cube.corner_bits[2]), number(cube.edge_bits),
+                static_cast<unsigned long long>(cube.corner_bits[0]),
+                static_cast<unsigned long long>(cube.corner_bits[1]),
+                static_cast<unsigned long long>(cube.corner_bits[2]),
+                static_cast<unsigned long long>(cube.edge_bits), unsigned{cube.scan_axes});
+  return text;
+}
+
 std::string descriptorSource(const PreparedModel& model, const EmitOptions& options) {
   std::ostringstream out;
   out << banner(model) << "#include \"" << model.name << ".h\"\n\n#include <cstdint>\n\n"
@@ -171,13 +190,14 @@ std::string descriptorSource(const PreparedModel& model, const EmitOptions& opti
   const unsigned flags = (with_normals ? format::v2::kFlagNormals : 0u) |
                          (model.synthetic_colour ? format::v2::kFlagSyntheticColour : 0u);
   // Field by field as in octopoint/model.h: name, format version, flags, cube edge (pm),
-  // palette count and colours, normal count and palette, levels.
+  // palette count and colours, normal count and palette, levels, the cube's placement.
   out << "};\n\n}  // namespace\n\n"
       << "extern const ::octopoint::EmbeddedModel " << model.name << " = {\n"
-      << "    \"" << model.name << "\", " << format::kVersion2 << ", " << flags << ", "
+      << "    \"" << model.name << "\", " << format::kVersion4 << ", " << flags << ", "
       << model.cube_edge_pm << "u, " << model.palette.size() << ", palette_, "
       << model.normal_palette.size() << ", " << (with_normals ? "normals_" : "nullptr") << ", "
-      << model.levels.size() << ", levels_};\n\n"
+      << model.levels.size() << ", levels_,\n"
+      << cubePlacementText(model.cube) << "};\n\n"
       << "}  // namespace octopoint::models\n";
   return out.str();
 }

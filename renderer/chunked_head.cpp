@@ -3,6 +3,7 @@
 #include "octopoint/model.h"
 #include "octopoint/progressive.h"
 #include "renderer/crc32.h"
+#include "renderer/cube_placement.h"
 #include "renderer/little_endian.h"
 
 namespace octopoint {
@@ -18,12 +19,17 @@ bool fail(ChunkedIssue* issue, ChunkedError error, std::uint64_t offset, int lev
   return false;
 }
 
-// The head size the fixed header implies: header, palette, level table, base, CRC.
+bool hasPlacement(const std::uint8_t* p) {
+  return readU16(p + off::kVersion) == chunked::kVersion5;
+}
+
+// The head size the fixed header implies: header, palette, level table, base, the cube's placement
+// (version 5), CRC.
 std::uint64_t impliedHeadBytes(const std::uint8_t* p) {
   return chunked::kFixedHeaderBytes + 3 * std::uint64_t{readU16(p + off::kPaletteCount)} +
          chunked::kLevelRowBytes * std::uint64_t{p[off::kLevelCount]} +
          readU32(p + off::kBaseNodeBytes) + readU32(p + off::kBaseLeafCount) +
-         chunked::kHeadCrcBytes;
+         (hasPlacement(p) ? format::kCubePlacementBytes : 0) + chunked::kHeadCrcBytes;
 }
 
 // Checks the level rows and fills head.levels; the base row first, then each chunked level against
@@ -90,8 +96,10 @@ bool readLevelRows(const std::uint8_t* p, ChunkedHead& head, ChunkedIssue* issue
 }  // namespace
 
 bool looksChunked(std::span<const std::uint8_t> bytes) {
-  return bytes.size() >= off::kVersion + 2 && std::memcmp(bytes.data(), format::kMagic, 4) == 0 &&
-         readU16(bytes.data() + off::kVersion) == chunked::kFormatVersion;
+  if (bytes.size() < off::kVersion + 2 || std::memcmp(bytes.data(), format::kMagic, 4) != 0)
+    return false;
+  const std::uint16_t version = readU16(bytes.data() + off::kVersion);
+  return version == chunked::kVersion3 || version == chunked::kVersion5;
 }
 
 std::optional<std::uint64_t> chunkedHeadBytes(std::span<const std::uint8_t> bytes,
@@ -104,7 +112,7 @@ std::optional<std::uint64_t> chunkedHeadBytes(std::span<const std::uint8_t> byte
   bool ok = true;
   if (std::memcmp(p, format::kMagic, sizeof format::kMagic) != 0) {
     ok = fail(issue, ChunkedError::kBadMagic, 0);
-  } else if (readU16(p + off::kVersion) != chunked::kFormatVersion) {
+  } else if (!looksChunked(bytes)) {
     ok = fail(issue, ChunkedError::kUnsupportedVersion, off::kVersion);
   } else if (p[off::kLevelCount] < 2 || p[off::kLevelCount] > chunked::kMaxChunkedLevels) {
     ok = fail(issue, ChunkedError::kBadLevelCount, off::kLevelCount);
@@ -140,7 +148,15 @@ std::optional<ChunkedHead> parseChunkedHead(std::span<const std::uint8_t> bytes,
     return std::nullopt;
   }
   ChunkedHead head;
+  head.format_version = readU16(p + off::kVersion);
   head.cube_edge_pm = readU64(p + off::kCubeEdge);
+  if (hasPlacement(p)) {
+    const std::size_t placement_at = crc_at - format::kCubePlacementBytes;
+    if (!readCubePlacement(p + placement_at, &head.cube)) {
+      fail(issue, ChunkedError::kBadCubePlacement, placement_at);
+      return std::nullopt;
+    }
+  }
   head.flags = p[off::kFlags];
   head.palette_count = readU16(p + off::kPaletteCount);
   std::memcpy(head.palette_rgb.data(), p + off::kPalette,
@@ -182,7 +198,7 @@ const char* describe(ChunkedError error) {
     case ChunkedError::kBadMagic:
       return "not an octopoint model (bad magic)";
     case ChunkedError::kUnsupportedVersion:
-      return "not a chunked model (format version is not 3)";
+      return "not a chunked model (format version is not 3 or 5)";
     case ChunkedError::kBadLevelCount:
       return "bad level count";
     case ChunkedError::kBadFlags:
@@ -243,6 +259,8 @@ const char* describe(ChunkedError error) {
       return "chunk leaf colour index outside the palette";
     case ChunkedError::kChunkDisagrees:
       return "chunk voxels disagree with the finer level's regions";
+    case ChunkedError::kBadCubePlacement:
+      return "cube placement not finite, edge not above 0, or unknown scan axes";
   }
   return "unknown error";
 }

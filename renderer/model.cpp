@@ -56,6 +56,8 @@ const char* describe(ModelError error) {
       return "normal palette entry is not a unit vector";
     case ModelError::kNormalOutsidePalette:
       return "leaf normal index outside the normal palette";
+    case ModelError::kBadCubePlacement:
+      return "cube placement not finite, edge not above 0, or unknown scan axes";
   }
   return "unknown error";
 }
@@ -274,7 +276,9 @@ std::size_t ModelView::readHeader(std::span<const std::uint8_t> bytes, ModelView
     case format::kVersion1:
       return readHeaderV1(bytes, view, issue);
     case format::kVersion2:
-      return readHeaderV2(bytes, view, issue);
+      return readHeaderV2(bytes, view, issue, false);
+    case format::kVersion4:
+      return readHeaderV2(bytes, view, issue, true);
     default:
       return model_bytes::refuse(issue, ModelError::kUnsupportedVersion, 4);
   }
@@ -315,8 +319,14 @@ std::optional<ModelView> ModelView::fromBytes(std::span<const std::uint8_t> byte
 }
 
 std::optional<ModelView> ModelView::fromEmbedded(const EmbeddedModel& model, ModelIssue* issue) {
-  if (model.format_version != format::kVersion2) {
+  if (model.format_version != format::kVersion2 && model.format_version != format::kVersion4) {
     fail(issue, ModelError::kUnsupportedVersion, 0);
+    return std::nullopt;
+  }
+  // Version 2 has no placement; version 4's must be one a file may hold.
+  if ((model.format_version == format::kVersion2 && model.cube.recorded()) ||
+      !validCubePlacement(model.cube)) {
+    fail(issue, ModelError::kBadCubePlacement, 0);
     return std::nullopt;
   }
   if ((model.flags & ~format::v2::kKnownFlags) != 0) {
@@ -341,6 +351,7 @@ std::optional<ModelView> ModelView::fromEmbedded(const EmbeddedModel& model, Mod
   ModelView view;
   view.format_version_ = model.format_version;
   view.cube_edge_pm_ = model.cube_edge_pm;
+  view.cube_ = model.cube;
   view.palette_count_ = model.palette_count;
   view.palette_rgb_ = model.palette_rgb;
   view.colour_is_synthetic_ = (model.flags & format::v2::kFlagSyntheticColour) != 0;

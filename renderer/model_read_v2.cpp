@@ -1,6 +1,8 @@
-// The header of a version 2 `.oct` file (octopoint/model.h): the validator of that version.
-// Version 2 widens the metric size to picometres in 64 bits and may carry normals.
+// The header of a version 2 or 4 `.oct` file (octopoint/model.h): the validator of those versions.
+// Version 2 widens the metric size to picometres in 64 bits and may carry normals; version 4 adds
+// the cube's placement in the scan after the normal palette.
 #include "octopoint/model.h"
+#include "renderer/cube_placement.h"
 #include "renderer/model_bytes.h"
 
 namespace octopoint {
@@ -10,12 +12,12 @@ using model_bytes::readU64;
 using model_bytes::refuse;
 
 std::size_t ModelView::readHeaderV2(std::span<const std::uint8_t> bytes, ModelView& view,
-                                    ModelIssue* issue) {
+                                    ModelIssue* issue, bool with_placement) {
   namespace v2 = format::v2;
   if (bytes.size() < v2::kFixedHeaderBytes)
     return refuse(issue, ModelError::kTruncatedHeader, bytes.size());
   const std::uint8_t* p = bytes.data();
-  view.format_version_ = format::kVersion2;
+  view.format_version_ = with_placement ? format::kVersion4 : format::kVersion2;
   view.level_count_ = p[6];
   if (view.level_count_ < 1 || view.level_count_ > format::kMaxLevels) {
     return refuse(issue, ModelError::kBadLevelCount, 6);
@@ -47,7 +49,13 @@ std::size_t ModelView::readHeaderV2(std::span<const std::uint8_t> bytes, ModelVi
   view.normal_count_ = normal_count;
   view.normal_bytes_ = normal_count > 0 ? p + v2::kNormalPaletteOffset : nullptr;
   if (!validateNormalPalette(view, issue, v2::kNormalPaletteOffset)) return 0;
-  return normals_end;
+  if (!with_placement) return normals_end;
+  const std::size_t placement_end = normals_end + format::kCubePlacementBytes;
+  if (bytes.size() < placement_end)
+    return refuse(issue, ModelError::kTruncatedHeader, bytes.size());
+  if (!readCubePlacement(p + normals_end, &view.cube_))
+    return refuse(issue, ModelError::kBadCubePlacement, normals_end);
+  return placement_end;
 }
 
 }  // namespace octopoint

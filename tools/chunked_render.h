@@ -1,5 +1,5 @@
 #pragma once
-// Drawing a chunked model (format version 3) in octopoint-render: read whole from a file, or
+// Drawing a chunked model (format version 3 or 5) in octopoint-render: read whole from a file, or
 // streamed from an HTTP URL (octopoint/http.h) for as long as the view needs or a byte budget
 // allows (`--url URL --bytes N`).
 

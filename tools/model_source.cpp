@@ -32,7 +32,7 @@ std::string chunkedIssueText(const ChunkedIssue& issue) {
 }
 
 // What a model file's first bytes must hold for its declared sizes to be checked: the largest
-// version 1 or 2 header with its level table (2,414 bytes), or a chunked file's fixed header.
+// version 1, 2 or 4 header with its level table (2,454 bytes), or a chunked file's fixed header.
 constexpr std::size_t kModelHeadProbe = 4096;
 
 // Refuses a file whose head (read into `bytes`, whole when the head says how long it is) declares
@@ -47,7 +47,7 @@ void checkDeclaredSize(cli::InputFile& file, std::vector<std::uint8_t>& bytes,
     return;
   }
   if (!accept_chunked)
-    throw ModelLoadError(label + ": a chunked model (format version 3) cannot be shown here");
+    throw ModelLoadError(label + ": a chunked model (format version 3 or 5) cannot be shown here");
   ChunkedIssue issue;
   const std::optional<std::uint64_t> head_bytes = chunkedHeadBytes(bytes, &issue);
   if (head_bytes && *head_bytes > file.size()) issue = {ChunkedError::kBadFileSize, file.size(), 0};
@@ -111,7 +111,7 @@ std::unique_ptr<LoadedModel> loadModel(const std::string& model_name, const std:
     if (looksChunked(loaded->file_bytes)) {
       if (!accept_chunked)
         throw ModelLoadError(loaded->label +
-                             ": a chunked model (format version 3) cannot be shown here");
+                             ": a chunked model (format version 3 or 5) cannot be shown here");
       ChunkedIssue chunked_issue;
       loaded->chunked = progressiveModelFromPrefix(loaded->file_bytes, &chunked_issue);
       if (chunked_issue.error == ChunkedError::kNone && loaded->chunked &&

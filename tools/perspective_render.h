@@ -1,15 +1,48 @@
 #pragma once
-// octopoint-render --perspective: the orbit camera of the orthographic view, seen in perspective
-// (docs/perspective.md).
+// octopoint-render's perspective views (docs/perspective.md, "Using it"): --perspective, the orbit
+// camera of the orthographic view seen in perspective; --eye/--look, an eye placed in the scan's
+// own units; --path/--frames, a camera path drawn to numbered PNGs and a video.
 
 #include <opencv2/core.hpp>
+#include <optional>
 #include <string>
 
+#include "cli/arguments.h"
 #include "octopoint/camera.h"
 #include "octopoint/model.h"
 #include "renderer/perspective.h"
+#include "tools/scan_eye.h"
 
 namespace octopoint {
+
+inline constexpr int kDefaultFieldOfViewDegrees = 60;
+
+struct PerspectiveOptions {
+  bool orbit = false;            // --perspective
+  std::optional<Angle> fov;      // --fov; none: kDefaultFieldOfViewDegrees (or the path's)
+  std::optional<ScanPoint> eye;  // --eye
+  std::optional<Look> look;      // --look
+  std::string path;              // --path
+  int frames = 0;                // --frames
+
+  bool any() const { return orbit || eye || !path.empty(); }
+  const char* mode() const { return orbit ? "--perspective" : eye ? "--eye" : "--path"; }
+};
+
+// Reads the option `args` is at into `options`: false when it is none of --perspective, --fov,
+// --eye, --look, --path and --frames.
+bool parsePerspectiveOption(cli::ArgumentReader& args, PerspectiveOptions& options);
+
+// What else the command line asked for, for the checks between the options.
+struct OtherOptions {
+  bool orbit_camera = false;  // --yaw, --pitch, --roll, --zoom or --pan given
+  bool url = false;
+  bool fill = false;
+  bool sheet = false;
+  bool style = false;  // a style other than colour
+};
+// Throws cli::Error, one line, for options that exclude or need each other.
+void checkPerspectiveOptions(const PerspectiveOptions& options, const OtherOptions& other);
 
 // orbitPerspective (renderer/perspective.h) for octopoint-render: throws cli::Error, one line,
 // when the camera is refused.
@@ -18,5 +51,23 @@ PerspectiveView orbitPerspectiveView(const Camera& camera, Angle fov);
 // Draws `level` of `model` with `view` on `background`, as BGR for OpenCV.
 cv::Mat renderPerspective(const ModelView& model, const LevelView& level,
                           const PerspectiveView& view, Rgb background);
+
+// What one run draws: the model and its label, the depth asked for and the level it chose (--depth,
+// or else depth auto's for the orthographic view; --eye and --path draw the finest unless --depth
+// says otherwise), the orthographic camera (its size, and for --perspective its turn, zoom and
+// pan), where to write and on what background.
+struct PerspectiveJob {
+  const ModelView* model = nullptr;
+  std::string label;
+  std::optional<int> depth;
+  const LevelView* chosen_level = nullptr;
+  Camera camera;
+  std::string output;
+  Rgb background;
+};
+
+// Draws and writes what `options` asks for, prints one line saying what; cli::Error, one line,
+// leaving no file, when it cannot.
+void runPerspective(const PerspectiveOptions& options, const PerspectiveJob& job);
 
 }  // namespace octopoint

@@ -4,7 +4,6 @@
 #include <cstdlib>
 #include <filesystem>
 #include <iostream>
-#include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 #include <optional>
 #include <string>
@@ -27,8 +26,10 @@
 #include "renderer/level_of_detail.h"
 #include "tools/chunked_render.h"
 #include "tools/contact_sheet.h"
+#include "tools/model_info.h"
 #include "tools/model_source.h"
 #include "tools/perspective_render.h"
+#include "tools/png_file.h"
 
 namespace {
 
@@ -38,6 +39,7 @@ using namespace octopoint;
 constexpr const char* kUsage =
     R"(usage: octopoint-render [--model NAME | --file M.oct | --url URL [--bytes N]] )"
     R"([options] -o OUT.png
+       octopoint-render [--model NAME | --file M.oct] --info
        octopoint-render --list
 
 Draws an octopoint model with the integer renderer and writes it as a PNG. With neither --model
@@ -69,7 +71,26 @@ nor --file nor --url it draws the default model embedded in this binary.
                      of the same zoom (so a narrow --fov converges to it); colour only, one
                      stored depth (--depth, or depth auto's), no --fill or --sheet yet
                      (docs/perspective.md)
-  --fov DEG          with --perspective: the vertical field of view, 10..120 (default 60)
+  --eye X,Y,Z        draw in perspective from an eye at X,Y,Z in the scan's own units and axes
+                     (the frame octopoint-prepare --crop takes; --info prints where the model's
+                     cube lies in it); anywhere within 128 cube edges of the cube's centre, inside
+                     the model too. The finest stored depth unless --depth says otherwise; colour
+                     only, no --fill, --sheet or --style yet; needs a model that records its
+                     cube's placement (prepared since format version 4)
+  --look YAW,PITCH[,ROLL]
+                     with --eye: where the eye looks, in degrees (default 0,0: the way the sensor
+                     looked, +z of a y-down scan, -z of a y-up one): yaw turns it right, pitch
+                     up, roll clockwise
+  --path PATH.json   draw a camera path (docs/perspective.md, "Camera paths": key frames of eye
+                     and look in the scan's units, interpolated smoothly; a file of at most
+                     1 MiB, at most 1000 keys) to numbered PNGs: -o OUT.png (or -o OUT) writes
+                     OUT_0000.png, OUT_0001.png, ... and, where OpenCV's Motion JPEG writer
+                     works, the video OUT.avi (25 frames a second). Every frame's camera is
+                     checked before anything is written; a path that fails leaves no file
+  --frames N         with --path: the number of frames, 1..3600, evenly spaced in time from the
+                     first key to the last; at most 2^30 pixels in all (N x W x H)
+  --fov DEG          with --perspective, --eye or --path: the vertical field of view, 10..120
+                     (default 60, or the path's "fov")
   --size WxH         framebuffer size in pixels, each side 1..8192 and at most 16777216 pixels
                      (4096x4096) in all (default 320x240)
   --depth N|auto     which of the model's depths to draw (default auto: depth by projected size,
@@ -98,6 +119,10 @@ nor --file nor --url it draws the default model embedded in this binary.
                      have at most 16777216 pixels
   -o, --output FILE  the PNG to write (written whole or not at all); if it exists it must be a
                      regular file (a device or FIFO is refused)
+  --info             print what the model holds instead of drawing it: file, format version,
+                     palette, normals, leaves and node bytes per depth, the cube's edge in metres,
+                     and the line `cube X0,Y0,Z0 EDGE`: the cube's lowest corner and edge in the
+                     scan's units and axes (the frame --crop and --eye take)
   --list             list the embedded models and the decoder variants
   -h, --help         show this help
 
@@ -112,8 +137,7 @@ Numbers are parsed whole and range-checked. On any error prints one line on stde
 with status 1, writing nothing.
 )";
 
-constexpr Rgb kBackground{236, 236, 240};
-constexpr int kDefaultPerspectiveFovDegrees = 60;  // light grey: range scans are often dark
+constexpr Rgb kBackground{236, 236, 240};  // light grey: range scans are often dark
 
 struct Options {
   ModelSourceOptions source;
@@ -123,11 +147,12 @@ struct Options {
   std::optional<int> depth;  // none: depth auto
   Variant variant = defaultVariant();
   bool list = false;
+  bool info = false;
+  bool orbit_camera = false;  // --yaw, --pitch, --roll, --zoom or --pan given
   bool fill = false;
   SplatMode splats = SplatMode::kBox;
   int sheet = 0;  // yaw angles of the contact sheet; 0: a single view
-  bool perspective = false;
-  std::optional<Angle> fov;  // with --perspective; none: kDefaultPerspectiveFovDegrees
+  PerspectiveOptions perspective;
   StyleOptions style;
 };
 
@@ -216,10 +241,6 @@ bool parseFetchOption(cli::ArgumentReader& args, UrlFetchOptions& fetch) {
   return true;
 }
 
-Angle fovOf(const Options& options) {
-  return options.fov.value_or(Angle::fromDegrees(kDefaultPerspectiveFovDegrees));
-}
-
 // The options that exclude or need each other.
 void checkCombination(const Options& options) {
   checkOneModelSource(options.source);
@@ -232,22 +253,25 @@ void checkCombination(const Options& options) {
     throw cli::Error("--style " + std::string(styleName(options.style.style)) +
                      ": --url draws a chunked model, in colour only (it stores no normals)");
   }
-  if (options.fov && !options.perspective) throw cli::Error("--fov needs --perspective");
-  if (options.perspective &&
-      (url || options.fill || options.sheet > 0 || options.style.style != Style::kColour)) {
+  checkPerspectiveOptions(options.perspective,
+                          {options.orbit_camera, url, options.fill, options.sheet > 0,
+                           options.style.style != Style::kColour});
+  if (options.info &&
+      (url || options.perspective.any() || options.sheet > 0 || !options.output.empty())) {
     throw cli::Error(
-        "--perspective draws a model file or an embedded model in colour: --url, --fill, --sheet "
-        "and --style do not apply yet");
+        "--info prints what a model file or an embedded model holds: give no -o, "
+        "--url, --sheet or perspective option");
   }
   if (options.splats == SplatMode::kSmooth &&
-      (url || options.fill || options.sheet > 0 || options.perspective ||
+      (url || options.fill || options.sheet > 0 || options.perspective.any() ||
        options.style.style != Style::kColour || !drawsSplats(options.variant))) {
     throw cli::Error(
         "--splats smooth draws a single orthographic view in colour with fixed_fast or "
-        "fixed_simd: --url, --fill, --sheet, --perspective, --style and other variants do not "
-        "apply yet");
+        "fixed_simd: --url, --fill, --sheet, --perspective, --eye, --path, --style and other "
+        "variants do not apply yet");
   }
-  if (!options.list && options.output.empty()) throw cli::Error("no output given: use -o OUT.png");
+  if (!options.list && !options.info && options.output.empty())
+    throw cli::Error("no output given: use -o OUT.png");
 }
 
 Options parseOptions(int argc, char** argv) {
@@ -257,13 +281,16 @@ Options parseOptions(int argc, char** argv) {
     if (args.is("-h") || args.is("--help")) {
       std::cout << kUsage;
       std::exit(0);
-    } else if (args.is("--list")) {
+    } else if (args.is("--list") || args.is("--info")) {
       args.noValue();
-      options.list = true;
+      (args.is("--list") ? options.list : options.info) = true;
     } else if (parseModelSourceOption(args, options.source) ||
-               parseFetchOption(args, options.fetch) || parseViewOption(args, options.camera) ||
+               parseFetchOption(args, options.fetch) ||
+               parsePerspectiveOption(args, options.perspective) ||
                parseStyleOption(args, options.style)) {
       continue;
+    } else if (parseViewOption(args, options.camera)) {
+      options.orbit_camera = options.orbit_camera || !args.is("--size");
     } else if (args.is("--depth")) {
       const std::string text = args.value();
       if (text == "auto") {
@@ -271,14 +298,6 @@ Options parseOptions(int argc, char** argv) {
       } else {
         options.depth = cli::parseInt(args.name(), text, 1, format::kMaxDepth);
       }
-    } else if (args.is("--perspective")) {
-      args.noValue();
-      options.perspective = true;
-    } else if (args.is("--fov")) {
-      options.fov = Angle::fromMilliDegrees(
-          std::llround(cli::parseReal(args.name(), args.value(), kMinFieldOfViewDegrees,
-                                      kMaxFieldOfViewDegrees) *
-                       1000));
     } else if (args.is("--variant")) {
       const std::string name = args.value();
       const std::optional<Variant> variant = variantFromName(name);
@@ -306,7 +325,11 @@ Options parseOptions(int argc, char** argv) {
   checkCombination(options);
   // The camera is known now: a perspective eye that cannot be placed is refused before any file is
   // read or checked.
-  if (options.perspective) static_cast<void>(orbitPerspectiveView(options.camera, fovOf(options)));
+  if (options.perspective.orbit) {
+    static_cast<void>(orbitPerspectiveView(
+        options.camera,
+        options.perspective.fov.value_or(Angle::fromDegrees(kDefaultFieldOfViewDegrees))));
+  }
   options.fetch.point_budget = options.source.point_budget;
   return options;
 }
@@ -325,19 +348,6 @@ void listModels() {
     std::printf("  %-20.*s %.*s\n", static_cast<int>(info.name.size()), info.name.data(),
                 static_cast<int>(info.summary.size()), info.summary.data());
   }
-}
-
-// Encoded in memory, then written whole or not at all (cli/output_file.h).
-void writePng(const std::string& path, const cv::Mat& image) {
-  std::vector<std::uint8_t> png;
-  bool encoded = false;
-  try {
-    encoded = cv::imencode(".png", image, png);
-  } catch (const cv::Exception&) {
-    encoded = false;
-  }
-  if (!encoded) throw cli::Error(cli::displayPath(path) + ": cannot encode the PNG");
-  cli::writeFileAtomically(path, {reinterpret_cast<const char*>(png.data()), png.size()});
 }
 
 // A model fetched by URL, drawn at the depth the view needs.
@@ -479,13 +489,10 @@ int renderFrame(const ModelView& model, const LevelView& level, FrameStyler& sty
   return 0;
 }
 
-int renderPerspectiveFrame(const ModelView& model, const LevelView& level,
+int renderPerspectiveViews(const ModelView& model, const LevelView& level,
                            const std::string& model_label, const Options& options) {
-  const PerspectiveView view = orbitPerspectiveView(options.camera, fovOf(options));
-  writePng(options.output, renderPerspective(model, level, view, kBackground));
-  std::printf("%s: depth %d%s, %zu points, perspective -> %s (%dx%d)\n", model_label.c_str(),
-              level.depth, options.depth ? "" : " (auto)", level.leaves.size(),
-              options.output.c_str(), options.camera.width, options.camera.height);
+  runPerspective(options.perspective, {&model, model_label, options.depth, &level, options.camera,
+                                       options.output, kBackground});
   return 0;
 }
 
@@ -498,8 +505,14 @@ int run(int argc, char** argv) {
   if (!options.source.url.empty()) return renderUrl(options);
   const std::unique_ptr<LoadedModel> loaded =
       loadModel(options.source.model_name, options.source.model_file, true);
-  if (loaded->chunked && options.perspective)
-    throw cli::Error(loaded->label + ": --perspective does not draw chunked models yet");
+  if (options.info) {
+    std::fputs(modelInfo(*loaded).c_str(), stdout);
+    return 0;
+  }
+  if (loaded->chunked && options.perspective.any()) {
+    throw cli::Error(loaded->label + ": " + options.perspective.mode() +
+                     " does not draw chunked models yet");
+  }
   if (loaded->chunked && options.style.style != Style::kColour) {
     throw cli::Error("--style " + std::string(styleName(options.style.style)) + ": " +
                      loaded->label +
@@ -517,10 +530,11 @@ int run(int argc, char** argv) {
   StyleOptions style = options.style;
   style.background = kBackground;
   setStyle(styler, style, model_label, options.variant);
+  // The perspective views check their camera, then the output (tools/perspective_render.h).
+  if (options.perspective.any()) return renderPerspectiveViews(model, level, model_label, options);
   cli::checkOutputFile(
       options.output);  // before drawing: a FIFO, a device or a directory is refused
   if (options.sheet > 0) return renderSheet(model, model_label, options, style);
-  if (options.perspective) return renderPerspectiveFrame(model, level, model_label, options);
   return renderFrame(model, level, styler, model_label, options);
 }
 

@@ -12,7 +12,11 @@
 
 // The octopoint model format: the layouts shared by the preparer that writes them, the `.oct`
 // reader and the validators (docs/format.md explains them). All integers are little-endian. The
-// preparer writes version 2; version 1 files stay readable.
+// preparer writes version 4; versions 1 and 2 stay readable.
+//
+// Version 4 (kVersion4): version 2 with the cube's placement (CubePlacement, below): the same
+// fields, and after the normal palette (at 788 + 6 N) format::kCubePlacementBytes bytes, then the
+// level table and the levels as in version 2.
 //
 // Version 2 (kVersion2):
 //   offset   size     field
@@ -47,7 +51,8 @@ namespace octopoint::format {
 inline constexpr char kMagic[4] = {'O', 'C', 'T', 'P'};
 inline constexpr std::uint16_t kVersion1 = 1;
 inline constexpr std::uint16_t kVersion2 = 2;
-inline constexpr std::uint16_t kFormatVersion = kVersion2;  // what the preparer writes
+inline constexpr std::uint16_t kVersion4 = 4;               // version 2 and the cube's placement
+inline constexpr std::uint16_t kFormatVersion = kVersion4;  // what the preparer writes
 
 inline constexpr int kMaxDepth = 16;  // 2^16 voxels per axis: far past any range scan's detail
 inline constexpr int kMaxLevels = 8;  // streams of one scan at different depths
@@ -79,7 +84,39 @@ inline constexpr std::size_t kNormalEntryBytes = 6;
 inline constexpr std::size_t kFixedHeaderBytes = 788;  // before the normal palette
 }  // namespace v2
 
+// The cube's placement block (versions 4 and 5; CubePlacement): f64 corner x, y, z, f64 edge,
+// u8 scan axes (kScanAxesYDown or kScanAxesYUp), 7 reserved bytes 0.
+inline constexpr std::size_t kCubePlacementBytes = 40;
+inline constexpr std::uint8_t kScanAxesYDown = 0;  // the scan's axes are the model's
+inline constexpr std::uint8_t kScanAxesYUp = 1;    // the model is the scan turned 180 deg about x
+
 }  // namespace octopoint::format
+
+namespace octopoint {
+
+// Where the model cube lies in the scan it was made from (format versions 4 and 5): its lowest
+// corner and its edge in the scan's own units and axes, the frame octopoint-prepare's --crop
+// takes, so that a user can relate a point of the scan to the model (octopoint-render --info,
+// --eye). Stored as the bit patterns of IEEE-754 binary64 numbers (little-endian u64s): exact for
+// any scan the preparer reads (LAS coordinates reach 10^7 and more), and carried by the integer
+// renderer without computing with them; a tool converts them (std::bit_cast). The model's axes
+// (x right, y down, z away) are the scan's, or with kScanAxesYUp the scan's turned 180 degrees
+// about x (model = (x, -y, -z) of the scan). Not recorded (versions 1 to 3, or a model made by
+// hand): every field 0.
+struct CubePlacement {
+  std::uint64_t corner_bits[3] = {0, 0, 0};  // binary64: the corner of the lowest x, y and z
+  std::uint64_t edge_bits = 0;               // binary64: the edge, > 0; 0 when not recorded
+  std::uint8_t scan_axes = format::kScanAxesYDown;
+
+  bool recorded() const { return edge_bits != 0; }
+  bool operator==(const CubePlacement&) const = default;
+};
+
+// Whether `cube` is one a file may hold: not recorded (all zero), or finite corner coordinates, an
+// edge above 0 and finite, and known axes. Integer tests of the bits only (no float arithmetic).
+[[nodiscard]] bool validCubePlacement(const CubePlacement& cube);
+
+}  // namespace octopoint
 
 // The shape of a model compiled into an app: plain aggregates of pointers to const arrays, so the
 // preparer's generated sources initialise them at compile time (no constructor runs, no file I/O).
@@ -99,8 +136,9 @@ struct EmbeddedLevel {
 
 struct EmbeddedModel {
   const char* name;
-  // The format version the generated arrays follow (format::kVersion2); a source generated for
-  // another layout fails to compile or is refused (kUnsupportedVersion).
+  // The format version the generated arrays follow (format::kVersion4, or kVersion2 for sources
+  // generated before the cube's placement); a source generated for another layout fails to
+  // compile or is refused (kUnsupportedVersion).
   std::uint16_t format_version;
   std::uint8_t flags;          // format::v2::kFlag*
   std::uint64_t cube_edge_pm;  // the model cube's edge in picometres; 0: not recorded
@@ -110,6 +148,9 @@ struct EmbeddedModel {
   const std::int16_t* normal_xyz;   // normal_count x (x, y, z) in Q1.14, or nullptr
   std::uint8_t level_count;
   const EmbeddedLevel* levels;  // depths strictly ascending
+  // Version 4: where the cube lies in the scan (octopoint/model.h); version 2 sources, which end
+  // before it, leave it unrecorded.
+  CubePlacement cube = {};
 };
 
 }  // namespace octopoint
@@ -201,6 +242,7 @@ enum class ModelError : std::uint8_t {
   kBadNormalCount,        // normals flagged without entries, entries without the flag, or > 255
   kBadNormalVector,       // a normal palette entry that is not a unit vector in Q1.14
   kNormalOutsidePalette,  // a leaf names a normal past the normal palette count
+  kBadCubePlacement,      // the cube's placement is not finite, its edge not above 0, or bad axes
 };
 
 // A short, stable English description of an error, for one-line messages.
@@ -243,12 +285,13 @@ struct NormalQ14 {
 
 class ModelView {
  public:
-  // Validates a model image in the format of model_format.h (a whole `.oct` file, version 1 or 2).
+  // Validates a model image in the format of model_format.h (a whole `.oct` file, version 1, 2
+  // or 4).
   // The view points into `bytes`, which must outlive it.
   [[nodiscard]] static std::optional<ModelView> fromBytes(std::span<const std::uint8_t> bytes,
                                                           ModelIssue* issue);
   // The checks of fromBytes that need no level data, for a reader that has only the image's first
-  // bytes (`head`: at least the header and the level table, at most 2,414 bytes; more are
+  // bytes (`head`: at least the header and the level table, at most 2,454 bytes; more are
   // ignored) and its size (`image_bytes`): the header; the level table's sizes adding up to
   // exactly `image_bytes`; each level's depth, and its sizes possible for a tree of that depth.
   // So a file whose header lies is refused before its body is read. False with the issue (as
@@ -262,6 +305,8 @@ class ModelView {
   int formatVersion() const { return format_version_; }
   // The model cube's edge in picometres (0: not recorded). Version 1 files stored micrometres.
   std::uint64_t cubeEdgePicometres() const { return cube_edge_pm_; }
+  // Where the cube lies in the scan (versions 4 and 5); not recorded in older models.
+  const CubePlacement& cubePlacement() const { return cube_; }
   int paletteCount() const { return palette_count_; }
   Rgb paletteColour(int index) const;
   // True when the scan had no colour and the palette is a shade the preparer made up (a depth
@@ -282,8 +327,9 @@ class ModelView {
   // checks its header and returns where the level table starts, or 0 after recording the issue.
   static std::size_t readHeaderV1(std::span<const std::uint8_t> bytes, ModelView& view,
                                   ModelIssue* issue);
+  // Versions 2 and 4 (`with_placement`: 4, whose placement block follows the normal palette).
   static std::size_t readHeaderV2(std::span<const std::uint8_t> bytes, ModelView& view,
-                                  ModelIssue* issue);
+                                  ModelIssue* issue, bool with_placement);
   // Magic and version, then the header of that version: where the level table starts, or 0.
   static std::size_t readHeader(std::span<const std::uint8_t> bytes, ModelView& view,
                                 ModelIssue* issue);
@@ -306,6 +352,7 @@ class ModelView {
 
   int format_version_ = 0;
   std::uint64_t cube_edge_pm_ = 0;
+  CubePlacement cube_{};
   int palette_count_ = 0;
   const std::uint8_t* palette_rgb_ = nullptr;  // format::kPaletteEntries x RGB888
   bool colour_is_synthetic_ = false;

@@ -58,7 +58,8 @@ enum class ChunkedError : std::uint8_t {
   kChunkTrailingBytes,       // mask bytes left after the last refinement
   kChunkLeafCountMismatch,   // the refinements have a different number of leaves than declared
   kChunkLeafOutsidePalette,  // a leaf names a colour past the palette count
-  kChunkDisagrees,  // the chunk's voxels do not match the regions the next level's table lists
+  kChunkDisagrees,    // the chunk's voxels do not match the regions the next level's table lists
+  kBadCubePlacement,  // version 5: the cube's placement is not one a file may hold
 };
 
 // A short, stable English description, for one-line messages.
@@ -93,7 +94,7 @@ struct ChunkedIssue {
 // Fixed header:
 //   offset size field
 //   0      4    magic "OCTP"
-//   4      2    format version, 3
+//   4      2    format version, 3 or 5 (5: version 3 with the cube's placement, below)
 //   6      1    level count L, 2..kMaxChunkedLevels
 //   7      1    flags, as in version 2: bit 1 synthetic colour (the scan had none: the palette is a
 //                depth shade); bit 0 (per-leaf normals: a normal palette after the colour palette
@@ -111,6 +112,8 @@ struct ChunkedIssue {
 //                u32 CRC-32 of the level's record table, u64 file offset of the level's first
 //                chunk. Row 0 is the base: region level, chunk count, CRC and offset 0.
 //   then        base node bytes, base leaf palette indices
+//   then   40   version 5 only: the cube's placement in the scan (format::kCubePlacementBytes,
+//                octopoint/model.h's CubePlacement); version 3 has none
 //   H - 4  4    CRC-32 of bytes [0, H - 4)
 //
 // Record (kRecordBytes), one per chunk:
@@ -134,7 +137,9 @@ struct ChunkedIssue {
 
 namespace octopoint::chunked {
 
-inline constexpr std::uint16_t kFormatVersion = 3;
+inline constexpr std::uint16_t kVersion3 = 3;
+inline constexpr std::uint16_t kVersion5 = 5;               // version 3 and the cube's placement
+inline constexpr std::uint16_t kFormatVersion = kVersion5;  // what the preparer writes
 inline constexpr int kMaxChunkedLevels = format::kMaxLevels + 1;  // the base and up to 8 depths
 inline constexpr int kMaxRegionLevel = 10;                        // 30-bit Morton codes
 inline constexpr std::size_t kFixedHeaderBytes = 40;
@@ -185,7 +190,9 @@ struct ChunkedLevel {
 };
 
 struct ChunkedHead {
+  int format_version = 0;          // chunked::kVersion3 or kVersion5
   std::uint64_t cube_edge_pm = 0;  // picometres; 0: not recorded
+  CubePlacement cube{};            // version 5; not recorded in version 3
   std::uint8_t flags = 0;          // chunked::kFlagSyntheticColour or 0
   int palette_count = 0;
   std::array<std::uint8_t, 3 * format::kPaletteEntries> palette_rgb{};  // zero past the count
@@ -200,8 +207,8 @@ struct ChunkedHead {
 // The largest head a reader accepts: a few kilobytes in files the preparer writes.
 inline constexpr std::uint64_t kMaxHeadBytes = std::uint64_t{1} << 24;
 
-// Whether `bytes` begin like a version 3 model (magic and version), so that a reader of both kinds
-// can tell them apart from the first 6 bytes.
+// Whether `bytes` begin like a chunked model, version 3 or 5 (magic and version), so that a reader
+// of both kinds can tell them apart from the first 6 bytes.
 [[nodiscard]] bool looksChunked(std::span<const std::uint8_t> bytes);
 
 // The head's size in bytes, read from the fixed header (the first chunked::kFixedHeaderBytes of

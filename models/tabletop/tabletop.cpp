@@ -108,6 +108,10 @@ const ::octopoint::EmbeddedLevel levels_[3] = {
 }  // namespace
 
 extern const ::octopoint::EmbeddedModel tabletop = {
-    "tabletop", 2, 1, 699998080730u, 256, palette_, 255, normals_, 3, levels_};
+    "tabletop", 4, 1, 699998080730u, 256, palette_, 255, normals_, 3, levels_,
+    // where the cube lies in the scan: its lowest corner -0.34999808669090271,-0.3279433399438858,-1.1494990587234497
+    // and its edge 0.69999808073043823, in the scan's units and axes
+    {{0xbfd6665e60000000u, 0xbfd4fd0610000000u, 0xbff2645920000000u}, 0x3fe6666260000000u, 1},
+};
 
 }  // namespace octopoint::models

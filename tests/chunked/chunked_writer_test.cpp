@@ -175,5 +175,28 @@ TEST(ChunkedReader, EveryPrefixReadsOrIsRefusedCleanly) {
   }
 }
 
+// Version 5: the cube's placement sits at the end of the head, before its CRC; the default
+// model's (a y-up scan) is read back as written, and a placement no file may hold is refused
+// even under a correct CRC.
+TEST(ChunkedWriter, TheHeadCarriesTheCubesPlacement) {
+  const prepare::PreparedModel prepared = fuzzing::preparedModel(*models::defaultModel(), {6, 7});
+  ASSERT_TRUE(prepared.cube.recorded());
+  Bytes image = prepare::serializeChunkedModel(prepared);
+  ChunkedIssue issue;
+  std::optional<ChunkedHead> head = parseChunkedHead(image, &issue);
+  ASSERT_TRUE(head) << describe(issue.error);
+  EXPECT_EQ(head->format_version, 5);
+  EXPECT_EQ(head->cube, prepared.cube);
+  const std::size_t placement_at = head->head_bytes - 4 - format::kCubePlacementBytes;
+  EXPECT_EQ(image[placement_at + 32], format::kScanAxesYUp);
+  image[placement_at + 7] = 0x7f;  // the corner's x: exponent all ones (the sign bit cleared)
+  image[placement_at + 6] = 0xf0;
+  octopoint::testing::reseal(image);
+  head = parseChunkedHead(image, &issue);
+  EXPECT_FALSE(head);
+  EXPECT_EQ(issue.error, ChunkedError::kBadCubePlacement);
+  EXPECT_EQ(issue.offset, placement_at);
+}
+
 }  // namespace
 }  // namespace octopoint

@@ -60,10 +60,12 @@ patchBytes() {  # patchBytes FILE OFFSET BYTES...: a copy of good.oct with bytes
   printf "$3" | dd of="$1" bs=1 seek="$2" conv=notrunc status=none
 }
 levelTable() {  # levelTable FILE: the offset of a .oct's level table (docs/format.md)
-  if [ "$(od -An -tu2 -j4 -N2 "$1" | tr -d ' ')" = 1 ]; then
+  local version
+  version=$(od -An -tu2 -j4 -N2 "$1" | tr -d ' ')
+  if [ "$version" = 1 ]; then
     echo 784
-  else  # version 2: 788 bytes, then 6 per normal palette entry
-    echo $((788 + 6 * $(od -An -tu2 -j18 -N2 "$1" | tr -d ' ')))
+  else  # version 2: 788 bytes, then 6 per normal palette entry; version 4: the cube's placement
+    echo $((788 + 6 * $(od -An -tu2 -j18 -N2 "$1" | tr -d ' ') + (version == 4 ? 40 : 0)))
   fi
 }
 patchBytes "$I1/huge_level.oct" $(($(levelTable "$IN/good.oct") + 4)) '\377\377\377\377'

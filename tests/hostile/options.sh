@@ -63,6 +63,22 @@ num fov_1e400 "--fov" "$RENDER" --perspective --fov 1e400 -o "$X_PNG"
 num fov_zero "--fov" "$RENDER" --perspective --fov 0 -o "$X_PNG"
 num fov_past_120 "--fov" "$RENDER" --perspective --fov 120.001 -o "$X_PNG"
 num perspective_eye_past_128_edges "128 cube edges" "$RENDER" --perspective --zoom 0.0001 -o "$X_PNG"
+num eye_nan "--eye" "$RENDER" --eye 0,nan,0 -o "$X_PNG"
+num eye_1e400 "--eye" "$RENDER" --eye 0,0,1e400 -o "$X_PNG"
+num eye_past_128_edges "the camera holds at most 128" "$RENDER" --eye 0,0,1e6 -o "$X_PNG"
+num look_junk "--look" "$RENDER" --eye 0,0,-0.5 --look 10,up -o "$X_PNG"
+printf '{"keys": [{"eye": [0, 0, -0.5]}, {"eye": [0, 0.1, -0.6]}]}\n' >"$I2/walk.json"
+num frames_huge "--frames" "$RENDER" --path "$I2/walk.json" --frames 1000000000000 -o "$X_PNG"
+num frames_too_many_pixels "at most 1073741824" "$RENDER" --path "$I2/walk.json" --frames 3600 --size 4096x4096 -o "$X_PNG"
+path_file() {  # path_file NAME EXPECTED JSON: a camera path that must be refused, leaving no frame
+  printf '%s\n' "$3" >"$I2/path_$1.json"
+  refuse 7 "path_$1" "$2" "$RENDER" --path "$I2/path_$1.json" --frames 4 -o "$X_PNG"
+}
+path_file bad_json "not valid JSON" '{"keys": [{"eye": [0, 0, -0.5]}'
+path_file overflow "not valid JSON" '{"keys": [{"eye": [0, 0, 1e400]}]}'
+path_file outside "frame 1" '{"keys": [{"eye": [0, 0, -0.5]}, {"eye": [0, 0, 1000]}]}'
+path_file time_nan "expected a number" '{"keys": [{"time": "NaN", "eye": [0, 0, -0.5]}]}'
+path_file many_keys "1 to 1000 keys" "{\"keys\": [$(awk 'BEGIN { for (i = 0; i < 1001; i++) printf "{\"eye\": [0, 0, -0.5]},"; }' | sed 's/,$//')]}"
 num size_negative "--size" "$RENDER" --size -320x240 -o "$X_PNG"
 num size_trailing "--size" "$RENDER" --size 320x240x1 -o "$X_PNG"
 num missing_value "--size" "$RENDER" -o "$X_PNG" --size

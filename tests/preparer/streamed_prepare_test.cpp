@@ -55,6 +55,7 @@ std::vector<std::uint8_t> referenceImage(const Scan& full_scan, const PrepareOpt
   PreparedModel model;
   model.name = options.name;
   model.cube_edge_pm = cubeEdgePicometres(fit, options.metres_per_scan_unit, "reference");
+  model.cube = cubePlacement(fit, options.axes == ScanAxes::kYUp);
   model.synthetic_colour = scan.shading == ScanShading::kNone && !options.greyscale;
   model.palette = palette.colours();
   for (const VoxelSet& set : sets) {

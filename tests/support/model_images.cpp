@@ -18,6 +18,7 @@ prepare::PreparedModel preparedShell(const EmbeddedModel& model) {
   prepare::PreparedModel prepared;
   prepared.name = model.name;
   prepared.cube_edge_pm = model.cube_edge_pm;
+  prepared.cube = model.cube;
   prepared.synthetic_colour = (model.flags & format::v2::kFlagSyntheticColour) != 0;
   for (int i = 0; i < model.palette_count; ++i) {
     const std::uint8_t* entry = model.palette_rgb + 3 * static_cast<std::size_t>(i);

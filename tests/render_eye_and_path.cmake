@@ -1,0 +1,99 @@
+# octopoint-render --info, --eye/--look and --path end to end (docs/perspective.md, "Using it"):
+# - --info prints the cube's placement (`cube X0,Y0,Z0 EDGE`) of a version 4 model, and says that a
+#   version 2 file (the same model with its placement cut out) has none; --eye refuses that file;
+# - an eye at the orbit camera's position and look, as --perspective prints them, draws the very
+#   frame --perspective draws;
+# - a path's first and last frames are the --eye frames of its first and last keys; its video is
+#   written; a path whose third frame cannot be written leaves no frame behind.
+# usage: cmake -DRENDER=... -DOUT=DIR -DMODEL_FILE=M.oct -DPATH_FILE=walk.json -P this
+file(REMOVE_RECURSE ${OUT})
+file(MAKE_DIRECTORY ${OUT})
+
+function(render_ok output_variable)
+  execute_process(COMMAND ${RENDER} ${ARGN} RESULT_VARIABLE status OUTPUT_VARIABLE out
+                  ERROR_VARIABLE err)
+  if(NOT status EQUAL 0)
+    message(FATAL_ERROR "octopoint-render ${ARGN} failed (${status}): ${err}")
+  endif()
+  set(${output_variable} "${out}" PARENT_SCOPE)
+endfunction()
+
+function(render_refused expected)
+  execute_process(COMMAND ${RENDER} ${ARGN} RESULT_VARIABLE status ERROR_VARIABLE err)
+  if(NOT status EQUAL 1 OR NOT err MATCHES "${expected}")
+    message(FATAL_ERROR "octopoint-render ${ARGN}: wanted exit 1 and '${expected}', got ${status}: ${err}")
+  endif()
+endfunction()
+
+function(same_files a b)
+  execute_process(COMMAND ${CMAKE_COMMAND} -E compare_files ${a} ${b} RESULT_VARIABLE differ)
+  if(differ)
+    message(FATAL_ERROR "${a} and ${b} differ")
+  endif()
+endfunction()
+
+set(number "-?[0-9.e+-]+")
+# --info: the embedded default model and a model file, version 4.
+foreach(source "--model;tabletop" "--file;${MODEL_FILE}")
+  render_ok(info ${source} --info)
+  if(NOT info MATCHES "format version 4" OR
+     NOT info MATCHES "\ncube ${number},${number},${number} ${number}\n" OR
+     NOT info MATCHES "depth [0-9]+: [0-9]+ leaves")
+    message(FATAL_ERROR "--info ${source} lacks the version, the cube or the depths:\n${info}")
+  endif()
+endforeach()
+
+# The same file as version 2: the 40-byte placement after the (empty) normal palette cut out.
+file(READ ${MODEL_FILE} normal_count OFFSET 18 LIMIT 2 HEX)
+if(NOT normal_count STREQUAL "0000")
+  message(FATAL_ERROR "${MODEL_FILE} has normals: the placement is not at byte 788")
+endif()
+execute_process(COMMAND sh -c "{ head -c 4 \"$0\"; printf '\\002\\000'; \
+                                 tail -c +7 \"$0\" | head -c 782; tail -c +829 \"$0\"; } >\"$1\""
+                        ${MODEL_FILE} ${OUT}/version2.oct RESULT_VARIABLE status)
+render_ok(info --file ${OUT}/version2.oct --info)
+if(NOT info MATCHES "format version 2" OR NOT info MATCHES "cube placement not recorded")
+  message(FATAL_ERROR "--info of a version 2 file:\n${info}")
+endif()
+render_refused("does not record" --file ${OUT}/version2.oct --eye 0,0,0 -o ${OUT}/v2.png)
+if(EXISTS ${OUT}/v2.png)
+  message(FATAL_ERROR "a refused --eye left ${OUT}/v2.png")
+endif()
+
+# The orbit camera's eye, printed by --perspective, drawn again by --eye: the same frame.
+set(view --size 160x120 --depth 7)
+render_ok(orbit ${view} --perspective --yaw 20 --pitch 10 --fov 50 -o ${OUT}/orbit.png)
+if(NOT orbit MATCHES "eye (${number},${number},${number}) looking (${number},${number},${number})")
+  message(FATAL_ERROR "--perspective did not print its eye: ${orbit}")
+endif()
+set(eye ${CMAKE_MATCH_1})
+set(look ${CMAKE_MATCH_2})
+render_ok(placed ${view} --eye ${eye} --look ${look} --fov 50 -o ${OUT}/eye.png)
+same_files(${OUT}/orbit.png ${OUT}/eye.png)
+
+# A path: 5 frames, the video, and its ends are its end keys' --eye frames.
+render_ok(walk --size 160x120 --path ${PATH_FILE} --frames 5 -o ${OUT}/walk.png)
+foreach(frame 0000 0001 0002 0003 0004)
+  if(NOT EXISTS ${OUT}/walk_${frame}.png)
+    message(FATAL_ERROR "--path wrote no ${OUT}/walk_${frame}.png: ${walk}")
+  endif()
+endforeach()
+if(EXISTS ${OUT}/walk_0005.png OR NOT EXISTS ${OUT}/walk.avi)
+  message(FATAL_ERROR "--path --frames 5: a sixth frame, or no video: ${walk}")
+endif()
+file(SIZE ${OUT}/walk.avi video_bytes)
+if(video_bytes LESS 10000)
+  message(FATAL_ERROR "${OUT}/walk.avi is only ${video_bytes} bytes")
+endif()
+render_ok(first --size 160x120 --fov 70 --eye 0.05,0.1,-0.45 --look -5,-20 -o ${OUT}/first.png)
+render_ok(last --size 160x120 --fov 70 --eye -0.12,0.06,-0.62 --look 15,-20 -o ${OUT}/last.png)
+same_files(${OUT}/walk_0000.png ${OUT}/first.png)
+same_files(${OUT}/walk_0004.png ${OUT}/last.png)
+
+# The third frame cannot be written (a directory is in its place): no frame and no video is left.
+file(MAKE_DIRECTORY ${OUT}/stuck/w_0002.png)
+render_refused("w_0002.png" --size 160x120 --path ${PATH_FILE} --frames 5 -o ${OUT}/stuck/w)
+file(GLOB left ${OUT}/stuck/w_000[0134].png ${OUT}/stuck/*.avi)
+if(left)
+  message(FATAL_ERROR "a path that failed left ${left}")
+endif()

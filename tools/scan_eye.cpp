@@ -1,0 +1,125 @@
+#include "tools/scan_eye.h"
+
+#include <bit>
+#include <cmath>
+#include <cstdio>
+
+#include "cli/error.h"
+#include "cli/real_numbers.h"
+#include "cli/text.h"
+
+namespace octopoint {
+namespace {
+
+// The pieces of a comma-separated list of `low`..`high` numbers; a cli::Error naming the format.
+std::vector<std::string_view> splitCommas(std::string_view option, std::string_view text,
+                                          std::size_t low, std::size_t high,
+                                          std::string_view format) {
+  std::vector<std::string_view> pieces;
+  std::size_t at = 0;
+  while (pieces.size() <= high) {
+    const std::size_t comma = text.find(',', at);
+    pieces.push_back(text.substr(at, comma == std::string_view::npos ? text.npos : comma - at));
+    if (comma == std::string_view::npos) break;
+    at = comma + 1;
+  }
+  if (pieces.size() < low || pieces.size() > high) {
+    throw cli::Error(std::string(option) + ": " + cli::inQuotes(text) + " is not " +
+                     std::string(format));
+  }
+  return pieces;
+}
+
+}  // namespace
+
+std::optional<ScanCube> scanCube(const CubePlacement& placement) {
+  if (!placement.recorded()) return std::nullopt;
+  ScanCube cube;
+  for (std::size_t axis = 0; axis < 3; ++axis)
+    cube.corner[axis] = std::bit_cast<double>(placement.corner_bits[axis]);
+  cube.edge = std::bit_cast<double>(placement.edge_bits);
+  cube.y_up = placement.scan_axes == format::kScanAxesYUp;
+  return cube;
+}
+
+ScanPoint parseScanPoint(std::string_view option, std::string_view text) {
+  const std::vector<std::string_view> pieces = splitCommas(option, text, 3, 3, "X,Y,Z");
+  ScanPoint point;
+  for (std::size_t axis = 0; axis < 3; ++axis)
+    point[axis] = cli::parseReal(option, pieces[axis], -kMaxEyeCoordinate, kMaxEyeCoordinate);
+  return point;
+}
+
+Look parseLook(std::string_view option, std::string_view text) {
+  const std::vector<std::string_view> pieces =
+      splitCommas(option, text, 2, 3, "YAW,PITCH or YAW,PITCH,ROLL in degrees");
+  Look look;
+  look.yaw = cli::parseDegrees(option, pieces[0]);
+  look.pitch = cli::parseDegrees(option, pieces[1]);
+  if (pieces.size() == 3) look.roll = cli::parseDegrees(option, pieces[2]);
+  return look;
+}
+
+ModelPoint modelPointOf(const ScanCube& cube, const ScanPoint& point, std::string_view option) {
+  std::array<double, 3> edges{};  // cube edges from the centre, in the model's axes
+  for (std::size_t axis = 0; axis < 3; ++axis)
+    edges[axis] = (point[axis] - cube.corner[axis]) / cube.edge - 0.5;
+  if (cube.y_up) edges = {edges[0], -edges[1], -edges[2]};
+  constexpr double kLimit = static_cast<double>(kMaxEyeDistance);
+  for (std::size_t axis = 0; axis < 3; ++axis) {
+    // Not `> kLimit`: a NaN (from an infinite edge ratio) is refused too.
+    if (!(std::fabs(edges[axis]) <= kLimit)) {
+      char text[320];
+      std::snprintf(text, sizeof text,
+                    ": the eye is %.3g cube edges from the model's centre along %c; the camera "
+                    "holds at most %d (the cube: %s %s)",
+                    std::fabs(edges[axis]), "xyz"[axis], static_cast<int>(kMaxEyeDistance),
+                    scanPointText(cube.corner).c_str(), cli::realText(cube.edge).c_str());
+      throw cli::Error(std::string(option) + text);
+    }
+  }
+  const auto unit = static_cast<double>(kPerspectiveUnit);
+  return {std::llround(edges[0] * unit), std::llround(edges[1] * unit),
+          std::llround(edges[2] * unit)};
+}
+
+ScanPoint scanPointOf(const ScanCube& cube, const ModelPoint& point) {
+  const auto unit = static_cast<double>(kPerspectiveUnit);
+  std::array<double, 3> edges = {static_cast<double>(point.x) / unit,
+                                 static_cast<double>(point.y) / unit,
+                                 static_cast<double>(point.z) / unit};
+  if (cube.y_up) edges = {edges[0], -edges[1], -edges[2]};
+  ScanPoint scan;
+  for (std::size_t axis = 0; axis < 3; ++axis)
+    scan[axis] = cube.corner[axis] + (edges[axis] + 0.5) * cube.edge;
+  return scan;
+}
+
+PerspectiveView scanEyeView(const ScanCube& cube, const ScanPoint& eye, const Look& look, Angle fov,
+                            int width, int height, std::string_view option) {
+  PerspectiveCamera camera;
+  camera.eye = modelPointOf(cube, eye, option);
+  camera.yaw = look.yaw;
+  camera.pitch = look.pitch;
+  camera.roll = look.roll;
+  camera.fov = fov;
+  camera.width = width;
+  camera.height = height;
+  PerspectiveView view;
+  if (const PerspectiveError error = buildPerspectiveView(camera, kDefaultFractionBits, &view);
+      error != PerspectiveError::kNone) {
+    throw cli::Error(std::string(option) + ": " + describe(error));
+  }
+  return view;
+}
+
+std::string scanPointText(const ScanPoint& point) {
+  return cli::realText(point[0]) + "," + cli::realText(point[1]) + "," + cli::realText(point[2]);
+}
+
+std::string degreesText(Angle angle) {
+  // 1/65536 turn is 0.0054931640625 degrees: a turns16 count times it is exact in a double.
+  return cli::realText(angle.turns16() * (360.0 / Angle::kUnitsPerTurn));
+}
+
+}  // namespace octopoint
