@@ -3,7 +3,7 @@
 #include <opencv2/imgproc.hpp>
 
 #include "cli/error.h"
-#include "renderer/perspective_walk.h"
+#include "renderer/perspective_renderer.h"
 
 namespace octopoint {
 
@@ -20,14 +20,15 @@ PerspectiveView orbitPerspectiveView(const Camera& camera, Angle fov) {
   return view;
 }
 
-cv::Mat renderPerspective(const ModelView& model, const LevelView& level,
-                          const PerspectiveView& view, Rgb background) {
+cv::Mat renderPerspective(const ModelView& model, int depth, const PerspectiveView& view,
+                          Rgb background, PerspectiveDrawStats* stats) {
   Framebuffer frame(view.camera.width, view.camera.height);
   frame.clear();
-  // A quarter pixel: with the rounding of the additions, every leaf within half a pixel.
-  const PerspectiveWalkTables tables =
-      perspectiveWalkTables(view, level.depth, std::int64_t{1} << (kDefaultFractionBits - 2));
-  static_cast<void>(drawPerspective(level, view, tables, frame));  // no abort flag: completes
+  PerspectiveRenderer renderer(model);
+  PerspectiveRenderer::Options options;
+  options.depth = depth;
+  // No abort flag: it completes; `depth` is a stored one (the caller chose it from the model).
+  static_cast<void>(renderer.draw(view, options, frame, stats));
   cv::Mat rgb(view.camera.height, view.camera.width, CV_8UC3);
   // The frame is sized to the camera: resolveToRgb cannot refuse it.
   static_cast<void>(resolveToRgb(frame, model, background, {rgb.data, rgb.total() * 3}));

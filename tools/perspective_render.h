@@ -8,6 +8,7 @@
 #include "octopoint/camera.h"
 #include "octopoint/model.h"
 #include "renderer/perspective.h"
+#include "renderer/perspective_walk.h"
 
 namespace octopoint {
 
@@ -15,8 +16,10 @@ namespace octopoint {
 // when the camera is refused.
 PerspectiveView orbitPerspectiveView(const Camera& camera, Angle fov);
 
-// Draws `level` of `model` with `view` on `background`, as BGR for OpenCV.
-cv::Mat renderPerspective(const ModelView& model, const LevelView& level,
-                          const PerspectiveView& view, Rgb background);
+// Draws `model` with `view` on `background`, as BGR for OpenCV: its stored `depth`, or with 0
+// each part at the depth its distance asks for (detail by distance); occlusion culling on.
+// `stats` (may be null) learns what was drawn.
+cv::Mat renderPerspective(const ModelView& model, int depth, const PerspectiveView& view,
+                          Rgb background, PerspectiveDrawStats* stats = nullptr);
 
 }  // namespace octopoint

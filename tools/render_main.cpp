@@ -65,9 +65,10 @@ nor --file nor --url it draws the default model embedded in this binary.
   --pan X,Y          move the picture X pixels right and Y down, each |.| <= 1e6 (default 0,0)
   --perspective      draw in perspective: the eye on the line of sight through the model's centre,
                      where the centre's depth is as large on screen as in the orthographic view
-                     of the same zoom (so a narrow --fov converges to it); colour only, one
-                     stored depth (--depth, or depth auto's), no --fill or --sheet yet
-                     (docs/perspective.md)
+                     of the same zoom (so a narrow --fov converges to it); colour only, no
+                     --fill or --sheet yet. --depth auto (the default) draws each part at the
+                     depth its distance asks for (detail by distance), --depth N that depth
+                     alone; parts hidden behind nearer ones are culled (docs/perspective.md)
   --fov DEG          with --perspective: the vertical field of view, 10..120 (default 60)
   --size WxH         framebuffer size in pixels, each side 1..8192 and at most 16777216 pixels
                      (4096x4096) in all (default 320x240)
@@ -446,10 +447,14 @@ int renderFrame(const LevelView& level, FrameStyler& styler, const std::string& 
 int renderPerspectiveFrame(const ModelView& model, const LevelView& level,
                            const std::string& model_label, const Options& options) {
   const PerspectiveView view = orbitPerspectiveView(options.camera, fovOf(options));
-  writePng(options.output, renderPerspective(model, level, view, kBackground));
-  std::printf("%s: depth %d%s, %zu points, perspective -> %s (%dx%d)\n", model_label.c_str(),
-              level.depth, options.depth ? "" : " (auto)", level.leaves.size(),
-              options.output.c_str(), options.camera.width, options.camera.height);
+  PerspectiveDrawStats stats;
+  writePng(options.output,
+           renderPerspective(model, options.depth ? level.depth : 0, view, kBackground, &stats));
+  std::printf(
+      "%s: %s, %llu points drawn, perspective -> %s (%dx%d)\n", model_label.c_str(),
+      options.depth ? ("depth " + std::to_string(level.depth)).c_str() : "depth by distance (auto)",
+      static_cast<unsigned long long>(stats.leaves), options.output.c_str(), options.camera.width,
+      options.camera.height);
   return 0;
 }
 
