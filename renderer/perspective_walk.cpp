@@ -113,16 +113,44 @@ PixelSpan pixelSpan(std::int64_t p, std::int64_t half, int fraction_bits, std::i
 // pixels are two additions and shifts from its position, without clipping.
 class PerspectivePlot {
  public:
-  PerspectivePlot(const LevelView& level, FrameView& frame, int fraction_bits, std::int64_t padding)
+  PerspectivePlot(const LevelView& level, FrameView& frame, int fraction_bits, std::int64_t padding,
+                  OcclusionTiles* occlusion = nullptr)
       : colours_(level.leaves.data()),
         pixels_(frame.pixelData()),
         row_stride_(static_cast<std::size_t>(frame.width())),
         width_(frame.width()),
         height_(frame.height()),
         fraction_bits_(fraction_bits),
-        padding_(padding) {}
+        padding_(padding),
+        occlusion_(occlusion) {}
+
+  // Occlusion culling (with tiles): whether every pixel the subtree's leaves could write already
+  // holds a nearer word than any of them would (then none of them changes the frame).
+  bool hidden(const AffineSubtree& subtree) {
+    const std::int64_t nearest = subtree.centre.z - subtree.reach_z;  // Q.24, every leaf's z >= it
+    if (nearest < 0) return false;
+    const PixelBox box = pixelsOf(subtree);
+    // A leaf's key is min(z >> shift, kMaxDepthKey); its word is at least that key's with palette
+    // index 0.
+    const std::uint32_t word =
+        FrameView::pack(static_cast<std::uint32_t>(std::min<std::int64_t>(
+                            nearest >> kPerspectiveDepthShift, FrameView::kMaxDepthKey)),
+                        0);
+    // Wholly off the screen, it writes nothing (the frustum test let it through by its margin).
+    if (box.empty() || occlusion_->hidden(box.x0, box.x1, box.y0, box.y1, word)) {
+      ++hidden_subtrees_;
+      return true;
+    }
+    return false;
+  }
+  // The subtree's leaves may have written their pixels.
+  void drawn(const AffineSubtree& subtree) {
+    const PixelBox box = pixelsOf(subtree);
+    if (!box.empty()) occlusion_->touched(box.x0, box.x1, box.y0, box.y1);
+  }
 
   void enterAffine(const AffineSubtree& subtree) {
+    in_affine_ = true;
     const std::int64_t one = std::int64_t{1} << fraction_bits_, mid = one >> 1;
     const std::int64_t half_x = subtree.half_x + padding_, half_y = subtree.half_y + padding_;
     // pixelSpan's bounds with this half extent: [(p + low) >> F, (p + high) >> F].
@@ -144,11 +172,12 @@ class PerspectivePlot {
     // spans of two and three pixels mix).
     corners_ = unchecked_ && high_x_ - low_x_ < one && high_y_ - low_y_ < one;
   }
-  void leaveAffine() { unchecked_ = corners_ = false; }
+  void leaveAffine() { unchecked_ = corners_ = in_affine_ = false; }
 
   // Inlined into the walk's leaf loop: a call per leaf, its leaf passed through memory, was a
   // fifth of a frame's instructions (callgrind).
   __attribute__((always_inline)) void operator()(const PerspectiveLeaf& leaf) {
+    ++leaves_;
     if (unchecked_) {
       const std::uint32_t word = FrameView::pack(
           static_cast<std::uint32_t>(leaf.z >> kPerspectiveDepthShift), colours_[leaf.index]);
@@ -172,9 +201,39 @@ class PerspectivePlot {
         std::min<std::int64_t>(leaf.z >> kPerspectiveDepthShift, FrameView::kMaxDepthKey));
     fill(columns.first, columns.last, rows.first, rows.last,
          FrameView::pack(key, colours_[leaf.index]));
+    if (occlusion_ != nullptr && !in_affine_) {
+      occlusion_->touched(
+          static_cast<std::int32_t>(columns.first), static_cast<std::int32_t>(columns.last),
+          static_cast<std::int32_t>(rows.first), static_cast<std::int32_t>(rows.last));
+    }
   }
 
+  std::uint64_t leaves() const { return leaves_; }
+  std::uint64_t hiddenSubtrees() const { return hidden_subtrees_; }
+
  private:
+  struct PixelBox {
+    std::int32_t x0, x1, y0, y1;  // inclusive, on the screen
+    bool empty() const { return x0 > x1 || y0 > y1; }
+  };
+  // The pixels a subtree's leaves may write: they lie within its reaches of its centre, and each
+  // writes the pixels within its half extent and the padding of its position, or its own pixel;
+  // a pixel more each way is room for the rounding. Clipped to the screen.
+  PixelBox pixelsOf(const AffineSubtree& subtree) const {
+    const auto f = static_cast<int>(fraction_bits_);
+    const std::int64_t reach_x = subtree.reach_x + subtree.half_x + padding_;
+    const std::int64_t reach_y = subtree.reach_y + subtree.half_y + padding_;
+    // Clamped to [0, size] and [-1, size - 1]: empty where it lies wholly off the screen.
+    const auto low = [f](std::int64_t v, std::int32_t size) {
+      return static_cast<std::int32_t>(std::clamp<std::int64_t>((v >> f) - 1, 0, size));
+    };
+    const auto high = [f](std::int64_t v, std::int32_t size) {
+      return static_cast<std::int32_t>(std::clamp<std::int64_t>((v >> f) + 1, -1, size - 1));
+    };
+    return {low(subtree.centre.x - reach_x, width_), high(subtree.centre.x + reach_x, width_),
+            low(subtree.centre.y - reach_y, height_), high(subtree.centre.y + reach_y, height_)};
+  }
+
   // Columns [first_x, last_x] of rows [first_y, last_y], on the screen: the nearer word wins,
   // branch-free (which one is nearer is a coin toss where splats overlap). Splats of up to 2 x 2
   // pixels, most of them where a voxel is about a pixel, write their four corners, and up to 3 x 3
@@ -229,19 +288,57 @@ class PerspectivePlot {
   bool unchecked_ = false;
   bool corners_ = false;  // unchecked_, and no span of the subtree wider than 2 x 2 pixels
   std::int64_t low_x_ = 0, high_x_ = 0, low_y_ = 0, high_y_ = 0;
+  OcclusionTiles* occlusion_;
+  bool in_affine_ = false;  // inside enterAffine .. leaveAffine: the walk marks its tiles
+  std::uint64_t leaves_ = 0;
+  std::uint64_t hidden_subtrees_ = 0;
 };
+
+// How far a leaf may lie from its exact position (the affine map's error, the additions'
+// rounding): its neighbour may lie as far the other way, so each widens its splat by that much.
+std::int64_t splatPadding(const PerspectiveWalkTables& tables) {
+  return tables.max_error + tables.depth + 1;
+}
 
 }  // namespace
 
 bool drawPerspective(const LevelView& level, const PerspectiveView& view,
                      const PerspectiveWalkTables& tables, FrameView& frame,
                      const std::atomic<bool>* abort) {
-  // How far a leaf may lie from its exact position (the affine map's error, the additions'
-  // rounding): its neighbour may lie as far the other way, so each widens its splat by that much.
-  const std::int64_t padding = tables.max_error + tables.depth + 1;
-  PerspectivePlot plot(level, frame, view.fraction_bits, padding);
+  PerspectivePlot plot(level, frame, view.fraction_bits, splatPadding(tables));
   PerspectiveWalk<PerspectivePlot> walk(level, view, tables, plot, abort);
   return walk.run();
+}
+
+bool drawPerspectiveLayers(std::span<const PerspectiveLayer> layers,
+                           const PerspectiveDetail* detail, const PerspectiveView& view,
+                           FrameView& frame, OcclusionTiles* occlusion, PerspectiveDrawStats* stats,
+                           const std::atomic<bool>* abort) {
+  assert(!layers.empty() &&
+         (layers.size() == 1 ||
+          (detail != nullptr && detail->count == static_cast<int>(layers.size()))));
+  assert(occlusion == nullptr ||
+         (occlusion->width() == frame.width() && occlusion->height() == frame.height()));
+  bool complete = true;
+  // The finest depth's parts first: they are the nearest, and hide most of what lies behind.
+  for (std::size_t i = layers.size(); i-- > 0 && complete;) {
+    const PerspectiveLayer& layer = layers[i];
+    PerspectiveWalkParts parts;
+    parts.index = layer.index;
+    parts.cull = occlusion != nullptr;
+    if (layers.size() > 1) {
+      parts.detail = {detail, static_cast<int>(i), i == 0 ? -1 : layers[i - 1].level->depth};
+    }
+    PerspectivePlot plot(*layer.level, frame, view.fraction_bits, splatPadding(*layer.tables),
+                         occlusion);
+    PerspectiveWalk<PerspectivePlot> walk(*layer.level, view, *layer.tables, plot, abort, parts);
+    complete = walk.run();
+    if (stats != nullptr) {
+      stats->leaves += plot.leaves();
+      stats->hidden_subtrees += plot.hiddenSubtrees();
+    }
+  }
+  return complete;
 }
 
 }  // namespace octopoint

@@ -3,18 +3,26 @@
 // the rotation keeps every step an addition; a subtree wholly outside the frustum or behind the
 // near plane is passed over; a subtree whose affine map is within `max_error` of the projection
 // (affineErrorBound) is drawn from that map with per-level screen vectors, additions only, as the
-// orthographic decoders do; a leaf reached before any such subtree is projected exactly.
+// orthographic decoders do; a leaf reached before any such subtree is projected exactly. With its
+// optional parts (PerspectiveWalkParts) it visits the upper levels nearest first through an upper
+// tree index, draws only the parts of the frame detail by distance gives its depth, and passes
+// over subtrees the sink finds hidden (occlusion culling).
 
 #include <array>
 #include <atomic>
 #include <cstddef>
 #include <cstdint>
+#include <optional>
+#include <span>
 
 #include "octopoint/camera.h"
 #include "octopoint/framebuffer.h"
 #include "octopoint/model.h"
 #include "renderer/bit_scan.h"
+#include "renderer/occlusion_tiles.h"
 #include "renderer/perspective.h"
+#include "renderer/perspective_detail.h"
+#include "renderer/upper_tree_index.h"
 
 namespace octopoint {
 
@@ -83,54 +91,149 @@ struct PerspectiveWalkTables {
 PerspectiveWalkTables perspectiveWalkTables(const PerspectiveView& view, int depth,
                                             std::int64_t max_error);
 
+// What a walk may use besides its level's stream, each optional.
+struct PerspectiveWalkParts {
+  // Random access to the stream's upper levels: above its bottom the walk visits a node's children
+  // nearest the eye first (so that occlusion culling finds the near surfaces drawn first) and
+  // passes over a subtree without reading its bytes.
+  const UpperTreeIndex* index = nullptr;
+  // Detail by distance: this walk draws only the parts of the frame its depth is chosen for
+  // (DetailPass::detail null: all of it).
+  DetailPass detail;
+  // Occlusion culling: the sink has hidden(const AffineSubtree&) and drawn(const AffineSubtree&);
+  // subtrees drawn from an affine map, and their leaves' grandparents, are asked whether they
+  // are hidden before they are drawn, and say where they drew.
+  bool cull = false;
+};
+
 // Calls sink(const PerspectiveLeaf&) for every leaf in front of the near plane whose subtree
-// meets the frustum, in stream order. Returns false when `abort` was set (checked per subtree).
+// meets the frustum (and that parts.detail gives this depth), in stream order below the index's
+// bottom and nearest first above it. Returns false when `abort` was set (checked per subtree).
+// With parts.cull, a subtree the sink finds hidden (none of its leaves would change the frame) is
+// passed over.
 template <typename Sink>
 class PerspectiveWalk {
  public:
   PerspectiveWalk(const LevelView& level, const PerspectiveView& view,
                   const PerspectiveWalkTables& tables, Sink& sink,
-                  const std::atomic<bool>* abort = nullptr)
-      : view_(view), tables_(tables), sink_(sink), abort_(abort), node_(level.nodes.data()) {}
+                  const std::atomic<bool>* abort = nullptr, const PerspectiveWalkParts& parts = {})
+      : view_(view),
+        tables_(tables),
+        sink_(sink),
+        abort_(abort),
+        parts_(parts),
+        nodes_(level.nodes.data()),
+        node_(level.nodes.data()) {}
 
   bool run() {
     // The root's centre is the model's origin.
-    visit(0, toCameraSpace(view_, ModelPoint{0, 0, 0}));
+    const CameraPoint root = toCameraSpace(view_, ModelPoint{0, 0, 0});
+    if (parts_.index != nullptr && parts_.index->bottom >= 0) {
+      visitIndexed(0, 0, root, ModelPoint{0, 0, 0}, parts_.detail.start());
+    } else {
+      visit(0, root, parts_.detail.start());
+    }
     return !aborted_;
   }
 
  private:
-  void visit(int level, const CameraPoint& centre) {
+  // A sink that can take part in occlusion culling.
+  static constexpr bool kSinkCulls = requires(Sink & sink, const AffineSubtree& subtree) {
+    sink.hidden(subtree);
+    sink.drawn(subtree);
+  };
+
+  enum class Step : std::uint8_t { kPass, kAffine, kDescend };
+
+  // What to do at an inner node: pass over it (aborted, outside the frustum, or drawn by another
+  // depth), draw it from its affine map (`affine`), or descend.
+  Step judge(int level, const CameraPoint& centre, DetailState& state,
+             std::optional<AffineProjection>& affine) {
+    if (abort_ != nullptr && abort_->load(std::memory_order_relaxed)) aborted_ = true;
+    const std::int64_t reach = tables_.reach[static_cast<std::size_t>(level)];
+    if (aborted_ || outsideFrustum(centre, reach)) return Step::kPass;
+    if (!state.committed && parts_.detail.node(level, centre.z, state) == DetailVerdict::kOthers) {
+      return Step::kPass;
+    }
+    if (state.committed && centre.z >= tables_.affine_depth[static_cast<std::size_t>(level)] &&
+        centre.z - reach >= view_.camera.near) {
+      affine = affineAt(view_, centre);
+      if (affine) return Step::kAffine;
+    }
+    return Step::kDescend;
+  }
+
+  // A node in stream order, its mask byte at node_.
+  void visit(int level, const CameraPoint& centre, DetailState state) {
     if (level == tables_.depth) {
-      if (const std::optional<ScreenPoint> p = project(view_, centre)) {
-        const std::optional<AffineProjection> affine = affineAt(view_, centre);
-        const Point3<std::int64_t> half =
-            affine ? voxelHalfExtent(cubeShadow(*affine), tables_.depth) : Point3<std::int64_t>{};
-        sink_(PerspectiveLeaf{leaf_, p->x, p->y, p->z, half.x, half.y});
+      if (state.committed || parts_.detail.drawsLeaf(level, centre.z, state)) {
+        if (const std::optional<ScreenPoint> p = project(view_, centre)) {
+          const std::optional<AffineProjection> affine = affineAt(view_, centre);
+          const Point3<std::int64_t> half =
+              affine ? voxelHalfExtent(cubeShadow(*affine), tables_.depth) : Point3<std::int64_t>{};
+          sink_(PerspectiveLeaf{leaf_, p->x, p->y, p->z, half.x, half.y});
+        }
       }
       ++leaf_;
       return;
     }
-    if (abort_ != nullptr && abort_->load(std::memory_order_relaxed)) aborted_ = true;
     const std::uint8_t mask = *node_++;
-    const std::int64_t reach = tables_.reach[static_cast<std::size_t>(level)];
-    if (aborted_ || outsideFrustum(centre, reach)) {
-      skipChildren(level, mask);
-      return;
-    }
-    if (centre.z >= tables_.affine_depth[static_cast<std::size_t>(level)] &&
-        centre.z - reach >= view_.camera.near) {
-      if (const std::optional<AffineProjection> affine = affineAt(view_, centre)) {
-        drawAffine(level, mask, *affine);
+    std::optional<AffineProjection> affine;
+    switch (judge(level, centre, state, affine)) {
+      case Step::kPass:
+        skipChildren(level, mask);
         return;
-      }
+      case Step::kAffine:
+        if (!drawAffine(level, mask, *affine)) skipChildren(level, mask);
+        return;
+      case Step::kDescend:
+        break;
     }
     const auto& offsets = tables_.child_offset[static_cast<std::size_t>(level)];
     for (unsigned k = 0; k < 8; ++k) {
       if (mask & (1u << k)) {
         const CameraPoint& o = offsets[k];
-        visit(level + 1, {centre.x + o.x, centre.y + o.y, centre.z + o.z});
+        visit(level + 1, {centre.x + o.x, centre.y + o.y, centre.z + o.z}, state);
       }
+    }
+  }
+
+  // A node above the index's bottom, by its index entry: its children nearest the eye first.
+  // Children k and j are ordered by the planes through their parent's centre: k is nearer than j
+  // where it lies on the eye's side of every plane that parts them, so visiting them in the order
+  // eye_octant ^ 0, ^ 1, ..., ^ 7 puts every child before those it may hide.
+  void visitIndexed(int level, std::uint32_t entry, const CameraPoint& centre,
+                    const ModelPoint& model_centre, DetailState state) {
+    const UpperTreeNode& node = parts_.index->entries[entry];
+    if (level == parts_.index->bottom) {
+      node_ = nodes_ + node.node;
+      leaf_ = node.leaf;
+      visit(level, centre, state);
+      return;
+    }
+    const unsigned mask = nodes_[node.node];
+    std::optional<AffineProjection> affine;
+    switch (judge(level, centre, state, affine)) {
+      case Step::kPass:
+        return;
+      case Step::kAffine:
+        node_ = nodes_ + node.node + 1;
+        leaf_ = node.leaf;
+        static_cast<void>(drawAffine(level, static_cast<std::uint8_t>(mask), *affine, &node,
+                                     model_centre));  // hidden: nothing to read past
+        return;
+      case Step::kDescend:
+        break;
+    }
+    const unsigned eye_octant = eyeOctant(model_centre);
+    const auto& offsets = tables_.child_offset[static_cast<std::size_t>(level)];
+    for (unsigned order = 0; order < 8; ++order) {
+      const unsigned k = eye_octant ^ order;
+      if (!(mask & (1u << k))) continue;
+      const CameraPoint& o = offsets[k];
+      visitIndexed(level + 1, childEntry(node, mask, k),
+                   {centre.x + o.x, centre.y + o.y, centre.z + o.z},
+                   childCentre(model_centre, level, k), state);
     }
   }
 
@@ -164,8 +267,24 @@ class PerspectiveWalk {
   // centre: per level m below, eight screen vectors, each the sum of the map's three axis vectors
   // with the child's signs times 2^-(m+2) (a child of a node of level m lies 2^-(m+2) cube edges
   // from it along each axis), rounded once; child 7 - k is child k mirrored (every sign flipped),
-  // so four are made and four negated. No division.
-  void drawAffine(int level, std::uint8_t mask, const AffineProjection& affine) {
+  // so four are made and four negated. No division. False, with nothing drawn and none of its
+  // bytes read, where the sink finds the subtree hidden. With `indexed` (the node's index entry,
+  // above the index's bottom, and its model-space centre) the subtree's upper levels are visited
+  // nearest first through the index; every leaf is the same sum of the same vectors either way.
+  bool drawAffine(int level, std::uint8_t mask, const AffineProjection& affine,
+                  const UpperTreeNode* indexed = nullptr, const ModelPoint& model_centre = {}) {
+    // The map's voxel is the size at the centre's depth; nearer voxels of the subtree are larger,
+    // by up to z / (z - reach) (growth_q16): widened by that much, the subtree's splats leave no
+    // crack.
+    shadow_ = cubeShadow(affine);
+    const Point3<std::int64_t> half = voxelHalfExtent(shadow_, tables_.depth);
+    const std::int64_t growth_q16 = tables_.growth_q16[static_cast<std::size_t>(level)];
+    half_ = {(half.x * growth_q16 >> 16) + 1, (half.y * growth_q16 >> 16) + 1, 0};
+    const AffineSubtree subtree =
+        affineSubtree(level, {affine.centre.x, affine.centre.y, affine.centre.z});
+    if constexpr (kSinkCulls) {
+      if (parts_.cull && sink_.hidden(subtree)) return false;
+    }
     const auto& a = affine.axis;
     // Children 0 to 3 (x's sign -): -a0 -+ a1 -+ a2.
     const Point3<std::int64_t> down = sub(neg(a[0]), a[1]), up = add(neg(a[0]), a[1]);
@@ -174,37 +293,55 @@ class PerspectiveWalk {
     for (int m = level; m < tables_.depth; ++m) {
       // roundShiftRight, with the half added once per level (the sums are far below 2^62).
       const int shift = m + 2;
-      const std::int64_t half = std::int64_t{1} << (shift - 1);
+      const std::int64_t round = std::int64_t{1} << (shift - 1);
       auto& offsets = screen_offset_[static_cast<std::size_t>(m)];
       for (unsigned k = 0; k < 4; ++k) {
-        const std::int64_t x = (sums[k].x + half) >> shift, y = (sums[k].y + half) >> shift,
-                           z = (sums[k].z + half) >> shift;
+        const std::int64_t x = (sums[k].x + round) >> shift, y = (sums[k].y + round) >> shift,
+                           z = (sums[k].z + round) >> shift;
         offsets[k] = {x, y, z};
         offsets[7 - k] = {-x, -y, -z};
       }
     }
-    // The map's voxel is the size at the centre's depth; nearer voxels of the subtree are larger,
-    // by up to z / (z - reach) (growth_q16): widened by that much, the subtree's splats leave no
-    // crack.
-    const Point3<std::int64_t> shadow = cubeShadow(affine);
-    const Point3<std::int64_t> half = voxelHalfExtent(shadow, tables_.depth);
-    const std::int64_t growth_q16 = tables_.growth_q16[static_cast<std::size_t>(level)];
-    half_ = {(half.x * growth_q16 >> 16) + 1, (half.y * growth_q16 >> 16) + 1, 0};
-    const Point3<std::int64_t> centre{affine.centre.x, affine.centre.y, affine.centre.z};
-    if constexpr (requires { sink_.enterAffine(AffineSubtree{}); }) {
-      // Every leaf of the subtree lies within the sum of the levels' largest vectors of its
-      // centre: the cube's shadow over 2^(m+2) for m from `level`, each rounded (half a unit,
-      // counted as one).
-      const std::int64_t levels = tables_.depth - level;
-      sink_.enterAffine(AffineSubtree{centre, (shadow.x >> (level + 1)) + levels,
-                                      (shadow.y >> (level + 1)) + levels,
-                                      (shadow.z >> (level + 1)) + levels, half_.x, half_.y});
+    if constexpr (requires { sink_.enterAffine(subtree); }) sink_.enterAffine(subtree);
+    if constexpr (kSinkCulls) {
+      if (parts_.cull) {
+        affine_level_ = level;
+        if (indexed != nullptr) {
+          visitAffineIndexed(level, *indexed, subtree.centre, model_centre);
+        } else {
+          visitAffine<true>(level, mask, subtree.centre);
+        }
+        // A subtree below the grandparents' level has no grandparent that says where it drew.
+        if (level + 2 > tables_.depth) sink_.drawn(subtree);
+      } else {
+        visitAffine<false>(level, mask, subtree.centre);
+      }
+    } else {
+      static_cast<void>(model_centre);
+      visitAffine<false>(level, mask, subtree.centre);
     }
-    visitAffine(level, mask, centre);
     if constexpr (requires { sink_.leaveAffine(); }) sink_.leaveAffine();
+    return true;
   }
+
+  // Where the leaves of a node of `level` at screen position `p` inside the subtree being drawn
+  // from its map lie, and their splats: within the sum of the levels' largest vectors of p, the
+  // cube's shadow over 2^(m+2) for m from `level`, each rounded (half a unit, counted as one).
+  AffineSubtree affineSubtree(int level, const Point3<std::int64_t>& p) const {
+    const std::int64_t levels = tables_.depth - level;
+    return {p,
+            (shadow_.x >> (level + 1)) + levels,
+            (shadow_.y >> (level + 1)) + levels,
+            (shadow_.z >> (level + 1)) + levels,
+            half_.x,
+            half_.y};
+  }
+
   // A node of a subtree drawn from its affine map, at `p`, its children `mask`: set-bit
   // iteration over them, and a leaf parent hands its leaves over in one loop (no call per leaf).
+  // kCull: each leaves' grandparent (below the subtree's root) is first asked whether it is
+  // hidden, and says where it drew.
+  template <bool kCull>
   void visitAffine(int level, unsigned mask, const Point3<std::int64_t>& p) {
     const auto& offsets = screen_offset_[static_cast<std::size_t>(level)];
     if (level + 1 == tables_.depth) {
@@ -214,10 +351,64 @@ class PerspectiveWalk {
       }
       return;
     }
+    if constexpr (kCull) {
+      if (level + 2 == tables_.depth) {
+        const AffineSubtree node = affineSubtree(level, p);
+        if (level != affine_level_ && sink_.hidden(node)) {
+          skipChildren(level, static_cast<std::uint8_t>(mask));
+          return;
+        }
+        for (unsigned bits = mask; bits != 0; bits &= bits - 1) {
+          const unsigned child_mask = *node_++;
+          visitAffine<kCull>(level + 1, child_mask, add(p, offsets[lowestChild(bits)]));
+        }
+        sink_.drawn(node);
+        return;
+      }
+    }
     for (unsigned bits = mask; bits != 0; bits &= bits - 1) {
       const unsigned child_mask = *node_++;
-      visitAffine(level + 1, child_mask, add(p, offsets[lowestChild(bits)]));
+      visitAffine<kCull>(level + 1, child_mask, add(p, offsets[lowestChild(bits)]));
     }
+  }
+
+  // A node of a subtree drawn from its affine map, above the index's bottom: asked whether it is
+  // hidden (below the subtree's root), then its children nearest the eye first (as
+  // visitIndexed), down to the bottom, from where the stream is read in order.
+  void visitAffineIndexed(int level, const UpperTreeNode& node, const Point3<std::int64_t>& p,
+                          const ModelPoint& model_centre) {
+    if (level != affine_level_ && sink_.hidden(affineSubtree(level, p))) return;
+    const unsigned mask = nodes_[node.node];
+    if (level == parts_.index->bottom) {
+      node_ = nodes_ + node.node + 1;
+      leaf_ = node.leaf;
+      visitAffine<true>(level, mask, p);
+      return;
+    }
+    const unsigned eye_octant = eyeOctant(model_centre);
+    const auto& offsets = screen_offset_[static_cast<std::size_t>(level)];
+    for (unsigned order = 0; order < 8; ++order) {
+      const unsigned k = eye_octant ^ order;
+      if (!(mask & (1u << k))) continue;
+      visitAffineIndexed(level + 1, parts_.index->entries[childEntry(node, mask, k)],
+                         add(p, offsets[k]), childCentre(model_centre, level, k));
+    }
+  }
+
+  // Which side of the planes through a node's centre (model space) the eye is on: bit 2 x, 1 y,
+  // 0 z, as the child numbers.
+  unsigned eyeOctant(const ModelPoint& centre) const {
+    const ModelPoint& eye = view_.camera.eye;
+    return (eye.x >= centre.x ? 4u : 0u) | (eye.y >= centre.y ? 2u : 0u) |
+           (eye.z >= centre.z ? 1u : 0u);
+  }
+  static std::uint32_t childEntry(const UpperTreeNode& node, unsigned mask, unsigned k) {
+    return node.first_child + static_cast<std::uint32_t>(childCount(mask & ((1u << k) - 1)));
+  }
+  static ModelPoint childCentre(const ModelPoint& centre, int level, unsigned k) {
+    const std::int64_t step = kPerspectiveUnit >> (level + 2);  // Q.24: a child's offset per axis
+    return {centre.x + ((k & 4) ? step : -step), centre.y + ((k & 2) ? step : -step),
+            centre.z + ((k & 1) ? step : -step)};
   }
   static Point3<std::int64_t> add(const Point3<std::int64_t>& a, const Point3<std::int64_t>& b) {
     return {a.x + b.x, a.y + b.y, a.z + b.z};
@@ -231,12 +422,16 @@ class PerspectiveWalk {
   const PerspectiveWalkTables& tables_;
   Sink& sink_;
   const std::atomic<bool>* abort_;
+  PerspectiveWalkParts parts_;
+  const std::uint8_t* nodes_;  // the level's node stream
   const std::uint8_t* node_;
   std::size_t leaf_ = 0;
   bool aborted_ = false;
   // The screen vectors of the subtree drawn from its affine map: Q(32-F).F, depth in Q.24.
   std::array<std::array<Point3<std::int64_t>, 8>, kMaxRenderDepth> screen_offset_{};
   Point3<std::int64_t> half_{};  // voxelHalfExtent of that subtree, widened for its nearest voxels
+  Point3<std::int64_t> shadow_{};  // its map's cube shadow (cubeShadow)
+  int affine_level_ = 0;           // its root's level
 };
 
 }  // namespace octopoint
@@ -254,5 +449,30 @@ inline constexpr int kPerspectiveDepthShift = 10;
 bool drawPerspective(const LevelView& level, const PerspectiveView& view,
                      const PerspectiveWalkTables& tables, FrameView& frame,
                      const std::atomic<bool>* abort = nullptr);
+
+// One stored depth a frame may draw: its stream, its walk's tables for the frame, and its upper
+// tree index (may be null: stream order, and no subtree passed over unread).
+struct PerspectiveLayer {
+  const LevelView* level = nullptr;
+  const PerspectiveWalkTables* tables = nullptr;
+  const UpperTreeIndex* index = nullptr;
+};
+
+// What a frame drew, for the benchmark and the tests.
+struct PerspectiveDrawStats {
+  std::uint64_t leaves = 0;           // handed to the plot (each writes its splat)
+  std::uint64_t hidden_subtrees = 0;  // passed over by occlusion culling
+};
+
+// Draws a frame into `frame` (cleared by the caller) from `layers` (ascending depths): with one
+// layer all of it from that depth, as drawPerspective; with several, each part of the frame from
+// the depth `detail` (made for the layers' depths) chooses for it, the finest's parts first (they
+// are the nearest). With `occlusion` (tiles of this frame, reset by the caller after the clear)
+// subtrees behind what is drawn are passed over: the same frame, bit for bit. `stats` may be
+// null. False when aborted.
+bool drawPerspectiveLayers(std::span<const PerspectiveLayer> layers,
+                           const PerspectiveDetail* detail, const PerspectiveView& view,
+                           FrameView& frame, OcclusionTiles* occlusion, PerspectiveDrawStats* stats,
+                           const std::atomic<bool>* abort = nullptr);
 
 }  // namespace octopoint

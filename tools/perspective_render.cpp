@@ -12,7 +12,7 @@
 #include "cli/output_file.h"
 #include "cli/real_numbers.h"
 #include "cli/text.h"
-#include "renderer/perspective_walk.h"
+#include "renderer/perspective_renderer.h"
 #include "tools/camera_path.h"
 #include "tools/png_file.h"
 
@@ -25,13 +25,9 @@ Angle degreesToAngle(double degrees) {
   return Angle::fromMilliDegrees(std::llround(degrees * 1000));
 }
 
-// The level to draw: the one --depth named (or --perspective's depth auto), else, for an eye in
-// the scan, the finest (one depth for the whole frame until detail by distance: near the eye the
-// finest is what a voxel of the screen needs).
-const LevelView& levelToDraw(const PerspectiveOptions& options, const PerspectiveJob& job) {
-  if (job.depth || options.orbit) return *job.chosen_level;
-  return job.model->finestLevel();
-}
+// The stored depth --depth named, or 0: each part of the frame at the depth its own distance asks
+// for (detail by distance, renderer/perspective_renderer.h).
+int depthToDraw(const PerspectiveJob& job) { return job.depth ? job.chosen_level->depth : 0; }
 
 // The cube's placement, which an eye in the scan's units needs.
 ScanCube requireCube(const PerspectiveJob& job, const char* option) {
@@ -49,17 +45,18 @@ std::string lookText(Angle yaw, Angle pitch, Angle roll) {
   return degreesText(yaw) + "," + degreesText(pitch) + "," + degreesText(roll);
 }
 
-std::string depthText(const PerspectiveJob& job, const LevelView& level, const char* chosen) {
-  return "depth " + std::to_string(level.depth) + (job.depth ? "" : chosen) + ", " +
-         std::to_string(level.leaves.size()) + " points";
+std::string depthText(const PerspectiveJob& job, const PerspectiveDrawStats& stats) {
+  return (job.depth ? "depth " + std::to_string(job.chosen_level->depth)
+                    : std::string("depth by distance (auto)")) +
+         ", " + std::to_string(stats.leaves) + " points drawn";
 }
 
 void drawOrbit(const PerspectiveOptions& options, const PerspectiveJob& job) {
-  const LevelView& level = levelToDraw(options, job);
   const PerspectiveView view = orbitPerspectiveView(
       job.camera, options.fov.value_or(Angle::fromDegrees(kDefaultFieldOfViewDegrees)));
   cli::checkOutputFile(job.output);
-  writePng(job.output, renderPerspective(*job.model, level, view, job.background));
+  PerspectiveDrawStats stats;
+  writePng(job.output, renderPerspective(*job.model, depthToDraw(job), view, job.background, &stats));
   // Where the eye is in the scan, so that --eye can take the view from here.
   std::string eye;
   if (const std::optional<ScanCube> cube = scanCube(job.model->cubePlacement())) {
@@ -67,22 +64,22 @@ void drawOrbit(const PerspectiveOptions& options, const PerspectiveJob& job) {
           lookText(view.camera.yaw, view.camera.pitch, view.camera.roll);
   }
   std::printf("%s: %s, perspective%s -> %s (%dx%d)\n", job.label.c_str(),
-              depthText(job, level, " (auto)").c_str(), eye.c_str(), job.output.c_str(),
+              depthText(job, stats).c_str(), eye.c_str(), job.output.c_str(),
               job.camera.width, job.camera.height);
 }
 
 void drawEye(const PerspectiveOptions& options, const PerspectiveJob& job) {
   const ScanCube cube = requireCube(job, "--eye");
-  const LevelView& level = levelToDraw(options, job);
   const Look look = options.look.value_or(Look{});
   const PerspectiveView view =
       scanEyeView(cube, *options.eye, look,
                   options.fov.value_or(Angle::fromDegrees(kDefaultFieldOfViewDegrees)),
                   job.camera.width, job.camera.height, "--eye");
   cli::checkOutputFile(job.output);
-  writePng(job.output, renderPerspective(*job.model, level, view, job.background));
+  PerspectiveDrawStats stats;
+  writePng(job.output, renderPerspective(*job.model, depthToDraw(job), view, job.background, &stats));
   std::printf("%s: %s, eye %s looking %s -> %s (%dx%d)\n", job.label.c_str(),
-              depthText(job, level, " (the finest)").c_str(), scanPointText(*options.eye).c_str(),
+              depthText(job, stats).c_str(), scanPointText(*options.eye).c_str(),
               lookText(look.yaw, look.pitch, look.roll).c_str(), job.output.c_str(),
               job.camera.width, job.camera.height);
 }
@@ -177,13 +174,17 @@ void drawPath(const PerspectiveOptions& options, const PerspectiveJob& job) {
   cli::checkOutputFile(output.frameName(0));
   cli::checkOutputFile(output.videoName());
   output.openVideo(job.camera.width, job.camera.height);
-  const LevelView& level = levelToDraw(options, job);
-  for (std::size_t i = 0; i < views.size(); ++i)
-    output.add(static_cast<int>(i), renderPerspective(*job.model, level, views[i], job.background));
+  PerspectiveDrawStats all;  // summed over the frames
+  for (std::size_t i = 0; i < views.size(); ++i) {
+    PerspectiveDrawStats stats;
+    output.add(static_cast<int>(i), renderPerspective(*job.model, depthToDraw(job), views[i],
+                                                      job.background, &stats));
+    all.leaves += stats.leaves;
+  }
   const bool video = output.hasVideo();
   output.finish();
   std::printf("%s: %s, %d frames along %s -> %s .. %s%s%s (%dx%d)\n", job.label.c_str(),
-              depthText(job, level, " (the finest)").c_str(), options.frames,
+              depthText(job, all).c_str(), options.frames,
               cli::displayPath(options.path).c_str(), output.frameName(0).c_str(),
               output.frameName(options.frames - 1).c_str(),
               video ? " and " : ", no video (OpenCV's Motion JPEG writer refused it)",
@@ -248,14 +249,15 @@ PerspectiveView orbitPerspectiveView(const Camera& camera, Angle fov) {
   return view;
 }
 
-cv::Mat renderPerspective(const ModelView& model, const LevelView& level,
-                          const PerspectiveView& view, Rgb background) {
+cv::Mat renderPerspective(const ModelView& model, int depth, const PerspectiveView& view,
+                          Rgb background, PerspectiveDrawStats* stats) {
   Framebuffer frame(view.camera.width, view.camera.height);
   frame.clear();
-  // A quarter pixel: with the rounding of the additions, every leaf within half a pixel.
-  const PerspectiveWalkTables tables =
-      perspectiveWalkTables(view, level.depth, std::int64_t{1} << (kDefaultFractionBits - 2));
-  static_cast<void>(drawPerspective(level, view, tables, frame));  // no abort flag: completes
+  PerspectiveRenderer renderer(model);
+  PerspectiveRenderer::Options options;
+  options.depth = depth;
+  // No abort flag: it completes; `depth` is a stored one (the caller chose it from the model).
+  static_cast<void>(renderer.draw(view, options, frame, stats));
   cv::Mat rgb(view.camera.height, view.camera.width, CV_8UC3);
   // The frame is sized to the camera: resolveToRgb cannot refuse it.
   static_cast<void>(resolveToRgb(frame, model, background, {rgb.data, rgb.total() * 3}));

@@ -11,6 +11,7 @@
 #include "octopoint/camera.h"
 #include "octopoint/model.h"
 #include "renderer/perspective.h"
+#include "renderer/perspective_walk.h"
 #include "tools/scan_eye.h"
 
 namespace octopoint {
@@ -48,14 +49,16 @@ void checkPerspectiveOptions(const PerspectiveOptions& options, const OtherOptio
 // when the camera is refused.
 PerspectiveView orbitPerspectiveView(const Camera& camera, Angle fov);
 
-// Draws `level` of `model` with `view` on `background`, as BGR for OpenCV.
-cv::Mat renderPerspective(const ModelView& model, const LevelView& level,
-                          const PerspectiveView& view, Rgb background);
+// Draws `model` with `view` on `background`, as BGR for OpenCV: its stored `depth`, or with 0
+// each part at the depth its distance asks for (detail by distance); occlusion culling on.
+// `stats` (may be null) learns what was drawn.
+cv::Mat renderPerspective(const ModelView& model, int depth, const PerspectiveView& view,
+                          Rgb background, PerspectiveDrawStats* stats = nullptr);
 
-// What one run draws: the model and its label, the depth asked for and the level it chose (--depth,
-// or else depth auto's for the orthographic view; --eye and --path draw the finest unless --depth
-// says otherwise), the orthographic camera (its size, and for --perspective its turn, zoom and
-// pan), where to write and on what background.
+// What one run draws: the model and its label, the depth asked for and the level it chose (--depth;
+// without it each part of the frame is drawn at the depth its distance asks for), the orthographic
+// camera (its size, and for --perspective its turn, zoom and pan), where to write and on what
+// background.
 struct PerspectiveJob {
   const ModelView* model = nullptr;
   std::string label;

@@ -68,15 +68,13 @@ nor --file nor --url it draws the default model embedded in this binary.
   --pan X,Y          move the picture X pixels right and Y down, each |.| <= 1e6 (default 0,0)
   --perspective      draw in perspective: the eye on the line of sight through the model's centre,
                      where the centre's depth is as large on screen as in the orthographic view
-                     of the same zoom (so a narrow --fov converges to it); colour only, one
-                     stored depth (--depth, or depth auto's), no --fill or --sheet yet
-                     (docs/perspective.md)
+                     of the same zoom (so a narrow --fov converges to it); colour only, no
+                     --fill, --sheet or --style yet (docs/perspective.md)
   --eye X,Y,Z        draw in perspective from an eye at X,Y,Z in the scan's own units and axes
                      (the frame octopoint-prepare --crop takes; --info prints where the model's
                      cube lies in it); anywhere within 128 cube edges of the cube's centre, inside
-                     the model too. The finest stored depth unless --depth says otherwise; colour
-                     only, no --fill, --sheet or --style yet; needs a model that records its
-                     cube's placement (prepared since format version 4)
+                     the model too. Colour only, no --fill, --sheet or --style yet; needs a model
+                     that records its cube's placement (prepared since format version 4)
   --look YAW,PITCH[,ROLL]
                      with --eye: where the eye looks, in degrees (default 0,0: the way the sensor
                      looked, +z of a y-down scan, -z of a y-up one): yaw turns it right, pitch
@@ -94,7 +92,9 @@ nor --file nor --url it draws the default model embedded in this binary.
   --size WxH         framebuffer size in pixels, each side 1..8192 and at most 16777216 pixels
                      (4096x4096) in all (default 320x240)
   --depth N|auto     which of the model's depths to draw (default auto: depth by projected size,
-                     below); N, 1..16, must be one the model stores
+                     below); N, 1..16, must be one the model stores. In perspective, auto draws
+                     each part of the frame at the depth its own distance asks for (detail by
+                     distance) and culls parts hidden behind nearer ones
   --variant NAME     decoder variant (default: the fastest this CPU runs, fixed_simd with AVX2,
                      else fixed_fast; see --list)
   --splats MODE      how a magnified voxel is drawn: box (default), a flat rectangle of its colour,

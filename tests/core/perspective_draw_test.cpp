@@ -16,6 +16,7 @@
 #include "octopoint/models.h"
 #include "renderer/crc32.h"
 #include "renderer/perspective_walk.h"
+#include "tests/support/perspective_reference.h"
 
 namespace octopoint {
 namespace {
@@ -69,14 +70,7 @@ std::vector<DrawCase> drawCases() {
   std::vector<DrawCase> all;
   const auto add = [&](std::string name, ModelPoint eye, int yaw, int pitch, int fov, int width,
                        int height) {
-    PerspectiveCamera camera;
-    camera.eye = eye;
-    camera.yaw = Angle::fromDegrees(yaw);
-    camera.pitch = Angle::fromDegrees(pitch);
-    camera.fov = Angle::fromDegrees(fov);
-    camera.width = width;
-    camera.height = height;
-    all.push_back({std::move(name), camera});
+    all.push_back({std::move(name), perspectiveCameraOf(eye, yaw, pitch, fov, width, height)});
   };
   // Whole model on screen, half of it off the left edge, eye at the face, eye inside: on-screen,
   // straddling and off-screen subtrees; small splats far away and large ones near the eye.

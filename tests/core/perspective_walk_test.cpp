@@ -44,7 +44,7 @@ std::vector<ModelPoint> leafCentres(const LevelView& level) {
   return leaves;
 }
 
-struct View {
+struct WalkView {
   std::string name;
   ModelPoint eye;
   int yaw, pitch;
@@ -64,14 +64,14 @@ TEST_F(PerspectiveWalkTest, EveryLeafInViewIsDrawnWithinHalfAPixelOfItsExactProj
   const LevelView& level = model_->finestLevel();
   const std::vector<ModelPoint> leaves = leafCentres(level);
   const std::int64_t u = kPerspectiveUnit;
-  const std::vector<View> views{{"outside", {0, 0, -2 * u}, 0, 0},
-                                {"outside, turned", {u, -u / 2, -u}, -45, -20},
-                                {"at the cube's face", {0, 0, -u / 2}, 10, -5},
-                                {"deep inside", {u / 16, u / 8, 0}, 170, 30},
-                                {"inside, looking up", {0, u / 4, u / 8}, 0, 90}};
+  const std::vector<WalkView> views{{"outside", {0, 0, -2 * u}, 0, 0},
+                                    {"outside, turned", {u, -u / 2, -u}, -45, -20},
+                                    {"at the cube's face", {0, 0, -u / 2}, 10, -5},
+                                    {"deep inside", {u / 16, u / 8, 0}, 170, 30},
+                                    {"inside, looking up", {0, u / 4, u / 8}, 0, 90}};
   constexpr int kF = kDefaultFractionBits;
   for (int fov : {30, 60, 90, 120}) {
-    for (const View& v : views) {
+    for (const WalkView& v : views) {
       SCOPED_TRACE(v.name + ", " + std::to_string(fov) + " degrees");
       PerspectiveCamera camera;
       camera.eye = v.eye;

@@ -12,6 +12,19 @@ namespace octopoint {
 inline constexpr double kUnit = static_cast<double>(kPerspectiveUnit);
 inline constexpr double kPi = 3.14159265358979323846;
 
+// A camera of the tests' views: the eye in Q.24 cube edges, the angles in degrees.
+inline PerspectiveCamera perspectiveCameraOf(ModelPoint eye, int yaw, int pitch, int fov, int width,
+                                             int height) {
+  PerspectiveCamera camera;
+  camera.eye = eye;
+  camera.yaw = Angle::fromDegrees(yaw);
+  camera.pitch = Angle::fromDegrees(pitch);
+  camera.fov = Angle::fromDegrees(fov);
+  camera.width = width;
+  camera.height = height;
+  return camera;
+}
+
 inline double radiansOf(Angle angle) { return angle.turns16() * 2 * kPi / Angle::kUnitsPerTurn; }
 
 using Matrix = std::array<std::array<double, 3>, 3>;

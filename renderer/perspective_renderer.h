@@ -1,0 +1,60 @@
+#pragma once
+// A model's perspective frames (docs/perspective.md), with detail by distance and occlusion
+// culling: what outlives a frame is kept here, so that drawing one allocates nothing. Each
+// stored depth's upper tree index is built once, with the renderer; the occlusion tiles once per
+// framebuffer size (the first frame of a size). Not on a bare-metal build (it keeps them on the
+// heap); there, the walk's parts take storage the caller provides (renderer/perspective_walk.h).
+
+#include <array>
+#include <atomic>
+#include <cstdint>
+#include <vector>
+
+#include "octopoint/framebuffer.h"
+#include "octopoint/model.h"
+#include "renderer/occlusion_tiles.h"
+#include "renderer/perspective.h"
+#include "renderer/perspective_walk.h"
+#include "renderer/upper_tree_index.h"
+
+namespace octopoint {
+
+// Tiles of 8 x 8 pixels: docs/perspective.md, "Occlusion culling", says why.
+inline constexpr int kOcclusionTileShift = 3;
+
+class PerspectiveRenderer {
+ public:
+  struct Options {
+    int depth = 0;     // 0: detail by distance over the model's densely sampled depths; else this
+                       // stored depth alone
+    bool cull = true;  // occlusion culling (the same frame, bit for bit)
+    int tile_shift = kOcclusionTileShift;  // its tiles: 2^shift pixels square, 1..6
+  };
+
+  // `model` must outlive the renderer.
+  explicit PerspectiveRenderer(const ModelView& model);
+
+  // The depths detail by distance chooses among: the densely sampled ones (docs/splats.md).
+  std::span<const int> detailDepths() const { return {depths_.data(), dense_}; }
+
+  // Draws `view` into `frame` (cleared by the caller; its size the view's): each leaf within a
+  // quarter pixel plus the additions' rounding of its exact projection. False when the depth is
+  // not one the model stores (or is deeper than this build draws), or when aborted.
+  bool draw(const PerspectiveView& view, const Options& options, FrameView& frame,
+            PerspectiveDrawStats* stats = nullptr, const std::atomic<bool>* abort = nullptr);
+
+ private:
+  const ModelView& model_;
+  std::array<int, format::kMaxLevels> depths_{};    // of the levels drawn, ascending
+  std::array<int, format::kMaxLevels> level_of_{};  // the model's level index of each
+  std::size_t count_ = 0;                           // levels this build draws
+  std::size_t dense_ = 0;                           // of them densely sampled
+  std::vector<std::vector<UpperTreeNode>> index_storage_;
+  std::array<UpperTreeIndex, format::kMaxLevels> indexes_{};
+  std::array<PerspectiveWalkTables, format::kMaxLevels> tables_{};  // per frame
+  std::vector<OcclusionTile> tiles_;
+  std::int32_t tiles_width_ = 0, tiles_height_ = 0;
+  int tiles_shift_ = 0;
+};
+
+}  // namespace octopoint
