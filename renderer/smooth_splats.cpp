@@ -4,6 +4,11 @@
 #include <algorithm>
 #include <array>
 
+#if defined(__x86_64__) && defined(__GNUC__)
+#include <immintrin.h>  // SSE2, which every x86-64 has; AVX2 where the CPU has it
+#define OCTOPOINT_SMOOTH_SSE2 1
+#endif
+
 #include "octopoint/smooth.h"
 #include "renderer/bit_scan.h"
 #include "renderer/decode_algorithms.h"
@@ -148,30 +153,133 @@ class BlendWalk {
     const Span columns = weigh(p.x, radius_x_, inverse_x_, setup_.width, column_weight_);
     if (columns.begin >= columns.end) return;
     const Span rows = weigh(p.y, radius_y_, inverse_y_, setup_.height, row_weight_);
-    const std::uint32_t key = setup_.depthKey(p.z);
-    const Rgb colour = palette_[colour_index];
-    const std::uint32_t twice_tolerance = 2 * tolerance_;
+    const LeafRow leaf{setup_.depthKey(p.z), tolerance_, palette_[colour_index]};
     const auto width = static_cast<std::size_t>(setup_.width);
+    const auto count = static_cast<std::size_t>(columns.end - columns.begin);
     for (std::int32_t y = rows.begin; y < rows.end; ++y) {
-      const std::uint32_t row_weight = row_weight_[y - rows.begin];
-      const std::size_t row = static_cast<std::size_t>(y) * width;
-      for (std::int32_t x = columns.begin; x < columns.end; ++x) {
-        const std::uint32_t word = words_[row + static_cast<std::size_t>(x)];
-        // Within the tolerance of the pixel's nearest depth, either side (unsigned: one compare).
-        if (word == FrameView::kEmpty ||
-            key - FrameView::depthKeyOf(word) + tolerance_ > twice_tolerance) {
-          continue;
-        }
-        const std::uint32_t weight =
-            (row_weight * column_weight_[x - columns.begin]) >> kProductShift;  // Q12
-        SmoothSplats::Sums& sum = sums_[row + static_cast<std::size_t>(x)];
-        sum.r += weight * colour.r;
-        sum.g += weight * colour.g;
-        sum.b += weight * colour.b;
-        sum.weight += weight;
-      }
+      const std::size_t at =
+          static_cast<std::size_t>(y) * width + static_cast<std::size_t>(columns.begin);
+      addRow(avx2_, leaf, row_weight_[y - rows.begin], column_weight_, words_ + at, sums_ + at,
+             count);
     }
   }
+
+  // What one leaf adds to each pixel of a row of its reach.
+  struct LeafRow {
+    std::uint32_t key;        // its depth key
+    std::uint32_t tolerance;  // depth-key units
+    Rgb colour;
+  };
+
+  // Pixels [0, count) of `words` and `sums` take the leaf's colour with weight (row_weight *
+  // column_weight[i]) >> kProductShift (Q8 x Q8 -> Q12), where the pixel's nearest depth is within
+  // the tolerance of the leaf's.
+  static void addRow(bool avx2, const LeafRow& leaf, std::uint32_t row_weight,
+                     const std::uint16_t* column_weight, const std::uint32_t* words,
+                     SmoothSplats::Sums* sums, std::size_t count) {
+    std::size_t i = 0;
+#ifdef OCTOPOINT_SMOOTH_SSE2
+    if (avx2 && count >= 8) i = addRowAvx2(leaf, row_weight, column_weight, words, sums, count);
+    i += addRowSse2(leaf, row_weight, column_weight + i, words + i, sums + i, count - i);
+#endif
+    for (; i < count; ++i) {
+      const std::uint32_t word = words[i];
+      // Within the tolerance of the pixel's nearest depth, either side (unsigned: one compare).
+      if (word == FrameView::kEmpty ||
+          leaf.key - FrameView::depthKeyOf(word) + leaf.tolerance > 2 * leaf.tolerance) {
+        continue;
+      }
+      const std::uint32_t weight = (row_weight * column_weight[i]) >> kProductShift;  // Q12
+      SmoothSplats::Sums& sum = sums[i];
+      sum.r += weight * leaf.colour.r;
+      sum.g += weight * leaf.colour.g;
+      sum.b += weight * leaf.colour.b;
+      sum.weight += weight;
+    }
+  }
+
+#ifdef OCTOPOINT_SMOOTH_SSE2
+  // addRow four pixels at a time, the same sums (wrapping 32-bit adds of the same products);
+  // returns how many pixels it did (a multiple of 4), the scalar loop does the rest. A pixel's four
+  // sums are one 16-byte vector: one multiply-add (pmaddwd of [w, 0] x [r, 0, g, 0, b, 0, 1, 0],
+  // every factor below 2^15) gives [w r, w g, w b, w].
+  static std::size_t addRowSse2(const LeafRow& leaf, std::uint32_t row_weight,
+                                const std::uint16_t* column_weight, const std::uint32_t* words,
+                                SmoothSplats::Sums* sums, std::size_t count) {
+    static_assert(sizeof(SmoothSplats::Sums) == 16);
+    const __m128i colour =
+        _mm_setr_epi32(leaf.colour.r, leaf.colour.g, leaf.colour.b, 1);  // 16-bit [c, 0] pairs
+    const __m128i rows = _mm_set1_epi32(static_cast<int>(row_weight));   // Q8, [w, 0] pairs
+    // Unsigned compares as signed ones of the values with their top bit flipped.
+    const __m128i flip = _mm_set1_epi32(static_cast<int>(0x8000'0000U));
+    const __m128i key = _mm_set1_epi32(static_cast<int>(leaf.key + leaf.tolerance));
+    const __m128i limit = _mm_set1_epi32(static_cast<int>((2 * leaf.tolerance) ^ 0x8000'0000U));
+    const __m128i empty = _mm_set1_epi32(-1);
+    std::size_t i = 0;
+    for (; i + 4 <= count; i += 4) {
+      const __m128i word = _mm_loadu_si128(reinterpret_cast<const __m128i*>(words + i));
+      const __m128i distance = _mm_sub_epi32(key, _mm_srli_epi32(word, 8));
+      const __m128i outside = _mm_or_si128(_mm_cmpgt_epi32(_mm_xor_si128(distance, flip), limit),
+                                           _mm_cmpeq_epi32(word, empty));
+      if (_mm_movemask_epi8(outside) == 0xFFFF) continue;
+      const __m128i columns =
+          _mm_unpacklo_epi16(_mm_loadl_epi64(reinterpret_cast<const __m128i*>(column_weight + i)),
+                             _mm_setzero_si128());
+      const __m128i weight =
+          _mm_andnot_si128(outside, _mm_srli_epi32(_mm_madd_epi16(columns, rows), kProductShift));
+      auto* sum = reinterpret_cast<__m128i*>(sums + i);
+      _mm_storeu_si128(sum, _mm_add_epi32(_mm_loadu_si128(sum),
+                                          _mm_madd_epi16(_mm_shuffle_epi32(weight, 0x00), colour)));
+      _mm_storeu_si128(sum + 1,
+                       _mm_add_epi32(_mm_loadu_si128(sum + 1),
+                                     _mm_madd_epi16(_mm_shuffle_epi32(weight, 0x55), colour)));
+      _mm_storeu_si128(sum + 2,
+                       _mm_add_epi32(_mm_loadu_si128(sum + 2),
+                                     _mm_madd_epi16(_mm_shuffle_epi32(weight, 0xAA), colour)));
+      _mm_storeu_si128(sum + 3,
+                       _mm_add_epi32(_mm_loadu_si128(sum + 3),
+                                     _mm_madd_epi16(_mm_shuffle_epi32(weight, 0xFF), colour)));
+    }
+    return i;
+  }
+
+  // addRowSse2 eight pixels at a time, two pixels' sums to a 32-byte vector.
+  __attribute__((target("avx2"))) static std::size_t addRowAvx2(
+      const LeafRow& leaf, std::uint32_t row_weight, const std::uint16_t* column_weight,
+      const std::uint32_t* words, SmoothSplats::Sums* sums, std::size_t count) {
+    const __m256i colour = _mm256_setr_epi32(leaf.colour.r, leaf.colour.g, leaf.colour.b, 1,
+                                             leaf.colour.r, leaf.colour.g, leaf.colour.b, 1);
+    const __m256i rows = _mm256_set1_epi32(static_cast<int>(row_weight));
+    const __m256i flip = _mm256_set1_epi32(static_cast<int>(0x8000'0000U));
+    const __m256i key = _mm256_set1_epi32(static_cast<int>(leaf.key + leaf.tolerance));
+    const __m256i limit = _mm256_set1_epi32(static_cast<int>((2 * leaf.tolerance) ^ 0x8000'0000U));
+    const __m256i empty = _mm256_set1_epi32(-1);
+    // Pixels 2k and 2k + 1's weights, each in the four lanes of its half.
+    const __m256i pair[4] = {
+        _mm256_setr_epi32(0, 0, 0, 0, 1, 1, 1, 1), _mm256_setr_epi32(2, 2, 2, 2, 3, 3, 3, 3),
+        _mm256_setr_epi32(4, 4, 4, 4, 5, 5, 5, 5), _mm256_setr_epi32(6, 6, 6, 6, 7, 7, 7, 7)};
+    std::size_t i = 0;
+    for (; i + 8 <= count; i += 8) {
+      const __m256i word = _mm256_loadu_si256(reinterpret_cast<const __m256i*>(words + i));
+      const __m256i distance = _mm256_sub_epi32(key, _mm256_srli_epi32(word, 8));
+      const __m256i outside =
+          _mm256_or_si256(_mm256_cmpgt_epi32(_mm256_xor_si256(distance, flip), limit),
+                          _mm256_cmpeq_epi32(word, empty));
+      if (_mm256_movemask_epi8(outside) == -1) continue;
+      const __m256i columns = _mm256_cvtepu16_epi32(
+          _mm_loadu_si128(reinterpret_cast<const __m128i*>(column_weight + i)));
+      const __m256i weight = _mm256_andnot_si256(
+          outside, _mm256_srli_epi32(_mm256_madd_epi16(columns, rows), kProductShift));
+      auto* sum = reinterpret_cast<__m256i*>(sums + i);
+      for (int k = 0; k < 4; ++k) {
+        const __m256i weights = _mm256_permutevar8x32_epi32(weight, pair[k]);
+        _mm256_storeu_si256(sum + k, _mm256_add_epi32(_mm256_loadu_si256(sum + k),
+                                                      _mm256_madd_epi16(weights, colour)));
+      }
+    }
+    return i;
+  }
+#endif
 
   const std::uint8_t* node_;
   const std::uint8_t* leaf_;
@@ -186,6 +294,7 @@ class BlendWalk {
   std::uint64_t inverse_x_, inverse_y_;  // kKernelSteps 2^32 / radius: distance to table step
   std::uint32_t tolerance_;              // depth-key units
   SubtreeClip clip_;
+  const bool avx2_ = simdDecoderAvailable();  // addRow's eight-pixel steps (same sums)
   bool aborted_ = false;
 };
 
@@ -304,14 +413,17 @@ bool SmoothSplats::resolveToRgb(const FrameView& frame, const PaletteRgb& palett
     return false;
   }
   const std::span<const std::uint32_t> words = frame.pixels();
-  std::size_t at = 0;
-  for (std::int32_t y = 0; y < height_; ++y) {
-    const bool blended_row = blended_ && y >= blended_rect_.y_begin && y < blended_rect_.y_end;
-    for (std::int32_t x = 0; x < width_; ++x, ++at) {
+  const auto width = static_cast<std::size_t>(width_);
+  // Pixels [begin, end) of row `row_at`: palette colours of the box frame, or the blended ones.
+  const auto resolveRun = [&](std::size_t row_at, std::int32_t begin, std::int32_t end,
+                              bool blended) {
+    for (std::size_t at = row_at + static_cast<std::size_t>(begin),
+                     stop = row_at + static_cast<std::size_t>(end);
+         at < stop; ++at) {
       const std::uint32_t word = words[at];
       Rgb colour = background;
       if (word != FrameView::kEmpty) {
-        if (blended_row && x >= blended_rect_.x_begin && x < blended_rect_.x_end) {
+        if (blended) {
           const std::uint32_t packed = sums_[at].r;
           colour = {static_cast<std::uint8_t>(packed >> 16), static_cast<std::uint8_t>(packed >> 8),
                     static_cast<std::uint8_t>(packed)};
@@ -323,6 +435,16 @@ bool SmoothSplats::resolveToRgb(const FrameView& frame, const PaletteRgb& palett
       rgb[3 * at + 1] = colour.g;
       rgb[3 * at + 2] = colour.b;
     }
+  };
+  for (std::int32_t y = 0; y < height_; ++y) {
+    const std::size_t row_at = static_cast<std::size_t>(y) * width;
+    if (!blended_ || y < blended_rect_.y_begin || y >= blended_rect_.y_end) {
+      resolveRun(row_at, 0, width_, false);
+      continue;
+    }
+    resolveRun(row_at, 0, blended_rect_.x_begin, false);
+    resolveRun(row_at, blended_rect_.x_begin, blended_rect_.x_end, true);
+    resolveRun(row_at, blended_rect_.x_end, width_, false);
   }
   return true;
 }
