@@ -174,7 +174,7 @@ class BlendWalk {
   // Pixels [0, count) of `words` and `sums` take the leaf's colour with weight (row_weight *
   // column_weight[i]) >> kProductShift (Q8 x Q8 -> Q12), where the pixel's nearest depth is within
   // the tolerance of the leaf's.
-  static void addRow(bool avx2, const LeafRow& leaf, std::uint32_t row_weight,
+  static void addRow([[maybe_unused]] bool avx2, const LeafRow& leaf, std::uint32_t row_weight,
                      const std::uint16_t* column_weight, const std::uint32_t* words,
                      SmoothSplats::Sums* sums, std::size_t count) {
     std::size_t i = 0;
