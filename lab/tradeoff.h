@@ -66,6 +66,8 @@ struct Quality {
 // The frame resolved to BGR (palette colours, kBackground where empty).
 cv::Mat toImage(const Framebuffer& frame, const ModelView& model);
 Quality measure(const Reference& reference, const Framebuffer& frame, const ModelView& model);
+// The same for a frame whose colours are `drawn` (BGR, the frame's size): a smooth frame's.
+Quality measure(const Reference& reference, const Framebuffer& frame, const cv::Mat& drawn);
 
 // How long to repeat a frame for its median time: at least `min_frames` frames and
 // `min_seconds`, at most `max_frames`.

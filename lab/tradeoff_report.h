@@ -15,6 +15,7 @@ enum class Config {
   kBefore,        // today's renderer: finest depth, one pixel per voxel, no filling
   kBeforeFilled,  // the same with scanline hole filling
   kAfter,         // depth auto, footprint splats, no filling
+  kAfterSmooth,   // the same with smooth splats (octopoint/smooth.h)
 };
 const char* configName(Config config);
 
@@ -31,6 +32,7 @@ struct SweepResult {
   // PSNR of the exact cover of the finest level of that model (lab/voxel_cover.h): what its
   // voxels show when each covers exactly the pixel centres inside its projection.
   double voxel_cover_psnr = 0;
+  double voxel_cover_ssim = 0;  // and its SSIM
 };
 
 struct SweepCell {
@@ -41,7 +43,8 @@ struct SweepCell {
 };
 
 std::string sweepCsv(const std::string& label, const std::vector<SweepCell>& cells);
-// The table (before / before + fill / after side by side per cell) and, when the cells hold
+// The table (before / before + fill / after side by side per cell), box against smooth splats
+// against the exact voxel cover (when the cells hold smooth results) and, when the cells hold
 // "after" results, every any-size target (docs/tradeoff.md) with its measured numbers.
 // `models` says what before and after draw (their depths and sizes), under the heading.
 std::string sweepMarkdown(const std::string& label, const std::string& models,

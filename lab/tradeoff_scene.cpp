@@ -75,7 +75,10 @@ cv::Mat toImage(const Framebuffer& frame, const ModelView& model) {
 }
 
 Quality measure(const Reference& reference, const Framebuffer& frame, const ModelView& model) {
-  const cv::Mat drawn = toImage(frame, model);
+  return measure(reference, frame, toImage(frame, model));
+}
+
+Quality measure(const Reference& reference, const Framebuffer& frame, const cv::Mat& drawn) {
   const cv::Mat regions = silhouetteRegions(reference.silhouette);
   std::int64_t object = 0, empty = 0, inner = 0, inner_empty = 0;
   for (int y = 0; y < frame.height(); ++y) {

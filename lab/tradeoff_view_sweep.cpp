@@ -1,6 +1,7 @@
 // octopoint-tradeoff --sweep-views (docs/tradeoff.md): every frame size x zoom, today's renderer
 // ("before": the finest depth of the 7,8 model, one pixel per voxel, hole filling off and on)
-// against depth auto with footprint splats ("after"), measured against the surface reference.
+// against depth auto with footprint splats ("after"), box and smooth, measured against the
+// surface reference.
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -19,6 +20,7 @@
 #include "lab/tradeoff_report.h"
 #include "lab/voxel_cover.h"
 #include "octopoint/render.h"
+#include "octopoint/smooth.h"
 #include "renderer/level_of_detail.h"
 
 namespace octopoint::tradeoff {
@@ -33,17 +35,25 @@ const std::vector<int> kBeforeDepths = {7, 8};
 // choice, camera set-up, decoding, filling), so that it can be timed.
 class SweepDrawer {
  public:
-  SweepDrawer(const ModelView& before, const ModelView& after) : before_(before), after_(after) {}
+  SweepDrawer(const ModelView& before, const ModelView& after)
+      : before_(before), after_(after), after_palette_(paletteOf(after)) {}
 
-  // Draws `config` for `camera` into `frame`; throws when the camera is refused.
-  void draw(Config config, const Camera& camera, Framebuffer& frame, HoleFiller& filler) {
+  // Draws `config` for `camera` into `frame` (blending smooth splats in `smooth`, of the frame's
+  // size); throws when the camera is refused.
+  void draw(Config config, const Camera& camera, Framebuffer& frame, HoleFiller& filler,
+            SmoothSplats& smooth) {
     frame.clear();
-    const LevelView* level =
-        config == Config::kAfter ? autoLevel(after_, camera) : &before_.finestLevel();
+    const bool after = config == Config::kAfter || config == Config::kAfterSmooth;
+    const LevelView* level = after ? autoLevel(after_, camera) : &before_.finestLevel();
     if (level == nullptr) throw cli::Error("depth auto: the camera is refused at every depth");
     const CameraError error = buildFrameSetup(camera, level->depth, kDefaultFractionBits, &setup_);
     if (error != CameraError::kNone) throw cli::Error(std::string("camera: ") + describe(error));
-    if (config != Config::kAfter) setup_.splat = SplatFootprint{};  // one pixel per leaf, as before
+    if (!after) setup_.splat = SplatFootprint{};  // one pixel per leaf, as before
+    if (config == Config::kAfterSmooth) {
+      if (!renderSmooth(variant_, *level, setup_, frame, smooth, after_palette_))
+        throw cli::Error("smooth splats refused the frame");
+      return;
+    }
     if (!renderLevel(variant_, *level, setup_, frame))
       throw cli::Error(std::string("draw: ") + describe(checkRender(*level, setup_, frame)));
     if (config == Config::kBeforeFilled && filler.fill(frame, bridgeDepthLimit(setup_)).refused)
@@ -98,17 +108,30 @@ class SweepDrawer {
   // The last frame's set-up (its depth and splat).
   const FrameSetup& setup() const { return setup_; }
   const ModelView& model(Config config) const {
-    return config == Config::kAfter ? after_ : before_;
+    return config == Config::kAfter || config == Config::kAfterSmooth ? after_ : before_;
+  }
+  // The last smooth frame's colours, BGR, kBackground where empty.
+  cv::Mat smoothImage(const Framebuffer& frame, const SmoothSplats& smooth) const {
+    cv::Mat rgb(frame.height(), frame.width(), CV_8UC3);
+    // The image is made for the frame: resolveToRgb cannot refuse it.
+    static_cast<void>(
+        smooth.resolveToRgb(frame, after_palette_, kBackground, {rgb.data, rgb.total() * 3}));
+    cv::Mat bgr;
+    cv::cvtColor(rgb, bgr, cv::COLOR_RGB2BGR);
+    return bgr;
   }
 
  private:
   const ModelView& before_;
   const ModelView& after_;
+  const PaletteRgb after_palette_;
   const Variant variant_ = defaultVariant();
   FrameSetup setup_;
 };
 
-constexpr Config kConfigs[] = {Config::kBefore, Config::kBeforeFilled, Config::kAfter};
+constexpr Config kConfigs[] = {Config::kBefore, Config::kBeforeFilled, Config::kAfter,
+                               Config::kAfterSmooth};
+constexpr std::size_t kConfigCount = std::size(kConfigs);
 
 // "6..8 (123,456 bytes)": a model's stored depths and its size.
 std::string storedDepths(const InMemoryModel& model) {
@@ -138,13 +161,19 @@ Camera cameraOf(const ViewSweepOptions& options, const SweepCell& cell) {
 
 // Reference | before with filling | after, side by side under a caption strip.
 // Only the `region` of each (the whole frame, or its centre for a closer look at 1:1).
-cv::Mat sideBySide(const cv::Mat& reference, const cv::Mat& before, const cv::Mat& after,
-                   const cv::Rect& region) {
+struct Panels {
+  const char* captions[3];
+};
+constexpr Panels kBeforeAfter{
+    {"reference (scan surface)", "before: depth 8 + hole filling", "after: depth auto, splats"}};
+constexpr Panels kBoxSmooth{
+    {"reference (scan surface)", "--splats box (depth auto)", "--splats smooth (depth auto)"}};
+cv::Mat sideBySide(const Panels& panels_of, const cv::Mat& reference, const cv::Mat& before,
+                   const cv::Mat& after, const cv::Rect& region) {
   constexpr int kCaption = 28, kGap = 6;
   const int w = region.width, h = region.height;
   cv::Mat out(h + kCaption, 3 * w + 2 * kGap, CV_8UC3, cv::Scalar(255, 255, 255));
-  const char* captions[] = {"reference (scan surface)", "before: depth 8 + hole filling",
-                            "after: depth auto, splats"};
+  const char* const* captions = panels_of.captions;
   const cv::Mat* panels[] = {&reference, &before, &after};
   for (int k = 0; k < 3; ++k) {
     (*panels[k])(region).copyTo(out(cv::Rect(k * (w + kGap), kCaption, w, h)));
@@ -173,19 +202,26 @@ void markEmpty(const Reference& reference, const Framebuffer& frame, cv::Mat* ma
 }
 
 // A cell's pictures: WxH_zoomZ.png (reference | before with filling | after), _centre.png (the
-// centre quarter of each at 1:1) and _empty.png (markEmpty), each written whole.
+// centre quarter of each at 1:1), _empty.png (markEmpty), _splats.png and _splats_centre.png
+// (reference | box | smooth), each written whole.
 void writePictures(const fs::path& directory, const SweepCell& cell, const cv::Mat& reference,
-                   const cv::Mat (&frames)[3], const cv::Mat& after_empty) {
+                   const cv::Mat (&frames)[kConfigCount], const cv::Mat& after_empty) {
   const int w = cell.width, h = cell.height;
   char stem[48];
   std::snprintf(stem, sizeof stem, "%dx%d_zoom%g", w, h, cell.zoom);
   const cv::Rect whole(0, 0, w, h), centre(w / 4, h / 4, std::max(1, w / 2), std::max(1, h / 2));
   const std::string base = stem;
-  cli::writeFileAtomically(directory / (base + ".png"),
-                           encodePng(sideBySide(reference, frames[1], frames[2], whole)));
-  cli::writeFileAtomically(directory / (base + "_centre.png"),
-                           encodePng(sideBySide(reference, frames[1], frames[2], centre)));
+  const auto sideBySidePng = [&](const std::string& suffix, const Panels& panels, std::size_t left,
+                                 std::size_t right, const cv::Rect& region) {
+    cli::writeFileAtomically(
+        directory / (base + suffix + ".png"),
+        encodePng(sideBySide(panels, reference, frames[left], frames[right], region)));
+  };
+  sideBySidePng("", kBeforeAfter, 1, 2, whole);
+  sideBySidePng("_centre", kBeforeAfter, 1, 2, centre);
   cli::writeFileAtomically(directory / (base + "_empty.png"), encodePng(after_empty));
+  sideBySidePng("_splats", kBoxSmooth, 2, 3, whole);
+  sideBySidePng("_splats_centre", kBoxSmooth, 2, 3, centre);
 }
 
 // One cell's quality: a frame of each configuration against the reference, with each model's
@@ -193,24 +229,32 @@ void writePictures(const fs::path& directory, const SweepCell& cell, const cv::M
 SweepCell measureCell(const Scene& scene, const ViewSweepOptions& options, SweepDrawer& drawer,
                       const std::vector<cv::Vec3b>& before_colours,
                       const std::vector<cv::Vec3b>& after_colours, SweepCell cell,
-                      Framebuffer& frame, HoleFiller& filler, const fs::path& pictures_dir) {
+                      Framebuffer& frame, HoleFiller& filler, SmoothSplats& smooth,
+                      const fs::path& pictures_dir) {
   const Camera camera = cameraOf(options, cell);
   const Reference reference = referenceFor(scene, camera);
   const double before_ceiling = paletteCeilingPsnr(reference.image, before_colours);
   const double after_ceiling = paletteCeilingPsnr(reference.image, after_colours);
-  const double before_cover = psnr(reference.image, drawer.exactCover(Config::kBefore, camera));
-  const double after_cover = psnr(reference.image, drawer.exactCover(Config::kAfter, camera));
-  cv::Mat pictures[3], after_empty;
-  for (std::size_t k = 0; k < 3; ++k) {
-    drawer.draw(kConfigs[k], camera, frame, filler);
+  const cv::Mat before_cover = drawer.exactCover(Config::kBefore, camera);
+  const cv::Mat after_cover = drawer.exactCover(Config::kAfter, camera);
+  const double cover_psnr[] = {psnr(reference.image, before_cover),
+                               psnr(reference.image, after_cover)};
+  const double cover_ssim[] = {ssim(reference.image, before_cover),
+                               ssim(reference.image, after_cover)};
+  cv::Mat pictures[kConfigCount], after_empty;
+  for (std::size_t k = 0; k < kConfigCount; ++k) {
+    const Config config = kConfigs[k];
+    drawer.draw(config, camera, frame, filler, smooth);
+    const cv::Mat image = config == Config::kAfterSmooth ? drawer.smoothImage(frame, smooth)
+                                                         : toImage(frame, drawer.model(config));
     const SplatFootprint& splat = drawer.setup().splat;
-    cell.results.push_back({kConfigs[k], drawer.setup().depth, splat.columns, splat.rows, 0,
-                            measure(reference, frame, drawer.model(kConfigs[k])),
-                            kConfigs[k] == Config::kAfter ? after_ceiling : before_ceiling,
-                            kConfigs[k] == Config::kAfter ? after_cover : before_cover});
+    const std::size_t m = config == Config::kAfter || config == Config::kAfterSmooth ? 1 : 0;
+    cell.results.push_back({config, drawer.setup().depth, splat.columns, splat.rows, 0,
+                            measure(reference, frame, image),
+                            m == 1 ? after_ceiling : before_ceiling, cover_psnr[m], cover_ssim[m]});
     if (options.pictures) {
-      pictures[k] = toImage(frame, drawer.model(kConfigs[k]));
-      if (kConfigs[k] == Config::kAfter) markEmpty(reference, frame, &after_empty);
+      pictures[k] = image;
+      if (config == Config::kAfter) markEmpty(reference, frame, &after_empty);
     }
   }
   if (options.pictures) writePictures(pictures_dir, cell, reference.image, pictures, after_empty);
@@ -221,15 +265,16 @@ SweepCell measureCell(const Scene& scene, const ViewSweepOptions& options, Sweep
 // of its rounds, so that a burst of load on a shared machine spoils one round, not the figure.
 void timeCells(SweepDrawer& drawer, const ViewSweepOptions& options,
                std::vector<SweepCell>& cells) {
-  std::vector<std::vector<double>> round_ms(cells.size() * 3);
+  std::vector<std::vector<double>> round_ms(cells.size() * kConfigCount);
   for (int round = 0; round < options.rounds; ++round) {
     for (std::size_t c = 0; c < cells.size(); ++c) {
       const Camera camera = cameraOf(options, cells[c]);
       Framebuffer frame(camera.width, camera.height);
       HoleFiller filler(camera.width);
-      for (std::size_t k = 0; k < 3; ++k) {
-        round_ms[c * 3 + k].push_back(medianMilliseconds(
-            [&] { drawer.draw(kConfigs[k], camera, frame, filler); }, options.repeats));
+      SmoothSplats smooth(camera.width, camera.height);
+      for (std::size_t k = 0; k < kConfigCount; ++k) {
+        round_ms[c * kConfigCount + k].push_back(medianMilliseconds(
+            [&] { drawer.draw(kConfigs[k], camera, frame, filler, smooth); }, options.repeats));
       }
     }
     std::printf("%s timing round %d of %d done\n", options.label.c_str(), round + 1,
@@ -237,8 +282,8 @@ void timeCells(SweepDrawer& drawer, const ViewSweepOptions& options,
     std::fflush(stdout);
   }
   for (std::size_t c = 0; c < cells.size(); ++c) {
-    for (std::size_t k = 0; k < 3; ++k) {
-      std::vector<double>& ms = round_ms[c * 3 + k];
+    for (std::size_t k = 0; k < kConfigCount; ++k) {
+      std::vector<double>& ms = round_ms[c * kConfigCount + k];
       std::nth_element(ms.begin(), ms.begin() + static_cast<std::ptrdiff_t>(ms.size() / 2),
                        ms.end());
       cells[c].results[k].ms_per_frame = ms[ms.size() / 2];
@@ -280,9 +325,11 @@ std::vector<cli::OutputFile> runViewSweep(const Scene& scene, const ViewSweepOpt
   for (const auto& [width, height] : options.sizes) {
     Framebuffer frame(width, height);
     HoleFiller filler(width);
+    SmoothSplats smooth(width, height);
     for (double zoom : options.zooms) {
       cells.push_back(measureCell(scene, options, drawer, before_colours, after_colours,
-                                  SweepCell{width, height, zoom, {}}, frame, filler, pictures_dir));
+                                  SweepCell{width, height, zoom, {}}, frame, filler, smooth,
+                                  pictures_dir));
     }
     std::printf("%s %dx%d measured\n", options.label.c_str(), width, height);
     std::fflush(stdout);

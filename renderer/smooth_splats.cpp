@@ -4,6 +4,11 @@
 #include <algorithm>
 #include <array>
 
+#if defined(__x86_64__) && defined(__GNUC__)
+#include <immintrin.h>  // SSE2, which every x86-64 has; AVX2 where the CPU has it
+#define OCTOPOINT_SMOOTH_SSE2 1
+#endif
+
 #include "octopoint/smooth.h"
 #include "renderer/bit_scan.h"
 #include "renderer/decode_algorithms.h"
@@ -148,30 +153,170 @@ class BlendWalk {
     const Span columns = weigh(p.x, radius_x_, inverse_x_, setup_.width, column_weight_);
     if (columns.begin >= columns.end) return;
     const Span rows = weigh(p.y, radius_y_, inverse_y_, setup_.height, row_weight_);
-    const std::uint32_t key = setup_.depthKey(p.z);
-    const Rgb colour = palette_[colour_index];
-    const std::uint32_t twice_tolerance = 2 * tolerance_;
     const auto width = static_cast<std::size_t>(setup_.width);
-    for (std::int32_t y = rows.begin; y < rows.end; ++y) {
-      const std::uint32_t row_weight = row_weight_[y - rows.begin];
-      const std::size_t row = static_cast<std::size_t>(y) * width;
-      for (std::int32_t x = columns.begin; x < columns.end; ++x) {
-        const std::uint32_t word = words_[row + static_cast<std::size_t>(x)];
+    const std::size_t first =
+        static_cast<std::size_t>(rows.begin) * width + static_cast<std::size_t>(columns.begin);
+    const LeafReach leaf{setup_.depthKey(p.z),
+                         tolerance_,
+                         palette_[colour_index],
+                         column_weight_,
+                         row_weight_,
+                         static_cast<std::size_t>(columns.end - columns.begin),
+                         static_cast<std::size_t>(std::max(rows.end - rows.begin, 0)),
+                         words_ + first,
+                         sums_ + first,
+                         width};
+    std::size_t done = 0;  // the columns of every row the vector steps did
+#ifdef OCTOPOINT_SMOOTH_SSE2
+    if (leaf.columns >= 4) done = avx2_ ? addVectorsAvx2(leaf) : addVectorsSse2(leaf);
+#endif
+    addScalar(leaf, done);
+  }
+
+  // One leaf and the pixels it reaches: pixel (i, r) of its reach is words[r * stride + i], its
+  // weight (row_weight[r] * column_weight[i]) >> kProductShift (Q8 x Q8 -> Q12).
+  struct LeafReach {
+    std::uint32_t key;        // its depth key
+    std::uint32_t tolerance;  // depth-key units
+    Rgb colour;
+    const std::uint16_t* column_weight;
+    const std::uint16_t* row_weight;
+    std::size_t columns, rows;
+    const std::uint32_t* words;
+    SmoothSplats::Sums* sums;
+    std::size_t stride;
+  };
+
+  // Columns [from, columns) of every row: each pixel whose nearest depth is within the tolerance
+  // of the leaf's takes its colour with its weight.
+  static void addScalar(const LeafReach& leaf, std::size_t from) {
+    for (std::size_t r = 0; r < leaf.rows; ++r) {
+      const std::uint32_t row_weight = leaf.row_weight[r];
+      const std::uint32_t* const words = leaf.words + r * leaf.stride;
+      SmoothSplats::Sums* const sums = leaf.sums + r * leaf.stride;
+      for (std::size_t i = from; i < leaf.columns; ++i) {
+        const std::uint32_t word = words[i];
         // Within the tolerance of the pixel's nearest depth, either side (unsigned: one compare).
         if (word == FrameView::kEmpty ||
-            key - FrameView::depthKeyOf(word) + tolerance_ > twice_tolerance) {
+            leaf.key - FrameView::depthKeyOf(word) + leaf.tolerance > 2 * leaf.tolerance) {
           continue;
         }
-        const std::uint32_t weight =
-            (row_weight * column_weight_[x - columns.begin]) >> kProductShift;  // Q12
-        SmoothSplats::Sums& sum = sums_[row + static_cast<std::size_t>(x)];
-        sum.r += weight * colour.r;
-        sum.g += weight * colour.g;
-        sum.b += weight * colour.b;
+        const std::uint32_t weight = (row_weight * leaf.column_weight[i]) >> kProductShift;  // Q12
+        SmoothSplats::Sums& sum = sums[i];
+        sum.r += weight * leaf.colour.r;
+        sum.g += weight * leaf.colour.g;
+        sum.b += weight * leaf.colour.b;
         sum.weight += weight;
       }
     }
   }
+
+#ifdef OCTOPOINT_SMOOTH_SSE2
+  // addScalar four pixels at a time, the same sums (wrapping 32-bit adds of the same products). A
+  // pixel's four sums are one 16-byte vector: one multiply-add (pmaddwd of [w, 0] x [r, 0, g, 0,
+  // b, 0, 1, 0], every factor below 2^15) gives [w r, w g, w b, w]. The depth test is addScalar's
+  // as a signed compare of the values with their top bit flipped.
+  struct Sse2Leaf {
+    explicit Sse2Leaf(const LeafReach& leaf)
+        : colour(_mm_setr_epi32(leaf.colour.r, leaf.colour.g, leaf.colour.b, 1)),
+          key(_mm_set1_epi32(static_cast<int>(leaf.key + leaf.tolerance))),
+          limit(_mm_set1_epi32(static_cast<int>((2 * leaf.tolerance) ^ 0x8000'0000U))) {}
+    __m128i colour;  // 16-bit [c, 0] pairs
+    __m128i key;     // key + tolerance: minus a pixel's key, the distance to test
+    __m128i limit;   // 2 tolerance, top bit flipped
+  };
+  __attribute__((always_inline)) static inline void addFour(const Sse2Leaf& leaf,
+                                                            __m128i row_weight,
+                                                            const std::uint16_t* column_weight,
+                                                            const std::uint32_t* words,
+                                                            SmoothSplats::Sums* sums) {
+    static_assert(sizeof(SmoothSplats::Sums) == 16);
+    const __m128i word = _mm_loadu_si128(reinterpret_cast<const __m128i*>(words));
+    const __m128i distance = _mm_sub_epi32(leaf.key, _mm_srli_epi32(word, 8));
+    const __m128i outside = _mm_or_si128(
+        _mm_cmpgt_epi32(_mm_xor_si128(distance, _mm_set1_epi32(static_cast<int>(0x8000'0000U))),
+                        leaf.limit),
+        _mm_cmpeq_epi32(word, _mm_set1_epi32(-1)));
+    if (_mm_movemask_epi8(outside) == 0xFFFF) return;
+    const __m128i columns = _mm_unpacklo_epi16(
+        _mm_loadl_epi64(reinterpret_cast<const __m128i*>(column_weight)), _mm_setzero_si128());
+    const __m128i weight = _mm_andnot_si128(
+        outside, _mm_srli_epi32(_mm_madd_epi16(columns, row_weight), kProductShift));
+    auto* sum = reinterpret_cast<__m128i*>(sums);
+    _mm_storeu_si128(sum,
+                     _mm_add_epi32(_mm_loadu_si128(sum),
+                                   _mm_madd_epi16(_mm_shuffle_epi32(weight, 0x00), leaf.colour)));
+    _mm_storeu_si128(sum + 1,
+                     _mm_add_epi32(_mm_loadu_si128(sum + 1),
+                                   _mm_madd_epi16(_mm_shuffle_epi32(weight, 0x55), leaf.colour)));
+    _mm_storeu_si128(sum + 2,
+                     _mm_add_epi32(_mm_loadu_si128(sum + 2),
+                                   _mm_madd_epi16(_mm_shuffle_epi32(weight, 0xAA), leaf.colour)));
+    _mm_storeu_si128(sum + 3,
+                     _mm_add_epi32(_mm_loadu_si128(sum + 3),
+                                   _mm_madd_epi16(_mm_shuffle_epi32(weight, 0xFF), leaf.colour)));
+  }
+
+  // The columns [0, n) of every row with n the most a multiple of 4 allows; returns n.
+  static std::size_t addVectorsSse2(const LeafReach& leaf) {
+    const Sse2Leaf vectors(leaf);
+    const std::size_t n = leaf.columns & ~std::size_t{3};
+    for (std::size_t r = 0; r < leaf.rows; ++r) {
+      const __m128i row_weight = _mm_set1_epi32(leaf.row_weight[r]);  // Q8, [w, 0] pairs
+      const std::size_t at = r * leaf.stride;
+      for (std::size_t i = 0; i < n; i += 4) {
+        addFour(vectors, row_weight, leaf.column_weight + i, leaf.words + at + i,
+                leaf.sums + at + i);
+      }
+    }
+    return n;
+  }
+
+  // addVectorsSse2 eight pixels at a time (two pixels' sums to a 32-byte vector), the last four
+  // as it does them.
+  __attribute__((target("avx2"))) static std::size_t addVectorsAvx2(const LeafReach& leaf) {
+    const Sse2Leaf vectors(leaf);
+    const __m256i colour = _mm256_broadcastsi128_si256(vectors.colour);
+    const __m256i flip = _mm256_set1_epi32(static_cast<int>(0x8000'0000U));
+    const __m256i key = _mm256_broadcastsi128_si256(vectors.key);
+    const __m256i limit = _mm256_broadcastsi128_si256(vectors.limit);
+    const __m256i empty = _mm256_set1_epi32(-1);
+    // Pixels 2k and 2k + 1's weights, each in the four lanes of its half.
+    const __m256i pair[4] = {
+        _mm256_setr_epi32(0, 0, 0, 0, 1, 1, 1, 1), _mm256_setr_epi32(2, 2, 2, 2, 3, 3, 3, 3),
+        _mm256_setr_epi32(4, 4, 4, 4, 5, 5, 5, 5), _mm256_setr_epi32(6, 6, 6, 6, 7, 7, 7, 7)};
+    const std::size_t eights = leaf.columns & ~std::size_t{7};
+    const std::size_t n = leaf.columns & ~std::size_t{3};
+    for (std::size_t r = 0; r < leaf.rows; ++r) {
+      const __m256i rows = _mm256_set1_epi32(leaf.row_weight[r]);
+      const std::uint32_t* const words = leaf.words + r * leaf.stride;
+      SmoothSplats::Sums* const sums = leaf.sums + r * leaf.stride;
+      for (std::size_t i = 0; i < eights; i += 8) {
+        const __m256i word = _mm256_loadu_si256(reinterpret_cast<const __m256i*>(words + i));
+        const __m256i distance = _mm256_sub_epi32(key, _mm256_srli_epi32(word, 8));
+        const __m256i outside =
+            _mm256_or_si256(_mm256_cmpgt_epi32(_mm256_xor_si256(distance, flip), limit),
+                            _mm256_cmpeq_epi32(word, empty));
+        if (_mm256_movemask_epi8(outside) == -1) continue;
+        const __m256i columns = _mm256_cvtepu16_epi32(
+            _mm_loadu_si128(reinterpret_cast<const __m128i*>(leaf.column_weight + i)));
+        const __m256i weight = _mm256_andnot_si256(
+            outside, _mm256_srli_epi32(_mm256_madd_epi16(columns, rows), kProductShift));
+        auto* sum = reinterpret_cast<__m256i*>(sums + i);
+        for (int k = 0; k < 4; ++k) {
+          const __m256i weights = _mm256_permutevar8x32_epi32(weight, pair[k]);
+          _mm256_storeu_si256(sum + k, _mm256_add_epi32(_mm256_loadu_si256(sum + k),
+                                                        _mm256_madd_epi16(weights, colour)));
+        }
+      }
+      if (n > eights) {
+        addFour(vectors, _mm256_castsi256_si128(rows), leaf.column_weight + eights, words + eights,
+                sums + eights);
+      }
+    }
+    return n;
+  }
+#endif
 
   const std::uint8_t* node_;
   const std::uint8_t* leaf_;
@@ -186,6 +331,7 @@ class BlendWalk {
   std::uint64_t inverse_x_, inverse_y_;  // kKernelSteps 2^32 / radius: distance to table step
   std::uint32_t tolerance_;              // depth-key units
   SubtreeClip clip_;
+  const bool avx2_ = simdDecoderAvailable();  // addRow's eight-pixel steps (same sums)
   bool aborted_ = false;
 };
 
@@ -304,14 +450,17 @@ bool SmoothSplats::resolveToRgb(const FrameView& frame, const PaletteRgb& palett
     return false;
   }
   const std::span<const std::uint32_t> words = frame.pixels();
-  std::size_t at = 0;
-  for (std::int32_t y = 0; y < height_; ++y) {
-    const bool blended_row = blended_ && y >= blended_rect_.y_begin && y < blended_rect_.y_end;
-    for (std::int32_t x = 0; x < width_; ++x, ++at) {
+  const auto width = static_cast<std::size_t>(width_);
+  // Pixels [begin, end) of row `row_at`: palette colours of the box frame, or the blended ones.
+  const auto resolveRun = [&](std::size_t row_at, std::int32_t begin, std::int32_t end,
+                              bool blended) {
+    for (std::size_t at = row_at + static_cast<std::size_t>(begin),
+                     stop = row_at + static_cast<std::size_t>(end);
+         at < stop; ++at) {
       const std::uint32_t word = words[at];
       Rgb colour = background;
       if (word != FrameView::kEmpty) {
-        if (blended_row && x >= blended_rect_.x_begin && x < blended_rect_.x_end) {
+        if (blended) {
           const std::uint32_t packed = sums_[at].r;
           colour = {static_cast<std::uint8_t>(packed >> 16), static_cast<std::uint8_t>(packed >> 8),
                     static_cast<std::uint8_t>(packed)};
@@ -323,6 +472,16 @@ bool SmoothSplats::resolveToRgb(const FrameView& frame, const PaletteRgb& palett
       rgb[3 * at + 1] = colour.g;
       rgb[3 * at + 2] = colour.b;
     }
+  };
+  for (std::int32_t y = 0; y < height_; ++y) {
+    const std::size_t row_at = static_cast<std::size_t>(y) * width;
+    if (!blended_ || y < blended_rect_.y_begin || y >= blended_rect_.y_end) {
+      resolveRun(row_at, 0, width_, false);
+      continue;
+    }
+    resolveRun(row_at, 0, blended_rect_.x_begin, false);
+    resolveRun(row_at, blended_rect_.x_begin, blended_rect_.x_end, true);
+    resolveRun(row_at, blended_rect_.x_end, width_, false);
   }
   return true;
 }

@@ -115,6 +115,7 @@ Viewer::Viewer(const ViewerOptions& options, const ModelView* model, net::ModelS
             }
           }) {
   if (model_ != nullptr) {
+    palette_ = paletteOf(*model_);
     StyleOptions style;
     style.background = kBackground;
     // The colour style needs no normals: setOptions cannot refuse it.
@@ -193,8 +194,40 @@ void Viewer::moveLight(int azimuth_steps, int elevation_steps) {
   applyStyle(options);
 }
 
+void Viewer::nextSplatMode() {
+  if (model_ == nullptr) {
+    cli::printError("octopoint-view",
+                    "smooth splats: not for a streamed model yet; open a model file or an "
+                    "embedded model");
+    return;
+  }
+  splats_ = splats_ == SplatMode::kBox ? SplatMode::kSmooth : SplatMode::kBox;
+  resolve_again_ = true;
+}
+
+bool Viewer::resolveSmooth(const FrameInfo& info, std::span<std::uint8_t> rgb) {
+  const LevelView* level = info.depth > 0 ? model_->levelOfDepth(info.depth) : nullptr;
+  FrameSetup setup;
+  if (level == nullptr || info.view.fill || styler_->options().style != Style::kColour ||
+      buildFrameSetup(cameraOf(info), info.depth, kDefaultFractionBits, &setup) !=
+          CameraError::kNone) {
+    return false;
+  }
+  if (!blend_frame_ || blend_frame_->width() != info.width ||
+      blend_frame_->height() != info.height) {  // allocates on a new size only
+    blend_frame_.emplace(info.width, info.height);
+    smooth_.emplace(info.width, info.height);
+  }
+  blend_frame_->clear();
+  return renderSmooth(InteractiveConfig{}.variant, *level, setup, *blend_frame_, *smooth_,
+                      palette_) &&
+         smooth_->resolveToRgb(*blend_frame_, palette_, kBackground, rgb);
+}
+
 void Viewer::resolveStyled(const Framebuffer& frame, const FrameInfo& info,
                            std::span<std::uint8_t> rgb) {
+  smooth_shown_ = splats_ == SplatMode::kSmooth && resolveSmooth(info, rgb);
+  if (smooth_shown_) return;
   const Camera camera = cameraOf(info);
   FrameSetup setup;
   const bool styled =
@@ -226,6 +259,9 @@ KeyBindings Viewer::keyTable(Viewer* viewer) {
   keys.describe("wheel", "zoom in (away from you) and out, one step of 5/4 per notch");
   keys.press({SDLK_f}, "f", "hole filling on and off",
              [viewer](std::int64_t now) { viewer->send(ViewEventKind::kToggleFill, now); });
+  keys.press({SDLK_m}, "m",
+             "box or smooth splats (magnified voxels blended; colour style, filling off)",
+             [viewer](std::int64_t) { viewer->nextSplatMode(); });
   keys.press({SDLK_r}, "r", "back to the initial view",
              [viewer](std::int64_t now) { viewer->send(ViewEventKind::kReset, now); });
   keys.press({SDLK_s}, "s", "save the frame as octopoint-view-N.png in the current directory",
@@ -376,6 +412,10 @@ void Viewer::defaultOverlay(OverlayLines& lines) const {
                 static_cast<long long>(info.render_us / 100 % 10), info.depth, info.width,
                 info.height, zoomOf(info.view.zoom), info.view.fill ? "  fill" : "");
   lines.emplace_back(line);
+  if (splats_ == SplatMode::kSmooth) {
+    lines.emplace_back(smooth_shown_ ? "smooth splats"
+                                     : "smooth splats: off with filling or a style");
+  }
   if (styler_ && styler_->options().style != Style::kColour) {
     const StyleOptions& style = styler_->options();
     std::snprintf(line, sizeof line, "%s  light %.0f,%.0f",
@@ -415,10 +455,11 @@ void Viewer::save() {
                   signedDegreesOf(styler_->options().light.elevation));
     style = text;
   }
-  std::printf("saved %s (%s): --size %dx%d --yaw %.2f --pitch %.2f --zoom %.4f --depth %d%s%s\n",
+  const char* splats = smooth_shown_ ? " --splats smooth" : "";
+  std::printf("saved %s (%s): --size %dx%d --yaw %.2f --pitch %.2f --zoom %.4f --depth %d%s%s%s\n",
               name.c_str(), info.source == FrameSource::kFine ? "H" : "L", info.width, info.height,
               degreesOf(info.view.yaw), degreesOf(info.view.pitch), zoomOf(info.view.zoom),
-              info.depth, info.view.fill ? " --fill" : "", style.c_str());
+              info.depth, info.view.fill ? " --fill" : "", style.c_str(), splats);
   std::fflush(stdout);
 }
 

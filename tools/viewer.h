@@ -15,6 +15,7 @@
 #include "octopoint/http.h"
 #include "octopoint/interactive.h"
 #include "octopoint/model.h"
+#include "octopoint/smooth.h"
 #include "octopoint/styles.h"
 #include "tools/model_source.h"
 #include "tools/view_keys.h"
@@ -64,6 +65,11 @@ class Viewer {
   void moveLight(int azimuth_steps, int elevation_steps);
   void applyStyle(const StyleOptions& options);
   void resolveStyled(const Framebuffer& frame, const FrameInfo& info, std::span<std::uint8_t> rgb);
+  // `m`: box or smooth splats (docs/splats.md).
+  void nextSplatMode();
+  // Draws the frame `info` describes smoothly into blend_frame_ and resolves it into `rgb`; false
+  // where smooth splats do not apply (a style other than colour, hole filling, no depth drawn).
+  bool resolveSmooth(const FrameInfo& info, std::span<std::uint8_t> rgb);
 
   const ViewerOptions options_;
   const ModelView* model_;
@@ -74,6 +80,13 @@ class Viewer {
   KeyBindings keys_;
   Overlay overlay_;
   std::optional<FrameStyler> styler_;  // none for a stream: the styles need a model with normals
+  SplatMode splats_ = SplatMode::kBox;
+  // Smooth splats are drawn here, on the window's thread, at the size of the frame on screen:
+  // the render threads draw box frames (with normals, for the styles), a blend needs colour ones.
+  std::optional<Framebuffer> blend_frame_;
+  std::optional<SmoothSplats> smooth_;
+  PaletteRgb palette_{};
+  bool smooth_shown_ = false;  // the frame on screen was blended
   // Turns a frame into RGB888 for the screen and for `s` (default: its palette colours).
   std::function<void(const Framebuffer&, const FrameInfo&, std::span<std::uint8_t>)> resolve_;
 
