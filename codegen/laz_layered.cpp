@@ -157,9 +157,9 @@ class Point14V3 final : public LayeredItemDecoder {
     std::uint32_t last_number = c->last[kReturns] & 15u;
     std::uint32_t last_count = c->last[kReturns] >> 4;
     // the last point's return (first? last?) and whether its time changed choose the model
-    const std::uint32_t last_return =
-        (last_number == 1 ? 1u : 0u) | (last_number >= last_count ? 2u : 0u) |
-        (c->gps_changed ? 4u : 0u);
+    const std::uint32_t last_return = (last_number == 1 ? 1u : 0u) |
+                                      (last_number >= last_count ? 2u : 0u) |
+                                      (c->gps_changed ? 4u : 0u);
     const std::uint32_t changed = xy.decodeSymbol(c->changed[last_return]);
     if (changed & 64) {  // another scanner channel
       const std::uint32_t next = (current_ + xy.decodeSymbol(c->channel) + 1) & 3u;
@@ -186,9 +186,9 @@ class Point14V3 final : public LayeredItemDecoder {
         number = (last_number + 15) & 15u;
         break;
       case 3:
-        number = gps_changed ? xy.decodeSymbol(c->return_number[last_number])
-                             : (last_number + xy.decodeSymbol(c->return_number_same_time) + 2) &
-                                   15u;
+        number = gps_changed
+                     ? xy.decodeSymbol(c->return_number[last_number])
+                     : (last_number + xy.decodeSymbol(c->return_number_same_time) + 2) & 15u;
         break;
       default:
         break;
@@ -228,9 +228,8 @@ class Point14V3 final : public LayeredItemDecoder {
       const std::uint8_t byte = last[kFlags14];
       const std::uint32_t context = (byte & 15u) | (((byte >> 6) & 1u) << 4) | ((byte >> 7) << 5);
       const std::uint32_t flags = layers_[kFlagsLayer].decoder().decodeSymbol(c->flags[context]);
-      last[kFlags14] = static_cast<std::uint8_t>((flags & 15u) | (byte & 0x30u) |
-                                                 (((flags >> 4) & 1u) << 6) |
-                                                 (((flags >> 5) & 1u) << 7));
+      last[kFlags14] = static_cast<std::uint8_t>(
+          (flags & 15u) | (byte & 0x30u) | (((flags >> 4) & 1u) << 6) | (((flags >> 5) & 1u) << 7));
     }
     if (layers_[kIntensityLayer].present()) {
       const std::uint32_t context = (position << 1) | gps_changed;
@@ -384,20 +383,16 @@ class Rgb14V3 final : public LayeredItemDecoder {
       const std::uint32_t used = d.decodeSymbol(c->nir_used);
       for (std::size_t byte = 0; byte < 2; ++byte) {
         if (used & (1u << byte)) {
-          last[6 + byte] = foldByte(
-              last[6 + byte] + static_cast<std::int32_t>(d.decodeSymbol(c->nir_diff[byte])));
+          last[6 + byte] = foldByte(last[6 + byte] +
+                                    static_cast<std::int32_t>(d.decodeSymbol(c->nir_diff[byte])));
         }
       }
     }
     std::memcpy(item + 6, last + 6, 2);
   }
 
-  int overrunLayer() const override {
-    return rgb_.overrun() ? 0 : nir_layer_.overrun() ? 1 : -1;
-  }
-  int inexactLayer() const override {
-    return !rgb_.exact() ? 0 : !nir_layer_.exact() ? 1 : -1;
-  }
+  int overrunLayer() const override { return rgb_.overrun() ? 0 : nir_layer_.overrun() ? 1 : -1; }
+  int inexactLayer() const override { return !rgb_.exact() ? 0 : !nir_layer_.exact() ? 1 : -1; }
   std::string layerName(std::size_t layer) const override {
     return std::string(nir_ ? "RGBNIR14" : "RGB14") + (layer == 0 ? " layer RGB" : " layer NIR");
   }
@@ -468,8 +463,8 @@ class Bytes14V3 final : public LayeredItemDecoder {
     BytesContext& c = contexts_[current_];
     for (std::size_t i = 0; i < count_; ++i) {
       if (layers_[i].present()) {
-        last[i] = foldByte(last[i] +
-                           static_cast<std::int32_t>(layers_[i].decoder().decodeSymbol(c.models[i])));
+        last[i] = foldByte(
+            last[i] + static_cast<std::int32_t>(layers_[i].decoder().decodeSymbol(c.models[i])));
       }
     }
     std::memcpy(item, last, count_);

@@ -27,7 +27,8 @@ class LayeredItemDecoder {
   // The layers of the item in a chunk (and so the 32-bit sizes it has in the chunk's head).
   virtual std::size_t layerCount() const = 0;
   // Starts a chunk: its first point's item, the item's layers, the first point's scanner channel.
-  virtual void start(const std::uint8_t* first, std::span<const std::span<const std::uint8_t>> layers,
+  virtual void start(const std::uint8_t* first,
+                     std::span<const std::span<const std::uint8_t>> layers,
                      std::uint32_t channel) = 0;
   // Decodes the next point's item. The caller sets `channel` to 0 before each point; POINT14
   // (which goes first) sets it to the point's scanner channel when the channel changes, and only
