@@ -5,7 +5,8 @@
 // The real scan defaults to data/scans/milk_cartoon_all_small_clorox.pcd (scripts/fetch-scans);
 // OCTOPOINT_BENCH_SCAN names another. BM_PrepareStreamedLas and BM_PrepareStreamedLaz: the
 // streamed preparer on LAS and LAZ files of the procedural landscape, one thread against two;
-// BM_DecodeLandscape: reading alone, LAS against LAZ, on one thread.
+// BM_DecodeLandscape: reading alone, LAS against LAZ, on one thread, of point format 2 (LAZ's
+// point-wise items) and 7 (its layered items, LAS 1.4).
 #include <benchmark/benchmark.h>
 
 #include <cmath>
@@ -13,6 +14,7 @@
 #include <filesystem>
 #include <map>
 #include <random>
+#include <tuple>
 
 #include "codegen/model_writer.h"
 #include "codegen/point_source.h"
@@ -107,15 +109,17 @@ BENCHMARK(BM_PrepareSyntheticScan)
 // model, on one thread and on two side by side: what the second core buys. The file is written
 // once into the temporary directory and removed at exit. Reading it is in the time (the page cache
 // holds it after the first iteration, as it would after make_large_scan).
-const std::string& landscapeLas(std::size_t points, bool laz = false) {
-  static std::map<std::pair<std::size_t, bool>, std::string> written;
-  std::string& path = written[{points, laz}];
+const std::string& landscapeLas(std::size_t points, bool laz = false, int format = 2) {
+  static std::map<std::tuple<std::size_t, bool, int>, std::string> written;
+  std::string& path = written[{points, laz, format}];
   if (!path.empty()) return path;
   path = (std::filesystem::temp_directory_path() /
-          ("octopoint_bench_" + std::to_string(points) + (laz ? ".laz" : ".las")))
+          ("octopoint_bench_" + std::to_string(points) + "_format" + std::to_string(format) +
+           (laz ? ".laz" : ".las")))
              .string();
   octopoint::testing::LasLayout layout;
   layout.laz = laz;
+  layout.format = format;
   octopoint::testing::LasWriter writer(path, layout);
   const octopoint::testing::Landscape landscape;
   for (std::size_t i = 0; i < points; ++i) writer.add(landscape.point(i));
@@ -180,7 +184,8 @@ BENCHMARK(BM_PrepareStreamedLaz)
 // intensity), as a pass reads them: LAZ points per second per core, and LAS beside it.
 void BM_DecodeLandscape(benchmark::State& state) {
   const auto points = static_cast<std::size_t>(state.range(0));
-  const std::string& path = landscapeLas(points, state.range(1) != 0);
+  const std::string& path =
+      landscapeLas(points, state.range(1) != 0, static_cast<int>(state.range(2)));
   const auto source = openPointSource(path);
   PointChunk chunk;
   for (auto _ : state) {
@@ -195,8 +200,8 @@ void BM_DecodeLandscape(benchmark::State& state) {
       benchmark::Counter::kIsRate);
 }
 BENCHMARK(BM_DecodeLandscape)
-    ->ArgsProduct({{10'000'000}, {0, 1}})
-    ->ArgNames({"points", "laz"})
+    ->ArgsProduct({{10'000'000}, {0, 1}, {2, 7}})
+    ->ArgNames({"points", "laz", "format"})
     ->Unit(benchmark::kMillisecond)
     ->MeasureProcessCPUTime()
     ->UseRealTime();

@@ -77,6 +77,7 @@ class ByteInput {
 class MemoryInput final : public ByteInput {
  public:
   explicit MemoryInput(std::span<const std::uint8_t> bytes) : bytes_(bytes) {}
+  void assign(std::span<const std::uint8_t> bytes) { bytes_ = bytes; }
   std::span<const std::uint8_t> more() override {
     const auto out = bytes_;
     bytes_ = {};

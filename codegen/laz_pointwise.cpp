@@ -370,64 +370,25 @@ class GpsTime11V1 final : public ItemDecoder {
   IntegerModels time_{32, 6};
 };
 
-// RGB12 version 2: which of the six colour bytes changed, then each changed byte as a difference,
-// green and blue predicted from red's change (the channels of a colour tend to move together).
+// RGB12 version 2: the colour predicted from the last point's (decodeRgb).
 class Rgb12V2 final : public ItemDecoder {
  public:
   explicit Rgb12V2(ArithmeticDecoder& decoder) : d_(decoder) {}
 
   void start(const std::uint8_t* first) override {
-    used_.reset();
-    for (auto& model : diff_) model.reset();
-    for (std::size_t c = 0; c < 3; ++c) last_[c] = load<std::uint16_t>(first + 2 * c);
+    models_.reset();
+    std::memcpy(last_.data(), first, 6);
   }
 
   void decode(std::uint8_t* item) override {
-    const std::uint32_t used = d_.decodeSymbol(used_);
-    std::array<std::uint32_t, 3> rgb{};
-    const auto lo = [](std::uint32_t v) { return static_cast<std::int32_t>(v & 0xff); };
-    const auto hi = [](std::uint32_t v) { return static_cast<std::int32_t>(v >> 8); };
-    rgb[0] = (used & 1) ? foldByte(symbol(0) + lo(last_[0])) : lo(last_[0]);
-    rgb[0] |=
-        (used & 2) ? std::uint32_t{foldByte(symbol(1) + hi(last_[0]))} << 8 : last_[0] & 0xff00u;
-    if (used & 64) {
-      std::int32_t diff = lo(rgb[0]) - lo(last_[0]);
-      rgb[1] = (used & 4) ? foldByte(symbol(2) + clampByte(diff + lo(last_[1]))) : lo(last_[1]);
-      if (used & 16) {
-        diff = (diff + (lo(rgb[1]) - lo(last_[1]))) / 2;
-        rgb[2] = foldByte(symbol(4) + clampByte(diff + lo(last_[2])));
-      } else {
-        rgb[2] = lo(last_[2]);
-      }
-      diff = hi(rgb[0]) - hi(last_[0]);
-      rgb[1] |= (used & 8)
-                    ? std::uint32_t{foldByte(symbol(3) + clampByte(diff + hi(last_[1])))} << 8
-                    : last_[1] & 0xff00u;
-      if (used & 32) {
-        diff = (diff + (hi(rgb[1]) - hi(last_[1]))) / 2;
-        rgb[2] |= std::uint32_t{foldByte(symbol(5) + clampByte(diff + hi(last_[2])))} << 8;
-      } else {
-        rgb[2] |= last_[2] & 0xff00u;
-      }
-    } else {  // a grey: all three channels alike
-      rgb[1] = rgb[2] = rgb[0];
-    }
-    for (std::size_t c = 0; c < 3; ++c) {
-      last_[c] = static_cast<std::uint16_t>(rgb[c]);
-      store(item + 2 * c, last_[c]);
-    }
+    decodeRgb(d_, models_, last_.data(), last_.data());
+    std::memcpy(item, last_.data(), 6);
   }
 
  private:
-  std::int32_t symbol(std::size_t byte) {
-    return static_cast<std::int32_t>(d_.decodeSymbol(diff_[byte]));
-  }
-
   ArithmeticDecoder& d_;
-  std::array<std::uint16_t, 3> last_{};
-  SymbolModel used_{128};
-  std::array<SymbolModel, 6> diff_{SymbolModel(256), SymbolModel(256), SymbolModel(256),
-                                   SymbolModel(256), SymbolModel(256), SymbolModel(256)};
+  std::array<std::uint8_t, 6> last_{};
+  RgbModels models_;
 };
 
 // RGB12 version 1: each changed byte through one integer compressor, a context per byte.
@@ -467,60 +428,25 @@ class Rgb12V1 final : public ItemDecoder {
   IntegerModels bytes_{8, 6};
 };
 
-// WAVEPACKET13 version 1: the descriptor index, the offset of the waveform (same, following the
-// last packet, a difference, or whole), and the packet's size, return point and direction.
+// WAVEPACKET13 version 1: the packet predicted from the last point's (decodeWavePacket).
 class WavePacket13V1 final : public ItemDecoder {
  public:
   explicit WavePacket13V1(ArithmeticDecoder& decoder) : d_(decoder) {}
 
   void start(const std::uint8_t* first) override {
-    last_diff_ = 0;
-    last_offset_symbol_ = 0;
-    index_.reset();
-    for (auto& model : offset_kind_) model.reset();
-    offset_diff_.reset();
-    size_.reset();
-    return_point_.reset();
-    xyz_.reset();
-    std::memcpy(last_.data(), first + 1, last_.size());
+    models_.reset();
+    std::memcpy(last_.data(), first, last_.size());
   }
 
   void decode(std::uint8_t* item) override {
-    item[0] = static_cast<std::uint8_t>(d_.decodeSymbol(index_));
-    const std::uint8_t* last = last_.data();
-    std::uint64_t offset = load<std::uint64_t>(last);
-    const std::uint32_t last_size = load<std::uint32_t>(last + 8);
-    last_offset_symbol_ = d_.decodeSymbol(offset_kind_[last_offset_symbol_]);
-    if (last_offset_symbol_ == 1) {
-      offset += last_size;
-    } else if (last_offset_symbol_ == 2) {
-      last_diff_ = offset_diff_.decode(d_, last_diff_, 0);
-      offset += static_cast<std::uint64_t>(std::int64_t{last_diff_});
-    } else if (last_offset_symbol_ == 3) {
-      const std::uint64_t low = d_.readInt();
-      offset = (std::uint64_t{d_.readInt()} << 32) | low;
-    }
-    std::array<std::uint8_t, 28> next{};
-    store(next.data(), offset);
-    store(next.data() + 8, size_.decode(d_, static_cast<std::int32_t>(last_size), 0));
-    store(next.data() + 12, return_point_.decode(d_, load<std::int32_t>(last + 12), 0));
-    for (std::uint32_t axis = 0; axis < 3; ++axis) {
-      const std::size_t at = 16 + 4 * axis;
-      store(next.data() + at, xyz_.decode(d_, load<std::int32_t>(last + at), axis));
-    }
-    last_ = next;
-    std::memcpy(item + 1, next.data(), next.size());
+    decodeWavePacket(d_, models_, last_.data(), last_.data());
+    std::memcpy(item, last_.data(), last_.size());
   }
 
  private:
   ArithmeticDecoder& d_;
-  std::array<std::uint8_t, 28> last_{};
-  std::int32_t last_diff_ = 0;
-  std::uint32_t last_offset_symbol_ = 0;
-  SymbolModel index_{256};
-  std::array<SymbolModel, 4> offset_kind_{SymbolModel(4), SymbolModel(4), SymbolModel(4),
-                                          SymbolModel(4)};
-  IntegerModels offset_diff_{32, 1}, size_{32, 1}, return_point_{32, 1}, xyz_{32, 3};
+  std::array<std::uint8_t, kWavePacketBytes> last_{};
+  WavePacketModels models_;
 };
 
 // BYTE (extra bytes) version 2: each byte's difference from the last point's, a model per byte.
@@ -573,6 +499,89 @@ class BytesV1 final : public ItemDecoder {
 };
 
 }  // namespace
+
+void RgbModels::reset() {
+  used.reset();
+  for (SymbolModel& model : diff) model.reset();
+}
+
+// Which of the six colour bytes changed, then each changed byte as a difference, green and blue
+// predicted from red's change (the channels of a colour tend to move together).
+void decodeRgb(ArithmeticDecoder& d, RgbModels& models, const std::uint8_t* last_bytes,
+               std::uint8_t* out) {
+  std::array<std::uint16_t, 3> last{};
+  for (std::size_t c = 0; c < 3; ++c) last[c] = load<std::uint16_t>(last_bytes + 2 * c);
+  const auto symbol = [&](std::size_t byte) {
+    return static_cast<std::int32_t>(d.decodeSymbol(models.diff[byte]));
+  };
+  const std::uint32_t used = d.decodeSymbol(models.used);
+  std::array<std::uint32_t, 3> rgb{};
+  const auto lo = [](std::uint32_t v) { return static_cast<std::int32_t>(v & 0xff); };
+  const auto hi = [](std::uint32_t v) { return static_cast<std::int32_t>(v >> 8); };
+  rgb[0] = (used & 1) ? foldByte(symbol(0) + lo(last[0])) : lo(last[0]);
+  rgb[0] |= (used & 2) ? std::uint32_t{foldByte(symbol(1) + hi(last[0]))} << 8 : last[0] & 0xff00u;
+  if (used & 64) {
+    std::int32_t diff = lo(rgb[0]) - lo(last[0]);
+    rgb[1] = (used & 4) ? foldByte(symbol(2) + clampByte(diff + lo(last[1]))) : lo(last[1]);
+    if (used & 16) {
+      diff = (diff + (lo(rgb[1]) - lo(last[1]))) / 2;
+      rgb[2] = foldByte(symbol(4) + clampByte(diff + lo(last[2])));
+    } else {
+      rgb[2] = lo(last[2]);
+    }
+    diff = hi(rgb[0]) - hi(last[0]);
+    rgb[1] |= (used & 8) ? std::uint32_t{foldByte(symbol(3) + clampByte(diff + hi(last[1])))} << 8
+                         : last[1] & 0xff00u;
+    if (used & 32) {
+      diff = (diff + (hi(rgb[1]) - hi(last[1]))) / 2;
+      rgb[2] |= std::uint32_t{foldByte(symbol(5) + clampByte(diff + hi(last[2])))} << 8;
+    } else {
+      rgb[2] |= last[2] & 0xff00u;
+    }
+  } else {  // a grey: all three channels alike
+    rgb[1] = rgb[2] = rgb[0];
+  }
+  for (std::size_t c = 0; c < 3; ++c) store(out + 2 * c, static_cast<std::uint16_t>(rgb[c]));
+}
+
+void WavePacketModels::reset() {
+  last_diff = 0;
+  last_offset_symbol = 0;
+  index.reset();
+  for (auto& model : offset_kind) model.reset();
+  offset_diff.reset();
+  size.reset();
+  return_point.reset();
+  xyz.reset();
+}
+
+// The descriptor index, the offset of the waveform (same, following the last packet, a
+// difference, or whole), and the packet's size, return point and direction.
+void decodeWavePacket(ArithmeticDecoder& d, WavePacketModels& models, const std::uint8_t* last,
+                      std::uint8_t* out) {
+  std::array<std::uint8_t, kWavePacketBytes> next{};
+  next[0] = static_cast<std::uint8_t>(d.decodeSymbol(models.index));
+  std::uint64_t offset = load<std::uint64_t>(last + 1);
+  const std::uint32_t last_size = load<std::uint32_t>(last + 9);
+  models.last_offset_symbol = d.decodeSymbol(models.offset_kind[models.last_offset_symbol]);
+  if (models.last_offset_symbol == 1) {
+    offset += last_size;
+  } else if (models.last_offset_symbol == 2) {
+    models.last_diff = models.offset_diff.decode(d, models.last_diff, 0);
+    offset += static_cast<std::uint64_t>(std::int64_t{models.last_diff});
+  } else if (models.last_offset_symbol == 3) {
+    const std::uint64_t low = d.readInt();
+    offset = (std::uint64_t{d.readInt()} << 32) | low;
+  }
+  store(next.data() + 1, offset);
+  store(next.data() + 9, models.size.decode(d, static_cast<std::int32_t>(last_size), 0));
+  store(next.data() + 13, models.return_point.decode(d, load<std::int32_t>(last + 13), 0));
+  for (std::uint32_t axis = 0; axis < 3; ++axis) {
+    const std::size_t at = 17 + 4 * axis;
+    store(next.data() + at, models.xyz.decode(d, load<std::int32_t>(last + at), axis));
+  }
+  std::memcpy(out, next.data(), next.size());
+}
 
 std::string itemName(const Item& item) {
   std::string name;

@@ -11,6 +11,7 @@
 
 #include "codegen/laz_arithmetic.h"
 #include "codegen/laz_integer.h"
+#include "codegen/laz_layered.h"
 #include "codegen/laz_pointwise.h"
 #include "codegen/scan_header_check.h"
 
@@ -56,8 +57,16 @@ struct Chunk {
   std::uint64_t bytes = 0;
 };
 
-// The items each point format has, in order (extra bytes come after, as a BYTE item).
+// The items each point format has, in order (extra bytes come after, as a BYTE or BYTE14 item):
+// point-wise for formats 0 to 5, layered for 6 to 10.
 std::vector<ItemType> formatItems(int format) {
+  if (format >= 6) {
+    std::vector<ItemType> items = {ItemType::kPoint14};
+    if (format == 7) items.push_back(ItemType::kRgb14);
+    if (format == 8 || format == 10) items.push_back(ItemType::kRgbNir14);
+    if (format == 9 || format == 10) items.push_back(ItemType::kWavePacket14);
+    return items;
+  }
   std::vector<ItemType> items = {ItemType::kPoint10};
   if (format == 1 || format >= 3) items.push_back(ItemType::kGpsTime11);
   if (format == 2 || format == 3 || format == 5) items.push_back(ItemType::kRgb12);
@@ -74,7 +83,14 @@ std::uint16_t itemBytes(ItemType type) {
     case ItemType::kRgb12:
       return 6;
     case ItemType::kWavePacket13:
+    case ItemType::kWavePacket14:
       return 29;
+    case ItemType::kPoint14:
+      return 30;
+    case ItemType::kRgb14:
+      return 6;
+    case ItemType::kRgbNir14:
+      return 8;
     default:
       return 0;
   }
@@ -107,17 +123,20 @@ LazLayout readLaszipVlr(const InputFile& file, const LasHeader& header) {
     total += item.size;
     layout.items.push_back(item);
   }
-  if (compressor == static_cast<std::uint16_t>(Compressor::kLayered) || header.point_format > 5) {
-    refuse("LAZ of point format " + std::to_string(header.point_format) +
-           " with LASzip's layered compressor (LAS 1.4 items version 3) is not read yet; only the "
-           "point-wise items of formats 0 to 5");
-  }
   if (compressor != static_cast<std::uint16_t>(Compressor::kPointwise) &&
-      compressor != static_cast<std::uint16_t>(Compressor::kPointwiseChunked)) {
+      compressor != static_cast<std::uint16_t>(Compressor::kPointwiseChunked) &&
+      compressor != static_cast<std::uint16_t>(Compressor::kLayered)) {
     refuse("unknown LASzip compressor " + std::to_string(compressor) +
            " (1 point-wise, 2 point-wise chunked, 3 layered chunked)");
   }
   layout.compressor = static_cast<Compressor>(compressor);
+  const bool layered = layout.compressor == Compressor::kLayered;
+  if (layered != (header.point_format >= 6)) {
+    refuse("LASzip compressor " + std::to_string(compressor) + " for point format " +
+           std::to_string(header.point_format) +
+           ": formats 0 to 5 are read point-wise (compressors 1 and 2), 6 to 10 layered (3)");
+  }
+  const ItemType extra_bytes = layered ? ItemType::kByte14 : ItemType::kByte;
   // The items must be the point format's, in its order, then at most one BYTE item, and make up
   // exactly the record.
   const std::vector<ItemType> expected = formatItems(header.point_format);
@@ -125,8 +144,8 @@ LazLayout readLaszipVlr(const InputFile& file, const LasHeader& header) {
   for (const Item& item : layout.items) {
     const bool in_place = matched < expected.size()
                               ? item.type == expected[matched]
-                              : item.type == ItemType::kByte && matched == expected.size();
-    if (!in_place || (item.type != ItemType::kByte && item.size != itemBytes(item.type)) ||
+                              : item.type == extra_bytes && matched == expected.size();
+    if (!in_place || (item.type != extra_bytes && item.size != itemBytes(item.type)) ||
         item.size == 0) {
       refuse("the items (" + laz::itemName(item) + " of " + std::to_string(item.size) +
              " bytes, item " + std::to_string(matched + 1) + ") do not fit point format " +
@@ -141,22 +160,24 @@ LazLayout readLaszipVlr(const InputFile& file, const LasHeader& header) {
   }
   laz::ArithmeticDecoder probe;
   for (const Item& item : layout.items) {
-    if (!laz::pointwiseDecoder(item, probe)) {
+    if (layered ? !laz::layeredDecoder(item) : !laz::pointwiseDecoder(item, probe)) {
       refuse("unknown LAZ item " + laz::itemName(item) +
-             ": this reader knows versions 1 and 2 "
-             "of POINT10, GPSTIME11, RGB12 and BYTE, and WAVEPACKET13 version 1");
+             ": this reader knows versions 1 and 2 of POINT10, GPSTIME11, RGB12 and BYTE, "
+             "WAVEPACKET13 version 1, and version 3 of POINT14, RGB14, RGBNIR14, WAVEPACKET14 and "
+             "BYTE14");
     }
   }
-  if (layout.compressor == Compressor::kPointwiseChunked &&
+  if (layout.compressor != Compressor::kPointwise &&
       (layout.chunk_size == 0 ||
        (layout.chunk_size != kVariableChunks && layout.chunk_size > kMaxLazChunkPoints))) {
     refuse("chunks of " + std::to_string(layout.chunk_size) + " points are not read (1 to " +
            std::to_string(kMaxLazChunkPoints) + ", or variable)");
   }
+  const std::string kind = layered ? "layered" : "point-wise";
   layout.description = layout.compressor == Compressor::kPointwise ? "point-wise, one chunk"
                        : layout.chunk_size == kVariableChunks
-                           ? "point-wise, variable chunks"
-                           : "point-wise, chunks of " + std::to_string(layout.chunk_size);
+                           ? kind + ", variable chunks"
+                           : kind + ", chunks of " + std::to_string(layout.chunk_size);
   return layout;
 }
 
@@ -315,13 +336,19 @@ std::vector<Chunk> wholeFileChunk(const InputFile& file, const LasHeader& header
       Chunk{0, header.point_count, header.point_offset, header.points_end - header.point_offset}};
 }
 
-// One thread's chunk decoder: the arithmetic decoder and an item decoder per item.
+// One thread's chunk decoder: the arithmetic decoder and an item decoder per item (point-wise),
+// or the item decoders that read the layers (layered).
 class ChunkDecoder {
  public:
-  explicit ChunkDecoder(const LazLayout& layout) {
+  explicit ChunkDecoder(const LazLayout& layout)
+      : layered_(layout.compressor == Compressor::kLayered) {
     std::size_t at = 0;
     for (const Item& item : layout.items) {
-      items_.push_back({laz::pointwiseDecoder(item, decoder_), at});
+      if (layered_) {
+        layered_items_.push_back({laz::layeredDecoder(item), at});
+      } else {
+        items_.push_back({laz::pointwiseDecoder(item, decoder_), at});
+      }
       at += item.size;
     }
     record_bytes_ = at;
@@ -332,6 +359,10 @@ class ChunkDecoder {
               std::uint64_t skip, std::size_t take, std::uint8_t* out) {
     const std::string where =
         "LAZ chunk " + std::to_string(chunk_index + 1) + " at byte " + std::to_string(chunk.offset);
+    if (layered_) {
+      decodeLayered(file, chunk, where, skip, take, out);
+      return;
+    }
     FileInput input(file, chunk.offset, chunk.offset + chunk.bytes, where);
     decoder_.attach(input);
     scratch_.resize(record_bytes_);
@@ -365,14 +396,102 @@ class ChunkDecoder {
   }
 
  private:
+  // A layered chunk: its first point raw, its point count, every layer's size (32 bits each,
+  // item by item), then the layers in the same order. The chunk is read whole: its layers are
+  // decoded side by side.
+  void decodeLayered(const InputFile& file, const Chunk& chunk, const std::string& where,
+                     std::uint64_t skip, std::size_t take, std::uint8_t* out) {
+    const auto refuse = [&](const std::string& what) {
+      fail(file.path(), "corrupt LAZ: " + what, where);
+    };
+    // A layered chunk is at most twice its raw records (the code of random values outgrows them
+    // by a few percent): a chunk table giving more is refused before the chunk is read.
+    const std::uint64_t most = 2 * chunk.points * record_bytes_ + 4096;
+    if (chunk.bytes > most) {
+      refuse("the chunk table gives " + std::to_string(chunk.points) + " points " +
+             std::to_string(chunk.bytes) + " bytes, more than the " + std::to_string(most) +
+             " a layered chunk of them may take");
+    }
+    bytes_.resize(static_cast<std::size_t>(chunk.bytes));
+    file.readAt(chunk.offset, bytes_, where);
+    std::size_t layer_count = 0;
+    for (const auto& part : layered_items_) layer_count += part.decoder->layerCount();
+    const std::size_t head = record_bytes_ + 4 + 4 * layer_count;
+    if (bytes_.size() < head) {
+      refuse("the chunk's " + std::to_string(bytes_.size()) +
+             " bytes end before its first point, point count and " + std::to_string(layer_count) +
+             " layer sizes (" + std::to_string(head) + " bytes)");
+    }
+    const std::uint8_t* first = bytes_.data();
+    const auto count = readLittle<std::uint32_t>(first + record_bytes_);
+    if (count != chunk.points) {
+      refuse("the chunk says it has " + std::to_string(count) + " points, the chunk table " +
+             std::to_string(chunk.points));
+    }
+    // Every layer's size is checked against the chunk's bytes before any layer is read.
+    layers_.clear();
+    std::uint64_t at = head;
+    for (std::size_t i = 0; i < layer_count; ++i) {
+      const std::uint64_t size = readLittle<std::uint32_t>(first + record_bytes_ + 4 + 4 * i);
+      if (size > bytes_.size() - at) {
+        refuse("layer " + std::to_string(i + 1) + " of " + std::to_string(layer_count) + " has " +
+               std::to_string(size) + " bytes, " + std::to_string(bytes_.size() - at) +
+               " of the chunk's are left for it");
+      }
+      layers_.push_back(std::span<const std::uint8_t>(bytes_).subspan(at, size));
+      at += size;
+    }
+    if (at != bytes_.size()) {
+      refuse("the chunk table gives the chunk " + std::to_string(bytes_.size()) +
+             " bytes, its layers end after " + std::to_string(at));
+    }
+    const std::uint32_t first_channel = (first[15] >> 4) & 3u;  // POINT14's scanner channel
+    std::size_t layer = 0;
+    for (auto& [item, offset] : layered_items_) {
+      const std::size_t n = item->layerCount();
+      item->start(first + offset, std::span(layers_).subspan(layer, n), first_channel);
+      layer += n;
+    }
+    scratch_.resize(record_bytes_);
+    if (skip == 0) std::memcpy(out, first, record_bytes_);
+    const std::uint64_t end = skip + take;
+    for (std::uint64_t i = 1; i < end; ++i) {
+      std::uint8_t* next = i >= skip ? out + (i - skip) * record_bytes_ : scratch_.data();
+      std::uint32_t channel = 0;  // set by POINT14 on a change of channel only (LayeredItemDecoder)
+      for (auto& [item, offset] : layered_items_) item->decode(next + offset, channel);
+      // POINT14's first layer is read for every point: stop a corrupt chunk at once
+      if (layered_items_[0].decoder->overrunLayer() >= 0) [[unlikely]] {
+        refuse("the " + layered_items_[0].decoder->layerName(0) + " runs past its bytes at point " +
+               std::to_string(i + 1) + " of " + std::to_string(chunk.points));
+      }
+    }
+    if (end != chunk.points) return;
+    // A whole chunk's layers each end exactly at their last byte.
+    for (const auto& part : layered_items_) {
+      const int bad = part.decoder->inexactLayer();
+      if (bad >= 0) {
+        refuse("the " + part.decoder->layerName(static_cast<std::size_t>(bad)) +
+               " does not end where its size says (a size or the code is wrong)");
+      }
+    }
+  }
+
   struct Part {
     std::unique_ptr<laz::ItemDecoder> decoder;
     std::size_t at;
   };
+  struct LayeredPart {
+    std::unique_ptr<laz::LayeredItemDecoder> decoder;
+    std::size_t at;
+  };
+  bool layered_;
   laz::ArithmeticDecoder decoder_;
   std::vector<Part> items_;
+  std::vector<LayeredPart> layered_items_;
   std::size_t record_bytes_ = 0;
   std::vector<std::uint8_t> scratch_;
+  std::vector<std::uint8_t> bytes_;                    // a layered chunk
+  std::vector<std::span<const std::uint8_t>> layers_;  // its layers
 };
 
 class LazSource final : public PointSource {

@@ -101,7 +101,7 @@ std::unique_ptr<PointSource> memorySource(const Scan& scan);
 // the same memory whatever the size; a file that is mostly hole fails on its content.
 inline constexpr cli::InputKind kStreamedScanInput{"scan", 4096 * cli::kGiB};
 
-// Opens a scan file by its extension (.las, .pcd, .ply; .laz is refused by name): LAS and binary
+// Opens a scan file by its extension (.las, .laz, .pcd, .ply): LAS and binary
 // PCD/PLY of a plain layout are streamed, anything else is loaded whole with loadScan, which then
 // stays in memory. Throws PrepareError with one line for every failure.
 std::unique_ptr<PointSource> openPointSource(const std::filesystem::path& path);

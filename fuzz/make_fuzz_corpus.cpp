@@ -8,7 +8,8 @@
 //    and a chunk (first byte 3: spliced, CRCs recomputed). See fuzz/chunked_fuzzer.cpp.
 //  - las: a small LAS file of every point format, and 1.0, 1.1 and 1.4 with VLRs, EVLRs and extra
 //    bytes (tests/support/las_writer.h), so the fuzzer starts from every layout the reader knows.
-//  - laz: small LAZ files of point formats 0 to 3, fixed and variable chunks of a few points.
+//  - laz: small LAZ files of point formats 0 to 3 and 6 to 8, fixed and variable chunks of a few
+//    points.
 // usage: make_fuzz_corpus OUTDIR
 #include <cstdio>
 #include <cstring>
@@ -135,12 +136,12 @@ void writeLasSeeds(const fs::path& dir) {
   las("rich.las", rich);
 }
 
-// Small LAZ files of every point format the tests' encoder writes, every field varied, in chunks
-// of a few points, fixed and variable (laz_fuzzer).
+// Small LAZ files of every point format the tests' encoder writes (0 to 3 point-wise, 6 to 8
+// layered), every field varied, in chunks of a few points, fixed and variable (laz_fuzzer).
 void writeLazSeeds(const fs::path& dir) {
   using octopoint::testing::LasLayout;
   const octopoint::testing::Landscape landscape;
-  for (int format = 0; format <= 3; ++format) {
+  for (int format : {0, 1, 2, 3, 6, 7, 8}) {
     for (bool variable : {false, true}) {
       LasLayout layout;
       layout.format = format;
@@ -149,7 +150,7 @@ void writeLazSeeds(const fs::path& dir) {
       layout.varied_fields = true;
       layout.laz_chunk_points = 5;
       layout.laz_variable_chunks = variable;
-      layout.extra_bytes = format == 3 ? 2 : 0;
+      layout.extra_bytes = format == 3 || format == 8 ? 2 : 0;
       const std::string name =
           "format" + std::to_string(format) + (variable ? "_variable" : "") + ".laz";
       octopoint::testing::LasWriter writer(dir / name, layout);

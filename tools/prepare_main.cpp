@@ -47,7 +47,7 @@ constexpr const char* kUsage = R"(usage: octopoint-prepare SCAN -o OUTDIR --name
 Turns a range scan (.las, .pcd or .ply: XYZ, XYZRGB/RGBA or XYZI, organized or not) into an
 octopoint model: OUTDIR/NAME.h, OUTDIR/NAME.cpp and OUTDIR/NAME_depthD.cpp (const arrays an app
 compiles in) and OUTDIR/NAME.oct (the same model as one binary file, for octopoint-render --file).
-LAS (1.0 to 1.4, point formats 0 to 10), LAZ (LASzip-compressed LAS, point formats 0 to 5, read
+LAS (1.0 to 1.4, point formats 0 to 10), LAZ (LASzip-compressed LAS, point formats 0 to 10, read
 natively) and binary PCD/PLY (PLY of either byte order) are streamed: any number of points in
 bounded memory, on every core (LAZ chunks decoded in parallel); other PCD/PLY files are loaded
 whole through PCL. The output is the same byte for byte whatever --memory and --threads

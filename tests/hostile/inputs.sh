@@ -14,6 +14,12 @@ le32() {
   local n=$1 i
   for i in 0 8 16 24; do printf "\\$(printf %03o $(((n >> i) & 255)))"; done
 }
+# The same as printf escapes (\ooo), for a printf that writes them later: a command substitution
+# of le32 would drop its zero bytes.
+le32Escaped() {
+  local n=$1 i
+  for i in 0 8 16 24; do printf '\\%03o' $(((n >> i) & 255)); done
+}
 
 # A PCD header: pcdHeader FIELDS SIZE TYPE COUNT WIDTH HEIGHT POINTS DATA.
 pcdHeader() {
@@ -130,8 +136,8 @@ if [ -x "$MAKE_SCAN" ]; then
     -o "$IN/good.laz" >/dev/null || { echo "hostile-sweep: cannot write good.laz" >&2; exit 1; }
   laz_points=$(od -An -tu4 -j96 -N4 "$IN/good.laz" | tr -d ' ')
   laz_vlr=$(($(grep -boa 'laszip encoded' "$IN/good.laz" | head -n 1 | cut -d: -f1) - 2 + 54))
-  lazCopy() {  # lazCopy NAME OFFSET BYTES: good.laz with bytes replaced
-    cp "$IN/good.laz" "$I1/$1"
+  lazCopy() {  # lazCopy NAME OFFSET BYTES [GOOD]: good.laz (or GOOD) with bytes replaced
+    cp "${4:-$IN/good.laz}" "$I1/$1"
     printf "$3" | dd of="$I1/$1" bs=1 seek="$2" conv=notrunc status=none
   }
   lazCopy laz_count_4e9.laz 107 '\000\050\153\356'       # 4,000,000,000 points
@@ -145,6 +151,22 @@ if [ -x "$MAKE_SCAN" ]; then
   refuse 1 laz_huge_chunks "chunks of 1048576, the chunk table lists 3" "$PREPARE" "$I1/laz_huge_chunks.laz" -o "$W/work/out/p" --name m
   refuse 1 q:laz_corrupt "corrupt LAZ" "$PREPARE" "$I1/laz_corrupt.laz" -o "$W/work/out/p" --name m
   refuse 1 laz_cut "lies outside the point data" "$PREPARE" "$I1/laz_cut.laz" -o "$W/work/out/p" --name m
+  # Layered LAZ (point format 7: a chunk is its first point raw, 36 bytes, its point count, ten
+  # 32-bit layer sizes, the layers): a layer size past the chunk, sizes that cut the layers
+  # elsewhere, a corrupt layer, a point count that is not the chunk table's.
+  "$MAKE_SCAN" --points 3000 --format laz --las-format 7 --varied-fields --chunk-points 1000 \
+    -o "$IN/good7.laz" >/dev/null || { echo "hostile-sweep: cannot write good7.laz" >&2; exit 1; }
+  head7=$(($(od -An -tu4 -j96 -N4 "$IN/good7.laz" | tr -d ' ') + 8 + 36))  # the point count
+  z7=$(od -An -tu4 -j$((head7 + 8)) -N4 "$IN/good7.laz" | tr -d ' ')
+  class7=$(od -An -tu4 -j$((head7 + 12)) -N4 "$IN/good7.laz" | tr -d ' ')
+  lazCopy laz7_layer_huge.laz $((head7 + 4)) '\377\377\377\377' "$IN/good7.laz"
+  lazCopy laz7_layer_shift.laz $((head7 + 8)) "$(le32Escaped $((z7 - 3)))$(le32Escaped $((class7 + 3)))" "$IN/good7.laz"
+  lazCopy laz7_corrupt.laz $((head7 + 44 + 100)) '\125\252\125\252\125\252\125\252' "$IN/good7.laz"
+  lazCopy laz7_count.laz "$head7" "$(le32Escaped 999)" "$IN/good7.laz"
+  refuse 1 q:laz7_layer_huge "layer 1 of 10 has 4294967295 bytes" "$PREPARE" "$I1/laz7_layer_huge.laz" -o "$W/work/out/p" --name m
+  refuse 1 laz7_layer_shift "corrupt LAZ: the POINT14 layer z does not end where its size says" "$PREPARE" "$I1/laz7_layer_shift.laz" -o "$W/work/out/p" --name m
+  refuse 1 laz7_corrupt "corrupt LAZ" "$PREPARE" "$I1/laz7_corrupt.laz" -o "$W/work/out/p" --name m
+  refuse 1 laz7_count "the chunk says it has 999 points" "$PREPARE" "$I1/laz7_count.laz" -o "$W/work/out/p" --name m
 fi
 
 # --- 3: not a regular file, or past the stated size, for every tool that reads one -------------

@@ -17,12 +17,14 @@ try {
   process.exit(77);
 }
 
-// The LAS file's records, from its header (LAS 1.2: point offset, record length, legacy count).
+// The LAS file's records, from its header (point offset, record length; the count of LAS 1.4,
+// 64-bit, whose legacy 32-bit count is 0 for point formats 6 to 10).
 function lasRecords(bytes) {
   const view = new DataView(bytes.buffer, bytes.byteOffset, bytes.byteLength);
   const offset = view.getUint32(96, true);
   const length = view.getUint16(105, true);
-  const count = view.getUint32(107, true);
+  const minor = view.getUint8(25);
+  const count = minor >= 4 ? Number(view.getBigUint64(247, true)) : view.getUint32(107, true);
   return { offset, length, count, bytes };
 }
 

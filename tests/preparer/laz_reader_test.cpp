@@ -135,7 +135,8 @@ T readAt(const std::string& bytes, std::uint64_t at) {
 }
 
 TEST_F(LazReaderTest, EveryFormatDecodesToTheRecordsOfItsLasTwin) {
-  for (int format = 0; format <= 3; ++format) {
+  // 0 to 3 point-wise, 6 to 8 layered (several scanner channels, every layer changing)
+  for (int format : {0, 1, 2, 3, 6, 7, 8}) {
     for (int extra_bytes : {0, 5}) {
       LasLayout layout;
       layout.format = format;
@@ -154,41 +155,47 @@ TEST_F(LazReaderTest, EveryFormatDecodesToTheRecordsOfItsLasTwin) {
 }
 
 TEST_F(LazReaderTest, ChunksOfAnySizeFixedOrVariableDecodeTheSame) {
-  LasLayout layout;
-  layout.format = 3;
-  layout.varied_fields = true;
-  const auto [las, reference] = twins("chunks", layout, 4000);
-  const std::vector<std::uint8_t> expected = records(las);
-  for (std::uint32_t chunk_points : {1u, 2u, 3u, 999u, 4000u, 50000u}) {
-    for (bool variable : {false, true}) {
-      layout.laz = true;
-      layout.laz_chunk_points = chunk_points;
-      layout.laz_variable_chunks = variable;
-      const fs::path laz = write("c.laz", layout, 4000);
-      EXPECT_TRUE(records(laz) == expected) << chunk_points << (variable ? " variable" : " fixed");
+  for (int format : {3, 8}) {  // point-wise and layered
+    LasLayout layout;
+    layout.format = format;
+    layout.extra_bytes = format == 8 ? 2 : 0;
+    layout.varied_fields = true;
+    const auto [las, reference] = twins("chunks", layout, 4000);
+    const std::vector<std::uint8_t> expected = records(las);
+    for (std::uint32_t chunk_points : {1u, 2u, 3u, 999u, 4000u, 50000u}) {
+      for (bool variable : {false, true}) {
+        layout.laz = true;
+        layout.laz_chunk_points = chunk_points;
+        layout.laz_variable_chunks = variable;
+        const fs::path laz = write("c.laz", layout, 4000);
+        EXPECT_TRUE(records(laz) == expected)
+            << "format " << format << ", " << chunk_points << (variable ? " variable" : " fixed");
+      }
     }
   }
 }
 
 TEST_F(LazReaderTest, RangesAcrossChunksReadTheSameRecords) {
-  LasLayout layout;
-  layout.format = 1;
-  layout.varied_fields = true;
-  layout.laz_chunk_points = 700;
-  const auto [las, laz] = twins("ranges", layout, 5000);
-  const auto las_source = openPointSource(las);
-  const auto laz_source = openPointSource(laz);
-  PointChunk want, got;
-  std::mt19937 random(3);
-  for (int i = 0; i < 40; ++i) {
-    const std::uint64_t first = random() % 5000;
-    const std::size_t count = 1 + random() % (5000 - first);
-    las_source->read(first, count, want);
-    laz_source->read(first, count, got);
-    ASSERT_TRUE(got.raw == want.raw) << first << " + " << count;
-    ASSERT_EQ(got.xyz, want.xyz);
-    ASSERT_EQ(got.rgb, want.rgb);
-    ASSERT_EQ(got.intensity, want.intensity);
+  for (int format : {1, 7}) {
+    LasLayout layout;
+    layout.format = format;
+    layout.varied_fields = true;
+    layout.laz_chunk_points = 700;
+    const auto [las, laz] = twins("ranges", layout, 5000);
+    const auto las_source = openPointSource(las);
+    const auto laz_source = openPointSource(laz);
+    PointChunk want, got;
+    std::mt19937 random(3);
+    for (int i = 0; i < 40; ++i) {
+      const std::uint64_t first = random() % 5000;
+      const std::size_t count = 1 + random() % (5000 - first);
+      las_source->read(first, count, want);
+      laz_source->read(first, count, got);
+      ASSERT_TRUE(got.raw == want.raw) << format << ": " << first << " + " << count;
+      ASSERT_EQ(got.xyz, want.xyz);
+      ASSERT_EQ(got.rgb, want.rgb);
+      ASSERT_EQ(got.intensity, want.intensity);
+    }
   }
 }
 
@@ -205,6 +212,19 @@ TEST_F(LazReaderTest, PreparesToTheSameModelAsItsLasTwinOnAnyThreads) {
             "LAZ 1.2, point format 3, 34-byte records, point-wise, chunks of 3000");
 }
 
+TEST_F(LazReaderTest, LayeredPreparesToTheSameModelAsItsLasTwinOnAnyThreads) {
+  LasLayout layout;
+  layout.format = 8;
+  layout.varied_fields = true;
+  layout.laz_chunk_points = 3000;
+  const auto [las, laz] = twins("layered_model", layout, 30000);
+  const std::vector<std::uint8_t> expected = model(las);
+  EXPECT_EQ(model(laz, 1), expected);
+  EXPECT_EQ(model(laz, 3), expected);
+  EXPECT_EQ(openPointSource(laz)->info().format,
+            "LAZ 1.4, point format 8, 38-byte records, layered, chunks of 3000");
+}
+
 LazParts smallLaz(const fs::path& path) {
   LazParts parts;
   parts.bytes = lazFileBytes(path);
@@ -215,14 +235,14 @@ LazParts smallLaz(const fs::path& path) {
 
 class LazBadInputTest : public LazReaderTest {
  protected:
-  // 3000 points of format 3 in chunks of 1000, every field varied; notes the chunks' sizes.
-  fs::path good() {
+  // 3000 points of `format` in chunks of 1000, every field varied; notes the chunks' sizes.
+  fs::path good(int format = 3) {
     LasLayout layout;
-    layout.format = 3;
+    layout.format = format;
     layout.varied_fields = true;
     layout.laz = true;
     layout.laz_chunk_points = 1000;
-    const fs::path path = dir_ / "good.laz";
+    const fs::path path = dir_ / ("good" + std::to_string(format) + ".laz");
     LasWriter writer(path, layout);
     for (std::size_t i = 0; i < 3000; ++i) writer.add(landscape_.point(i));
     writer.finish();
@@ -235,6 +255,27 @@ class LazBadInputTest : public LazReaderTest {
                                const std::vector<std::uint64_t>& bytes, bool variable) {
     const std::vector<std::uint8_t> table = testing::lazChunkTable(points, bytes, variable);
     return parts.bytes.substr(0, parts.table) + std::string(table.begin(), table.end());
+  }
+
+  // A byte flipped every `step` bytes from `from` to the chunk table, one file each: each read
+  // whole or refused with one line (never a crash, a hang or a second line). Returns how many
+  // were refused, of how many.
+  std::pair<std::size_t, std::size_t> flipEvery(const LazParts& parts, std::uint64_t from,
+                                                std::uint64_t step) {
+    std::size_t refused = 0;
+    std::size_t flips = 0;
+    for (std::uint64_t at = from; at < parts.table; at += step) {
+      std::string bytes = parts.bytes;
+      bytes[at] = static_cast<char>(bytes[at] ^ 0x5a);
+      ++flips;
+      try {
+        records(writeBytes("flip.laz", bytes));
+      } catch (const PrepareError& error) {
+        EXPECT_EQ(std::string(error.what()).find('\n'), std::string::npos) << error.what();
+        ++refused;
+      }
+    }
+    return {refused, flips};
   }
 
   std::vector<std::uint64_t> chunk_bytes_;
@@ -320,19 +361,7 @@ TEST_F(LazBadInputTest, CorruptArithmeticCodeIsRefusedOrDecodesToPoints) {
   // A flipped byte in a chunk's code: the chunk's code no longer ends where it should (or decodes
   // to other points, as any arithmetic code may); never a crash, a hang or a second line.
   const LazParts parts = smallLaz(good());
-  std::size_t refused = 0;
-  std::size_t flips = 0;
-  for (std::uint64_t at = parts.point_offset + 8 + 40; at < parts.table; at += 97) {
-    std::string bytes = parts.bytes;
-    bytes[at] = static_cast<char>(bytes[at] ^ 0x5a);
-    ++flips;
-    try {
-      records(writeBytes("flip.laz", bytes));
-    } catch (const PrepareError& error) {
-      ASSERT_EQ(std::string(error.what()).find('\n'), std::string::npos);
-      ++refused;
-    }
-  }
+  const auto [refused, flips] = flipEvery(parts, parts.point_offset + 8 + 40, 97);
   EXPECT_GT(refused, flips * 9 / 10) << refused << " of " << flips;
 }
 
@@ -352,7 +381,7 @@ TEST_F(LazBadInputTest, UnknownItemsAndCompressorsAreRefusedByName) {
   expectRefused(writeBytes("type.laz", damaged(vlr + 34 + 12, 77)), "item type 77");
   expectRefused(writeBytes("compressor.laz", damaged(vlr, 9)), "unknown LASzip compressor 9");
   expectRefused(writeBytes("layered.laz", damaged(vlr, 3)),
-                "layered compressor (LAS 1.4 items version 3) is not read yet");
+                "LASzip compressor 3 for point format 3: formats 0 to 5 are read point-wise");
   expectRefused(writeBytes("items.laz", damaged(vlr + 32, 40)), "the VLR lists 40 items");
   expectRefused(writeBytes("chunk_huge.laz",
                            [&] {
@@ -361,6 +390,89 @@ TEST_F(LazBadInputTest, UnknownItemsAndCompressorsAreRefusedByName) {
                              return bytes;
                            }()),
                 "chunks of 1073741824 points are not read");
+}
+
+// A layered chunk: the first point raw (record bytes), the point count, a 32-bit size per layer,
+// the layers. good() here is 3000 points of format 7 (POINT14's 9 layers, RGB14's 1) in chunks of
+// 1000.
+class LazLayeredBadInputTest : public LazBadInputTest {
+ protected:
+  static constexpr std::uint64_t kRecord = 36;
+  static constexpr std::uint64_t kLayers = 10;
+
+  fs::path goodLayered() { return good(7); }
+  // Where the first chunk's layer sizes start.
+  static std::uint64_t sizesAt(const LazParts& parts) {
+    return parts.point_offset + 8 + kRecord + 4;
+  }
+  static std::vector<std::uint32_t> layerSizes(const LazParts& parts) {
+    std::vector<std::uint32_t> sizes;
+    for (std::uint64_t i = 0; i < kLayers; ++i)
+      sizes.push_back(readAt<std::uint32_t>(parts.bytes, sizesAt(parts) + 4 * i));
+    return sizes;
+  }
+};
+
+TEST_F(LazLayeredBadInputTest, ALayerSizeThatLiesIsRefused) {
+  const LazParts parts = smallLaz(goodLayered());
+  ASSERT_NO_THROW(records(goodLayered()));
+  const std::vector<std::uint32_t> sizes = layerSizes(parts);
+  ASSERT_GT(sizes[1], 4u);  // the z layer is there: z changes
+  const auto lie = [&](const std::string& name, std::uint64_t layer, std::uint32_t size,
+                       const std::string& expected) {
+    std::string bytes = parts.bytes;
+    patchAt<std::uint32_t>(bytes, sizesAt(parts) + 4 * layer, size);
+    expectRefused(writeBytes(name, bytes), expected);
+  };
+  // More bytes than the chunk has left: refused before any layer is read.
+  lie("huge_layer.laz", 0, 1000000000u, "layer 1 of 10 has 1000000000 bytes");
+  lie("huge_z.laz", 1, 0xffffffffu, "layer 2 of 10 has 4294967295 bytes");
+  // Sizes that add up to less than the chunk.
+  lie("short_layer.laz", 9, sizes[9] - 1, "its layers end after");
+  // Sizes that add up but cut the layers elsewhere: a layer's code runs past its bytes or ends
+  // before them.
+  {
+    std::string bytes = parts.bytes;
+    patchAt<std::uint32_t>(bytes, sizesAt(parts) + 4, sizes[1] - 3);
+    patchAt<std::uint32_t>(bytes, sizesAt(parts) + 8, sizes[2] + 3);
+    expectRefused(writeBytes("shifted.laz", bytes), "corrupt LAZ: the POINT14 layer z");
+  }
+  // A chunk whose point count is not the chunk table's.
+  std::string count = parts.bytes;
+  patchAt<std::uint32_t>(count, parts.point_offset + 8 + kRecord, 999);
+  expectRefused(writeBytes("count.laz", count), "the chunk says it has 999 points");
+}
+
+TEST_F(LazLayeredBadInputTest, ATruncatedLayerIsRefused) {
+  // The z layer of the first chunk cut short by 5 bytes, its size and the chunk table telling the
+  // truth about the cut: the layer's code runs out.
+  const LazParts parts = smallLaz(goodLayered());
+  const std::vector<std::uint32_t> sizes = layerSizes(parts);
+  const std::uint64_t z_end = sizesAt(parts) + 4 * kLayers + sizes[0] + sizes[1];
+  std::string cut_bytes = parts.bytes.substr(0, z_end - 5) + parts.bytes.substr(z_end);
+  patchAt<std::uint32_t>(cut_bytes, sizesAt(parts) + 4, sizes[1] - 5);
+  const std::vector<std::uint64_t> chunk_bytes = {chunk_bytes_[0] - 5, chunk_bytes_[1],
+                                                  chunk_bytes_[2]};
+  LazParts cut = parts;
+  cut.bytes = cut_bytes;
+  cut.table = parts.table - 5;
+  patchAt<std::uint64_t>(cut.bytes, parts.point_offset, cut.table);
+  expectRefused(writeBytes("cut_layer.laz", withTable(cut, {1000, 1000, 1000}, chunk_bytes, false)),
+                "corrupt LAZ: the POINT14 layer z");
+  // A chunk table that ends the first chunk inside its head (the point count, the layer sizes)
+  // or its layers, the rest given to the second chunk: the first is refused.
+  for (std::uint64_t size = kRecord; size < kRecord + 4 + 4 * kLayers + 40; size += 3) {
+    const std::string bytes =
+        withTable(parts, {1000, 1000, 1000},
+                  {size, chunk_bytes_[0] + chunk_bytes_[1] - size, chunk_bytes_[2]}, false);
+    expectRefused(writeBytes("head.laz", bytes), "corrupt LAZ");
+  }
+}
+
+TEST_F(LazLayeredBadInputTest, CorruptLayerStreamsAreRefusedOrDecodeToPoints) {
+  const LazParts parts = smallLaz(goodLayered());
+  const auto [refused, flips] = flipEvery(parts, sizesAt(parts) + 4 * kLayers, 61);
+  EXPECT_GT(refused, flips * 3 / 4) << refused << " of " << flips;
 }
 
 }  // namespace

@@ -140,8 +140,14 @@ void LasWriter::add(const LandscapePoint& point) {
       std::memcpy(record + rgb + 2 * ch, &value, 2);
     }
   }
-  for (int i = 0; i < layout_.extra_bytes; ++i)
-    record[kFormatBytes[static_cast<std::size_t>(layout_.format)] + i] = 0xee;
+  for (int i = 0; i < layout_.extra_bytes; ++i) {
+    // varied: a byte that steps now and then, one that follows the intensity, one that is noise
+    const std::uint64_t hash = (count_ * 0x9e3779b97f4a7c15ull) >> 40;
+    const std::uint64_t kinds[3] = {count_ / 90, point.intensity, hash >> 3};
+    record[kFormatBytes[static_cast<std::size_t>(layout_.format)] + i] =
+        layout_.varied_fields ? static_cast<std::uint8_t>(kinds[i % 3] + static_cast<unsigned>(i))
+                              : 0xee;
+  }
   ++count_;
   if (laz_) {
     laz_->add(record);
@@ -167,6 +173,27 @@ void LasWriter::varyFields(std::uint8_t* record) const {
     record[17] = static_cast<std::uint8_t>(hash % 3 == 0 ? hash >> 8 : 7);
     const auto source = static_cast<std::uint16_t>(i / 1000 + (hash % 501 == 0 ? 40000 : 0));
     std::memcpy(record + 18, &source, 2);
+  } else {
+    // Up to 15 returns; the four scanner channels in runs, now and then a lone point of another
+    // channel (so that a channel's context is left and taken up again).
+    const std::uint64_t returns = 1 + hash % (hash % 31 == 0 ? 15 : 3);
+    const std::uint64_t number = hash % 53 == 0 ? hash % 16 : 1 + (hash >> 3) % returns;
+    record[14] = static_cast<std::uint8_t>(number | (returns << 4));
+    const std::uint64_t channel = hash % 41 == 0       ? hash % 4
+                                  : (i / 300) % 4 == 3 ? 2
+                                                       : (i / 300) % 3;
+    record[15] = static_cast<std::uint8_t>((hash % 89 == 0 ? hash % 16 : 0) | (channel << 4) |
+                                           ((i / 40 % 2) << 6) | ((hash % 97 == 0 ? 1u : 0u) << 7));
+    record[16] = static_cast<std::uint8_t>(i / 7 % 5 == 0 ? hash % 67 : 2);
+    record[17] = static_cast<std::uint8_t>(hash % 3 == 0 ? hash >> 8 : 7);
+    const auto angle = static_cast<std::int16_t>(static_cast<int>(i / 50 % 6000) - 3000);
+    std::memcpy(record + 18, &angle, 2);
+    const auto source = static_cast<std::uint16_t>(i / 1000 + (hash % 501 == 0 ? 40000 : 0));
+    std::memcpy(record + 20, &source, 2);
+    if (layout_.format == 8 || layout_.format == 10) {  // near infrared
+      const auto nir = static_cast<std::uint16_t>(hash % 5 == 0 ? hash & 0xffff : 300 + i % 700);
+      std::memcpy(record + 36, &nir, 2);
+    }
   }
   const bool has_time = layout_.format == 1 || layout_.format >= 3;
   if (has_time) {

@@ -26,8 +26,9 @@ struct LasLayout {
   std::array<double, 3> scale{0.001, 0.001, 0.001};
   std::array<double, 3> offset{500000, 4100000,
                                0};  // a UTM-like origin, far beyond float precision
-  // LAZ (formats 0 to 3): the records compressed as LASzip does (tests/support/laz_encoder.h), in
-  // chunks of laz_chunk_points, or of varying sizes listed in the chunk table.
+  // LAZ (formats 0 to 3, 6 to 8): the records compressed as LASzip does
+  // (tests/support/laz_encoder.h), in chunks of laz_chunk_points, or of varying sizes listed in the
+  // chunk table.
   bool laz = false;
   // Every field varied (returns, classes, scan angles, user data, sources, GPS times in two
   // interleaved flight lines with jumps), so that a LAZ coder meets each of its cases; else the

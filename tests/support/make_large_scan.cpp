@@ -30,13 +30,15 @@ coloured roofs) to FILE, point by point in constant memory; the same options giv
 
   --points N            how many points, 1..2^40
   --format las|laz|ply  LAS; LAZ, the same compressed as LASzip does (point formats 0 to 3,
-                        point-wise items version 2, chunked, with a chunk table); or binary
-                        little-endian PLY (float x y z, uchar red green blue)
+                        point-wise items version 2; formats 6 to 8, layered items version 3;
+                        chunked, with a chunk table); or binary little-endian PLY (float x y z,
+                        uchar red green blue)
   --chunk-points N      LAZ points per chunk (default 50000, LASzip's)
   --variable-chunks     LAZ chunks of varying sizes, listed in the chunk table
   --varied-fields       vary every LAS field (returns, classes, scan angles, user data, point
-                        sources, GPS times of interleaved flight lines), not only those a
-                        landscape has
+                        sources, GPS times of interleaved flight lines; from format 6 on also
+                        the four scanner channels, classification flags and near infrared;
+                        extra bytes), not only those a landscape has
   --las-format F        LAS point format 0..10 (default 2: XYZ, intensity, 16-bit RGB);
                         formats 0, 1, 4, 6 and 9 have no colour, only intensity
   --las-version 1.N     LAS minor version 0..4 (default: the first that has the format)
@@ -132,8 +134,8 @@ int run(int argc, char** argv) {
     throw std::runtime_error("need --points N, --format las|laz|ply and -o FILE (see --help)");
   }
   if (layout.evlrs && layout.minor() < 4) throw std::runtime_error("--evlrs needs LAS 1.4");
-  if (layout.laz && layout.format > 3) {
-    throw std::runtime_error("--format laz writes point formats 0 to 3, not " +
+  if (layout.laz && ((layout.format > 3 && layout.format < 6) || layout.format > 8)) {
+    throw std::runtime_error("--format laz writes point formats 0 to 3 and 6 to 8, not " +
                              std::to_string(layout.format));
   }
   const Landscape landscape(seed);
