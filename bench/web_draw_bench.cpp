@@ -1,7 +1,7 @@
 // The web page's draw (web/octopoint_web.cpp: depth auto, the frame, the colour style, RGBA) of
 // the embedded default model, compiled natively, with fixed_fast (what the page's WebAssembly
 // draws with) and fixed_simd side by side: the native side of docs/web.md's frame time, whose
-// other side is the same function in headless Chromium (lab/scripts/web-frame-time).
+// other side is the same function in headless Chromium (lab/scripts/web_point_cost.py runs both).
 #include <benchmark/benchmark.h>
 
 #include <string>
@@ -18,7 +18,7 @@ void webDraw(benchmark::State& state, Variant variant, int width, int height) {
     return;
   }
   for (auto _ : state) {
-    // yaw 30, pitch 10, zoom 1: the view lab/scripts/web-frame-time times in the browser
+    // yaw 30, pitch 10, zoom 1: the view lab/scripts/web_point_cost.py times in the browser
     if (web::drawWith(variant, 30'000, 10'000, 0, 65536, width, height) != 0) {
       state.SkipWithError(octopoint_web_error());
       return;

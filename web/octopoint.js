@@ -165,6 +165,10 @@
              ', ' + size.width + 'x' + size.height + ': ' + elapsed.toFixed(1) + ' ms a frame',
              problem !== '' || streamProblem !== '');
     }
+    // For the measurements (lab/scripts/web_first_picture.py): when the page's first picture was
+    // shown, in ms from the page's request.
+    if (!('firstFrame' in document.body.dataset))
+      document.body.dataset.firstFrame = performance.now().toFixed(1);
     document.body.dataset.frames = String(Number(document.body.dataset.frames || 0) + 1);
   }
 

@@ -1,78 +1,248 @@
 #!/usr/bin/env python3
-"""The web page's frame time in Potree's terms (docs/web.md, "Frame time per point"): nanoseconds per
-drawn point and a fixed cost per frame, at 640x480 and 1280x960.
+"""The web page's frame time, in one run (docs/web.md, "Frame time"): the page's draw of the
+embedded model in headless Chromium beside the same draw compiled natively with fixed_fast and
+fixed_simd (bench/web_draw_bench.cpp) at 320x240 and 1280x960, and, in Potree's terms, the
+page's nanoseconds per drawn point and fixed cost per frame at 640x480 and 1280x960.
 
-usage: lab/scripts/web_point_cost.py PORT MODEL.oct [DRAWS]
+usage: lab/scripts/web_point_cost.py [ROUNDS [DRAWS]]
+  (after scripts/build-web and scripts/build release --target octopoint-prepare octopoint-render
+   octopoint-serve web_draw_bench)
 
-Opens http://127.0.0.1:PORT/index.html?model=MODEL.oct (the page and a chunked model served by
-octopoint-serve) in Debian's headless Chromium over its DevTools pipe (web/test/devtools.py), waits
-until the whole view has arrived, then for each size and each point budget (10,000, 20,000,
-40,000, none) times DRAWS (default 200) calls of octopoint_web_draw at yaw 30, pitch 10, zoom 1
-after 20 to warm up (performance.now() in the page; the draw: frame clear, progressive draw,
-resolve and RGBA copy, not the canvas's putImageData), reads the points each drew, and fits
-time = fixed + per_point * points by least squares over the budgets.
+Points per frame are varied at a fixed splat size: the default model's scan (as docs/streaming.md
+prepares it, depths 6..8) thinned by space (lab/scripts/thinned_scan.py: whole depth-4 cells of the
+same cube kept, fractions 1/4 to 1), each prepared --chunked; a model whose depth auto would not
+draw depth 8 (too thin to count as densely sampled) is left out. ROUNDS times (default 3), each
+round: the native benchmark (the fastest of 10 repetitions); in one tab of headless Chromium
+(web/test/devtools.py, the DevTools pipe) the page from octopoint-serve, its embedded model drawn at
+320x240 and 1280x960; then each thinned model streamed into the same tab until its view is
+complete and drawn at 640x480 and 1280x960. Each page time is the fastest of 10 batches of DRAWS
+draws (default 20) after 20 to warm up, yaw 30, pitch 10, zoom 1 (performance.now() in the page;
+the draw: frame clear, draw, resolve and RGBA copy, not the canvas's putImageData). The fastest, on
+both sides: on a shared machine the others' load only ever adds time. The fit
+time = fixed + per_point * points is least squares over every round's sample, printed with its
+residuals (root mean square and largest), each round's own fit and the fit of each model's fastest
+round.
 """
+import json
 import os
+import re
+import shutil
+import subprocess
 import sys
 import tempfile
+import time
 
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "web", "test"))
+HERE = os.path.dirname(os.path.abspath(__file__))
+ROOT = os.path.normpath(os.path.join(HERE, "..", ".."))
+sys.path.insert(0, os.path.join(ROOT, "web", "test"))
+sys.path.insert(0, HERE)
 from devtools import DevTools  # noqa: E402
+from thinned_scan import read_pcd, thin, write_pcd  # noqa: E402
 
+TOOLS = os.path.join(ROOT, "build", "release", "tools")
+BENCH = os.path.join(ROOT, "build", "release", "bench", "web_draw_bench")
+SCAN = os.path.join(ROOT, "data", "scans", "milk_cartoon_all_small_clorox.pcd")
+CROP = "-0.35,-0.25,-1.1,0.35,0.45,-0.45"  # docs/streaming.md's tabletop
+FRACTIONS = (0.25, 0.375, 0.5, 0.625, 0.75, 0.875, 1.0)
+EMBEDDED_SIZES = ((320, 240), (1280, 960))
+FIT_SIZES = ((640, 480), (1280, 960))
+BATCHES = 10
+# The page's renderer runs as a tab in front (headless Chromium otherwise may lower its priority:
+# on a loaded machine its draws then take many times longer).
+UNTHROTTLED = ("--disable-renderer-backgrounding", "--disable-background-timer-throttling",
+               "--disable-backgrounding-occluded-windows")
+
+# Draws of the page's model (the embedded one, or the streamed one of its tab) at yaw 30, pitch 10,
+# zoom 1: 20 to warm up, then BATCHES batches of DRAWS; [the fastest batch's mean ms, points the
+# last draw drew (0 for the embedded model)]. The fastest batch: on a shared machine the others'
+# load only ever adds time.
 TIMING = """(() => {
   const draw = Module.cwrap('octopoint_web_draw', 'number',
                             ['number', 'number', 'number', 'number', 'number', 'number']);
-  Module.ccall('octopoint_web_set_point_budget', 'number', ['number'], [%(budget)d]);
   for (let i = 0; i < 20; ++i) draw(30000, 10000, 0, 65536, %(w)d, %(h)d);
-  const started = performance.now();
-  for (let i = 0; i < %(n)d; ++i) {
-    if (draw(30000, 10000, 0, 65536, %(w)d, %(h)d) !== 0) return [-1, 0];
+  let ms = Infinity;
+  for (let batch = 0; batch < %(batches)d; ++batch) {
+    const started = performance.now();
+    for (let i = 0; i < %(n)d; ++i) {
+      if (draw(30000, 10000, 0, 65536, %(w)d, %(h)d) !== 0) return [-1, 0];
+    }
+    ms = Math.min(ms, (performance.now() - started) / %(n)d);
   }
-  const ms = (performance.now() - started) / %(n)d;
-  const words = new Uint32Array(Module.HEAPU8.buffer,
-                                Module.ccall('octopoint_web_stream_status', 'number', [], []), 11);
-  return [ms, words[10]];
+  const status = Module.ccall('octopoint_web_stream_status', 'number', [], []);
+  return [ms, status === 0 ? 0 : new Uint32Array(Module.HEAPU8.buffer, status, 11)[10]];
 })()"""
 
 
+def run(*args):
+    return subprocess.run(args, check=True, capture_output=True, text=True).stdout
+
+
+def prepare(scan, out, name):
+    run(os.path.join(TOOLS, "octopoint-prepare"), scan, "-o", out, "--name", name, "--axes",
+        "y-up", "--crop", CROP, "--depths", "6..8", "--chunked")
+    return os.path.join(out, name + ".oct")
+
+
+def thinned_models(work):
+    """{fraction: path of its chunked model}, each drawing depth 8 at 640x480."""
+    whole = prepare(SCAN, os.path.join(work, "whole"), "tabletop")
+    info = run(os.path.join(TOOLS, "octopoint-render"), "--file", whole, "--info")
+    corner, edge = re.search(r"^cube (\S+) (\S+)$", info, re.M).groups()
+    cube = [float(v) for v in corner.split(",")] + [float(edge)]
+    points = read_pcd(SCAN)
+    box = [float(v) for v in CROP.split(",")]
+    models = {}
+    for fraction in FRACTIONS:
+        if fraction == 1.0:
+            model = whole
+        else:
+            scan = os.path.join(work, "thin%g.pcd" % fraction)
+            write_pcd(scan, thin(points, fraction, box, cube))
+            model = prepare(scan, os.path.join(work, "thin%g" % fraction), "tabletop")
+        said = run(os.path.join(TOOLS, "octopoint-render"), "--file", model, "--yaw", "30",
+                   "--pitch", "10", "--size", "640x480", "-o", os.path.join(work, "check.png"))
+        if ", depth 8," not in said:
+            print("web_point_cost: fraction %g left out (%s)" % (fraction, said.strip()))
+            continue
+        models[fraction] = model
+    return models
+
+
+def native_round():
+    """{(variant, w, h): ms}, the fastest of BATCHES repetitions of bench/web_draw_bench."""
+    out = json.loads(run(BENCH, "--benchmark_format=json",
+                         "--benchmark_repetitions=%d" % BATCHES))
+    times = {}
+    for bench in out["benchmarks"]:
+        if bench.get("run_type") != "iteration":
+            continue  # the aggregates
+        _, variant, size = bench["run_name"].split("/")
+        w, h = (int(v) for v in size.split("x"))
+        key = (variant, w, h)
+        times[key] = min(times.get(key, bench["real_time"]), bench["real_time"])  # ms
+    return times
+
+
 def fit(samples):
-    """Least squares of ms = fixed + per_point * points: (fixed ms, ns per point)."""
+    """Least squares of ms = fixed + per_point * points: fixed ms, ns a point, residuals (ms)."""
     n = len(samples)
     mean_p = sum(p for p, _ in samples) / n
     mean_t = sum(t for _, t in samples) / n
     slope = sum((p - mean_p) * (t - mean_t) for p, t in samples) / \
         sum((p - mean_p) ** 2 for p, _ in samples)
-    return mean_t - slope * mean_p, slope * 1e6
+    fixed = mean_t - slope * mean_p
+    residuals = [t - fixed - slope * p for p, t in samples]
+    return fixed, slope * 1e6, residuals
+
+
+def show(tools, tab, url, ready):
+    """Opens `url` in the tab (one tab for all: Chromium slows a tab in the background) and waits
+    until `ready` holds in it (up to 60 s)."""
+    tools.evaluate(tab, "window.leftBehind = true")  # marks the document navigated away from
+    tools.call("Page.navigate", {"url": url}, tab)
+    if not tools.wait_for(tab, "!window.leftBehind && document.body && (%s)" % ready, 60):
+        sys.exit("web_point_cost: %s not ready in 60 s" % url)
+
+
+def timed(tools, tab, w, h, draws):
+    """TIMING's [ms, points] in the tab."""
+    ms, points = tools.evaluate(tab, TIMING % {"w": w, "h": h, "n": draws, "batches": BATCHES})
+    if ms < 0:
+        sys.exit("web_point_cost: a draw failed at %dx%d in %s" %
+                 (w, h, tools.evaluate(tab, "location.href")))
+    return ms, points
+
+
+def served_port(log):
+    """The port octopoint-serve says it serves at (it says so first, within 10 s)."""
+    for _ in range(100):
+        log.seek(0)
+        said = re.search(r"http://127\.0\.0\.1:(\d+)/", log.read())
+        if said:
+            return int(said.group(1))
+        time.sleep(0.1)
+    sys.exit("web_point_cost: octopoint-serve did not say its port")
+
+
+def median(values):
+    ordered = sorted(values)
+    return ordered[len(ordered) // 2] if len(ordered) % 2 else \
+        (ordered[len(ordered) // 2 - 1] + ordered[len(ordered) // 2]) / 2
 
 
 def main():
-    if len(sys.argv) not in (3, 4):
-        sys.exit("usage: lab/scripts/web_point_cost.py PORT MODEL.oct [DRAWS]")
-    port, model = int(sys.argv[1]), sys.argv[2]
-    draws = int(sys.argv[3]) if len(sys.argv) == 4 else 200
-    with tempfile.TemporaryDirectory(ignore_cleanup_errors=True) as profile:
-        tools = DevTools(profile)
+    if len(sys.argv) > 3:
+        sys.exit(__doc__.split("\n\n")[1])
+    rounds = int(sys.argv[1]) if len(sys.argv) > 1 else 3
+    draws = int(sys.argv[2]) if len(sys.argv) > 2 else 20
+    with tempfile.TemporaryDirectory(ignore_cleanup_errors=True) as work:
+        models = thinned_models(work)
+        site = os.path.join(work, "site")
+        shutil.copytree(os.path.join(ROOT, "build", "wasm", "web"), site)
+        for fraction, model in models.items():
+            shutil.copy(model, os.path.join(site, "thin%g.oct" % fraction))
+        log = open(os.path.join(work, "serve.log"), "w+")
+        server = subprocess.Popen([os.path.join(TOOLS, "octopoint-serve"), site, "--port", "0"],
+                                  stdout=log, stderr=subprocess.STDOUT)
+        tools = None
         try:
-            session = tools.open("http://127.0.0.1:%d/index.html?model=%s&yaw=30&pitch=10&w=1280"
-                                 "&h=960&bare=1" % (port, model))
-            if not tools.wait_for(session, "document.body && document.body.dataset.stream === "
-                                  "'complete'", 60):
-                sys.exit("web_point_cost: the view did not arrive in 60 s")
-            for width, height in ((640, 480), (1280, 960)):
-                samples = []
-                for budget in (10000, 20000, 40000, 0):
-                    ms, points = tools.evaluate(session, TIMING % {
-                        "budget": budget, "w": width, "h": height, "n": draws})
-                    if ms < 0:
-                        sys.exit("web_point_cost: a draw failed at %dx%d" % (width, height))
-                    samples.append((points, ms))
-                    print("web_point_cost/%dx%d budget %d: %d points, %.4f ms (mean of %d)" %
-                          (width, height, budget, points, ms, draws))
-                fixed, per_point = fit(samples)
-                print("web_point_cost/%dx%d: %.3f ms a frame + %.2f ns a point" %
-                      (width, height, fixed, per_point))
+            port = served_port(log)
+            tools = DevTools(os.path.join(work, "profile"), UNTHROTTLED)
+            page = "http://127.0.0.1:%d/index.html?yaw=30&pitch=10&w=1280&h=960&bare=1" % port
+            tab = tools.open("about:blank")
+            native, page_ms, samples = [], [], {size: [] for size in FIT_SIZES}
+            for r in range(rounds):
+                native.append(native_round())
+                page_ms.append({})
+                show(tools, tab, page, "document.body.dataset.frames")
+                for w, h in EMBEDDED_SIZES:
+                    page_ms[r][(w, h)] = timed(tools, tab, w, h, draws)[0]
+                for fraction in models:
+                    show(tools, tab, page + "&model=thin%g.oct" % fraction,
+                         "document.body.dataset.stream === 'complete'")
+                    for w, h in FIT_SIZES:
+                        ms, points = timed(tools, tab, w, h, draws)
+                        samples[(w, h)].append((r, points, ms))
         finally:
-            tools.close()
+            if tools:
+                tools.close()
+            server.terminate()
+            server.wait()
+            log.close()
+    print("Embedded model (62,502 points), yaw 30, pitch 10, zoom 1; ms a frame (the fastest "
+          "batch), median of %d rounds (each round's in brackets); wasm in Chromium over native "
+          "fixed_fast per round:" % rounds)
+    for w, h in EMBEDDED_SIZES:
+        fast = [n[("fixed_fast", w, h)] for n in native]
+        simd = [n[("fixed_simd", w, h)] for n in native]
+        wasm = [p[(w, h)] for p in page_ms]
+        ratios = [a / b for a, b in zip(wasm, fast)]
+        print("  %dx%d: native fixed_fast %.3f [%s], fixed_simd %.3f [%s], wasm %.3f [%s], "
+              "wasm/fixed_fast %.2fx [%s]" %
+              (w, h, median(fast), ", ".join("%.3f" % v for v in fast),
+               median(simd), ", ".join("%.3f" % v for v in simd),
+               median(wasm), ", ".join("%.3f" % v for v in wasm),
+               median(ratios), ", ".join("%.2f" % v for v in ratios)))
+    print("Thinned models (%s), wasm in Chromium, the fastest of %d batches of %d draws each:" %
+          (", ".join("%g" % f for f in models), BATCHES, draws))
+    for w, h in FIT_SIZES:
+        rows = samples[(w, h)]
+        for r, points, ms in rows:
+            print("  %dx%d round %d: %6d points %.4f ms" % (w, h, r + 1, points, ms))
+        fixed, per_point, residuals = fit([(p, t) for _, p, t in rows])
+        rms = (sum(e * e for e in residuals) / len(residuals)) ** 0.5
+        print("  %dx%d fit over %d samples: %.3f ms a frame + %.2f ns a drawn point; residuals "
+              "%.3f ms rms, %.3f ms at most" %
+              (w, h, len(rows), fixed, per_point, rms, max(abs(e) for e in residuals)))
+        for r in range(rounds):
+            fixed, per_point, _ = fit([(p, t) for q, p, t in rows if q == r])
+            print("    round %d alone: %.3f ms + %.2f ns a point" % (r + 1, fixed, per_point))
+        fastest = {}
+        for _, points, ms in rows:
+            fastest[points] = min(ms, fastest.get(points, ms))
+        fixed, per_point, residuals = fit(sorted(fastest.items()))
+        print("    each model's fastest round: %.3f ms + %.2f ns a point, residuals %.3f ms rms" %
+              (fixed, per_point, (sum(e * e for e in residuals) / len(residuals)) ** 0.5))
 
 
 if __name__ == "__main__":

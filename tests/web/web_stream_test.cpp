@@ -2,7 +2,8 @@
 // driven as web/octopoint_stream.js drives it: ask for the next request, serve its bytes from a
 // real chunked file in pieces, end it; the frame of the complete view must be octopoint-render's
 // frame of the same file (the progressive model read whole, drawn, resolved on its background), a
-// damaged chunk must be refused and asked for again, and a body longer than asked refused.
+// damaged chunk must be refused and asked for again, a body longer than asked refused, and the
+// order of the requests must follow the view last drawn.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -212,6 +213,46 @@ TEST_F(WebStream, StopsForGoodOnAHeadThatIsNotAChunkedModel) {
   EXPECT_EQ(octopoint_web_stream_next(), -1);
   EXPECT_EQ(octopoint_web_stream_status()[0], 3u);  // failed
   EXPECT_EQ(drawWebView(view), -1);
+}
+
+// Plays the page for `view` until the view is complete: the offsets of the requests it made.
+std::vector<std::uint64_t> offsetsUntilViewComplete(const Bytes& image, const WebView& view) {
+  std::vector<std::uint64_t> offsets;
+  for (int round = 0; round < 10000; ++round) {
+    const bool drew = drawWebView(view) == 0;  // the view the order follows
+    if (drew && octopoint_web_stream_status()[7] == 1) break;
+    const std::int32_t id = octopoint_web_stream_next();
+    if (id <= 0) break;
+    const std::uint32_t* words = octopoint_web_stream_request();
+    const std::uint64_t offset = words[0] | std::uint64_t{words[1]} << 32;
+    const std::uint64_t size = std::min<std::uint64_t>(words[2], image.size() - offset);
+    offsets.push_back(offset);
+    std::memcpy(octopoint_web_input(std::int32_t(size)), image.data() + offset, size);
+    EXPECT_EQ(octopoint_web_stream_receive(id, std::int32_t(size)), 0) << octopoint_web_error();
+    EXPECT_EQ(octopoint_web_stream_end(id), 0) << octopoint_web_error();
+  }
+  return offsets;
+}
+
+TEST_F(WebStream, AsksForWhatTheLastDrawnViewSeesFirst) {
+  // Close up (zoom 4: a column through the middle of the model) from the front and from above:
+  // each view asks for its own parts first, and is complete before the whole file has come.
+  WebView front;
+  front.zoom = 4 << 16;
+  WebView above = front;
+  above.pitch = 90000;
+  const std::vector<std::uint64_t> for_front = offsetsUntilViewComplete(image, front);
+  ASSERT_EQ(octopoint_web_stream_open(), 0);  // a new stream of the same file
+  const std::vector<std::uint64_t> for_above = offsetsUntilViewComplete(image, above);
+  EXPECT_NE(for_front, for_above);
+  ASSERT_EQ(drawWebView(above), 0) << octopoint_web_error();
+  EXPECT_EQ(webPixels(above), nativeChunkedFrame(image, above));
+  // The rest of the file: more requests still.
+  const Served rest = serveAll(image, above, 1000, [](std::uint64_t, std::uint64_t) { return -1; });
+  EXPECT_GT(rest.requests, 0);
+  ASSERT_EQ(octopoint_web_stream_open(), 0);
+  const Served all = serveAll(image, front, 1000, [](std::uint64_t, std::uint64_t) { return -1; });
+  EXPECT_LT(for_front.size(), std::size_t(all.requests));
 }
 
 }  // namespace

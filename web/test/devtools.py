@@ -1,6 +1,6 @@
 """Headless Chromium driven over its DevTools pipe (--remote-debugging-pipe: no socket, no package
 beyond Python's own library), for the web page's checks and measurements (scripts/test-web's
-streaming checks, web/test/stream_check.py; lab/scripts/web_frame_time.py)."""
+streaming checks, web/test/stream_check.py, web/test/csp_check.py; lab/scripts/web_*.py)."""
 import json
 import os
 import subprocess
@@ -13,7 +13,7 @@ CHROMIUM = "/usr/lib/chromium/chromium"  # the binary: Debian's /usr/bin/chromiu
 class DevTools:
     """The DevTools protocol over Chromium's pipe: JSON messages ended by a NUL byte."""
 
-    def __init__(self, profile):
+    def __init__(self, profile, extra_args=()):
         to_chromium_read, self.to_chromium = os.pipe()
         self.from_chromium, from_chromium_write = os.pipe()
 
@@ -23,7 +23,7 @@ class DevTools:
             os.dup2(write_end, 4)
 
         args = [CHROMIUM, "--headless", "--disable-gpu", "--remote-debugging-pipe",
-                "--user-data-dir=" + profile, "about:blank"]
+                "--user-data-dir=" + profile, *extra_args, "about:blank"]
         if os.getuid() == 0:
             args.insert(2, "--no-sandbox")  # Chromium refuses to run as root with its sandbox
         self.process = subprocess.Popen(args, close_fds=False, preexec_fn=wire,
@@ -74,6 +74,17 @@ class DevTools:
         """Opens `url` in a new tab; returns the session to evaluate in."""
         target = self.call("Target.createTarget", {"url": url})["targetId"]
         return self.call("Target.attachToTarget", {"targetId": target, "flatten": True})["sessionId"]
+
+    def open_watched(self, url, script):
+        """Opens `url` in a new tab that runs `script` first, before any of the page's own (and
+        whatever the page's Content-Security-Policy says); returns the session."""
+        target = self.call("Target.createTarget", {"url": "about:blank"})["targetId"]
+        session = self.call("Target.attachToTarget", {"targetId": target, "flatten": True})[
+            "sessionId"]
+        self.call("Page.enable", {}, session)
+        self.call("Page.addScriptToEvaluateOnNewDocument", {"source": script}, session)
+        self.call("Page.navigate", {"url": url}, session)
+        return session
 
     def wait_for(self, session, expression, seconds):
         """Evaluates `expression` every 50 ms until it is true; its last value (false at timeout)."""
