@@ -343,6 +343,25 @@ std::size_t pixelCount(std::int32_t width, std::int32_t height) {
   return static_cast<std::size_t>(width) * static_cast<std::size_t>(height);
 }
 
+// Division of any 32-bit n by one divisor d >= 1, one division for several quotients (a pixel's
+// three colours): with inverse = floor((2^32 - 1) / d), q = floor(n inverse / 2^32) is floor(n /
+// d) or one less (d inverse >= 2^32 - d, so n / d - n inverse / 2^32 <= n / 2^32 < 1, and
+// n inverse / 2^32 < n / d), and one compare of the remainder corrects it: exactly n / d.
+class Reciprocal {
+ public:
+  explicit Reciprocal(std::uint32_t divisor)
+      : divisor_(divisor), inverse_(0xFFFF'FFFFU / divisor) {}
+  std::uint32_t divide(std::uint32_t n) const {
+    auto q = static_cast<std::uint32_t>((std::uint64_t{n} * inverse_) >> 32);
+    if (n - q * divisor_ >= divisor_) ++q;
+    return q;
+  }
+
+ private:
+  std::uint32_t divisor_;
+  std::uint32_t inverse_;
+};
+
 std::uint32_t packRgb(std::uint32_t r, std::uint32_t g, std::uint32_t b) {
   return r << 16 | g << 8 | b;
 }
@@ -430,8 +449,9 @@ bool SmoothSplats::finish(FrameView& frame) {
         continue;
       }
       const std::uint32_t half = sum.weight / 2;  // rounded to nearest
-      sum.r = packRgb((sum.r + half) / sum.weight, (sum.g + half) / sum.weight,
-                      (sum.b + half) / sum.weight);
+      const Reciprocal weight(sum.weight);
+      sum.r = packRgb(weight.divide(sum.r + half), weight.divide(sum.g + half),
+                      weight.divide(sum.b + half));
     }
   }
   return true;
