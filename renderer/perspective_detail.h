@@ -48,8 +48,11 @@ struct PerspectiveDetail {
   }
 };
 
-// `depths`: ascending, 1..kMaxRenderDepth, 1 to format::kMaxLevels of them.
-PerspectiveDetail perspectiveDetail(const PerspectiveView& view, std::span<const int> depths);
+// `depths`: ascending, 1..kMaxRenderDepth, 1 to format::kMaxLevels of them. `coarser` (0..8)
+// relaxes the rule to voxels of at most 2^coarser pixels: the interactive viewer's coarse frames
+// (a stored depth coarser where depths are a factor of two apart), drawn while the eye moves.
+PerspectiveDetail perspectiveDetail(const PerspectiveView& view, std::span<const int> depths,
+                                    int coarser = 0);
 
 // What the walk of one stored depth (index `layer` of the detail's depths) carries down a path.
 struct DetailState {

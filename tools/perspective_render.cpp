@@ -56,7 +56,8 @@ void drawOrbit(const PerspectiveOptions& options, const PerspectiveJob& job) {
       job.camera, options.fov.value_or(Angle::fromDegrees(kDefaultFieldOfViewDegrees)));
   cli::checkOutputFile(job.output);
   PerspectiveDrawStats stats;
-  writePng(job.output, renderPerspective(*job.model, depthToDraw(job), view, job.background, &stats));
+  writePng(job.output,
+           renderPerspective(*job.model, depthToDraw(job), view, job.background, &stats));
   // Where the eye is in the scan, so that --eye can take the view from here.
   std::string eye;
   if (const std::optional<ScanCube> cube = scanCube(job.model->cubePlacement())) {
@@ -64,8 +65,8 @@ void drawOrbit(const PerspectiveOptions& options, const PerspectiveJob& job) {
           lookText(view.camera.yaw, view.camera.pitch, view.camera.roll);
   }
   std::printf("%s: %s, perspective%s -> %s (%dx%d)\n", job.label.c_str(),
-              depthText(job, stats).c_str(), eye.c_str(), job.output.c_str(),
-              job.camera.width, job.camera.height);
+              depthText(job, stats).c_str(), eye.c_str(), job.output.c_str(), job.camera.width,
+              job.camera.height);
 }
 
 void drawEye(const PerspectiveOptions& options, const PerspectiveJob& job) {
@@ -77,7 +78,8 @@ void drawEye(const PerspectiveOptions& options, const PerspectiveJob& job) {
                   job.camera.width, job.camera.height, "--eye");
   cli::checkOutputFile(job.output);
   PerspectiveDrawStats stats;
-  writePng(job.output, renderPerspective(*job.model, depthToDraw(job), view, job.background, &stats));
+  writePng(job.output,
+           renderPerspective(*job.model, depthToDraw(job), view, job.background, &stats));
   std::printf("%s: %s, eye %s looking %s -> %s (%dx%d)\n", job.label.c_str(),
               depthText(job, stats).c_str(), scanPointText(*options.eye).c_str(),
               lookText(look.yaw, look.pitch, look.roll).c_str(), job.output.c_str(),
@@ -177,16 +179,15 @@ void drawPath(const PerspectiveOptions& options, const PerspectiveJob& job) {
   PerspectiveDrawStats all;  // summed over the frames
   for (std::size_t i = 0; i < views.size(); ++i) {
     PerspectiveDrawStats stats;
-    output.add(static_cast<int>(i), renderPerspective(*job.model, depthToDraw(job), views[i],
-                                                      job.background, &stats));
+    output.add(static_cast<int>(i),
+               renderPerspective(*job.model, depthToDraw(job), views[i], job.background, &stats));
     all.leaves += stats.leaves;
   }
   const bool video = output.hasVideo();
   output.finish();
   std::printf("%s: %s, %d frames along %s -> %s .. %s%s%s (%dx%d)\n", job.label.c_str(),
-              depthText(job, all).c_str(), options.frames,
-              cli::displayPath(options.path).c_str(), output.frameName(0).c_str(),
-              output.frameName(options.frames - 1).c_str(),
+              depthText(job, all).c_str(), options.frames, cli::displayPath(options.path).c_str(),
+              output.frameName(0).c_str(), output.frameName(options.frames - 1).c_str(),
               video ? " and " : ", no video (OpenCV's Motion JPEG writer refused it)",
               video ? output.videoName().c_str() : "", job.camera.width, job.camera.height);
 }
