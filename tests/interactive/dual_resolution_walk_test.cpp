@@ -107,7 +107,8 @@ TEST_F(DualResolution, WhileWalkingTheCoarseFramesShowTheEyeOfTheirOwnTime) {
     EXPECT_EQ(info.view.walker.eye.z, start.z + info.view_time_us * kWalkSpeed / 1'000'000);
     EXPECT_EQ(info.view.walker.eye.x, start.x);
     if (coarse_seen == 1) {
-      EXPECT_EQ(frameChecksum(*frame), frameChecksum(walkFrame(*model_, config, info.view.walker, 1)))
+      EXPECT_EQ(frameChecksum(*frame),
+                frameChecksum(walkFrame(*model_, config, info.view.walker, 1)))
           << "a coarse frame is the perspective renderer's a stored depth coarser";
     }
   }
