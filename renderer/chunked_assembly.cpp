@@ -24,7 +24,8 @@ void splice(std::span<const HeldRegion> regions, int level, int region_level,
   const int shift = 3 * (region_level - 1 - level);
   const auto child = [shift](const HeldRegion& region) { return (region.code >> shift) & 7u; };
   std::uint8_t mask = 0;
-  for (const HeldRegion& region : regions) mask = static_cast<std::uint8_t>(mask | 1u << child(region));
+  for (const HeldRegion& region : regions)
+    mask = static_cast<std::uint8_t>(mask | 1u << child(region));
   nodes.push_back(mask);
   std::size_t begin = 0;
   while (begin < regions.size()) {  // ascending codes: each child's regions are one run
@@ -63,24 +64,24 @@ std::unique_ptr<AssembledModel> assembleChunked(const ProgressiveModel& model) {
     assembled->leaves.push_back(std::move(leaves));
   }
   for (std::size_t i = 0; i < assembled->nodes.size(); ++i) {
-    assembled->levels.push_back({static_cast<std::uint8_t>(head.levels[i].depth),
-                                 assembled->nodes[i].data(),
-                                 static_cast<std::uint32_t>(assembled->nodes[i].size()),
-                                 assembled->leaves[i].data(),
-                                 static_cast<std::uint32_t>(assembled->leaves[i].size())});
+    assembled->levels.push_back(
+        {static_cast<std::uint8_t>(head.levels[i].depth), assembled->nodes[i].data(),
+         static_cast<std::uint32_t>(assembled->nodes[i].size()), assembled->leaves[i].data(),
+         static_cast<std::uint32_t>(assembled->leaves[i].size())});
   }
   const bool placed = head.format_version == chunked::kVersion5;
-  assembled->embedded = EmbeddedModel{"chunked model",
-                                      placed ? format::kVersion4 : format::kVersion2,
-                                      static_cast<std::uint8_t>(head.flags & chunked::kFlagSyntheticColour),
-                                      head.cube_edge_pm,
-                                      static_cast<std::uint16_t>(head.palette_count),
-                                      head.palette_rgb.data(),
-                                      0,
-                                      nullptr,
-                                      static_cast<std::uint8_t>(assembled->levels.size()),
-                                      assembled->levels.data(),
-                                      placed ? head.cube : CubePlacement{}};
+  assembled->embedded =
+      EmbeddedModel{"chunked model",
+                    placed ? format::kVersion4 : format::kVersion2,
+                    static_cast<std::uint8_t>(head.flags & chunked::kFlagSyntheticColour),
+                    head.cube_edge_pm,
+                    static_cast<std::uint16_t>(head.palette_count),
+                    head.palette_rgb.data(),
+                    0,
+                    nullptr,
+                    static_cast<std::uint8_t>(assembled->levels.size()),
+                    assembled->levels.data(),
+                    placed ? head.cube : CubePlacement{}};
   ModelIssue issue;
   assembled->view = ModelView::fromEmbedded(assembled->embedded, &issue);
   if (!assembled->view) return nullptr;

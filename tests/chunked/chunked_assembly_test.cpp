@@ -2,6 +2,8 @@
 // depths are the very streams the one-file model holds, byte for byte, and so its perspective
 // frames are that model's; held in part (a prefix of the file), the base and the complete levels
 // only, each again the one-file stream.
+#include "renderer/chunked_assembly.h"
+
 #include <gtest/gtest.h>
 
 #include "codegen/chunked_writer.h"
@@ -9,7 +11,6 @@
 #include "codegen/model_writer.h"
 #include "octopoint/models.h"
 #include "octopoint/progressive.h"
-#include "renderer/chunked_assembly.h"
 #include "renderer/perspective.h"
 #include "renderer/perspective_renderer.h"
 #include "tests/support/chunked_test_support.h"
@@ -41,8 +42,8 @@ struct AssemblyFixture {
   std::vector<prepare::PreparedLevel> streams;
 };
 
-void expectLevels(const AssembledModel& assembled, const std::vector<prepare::PreparedLevel>& streams,
-                  std::size_t count) {
+void expectLevels(const AssembledModel& assembled,
+                  const std::vector<prepare::PreparedLevel>& streams, std::size_t count) {
   ASSERT_EQ(assembled.nodes.size(), count);
   ASSERT_EQ(assembled.view->levelCount(), static_cast<int>(count));
   for (std::size_t i = 0; i < count; ++i) {
