@@ -16,12 +16,11 @@ PerspectiveDetail perspectiveDetail(const PerspectiveView& view, std::span<const
     detail.depth[i] = depth;
     // e <= 1 pixel <=> z * 2^16 >= f_q16 * 2^(24 - depth) <=> z >= f_q16 * 2^(8 - depth) (Q.24;
     // f below 2^32 in Q.16, so the product fits).
-    // Spanning at most 2^coarser pixels: z >= f_q16 * 2^(8 - depth - coarser), rounded up.
-    const int shift = 8 - depth - coarser;
-    detail.near_enough[i] = shift >= 0
-                                ? view.focal_q16 << shift
-                                : (view.focal_q16 + (std::int64_t{1} << -shift) - 1) >> -shift;
+    detail.near_enough[i] =
+        depth <= 8 ? view.focal_q16 << (8 - depth)
+                   : (view.focal_q16 + (std::int64_t{1} << (depth - 8)) - 1) >> (depth - 8);
   }
+  detail.coarser = coarser;
   const int finest = depths.back();
   for (int level = 0; level <= kMaxRenderDepth; ++level) {
     // Half a node's edge, rotated, plus the rounding its centre gathers on the way down (one unit
