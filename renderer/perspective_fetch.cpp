@@ -33,9 +33,10 @@ std::size_t PerspectiveFetchOrder::order(const ProgressiveModel& model, const Pe
   // Detail by distance over the model's depths (the base's included), as many as a frame draws.
   const int levels = std::min(model.levelCount(), format::kMaxLevels);
   std::array<int, format::kMaxLevels> depths{};
-  for (int level = 0; level < levels; ++level) depths[static_cast<std::size_t>(level)] = model.levelDepth(level);
-  const PerspectiveDetail detail =
-      perspectiveDetail(view, std::span<const int>(depths.data(), static_cast<std::size_t>(levels)));
+  for (int level = 0; level < levels; ++level)
+    depths[static_cast<std::size_t>(level)] = model.levelDepth(level);
+  const PerspectiveDetail detail = perspectiveDetail(
+      view, std::span<const int>(depths.data(), static_cast<std::size_t>(levels)));
   // The frustum's side planes x = +-slope_x * z, y = +-slope_y * z (Q1.30).
   const PerspectiveWalkTables tables =
       perspectiveWalkTables(view, depths[0], std::int64_t{1} << (view.fraction_bits - 2));
@@ -56,7 +57,8 @@ std::size_t PerspectiveFetchOrder::order(const ProgressiveModel& model, const Pe
     for (std::uint32_t i = 0; i < count; ++i) {
       const ChunkRecord& record = model.record(level, i);
       const ChunkState state = model.chunkState(level, i);
-      const bool blocked = state == ChunkState::kUnavailable || blocked_[at - 1][record.parent] != 0;
+      const bool blocked =
+          state == ChunkState::kUnavailable || blocked_[at - 1][record.parent] != 0;
       blocked_[at][i] = blocked ? 1 : 0;
       if (state != ChunkState::kMissing || blocked) continue;
       const CameraPoint c = toCameraSpace(view, regionCentre(record.region, region_level));
@@ -66,9 +68,10 @@ std::size_t PerspectiveFetchOrder::order(const ProgressiveModel& model, const Pe
       const std::optional<std::int64_t> side_x = mulShiftRoundQuick(far_z, tables.slope_x_q30, 30);
       const std::optional<std::int64_t> side_y = mulShiftRoundQuick(far_z, tables.slope_y_q30, 30);
       // As the walk's test (renderer/perspective_walk.h, outsideFrustum), one unit conservative.
-      const bool invisible = far_z < view.camera.near ||
-                             (side_x && (c.x - reach > *side_x + 1 || c.x + reach < -*side_x - 1)) ||
-                             (side_y && (c.y - reach > *side_y + 1 || c.y + reach < -*side_y - 1));
+      const bool invisible =
+          far_z < view.camera.near ||
+          (side_x && (c.x - reach > *side_x + 1 || c.x + reach < -*side_x - 1)) ||
+          (side_y && (c.y - reach > *side_y + 1 || c.y + reach < -*side_y - 1));
       if (invisible && !include_invisible) continue;
       // Nearest depth in 1/2^20 cube edge, 0 for a region the eye is in, at most 2^32 - 1 (the
       // eye lies within 128 cube edges: 2^31 of them).
@@ -76,8 +79,8 @@ std::size_t PerspectiveFetchOrder::order(const ProgressiveModel& model, const Pe
           std::clamp<std::int64_t>(nearest >> 4, 0, std::int64_t{0xFFFF'FFFF}));
       FetchItem item = model.chunkItem(level, i);
       item.visible = !invisible;
-      scratch_.push_back({(invisible ? std::uint64_t{1} << 63 : 0) | level_key | near_key << 27 | i,
-                          item});
+      scratch_.push_back(
+          {(invisible ? std::uint64_t{1} << 63 : 0) | level_key | near_key << 27 | i, item});
     }
   }
   if (total != nullptr) *total = scratch_.size();

@@ -2,6 +2,8 @@
 // tables first, then visible chunks coarse level before fine and nearest first within a level,
 // only where detail by distance asks for the level's depth; never what is held or behind the eye;
 // and the fetch planner's requests follow it.
+#include "renderer/perspective_fetch.h"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -12,7 +14,6 @@
 #include "octopoint/models.h"
 #include "octopoint/progressive.h"
 #include "renderer/perspective.h"
-#include "renderer/perspective_fetch.h"
 #include "tests/support/model_images.h"
 
 namespace octopoint {
@@ -131,10 +132,9 @@ INSTANTIATE_TEST_SUITE_P(InsideAndFar, PerspectiveFetch, ::testing::Bool());
 TEST(PerspectiveFetchPlan, TablesComeFirstAndHeldChunksAreNotAskedAgain) {
   const FetchFixture f;
   ChunkedIssue issue;
-  const std::optional<ProgressiveModel> head =
-      progressiveModelFromPrefix(std::span(f.image).first(static_cast<std::size_t>(
-                                     *chunkedHeadBytes(f.image, &issue))),
-                                 &issue);
+  const std::optional<ProgressiveModel> head = progressiveModelFromPrefix(
+      std::span(f.image).first(static_cast<std::size_t>(*chunkedHeadBytes(f.image, &issue))),
+      &issue);
   ASSERT_TRUE(head.has_value());
   PerspectiveFetchOrder order;
   std::vector<FetchItem> items(16);
@@ -151,9 +151,11 @@ TEST(PerspectiveFetchPlan, TablesComeFirstAndHeldChunksAreNotAskedAgain) {
   net::FetchRange range;
   ASSERT_EQ(planner.next(model, insideView(), 1u << 30, range), net::FetchPlanner::Outcome::kRange);
   EXPECT_EQ(range.items.front(), first[0]);
-  std::size_t delivered = planner.deliver(
-      model, range, std::span(f.image).subspan(range.offset, range.size), 0,
-      [](const FetchItem&, const ChunkedIssue& taken) { EXPECT_EQ(taken.error, ChunkedError::kNone); });
+  std::size_t delivered =
+      planner.deliver(model, range, std::span(f.image).subspan(range.offset, range.size), 0,
+                      [](const FetchItem&, const ChunkedIssue& taken) {
+                        EXPECT_EQ(taken.error, ChunkedError::kNone);
+                      });
   EXPECT_EQ(delivered, range.items.size());
   std::vector<FetchItem> after(100'000);
   after.resize(order.order(model, insideView(), true, after));
