@@ -1,9 +1,12 @@
 #include <algorithm>
 #include <cassert>
 
+#include "fixedpoint/trig.h"
 #include "octopoint/camera.h"
 #include "octopoint/interactive.h"
 #include "renderer/level_of_detail.h"
+#include "renderer/perspective.h"
+#include "renderer/perspective_renderer.h"
 
 namespace octopoint {
 namespace {
@@ -30,8 +33,67 @@ Angle turnFor(std::int64_t held_us, std::int32_t degrees_per_second) {
   return Angle::fromTurns16(units);
 }
 
+// How far the eye walks in `held_us` at `speed` (Q.24 cube edges per second): exact to the unit
+// below, whole seconds and the rest apart so that nothing overflows (speed <= 2^30).
+std::int64_t walkDistance(std::int64_t held_us, std::int64_t speed) {
+  return held_us / 1'000'000 * speed + held_us % 1'000'000 * speed / 1'000'000;
+}
+
+// `distance` (Q.24) times a Q1.30 sine.
+std::int64_t along(std::int64_t distance, std::int32_t sine_q30) {
+  // The eye stays within kMaxEyeDistance cube edges: the product's result fits.
+  return mulShiftRoundQuick(distance, sine_q30, 30).value_or(0);
+}
+
+// Keeps the eye where the camera holds it (renderer/perspective.h).
+std::int64_t clampEye(std::int64_t coordinate) {
+  constexpr std::int64_t kLimit = kMaxEyeDistance * kPerspectiveUnit;
+  return std::clamp(coordinate, -kLimit, kLimit);
+}
+
+// Walk mode: the eye moved by a key held for `held_us`: forward and back along the look's yaw,
+// level (the pitch does not tip the walk), sideways at right angles to it, up and down along -y
+// and +y (the model's y points down).
+WalkEye walked(WalkEye walker, NavigationKey key, std::int64_t held_us, std::int64_t speed) {
+  // Clamped: the eye cannot leave the camera's reach, so a day's hold gives the same.
+  const std::int64_t distance =
+      std::min(walkDistance(held_us, speed), 4 * kMaxEyeDistance * kPerspectiveUnit);
+  const std::int32_t sine = sinQ30(walker.yaw), cosine = cosQ30(walker.yaw);
+  // Forward is (sin yaw, 0, cos yaw), right (cos yaw, 0, -sin yaw).
+  std::int64_t dx = 0, dy = 0, dz = 0;
+  switch (key) {
+    case NavigationKey::kPitchUp:
+      dx = along(distance, sine), dz = along(distance, cosine);
+      break;
+    case NavigationKey::kPitchDown:
+      dx = -along(distance, sine), dz = -along(distance, cosine);
+      break;
+    case NavigationKey::kYawRight:
+      dx = along(distance, cosine), dz = -along(distance, sine);
+      break;
+    case NavigationKey::kYawLeft:
+      dx = -along(distance, cosine), dz = along(distance, sine);
+      break;
+    case NavigationKey::kRise:
+      dy = -distance;
+      break;
+    case NavigationKey::kSink:
+      dy = distance;
+      break;
+    case NavigationKey::kDrag:
+      break;
+  }
+  walker.eye = {clampEye(walker.eye.x + dx), clampEye(walker.eye.y + dy),
+                clampEye(walker.eye.z + dz)};
+  return walker;
+}
+
 ViewParameters moved(ViewParameters view, NavigationKey key, std::int64_t held_us,
-                     std::int32_t degrees_per_second) {
+                     std::int32_t degrees_per_second, std::int64_t walk_speed) {
+  if (view.walk) {
+    view.walker = walked(view.walker, key, held_us, walk_speed);
+    return view;
+  }
   const Angle turn = turnFor(held_us, degrees_per_second);
   switch (key) {
     case NavigationKey::kYawLeft:
@@ -46,8 +108,21 @@ ViewParameters moved(ViewParameters view, NavigationKey key, std::int64_t held_u
     case NavigationKey::kPitchDown:
       view.pitch = view.pitch + turn;
       break;
+    case NavigationKey::kRise:
+    case NavigationKey::kSink:
+    case NavigationKey::kDrag:
+      break;
   }
   return view;
+}
+
+// Walk mode's pitch stays within straight down .. straight up.
+Angle turnedPitch(Angle pitch, std::int32_t turn) {
+  constexpr std::int32_t kQuarter = Angle::kUnitsPerTurn / 4;
+  const std::int32_t units = pitch.turns16();
+  const std::int32_t signed_units =
+      units > Angle::kUnitsPerTurn / 2 ? units - Angle::kUnitsPerTurn : units;
+  return Angle::fromTurns16(std::clamp(signed_units + turn, -kQuarter, kQuarter));
 }
 
 std::int64_t steadyMicroseconds() { return SteadyClock().nowMicroseconds(); }
@@ -89,12 +164,21 @@ DualResolutionRenderer::DualResolutionRenderer(const ModelView* model, const Lev
       clock_(clock),
       config_(config),
       render_(std::move(render)),
-      coarse_worker_{HoleFiller(config.width), config.width},
-      fine_worker_{HoleFiller(config.width), config.width},
+      coarse_worker_{HoleFiller(config.width), config.width, nullptr},
+      fine_worker_{HoleFiller(config.width), config.width, nullptr},
       base_view_(config.initial_view),
+      walk_speed_(std::clamp(config.walk_speed, kMinWalkSpeed, kMaxWalkSpeed)),
       width_(config.width),
       height_(config.height) {
   status_.view_version = view_version_;
+  if (model_ != nullptr) {
+    coarse_worker_.perspective = std::make_unique<PerspectiveRenderer>(*model_);
+    fine_worker_.perspective = std::make_unique<PerspectiveRenderer>(*model_);
+  } else {
+    base_view_.walk = false;  // walk mode needs the whole model
+  }
+  status_.walk = base_view_.walk;
+  status_.walk_speed = walk_speed_;
   if (!render_) {
     const Variant variant = config.variant;
     render_ = [variant](const LevelView& level, const FrameSetup& setup, Framebuffer& frame,
@@ -125,13 +209,53 @@ bool DualResolutionRenderer::anyKeyHeld() const {
   return std::any_of(held_.begin(), held_.end(), [](const HeldKey& key) { return key.held; });
 }
 
+bool DualResolutionRenderer::movingKeyHeld() const {
+  for (int k = 0; k < kNavigationKeyCount; ++k) {
+    if (held_[static_cast<std::size_t>(k)].held &&
+        static_cast<NavigationKey>(k) != NavigationKey::kDrag)
+      return true;
+  }
+  return false;
+}
+
+void DualResolutionRenderer::foldMotion(std::int64_t time_us) {
+  base_view_ = viewAt(time_us);
+  for (HeldKey& key : held_) key.since_us = std::max(key.since_us, time_us);
+}
+
+void DualResolutionRenderer::toggleWalk(std::int64_t time_us) {
+  foldMotion(time_us);
+  if (!base_view_.walk) {
+    // The eye enters where the orbit view's perspective puts it (a model too small on screen to
+    // put it within the camera's reach keeps the last walk eye).
+    Camera camera;
+    camera.yaw = base_view_.yaw;
+    camera.pitch = base_view_.pitch;
+    camera.zoom = base_view_.zoom;
+    camera.width = width_;
+    camera.height = height_;
+    PerspectiveView view;
+    if (orbitPerspective(camera, config_.fov, kDefaultFractionBits, &view) ==
+        PerspectiveError::kNone) {
+      base_view_.walker = {view.camera.eye, view.camera.yaw, view.camera.pitch, view.camera.roll};
+    }
+  } else {
+    // Up and down mean nothing in orbit mode.
+    held_[static_cast<std::size_t>(NavigationKey::kRise)].held = false;
+    held_[static_cast<std::size_t>(NavigationKey::kSink)].held = false;
+  }
+  base_view_.walk = !base_view_.walk;
+  status_.walk = base_view_.walk;
+}
+
 ViewParameters DualResolutionRenderer::viewAt(std::int64_t time_us) const {
   ViewParameters view = base_view_;
   for (int k = 0; k < kNavigationKeyCount; ++k) {
     const HeldKey& key = held_[static_cast<std::size_t>(k)];
     if (key.held) {
       view = moved(view, static_cast<NavigationKey>(k),
-                   std::max<std::int64_t>(0, time_us - key.since_us), config_.degrees_per_second);
+                   std::max<std::int64_t>(0, time_us - key.since_us), config_.degrees_per_second,
+                   walk_speed_);
     }
   }
   return view;
@@ -152,6 +276,9 @@ void DualResolutionRenderer::handle(const ViewEvent& event) {
       case ViewEventKind::kPress: {
         HeldKey& key = held_[static_cast<std::size_t>(event.key)];
         if (key.held) return;  // keyboard auto-repeat
+        const bool walk_only =
+            event.key == NavigationKey::kRise || event.key == NavigationKey::kSink;
+        if (walk_only && !base_view_.walk) return;
         key = {true, event.time_us};
         changeView();
         break;
@@ -161,7 +288,7 @@ void DualResolutionRenderer::handle(const ViewEvent& event) {
         if (!key.held) return;
         base_view_ =
             moved(base_view_, event.key, std::max<std::int64_t>(0, event.time_us - key.since_us),
-                  config_.degrees_per_second);
+                  config_.degrees_per_second, walk_speed_);
         key.held = false;
         changeView();
         break;
@@ -174,6 +301,16 @@ void DualResolutionRenderer::handle(const ViewEvent& event) {
         return;
       case ViewEventKind::kZoomIn:
       case ViewEventKind::kZoomOut:
+        if (base_view_.walk) {  // the walk speed, which changes no frame
+          foldMotion(event.time_us);
+          const bool faster = event.kind == ViewEventKind::kZoomIn;
+          walk_speed_ = std::clamp(faster ? walk_speed_ * kZoomStepNumerator / kZoomStepDenominator
+                                          : walk_speed_ * kZoomStepDenominator / kZoomStepNumerator,
+                                   kMinWalkSpeed, kMaxWalkSpeed);
+          status_.walk_speed = walk_speed_;
+          status_changed_.notify_all();
+          return;
+        }
         base_view_.zoom = zoomStep(base_view_.zoom, event.kind == ViewEventKind::kZoomIn);
         coarse_once_ = true;
         changeView();
@@ -185,7 +322,23 @@ void DualResolutionRenderer::handle(const ViewEvent& event) {
         break;
       case ViewEventKind::kReset:
         base_view_ = config_.initial_view;
+        base_view_.walk = base_view_.walk && canWalk();
+        status_.walk = base_view_.walk;
         for (HeldKey& key : held_) key.since_us = event.time_us;  // held keys turn on from here
+        coarse_once_ = true;
+        changeView();
+        break;
+      case ViewEventKind::kToggleWalk:
+        if (!canWalk()) return;
+        toggleWalk(event.time_us);
+        coarse_once_ = true;
+        changeView();
+        break;
+      case ViewEventKind::kTurn:
+        if (!base_view_.walk) return;
+        foldMotion(event.time_us);
+        base_view_.walker.yaw = base_view_.walker.yaw + Angle::fromTurns16(event.turn_yaw);
+        base_view_.walker.pitch = turnedPitch(base_view_.walker.pitch, event.turn_pitch);
         coarse_once_ = true;
         changeView();
         break;
@@ -253,6 +406,7 @@ bool DualResolutionRenderer::draw(Slot& slot, Worker& worker, const std::atomic<
   camera.zoom = slot.info.view.zoom;
   camera.width = slot.info.width;
   camera.height = slot.info.height;
+  if (slot.info.view.walk) return drawWalk(slot, worker, abort);
   FrameSetup setup;
   slot.frame.clear(config_.payload);
   if (draw_view_) {
@@ -276,6 +430,35 @@ bool DualResolutionRenderer::draw(Slot& slot, Worker& worker, const std::atomic<
     // A refused fill cannot happen (fitBuffers made the filler as wide as the frame).
     if (slot.info.view.fill && worker.filler.fill(slot.frame, bridgeDepthLimit(setup)).refused) {
       return false;
+    }
+  }
+  slot.info.checksum = frameChecksum(slot.frame);
+  slot.info.render_us = steadyMicroseconds() - start_us;
+  return true;
+}
+
+bool DualResolutionRenderer::drawWalk(Slot& slot, Worker& worker, const std::atomic<bool>* abort) {
+  const std::int64_t start_us = steadyMicroseconds();
+  slot.frame.clear(PixelPayload::kColour);  // the perspective frames carry colours only
+  PerspectiveCamera camera;
+  camera.eye = slot.info.view.walker.eye;
+  camera.yaw = slot.info.view.walker.yaw;
+  camera.pitch = slot.info.view.walker.pitch;
+  camera.roll = slot.info.view.walker.roll;
+  camera.fov = config_.fov;
+  camera.width = slot.info.width;
+  camera.height = slot.info.height;
+  PerspectiveView view;
+  // The eye is kept within reach and the size within bounds; a refused camera leaves it empty.
+  if (worker.perspective != nullptr &&
+      buildPerspectiveView(camera, kDefaultFractionBits, &view) == PerspectiveError::kNone) {
+    PerspectiveRenderer::Options options;  // detail by distance, culled: octopoint-render --eye's
+    options.coarser = slot.info.source == FrameSource::kCoarse ? 1 : 0;
+    if (worker.perspective->detailDepths().empty()) {
+      slot.info.depth = 0;
+    } else {
+      if (!worker.perspective->draw(view, options, slot.frame, nullptr, abort)) return false;
+      slot.info.depth = worker.perspective->detailDepths().back();
     }
   }
   slot.info.checksum = frameChecksum(slot.frame);
@@ -312,7 +495,7 @@ void DualResolutionRenderer::notifyFrameReady(std::unique_lock<std::mutex>& lock
 void DualResolutionRenderer::coarseLoop() {
   std::unique_lock lock(mutex_);
   while (true) {
-    coarse_wake_.wait(lock, [this] { return stopping_ || anyKeyHeld() || coarse_once_; });
+    coarse_wake_.wait(lock, [this] { return stopping_ || movingKeyHeld() || coarse_once_; });
     if (stopping_) return;
     coarse_once_ = false;
     Slot& slot = *coarse_back_;

@@ -24,13 +24,32 @@ bool FetchPlanner::isFree(const FetchItem& item) const {
 
 FetchPlanner::Outcome FetchPlanner::next(ProgressiveModel& model, const Camera& view,
                                          std::uint64_t budget, FetchRange& range) {
-  std::size_t count = model.fetchPriority(view, false, priority_);
+  return plan(
+      [&](bool include_invisible) {
+        return model.fetchPriority(view, include_invisible, priority_);
+      },
+      budget, range);
+}
+
+FetchPlanner::Outcome FetchPlanner::next(ProgressiveModel& model, const PerspectiveView& view,
+                                         std::uint64_t budget, FetchRange& range) {
+  return plan(
+      [&](bool include_invisible) {
+        return perspective_order_.order(model, view, include_invisible, priority_);
+      },
+      budget, range);
+}
+
+template <typename Priority>
+FetchPlanner::Outcome FetchPlanner::plan(const Priority& priority, std::uint64_t budget,
+                                         FetchRange& range) {
+  std::size_t count = priority(false);
   const auto free = [&](const FetchItem& item) { return isFree(item); };
   auto first =
       std::find_if(priority_.begin(), priority_.begin() + static_cast<std::ptrdiff_t>(count), free);
   if (first == priority_.begin() + static_cast<std::ptrdiff_t>(count) &&
       options_.prefetch_invisible) {
-    count = model.fetchPriority(view, true, priority_);
+    count = priority(true);
     first = std::find_if(priority_.begin(), priority_.begin() + static_cast<std::ptrdiff_t>(count),
                          free);
   }

@@ -15,6 +15,8 @@
 
 #include "octopoint/camera.h"
 #include "octopoint/progressive.h"
+#include "renderer/perspective.h"
+#include "renderer/perspective_fetch.h"
 
 namespace octopoint::net {
 
@@ -47,6 +49,10 @@ class FetchPlanner {
   // that follow it in the file across gaps of at most merge_gap_bytes, up to max_request_bytes.
   Outcome next(ProgressiveModel& model, const Camera& view, std::uint64_t budget,
                FetchRange& range);
+  // The same for a perspective view: the order of renderer/perspective_fetch.h (nearest and
+  // largest on screen first, each region only as fine as its distance asks).
+  Outcome next(ProgressiveModel& model, const PerspectiveView& view, std::uint64_t budget,
+               FetchRange& range);
 
   // Hands `model` every item of `range` from index `next` on whose bytes have all arrived
   // (`arrived` holds the range's first bytes), in order, and takes each out of flight; `taken`
@@ -63,10 +69,14 @@ class FetchPlanner {
 
  private:
   bool isFree(const FetchItem& item) const;
+  // next() given the priority order: `priority(include_invisible)` fills priority_, says how many.
+  template <typename Priority>
+  Outcome plan(const Priority& priority, std::uint64_t budget, FetchRange& range);
 
   FetchPlanOptions options_;
   std::unordered_set<std::uint64_t> in_flight_;
   std::vector<FetchItem> priority_, sorted_;
+  PerspectiveFetchOrder perspective_order_;
 };
 
 }  // namespace octopoint::net

@@ -4,8 +4,10 @@
 
 namespace octopoint {
 
-PerspectiveDetail perspectiveDetail(const PerspectiveView& view, std::span<const int> depths) {
+PerspectiveDetail perspectiveDetail(const PerspectiveView& view, std::span<const int> depths,
+                                    int coarser) {
   assert(!depths.empty() && depths.size() <= format::kMaxLevels);
+  assert(coarser >= 0 && coarser <= 8);
   PerspectiveDetail detail;
   detail.count = static_cast<int>(depths.size());
   for (std::size_t i = 0; i < depths.size(); ++i) {
@@ -18,6 +20,7 @@ PerspectiveDetail perspectiveDetail(const PerspectiveView& view, std::span<const
         depth <= 8 ? view.focal_q16 << (8 - depth)
                    : (view.focal_q16 + (std::int64_t{1} << (depth - 8)) - 1) >> (depth - 8);
   }
+  detail.coarser = coarser;
   const int finest = depths.back();
   for (int level = 0; level <= kMaxRenderDepth; ++level) {
     // Half a node's edge, rotated, plus the rounding its centre gathers on the way down (one unit

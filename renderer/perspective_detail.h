@@ -42,14 +42,20 @@ struct PerspectiveDetail {
   // none is (z below every threshold: near the eye or behind it).
   int ask(std::int64_t z) const {
     for (int i = 0; i + 1 < count; ++i) {
-      if (z >= near_enough[static_cast<std::size_t>(i)]) return i;
+      if (z >= near_enough[static_cast<std::size_t>(i)]) return std::max(0, i - coarser);
     }
-    return count - 1;
+    return std::max(0, count - 1 - coarser);
   }
+  // Asks this many stored depths coarser (never past the coarsest): the interactive viewer's
+  // coarse frames, drawn while the eye moves. Still non-increasing in z, so the rule below holds.
+  int coarser = 0;
 };
 
-// `depths`: ascending, 1..kMaxRenderDepth, 1 to format::kMaxLevels of them.
-PerspectiveDetail perspectiveDetail(const PerspectiveView& view, std::span<const int> depths);
+// `depths`: ascending, 1..kMaxRenderDepth, 1 to format::kMaxLevels of them. `coarser` (0..8)
+// makes every node ask for that many stored depths coarser than its distance asks (never past the
+// coarsest): the interactive viewer's coarse frames, drawn while the eye moves.
+PerspectiveDetail perspectiveDetail(const PerspectiveView& view, std::span<const int> depths,
+                                    int coarser = 0);
 
 // What the walk of one stored depth (index `layer` of the detail's depths) carries down a path.
 struct DetailState {

@@ -47,7 +47,7 @@ bool PerspectiveRenderer::draw(const PerspectiveView& view, const Options& optio
     layers[i] = {&level, &tables_[k], indexes_[k].bottom >= 0 ? &indexes_[k] : nullptr};
   }
   const PerspectiveDetail detail =
-      perspectiveDetail(view, std::span<const int>(depths_.data() + first, count));
+      perspectiveDetail(view, std::span<const int>(depths_.data() + first, count), options.coarser);
   std::optional<OcclusionTiles> occlusion;
   if (options.cull) {
     if (frame.width() != tiles_width_ || frame.height() != tiles_height_ ||

@@ -29,6 +29,8 @@ class PerspectiveRenderer {
                        // stored depth alone
     bool cull = true;  // occlusion culling (the same frame, bit for bit)
     int tile_shift = kOcclusionTileShift;  // its tiles: 2^shift pixels square, 1..6
+    int coarser = 0;  // detail by distance: each part this many stored depths coarser than its
+                      // distance asks, 0..8 (the viewer's coarse frames: 1)
   };
 
   // `model` must outlive the renderer.

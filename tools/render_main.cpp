@@ -23,6 +23,7 @@
 #include "octopoint/render.h"
 #include "octopoint/smooth.h"
 #include "octopoint/styles.h"
+#include "renderer/chunked_assembly.h"
 #include "renderer/level_of_detail.h"
 #include "tools/chunked_render.h"
 #include "tools/contact_sheet.h"
@@ -69,7 +70,9 @@ nor --file nor --url it draws the default model embedded in this binary.
   --perspective      draw in perspective: the eye on the line of sight through the model's centre,
                      where the centre's depth is as large on screen as in the orthographic view
                      of the same zoom (so a narrow --fov converges to it); colour only, no
-                     --fill, --sheet or --style yet (docs/perspective.md)
+                     --fill, --sheet or --style yet (docs/perspective.md). A chunked file is
+                     drawn from its complete depths, the same frame as the one-file model of
+                     those depths; not --url yet
   --eye X,Y,Z        draw in perspective from an eye at X,Y,Z in the scan's own units and axes
                      (the frame octopoint-prepare --crop takes; --info prints where the model's
                      cube lies in it); anywhere within 128 cube edges of the cube's centre, inside
@@ -496,6 +499,24 @@ int renderPerspectiveViews(const ModelView& model, const LevelView& level,
   return 0;
 }
 
+// A chunked model file in perspective: its complete depths spliced back into one model (a
+// complete file: the same model as prepared in one file), each part of the frame at the depth its
+// distance asks for among them.
+int renderChunkedPerspective(const Options& options, const LoadedModel& loaded) {
+  if (options.fetch.point_budget > 0) {
+    throw cli::Error(loaded.label + ": " + options.perspective.mode() +
+                     " draws a chunked file whole: --point-budget does not apply yet");
+  }
+  const std::unique_ptr<AssembledModel> assembled = assembleChunked(*loaded.chunked);
+  if (assembled == nullptr) throw cli::Error(loaded.label + ": its chunks do not make one model");
+  const std::string label = loaded.label + " (chunked, depths " +
+                            std::to_string(assembled->view->level(0).depth) + ".." +
+                            std::to_string(assembled->view->finestLevel().depth) + " of " +
+                            std::to_string(assembled->chunked_levels) + " levels)";
+  const LevelView& level = chooseLevel(*assembled->view, label, options);
+  return renderPerspectiveViews(*assembled->view, level, label, options);
+}
+
 int run(int argc, char** argv) {
   const Options options = parseOptions(argc, argv);
   if (options.list) {
@@ -509,10 +530,8 @@ int run(int argc, char** argv) {
     std::fputs(modelInfo(*loaded).c_str(), stdout);
     return 0;
   }
-  if (loaded->chunked && options.perspective.any()) {
-    throw cli::Error(loaded->label + ": " + options.perspective.mode() +
-                     " does not draw chunked models yet");
-  }
+  if (loaded->chunked && options.perspective.any())
+    return renderChunkedPerspective(options, *loaded);
   if (loaded->chunked && options.style.style != Style::kColour) {
     throw cli::Error("--style " + std::string(styleName(options.style.style)) + ": " +
                      loaded->label +

@@ -26,6 +26,18 @@ void KeyBindings::press(std::vector<SDL_Keycode> keys, std::string label, std::s
   bindings_.push_back(std::move(binding));
 }
 
+void KeyBindings::walkHold(std::vector<SDL_Keycode> keys, std::string label, std::string help,
+                           NavigationKey navigation,
+                           std::function<void(std::int64_t now_us)> action) {
+  KeyBinding binding;
+  binding.keys = std::move(keys);
+  binding.label = std::move(label);
+  binding.help = std::move(help);
+  binding.walk_navigation = navigation;
+  binding.action = std::move(action);
+  bindings_.push_back(std::move(binding));
+}
+
 void KeyBindings::describe(std::string label, std::string help) {
   KeyBinding binding;
   binding.label = std::move(label);

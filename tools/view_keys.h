@@ -26,7 +26,8 @@ struct KeyBinding {
   std::vector<SDL_Keycode> keys;
   std::string label;  // how --help names the keys, e.g. "+ -"
   std::string help;
-  std::optional<NavigationKey> navigation;  // a held key: press and release go to the renderer
+  std::optional<NavigationKey> navigation;       // a held key: press and release go to the renderer
+  std::optional<NavigationKey> walk_navigation;  // the same in walk mode, instead of the action
   std::function<void(std::int64_t now_us)> action;  // otherwise: run when the key goes down
   bool repeats = false;                             // the action also runs on auto-repeat
 };
@@ -40,6 +41,10 @@ class KeyBindings {
   // the label and help to the first and leave both empty on the others.
   void press(std::vector<SDL_Keycode> keys, std::string label, std::string help,
              std::function<void(std::int64_t now_us)> action, bool repeats = false);
+  // A key held in walk mode to move the eye, that acts when pressed in orbit mode (`action` may
+  // be empty: then it does nothing there).
+  void walkHold(std::vector<SDL_Keycode> keys, std::string label, std::string help,
+                NavigationKey navigation, std::function<void(std::int64_t now_us)> action = {});
 
   // A help line only, for an input that is not a key (the mouse wheel).
   void describe(std::string label, std::string help);

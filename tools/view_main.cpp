@@ -3,6 +3,7 @@
 // frames, thread H's fine frame follows at the next 100 ms tick after the last release, and the
 // frames follow the window's size. This file: the command line; the window is tools/viewer.h.
 
+#include <cmath>
 #include <cstdint>
 #include <cstdlib>
 #include <iostream>
@@ -13,6 +14,7 @@
 #include "cli/arguments.h"
 #include "cli/error.h"
 #include "cli/numbers.h"
+#include "cli/real_numbers.h"
 #include "cli/run_tool.h"
 #include "cli/text.h"
 #include "octopoint/http.h"
@@ -27,12 +29,17 @@ using namespace octopoint;
 constexpr const char* kUsage =
     R"(usage: octopoint-view [--model NAME | --file M.oct | --url URL [--point-budget N]] )"
     R"([--size WxH] [--scale N]
-                     [--speed DEG]
+                     [--speed DEG] [--eye X,Y,Z [--look YAW,PITCH[,ROLL]]] [--fov DEG]
+                     [--walk-speed S]
 
 Shows an octopoint model in a resizable window. While an arrow key is held the view turns at a
 fixed speed, drawn coarse (thread L); once the last key is let go the fine frame is drawn at the
 next 100 ms tick (thread H), and a key press aborts it at once. The frame follows the window's
-size.
+size. Tab switches to walk mode: the eye stands in the scan and looks in perspective (each part
+at the depth its distance asks for, as octopoint-render --eye draws it); w a s d or the arrows
+walk, e and q (PgUp, PgDn) rise and sink, a drag with the left mouse button turns the eye, all at a
+speed that does not depend on the frame rate; the eye enters where the orbit view's would be in
+perspective (docs/perspective.md, "The viewer's walk mode").
 
   --model NAME   an embedded model (default: the default model)
   --file M.oct   a model file written by octopoint-prepare; it is validated first
@@ -48,6 +55,13 @@ size.
   --scale N      each frame pixel is shown as NxN window pixels, 1..8 (default 1): the frame is
                  the window's size divided by N
   --speed DEG    how fast a held arrow key turns the view, degrees per second, 1..720 (default 90)
+  --eye X,Y,Z    start in walk mode with the eye at X,Y,Z in the scan's own units and axes, as
+                 octopoint-render --eye takes it (octopoint-render --info prints the model's cube)
+  --look YAW,PITCH[,ROLL]  with --eye: where the eye looks, in degrees (default 0,0,0: the way
+                 the sensor looked; yaw turns right, pitch up)
+  --fov DEG      walk mode's vertical field of view, 10..120 degrees (default 60)
+  --walk-speed S how fast a held key walks, in scan units per second (default a quarter of the
+                 model's cube edge; the wheel and + - change it by steps of 5/4)
   -h, --help     show this help
 
 keys:
@@ -59,7 +73,9 @@ The overlay shows which thread drew the frame (L or H), its drawing time, the fr
 zoom, and two rates over the last second: frames drawn (complete frames the render threads handed
 over) and frames shown (new frames put on the screen; a frame superseded before the window was
 drawn is drawn but not shown). With --url it also shows the bytes received of the file's, and the
-chunks the view still waits for. `s` prints the frame's view as octopoint-render options.
+chunks the view still waits for. `s` prints the frame's view as octopoint-render options. In walk
+mode it shows the eye and the look in the scan's units, and the speed; `p` prints them exactly,
+as octopoint-render options (--eye X,Y,Z --look YAW,PITCH,ROLL --fov DEG).
 The window needs a display (DISPLAY or WAYLAND_DISPLAY); SDL_VIDEODRIVER picks another SDL video
 driver, e.g. kmsdrm on a panel without a window system.
 )";
@@ -82,6 +98,17 @@ ViewerOptions parseOptions(int argc, char** argv) {
       options.scale = cli::parseInt(args.name(), args.value(), 1, 8);
     } else if (args.is("--speed")) {
       options.degrees_per_second = cli::parseInt(args.name(), args.value(), 1, 720);
+    } else if (args.is("--eye")) {
+      options.eye = parseScanPoint(args.name(), args.value());
+    } else if (args.is("--look")) {
+      options.look = parseLook(args.name(), args.value());
+    } else if (args.is("--fov")) {
+      options.fov = Angle::fromMilliDegrees(
+          std::llround(cli::parseReal(args.name(), args.value(), kMinFieldOfViewDegrees,
+                                      kMaxFieldOfViewDegrees) *
+                       1000));
+    } else if (args.is("--walk-speed")) {
+      options.walk_speed = cli::parseReal(args.name(), args.value(), 1e-12, kMaxEyeCoordinate);
     } else {
       args.refuseUnknown();
     }
@@ -89,6 +116,7 @@ ViewerOptions parseOptions(int argc, char** argv) {
   checkOneModelSource(options.source);
   if (options.source.point_budget > 0 && options.source.url.empty())
     throw cli::Error("--point-budget needs --url");
+  if (options.look && !options.eye) throw cli::Error("--look needs --eye");
   return options;
 }
 
@@ -103,7 +131,7 @@ int run(int argc, char** argv) {
     first_view.width = options.width;
     first_view.height = options.height;
     stream.setView(first_view);
-    Viewer viewer(options, nullptr, &stream);
+    Viewer viewer(options, walkStart(options, nullptr), nullptr, &stream);
     // Set before the stream starts, so that no accepted chunk goes unseen by the renderer.
     stream.onAccepted([&viewer](ProgressiveModel&, std::uint64_t) { viewer.contentChanged(); });
     stream.start();
@@ -114,7 +142,7 @@ int run(int argc, char** argv) {
   }
   const std::unique_ptr<LoadedModel> loaded =
       loadModel(options.source.model_name, options.source.model_file);
-  Viewer viewer(options, &*loaded->view, nullptr);
+  Viewer viewer(options, walkStart(options, &*loaded->view), &*loaded->view, nullptr);
   viewer.run();
   return 0;
 }

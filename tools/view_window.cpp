@@ -105,6 +105,17 @@ std::optional<WindowEvent> ViewWindow::translate(const SDL_Event& event) {
       out.wheel_steps = static_cast<int>(steps);
       return out;
     }
+    case SDL_MOUSEBUTTONDOWN:
+    case SDL_MOUSEBUTTONUP:
+      if (event.button.button != SDL_BUTTON_LEFT) return std::nullopt;
+      out.kind = event.type == SDL_MOUSEBUTTONDOWN ? Kind::kDragStart : Kind::kDragEnd;
+      return out;
+    case SDL_MOUSEMOTION:
+      if ((event.motion.state & SDL_BUTTON_LMASK) == 0) return std::nullopt;
+      out.kind = Kind::kDrag;
+      out.dx = event.motion.xrel;
+      out.dy = event.motion.yrel;
+      return out;
     case SDL_WINDOWEVENT:
       switch (event.window.event) {
         case SDL_WINDOWEVENT_SIZE_CHANGED:

@@ -1,6 +1,7 @@
 #pragma once
 // The viewer's window on SDL2: a resizable window, its events (keys going down and up, the mouse
-// wheel, size changes), a wake-up any thread may send, and presenting an RGB image.
+// wheel, drags with the left mouse button, size changes), a wake-up any thread may send, and
+// presenting an RGB image.
 //
 // SDL2 rather than OpenCV's highgui because highgui reports key presses only: "a key is held" had
 // to be guessed from the keyboard's auto-repeat, so every hold began with a stutter. SDL2 reports
@@ -28,6 +29,9 @@ struct WindowEvent {
     kKeyDown,    // key (repeat: an auto-repeat of a key already down)
     kKeyUp,      // key
     kWheel,      // wheel_steps notches, > 0 away from the user
+    kDragStart,  // the left mouse button went down
+    kDrag,       // the mouse moved dx, dy pixels (> 0 right and down) with the left button down
+    kDragEnd,    // the left mouse button went up
     kResized,    // the window is now width x height pixels
     kExposed,    // the window must be drawn again
     kFocusLost,  // keys held now will not report their release to us
@@ -38,6 +42,8 @@ struct WindowEvent {
   SDL_Keycode key = SDLK_UNKNOWN;
   bool repeat = false;
   int wheel_steps = 0;
+  int dx = 0;
+  int dy = 0;
   int width = 0;
   int height = 0;
 };
@@ -52,7 +58,7 @@ class ViewWindow {
   ViewWindow& operator=(const ViewWindow&) = delete;
 
   // The next event, waiting at most `timeout_ms` (0: only what is already queued); nullopt when
-  // none came. Events the viewer has no use for (mouse motion, ...) are skipped.
+  // none came. Events the viewer has no use for (mouse motion without the button, ...) are skipped.
   std::optional<WindowEvent> next(int timeout_ms);
 
   // From any thread: makes next() return a kWake event soon. Wakes that come while one is still

@@ -15,7 +15,9 @@
 #include "cli/error.h"
 #include "cli/output_file.h"
 #include "cli/run_tool.h"
+#include "cli/text.h"
 #include "octopoint/progressive.h"
+#include "renderer/perspective.h"
 
 namespace octopoint {
 namespace {
@@ -42,11 +44,18 @@ Camera cameraOf(const FrameInfo& info) {
   return camera;
 }
 
-InteractiveConfig interactiveConfig(const ViewerOptions& options, ViewWindow& window) {
+InteractiveConfig interactiveConfig(const ViewerOptions& options, const WalkStart& walk,
+                                    ViewWindow& window) {
   InteractiveConfig config;
   config.width = options.width;
   config.height = options.height;
   config.degrees_per_second = options.degrees_per_second;
+  config.fov = walk.fov;
+  if (walk.speed > 0) config.walk_speed = walk.speed;
+  if (walk.eye) {
+    config.initial_view.walk = true;
+    config.initial_view.walker = *walk.eye;
+  }
   config.frame_ready = [&window] { window.wake(); };
   return config;
 }
@@ -75,28 +84,82 @@ ViewDrawFunction streamDrawer(net::ModelStream& stream, std::uint64_t point_budg
 }
 
 // A model with normals is drawn with them, so that the style keys work on every frame.
-InteractiveConfig interactiveConfig(const ViewerOptions& options, ViewWindow& window,
-                                    const ModelView& model) {
-  InteractiveConfig config = interactiveConfig(options, window);
+InteractiveConfig interactiveConfig(const ViewerOptions& options, const WalkStart& walk,
+                                    ViewWindow& window, const ModelView& model) {
+  InteractiveConfig config = interactiveConfig(options, walk, window);
   if (model.hasNormals()) config.payload = PixelPayload::kColourNormal;
   return config;
 }
 
 constexpr int kLightStepDegrees = 15;
 
+// A short number for the overlay (the save line gives them exactly).
+std::string shortNumber(double value) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.4g", value);
+  return text;
+}
+
 }  // namespace
 
-Viewer::Viewer(const ViewerOptions& options, const ModelView* model, net::ModelStream* stream)
+WalkStart walkStart(const ViewerOptions& options, const ModelView* model) {
+  WalkStart walk;
+  if (options.look && !options.eye) throw cli::Error("--look needs --eye");
+  const bool walk_options = options.eye || options.fov || options.walk_speed;
+  if (model == nullptr) {
+    if (walk_options) {
+      throw cli::Error(
+          "--eye, --fov and --walk-speed: walk mode draws a model file or an embedded model, not "
+          "--url (yet)");
+    }
+    return walk;
+  }
+  walk.fov = options.fov.value_or(Angle::fromDegrees(60));
+  walk.cube = scanCube(model->cubePlacement());
+  if (!walk.cube && (options.eye || options.walk_speed)) {
+    throw cli::Error(std::string(options.eye ? "--eye" : "--walk-speed") +
+                     " needs where the model's cube lies in the scan, which format version " +
+                     std::to_string(model->formatVersion()) +
+                     " does not record: prepare the scan again with octopoint-prepare");
+  }
+  if (options.eye) {
+    const Look look = options.look.value_or(Look{});
+    // Refuses, in one line, an eye or a field of view the camera cannot draw.
+    const PerspectiveView view = scanEyeView(*walk.cube, *options.eye, look, walk.fov,
+                                             options.width, options.height, "--eye");
+    walk.eye = WalkEye{view.camera.eye, look.yaw, look.pitch, look.roll};
+  }
+  if (options.walk_speed) {
+    const double edges = *options.walk_speed / walk.cube->edge;
+    const double q24 = std::round(edges * static_cast<double>(kPerspectiveUnit));
+    if (!(q24 >= static_cast<double>(kMinWalkSpeed) && q24 <= static_cast<double>(kMaxWalkSpeed))) {
+      char text[200];
+      std::snprintf(text, sizeof text,
+                    "--walk-speed: %s scan units a second is %.3g cube edges (of %s) a second; "
+                    "walk mode takes 1/1024 to 64",
+                    cli::realText(*options.walk_speed).c_str(), edges,
+                    cli::realText(walk.cube->edge).c_str());
+      throw cli::Error(text);
+    }
+    walk.speed = static_cast<std::int64_t>(q24);
+  }
+  return walk;
+}
+
+Viewer::Viewer(const ViewerOptions& options, const WalkStart& walk, const ModelView* model,
+               net::ModelStream* stream)
     : options_(options),
+      walk_(walk),
       model_(model),
       stream_(stream),
       window_(kWindowTitle, options.width * options.scale, options.height * options.scale,
               kMinFrameSide * options.scale, kMinFrameSide * options.scale),
-      renderer_(model != nullptr ? std::make_unique<DualResolutionRenderer>(
-                                       *model, clock_, interactiveConfig(options, window_, *model))
-                                 : std::make_unique<DualResolutionRenderer>(
-                                       streamDrawer(*stream, options.source.point_budget), clock_,
-                                       interactiveConfig(options, window_))),
+      renderer_(model != nullptr
+                    ? std::make_unique<DualResolutionRenderer>(
+                          *model, clock_, interactiveConfig(options, walk, window_, *model))
+                    : std::make_unique<DualResolutionRenderer>(
+                          streamDrawer(*stream, options.source.point_budget), clock_,
+                          interactiveConfig(options, walk, window_))),
       keys_(keyTable(this)),
       resolve_(
           [this](const Framebuffer& frame, const FrameInfo& info, std::span<std::uint8_t> rgb) {
@@ -122,6 +185,7 @@ Viewer::Viewer(const ViewerOptions& options, const ModelView* model, net::ModelS
     static_cast<void>(styler_.emplace(*model_).setOptions(style));
   }
   overlay_.add([this](OverlayLines& lines) { defaultOverlay(lines); });
+  overlay_.add([this](OverlayLines& lines) { walkOverlay(lines); });
   if (stream_ != nullptr) overlay_.add([this](OverlayLines& lines) { streamOverlay(lines); });
 }
 
@@ -208,7 +272,8 @@ void Viewer::nextSplatMode() {
 bool Viewer::resolveSmooth(const FrameInfo& info, std::span<std::uint8_t> rgb) {
   const LevelView* level = info.depth > 0 ? model_->levelOfDepth(info.depth) : nullptr;
   FrameSetup setup;
-  if (level == nullptr || info.view.fill || styler_->options().style != Style::kColour ||
+  if (level == nullptr || info.view.walk || info.view.fill ||
+      styler_->options().style != Style::kColour ||
       buildFrameSetup(cameraOf(info), info.depth, kDefaultFractionBits, &setup) !=
           CameraError::kNone) {
     return false;
@@ -231,7 +296,7 @@ void Viewer::resolveStyled(const Framebuffer& frame, const FrameInfo& info,
   const Camera camera = cameraOf(info);
   FrameSetup setup;
   const bool styled =
-      styler_->options().style != Style::kColour && info.depth > 0 &&
+      styler_->options().style != Style::kColour && info.depth > 0 && !info.view.walk &&
       buildFrameSetup(camera, info.depth, kDefaultFractionBits, &setup) == CameraError::kNone;
   // The window's pixels are sized to the frame: resolveToRgb cannot refuse them.
   if (!styled) {
@@ -245,18 +310,29 @@ void Viewer::resolveStyled(const Framebuffer& frame, const FrameInfo& info,
 
 KeyBindings Viewer::keyTable(Viewer* viewer) {
   KeyBindings keys;
-  keys.hold({SDLK_LEFT}, "Left", "hold to turn left", NavigationKey::kYawLeft);
-  keys.hold({SDLK_RIGHT}, "Right", "hold to turn right", NavigationKey::kYawRight);
-  keys.hold({SDLK_UP}, "Up", "hold to tilt up", NavigationKey::kPitchUp);
-  keys.hold({SDLK_DOWN}, "Down", "hold to tilt down", NavigationKey::kPitchDown);
+  keys.press({SDLK_TAB}, "Tab", "switch between orbit mode and walk mode",
+             [viewer](std::int64_t now) { viewer->toggleWalk(now); });
+  keys.hold({SDLK_LEFT, SDLK_a}, "Left a", "hold to turn left; walk: to step left",
+            NavigationKey::kYawLeft);
+  keys.hold({SDLK_RIGHT, SDLK_d}, "Right d", "hold to turn right; walk: to step right",
+            NavigationKey::kYawRight);
+  keys.hold({SDLK_UP, SDLK_w}, "Up w", "hold to tilt up; walk: to walk forward",
+            NavigationKey::kPitchUp);
+  keys.hold({SDLK_DOWN}, "Down s", "hold to tilt down; walk: to walk back (s: walk mode only)",
+            NavigationKey::kPitchDown);
+  keys.walkHold({SDLK_e, SDLK_PAGEUP}, "e PgUp", "walk: hold to rise", NavigationKey::kRise);
+  keys.walkHold({SDLK_PAGEDOWN}, "q PgDn", "walk: hold to sink (q: walk mode only)",
+                NavigationKey::kSink);
+  keys.describe("drag", "walk: drag with the left mouse button to turn the eye");
   constexpr bool kRepeats = true;
   keys.press(
-      {SDLK_PLUS, SDLK_EQUALS, SDLK_KP_PLUS}, "+ -", "zoom in and out (held: again and again)",
+      {SDLK_PLUS, SDLK_EQUALS, SDLK_KP_PLUS}, "+ -",
+      "zoom in and out (held: again and again); walk: faster and slower, by 5/4",
       [viewer](std::int64_t now) { viewer->send(ViewEventKind::kZoomIn, now); }, kRepeats);
   keys.press(
       {SDLK_MINUS, SDLK_UNDERSCORE, SDLK_KP_MINUS}, "", "",
       [viewer](std::int64_t now) { viewer->send(ViewEventKind::kZoomOut, now); }, kRepeats);
-  keys.describe("wheel", "zoom in (away from you) and out, one step of 5/4 per notch");
+  keys.describe("wheel", "zoom in (away from you) and out, one step of 5/4 per notch; walk: speed");
   keys.press({SDLK_f}, "f", "hole filling on and off",
              [viewer](std::int64_t now) { viewer->send(ViewEventKind::kToggleFill, now); });
   keys.press({SDLK_m}, "m",
@@ -264,8 +340,10 @@ KeyBindings Viewer::keyTable(Viewer* viewer) {
              [viewer](std::int64_t) { viewer->nextSplatMode(); });
   keys.press({SDLK_r}, "r", "back to the initial view",
              [viewer](std::int64_t now) { viewer->send(ViewEventKind::kReset, now); });
-  keys.press({SDLK_s}, "s", "save the frame as octopoint-view-N.png in the current directory",
-             [viewer](std::int64_t) { viewer->save(); });
+  keys.walkHold({SDLK_s}, "s p",
+                "save the frame as octopoint-view-N.png in the current directory (walk: p)",
+                NavigationKey::kPitchDown, [viewer](std::int64_t) { viewer->save(); });
+  keys.press({SDLK_p}, "", "", [viewer](std::int64_t) { viewer->save(); });
   keys.press({SDLK_c}, "c",
              "next style: colour, shaded, lines, toon, outlined (a model with normals)",
              [viewer](std::int64_t) { viewer->nextStyle(); });
@@ -278,8 +356,9 @@ KeyBindings Viewer::keyTable(Viewer* viewer) {
       {SDLK_i}, "", "", [viewer](std::int64_t) { viewer->moveLight(0, 1); }, kRepeats);
   keys.press(
       {SDLK_k}, "", "", [viewer](std::int64_t) { viewer->moveLight(0, -1); }, kRepeats);
-  keys.press({SDLK_q, SDLK_ESCAPE}, "q Esc", "quit",
-             [viewer](std::int64_t) { viewer->quit_ = true; });
+  keys.walkHold({SDLK_q}, "Esc q", "quit (walk: Esc)", NavigationKey::kSink,
+                [viewer](std::int64_t) { viewer->quit_ = true; });
+  keys.press({SDLK_ESCAPE}, "", "", [viewer](std::int64_t) { viewer->quit_ = true; });
   return keys;
 }
 
@@ -327,10 +406,13 @@ void Viewer::handle(const WindowEvent& event) {
     case WindowEvent::Kind::kExposed:
       compose_again_ = true;
       break;
+    case WindowEvent::Kind::kDragStart:
+    case WindowEvent::Kind::kDrag:
+    case WindowEvent::Kind::kDragEnd:
+      drag(event);
+      break;
     case WindowEvent::Kind::kFocusLost:  // their releases will go elsewhere: let them go now
-      for (int key = 0; key < kNavigationKeyCount; ++key) {
-        renderer_->handle({now_us, ViewEventKind::kRelease, static_cast<NavigationKey>(key)});
-      }
+      releaseAll(now_us);
       break;
     case WindowEvent::Kind::kWake:  // a new frame: show() takes it
       break;
@@ -345,13 +427,64 @@ void Viewer::handleKey(const WindowEvent& event) {
   if (binding == nullptr) return;
   const std::int64_t now_us = clock_.nowMicroseconds();
   const bool down = event.kind == WindowEvent::Kind::kKeyDown;
-  if (binding->navigation) {
+  const std::optional<NavigationKey> navigation =
+      binding->walk_navigation && walking() ? binding->walk_navigation : binding->navigation;
+  if (navigation) {
     if (event.repeat) return;  // still held: the renderer turns the view by time, not by repeats
     renderer_->handle(
-        {now_us, down ? ViewEventKind::kPress : ViewEventKind::kRelease, *binding->navigation});
-  } else if (down && (!event.repeat || binding->repeats)) {
+        {now_us, down ? ViewEventKind::kPress : ViewEventKind::kRelease, *navigation});
+  } else if (binding->action && down && (!event.repeat || binding->repeats)) {
     binding->action(now_us);
   }
+}
+
+void Viewer::releaseAll(std::int64_t now_us) {
+  for (int key = 0; key < kNavigationKeyCount; ++key) {
+    renderer_->handle({now_us, ViewEventKind::kRelease, static_cast<NavigationKey>(key)});
+  }
+}
+
+void Viewer::toggleWalk(std::int64_t now_us) {
+  if (!renderer_->canWalk()) {
+    cli::printError("octopoint-view",
+                    "walk mode: a streamed model cannot be walked through yet; open a model file "
+                    "or an embedded model");
+    return;
+  }
+  releaseAll(now_us);
+  send(ViewEventKind::kToggleWalk, now_us);
+}
+
+// The eye turns by the angle the drag spans on screen (the field of view per frame height), right
+// and up as the mouse moves right and up; sums since the drag began, so no rounding adds up.
+void Viewer::drag(const WindowEvent& event) {
+  const std::int64_t now_us = clock_.nowMicroseconds();
+  if (!walking()) return;
+  switch (event.kind) {
+    case WindowEvent::Kind::kDragStart:
+      drag_x_ = drag_y_ = drag_yaw_sent_ = drag_pitch_sent_ = 0;
+      renderer_->handle({now_us, ViewEventKind::kPress, NavigationKey::kDrag});
+      return;
+    case WindowEvent::Kind::kDragEnd:
+      renderer_->handle({now_us, ViewEventKind::kRelease, NavigationKey::kDrag});
+      return;
+    default:
+      break;
+  }
+  drag_x_ += event.dx;
+  drag_y_ += event.dy;
+  const std::int64_t frame_height = shown_info_.height > 0 ? shown_info_.height : options_.height;
+  const std::int64_t pixels = frame_height * options_.scale;
+  const std::int64_t fov = walk_.fov.turns16();
+  const std::int64_t yaw = drag_x_ * fov / pixels, pitch = -drag_y_ * fov / pixels;
+  ViewEvent turn;
+  turn.time_us = now_us;
+  turn.kind = ViewEventKind::kTurn;
+  turn.turn_yaw = static_cast<std::int32_t>(yaw - drag_yaw_sent_);
+  turn.turn_pitch = static_cast<std::int32_t>(pitch - drag_pitch_sent_);
+  drag_yaw_sent_ = yaw;
+  drag_pitch_sent_ = pitch;
+  if (turn.turn_yaw != 0 || turn.turn_pitch != 0) renderer_->handle(turn);
 }
 
 void Viewer::resizeFrame(int window_width, int window_height) {
@@ -406,17 +539,25 @@ void Viewer::show() {
 void Viewer::defaultOverlay(OverlayLines& lines) const {
   const FrameInfo& info = shown_info_;
   char line[128];
-  std::snprintf(line, sizeof line, "%s %lld.%01lld ms  depth %d  %dx%d  zoom %.2f%s",
-                info.source == FrameSource::kFine ? "H" : "L",
-                static_cast<long long>(info.render_us / 1000),
-                static_cast<long long>(info.render_us / 100 % 10), info.depth, info.width,
-                info.height, zoomOf(info.view.zoom), info.view.fill ? "  fill" : "");
+  if (info.view.walk) {
+    std::snprintf(line, sizeof line, "%s %lld.%01lld ms  walk  %dx%d  fov %s",
+                  info.source == FrameSource::kFine ? "H" : "L",
+                  static_cast<long long>(info.render_us / 1000),
+                  static_cast<long long>(info.render_us / 100 % 10), info.width, info.height,
+                  shortNumber(degreesOf(walk_.fov)).c_str());
+  } else {
+    std::snprintf(line, sizeof line, "%s %lld.%01lld ms  depth %d  %dx%d  zoom %.2f%s",
+                  info.source == FrameSource::kFine ? "H" : "L",
+                  static_cast<long long>(info.render_us / 1000),
+                  static_cast<long long>(info.render_us / 100 % 10), info.depth, info.width,
+                  info.height, zoomOf(info.view.zoom), info.view.fill ? "  fill" : "");
+  }
   lines.emplace_back(line);
   if (splats_ == SplatMode::kSmooth) {
     lines.emplace_back(smooth_shown_ ? "smooth splats"
-                                     : "smooth splats: off with filling or a style");
+                                     : "smooth splats: off with filling, a style or walking");
   }
-  if (styler_ && styler_->options().style != Style::kColour) {
+  if (styler_ && styler_->options().style != Style::kColour && !info.view.walk) {
     const StyleOptions& style = styler_->options();
     std::snprintf(line, sizeof line, "%s  light %.0f,%.0f",
                   std::string(styleName(style.style)).c_str(), signedDegreesOf(style.light.azimuth),
@@ -427,6 +568,38 @@ void Viewer::defaultOverlay(OverlayLines& lines) const {
                 static_cast<unsigned long long>(drawn_rate_.perSecond()),
                 static_cast<unsigned long long>(shown_rate_.perSecond()));
   lines.emplace_back(line);
+}
+
+void Viewer::walkOverlay(OverlayLines& lines) const {
+  if (!shown_info_.view.walk) return;
+  const WalkEye& walker = shown_info_.view.walker;
+  const auto degrees = [](Angle angle) { return shortNumber(signedDegreesOf(angle)); };
+  const std::string look = degrees(walker.yaw) + "," + degrees(walker.pitch) +
+                           (walker.roll == Angle{} ? "" : "," + degrees(walker.roll));
+  const double speed_edges =
+      static_cast<double>(renderer_->status().walk_speed) / static_cast<double>(kPerspectiveUnit);
+  if (walk_.cube) {
+    const ScanPoint eye = scanPointOf(*walk_.cube, walker.eye);
+    lines.push_back("eye " + shortNumber(eye[0]) + "," + shortNumber(eye[1]) + "," +
+                    shortNumber(eye[2]) + "  look " + look);
+    lines.push_back("speed " + shortNumber(speed_edges * walk_.cube->edge) + " units/s");
+  } else {  // a model that records no placement: cube edges about its centre
+    const auto edges = [](std::int64_t q24) {
+      return shortNumber(static_cast<double>(q24) / static_cast<double>(kPerspectiveUnit));
+    };
+    lines.push_back("eye " + edges(walker.eye.x) + "," + edges(walker.eye.y) + "," +
+                    edges(walker.eye.z) + " cube edges  look " + look);
+    lines.push_back("speed " + shortNumber(speed_edges) + " cube edges/s");
+  }
+}
+
+std::string Viewer::walkOptions(const WalkEye& walker) const {
+  if (!walk_.cube) return " (walk mode; the model records no placement for --eye)";
+  // Signed degrees, exact: a count of 1/65536 turn times 360/65536 is exact in a double.
+  const auto degrees = [](Angle angle) { return cli::realText(signedDegreesOf(angle)); };
+  return " --eye " + scanPointText(scanPointOf(*walk_.cube, walker.eye)) + " --look " +
+         degrees(walker.yaw) + "," + degrees(walker.pitch) + "," + degrees(walker.roll) +
+         " --fov " + degreesText(walk_.fov);
 }
 
 // The output-file rule of every tool (cli/output_file.h): whole or nothing, and an existing name
@@ -446,6 +619,13 @@ void Viewer::save() {
     return;
   }
   const FrameInfo& info = shown_info_;
+  if (info.view.walk) {
+    std::printf("saved %s (%s): --size %dx%d%s\n", name.c_str(),
+                info.source == FrameSource::kFine ? "H" : "L", info.width, info.height,
+                walkOptions(info.view.walker).c_str());
+    std::fflush(stdout);
+    return;
+  }
   std::string style;
   if (styler_ && styler_->options().style != Style::kColour) {
     char text[96];

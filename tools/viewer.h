@@ -18,6 +18,7 @@
 #include "octopoint/smooth.h"
 #include "octopoint/styles.h"
 #include "tools/model_source.h"
+#include "tools/scan_eye.h"
 #include "tools/view_keys.h"
 #include "tools/view_overlay.h"
 #include "tools/view_window.h"
@@ -35,12 +36,30 @@ struct ViewerOptions {
   int height = 480;
   int scale = 1;
   int degrees_per_second = 90;
+  // Walk mode (docs/perspective.md, "The viewer's walk mode"): --eye and --look in the scan's
+  // units, as octopoint-render takes them; --fov; --walk-speed in scan units per second.
+  std::optional<ScanPoint> eye;
+  std::optional<Look> look;
+  std::optional<Angle> fov;
+  std::optional<double> walk_speed;
 };
+
+// What the viewer's walk mode needs of the model: where its cube lies in the scan, the eye to
+// start from (with --eye) and the speed in Q.24 cube edges per second. A cli::Error, one line, for
+// options it cannot take.
+struct WalkStart {
+  std::optional<ScanCube> cube;  // none: walk mode shows no scan units (a model of format 1..3)
+  std::optional<WalkEye> eye;
+  Angle fov = Angle::fromDegrees(60);
+  std::int64_t speed = 0;
+};
+WalkStart walkStart(const ViewerOptions& options, const ModelView* model);
 
 class Viewer {
  public:
   // Shows `model`, or, when `model` is null, the chunked model `stream` brings in.
-  Viewer(const ViewerOptions& options, const ModelView* model, net::ModelStream* stream);
+  Viewer(const ViewerOptions& options, const WalkStart& walk, const ModelView* model,
+         net::ModelStream* stream);
   // From the stream's thread: more of the model arrived.
   void contentChanged();
   // Shows the window until the user quits.
@@ -52,11 +71,19 @@ class Viewer {
   void handle(const WindowEvent& event);
   void handleKey(const WindowEvent& event);
   void send(ViewEventKind kind, std::int64_t now_us) { renderer_->handle({now_us, kind}); }
+  bool walking() const { return renderer_->status().walk; }
+  // Tab: orbit <-> walk; every navigation key is let go first (a key's meaning changes).
+  void toggleWalk(std::int64_t now_us);
+  void releaseAll(std::int64_t now_us);
+  void drag(const WindowEvent& event);
   void resizeFrame(int window_width, int window_height);
   // Puts the newest frame on the screen when it, the window or the overlay's text changed.
   void show();
   void save();
   void defaultOverlay(OverlayLines& lines) const;
+  void walkOverlay(OverlayLines& lines) const;
+  // The eye and look of a walk frame as octopoint-render options (exact: --eye X,Y,Z --look ...).
+  std::string walkOptions(const WalkEye& walker) const;
   void streamOverlay(OverlayLines& lines);
   // Tells the stream which view to fetch for: the one on screen, as it changes.
   void followView();
@@ -72,6 +99,7 @@ class Viewer {
   bool resolveSmooth(const FrameInfo& info, std::span<std::uint8_t> rgb);
 
   const ViewerOptions options_;
+  const WalkStart walk_;
   const ModelView* model_;
   net::ModelStream* stream_;
   const SteadyClock clock_;
@@ -104,6 +132,9 @@ class Viewer {
   RateCounter shown_rate_;
   int saved_ = 0;
   std::optional<Camera> followed_view_;  // the view the stream fetches for
+  // The drag under way: its motion so far (window pixels) and the turn already sent for it.
+  std::int64_t drag_x_ = 0, drag_y_ = 0;
+  std::int64_t drag_yaw_sent_ = 0, drag_pitch_sent_ = 0;
 };
 
 }  // namespace octopoint

@@ -118,6 +118,7 @@ const char* describe(CameraError error);
 template <typename T>
 struct Point3 {
   T x, y, z;
+  friend bool operator==(const Point3&, const Point3&) = default;
 };
 using Vec3 = Point3<std::int32_t>;
 

@@ -66,18 +66,34 @@ class ManualClock final : public Clock {
 
 namespace octopoint {
 
-// Keys that move the view while held; the view turns at a fixed speed in degrees per second.
-enum class NavigationKey : std::uint8_t { kYawLeft, kYawRight, kPitchUp, kPitchDown };
-inline constexpr int kNavigationKeyCount = 4;
+// Keys that move the view while held. In orbit mode the four arrows turn the model at a fixed
+// speed in degrees per second. In walk mode (ViewParameters::walk) the same four move the eye
+// forward, back, left and right, kRise and kSink move it up and down (ignored in orbit mode), at
+// the walk speed in cube edges per second; kDrag is the mouse button held while dragging to turn
+// the eye (kTurn events): it moves nothing by itself, but like a held key it keeps the fine frame
+// back until it is let go.
+enum class NavigationKey : std::uint8_t {
+  kYawLeft,    // walk: step left
+  kYawRight,   // walk: step right
+  kPitchUp,    // walk: forward
+  kPitchDown,  // walk: back
+  kRise,
+  kSink,
+  kDrag,
+};
+inline constexpr int kNavigationKeyCount = 7;
+inline constexpr int kOrbitNavigationKeyCount = 4;  // kYawLeft..kPitchDown move the orbit view
 
 enum class ViewEventKind : std::uint8_t {
   kPress,           // a navigation key goes down (repeats of a held key are ignored)
   kRelease,         // a navigation key goes up
   kTick,            // the frame tick (every kTickPeriodMicroseconds): the fine frame may start
-  kZoomIn,          // one zoom step in
-  kZoomOut,         // one zoom step out
+  kZoomIn,          // one zoom step in (walk mode: the walk speed one step of 5/4 faster)
+  kZoomOut,         // one zoom step out (walk mode: slower)
   kToggleFill,      // hole filling on/off
   kReset,           // back to the initial view
+  kToggleWalk,      // orbit mode <-> walk mode (only where the renderer canWalk())
+  kTurn,            // walk mode: the eye turns by turn_yaw, turn_pitch (a mouse drag)
   kResize,          // the frame becomes width x height pixels (the window was resized)
   kContentChanged,  // the model has more in it (a streamed chunk arrived): the fine frame is due
                     // again, without changing the view or aborting a fine frame under way
@@ -92,6 +108,8 @@ struct ViewEvent {
   NavigationKey key = NavigationKey::kYawLeft;  // for kPress and kRelease
   std::int32_t width = 0;                       // for kResize: the new frame size
   std::int32_t height = 0;
+  std::int32_t turn_yaw = 0;    // for kTurn: in 1/65536 turn, > 0 to the right
+  std::int32_t turn_pitch = 0;  // > 0 up
 };
 
 class EventSource {
@@ -157,11 +175,27 @@ class ScriptedTimeline final : public EventSource {
 
 namespace octopoint {
 
+class PerspectiveRenderer;  // renderer/perspective_renderer.h: walk mode's frames
+
+// Walk mode's eye (renderer/perspective.h's PerspectiveCamera): where it stands, in Q.24 cube
+// edges about the cube's centre in the model's axes (x right, y down, z away), and where it looks.
+struct WalkEye {
+  Point3<std::int64_t> eye{0, 0, -2 * (std::int64_t{1} << 24)};  // Q.24: two edges before the cube
+  Angle yaw;    // turns the view right; 0 looks along +z
+  Angle pitch;  // turns it up
+  Angle roll;
+  bool operator==(const WalkEye&) const = default;
+};
+
 struct ViewParameters {
   Angle yaw;
   Angle pitch;
   Q16 zoom = Q16::fromRaw(Q16::kOneRaw);  // Q16.16
   bool fill = false;  // hole filling: footprint splats leave none to fill (the f key turns it on)
+  // Walk mode: the frame is the perspective view from `walker` (detail by distance, occlusion
+  // culling; docs/perspective.md), and yaw, pitch, zoom and fill wait for orbit mode.
+  bool walk = false;
+  WalkEye walker;
   bool operator==(const ViewParameters&) const = default;
 };
 
@@ -171,6 +205,11 @@ struct InteractiveConfig {
   std::int32_t degrees_per_second = 90;
   Variant variant = defaultVariant();
   ViewParameters initial_view;
+  // Walk mode: the field of view, the speed the eye moves at (Q.24 cube edges per second,
+  // 1..kMaxWalkSpeed; the wheel changes it by steps of 5/4), and, for the eye entering walk mode
+  // from orbit mode, the eye of that orbit view in perspective (orbitPerspective).
+  Angle fov = Angle::fromDegrees(60);
+  std::int64_t walk_speed = std::int64_t{1} << 22;  // a quarter cube edge a second
   // Called from a render thread, without any lock held, after each frame it hands over: lets a
   // display sleep until there is something to show (the viewer posts a window event). Must not
   // call back into the renderer.
@@ -205,8 +244,15 @@ struct RendererStatus {
   std::uint64_t view_version = 0;   // of the current view (the one the next fine frame shows)
   bool coarse_busy = false;
   bool fine_busy = false;
-  FrameInfo latest;  // the newest frame handed over (generation 0: none yet)
+  FrameInfo latest;             // the newest frame handed over (generation 0: none yet)
+  bool walk = false;            // the current view is walk mode's
+  std::int64_t walk_speed = 0;  // Q.24 cube edges per second
 };
+
+// The walk speed's bounds, Q.24 cube edges per second: 1/1024 to 64 cube edges a second (a held
+// key then stays within int64 for 2^32 s).
+inline constexpr std::int64_t kMinWalkSpeed = std::int64_t{1} << 14;
+inline constexpr std::int64_t kMaxWalkSpeed = std::int64_t{1} << 30;
 
 // Draws `level` with `setup` into a cleared frame; the default is renderLevel with the configured
 // variant. Tests inject a slower one.
@@ -245,6 +291,9 @@ class DualResolutionRenderer {
   // Applies one event from the event source (kQuit is the caller's business).
   void handle(const ViewEvent& event);
 
+  // Whether kToggleWalk can enter walk mode: a renderer built from a whole model.
+  bool canWalk() const { return model_ != nullptr; }
+
   // For the display, from one thread only: makes the newest complete frame the front buffer and
   // returns it (nullptr before the first frame). The front buffer is not touched by anyone until
   // the next call.
@@ -270,15 +319,24 @@ class DualResolutionRenderer {
     std::int64_t since_us = 0;
   };
   // What a render thread owns besides its back buffer: the hole filler, as wide as its frames.
+  // And walk mode's renderer (its indexes built once; its occlusion tiles once per size).
   struct Worker {
     HoleFiller filler;
     std::int32_t filler_width;
+    std::unique_ptr<PerspectiveRenderer> perspective;  // when built from a model
   };
 
   void coarseLoop();
   void fineLoop();
-  bool anyKeyHeld() const;
+  bool anyKeyHeld() const;     // the mouse button of a drag included
+  bool movingKeyHeld() const;  // a key whose motion goes on with time (not the drag)
   ViewParameters viewAt(std::int64_t time_us) const;  // base view plus the held keys' motion
+  // Makes the held keys' motion up to `time_us` part of the base view (they move on from there):
+  // before what changes how they move (a turn, the speed, the mode).
+  void foldMotion(std::int64_t time_us);
+  void toggleWalk(std::int64_t time_us);
+  // Draws a walk mode frame into `slot` (unlocked).
+  [[nodiscard]] bool drawWalk(Slot& slot, Worker& worker, const std::atomic<bool>* abort);
   void changeView();  // a new view: aborts H, the fine frame is due again
   // Starts a frame in `slot` (locked): the current view, its version, time and size.
   void beginFrame(Slot& slot, FrameSource source);
@@ -311,7 +369,8 @@ class DualResolutionRenderer {
   bool stopping_ = false;
   std::array<HeldKey, kNavigationKeyCount> held_{};
   ViewParameters base_view_;
-  std::int32_t width_;  // the size of the frames drawn from now on
+  std::int64_t walk_speed_;  // Q.24 cube edges per second
+  std::int32_t width_;       // the size of the frames drawn from now on
   std::int32_t height_;
   std::uint64_t view_version_ = 1;
   bool coarse_once_ = false;    // one coarse frame after a step change

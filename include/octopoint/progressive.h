@@ -514,6 +514,18 @@ class ProgressiveModel {
   // (whatever the point budget).
   [[nodiscard]] bool viewComplete(const Camera& camera);
 
+  // The octree stream of held chunk `index` of `level` at the level's depth, rooted at its region
+  // (level 0, index 0: the base, rooted at the cube); empty spans for a chunk not held. Its bytes
+  // never change once held.
+  struct RegionStream {
+    std::span<const std::uint8_t> nodes, leaves;
+  };
+  RegionStream regionStream(int level, std::uint32_t index) const {
+    if (chunkState(level, index) != ChunkState::kHeld) return {};
+    const Slot& slot = levels_[static_cast<std::size_t>(level)].slots[index];
+    return {slot.nodes, slot.leaves};
+  }
+
   // Bytes held for chunks (assembled streams, waiting chunks) and records.
   std::uint64_t heldBytes() const;
   // Chunks by state, over the levels whose tables are known.

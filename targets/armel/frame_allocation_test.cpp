@@ -165,6 +165,29 @@ TEST(FrameAllocation, DualResolutionFramesAllocateNothingOnceAResizeSettles) {
   EXPECT_EQ(allocations, 0) << "in 5 turns of the view (15 coarse frames or more, 5 fine ones)";
 }
 
+// Walk mode (octopoint-view's Tab): the perspective renderer of each thread makes its occlusion
+// tiles at the first frame of a size; then walking allocates nothing.
+TEST(FrameAllocation, WalkModeFramesAllocateNothingOnceASizeIsDrawn) {
+  ModelIssue issue;
+  const auto model = ModelView::fromEmbedded(*models::defaultModel(), &issue);
+  ASSERT_TRUE(model.has_value()) << describe(issue.error);
+  ManualClock clock;
+  InteractiveConfig config;
+  config.initial_view.walk = true;
+  config.initial_view.walker.eye = {0, -(std::int64_t{1} << 22), -(std::int64_t{1} << 23)};
+  DualResolutionRenderer renderer(*model, clock, config);
+  dual_resolution_testing::Round round(renderer, clock);  // steps right, then the fine frame
+  for (int i = 0; i < 2; ++i) round.play();
+
+  const long before = heapAllocationCount();
+  for (int i = 0; i < 5; ++i) round.play();
+  const long allocations = heapAllocationCount() - before;
+  ASSERT_FALSE(round.failed());
+  EXPECT_TRUE(renderer.status().latest.view.walk);
+  EXPECT_GE(renderer.status().coarse_shown, 15u);
+  EXPECT_EQ(allocations, 0) << "in 5 walks (15 coarse frames or more, 5 fine ones)";
+}
+
 // The one-call path (octopoint/rgb_renderer.h) allocates its frame on the first draw and again
 // only when the camera's size changes: frame after frame at one size, nothing.
 TEST(FrameAllocation, RgbRendererAllocatesOnlyWhenTheSizeChanges) {

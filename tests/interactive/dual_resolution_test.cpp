@@ -258,7 +258,7 @@ TEST_F(DualResolution, ThousandsOfRandomEventsLeaveNoDeadlockNoLostAndNoTornFram
   FrontChecker front(renderer);
   for (int i = 0; i < 2000; ++i) {
     if (i % 250 == 125) {
-      forceAnAbort(renderer, now_us, static_cast<NavigationKey>(i % kNavigationKeyCount),
+      forceAnAbort(renderer, now_us, static_cast<NavigationKey>(i % kOrbitNavigationKeyCount),
                    *fine_budget_ms, kFineMs);
       if (HasFatalFailure()) return;
     }
