@@ -2,7 +2,10 @@
 
 #include <bit>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
+#include <cstdlib>
+#include <cstring>
 
 #include "cli/error.h"
 #include "cli/real_numbers.h"
@@ -118,8 +121,23 @@ std::string scanPointText(const ScanPoint& point) {
 }
 
 std::string degreesText(Angle angle) {
-  // 1/65536 turn is 0.0054931640625 degrees: a turns16 count times it is exact in a double.
-  return cli::realText(angle.turns16() * (360.0 / Angle::kUnitsPerTurn));
+  // Within (-180, 180], the fewest decimals that read back (cli::parseDegrees: whole millidegrees,
+  // rounded to the nearest 1/65536 turn) as this very angle: -28 rather than 332.0013427734375.
+  // A 1/65536 turn is 0.0055 degrees, so three decimals always suffice.
+  const auto sameAngle = [&](Angle other) {
+    return static_cast<std::uint16_t>(other.turns16()) ==
+           static_cast<std::uint16_t>(angle.turns16());
+  };
+  int units = static_cast<std::uint16_t>(angle.turns16());
+  if (units > Angle::kUnitsPerTurn / 2) units -= Angle::kUnitsPerTurn;
+  const double degrees = units * (360.0 / Angle::kUnitsPerTurn);  // exact in a double
+  char text[32];
+  for (int decimals = 0;; ++decimals) {
+    std::snprintf(text, sizeof text, "%.*f", decimals, degrees);
+    const double read = std::strtod(text, nullptr);
+    if (decimals == 3 || sameAngle(Angle::fromMilliDegrees(std::llround(read * 1000)))) break;
+  }
+  return std::string(std::strcmp(text, "-0") == 0 ? "0" : text);
 }
 
 }  // namespace octopoint
