@@ -51,7 +51,7 @@ class PerspectiveRenderer {
   std::size_t dense_ = 0;                           // of them densely sampled
   std::vector<std::vector<UpperTreeNode>> index_storage_;
   std::array<UpperTreeIndex, format::kMaxLevels> indexes_{};
-  std::array<PerspectiveWalkTables, format::kMaxLevels> tables_{};  // per frame
+  std::array<PerspectiveWalkTables, format::kMaxLevels> tables_{};  // per frame, by level
   std::vector<OcclusionTile> tiles_;
   std::int32_t tiles_width_ = 0, tiles_height_ = 0;
   int tiles_shift_ = 0;
