@@ -16,8 +16,9 @@ std::int64_t rowSlope(const PerspectiveView& view, std::int32_t row, int outward
   const int f = view.fraction_bits;
   const std::int64_t offset = (std::int64_t{row} << f) - view.centre_y;  // Q(32-F).F, < 2^38
   const std::optional<std::int64_t> slope = divShiftRound(offset, view.focal_q16, 46 - f);
-  if (!slope) return outward < 0 ? std::numeric_limits<std::int64_t>::min() / 2
-                                 : std::numeric_limits<std::int64_t>::max() / 2;
+  if (!slope)
+    return outward < 0 ? std::numeric_limits<std::int64_t>::min() / 2
+                       : std::numeric_limits<std::int64_t>::max() / 2;
   return *slope + outward;
 }
 

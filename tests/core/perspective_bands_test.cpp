@@ -4,6 +4,8 @@
 // frames and at the device's heights of 320x240, with and without occlusion culling, with one or
 // two band buffers; and each band walks only the subtrees that may reach it.
 
+#include "renderer/perspective_bands.h"
+
 #include <gtest/gtest.h>
 
 #include <cstdint>
@@ -14,7 +16,6 @@
 #include "octopoint/framebuffer.h"
 #include "octopoint/model.h"
 #include "octopoint/models.h"
-#include "renderer/perspective_bands.h"
 #include "renderer/perspective_layers.h"
 #include "renderer/perspective_renderer.h"
 #include "tests/support/perspective_reference.h"
@@ -138,8 +139,8 @@ TEST(PerspectiveBands, EveryBandHeightOfASmallFrameIsTheWholeFrame) {
     for (std::int32_t rows = 1; rows <= 48; ++rows) {
       for (const bool cull : {false, true}) {
         SCOPED_TRACE(v.name + ", bands of " + std::to_string(rows) + (cull ? ", culled" : ""));
-        EXPECT_EQ(differences(bandedFrame(view, rows, cull, rows % 2 == 0, palette, nullptr), whole),
-                  0);
+        EXPECT_EQ(
+            differences(bandedFrame(view, rows, cull, rows % 2 == 0, palette, nullptr), whole), 0);
       }
     }
   }
