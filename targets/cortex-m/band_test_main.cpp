@@ -8,7 +8,10 @@
 //     almost one walk), without an index and with the level-3 and level-4 ones, at 320x240 and
 //     240x320, depth 8: instructions per frame from qemu's instruction clock (the sink's
 //     checksumming excluded), each frame checked against the goldens too;
-//  3. the stack's high-water mark over all of it.
+//  3. the perspective cases (band_cases.h): drawn in bands by renderPerspectiveBands with and
+//     without occlusion culling, every band against the host's golden, instructions per point;
+//     and the RAM of the upper tree indexes, the tiles and the walk tables;
+//  4. the stack's high-water mark over all of it.
 // Prints one line per measurement and exits with status 0 only if every band matched.
 #include <array>
 #include <cstdint>
