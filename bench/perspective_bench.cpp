@@ -1,8 +1,12 @@
 // What perspective costs (docs/perspective.md#cost): the default model's finest depth (8), turned
 // 20 degrees and tilted 10, drawn orthographically by fixed_fast (with its footprint splats) and in
 // perspective by the orbit camera of the same zoom at 60 and at 10 degrees, at 320x240 and
-// 1280x960, side by side in one run. The time is the draw alone (manual time; the frame is cleared
-// outside it). Counters: the leaves of the level and ns per leaf.
+// 1280x960, side by side in one run. And the eye at the table's edge (docs/perspective.md's
+// walk-through view) drawn as octopoint-render draws it (PerspectiveRenderer: detail by distance),
+// without occlusion culling and with it on tiles of 4 x 4, 8 x 8 and 16 x 16 pixels (the same
+// frame). The time is the draw alone (manual time; the frame is cleared outside it). Counters: the
+// points handed to the plot (the level's leaves for the orthographic and single-depth frames), ns
+// per point, and for the table's edge the subtrees culled and the points per covered pixel.
 #include <benchmark/benchmark.h>
 
 #include <chrono>
@@ -11,6 +15,7 @@
 #include "bench/register_benchmarks.h"
 #include "octopoint/models.h"
 #include "octopoint/render.h"
+#include "renderer/perspective_renderer.h"
 #include "renderer/perspective_walk.h"
 
 namespace octopoint {
@@ -35,7 +40,8 @@ Camera cameraOf(int width, int height) {
 
 // Times `draw(frame)` per iteration and reports ns per leaf of the level.
 template <typename Draw>
-void timeFrames(benchmark::State& state, int width, int height, const Draw& draw) {
+void timeFrames(benchmark::State& state, int width, int height, const Draw& draw,
+                double leaves = static_cast<double>(model().finestLevel().leaves.size())) {
   Framebuffer frame(width, height);
   double seconds_in_all = 0;
   for (auto _ : state) {
@@ -48,7 +54,6 @@ void timeFrames(benchmark::State& state, int width, int height, const Draw& draw
     state.SetIterationTime(seconds);
     seconds_in_all += seconds;
   }
-  const auto leaves = static_cast<double>(model().finestLevel().leaves.size());
   state.counters["leaves"] = leaves;
   state.counters["ns_per_leaf"] =
       seconds_in_all * 1e9 / static_cast<double>(state.iterations()) / leaves;
@@ -81,6 +86,45 @@ void perspective(benchmark::State& state, int width, int height, int fov_degrees
              [&](Framebuffer& frame) { return drawPerspective(level, view, tables, frame); });
 }
 
+// The eye at the table's edge, looking down at the objects (docs/perspective.md, "Occlusion
+// culling"): tile_shift 0 draws without culling.
+void tableEdge(benchmark::State& state, int width, int height, int tile_shift) {
+  const std::int64_t u = kPerspectiveUnit;
+  PerspectiveCamera camera;
+  camera.eye = {0, 28 * u / 100, -46 * u / 100};
+  camera.pitch = Angle::fromDegrees(28);
+  camera.fov = Angle::fromDegrees(90);
+  camera.width = width;
+  camera.height = height;
+  PerspectiveView view;
+  if (buildPerspectiveView(camera, kDefaultFractionBits, &view) != PerspectiveError::kNone) {
+    state.SkipWithError("camera refused");
+    return;
+  }
+  PerspectiveRenderer renderer(model());
+  PerspectiveRenderer::Options options;
+  options.cull = tile_shift != 0;
+  if (tile_shift != 0) options.tile_shift = tile_shift;
+  // One frame outside the timing: the points it hands over, its coverage, and the tiles made.
+  Framebuffer frame(width, height);
+  frame.clear();
+  PerspectiveDrawStats stats;
+  if (!renderer.draw(view, options, frame, &stats)) {
+    state.SkipWithError("the draw was refused");
+    return;
+  }
+  std::uint64_t covered = 0;
+  for (std::int32_t y = 0; y < height; ++y) {
+    for (std::int32_t x = 0; x < width; ++x) covered += frame.covered(x, y);
+  }
+  const auto points = static_cast<double>(stats.leaves);
+  timeFrames(
+      state, width, height, [&](Framebuffer& f) { return renderer.draw(view, options, f); },
+      points);
+  state.counters["hidden_subtrees"] = static_cast<double>(stats.hidden_subtrees);
+  state.counters["points_per_covered_pixel"] = points / static_cast<double>(covered);
+}
+
 }  // namespace
 
 void registerAll() {
@@ -94,6 +138,14 @@ void registerAll() {
       benchmark::RegisterBenchmark(
           ("perspective/tabletop/depth8/" + size + "/fov" + std::to_string(fov)).c_str(),
           perspective, width, height, fov)
+          ->UseManualTime()
+          ->Unit(benchmark::kMicrosecond);
+    }
+    const std::string edge = "perspective/table_edge/" + size + "/by_distance/";
+    for (const auto& [name, shift] :
+         {std::pair{"unculled", 0}, std::pair{"culled_tiles4", 2}, std::pair{"culled_tiles8", 3},
+          std::pair{"culled_tiles16", 4}}) {
+      benchmark::RegisterBenchmark((edge + name).c_str(), tableEdge, width, height, shift)
           ->UseManualTime()
           ->Unit(benchmark::kMicrosecond);
     }

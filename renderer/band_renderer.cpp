@@ -6,6 +6,7 @@
 #include "octopoint/bands.h"
 #include "octopoint/framebuffer.h"
 #include "octopoint/render.h"
+#include "renderer/band_turns.h"
 #include "renderer/bit_scan.h"
 #include "renderer/decode_algorithms.h"
 #include "renderer/render_fixed_delta.h"
@@ -27,10 +28,6 @@ void reachFrom(const FrameSetup& setup, int from, std::int64_t* reach_x, std::in
     *reach_x += widest_x;
     *reach_y += widest_y;
   }
-}
-
-std::span<std::uint8_t> bytesOf(std::span<std::uint32_t> words) {
-  return {reinterpret_cast<std::uint8_t*>(words.data()), words.size() * 4};
 }
 
 // One band drawn through the index: the levels above the index level are walked here, each
@@ -235,13 +232,10 @@ BandError renderBands(const LevelView& level, const FrameSetup& setup, const Ban
   }
   const std::uint32_t bridge_limit = config.fill ? bridgeDepthLimit(setup) : 0;
 
-  const int buffer_count = buffers.second.empty() ? 1 : 2;
   int band_number = 0;
   for (std::int32_t y0 = 0; y0 < height; y0 += band_rows, ++band_number) {
     const std::int32_t rows = std::min(band_rows, height - y0);
-    const std::span<std::uint32_t> buffer =
-        (band_number & 1) != 0 && buffer_count == 2 ? buffers.second : buffers.first;
-    if (band_number >= buffer_count && sink.wait != nullptr) sink.wait(sink.user, bytesOf(buffer));
+    const std::span<std::uint32_t> buffer = bandBufferFor(buffers, band_number, sink);
     const std::int32_t window_y0 = std::max<std::int32_t>(0, y0 - margin);
     const std::int32_t window_rows = std::min(height, y0 + rows + margin) - window_y0;
     FrameView window(buffer.data(), width, window_rows);

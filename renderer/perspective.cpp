@@ -22,14 +22,20 @@ std::optional<std::int64_t> divScaled(std::int64_t numerator, std::int64_t denom
   return divShiftRound(numerator, denominator << -shift, 0);
 }
 
-// round(numerator / denominator), ties toward +infinity as divShiftRound rounds, by one hardware
-// division; denominator > 0, |numerator| < 2^63.
+// round(numerator / denominator), ties toward +infinity as divShiftRound rounds, by one division
+// (the hardware's; on a Cortex-M longDivide, octopoint/fixed.h: the same bits); denominator > 0,
+// |numerator| < 2^63.
 std::int64_t divideRounded(std::int64_t numerator, std::int64_t denominator) {
-  const std::int64_t quotient = numerator / denominator;               // truncated towards zero
-  const std::int64_t twice_remainder = 2 * (numerator % denominator);  // |.| < 2 * denominator
-  if (twice_remainder >= denominator) return quotient + 1;
-  if (twice_remainder < -denominator) return quotient - 1;
-  return quotient;
+  const bool negative = numerator < 0;
+  const UnsignedDivision division =
+      divideUnsigned(static_cast<std::uint64_t>(negative ? -numerator : numerator),
+                     static_cast<std::uint64_t>(denominator));
+  // The magnitude rounds up from half the denominator, a negative result's only past it.
+  const std::uint64_t twice_remainder = 2 * division.remainder;
+  const auto divisor = static_cast<std::uint64_t>(denominator);
+  const bool up = negative ? twice_remainder > divisor : twice_remainder >= divisor;
+  const auto magnitude = static_cast<std::int64_t>(division.quotient + (up ? 1 : 0));
+  return negative ? -magnitude : magnitude;
 }
 
 }  // namespace

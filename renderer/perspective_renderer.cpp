@@ -1,6 +1,7 @@
 #include "renderer/perspective_renderer.h"
 
 #include "renderer/level_of_detail.h"
+#include "renderer/perspective_layers.h"
 
 namespace octopoint {
 
@@ -26,28 +27,11 @@ PerspectiveRenderer::PerspectiveRenderer(const ModelView& model) : model_(model)
 bool PerspectiveRenderer::draw(const PerspectiveView& view, const Options& options,
                                FrameView& frame, PerspectiveDrawStats* stats,
                                const std::atomic<bool>* abort) {
-  // The layers drawn: one stored depth, or the densely sampled ones by distance.
-  std::size_t first = 0, count = dense_;
-  if (options.depth != 0) {
-    first = count_;
-    for (std::size_t i = 0; i < count_; ++i) {
-      if (depths_[i] == options.depth) first = i;
-    }
-    if (first == count_) return false;
-    count = 1;
-  }
-  if (count == 0) return false;
-  // A quarter pixel: with the rounding of the additions, every leaf within half a pixel.
-  const std::int64_t max_error = std::int64_t{1} << (view.fraction_bits - 2);
-  std::array<PerspectiveLayer, format::kMaxLevels> layers{};
-  for (std::size_t i = 0; i < count; ++i) {
-    const std::size_t k = first + i;
-    const LevelView& level = model_.level(level_of_[k]);
-    tables_[k] = perspectiveWalkTables(view, level.depth, max_error);
-    layers[i] = {&level, &tables_[k], indexes_[k].bottom >= 0 ? &indexes_[k] : nullptr};
-  }
-  const PerspectiveDetail detail =
-      perspectiveDetail(view, std::span<const int>(depths_.data() + first, count), options.coarser);
+  const PerspectiveLayers layers =
+      perspectiveLayers(model_, view, options.depth,
+                        std::span<const UpperTreeIndex>(indexes_.data(), count_), tables_,
+                        options.coarser);
+  if (layers.count == 0) return false;
   std::optional<OcclusionTiles> occlusion;
   if (options.cull) {
     if (frame.width() != tiles_width_ || frame.height() != tiles_height_ ||
@@ -60,8 +44,8 @@ bool PerspectiveRenderer::draw(const PerspectiveView& view, const Options& optio
     occlusion.emplace(frame, tiles_, options.tile_shift);
     occlusion->reset();
   }
-  return drawPerspectiveLayers(std::span<const PerspectiveLayer>(layers.data(), count), &detail,
-                               view, frame, occlusion ? &*occlusion : nullptr, stats, abort);
+  return drawPerspectiveLayers(layers.layers(), &layers.detail, view, frame,
+                               occlusion ? &*occlusion : nullptr, stats, nullptr, abort);
 }
 
 }  // namespace octopoint

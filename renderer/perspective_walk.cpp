@@ -313,7 +313,7 @@ bool drawPerspective(const LevelView& level, const PerspectiveView& view,
 bool drawPerspectiveLayers(std::span<const PerspectiveLayer> layers,
                            const PerspectiveDetail* detail, const PerspectiveView& view,
                            FrameView& frame, OcclusionTiles* occlusion, PerspectiveDrawStats* stats,
-                           const std::atomic<bool>* abort) {
+                           const PerspectiveBand* band, const std::atomic<bool>* abort) {
   assert(!layers.empty() &&
          (layers.size() == 1 ||
           (detail != nullptr && detail->count == static_cast<int>(layers.size()))));
@@ -326,6 +326,7 @@ bool drawPerspectiveLayers(std::span<const PerspectiveLayer> layers,
     PerspectiveWalkParts parts;
     parts.index = layer.index;
     parts.cull = occlusion != nullptr;
+    parts.band = band;
     if (layers.size() > 1) {
       parts.detail = {detail, static_cast<int>(i), i == 0 ? -1 : layers[i - 1].level->depth};
     }

@@ -91,6 +91,14 @@ struct PerspectiveWalkTables {
 PerspectiveWalkTables perspectiveWalkTables(const PerspectiveView& view, int depth,
                                             std::int64_t max_error);
 
+// The rows of one band of a frame, as the eye sees them: every point drawn into the band has a
+// camera-space y / z within [top_q30, bottom_q30] (Q.30; the band's rows widened by a margin, so
+// that a subtree passed over writes nothing into them).
+struct PerspectiveBand {
+  std::int64_t top_q30 = 0;
+  std::int64_t bottom_q30 = 0;
+};
+
 // What a walk may use besides its level's stream, each optional.
 struct PerspectiveWalkParts {
   // Random access to the stream's upper levels: above its bottom the walk visits a node's children
@@ -104,6 +112,9 @@ struct PerspectiveWalkParts {
   // subtrees drawn from an affine map, and their leaves' grandparents, are asked whether they
   // are hidden before they are drawn, and say where they drew.
   bool cull = false;
+  // A band of the frame's rows (renderer/perspective_bands.h): subtrees wholly above or below it
+  // as the eye sees it are passed over too. Null: the whole frame.
+  const PerspectiveBand* band = nullptr;
 };
 
 // Calls sink(const PerspectiveLeaf&) for every leaf in front of the near plane whose subtree
@@ -247,7 +258,20 @@ class PerspectiveWalk {
     const std::optional<std::int64_t> side_y = mulShiftRoundQuick(far_z, tables_.slope_y_q30, 30);
     // Rounded to nearest: one unit less keeps the test conservative.
     return (side_x && (c.x - reach > *side_x + 1 || c.x + reach < -*side_x - 1)) ||
-           (side_y && (c.y - reach > *side_y + 1 || c.y + reach < -*side_y - 1));
+           (side_y && (c.y - reach > *side_y + 1 || c.y + reach < -*side_y - 1)) ||
+           (parts_.band != nullptr && outsideBand(c, reach));
+  }
+
+  // Wholly above the band (every point has y < top * z: y <= c.y + reach, and top * z is at
+  // least top times the box's least z if top >= 0, its largest if not) or wholly below it.
+  bool outsideBand(const CameraPoint& c, std::int64_t reach) const {
+    const std::int64_t top = parts_.band->top_q30, bottom = parts_.band->bottom_q30;
+    const std::optional<std::int64_t> above =
+        mulShiftRoundQuick(top >= 0 ? c.z - reach : c.z + reach, top, 30);
+    const std::optional<std::int64_t> below =
+        mulShiftRoundQuick(bottom >= 0 ? c.z + reach : c.z - reach, bottom, 30);
+    // Rounded to nearest: one unit more keeps the test conservative.
+    return (above && c.y + reach < *above - 1) || (below && c.y - reach > *below + 1);
   }
 
   void skipChildren(int level, std::uint8_t mask) {
@@ -469,10 +493,12 @@ struct PerspectiveDrawStats {
 // the depth `detail` (made for the layers' depths) chooses for it, the finest's parts first (they
 // are the nearest). With `occlusion` (tiles of this frame, reset by the caller after the clear)
 // subtrees behind what is drawn are passed over: the same frame, bit for bit. `stats` may be
-// null. False when aborted.
+// null. With `band` (`frame` then holds the band's rows, `view` is shifted to them) only subtrees
+// that may reach them are visited. False when aborted.
 bool drawPerspectiveLayers(std::span<const PerspectiveLayer> layers,
                            const PerspectiveDetail* detail, const PerspectiveView& view,
                            FrameView& frame, OcclusionTiles* occlusion, PerspectiveDrawStats* stats,
+                           const PerspectiveBand* band = nullptr,
                            const std::atomic<bool>* abort = nullptr);
 
 }  // namespace octopoint

@@ -50,6 +50,44 @@ constexpr UInt128 mulWideUnsigned(uint64_t a, uint64_t b) {
   return result;
 }
 
+// n / d and n % d (d > 0) by shift and subtract: no division instruction and no call to a
+// compiler helper. ARMv6-M has no divide instruction and ARMv7-M none for 64 bits, so there a
+// 64-bit `/` calls libgcc's __aeabi_uldivmod, which the bare-metal images must not hold
+// (docs/device.md); the quotient and remainder are exact, so every target gets the same bits.
+// One step per quotient bit (bit_width(n) - bit_width(d) + 1 steps).
+struct UnsignedDivision {
+  uint64_t quotient = 0;
+  uint64_t remainder = 0;
+};
+constexpr UnsignedDivision longDivide(uint64_t n, uint64_t d) {
+  assert(d != 0);
+  int steps = 0;
+  while (d <= n && (d >> 63) == 0 && (d << 1) <= n) {  // align d's top bit under n's
+    d <<= 1;
+    ++steps;
+  }
+  uint64_t quotient = 0;
+  for (int step = 0; step <= steps; ++step) {
+    quotient <<= 1;
+    if (n >= d) {
+      n -= d;
+      quotient |= 1;
+    }
+    d >>= 1;
+  }
+  return {quotient, n};
+}
+
+// n / d and n % d (d > 0): the hardware's division where it has one for 64 bits (or a library
+// routine the target allows), longDivide on a Cortex-M (M profile).
+constexpr UnsignedDivision divideUnsigned(uint64_t n, uint64_t d) {
+#if defined(__ARM_ARCH_PROFILE) && __ARM_ARCH_PROFILE == 'M'
+  return longDivide(n, d);
+#else
+  return {n / d, n % d};
+#endif
+}
+
 // round(value / 2^shift), ties toward +infinity, for shift in [0, 62].
 // Never overflows: value = q * 2^shift + r with 0 <= r < 2^shift, and the result is q plus one
 // when r >= 2^(shift-1), i.e. when bit (shift - 1) of value is set. No addition near INT64_MAX.
@@ -129,8 +167,9 @@ constexpr int64_t roundShiftRight(int64_t value, int shift) {
 
   // Invariant: n * 2^step / d = quotient + remainder / d, with remainder < d <= 2^63, so
   // 2 * remainder < 2^64 never wraps.
-  uint64_t quotient = n / d;  // <= 2^63
-  uint64_t remainder = n % d;
+  const UnsignedDivision whole = divideUnsigned(n, d);
+  uint64_t quotient = whole.quotient;  // <= 2^63
+  uint64_t remainder = whole.remainder;
   for (int step = 0; step < shift; ++step) {
     if (quotient >= kTwoTo63) {
       return std::nullopt;  // the magnitude would reach 2^64 after doubling: no int64 holds it

@@ -10,6 +10,7 @@
 
 #include "octopoint/camera.h"
 #include "octopoint/model.h"
+#include "renderer/perspective.h"
 
 namespace octopoint::mcu {
 
@@ -68,6 +69,42 @@ inline constexpr std::array<BandCase, kCaseCount> kCases = [] {
   }
   return cases;
 }();
+
+// Perspective frames (docs/perspective.md) drawn in bands (renderer/perspective_bands.h): detail
+// by distance over the model's densely sampled depths, with and without occlusion culling (the
+// same frame), against the host's whole frame (PerspectiveRenderer).
+struct PerspectiveCase {
+  PerspectiveCamera camera;
+  std::int32_t band_rows;
+};
+
+constexpr PerspectiveCamera makePerspectiveCamera(std::int64_t x_percent, std::int64_t y_percent,
+                                                  std::int64_t z_percent, int yaw, int pitch,
+                                                  int fov) {
+  PerspectiveCamera camera;
+  camera.eye = {x_percent * kPerspectiveUnit / 100, y_percent * kPerspectiveUnit / 100,
+                z_percent * kPerspectiveUnit / 100};
+  camera.yaw = Angle::fromDegrees(yaw);
+  camera.pitch = Angle::fromDegrees(pitch);
+  camera.fov = Angle::fromDegrees(fov);
+  camera.width = 320;
+  camera.height = 240;
+  return camera;
+}
+
+// The eye at the table's edge (the view of docs/perspective.md's walk-through), and outside the
+// cube, two edges before it; bands of 24 and 8 rows.
+inline constexpr PerspectiveCamera kPerspectiveCameras[] = {
+    makePerspectiveCamera(0, 28, -46, 0, 28, 90),
+    makePerspectiveCamera(0, 0, -200, 0, 0, 60),
+};
+inline constexpr int kPerspectiveCaseCount = 4;
+inline constexpr std::array<PerspectiveCase, kPerspectiveCaseCount> kPerspectiveCases = {{
+    {kPerspectiveCameras[0], 24},
+    {kPerspectiveCameras[0], 8},
+    {kPerspectiveCameras[1], 24},
+    {kPerspectiveCameras[1], 8},
+}};
 
 // FNV-1a over a band's RGB565 bytes: the checksum both sides compute.
 constexpr std::uint32_t kChecksumSeed = 2166136261u;

@@ -7,11 +7,14 @@
 namespace octopoint::mcu {
 
 GoldenSink::GoldenSink(int case_number, Variant variant, std::int32_t width)
-    : golden_((drawsSplats(variant) ? kGoldenSplatBands : kGoldenPixelBands) +
-              kGoldenFirst[case_number]),
-      golden_rows_(kCases[static_cast<std::size_t>(case_number)].band_rows),
-      width_(width),
-      height_(kCameras[kCases[static_cast<std::size_t>(case_number)].camera].height) {}
+    : GoldenSink((drawsSplats(variant) ? kGoldenSplatBands : kGoldenPixelBands) +
+                     kGoldenFirst[case_number],
+                 kCases[static_cast<std::size_t>(case_number)].band_rows, width,
+                 kCameras[kCases[static_cast<std::size_t>(case_number)].camera].height) {}
+
+GoldenSink::GoldenSink(const std::uint32_t* golden, std::int32_t golden_rows, std::int32_t width,
+                       std::int32_t height)
+    : golden_(golden), golden_rows_(golden_rows), width_(width), height_(height) {}
 
 BandSink GoldenSink::sink() {
   BandSink sink;

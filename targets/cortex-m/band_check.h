@@ -17,6 +17,10 @@ namespace octopoint::mcu {
 class GoldenSink {
  public:
   GoldenSink(int case_number, Variant variant, std::int32_t width);
+  // Against the golden bands from `golden` on, each `golden_rows` high, of a frame of width x
+  // height.
+  GoldenSink(const std::uint32_t* golden, std::int32_t golden_rows, std::int32_t width,
+             std::int32_t height);
   BandSink sink();
   bool passed() const { return mismatches_ == 0 && next_y0_ == height_; }
   // Instructions spent in flush (checksumming): the display driver's time, not the renderer's.

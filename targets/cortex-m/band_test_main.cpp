@@ -8,12 +8,19 @@
 //     almost one walk), without an index and with the level-3 and level-4 ones, at 320x240 and
 //     240x320, depth 8: instructions per frame from qemu's instruction clock (the sink's
 //     checksumming excluded), each frame checked against the goldens too;
-//  3. the stack's high-water mark over all of it.
+//  3. the perspective cases (band_cases.h): drawn in bands by renderPerspectiveBands with and
+//     without occlusion culling, every band against the host's golden, instructions per point;
+//     and the RAM of the upper tree indexes, the tiles and the walk tables;
+//  4. the stack's high-water mark over all of it.
 // Prints one line per measurement and exits with status 0 only if every band matched.
 #include <array>
 #include <cstdint>
+#include <memory>
 
+#include "mcu/golden.h"
 #include "octopoint/render.h"
+#include "renderer/perspective_bands.h"
+#include "renderer/perspective_layers.h"
 #include "targets/cortex-m/band_check.h"
 #include "targets/cortex-m/semihosting.h"
 
@@ -27,10 +34,30 @@ constexpr std::size_t kHistoryWords =
     static_cast<std::size_t>(kMaxWidth + 2 * kHoleFillPadColumns) * kHoleFillHistoryRows;
 constexpr std::size_t kBufferWords =
     static_cast<std::size_t>(kMaxBandRows + 2 * kHoleFillReachRows) * kMaxWidth;
-// One arena: either two band buffers of up to 24 + 4 rows, or one band of 120 rows.
+// One arena: either two band buffers of up to 24 + 4 rows, or one band of 120 rows, or what a
+// perspective frame needs (its two band buffers, the upper tree indexes, the occlusion tiles):
+// the Cortex-M4's 192 KB hold one of them at a time.
 constexpr std::size_t kArenaWords = static_cast<std::size_t>(kTallRows) * kMaxWidth;
 static_assert(2 * kBufferWords <= kArenaWords);
-alignas(8) std::uint32_t arena[kArenaWords];
+constexpr std::size_t kPerspectiveBandWords = static_cast<std::size_t>(kMaxBandRows) * kMaxWidth;
+constexpr std::size_t kPerspectiveIndexEntries = 7000;  // the levels' upper tree nodes
+constexpr int kPerspectiveTileShift = 3;                // 8 x 8 tiles
+constexpr std::size_t kPerspectiveTiles =
+    static_cast<std::size_t>(kMaxWidth >> kPerspectiveTileShift) *
+    ((kMaxBandRows + 7) >> kPerspectiveTileShift);
+struct PerspectiveStorage {
+  std::uint32_t bands[2][kPerspectiveBandWords];
+  UpperTreeNode nodes[kPerspectiveIndexEntries];
+  OcclusionTile tiles[kPerspectiveTiles];
+};
+union Arena {
+  constexpr Arena() : words{} {}
+  std::uint32_t words[kArenaWords];
+  PerspectiveStorage perspective;
+};
+static_assert(sizeof(PerspectiveStorage) <= sizeof(std::uint32_t) * kArenaWords);
+alignas(8) Arena arena_storage;
+std::uint32_t* const arena = arena_storage.words;
 std::uint32_t history[kHistoryWords];
 // The index the device uses (level 3: 116 nodes of the default model, 464 bytes) and a deeper one
 // (level 4: 398 nodes, 1,592 bytes) for the cost table; by depth 7, 8.
@@ -88,6 +115,85 @@ bool drawCase(int number, Variant variant, int index_level, std::int32_t rows, b
     return false;
   }
   return golden.passed();
+}
+
+// The perspective cases (band_cases.h), each with and without occlusion culling: every band
+// against the host's golden, the instructions of the frame (its set-up, the view and the walk
+// tables, included; the sink's checksumming excluded) per point one walk of the whole frame
+// hands over (the host's count) and per point the bands handed over.
+int drawPerspectiveCases() {
+  const ModelView& model = defaultModel();
+  // The arena's band words are done with: it holds the perspective storage from here on.
+  PerspectiveStorage& storage = *std::construct_at(&arena_storage.perspective);
+  // The upper tree index of each level, built once (set-up, not per frame).
+  std::array<UpperTreeIndex, format::kMaxLevels> level_indexes{};
+  std::size_t used = 0;
+  for (int i = 0; i < model.levelCount() && model.level(i).depth <= kMaxRenderDepth; ++i) {
+    const std::size_t entries = upperTreeEntries(model.level(i));
+    if (used + entries > kPerspectiveIndexEntries) {
+      print("the upper tree indexes do not fit their storage\n");
+      return 1;
+    }
+    level_indexes[static_cast<std::size_t>(i)] =
+        buildUpperTreeIndex(model.level(i), std::span(storage.nodes + used, entries));
+    report("perspective upper tree index of depth",
+           static_cast<std::uint64_t>(model.level(i).depth));
+    report("  bytes", entries * sizeof(UpperTreeNode));
+    used += entries;
+  }
+  report("perspective upper tree indexes, all levels, bytes", used * sizeof(UpperTreeNode));
+  report("perspective occlusion tiles bytes (24-row band, 320 wide)",
+         occlusionTileCount(320, 24, kPerspectiveTileShift) * sizeof(OcclusionTile));
+  report("perspective walk tables bytes per level", sizeof(PerspectiveWalkTables));
+  static std::array<PerspectiveWalkTables, format::kMaxLevels> tables;
+  int failures = 0;
+  for (int i = 0; i < kPerspectiveCaseCount; ++i) {
+    const PerspectiveCase& c = kPerspectiveCases[static_cast<std::size_t>(i)];
+    for (const bool cull : {false, true}) {
+      GoldenSink golden(kGoldenPerspectiveBands + kGoldenPerspectiveFirst[i], c.band_rows,
+                        c.camera.width, c.camera.height);
+      PerspectiveDrawStats stats;
+      const std::uint64_t start = instructionsNow();
+      PerspectiveView view;
+      bool drawn =
+          buildPerspectiveView(c.camera, kDefaultFractionBits, &view) == PerspectiveError::kNone;
+      const PerspectiveLayers layers = perspectiveLayers(model, view, 0, level_indexes, tables);
+      const std::uint64_t set_up = instructionsNow() - start;
+      PerspectiveBandFrame frame{layers.layers(), &layers.detail, &view, {}, kPerspectiveTileShift};
+      if (cull) frame.tiles = std::span(storage.tiles);
+      const std::size_t words =
+          static_cast<std::size_t>(c.camera.width) * static_cast<std::size_t>(c.band_rows);
+      const BandBuffers buffers{
+          std::span(storage.bands[0], words), std::span(storage.bands[1], words), {}};
+      drawn = drawn && layers.count > 0 &&
+              renderPerspectiveBands(frame, c.band_rows, palette, buffers, golden.sink(), &stats) ==
+                  BandError::kNone;
+      const std::uint64_t instructions = instructionsNow() - start - golden.flushInstructions();
+      const bool passed = drawn && golden.passed();
+      failures += passed ? 0 : 1;
+      const std::uint64_t points = kGoldenPerspectivePoints[i];
+      print(passed ? "pass" : "FAIL");
+      print(" perspective case ");
+      printUnsigned(static_cast<std::uint64_t>(i));
+      print(" rows ");
+      printUnsigned(static_cast<std::uint64_t>(c.band_rows));
+      print(cull ? " culled" : " unculled");
+      print(" instructions ");
+      printUnsigned(instructions);
+      print(" set-up ");
+      printUnsigned(set_up);
+      print(" points (one walk) ");
+      printUnsigned(points);
+      print(" per point ");
+      printUnsigned(points == 0 ? 0 : longDivide(instructions + points / 2, points).quotient);
+      print(" points (bands) ");
+      printUnsigned(stats.leaves);
+      print(" hidden subtrees ");
+      printUnsigned(stats.hidden_subtrees);
+      print("\n");
+    }
+  }
+  return failures;
 }
 
 int caseNumber(int camera, int depth, bool fill, std::int32_t rows) {
@@ -173,6 +279,8 @@ int octopoint::mcu::programMain() {
       }
     }
   }
+
+  failures += drawPerspectiveCases();
 
   report("stack high-water bytes", stackHighWater());
   report("stack region bytes", stackBytes());

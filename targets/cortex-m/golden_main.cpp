@@ -13,6 +13,7 @@
 #include "octopoint/framebuffer.h"
 #include "octopoint/models.h"
 #include "octopoint/render.h"
+#include "renderer/perspective_renderer.h"
 #include "targets/cortex-m/band_cases.h"
 
 using namespace octopoint;
@@ -78,7 +79,44 @@ int main(int argc, char** argv) {
     if (splats) first += std::to_string(count) + "};\n";
     text += sums + "};\n";
   }
-  text += first + "}  // namespace octopoint::mcu\n";
+  text += first;
+  // The perspective cases: the whole frame as the desktop draws it (PerspectiveRenderer, detail
+  // by distance, culling), cut into the case's bands; and the points one walk of it hands over.
+  std::string perspective_sums = "inline constexpr std::uint32_t kGoldenPerspectiveBands[] = {\n";
+  std::string perspective_first = "inline constexpr std::uint32_t kGoldenPerspectiveFirst[] = {";
+  std::string perspective_points = "inline constexpr std::uint32_t kGoldenPerspectivePoints[] = {";
+  std::size_t perspective_count = 0;
+  PerspectiveRenderer renderer(*model);
+  for (const mcu::PerspectiveCase& c : mcu::kPerspectiveCases) {
+    PerspectiveView view;
+    Framebuffer frame(c.camera.width, c.camera.height);
+    frame.clear();
+    PerspectiveDrawStats stats;
+    if (buildPerspectiveView(c.camera, kDefaultFractionBits, &view) != PerspectiveError::kNone ||
+        !renderer.draw(view, {}, frame, &stats)) {
+      std::fprintf(stderr, "mcu_golden: a perspective case cannot be drawn\n");
+      return 1;
+    }
+    std::vector<std::uint8_t> rgb(frame.pixels().size() * 2);
+    packedToRgb565(frame.pixels().data(), frame.pixels().size(), palette, rgb.data());
+    perspective_first += std::to_string(perspective_count) + ", ";
+    perspective_points += std::to_string(stats.leaves) + ", ";
+    perspective_sums += "    ";
+    for (std::int32_t y0 = 0; y0 < c.camera.height; y0 += c.band_rows, ++perspective_count) {
+      const std::int32_t rows = std::min(c.band_rows, c.camera.height - y0);
+      const std::size_t row_bytes = static_cast<std::size_t>(c.camera.width) * 2;
+      char hex[16];
+      std::snprintf(
+          hex, sizeof hex, "0x%08x,",
+          mcu::checksum(mcu::kChecksumSeed, rgb.data() + static_cast<std::size_t>(y0) * row_bytes,
+                        static_cast<std::size_t>(rows) * row_bytes));
+      perspective_sums += hex;
+    }
+    perspective_sums += "\n";
+  }
+  text += perspective_sums + "};\n" + perspective_first + std::to_string(perspective_count) +
+          "};\n" + perspective_points + "};\n";
+  text += "}  // namespace octopoint::mcu\n";
   std::FILE* out = std::fopen(argv[1], "w");
   if (out == nullptr || std::fputs(text.c_str(), out) < 0 || std::fclose(out) != 0) {
     std::fprintf(stderr, "mcu_golden: cannot write %s\n", argv[1]);

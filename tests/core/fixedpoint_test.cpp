@@ -526,3 +526,34 @@ TEST(Fixed, WorksInConstantExpressions) {
 }
 
 }  // namespace
+
+namespace octopoint {
+namespace {
+
+// longDivide (what a Cortex-M divides with, having no 64-bit divide instruction) gives the
+// hardware's quotient and remainder: at the extremes and on a million random pairs of every
+// width, so that the perspective frames of the bare-metal builds are the desktop's.
+TEST(LongDivide, QuotientAndRemainderAreTheHardwares) {
+  constexpr std::uint64_t kMax = std::numeric_limits<std::uint64_t>::max();
+  const std::uint64_t edges[] = {
+      0, 1, 2, 3, 7, 0xFFFF'FFFF, 0x1'0000'0000, kMax / 2, kMax / 2 + 1, kMax - 1, kMax};
+  for (const std::uint64_t n : edges) {
+    for (const std::uint64_t d : edges) {
+      if (d == 0) continue;
+      const UnsignedDivision division = longDivide(n, d);
+      EXPECT_EQ(division.quotient, n / d) << n << " / " << d;
+      EXPECT_EQ(division.remainder, n % d) << n << " % " << d;
+    }
+  }
+  std::mt19937_64 random(2026);
+  for (int i = 0; i < 1'000'000; ++i) {
+    const std::uint64_t n = random() >> (random() % 64);
+    const std::uint64_t d = std::max<std::uint64_t>(1, random() >> (random() % 64));
+    const UnsignedDivision division = longDivide(n, d);
+    ASSERT_EQ(division.quotient, n / d) << n << " / " << d;
+    ASSERT_EQ(division.remainder, n % d) << n << " % " << d;
+  }
+}
+
+}  // namespace
+}  // namespace octopoint

@@ -1,0 +1,45 @@
+#include "renderer/perspective_layers.h"
+
+#include "renderer/level_of_detail.h"
+
+namespace octopoint {
+
+PerspectiveLayers perspectiveLayers(const ModelView& model, const PerspectiveView& view, int depth,
+                                    std::span<const UpperTreeIndex> indexes,
+                                    std::span<PerspectiveWalkTables> tables, int coarser) {
+  // The levels this build draws: a prefix, the levels being ascending.
+  std::array<std::uint64_t, format::kMaxLevels> voxels{};
+  std::size_t drawable = 0;
+  while (drawable < static_cast<std::size_t>(model.levelCount()) &&
+         model.level(static_cast<int>(drawable)).depth <= kMaxRenderDepth) {
+    voxels[drawable] = model.level(static_cast<int>(drawable)).leaves.size();
+    ++drawable;
+  }
+  std::size_t first = 0, count = denseDepthCount(std::span(voxels).first(drawable));
+  if (depth != 0) {
+    first = drawable;
+    for (std::size_t i = 0; i < drawable; ++i) {
+      if (model.level(static_cast<int>(i)).depth == depth) first = i;
+    }
+    count = first == drawable ? 0 : 1;
+  }
+  PerspectiveLayers result;
+  if (count == 0 || tables.size() < first + count) return result;
+  // A quarter pixel: with the rounding of the additions, every leaf within half a pixel.
+  const std::int64_t max_error = std::int64_t{1} << (view.fraction_bits - 2);
+  std::array<int, format::kMaxLevels> depths{};
+  for (std::size_t i = 0; i < count; ++i) {
+    const std::size_t k = first + i;
+    const LevelView& level = model.level(static_cast<int>(k));
+    tables[k] = perspectiveWalkTables(view, level.depth, max_error);
+    const UpperTreeIndex* index =
+        k < indexes.size() && indexes[k].bottom >= 0 ? &indexes[k] : nullptr;
+    result.layer[i] = {&level, &tables[k], index};
+    depths[i] = level.depth;
+  }
+  result.count = count;
+  result.detail = perspectiveDetail(view, std::span<const int>(depths.data(), count), coarser);
+  return result;
+}
+
+}  // namespace octopoint
