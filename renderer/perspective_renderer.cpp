@@ -27,10 +27,9 @@ PerspectiveRenderer::PerspectiveRenderer(const ModelView& model) : model_(model)
 bool PerspectiveRenderer::draw(const PerspectiveView& view, const Options& options,
                                FrameView& frame, PerspectiveDrawStats* stats,
                                const std::atomic<bool>* abort) {
-  const PerspectiveLayers layers =
-      perspectiveLayers(model_, view, options.depth,
-                        std::span<const UpperTreeIndex>(indexes_.data(), count_), tables_,
-                        options.coarser);
+  const PerspectiveLayers layers = perspectiveLayers(
+      model_, view, options.depth, std::span<const UpperTreeIndex>(indexes_.data(), count_),
+      tables_, options.coarser);
   if (layers.count == 0) return false;
   std::optional<OcclusionTiles> occlusion;
   if (options.cull) {

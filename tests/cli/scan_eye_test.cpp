@@ -1,9 +1,10 @@
 // How octopoint-render and octopoint-view print an angle (tools/scan_eye.h): a text the user can
 // pass back to --look or --fov that reads as the very same angle, and as short as that allows.
+#include "tools/scan_eye.h"
+
 #include <gtest/gtest.h>
 
 #include "cli/real_numbers.h"
-#include "tools/scan_eye.h"
 
 namespace octopoint {
 namespace {
