@@ -162,7 +162,7 @@ class BlendWalk {
                          column_weight_,
                          row_weight_,
                          static_cast<std::size_t>(columns.end - columns.begin),
-                         static_cast<std::size_t>(std::max(rows.end - rows.begin, 0)),
+                         static_cast<std::size_t>(std::max<std::int32_t>(rows.end - rows.begin, 0)),
                          words_ + first,
                          sums_ + first,
                          width};
