@@ -132,9 +132,10 @@ const std::string& landscapeLas(std::size_t points, bool laz = false, int format
   return path;
 }
 
-void BM_PrepareStreamedLas(benchmark::State& state) {
+// The streamed preparer to a depth-12 model from the landscape as LAS or as LAZ (`laz`).
+void prepareStreamedLandscape(benchmark::State& state, bool laz) {
   const auto points = static_cast<std::size_t>(state.range(0));
-  const std::string& path = landscapeLas(points);
+  const std::string& path = landscapeLas(points, laz);
   PrepareOptions options;
   options.name = "bench";
   options.depths = {12};
@@ -148,6 +149,8 @@ void BM_PrepareStreamedLas(benchmark::State& state) {
       static_cast<double>(points) * static_cast<double>(state.iterations()) / 1e6,
       benchmark::Counter::kIsRate);
 }
+
+void BM_PrepareStreamedLas(benchmark::State& state) { prepareStreamedLandscape(state, false); }
 BENCHMARK(BM_PrepareStreamedLas)
     ->ArgsProduct({{1'000'000, 4'000'000}, {1, 2}})
     ->ArgNames({"points", "threads"})
@@ -157,22 +160,7 @@ BENCHMARK(BM_PrepareStreamedLas)
 
 // The same from the LAZ file of the same points (make_large_scan --format laz: format 2, chunks of
 // 50,000): what decoding costs the whole preparer, against BM_PrepareStreamedLas.
-void BM_PrepareStreamedLaz(benchmark::State& state) {
-  const auto points = static_cast<std::size_t>(state.range(0));
-  const std::string& path = landscapeLas(points, true);
-  PrepareOptions options;
-  options.name = "bench";
-  options.depths = {12};
-  StreamOptions stream;
-  stream.threads = static_cast<unsigned>(state.range(1));
-  for (auto _ : state) {
-    const auto source = openPointSource(path);
-    benchmark::DoNotOptimize(prepareFromSource(*source, path, options, stream).levels.size());
-  }
-  state.counters["M_points_per_s"] = benchmark::Counter(
-      static_cast<double>(points) * static_cast<double>(state.iterations()) / 1e6,
-      benchmark::Counter::kIsRate);
-}
+void BM_PrepareStreamedLaz(benchmark::State& state) { prepareStreamedLandscape(state, true); }
 BENCHMARK(BM_PrepareStreamedLaz)
     ->ArgsProduct({{1'000'000, 4'000'000}, {1, 2}})
     ->ArgNames({"points", "threads"})
