@@ -64,14 +64,7 @@ std::size_t PerspectiveFetchOrder::order(const ProgressiveModel& model, const Pe
       const CameraPoint c = toCameraSpace(view, regionCentre(record.region, region_level));
       const std::int64_t nearest = c.z - reach;
       if (detail.ask(nearest) < level) continue;  // coarser depths are fine enough all over it
-      const std::int64_t far_z = c.z + reach;
-      const std::optional<std::int64_t> side_x = mulShiftRoundQuick(far_z, tables.slope_x_q30, 30);
-      const std::optional<std::int64_t> side_y = mulShiftRoundQuick(far_z, tables.slope_y_q30, 30);
-      // As the walk's test (renderer/perspective_walk.h, outsideFrustum), one unit conservative.
-      const bool invisible =
-          far_z < view.camera.near ||
-          (side_x && (c.x - reach > *side_x + 1 || c.x + reach < -*side_x - 1)) ||
-          (side_y && (c.y - reach > *side_y + 1 || c.y + reach < -*side_y - 1));
+      const bool invisible = outsideFrustumSides(tables, c, reach, view.camera.near);
       if (invisible && !include_invisible) continue;
       // Nearest depth in 1/2^20 cube edge, 0 for a region the eye is in, at most 2^32 - 1 (the
       // eye lies within 128 cube edges: 2^31 of them).

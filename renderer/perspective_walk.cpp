@@ -71,10 +71,24 @@ PerspectiveWalkTables perspectiveWalkTables(const PerspectiveView& view, int dep
     const std::int64_t half = std::int64_t{1} << (kPerspectiveUnitBits - 1 - level);
     tables.reach[static_cast<std::size_t>(level)] = rotatedCubeReach(half) + depth;
   }
-  tables.slope_x_q30 =
-      divShiftRound(std::int64_t{view.camera.width} << 15, view.focal_q16, 30).value_or(INT64_MAX);
-  tables.slope_y_q30 =
-      divShiftRound(std::int64_t{view.camera.height} << 15, view.focal_q16, 30).value_or(INT64_MAX);
+  // Pixels Q(32-F).F over f Q.16, to Q2.30: shifted by 30 + 16 - F. Centred (no pan) each side is
+  // (width / 2) / f exactly as (width << 15) / f would give.
+  const int shift = 46 - view.fraction_bits;
+  const auto slope = [&](std::int64_t pixels) {
+    return divShiftRound(pixels, view.focal_q16, shift).value_or(INT64_MAX);
+  };
+  const std::int64_t width = std::int64_t{view.camera.width} << view.fraction_bits;
+  const std::int64_t height = std::int64_t{view.camera.height} << view.fraction_bits;
+  tables.left_q30 = slope(view.centre_x);
+  tables.right_q30 = slope(width - view.centre_x);
+  tables.top_q30 = slope(view.centre_y);
+  tables.bottom_q30 = slope(height - view.centre_y);
+  const auto widest = [](std::int64_t a, std::int64_t b) {
+    if (a == INT64_MAX || b == INT64_MAX) return INT64_MAX;
+    return std::max(a < 0 ? -a : a, b < 0 ? -b : b);
+  };
+  tables.slope_x_q30 = widest(tables.left_q30, tables.right_q30);
+  tables.slope_y_q30 = widest(tables.top_q30, tables.bottom_q30);
   const std::int64_t ratio =
       largestAffineRatio(view, std::max(tables.slope_x_q30, tables.slope_y_q30), max_error);
   for (int level = 0; level <= depth; ++level) {

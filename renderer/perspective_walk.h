@@ -73,7 +73,13 @@ struct AffineSubtree {
 struct PerspectiveWalkTables {
   std::array<std::array<CameraPoint, 8>, kMaxRenderDepth> child_offset{};
   std::array<std::int64_t, kMaxRenderDepth + 1> reach{};  // a node of level l: Q.24 cube edges
-  std::int64_t slope_x_q30 = 0;  // (width / 2) / f: the frustum's side planes are x = +-slope * z
+  // The frustum's side planes, Q2.30 slopes: the screen spans x from -left * z to right * z and y
+  // from -top * z to bottom * z (left = centre_x / f, right = (width - centre_x) / f, ...: the
+  // pan moves the principal point, so they differ, and one is negative when it leaves the
+  // screen); INT64_MAX where a slope does not fit (that side is not tested).
+  std::int64_t left_q30 = 0, right_q30 = 0, top_q30 = 0, bottom_q30 = 0;
+  // The largest |x / z| and |y / z| on the screen (for the affine error bound).
+  std::int64_t slope_x_q30 = 0;
   std::int64_t slope_y_q30 = 0;
   std::int64_t max_error = 0;  // Q(32-F).F pixels
   // A node of level l whose camera-space depth is at least affine_depth[l] is within max_error of
@@ -86,6 +92,26 @@ struct PerspectiveWalkTables {
   std::array<std::int64_t, kMaxRenderDepth + 1> growth_q16{};
   int depth = 0;
 };
+
+// Whether the box of centre `c` and half extent `reach` (camera units) lies wholly behind the near
+// plane `near` or beyond one of the frustum's side planes; conservative by a unit (the products
+// round to nearest). A side's extent at depth z is its slope times z: within the box widest at its
+// far depth for a positive slope, at its nearest depth in front of the near plane for a negative.
+inline bool outsideFrustumSides(const PerspectiveWalkTables& tables, const CameraPoint& c,
+                                std::int64_t reach, std::int64_t near) {
+  const std::int64_t far_z = c.z + reach;
+  if (far_z < near) return true;
+  const std::int64_t near_z = c.z - reach > near ? c.z - reach : near;
+  const auto extent = [&](std::int64_t slope_q30) {
+    return mulShiftRoundQuick(slope_q30 >= 0 ? far_z : near_z, slope_q30, 30);
+  };
+  const std::optional<std::int64_t> left = extent(tables.left_q30);
+  const std::optional<std::int64_t> right = extent(tables.right_q30);
+  const std::optional<std::int64_t> top = extent(tables.top_q30);
+  const std::optional<std::int64_t> bottom = extent(tables.bottom_q30);
+  return (right && c.x - reach > *right + 1) || (left && c.x + reach < -*left - 1) ||
+         (bottom && c.y - reach > *bottom + 1) || (top && c.y + reach < -*top - 1);
+}
 
 // `max_error` in Q(32-F).F pixels, >= 0; depth 1..kMaxRenderDepth.
 PerspectiveWalkTables perspectiveWalkTables(const PerspectiveView& view, int depth,
@@ -252,13 +278,7 @@ class PerspectiveWalk {
   // the box has x >= centre.x - reach and z <= centre.z + reach, so centre.x - reach >
   // slope * (centre.z + reach) puts it right of the plane x = slope * z whatever its z.
   bool outsideFrustum(const CameraPoint& c, std::int64_t reach) const {
-    const std::int64_t far_z = c.z + reach;
-    if (far_z < view_.camera.near) return true;
-    const std::optional<std::int64_t> side_x = mulShiftRoundQuick(far_z, tables_.slope_x_q30, 30);
-    const std::optional<std::int64_t> side_y = mulShiftRoundQuick(far_z, tables_.slope_y_q30, 30);
-    // Rounded to nearest: one unit less keeps the test conservative.
-    return (side_x && (c.x - reach > *side_x + 1 || c.x + reach < -*side_x - 1)) ||
-           (side_y && (c.y - reach > *side_y + 1 || c.y + reach < -*side_y - 1)) ||
+    return outsideFrustumSides(tables_, c, reach, view_.camera.near) ||
            (parts_.band != nullptr && outsideBand(c, reach));
   }
 

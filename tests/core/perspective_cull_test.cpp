@@ -156,3 +156,45 @@ TEST(PerspectiveCulling, CullingSubmitsFewerPointsPerCoveredPixel) {
 
 }  // namespace
 }  // namespace octopoint
+
+namespace octopoint {
+namespace {
+
+// The pan moves the principal point: the frustum's sides are then asymmetric, and a subtree that
+// the pan brings onto the screen must not be passed over as outside it. A 320-wide orbit view
+// panned 150 pixels either way is the matching 320 columns of the 620-wide view, bit for bit.
+TEST(PerspectiveFrustum, APannedFrameIsTheCropOfAWiderOne) {
+  ModelIssue issue;
+  const ModelView model = *ModelView::fromEmbedded(*models::defaultModel(), &issue);
+  PerspectiveRenderer renderer(model);
+  const auto draw = [&](std::int32_t width, std::int32_t pan_x) {
+    Camera camera;
+    camera.width = width;
+    camera.height = 240;
+    camera.pan_x_px = pan_x;
+    PerspectiveView view;
+    EXPECT_EQ(orbitPerspective(camera, Angle::fromDegrees(60), kDefaultFractionBits, &view),
+              PerspectiveError::kNone);
+    Framebuffer frame(width, 240);
+    frame.clear();
+    EXPECT_TRUE(renderer.draw(view, {}, frame, nullptr));
+    return frame;
+  };
+  const Framebuffer wide = draw(620, 0);
+  for (const std::int32_t pan : {150, -150}) {
+    const Framebuffer panned = draw(320, pan);
+    const std::int32_t first = pan > 0 ? 0 : 300;  // the wide frame's column of panned column 0
+    std::int64_t differing = 0, drawn = 0;
+    for (std::int32_t y = 0; y < 240; ++y) {
+      for (std::int32_t x = 0; x < 320; ++x) {
+        differing += panned.pixelAt(x, y) != wide.pixelAt(first + x, y);
+        drawn += panned.pixelAt(x, y) != Framebuffer::kEmpty;
+      }
+    }
+    EXPECT_EQ(differing, 0) << "pan " << pan;
+    EXPECT_GT(drawn, 10000) << "pan " << pan;
+  }
+}
+
+}  // namespace
+}  // namespace octopoint
