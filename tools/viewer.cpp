@@ -1,5 +1,5 @@
 // octopoint-view's window: the key table, the event loop, the frame on screen with its overlay,
-// the style keys and `s` (tools/viewer.h).
+// the style keys and `s` (tools/viewer.h); walk mode is in tools/viewer_walk.cpp.
 
 #include "tools/viewer.h"
 
@@ -93,57 +93,12 @@ InteractiveConfig interactiveConfig(const ViewerOptions& options, const WalkStar
 
 constexpr int kLightStepDegrees = 15;
 
-// A short number for the overlay (the save line gives them exactly).
+}  // namespace
+
 std::string shortNumber(double value) {
   char text[32];
   std::snprintf(text, sizeof text, "%.4g", value);
   return text;
-}
-
-}  // namespace
-
-WalkStart walkStart(const ViewerOptions& options, const ModelView* model) {
-  WalkStart walk;
-  if (options.look && !options.eye) throw cli::Error("--look needs --eye");
-  const bool walk_options = options.eye || options.fov || options.walk_speed;
-  if (model == nullptr) {
-    if (walk_options) {
-      throw cli::Error(
-          "--eye, --fov and --walk-speed: walk mode draws a model file or an embedded model, not "
-          "--url (yet)");
-    }
-    return walk;
-  }
-  walk.fov = options.fov.value_or(Angle::fromDegrees(60));
-  walk.cube = scanCube(model->cubePlacement());
-  if (!walk.cube && (options.eye || options.walk_speed)) {
-    throw cli::Error(std::string(options.eye ? "--eye" : "--walk-speed") +
-                     " needs where the model's cube lies in the scan, which format version " +
-                     std::to_string(model->formatVersion()) +
-                     " does not record: prepare the scan again with octopoint-prepare");
-  }
-  if (options.eye) {
-    const Look look = options.look.value_or(Look{});
-    // Refuses, in one line, an eye or a field of view the camera cannot draw.
-    const PerspectiveView view = scanEyeView(*walk.cube, *options.eye, look, walk.fov,
-                                             options.width, options.height, "--eye");
-    walk.eye = WalkEye{view.camera.eye, look.yaw, look.pitch, look.roll};
-  }
-  if (options.walk_speed) {
-    const double edges = *options.walk_speed / walk.cube->edge;
-    const double q24 = std::round(edges * static_cast<double>(kPerspectiveUnit));
-    if (!(q24 >= static_cast<double>(kMinWalkSpeed) && q24 <= static_cast<double>(kMaxWalkSpeed))) {
-      char text[200];
-      std::snprintf(text, sizeof text,
-                    "--walk-speed: %s scan units a second is %.3g cube edges (of %s) a second; "
-                    "walk mode takes 1/1024 to 64",
-                    cli::realText(*options.walk_speed).c_str(), edges,
-                    cli::realText(walk.cube->edge).c_str());
-      throw cli::Error(text);
-    }
-    walk.speed = static_cast<std::int64_t>(q24);
-  }
-  return walk;
 }
 
 Viewer::Viewer(const ViewerOptions& options, const WalkStart& walk, const ModelView* model,
@@ -444,49 +399,6 @@ void Viewer::releaseAll(std::int64_t now_us) {
   }
 }
 
-void Viewer::toggleWalk(std::int64_t now_us) {
-  if (!renderer_->canWalk()) {
-    cli::printError("octopoint-view",
-                    "walk mode: a streamed model cannot be walked through yet; open a model file "
-                    "or an embedded model");
-    return;
-  }
-  releaseAll(now_us);
-  send(ViewEventKind::kToggleWalk, now_us);
-}
-
-// The eye turns by the angle the drag spans on screen (the field of view per frame height), right
-// and up as the mouse moves right and up; sums since the drag began, so no rounding adds up.
-void Viewer::drag(const WindowEvent& event) {
-  const std::int64_t now_us = clock_.nowMicroseconds();
-  if (!walking()) return;
-  switch (event.kind) {
-    case WindowEvent::Kind::kDragStart:
-      drag_x_ = drag_y_ = drag_yaw_sent_ = drag_pitch_sent_ = 0;
-      renderer_->handle({now_us, ViewEventKind::kPress, NavigationKey::kDrag});
-      return;
-    case WindowEvent::Kind::kDragEnd:
-      renderer_->handle({now_us, ViewEventKind::kRelease, NavigationKey::kDrag});
-      return;
-    default:
-      break;
-  }
-  drag_x_ += event.dx;
-  drag_y_ += event.dy;
-  const std::int64_t frame_height = shown_info_.height > 0 ? shown_info_.height : options_.height;
-  const std::int64_t pixels = frame_height * options_.scale;
-  const std::int64_t fov = walk_.fov.turns16();
-  const std::int64_t yaw = drag_x_ * fov / pixels, pitch = -drag_y_ * fov / pixels;
-  ViewEvent turn;
-  turn.time_us = now_us;
-  turn.kind = ViewEventKind::kTurn;
-  turn.turn_yaw = static_cast<std::int32_t>(yaw - drag_yaw_sent_);
-  turn.turn_pitch = static_cast<std::int32_t>(pitch - drag_pitch_sent_);
-  drag_yaw_sent_ = yaw;
-  drag_pitch_sent_ = pitch;
-  if (turn.turn_yaw != 0 || turn.turn_pitch != 0) renderer_->handle(turn);
-}
-
 void Viewer::resizeFrame(int window_width, int window_height) {
   ViewEvent event;
   event.time_us = clock_.nowMicroseconds();
@@ -568,38 +480,6 @@ void Viewer::defaultOverlay(OverlayLines& lines) const {
                 static_cast<unsigned long long>(drawn_rate_.perSecond()),
                 static_cast<unsigned long long>(shown_rate_.perSecond()));
   lines.emplace_back(line);
-}
-
-void Viewer::walkOverlay(OverlayLines& lines) const {
-  if (!shown_info_.view.walk) return;
-  const WalkEye& walker = shown_info_.view.walker;
-  const auto degrees = [](Angle angle) { return shortNumber(signedDegreesOf(angle)); };
-  const std::string look = degrees(walker.yaw) + "," + degrees(walker.pitch) +
-                           (walker.roll == Angle{} ? "" : "," + degrees(walker.roll));
-  const double speed_edges =
-      static_cast<double>(renderer_->status().walk_speed) / static_cast<double>(kPerspectiveUnit);
-  if (walk_.cube) {
-    const ScanPoint eye = scanPointOf(*walk_.cube, walker.eye);
-    lines.push_back("eye " + shortNumber(eye[0]) + "," + shortNumber(eye[1]) + "," +
-                    shortNumber(eye[2]) + "  look " + look);
-    lines.push_back("speed " + shortNumber(speed_edges * walk_.cube->edge) + " units/s");
-  } else {  // a model that records no placement: cube edges about its centre
-    const auto edges = [](std::int64_t q24) {
-      return shortNumber(static_cast<double>(q24) / static_cast<double>(kPerspectiveUnit));
-    };
-    lines.push_back("eye " + edges(walker.eye.x) + "," + edges(walker.eye.y) + "," +
-                    edges(walker.eye.z) + " cube edges  look " + look);
-    lines.push_back("speed " + shortNumber(speed_edges) + " cube edges/s");
-  }
-}
-
-std::string Viewer::walkOptions(const WalkEye& walker) const {
-  if (!walk_.cube) return " (walk mode; the model records no placement for --eye)";
-  // Signed degrees, exact: a count of 1/65536 turn times 360/65536 is exact in a double.
-  const auto degrees = [](Angle angle) { return cli::realText(signedDegreesOf(angle)); };
-  return " --eye " + scanPointText(scanPointOf(*walk_.cube, walker.eye)) + " --look " +
-         degrees(walker.yaw) + "," + degrees(walker.pitch) + "," + degrees(walker.roll) +
-         " --fov " + degreesText(walk_.fov);
 }
 
 // The output-file rule of every tool (cli/output_file.h): whole or nothing, and an existing name

@@ -55,6 +55,9 @@ struct WalkStart {
 };
 WalkStart walkStart(const ViewerOptions& options, const ModelView* model);
 
+// A short number for the overlay, "%.4g" (the save line gives them exactly).
+std::string shortNumber(double value);
+
 class Viewer {
  public:
   // Shows `model`, or, when `model` is null, the chunked model `stream` brings in.

@@ -228,7 +228,8 @@
 //                            indexLevelAllowed, countNodesPerLevel: its rules.
 //   bandFrameSetup(frame_setup, y0, rows, &band), supportsBands(variant)
 //
-// octopoint/progressive.h (separate include): chunked models, refined while bytes arrive
+// octopoint/progressive.h (separate include; it includes octopoint/chunked.h, the format):
+// chunked models, refined while bytes arrive
 //   ProgressiveModel::fromHead(bytes, &issue), progressiveModelFromPrefix(bytes, &issue)
 //                            a model from a version-3 file's head (chunkedHeadBytes says how many
 //                            bytes), or from any prefix of the file; nullopt with ChunkedIssue.
