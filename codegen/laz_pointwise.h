@@ -12,6 +12,7 @@
 
 #include "codegen/laz_arithmetic.h"
 #include "codegen/laz_integer.h"
+#include "codegen/laz_shared_items.h"
 
 namespace octopoint::laz {
 
@@ -44,38 +45,6 @@ class ItemDecoder {
   virtual void start(const std::uint8_t* first) = 0;
   virtual void decode(std::uint8_t* item) = 0;
 };
-
-// The colour models of RGB12 version 2 and of the layered RGB14 and RGBNIR14 (which code a
-// colour alike).
-struct RgbModels {
-  void reset();
-  SymbolModel used{128};
-  std::array<SymbolModel, 6> diff{SymbolModel(256), SymbolModel(256), SymbolModel(256),
-                                  SymbolModel(256), SymbolModel(256), SymbolModel(256)};
-};
-
-// Decodes a colour (red, green, blue: 6 bytes) predicted from `last`; `out` may be `last`.
-void decodeRgb(ArithmeticDecoder& decoder, RgbModels& models, const std::uint8_t* last,
-               std::uint8_t* out);
-
-// A wave packet item: descriptor index, offset (uint64), size (uint32), return point and x, y, z
-// (four float32, coded as their bits).
-inline constexpr std::size_t kWavePacketBytes = 29;
-
-// The models of WAVEPACKET13 version 1 and WAVEPACKET14 version 3 (which code a packet alike).
-struct WavePacketModels {
-  void reset();
-  std::int32_t last_diff = 0;
-  std::uint32_t last_offset_symbol = 0;
-  SymbolModel index{256};
-  std::array<SymbolModel, 4> offset_kind{SymbolModel(4), SymbolModel(4), SymbolModel(4),
-                                         SymbolModel(4)};
-  IntegerModels offset_diff{32, 1}, size{32, 1}, return_point{32, 1}, xyz{32, 3};
-};
-
-// Decodes a wave packet predicted from `last`; `out` may be `last`.
-void decodeWavePacket(ArithmeticDecoder& decoder, WavePacketModels& models,
-                      const std::uint8_t* last, std::uint8_t* out);
 
 // The decoder of a point-wise item, or nullptr for a type or version this reader does not know.
 std::unique_ptr<ItemDecoder> pointwiseDecoder(const Item& item, ArithmeticDecoder& decoder);
