@@ -1,7 +1,7 @@
 #pragma once
-// The tests' encoders of LAZ's layered items, version 3 (POINT14, RGB14, RGBNIR14, BYTE14), each the
-// inverse of its decoder in codegen/laz_layered.cpp; tests/support/laz_encoder.cpp cuts chunks with
-// them.
+// The tests' encoders of LAZ's layered items, version 3 (POINT14, RGB14, RGBNIR14, BYTE14), each
+// the inverse of its decoder in codegen/laz_layered.cpp; tests/support/laz_encoder.cpp cuts chunks
+// with them.
 
 #include <cstddef>
 #include <cstdint>
