@@ -319,8 +319,10 @@ std::size_t ProgressiveModel::fetchPriority(const Camera& camera, bool include_i
     const std::uint64_t level_key = std::uint64_t(level) << 59;
     if (levels_[at].table_unavailable) break;  // nothing of this level or finer will come
     if (!levels_[at].table_known) {
+      // A finer level's table is checked against this one, so it is refused until this one is
+      // in: asking for it now would fetch its bytes again and again while this one is on its way.
       priority_scratch_.push_back({level_key, recordTableItem(level)});
-      continue;
+      break;
     }
     const std::int64_t reach_x = frame.own_reach[at].x, reach_y = frame.own_reach[at].y;
     const int f = kDefaultFractionBits;
