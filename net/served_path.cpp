@@ -7,6 +7,8 @@
 namespace octopoint::net {
 namespace {
 
+constexpr std::string_view kFolderPage = "index.html";
+
 bool plainSegment(std::string_view segment) {
   if (segment.empty() || segment == "." || segment == ".." || segment.size() > 255) return false;
   for (char c : segment) {
@@ -34,9 +36,14 @@ bool plainPath(std::string_view path) {
 PathVerdict resolveServedPath(const std::filesystem::path& root, std::string_view target,
                               std::string_view path, std::filesystem::path* file) {
   const std::string_view raw = target.substr(0, target.find('?'));
-  if (!plainPath(raw) || raw != path) return PathVerdict::kRefused;
+  if (raw != path) return PathVerdict::kRefused;
+  // A folder's address ("/", "/web/") names its page, as on every web server; there is never a
+  // listing of a folder.
+  std::string named(raw);
+  if (named.ends_with('/')) named += kFolderPage;
+  if (!plainPath(named)) return PathVerdict::kRefused;
   std::error_code error;
-  const std::filesystem::path candidate = root / std::filesystem::path(std::string(path.substr(1)));
+  const std::filesystem::path candidate = root / std::filesystem::path(named.substr(1));
   if (!std::filesystem::exists(candidate, error)) return PathVerdict::kNotFound;
   // Follow every link, then insist on staying inside the folder: a link out is refused.
   const std::filesystem::path resolved = std::filesystem::canonical(candidate, error);

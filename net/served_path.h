@@ -4,7 +4,7 @@
 // "." or "..", no empty segment, nothing percent-encoded left (the raw request target must be as
 // plain as the decoded path, so no encoding of any of these can slip through), and the file found
 // must, once every symbolic link is followed, still lie inside the served folder and be a regular
-// file.
+// file. A path ending in '/' names that folder's index.html.
 
 #include <filesystem>
 #include <optional>

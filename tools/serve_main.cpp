@@ -29,7 +29,8 @@ Serves the files of DIR (e.g. chunked models written by octopoint-prepare --chun
 with Range requests, until interrupted (SIGINT or SIGTERM). The web page (build/wasm/web/,
 docs/web.md) is served too: .html, .js, .css, .wasm (application/wasm), .png, .json, .svg and .txt
 files with their content types, a page with a Content-Security-Policy that allows no inline
-script; anything else as application/octet-stream.
+script; anything else as application/octet-stream. A folder's address (/, /sub/) serves its
+index.html; folders are never listed.
 
   DIR                  the folder served; nothing outside it is (no "..", no links out)
   --port N             TCP port, 0..65535 (default 8080; 0: any free port)

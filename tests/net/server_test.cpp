@@ -127,7 +127,8 @@ TEST(ModelServer, RefusesEveryPathOutsideItsFolder) {
                                    "/model.oct%00.txt",
                                    "/sub\\..\\model.oct",
                                    "/sub",
-                                   "/sub/",
+                                   "//",
+                                   "/sub//",
                                    "/%2fetc/passwd",
                                    "/\xc0\xae\xc0\xae/etc/passwd",
                                    "/..",
@@ -138,6 +139,25 @@ TEST(ModelServer, RefusesEveryPathOutsideItsFolder) {
     EXPECT_EQ(exchange.response.find("root:"), std::string::npos) << target;
   }
   EXPECT_EQ(served.get("/etc/passwd").status(), 404);  // a path in the folder, where there is none
+}
+
+// A folder's address serves its page, as a user typing the server's address expects; a folder
+// without one is not found (never listed).
+TEST(ModelServer, AnswersAFolderWithItsPage) {
+  const Served served;
+  EXPECT_EQ(served.get("/").status(), 404);
+  EXPECT_EQ(served.get("/sub/").status(), 404);
+  served.folder.write("index.html", counting(100));
+  served.folder.write("sub/index.html", counting(30));
+  for (const std::string target : {"/", "/?model=model.oct", "/sub/"}) {
+    SCOPED_TRACE(target);
+    const Exchange page = served.get(target);
+    EXPECT_EQ(page.status(), 200);
+    EXPECT_NE(page.response.find("Content-Type: text/html; charset=utf-8\r\n"), std::string::npos);
+    EXPECT_NE(page.response.find("Content-Security-Policy: "), std::string::npos);
+  }
+  EXPECT_EQ(bodyOf(served.get("/sub/")).size(), 30u);
+  EXPECT_EQ(served.get("/sub").status(), 403);  // the folder itself is no file
 }
 
 TEST(ModelServer, AnswersBadAndUnsatisfiableRangesWith416) {
