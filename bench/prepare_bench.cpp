@@ -132,7 +132,8 @@ const std::string& landscapeLas(std::size_t points, bool laz = false, int format
   return path;
 }
 
-// The streamed preparer to a depth-12 model from the landscape as LAS or as LAZ (`laz`).
+// The streamed preparer to a depth-12 model from the landscape as LAS or as LAZ (`laz`; its
+// third argument: pass 1's decoded points kept for pass 2, or each chunk decoded in both passes).
 void prepareStreamedLandscape(benchmark::State& state, bool laz) {
   const auto points = static_cast<std::size_t>(state.range(0));
   const std::string& path = landscapeLas(points, laz);
@@ -141,6 +142,7 @@ void prepareStreamedLandscape(benchmark::State& state, bool laz) {
   options.depths = {12};
   StreamOptions stream;
   stream.threads = static_cast<unsigned>(state.range(1));
+  if (laz) stream.decode_once = state.range(2) != 0;
   for (auto _ : state) {
     const auto source = openPointSource(path);
     benchmark::DoNotOptimize(prepareFromSource(*source, path, options, stream).levels.size());
@@ -162,8 +164,8 @@ BENCHMARK(BM_PrepareStreamedLas)
 // 50,000): what decoding costs the whole preparer, against BM_PrepareStreamedLas.
 void BM_PrepareStreamedLaz(benchmark::State& state) { prepareStreamedLandscape(state, true); }
 BENCHMARK(BM_PrepareStreamedLaz)
-    ->ArgsProduct({{1'000'000, 4'000'000}, {1, 2}})
-    ->ArgNames({"points", "threads"})
+    ->ArgsProduct({{1'000'000, 4'000'000}, {1, 2}, {0, 1}})
+    ->ArgNames({"points", "threads", "decode_once"})
     ->Unit(benchmark::kMillisecond)
     ->MeasureProcessCPUTime()
     ->UseRealTime();

@@ -389,6 +389,7 @@ SourceInfo lasSourceInfo(const LasHeader& header) {
   info.colour_bits_detected = header.rgb_offset != 0;
   info.has_intensity = true;
   info.float_coordinates = false;
+  info.compressed = header.compressed;
   info.format = std::string(header.compressed ? "LAZ" : "LAS") + " 1." +
                 std::to_string(header.version_minor) + ", point format " +
                 std::to_string(header.point_format) + ", " + std::to_string(header.record_length) +

@@ -45,7 +45,10 @@ struct SourceInfo {
   bool float_coordinates = true;  // PCD, PLY and scans in memory; LAS coordinates are doubles
   bool organized = false;         // height > 1 (PCD/PLY)
   bool streamed = true;           // false when the whole scan was loaded through PCL first
-  std::string format;             // for the summary line, e.g. "LAS 1.4, point format 7"
+  // LAZ: a chunk decodes only by running its arithmetic code again, so the preparer keeps pass 1's
+  // decoded points for pass 2 (codegen/decoded_points.h) rather than decode every chunk twice.
+  bool compressed = false;
+  std::string format;  // for the summary line, e.g. "LAS 1.4, point format 7"
 };
 
 // One chunk of consecutive records, decoded. Positions are in scan units; a non-finite one marks a

@@ -13,6 +13,7 @@
 #include "cli/text.h"
 #include "codegen/bin_voxelizer.h"
 #include "codegen/cube_fit.h"
+#include "codegen/decoded_points.h"
 #include "codegen/file_io.h"
 #include "codegen/intensity_grey.h"
 #include "codegen/model_assembly.h"
@@ -142,6 +143,16 @@ class StreamedPreparer {
     bin_points_ = std::max<std::uint64_t>(half / kBytesPerBinPoint, kMinBinPoints);
     // A scan that fits the budget never writes a temporary file: it need not have a place for one.
     if (info_.points > std::min(threads_ * buffer_points_, bin_points_)) checkDirectory(temp_dir_);
+    // Room for the decoded copy and as much again for the bins' spills, else (also when no
+    // temporary file can be made: a scan that fits the budget needs none) decode twice.
+    if (info_.compressed && stream.decode_once && source_.pieceCount() > 0 &&
+        freeDiskBytes(temp_dir_) / 2 >= DecodedPoints::bytesFor(info_)) {
+      try {
+        decoded_ = std::make_unique<DecodedPoints>(temp_dir_, source_.pieceCount());
+      } catch (const PrepareError&) {
+        decoded_.reset();
+      }
+    }
     colouring_.depths = options.depths;
     colouring_.greyscale = options.greyscale;
   }
@@ -155,6 +166,8 @@ class StreamedPreparer {
     fit_ = fitCube(first_.bounds, path_);
     chooseColouring(summary);
     std::vector<BinContents> bins = secondPass();
+    if (decoded_) summary.decoded_kept_bytes = decoded_->bytesWritten();
+    decoded_.reset();  // its disk space, before the bins are voxelized
     clock.next();
     NodeResult root = voxelizeBins(bins);
     bins.clear();
@@ -195,8 +208,9 @@ class StreamedPreparer {
   }
 
   // Reads every record once, in chunks spread over the threads: visit(chunk, first record, worker).
+  // With a decoded copy, pass 1 fills it (before visit changes the points) and pass 2 reads it.
   template <typename Visit>
-  void readAllPoints(const char* label, Visit visit) {
+  void readAllPoints(const char* label, bool second_pass, Visit visit) {
     std::vector<PointChunk>& chunks = chunks_;  // kept for the next pass: already paged in
     chunks.resize(threads_);
     std::atomic<std::uint64_t> done{0};
@@ -205,7 +219,12 @@ class StreamedPreparer {
         threads_, source_.pieceCount(),
         [&](std::size_t piece_index, unsigned worker) {
           const PointRange piece = source_.piece(piece_index);
-          source_.read(piece.first, piece.count, chunks[worker]);
+          if (decoded_ && second_pass) {
+            decoded_->read(piece_index, chunks[worker]);
+          } else {
+            source_.read(piece.first, piece.count, chunks[worker]);
+            if (decoded_) decoded_->keep(piece_index, chunks[worker]);
+          }
           visit(chunks[worker], piece.first, worker);
           done += piece.count;
         },
@@ -215,7 +234,7 @@ class StreamedPreparer {
   void firstPass() {
     std::vector<FirstPass> workers(threads_);
     const bool count_intensity = info_.payload == PointPayload::kIntensity || info_.has_intensity;
-    readAllPoints("pass 1 of 3, bounds",
+    readAllPoints("pass 1 of 3, bounds", false,
                   [&](PointChunk& chunk, std::uint64_t first, unsigned worker) {
                     FirstPass& state = workers[worker];
                     for (std::size_t i = 0; i < chunk.xyz.size(); ++i) {
@@ -306,20 +325,21 @@ class StreamedPreparer {
     }
     const int depth = finest();
     const double cells = std::ldexp(1.0, depth);
-    readAllPoints("pass 2 of 3, binning", [&](PointChunk& chunk, std::uint64_t, unsigned worker) {
-      BinSpiller& spiller = *spillers_[worker];
-      for (std::size_t i = 0; i < chunk.xyz.size(); ++i) {
-        std::array<double, 3>& p = chunk.xyz[i];
-        if (!isFinite(p)) continue;
-        if (fine_intensity) intensities[worker].addFine(chunk.intensity[i]);
-        if (!filter_.keep(p)) continue;
-        const std::uint64_t key =
-            mortonKey(voxelIndexIn(p[0], fit_.origin[0], fit_.edge, cells),
-                      voxelIndexIn(p[1], fit_.origin[1], fit_.edge, cells),
-                      voxelIndexIn(p[2], fit_.origin[2], fit_.edge, cells), depth);
-        spiller.add(BinnedPoint::make(key, payloadOf(chunk, i)));
-      }
-    });
+    readAllPoints("pass 2 of 3, binning", true,
+                  [&](PointChunk& chunk, std::uint64_t, unsigned worker) {
+                    BinSpiller& spiller = *spillers_[worker];
+                    for (std::size_t i = 0; i < chunk.xyz.size(); ++i) {
+                      std::array<double, 3>& p = chunk.xyz[i];
+                      if (!isFinite(p)) continue;
+                      if (fine_intensity) intensities[worker].addFine(chunk.intensity[i]);
+                      if (!filter_.keep(p)) continue;
+                      const std::uint64_t key =
+                          mortonKey(voxelIndexIn(p[0], fit_.origin[0], fit_.edge, cells),
+                                    voxelIndexIn(p[1], fit_.origin[1], fit_.edge, cells),
+                                    voxelIndexIn(p[2], fit_.origin[2], fit_.edge, cells), depth);
+                      spiller.add(BinnedPoint::make(key, payloadOf(chunk, i)));
+                    }
+                  });
     if (fine_intensity) {
       for (const IntensityPercentiles& partial : intensities) first_.intensity.merge(partial);
       colouring_.intensity = first_.intensity.range();
@@ -438,6 +458,7 @@ class StreamedPreparer {
   std::vector<std::unique_ptr<BinSpiller>> spillers_;
   std::vector<ColourStore> colour_stores_;  // per thread: the voxels' colours
   std::vector<PointChunk> chunks_;          // per thread: the records being read
+  std::unique_ptr<DecodedPoints> decoded_;  // a compressed source's points, kept by pass 1
   std::atomic<std::uint64_t> spilled_bytes_{0};
 };
 

@@ -4,7 +4,8 @@
 //
 //   pass 1  read every point: count, drop the non-finite, crop, turn the axes, bound them (and
 //           count intensities, and find whether LAS colours are 8- or 16-bit)
-//   pass 2  read every point again: its Morton key at the finest depth, binned by the key's top
+//   pass 2  read every point again (a compressed file's from pass 1's decoded copy on disk,
+//           codegen/decoded_points.h): its Morton key at the finest depth, binned by the key's top
 //           digits into buffers that go to a temporary file as they fill (--memory)
 //   bins    each bin, a node of the octree, sorted and voxelized on its own (in parallel); a bin
 //           too large for a thread's share of the budget is binned again, one level deeper
@@ -35,6 +36,9 @@ struct StreamOptions {
   std::uint64_t memory_bytes = kDefaultMemoryBytes;
   unsigned threads = 0;            // 0: every core
   std::filesystem::path temp_dir;  // empty: the system's temporary directory (TMPDIR, else /tmp)
+  // A compressed source's points decoded once, in pass 1, and read back from a temporary file in
+  // pass 2 (when the disk has room for them: else decoded twice). False: decoded in each pass.
+  bool decode_once = true;
 };
 
 // What the run saw, for octopoint-prepare's summary.
@@ -46,6 +50,7 @@ struct PrepareSummary {
   ScanShading shading = ScanShading::kNone;
   std::string colour_note;  // e.g. "16-bit LAS colour"; empty if nothing to say
   std::uint64_t spilled_bytes = 0;
+  std::uint64_t decoded_kept_bytes = 0;  // pass 1's decoded points kept on disk for pass 2
   unsigned threads = 0;
   double seconds = 0;
   // Wall time of: pass 1 (bounds), pass 2 (binning), voxelizing the bins, palette and leaves.

@@ -110,7 +110,9 @@ whole through PCL. The output is the same byte for byte whatever --memory and --
                         refuses more (an address-space or process limit), with the same output;
                         --normals' estimation (PCL, OpenMP) takes at most one per core
   --temp-dir DIR        where the temporary files go (default: $TMPDIR, else /tmp); they are
-                        deleted as soon as they are made, so nothing is left behind
+                        deleted as soon as they are made, so nothing is left behind. A LAZ
+                        scan's points are decoded once and kept there for the second pass
+                        (24 to 34 bytes a point) when the disk has room for twice that
   --progress            show progress on stderr (phase, points done, points/s, time left) even
                         when stderr is not a terminal; on a terminal it shows by itself for
                         steps longer than a second
@@ -331,6 +333,13 @@ void checkOutputs(const Arguments& args, const octopoint::prepare::PrepareOption
   for (const std::string& name : names) octopoint::cli::checkOutputFile(directory / name);
 }
 
+// ", decoded once (N MB kept on disk for pass 2)" when a compressed scan's points were kept.
+std::string decodedOnce(const octopoint::prepare::PrepareSummary& summary) {
+  if (summary.decoded_kept_bytes == 0) return "";
+  return ", decoded once (" + std::to_string(summary.decoded_kept_bytes >> 20) +
+         " MB kept on disk for pass 2)";
+}
+
 // One line on how a streamed scan was read.
 std::string describeStream(const octopoint::prepare::SourceInfo& info,
                            const octopoint::prepare::PrepareSummary& summary,
@@ -341,12 +350,12 @@ std::string describeStream(const octopoint::prepare::SourceInfo& info,
       line, sizeof line,
       "  streamed %s%s%s: %llu points on %u threads in %.2f s (%.2f M points/s; bounds %.2f s, "
       "binning "
-      "%.2f s, voxelizing %.2f s, palette %.2f s), budget %llu MB, %llu MB spilled to disk\n",
+      "%.2f s, voxelizing %.2f s, palette %.2f s), budget %llu MB, %llu MB spilled to disk%s\n",
       info.format.c_str(), summary.colour_note.empty() ? "" : ", ", summary.colour_note.c_str(),
       static_cast<unsigned long long>(summary.points_in_file), summary.threads, summary.seconds,
       static_cast<double>(summary.points_in_file) / summary.seconds / 1e6, phase[0], phase[1],
       phase[2], phase[3], static_cast<unsigned long long>(stream.memory_bytes >> 20),
-      static_cast<unsigned long long>(summary.spilled_bytes >> 20));
+      static_cast<unsigned long long>(summary.spilled_bytes >> 20), decodedOnce(summary).c_str());
   return line;
 }
 

@@ -205,6 +205,43 @@ TEST_F(LazReaderTest, PreparesToTheSameModelAsItsLasTwinOnAnyThreads) {
             "LAZ 1.2, point format 3, 34-byte records, point-wise, chunks of 3000");
 }
 
+// Pass 1 keeps the decoded points on disk and pass 2 reads them back (codegen/decoded_points.h):
+// the model is the one decoding twice gives, with a crop and turned axes (which pass 1 applies to
+// its points in place) too; a LAS file is read twice, as it costs no decoding.
+TEST_F(LazReaderTest, DecodedOnceItPreparesTheModelDecodingTwiceGives) {
+  LasLayout layout;
+  layout.format = 3;  // colour and intensity: 34 bytes a point kept
+  layout.laz_chunk_points = 2500;
+  const auto [las, laz] = twins("once", layout, 20000);
+  PrepareOptions options;
+  options.name = "once";
+  options.depths = {5, 8};
+  options.axes = ScanAxes::kYUp;
+  const LasLayout placed;  // the west half of the landscape, where the writer places it
+  options.crop = CropBox{{placed.offset[0], -1e7, -1e7},
+                         {placed.offset[0] + testing::kLandscapeSize / 2, 1e8, 1e7}};
+  const auto prepared = [&](const fs::path& path, bool decode_once, PrepareSummary* summary,
+                            const fs::path& temp_dir = {}) {
+    StreamOptions stream;
+    stream.memory_bytes = temp_dir.empty() ? 1 << 20 : 64 << 20;  // the latter needs no spill
+    stream.threads = 2;
+    stream.decode_once = decode_once;
+    stream.temp_dir = temp_dir;
+    return serializeModel(
+        prepareFromSource(*openPointSource(path), path.string(), options, stream, summary));
+  };
+  PrepareSummary twice, once, plain, nowhere;
+  const std::vector<std::uint8_t> expected = prepared(laz, false, &twice);
+  EXPECT_EQ(prepared(laz, true, &once), expected);
+  EXPECT_EQ(prepared(las, true, &plain), expected);
+  // No temporary directory, and points that fit the budget: decoded twice, as before.
+  EXPECT_EQ(prepared(laz, true, &nowhere, dir_ / "missing"), expected);
+  EXPECT_EQ(twice.decoded_kept_bytes, 0u);
+  EXPECT_EQ(once.decoded_kept_bytes, 20000u * 34);
+  EXPECT_EQ(plain.decoded_kept_bytes, 0u);
+  EXPECT_EQ(nowhere.decoded_kept_bytes, 0u);
+}
+
 TEST_F(LazReaderTest, LayeredPreparesToTheSameModelAsItsLasTwinOnAnyThreads) {
   LasLayout layout;
   layout.format = 8;
