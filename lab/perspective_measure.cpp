@@ -66,7 +66,8 @@ class ExactVoxels {
                          static_cast<double>(centre.y - camera_.eye.y),
                          static_cast<double>(centre.z - camera_.eye.z)};
     double c[3];
-    for (int row = 0; row < 3; ++row) c[row] = m_[row][0] * d[0] + m_[row][1] * d[1] + m_[row][2] * d[2];
+    for (int row = 0; row < 3; ++row)
+      c[row] = m_[row][0] * d[0] + m_[row][1] * d[1] + m_[row][2] * d[2];
     ++out.leaves;
     if (c[2] > 0) {
       const Projected exact = exactProjection(camera_, c[0], c[1], c[2]);
@@ -203,8 +204,8 @@ void measureLeaves(const ModelView& model, const PerspectiveView& view,
     }
     std::vector<DrawnLeaf> drawn;
     auto collect = [&](const PerspectiveLeaf& leaf) {
-      drawn.push_back({leaf.index, static_cast<double>(leaf.x) * pixel,
-                       static_cast<double>(leaf.y) * pixel});
+      drawn.push_back(
+          {leaf.index, static_cast<double>(leaf.x) * pixel, static_cast<double>(leaf.y) * pixel});
     };
     PerspectiveWalk<decltype(collect)> walk(*layer.level, view, *layer.tables, collect, nullptr,
                                             parts);

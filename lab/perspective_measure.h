@@ -23,9 +23,9 @@ struct PerspectiveMeasurement {
   std::uint64_t silhouette_empty = 0;  // of those, left empty by the frame
   std::uint64_t near_voxels = 0;
   double emptyShare() const {
-    return silhouette_pixels == 0 ? 0
-                                  : static_cast<double>(silhouette_empty) /
-                                        static_cast<double>(silhouette_pixels);
+    return silhouette_pixels == 0
+               ? 0
+               : static_cast<double>(silhouette_empty) / static_cast<double>(silhouette_pixels);
   }
   // The frame: its covered pixels and the points handed to the plot with and without occlusion
   // culling (the same frame, bit for bit).
@@ -48,7 +48,8 @@ struct PerspectiveMeasurement {
 // timed frames of each kind (0: no timing). `frame_rgb` (if not null) receives the frame drawn,
 // RGB888, and `silhouette` (if not null) the silhouette, one byte a pixel (1: in it).
 PerspectiveMeasurement measurePerspective(const ModelView& model, const PerspectiveView& view,
-                                          int rounds, std::vector<std::uint8_t>* frame_rgb = nullptr,
+                                          int rounds,
+                                          std::vector<std::uint8_t>* frame_rgb = nullptr,
                                           std::vector<std::uint8_t>* silhouette = nullptr);
 
 }  // namespace octopoint::lab

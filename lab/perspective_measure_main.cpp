@@ -104,7 +104,8 @@ Options parseOptions(int argc, char** argv) {
 }
 
 void writePictures(const std::string& prefix, int width, int height,
-                   const std::vector<std::uint8_t>& rgb, const std::vector<std::uint8_t>& silhouette,
+                   const std::vector<std::uint8_t>& rgb,
+                   const std::vector<std::uint8_t>& silhouette,
                    const std::vector<std::uint8_t>& empty) {
   cv::Mat frame(height, width, CV_8UC3), holes(height, width, CV_8UC3);
   for (int y = 0; y < height; ++y) {
@@ -136,37 +137,38 @@ int run(int argc, char** argv) {
       "perspective_ms,orthographic_ms,time_ratio,orthographic_depth,orthographic_leaves,"
       "per_point_ratio,depths\n");
   for (const cli::FrameSize& size : options.sizes) {
-    const PerspectiveView view = scanEyeView(*cube, eye, options.look, options.fov, size.width,
-                                             size.height, "--eye");
+    const PerspectiveView view =
+        scanEyeView(*cube, eye, options.look, options.fov, size.width, size.height, "--eye");
     std::vector<std::uint8_t> rgb, silhouette;
     const lab::PerspectiveMeasurement m =
         lab::measurePerspective(model, view, options.rounds, &rgb, &silhouette);
     if (m.depths.empty()) throw cli::Error(loaded->label + ": no depth this build draws");
     const auto per_pixel = [&](std::uint64_t points) {
-      return m.covered_pixels == 0 ? 0.0
-                                   : static_cast<double>(points) /
-                                         static_cast<double>(m.covered_pixels);
+      return m.covered_pixels == 0
+                 ? 0.0
+                 : static_cast<double>(points) / static_cast<double>(m.covered_pixels);
     };
     const double time_ratio = m.orthographic_ms > 0 ? m.perspective_ms / m.orthographic_ms : 0;
-    const double per_point_ratio =
-        m.points_culled == 0 ? 0
-                             : time_ratio * static_cast<double>(m.orthographic_leaves) /
-                                   static_cast<double>(m.points_culled);
+    const double per_point_ratio = m.points_culled == 0
+                                       ? 0
+                                       : time_ratio * static_cast<double>(m.orthographic_leaves) /
+                                             static_cast<double>(m.points_culled);
     std::string depths;
     for (const int depth : m.depths) {
       if (!depths.empty()) depths.push_back(' ');
       depths.append(std::to_string(depth));
     }
-    std::printf("%d,%d,%llu,%.4f,%llu,%.5f,%llu,%llu,%llu,%llu,%.3f,%.3f,%.3f,%.3f,%.2f,%d,%llu,%.2f,%s\n",
-                size.width, size.height, static_cast<unsigned long long>(m.leaves),
-                m.max_position_px, static_cast<unsigned long long>(m.silhouette_pixels),
-                m.emptyShare(), static_cast<unsigned long long>(m.near_voxels),
-                static_cast<unsigned long long>(m.covered_pixels),
-                static_cast<unsigned long long>(m.points_unculled),
-                static_cast<unsigned long long>(m.points_culled), per_pixel(m.points_unculled),
-                per_pixel(m.points_culled), m.perspective_ms, m.orthographic_ms, time_ratio,
-                m.orthographic_depth, static_cast<unsigned long long>(m.orthographic_leaves), per_point_ratio,
-                depths.c_str());
+    std::printf(
+        "%d,%d,%llu,%.4f,%llu,%.5f,%llu,%llu,%llu,%llu,%.3f,%.3f,%.3f,%.3f,%.2f,%d,%llu,%.2f,%s\n",
+        size.width, size.height, static_cast<unsigned long long>(m.leaves), m.max_position_px,
+        static_cast<unsigned long long>(m.silhouette_pixels), m.emptyShare(),
+        static_cast<unsigned long long>(m.near_voxels),
+        static_cast<unsigned long long>(m.covered_pixels),
+        static_cast<unsigned long long>(m.points_unculled),
+        static_cast<unsigned long long>(m.points_culled), per_pixel(m.points_unculled),
+        per_pixel(m.points_culled), m.perspective_ms, m.orthographic_ms, time_ratio,
+        m.orthographic_depth, static_cast<unsigned long long>(m.orthographic_leaves),
+        per_point_ratio, depths.c_str());
     std::fflush(stdout);
     if (!options.pictures.empty()) {
       std::vector<std::uint8_t> empty(silhouette.size());

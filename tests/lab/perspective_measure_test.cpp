@@ -31,8 +31,8 @@ TEST(PerspectiveMeasure, TableEdgeOfTheDefaultModel) {
   const std::optional<ModelView> model = ModelView::fromEmbedded(*models::defaultModel(), &issue);
   ASSERT_TRUE(model.has_value());
   std::vector<std::uint8_t> rgb, silhouette;
-  const PerspectiveMeasurement m = measurePerspective(*model, tableEdgeView(160, 120), 1, &rgb,
-                                                      &silhouette);
+  const PerspectiveMeasurement m =
+      measurePerspective(*model, tableEdgeView(160, 120), 1, &rgb, &silhouette);
   EXPECT_EQ(m.depths, (std::vector<int>{6, 7, 8}));
   // The measured leaves are the ones the renderer hands to its plot without culling.
   EXPECT_GT(m.leaves, 10000u);
