@@ -7,11 +7,15 @@
 // frame). The time is the draw alone (manual time; the frame is cleared outside it). Counters: the
 // points handed to the plot (the level's leaves for the orthographic and single-depth frames), ns
 // per point, and for the table's edge the subtrees culled and the points per covered pixel.
+// Against the perspective PCL/Eigen peer (bench/pcl_perspective_peer.h), at the table's edge: the
+// finest depth's leaves (62,502) drawn by ours at that depth and by distance, and by the peer in
+// float and in double; ns_per_leaf divides every frame by those same leaves.
 #include <benchmark/benchmark.h>
 
 #include <chrono>
 #include <string>
 
+#include "bench/pcl_perspective_peer.h"
 #include "bench/register_benchmarks.h"
 #include "octopoint/models.h"
 #include "octopoint/render.h"
@@ -87,8 +91,8 @@ void perspective(benchmark::State& state, int width, int height, int fov_degrees
 }
 
 // The eye at the table's edge, looking down at the objects (docs/perspective.md, "Occlusion
-// culling"): tile_shift 0 draws without culling.
-void tableEdge(benchmark::State& state, int width, int height, int tile_shift) {
+// culling").
+PerspectiveCamera tableEdgeCamera(int width, int height) {
   const std::int64_t u = kPerspectiveUnit;
   PerspectiveCamera camera;
   camera.eye = {0, 28 * u / 100, -46 * u / 100};
@@ -96,15 +100,20 @@ void tableEdge(benchmark::State& state, int width, int height, int tile_shift) {
   camera.fov = Angle::fromDegrees(90);
   camera.width = width;
   camera.height = height;
+  return camera;
+}
+
+// The table's edge drawn by PerspectiveRenderer with `options`; `per_leaf_of` the number of leaves
+// ns_per_leaf divides by (0: the points the frame hands to the plot).
+void tableEdgeDrawn(benchmark::State& state, int width, int height,
+                    const PerspectiveRenderer::Options& options, double per_leaf_of = 0) {
   PerspectiveView view;
-  if (buildPerspectiveView(camera, kDefaultFractionBits, &view) != PerspectiveError::kNone) {
+  if (buildPerspectiveView(tableEdgeCamera(width, height), kDefaultFractionBits, &view) !=
+      PerspectiveError::kNone) {
     state.SkipWithError("camera refused");
     return;
   }
   PerspectiveRenderer renderer(model());
-  PerspectiveRenderer::Options options;
-  options.cull = tile_shift != 0;
-  if (tile_shift != 0) options.tile_shift = tile_shift;
   // One frame outside the timing: the points it hands over, its coverage, and the tiles made.
   Framebuffer frame(width, height);
   frame.clear();
@@ -120,9 +129,50 @@ void tableEdge(benchmark::State& state, int width, int height, int tile_shift) {
   const auto points = static_cast<double>(stats.leaves);
   timeFrames(
       state, width, height, [&](Framebuffer& f) { return renderer.draw(view, options, f); },
-      points);
+      per_leaf_of > 0 ? per_leaf_of : points);
+  state.counters["points"] = points;
   state.counters["hidden_subtrees"] = static_cast<double>(stats.hidden_subtrees);
   state.counters["points_per_covered_pixel"] = points / static_cast<double>(covered);
+}
+
+// tile_shift 0 draws without culling.
+void tableEdge(benchmark::State& state, int width, int height, int tile_shift) {
+  PerspectiveRenderer::Options options;
+  options.cull = tile_shift != 0;
+  if (tile_shift != 0) options.tile_shift = tile_shift;
+  tableEdgeDrawn(state, width, height, options);
+}
+
+// Ours against the peer on the finest depth's leaves: `depth` 0 by distance, else that depth alone
+// (culled, as octopoint-render draws).
+void tableEdgeOurs(benchmark::State& state, int width, int height, int depth) {
+  PerspectiveRenderer::Options options;
+  options.depth = depth;
+  tableEdgeDrawn(state, width, height, options,
+                 static_cast<double>(model().finestLevel().leaves.size()));
+}
+
+template <typename Scalar>
+void tableEdgePeer(benchmark::State& state, int width, int height) {
+  const PerspectiveCamera camera = tableEdgeCamera(width, height);
+  bench::PclPerspectivePeer<Scalar> peer(model(), model().finestLevel(), width, height);
+  peer.render(camera);  // the first frame allocates nothing either; its coverage for the counter
+  const auto covered = static_cast<double>(peer.coveredPixels());
+  double seconds_in_all = 0;
+  for (auto _ : state) {
+    const auto start = std::chrono::steady_clock::now();
+    peer.render(camera);
+    benchmark::ClobberMemory();
+    const double seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    state.SetIterationTime(seconds);
+    seconds_in_all += seconds;
+  }
+  const auto leaves = static_cast<double>(peer.points());
+  state.counters["leaves"] = leaves;
+  state.counters["ns_per_leaf"] =
+      seconds_in_all * 1e9 / static_cast<double>(state.iterations()) / leaves;
+  state.counters["covered_pixels"] = covered;
 }
 
 }  // namespace
@@ -149,6 +199,22 @@ void registerAll() {
           ->UseManualTime()
           ->Unit(benchmark::kMicrosecond);
     }
+    const std::string peer = "perspective/table_edge/" + size + "/peer/";
+    const int finest = model().finestLevel().depth;
+    for (const auto& [name, depth] :
+         {std::pair{"ours_finest", finest}, std::pair{"ours_by_distance", 0}}) {
+      benchmark::RegisterBenchmark((peer + name).c_str(), tableEdgeOurs, width, height, depth)
+          ->UseManualTime()
+          ->Unit(benchmark::kMicrosecond);
+    }
+    benchmark::RegisterBenchmark((peer + "pcl_eigen_float").c_str(), tableEdgePeer<float>, width,
+                                 height)
+        ->UseManualTime()
+        ->Unit(benchmark::kMicrosecond);
+    benchmark::RegisterBenchmark((peer + "pcl_eigen_double").c_str(), tableEdgePeer<double>, width,
+                                 height)
+        ->UseManualTime()
+        ->Unit(benchmark::kMicrosecond);
   }
 }
 
