@@ -186,7 +186,10 @@
                problem !== '');
       }
       if (walker.moving()) requestDraw();  // a held key walks on: the next frame
-    } else if (!document.body.classList.contains('bare')) {
+    } else {
+      delete document.body.dataset.walk;
+    }
+    if (walker === null && !document.body.classList.contains('bare')) {
       report((problem ? problem + '. ' : '') + streamed + 'yaw ' +
              view.yaw.toFixed(1) + ', pitch ' +
              view.pitch.toFixed(1) + ', zoom ' + view.zoom.toFixed(3) + ', ' + view.style +
@@ -261,6 +264,7 @@
       return;
     }
     if (stream !== null) stream.stop();
+    if (walking() !== null) walk.leave();  // walk mode draws the embedded model only (yet)
     modelField.value = name;
     streamProblem = '';
     setStyle('colour');  // a chunked model stores no normals: colour only
