@@ -83,13 +83,10 @@ ModelPoint movedEye(const ModelPoint& eye, const Walker& walker, int key, std::i
 bool validKey(std::int32_t key) { return key >= 0 && key < web::kWalkKeys; }
 
 // The walk's state as the page reads it (octopoint_web_walk_state).
-std::array<std::uint32_t, 12>& stateWords() {
-  static std::array<std::uint32_t, 12> words{};
-  return words;
-}
+using StateWords = std::array<std::uint32_t, 12>;
 
-void publish(const Walker& shown) {
-  std::array<std::uint32_t, 12>& words = stateWords();
+StateWords wordsOf(const Walker& shown) {
+  StateWords words{};
   const std::int64_t coordinates[3] = {shown.eye.x, shown.eye.y, shown.eye.z};
   for (std::size_t axis = 0; axis < 3; ++axis) {
     const auto bits = static_cast<std::uint64_t>(coordinates[axis]);
@@ -102,7 +99,15 @@ void publish(const Walker& shown) {
   words[9] = static_cast<std::uint32_t>(shown.fov.turns16());
   words[10] = static_cast<std::uint32_t>(shown.speed);
   words[11] = static_cast<std::uint32_t>(shown.speed >> 32);
+  return words;
 }
+
+StateWords& stateWords() {  // the walker's from the start: the speed is right before any call
+  static StateWords words = wordsOf(walker());
+  return words;
+}
+
+void publish(const Walker& shown) { stateWords() = wordsOf(shown); }
 
 // The embedded model's perspective renderer: its indexes built once, at the first walk frame.
 std::optional<PerspectiveRenderer>& perspectiveRenderer() {
