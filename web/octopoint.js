@@ -3,7 +3,9 @@
 // to WebAssembly (web/octopoint_web.cpp), or a chunked model from the same server as it arrives
 // (model=NAME.oct or the model field; web/octopoint_stream.js fetches it), follows the window's
 // size when the address gives none, and shows the frame time, and for a chunked model the bytes
-// received and the chunks pending, in an overlay. Input is web/octopoint_input.js's.
+// received and the chunks pending, in an overlay. Tab switches to walk mode and back
+// (web/octopoint_walk.js; eye, look and fov in the address: octopoint-render's --eye, --look,
+// --fov). Input is web/octopoint_input.js's.
 'use strict';
 
 (function () {
@@ -94,6 +96,7 @@
   let image = null;  // the last frame's pixels, reused while the size stays
   let stream = null;  // the chunked model's fetching (web/octopoint_stream.js), once one is open
   let streamProblem = '';  // what its server did wrong, kept in the overlay
+  let walk = null;  // walk mode (web/octopoint_walk.js), where the module has it
 
   function kilobytes(bytes) {
     return (bytes / 1000).toFixed(1) + ' kB';
@@ -118,13 +121,31 @@
     return words + (streamProblem ? ' (' + streamProblem + ')' : '') + '. ';
   }
 
+  function walking() {
+    return walk !== null && walk.active ? walk : null;
+  }
+
+  // The overlay's words about the eye, and for the checks (scripts/test-web) the options that make
+  // octopoint-render draw the same frame (a fine frame: nothing held).
+  function walkWords(size) {
+    const now = walk.state();
+    const options = '--size ' + size.width + 'x' + size.height + ' --eye ' + now.eye +
+                    ' --look ' + now.look + ' --fov ' + now.fovText;
+    document.body.dataset.walk = walk.moving() ? '' : options;
+    return 'walk: ' + options + ', speed ' + now.speed.toPrecision(3) + ' units/s: ';
+  }
+
   function draw() {
     pending = false;
     const size = frameSize();
     const started = performance.now();
-    const failed = api.draw(roundAway(view.yaw * 1000), roundAway(view.pitch * 1000),
-                            roundAway(view.roll * 1000), Math.round(view.zoom * 65536),
-                            size.width, size.height);
+    const walker = walking();
+    const failed = walker !== null ? walker.draw(size.width, size.height)
+                                   : api.draw(roundAway(view.yaw * 1000),
+                                              roundAway(view.pitch * 1000),
+                                              roundAway(view.roll * 1000),
+                                              Math.round(view.zoom * 65536), size.width,
+                                              size.height);
     if (failed !== 0) {
       const why = api.error();
       if (stream !== null) {
@@ -158,7 +179,17 @@
       if (!('firstPicture' in document.body.dataset))
         document.body.dataset.firstPicture = performance.now().toFixed(1);
     }
-    if (!document.body.classList.contains('bare')) {
+    if (walker !== null) {
+      const words = walkWords(size);
+      if (!document.body.classList.contains('bare')) {
+        report((problem ? problem + '. ' : '') + words + elapsed.toFixed(1) + ' ms a frame',
+               problem !== '');
+      }
+      if (walker.moving()) requestDraw();  // a held key walks on: the next frame
+    } else {
+      delete document.body.dataset.walk;
+    }
+    if (walker === null && !document.body.classList.contains('bare')) {
       report((problem ? problem + '. ' : '') + streamed + 'yaw ' +
              view.yaw.toFixed(1) + ', pitch ' +
              view.pitch.toFixed(1) + ', zoom ' + view.zoom.toFixed(3) + ', ' + view.style +
@@ -186,6 +217,15 @@
     if (view.style === 'colour') params.delete('style'); else params.set('style', view.style);
     if (view.budget === 0) params.delete('budget'); else params.set('budget', String(view.budget));
     if (stream === null) params.delete('model'); else params.set('model', modelField.value);
+    const walker = walking();
+    if (walker === null) {
+      ['eye', 'look', 'fov'].forEach((name) => params.delete(name));
+    } else {
+      const now = walker.state();
+      params.set('eye', now.eye);
+      params.set('look', now.look);
+      params.set('fov', now.fovText);
+    }
     window.history.replaceState(null, '', '?' + params.toString());
   }
 
@@ -224,6 +264,7 @@
       return;
     }
     if (stream !== null) stream.stop();
+    if (walking() !== null) walk.leave();  // walk mode draws the embedded model only (yet)
     modelField.value = name;
     streamProblem = '';
     setStyle('colour');  // a chunked model stores no normals: colour only
@@ -239,7 +280,31 @@
     requestDraw();
   }
 
+  // Tab: walk mode (the eye where octopoint-render --perspective puts it for the orbit view) and
+  // back to the orbit view.
+  function toggleWalk() {
+    if (walk === null || stream !== null) {
+      report('walk mode: ' + (walk === null ? 'this page has no model with its place in the scan'
+                                            : 'a streamed model cannot be walked through yet'),
+             true);
+      return;
+    }
+    if (walk.active) {
+      walk.leave();
+    } else {
+      const size = frameSize();
+      if (!walk.enter(view, size.width, size.height)) report('walk mode: ' + api.error(), true);
+    }
+    delete document.body.dataset.walk;
+    rememberView();
+    requestDraw();
+  }
+
   function onKey(key) {
+    if (key === 'Tab') {
+      toggleWalk();
+      return true;
+    }
     if (key === 'b') {
       setBudget(kBudgets[(kBudgets.indexOf(view.budget) + 1) % kBudgets.length]);
       rememberView();
@@ -272,7 +337,7 @@
     event.preventDefault();
     if (api !== null && modelField.value !== '') openModel(modelField.value);
   });
-  window.octopointInput(canvas, view, requestDraw, rememberView, onKey);
+  window.octopointInput(canvas, view, requestDraw, rememberView, onKey, walking);
   // A new window size or device pixel ratio (a browser zoom, a move to another screen) fires it.
   if (!fixed) window.addEventListener('resize', requestDraw);
 
@@ -292,7 +357,16 @@
     }
     if (!setStyle(view.style)) setStyle('colour');
     setBudget(view.budget);
-    if (params.has('model') && params.get('model') !== '') openModel(params.get('model'));
+    walk = window.octopointWalk(Module);
+    if (params.has('model') && params.get('model') !== '') {
+      openModel(params.get('model'));
+    } else if (params.has('eye')) {  // the address's eye: the page starts in walk mode
+      const wrong = walk === null ? 'eye: this page has no model with its place in the scan'
+                                  : walk.place(params.get('eye'), params.get('look'),
+                                               params.get('fov'));
+      if (wrong === '') walk.active = true;
+      else report(problem = wrong + ': the orbit view', true);
+    }
     draw();
   };
 })();

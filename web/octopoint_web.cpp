@@ -29,10 +29,6 @@ using namespace octopoint;
 using web::fail;
 using web::succeed;
 
-// The most pixels octopoint-render writes in a frame (it allows sides up to 8192), and so the
-// page's.
-constexpr std::int64_t kMaxPixels = std::int64_t{4096} * 4096;
-
 struct WebRenderer {
   ModelView model;
   FrameStyler styler;
@@ -103,14 +99,13 @@ const char* octopoint_web_error(void) { return web::errorText(); }
 
 namespace octopoint::web {
 
+const ModelView* embeddedModel() { return renderer() ? &renderer()->model : nullptr; }
+
 int drawWith(Variant variant, std::int32_t yaw_millidegrees, std::int32_t pitch_millidegrees,
              std::int32_t roll_millidegrees, std::int32_t zoom_q16, std::int32_t width,
              std::int32_t height) {
   if (!created()) return fail("octopoint_web_create was not called");
-  if (width < 1 || height < 1 || width > kMaxViewportSide || height > kMaxViewportSide ||
-      std::int64_t{width} * height > kMaxPixels) {
-    return fail("the size must be 1..8192 a side and 16777216 pixels at most");
-  }
+  if (!sizeAllowed(width, height)) return fail(kSizeRule);
   Camera camera;
   camera.yaw = Angle::fromMilliDegrees(yaw_millidegrees);
   camera.pitch = Angle::fromMilliDegrees(pitch_millidegrees);
@@ -129,7 +124,7 @@ int drawWith(Variant variant, std::int32_t yaw_millidegrees, std::int32_t pitch_
     return fail(describe(error));
   }
   Canvas& out = canvas();
-  Framebuffer& frame = out.sized(camera);
+  Framebuffer& frame = out.sized(camera.width, camera.height);
   frame.clear(web.styler.payload());
   if (!renderLevel(variant, *level, setup, frame)) return fail("the draw was refused");
   web.styler.beginFrame(setup);

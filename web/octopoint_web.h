@@ -64,9 +64,55 @@ int octopoint_web_set_point_budget(std::int32_t points);
 // requests in flight, points the last draw drew. Null when no model is open. Valid until the next
 // call.
 const std::uint32_t* octopoint_web_stream_status(void);
+
+// Walk mode (docs/web.md, "Walk mode"; web/octopoint_web_walk.cpp): the eye stands in the embedded
+// model, as octopoint-view's walk mode and octopoint-render --eye --look --fov place it. Not in the
+// page without a model (build/wasm/web-nomodel/ exports none of these). The eye is in the camera's
+// Q.24 cube edges about the cube's centre (renderer/perspective.h), each coordinate given as its
+// low and high 32 bits; angles as the other calls take them; the page converts from and to the
+// scan's units with the cube's placement.
+//
+// Where the embedded model's cube lies in the scan (octopoint/model.h, CubePlacement): nine words,
+// the binary64 bits of the lowest corner's x, y, z and of the edge (low, high word each), then 1
+// when the model is the scan turned y-up. Null when there is no embedded model or it records none.
+const std::uint32_t* octopoint_web_walk_cube(void);
+// Puts the eye at that point looking yaw, pitch, roll, with that vertical field of view (10..120
+// degrees, in thousandths); refused when the eye is more than 128 cube edges from the centre.
+int octopoint_web_walk_place(std::int32_t x_low, std::int32_t x_high, std::int32_t y_low,
+                             std::int32_t y_high, std::int32_t z_low, std::int32_t z_high,
+                             std::int32_t yaw_millidegrees, std::int32_t pitch_millidegrees,
+                             std::int32_t roll_millidegrees, std::int32_t fov_millidegrees);
+// Puts the eye where octopoint-render --perspective puts it for this orbit view (entering walk mode
+// from the orbit view, as octopoint-view's Tab); refused, keeping the eye, when it is too far.
+int octopoint_web_walk_enter(std::int32_t yaw_millidegrees, std::int32_t pitch_millidegrees,
+                             std::int32_t roll_millidegrees, std::int32_t zoom_q16,
+                             std::int32_t width, std::int32_t height);
+// Moves the eye as key `key` (0 forward, 1 back, 2 left, 3 right, 4 up, 5 down) held for
+// `held_us` microseconds moves it: the walk speed times the time, along the look's yaw (level),
+// at right angles to it, or along the scan's up.
+int octopoint_web_walk_move(std::int32_t key, std::int32_t held_us);
+// Turns the eye (a drag), in 1/65536 turns: yaw to the right, pitch up (kept within +-90 degrees).
+int octopoint_web_walk_turn(std::int32_t yaw_turns16, std::int32_t pitch_turns16);
+// The walk speed one step of 5/4 faster (`faster` != 0) or slower: 1/1024 to 64 cube edges a
+// second, a quarter at first.
+int octopoint_web_walk_faster(std::int32_t faster);
+// Draws the eye's frame as octopoint-render --eye draws it (detail by distance, culled, colour on
+// its background), the eye first moved by the keys held for the times given (not kept: the page
+// moves the eye with octopoint_web_walk_move when a key is let go); `coarse` != 0 draws each part
+// a depth coarser (octopoint-view's frames while a key is held). Pixels in octopoint_web_pixels.
+int octopoint_web_walk_draw(std::int32_t width, std::int32_t height, std::int32_t coarse,
+                            std::int32_t forward_us, std::int32_t back_us, std::int32_t left_us,
+                            std::int32_t right_us, std::int32_t up_us, std::int32_t down_us);
+// The eye of the last draw (or of the last call that moved it): twelve words, x, y, z (low, high
+// word each), yaw, pitch, roll and the field of view in 1/65536 turns, the speed in Q.24 cube edges
+// a second (low, high).
+const std::uint32_t* octopoint_web_walk_state(void);
 }
 
 namespace octopoint::web {
+
+// The keys octopoint_web_walk_move and octopoint_web_walk_draw know.
+inline constexpr int kWalkKeys = 6;
 
 // octopoint_web_draw with the decoder variant given (it draws with defaultVariant()): for the
 // native benchmark of the page's draw (bench/web_draw_bench.cpp), fixed_fast against fixed_simd.

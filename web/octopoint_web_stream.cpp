@@ -123,7 +123,7 @@ int drawStream(Variant variant, const Camera& camera) {
   s.view = camera;
   if (!s.model) return fail(s.failed ? s.failure : "waiting for the head");
   Canvas& out = canvas();
-  Framebuffer& frame = out.sized(camera);
+  Framebuffer& frame = out.sized(camera.width, camera.height);
   frame.clear();
   s.model->setPointBudget(s.point_budget);
   ProgressiveDrawStats stats;

@@ -3,6 +3,8 @@
 set(octopoint_web_sources
     ${PROJECT_SOURCE_DIR}/web/octopoint_web.cpp
     ${PROJECT_SOURCE_DIR}/web/octopoint_web_stream.cpp
+    # Walk mode, in the embedded model (the page without a model leaves it out).
+    ${PROJECT_SOURCE_DIR}/web/octopoint_web_walk.cpp
     ${PROJECT_SOURCE_DIR}/web/web_canvas.cpp
     # The native client's choice of the next byte range (transport-free), so that the page asks
     # for what octopoint-view would.

@@ -6,11 +6,17 @@
 
 namespace octopoint::web {
 
-Framebuffer& Canvas::sized(const Camera& camera) {
-  if (!frame || frame->width() != camera.width || frame->height() != camera.height)
-    frame.emplace(camera.width, camera.height);
-  rgb.resize(static_cast<std::size_t>(camera.width) * static_cast<std::size_t>(camera.height) * 3);
+Framebuffer& Canvas::sized(std::int32_t width, std::int32_t height) {
+  if (!frame || frame->width() != width || frame->height() != height) frame.emplace(width, height);
+  rgb.resize(static_cast<std::size_t>(width) * static_cast<std::size_t>(height) * 3);
   return *frame;
+}
+
+bool sizeAllowed(std::int32_t width, std::int32_t height) {
+  // The most pixels octopoint-render writes in a frame (it allows sides up to 8192).
+  constexpr std::int64_t kMaxPixels = std::int64_t{4096} * 4096;
+  return width >= 1 && height >= 1 && width <= kMaxViewportSide && height <= kMaxViewportSide &&
+         std::int64_t{width} * height <= kMaxPixels;
 }
 
 void Canvas::toRgba() {

@@ -24,13 +24,22 @@ struct Canvas {
   // vectors above keep their capacity too).
   std::optional<Framebuffer> frame;
 
-  // The frame at the camera's size (not cleared) and rgb sized to match.
-  Framebuffer& sized(const Camera& camera);
+  // The frame at this size (not cleared) and rgb sized to match.
+  Framebuffer& sized(std::int32_t width, std::int32_t height);
   // Widens rgb into opaque RGBA, the layout of a canvas's ImageData.
   void toRgba();
 };
 
 Canvas& canvas();
+
+// The sizes the page draws: octopoint-render's sides (1..8192) and at most its pixels (16777216).
+bool sizeAllowed(std::int32_t width, std::int32_t height);
+inline constexpr const char* kSizeRule =
+    "the size must be 1..8192 a side and 16777216 pixels at most";
+
+// The embedded default model (validated once by octopoint_web_create), or null: none embedded, or
+// octopoint_web_create not called yet.
+const ModelView* embeddedModel();
 
 // Records why the call failed (octopoint_web_error) and returns -1; succeed() clears it, returns 0.
 int fail(std::string message);
