@@ -1,0 +1,77 @@
+// Collision queries (renderer/collision.h, docs/perspective.md "Collision"): spheres about the eye
+// at the table's edge of the default model (the view of the perspective benchmarks), against its
+// finest level (depth 8, 62,502 leaves). Queries per second (items_per_second) and the boxes each
+// tests, per radius.
+
+#include <benchmark/benchmark.h>
+
+#include <cstdint>
+#include <random>
+#include <string>
+#include <vector>
+
+#include "bench/register_benchmarks.h"
+#include "octopoint/model.h"
+#include "octopoint/models.h"
+#include "renderer/collision.h"
+
+namespace octopoint {
+namespace {
+
+const ModelView& collisionBenchModel() {
+  static const ModelView model = [] {
+    ModelIssue issue;
+    return *ModelView::fromEmbedded(*models::defaultModel(), &issue);
+  }();
+  return model;
+}
+
+// 4,096 centres within 1/8 cube edge of the eye at the table's edge, (0, 0.28, -0.46) cube edges
+// from the centre (tests/core/perspective_cull_test.cpp's view), seeded.
+std::vector<ModelPoint> tableEdgeCentres() {
+  std::mt19937_64 random(33);
+  const ModelPoint eye{0, kPerspectiveUnit * 28 / 100, -kPerspectiveUnit * 46 / 100};
+  const std::int64_t span = kPerspectiveUnit / 4;
+  std::vector<ModelPoint> centres(4096);
+  for (ModelPoint& c : centres) {
+    auto near = [&](std::int64_t v) {
+      return v - span / 2 + static_cast<std::int64_t>(random() % static_cast<std::uint64_t>(span));
+    };
+    c = {near(eye.x), near(eye.y), near(eye.z)};
+  }
+  return centres;
+}
+
+void sphereQueries(benchmark::State& state, std::int64_t radius) {
+  const std::optional<CollisionModel> collision = CollisionModel::of(collisionBenchModel());
+  if (!collision) {
+    state.SkipWithError("no collision model");
+    return;
+  }
+  const std::vector<ModelPoint> centres = tableEdgeCentres();
+  CollisionStats stats;
+  std::uint64_t met = 0;
+  for (const ModelPoint& c : centres) met += collision->meets({c, radius}, &stats) ? 1 : 0;
+  std::size_t next = 0;
+  for (auto _ : state) {
+    benchmark::DoNotOptimize(collision->meets({centres[next], radius}));
+    next = (next + 1) % centres.size();
+  }
+  state.SetItemsProcessed(state.iterations());
+  state.counters["boxes_per_query"] =
+      static_cast<double>(stats.boxes_tested) / static_cast<double>(centres.size());
+  state.counters["met_share"] = static_cast<double>(met) / static_cast<double>(centres.size());
+}
+
+}  // namespace
+
+void registerAll() {
+  // Radii of 1/256, 1/64 and 1/16 cube edge (1, 4 and 16 depth-8 voxels).
+  for (const int divisor : {256, 64, 16}) {
+    benchmark::RegisterBenchmark(
+        ("collision/table_edge/sphere_edge_over_" + std::to_string(divisor)).c_str(),
+        sphereQueries, kPerspectiveUnit / divisor);
+  }
+}
+
+}  // namespace octopoint
