@@ -69,8 +69,8 @@ void registerAll() {
   // Radii of 1/256, 1/64 and 1/16 cube edge (1, 4 and 16 depth-8 voxels).
   for (const int divisor : {256, 64, 16}) {
     benchmark::RegisterBenchmark(
-        ("collision/table_edge/sphere_edge_over_" + std::to_string(divisor)).c_str(),
-        sphereQueries, kPerspectiveUnit / divisor);
+        ("collision/table_edge/sphere_edge_over_" + std::to_string(divisor)).c_str(), sphereQueries,
+        kPerspectiveUnit / divisor);
   }
 }
 

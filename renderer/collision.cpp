@@ -175,9 +175,9 @@ namespace {
 // A point of the world in an instance's model units, and how far (world units) from the
 // instance's centre it may be for the instance's turned cube to matter.
 struct LocalFrame {
-  int shift;             // scale_log2
-  std::int32_t sine;     // Q1.30
-  std::int32_t cosine;   // Q1.30
+  int shift;            // scale_log2
+  std::int32_t sine;    // Q1.30
+  std::int32_t cosine;  // Q1.30
   ModelPoint translation;
 
   // World differences below 2^31 on each axis (the caller checks): every product below 2^61.
@@ -220,8 +220,8 @@ std::optional<LocalFrame> frameNear(const CollisionInstance& instance, const Mod
   }
   // The turned cube's half-diagonal in the horizontal plane is sqrt(2) half edges: within one
   // world edge of the centre on every axis.
-  const std::int64_t edge = t.scale_log2 >= 0 ? kPerspectiveUnit << t.scale_log2
-                                              : kPerspectiveUnit >> -t.scale_log2;
+  const std::int64_t edge =
+      t.scale_log2 >= 0 ? kPerspectiveUnit << t.scale_log2 : kPerspectiveUnit >> -t.scale_log2;
   const ModelPoint p = clampedFar(point), c = clampedFar(t.translation);
   const std::int64_t reach = edge + margin;
   if (p.x - c.x > reach || c.x - p.x > reach || p.y - c.y > reach || c.y - p.y > reach ||
@@ -264,9 +264,9 @@ std::optional<std::int64_t> groundBelow(std::span<const CollisionInstance> insta
     // A turned column's square reaches sqrt(2) times as far: 3/2 covers it.
     const bool turned = instance.transform.yaw != Angle{};
     const std::int64_t width = turned ? (half_width * 3 + 1) / 2 : half_width;
-    const std::optional<std::int64_t> top = instance.model->groundBelow(
-        frame->toModel(clampedFar(point)), frame->lengthToModel(width),
-        frame->lengthToModel(reach) + 1);
+    const std::optional<std::int64_t> top =
+        instance.model->groundBelow(frame->toModel(clampedFar(point)), frame->lengthToModel(width),
+                                    frame->lengthToModel(reach) + 1);
     if (top) {
       const std::int64_t world_top = frame->yToWorld(*top);
       if (!ground || world_top < *ground) ground = world_top;

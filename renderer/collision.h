@@ -28,7 +28,7 @@ namespace octopoint {
 inline constexpr std::int64_t kMaxCollisionRadius = kPerspectiveUnit;
 
 struct CollisionSphere {
-  ModelPoint centre;       // Q.24 cube edges about the cube's centre
+  ModelPoint centre;        // Q.24 cube edges about the cube's centre
   std::int64_t radius = 0;  // Q.24 cube edges, 1 .. kMaxCollisionRadius
 };
 

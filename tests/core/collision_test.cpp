@@ -4,6 +4,8 @@
 // and at the largest coordinates), the ground under a point likewise, and instances with a
 // transform carried conservatively (never "free" where the turned, scaled voxels meet the sphere).
 
+#include "renderer/collision.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -15,7 +17,6 @@
 
 #include "octopoint/model.h"
 #include "octopoint/models.h"
-#include "renderer/collision.h"
 #include "tests/support/synthetic_levels.h"
 
 namespace octopoint {
@@ -62,7 +63,7 @@ std::int64_t squaredGap(const ModelPoint& c, const ModelPoint& lo, std::int64_t 
     return 0;
   };
   const std::int64_t gx = gap(c.x, lo.x, lo.x + edge), gy = gap(c.y, lo.y, lo.y + edge),
-                 gz = gap(c.z, lo.z, lo.z + edge);
+                     gz = gap(c.z, lo.z, lo.z + edge);
   return gx * gx + gy * gy + gz * gz;
 }
 
@@ -132,12 +133,10 @@ TEST(CollisionQuery, TouchingAFaceOrACornerIsNotMeetingIt) {
   const ModelPoint lo = voxel.lo;
   const std::int64_t e = voxel.edge;
   // Faces: a centre 1000 units before each face; radius 1000 touches, 1001 meets.
-  const ModelPoint faces[] = {{lo.x - 1000, lo.y + e / 2, lo.z + e / 2},
-                              {lo.x + e + 1000, lo.y + e / 2, lo.z + e / 2},
-                              {lo.x + e / 2, lo.y - 1000, lo.z + e / 2},
-                              {lo.x + e / 2, lo.y + e + 1000, lo.z + e / 2},
-                              {lo.x + e / 2, lo.y + e / 2, lo.z - 1000},
-                              {lo.x + e / 2, lo.y + e / 2, lo.z + e + 1000}};
+  const ModelPoint faces[] = {
+      {lo.x - 1000, lo.y + e / 2, lo.z + e / 2}, {lo.x + e + 1000, lo.y + e / 2, lo.z + e / 2},
+      {lo.x + e / 2, lo.y - 1000, lo.z + e / 2}, {lo.x + e / 2, lo.y + e + 1000, lo.z + e / 2},
+      {lo.x + e / 2, lo.y + e / 2, lo.z - 1000}, {lo.x + e / 2, lo.y + e / 2, lo.z + e + 1000}};
   for (const ModelPoint& c : faces) {
     EXPECT_FALSE(collision->meets({c, 1000}));
     EXPECT_TRUE(collision->meets({c, 1001}));
@@ -222,12 +221,14 @@ bool exactInstanceMeets(const CollisionLeafList& leaves, const InstanceTransform
   const double dx = static_cast<double>(sphere.centre.x - t.translation.x),
                dy = static_cast<double>(sphere.centre.y - t.translation.y),
                dz = static_cast<double>(sphere.centre.z - t.translation.z);
-  const double mx = (std::cos(turn) * dx - std::sin(turn) * dz) / scale,
-               my = dy / scale, mz = (std::sin(turn) * dx + std::cos(turn) * dz) / scale;
+  const double mx = (std::cos(turn) * dx - std::sin(turn) * dz) / scale, my = dy / scale,
+               mz = (std::sin(turn) * dx + std::cos(turn) * dz) / scale;
   const double r = (static_cast<double>(sphere.radius) + extra) / scale;
   const double e = static_cast<double>(leaves.edge);
   for (const ModelPoint& lo : leaves.corners) {
-    auto gap = [e](double v, double low) { return v < low ? low - v : v > low + e ? v - low - e : 0.0; };
+    auto gap = [e](double v, double low) {
+      return v < low ? low - v : v > low + e ? v - low - e : 0.0;
+    };
     const double gx = gap(mx, static_cast<double>(lo.x)), gy = gap(my, static_cast<double>(lo.y)),
                  gz = gap(mz, static_cast<double>(lo.z));
     if (gx * gx + gy * gy + gz * gz < r * r) return true;
@@ -263,7 +264,8 @@ TEST(CollisionInstances, TurnedScaledAndMovedAreNeverMissedAndErrOnlyByThePad) {
     const std::int64_t radius = std::int64_t{1} << (14 + static_cast<int>(random() % 6));
     const std::int64_t span = 4 * radius;
     auto around = [&](std::int64_t v) {
-      return v - 2 * radius + static_cast<std::int64_t>(random() % static_cast<std::uint64_t>(span));
+      return v - 2 * radius +
+             static_cast<std::int64_t>(random() % static_cast<std::uint64_t>(span));
     };
     const CollisionSphere sphere{{around(world_leaf.x), around(world_leaf.y), around(world_leaf.z)},
                                  radius};
