@@ -62,12 +62,29 @@ class Mover {
     return p;
   }
 
-  // With gravity: the eye at eye height above the ground under it, where there is ground.
+  // With gravity: where the eye stands at eye height over the ground under it (groundUnder).
+  std::optional<std::int64_t> standingY(const ModelPoint& eye) const {
+    const std::int64_t foot_offset = body_.eye_height - body_.radius;
+    ModelPoint foot{eye.x, eye.y + foot_offset, eye.z};
+    // Up: a foot in occupied space (a step up) is lifted, a radius at a time, at most to the eye.
+    for (std::int64_t lifted = 0; !free(foot); foot.y -= body_.radius, lifted += body_.radius) {
+      if (lifted >= foot_offset) return std::nullopt;
+    }
+    // Down: the foot falls, at most the eye height, until it rests on something.
+    for (std::int64_t dropped = 0; dropped < body_.eye_height;) {
+      const std::int64_t step = std::min(body_.radius, body_.eye_height - dropped);
+      const std::int64_t moved = freeShare(foot, &ModelPoint::y, step);
+      foot.y += moved;
+      dropped += moved;
+      if (moved != step) return foot.y - foot_offset;
+    }
+    return std::nullopt;  // nothing within reach: no ground
+  }
+
   ModelPoint grounded(const ModelPoint& p, bool& found) const {
-    const std::optional<std::int64_t> ground = groundUnder(world_, body_, p);
-    found = ground.has_value();
-    if (!ground) return p;
-    return vertical(p, *ground - body_.eye_height);
+    const std::optional<std::int64_t> standing = standingY(p);
+    found = standing.has_value();
+    return standing ? vertical(p, *standing) : p;
   }
 
  private:
@@ -85,8 +102,11 @@ ModelPoint clampedEye(const ModelPoint& p) {
 
 std::optional<std::int64_t> groundUnder(std::span<const CollisionInstance> world,
                                         const WalkBody& body, const ModelPoint& eye) {
-  if (body.eye_height <= 0) return std::nullopt;
-  return groundBelow(world, eye, std::max<std::int64_t>(1, body.radius / 8), 2 * body.eye_height);
+  if (body.radius < 1 || body.radius > kMaxCollisionRadius || body.eye_height <= body.radius ||
+      body.eye_height > kMaxCollisionRadius) {
+    return std::nullopt;
+  }
+  return Mover(world, body).standingY(eye);
 }
 
 CollisionMove moveWithCollision(std::span<const CollisionInstance> world, const WalkBody& body,

@@ -20,12 +20,14 @@ struct WalkBody {
   std::int64_t eye_height = 0;
 };
 
-// The ground under a free eye: the top face of the occupied space in the vertical column of
-// half-width radius / 8 (at least a unit) under the eye's centre, within twice the eye height
-// below it (groundBelow). A column as wide as the sphere would find a wall the sphere passes
-// beside (a corner of it) and climb it; this thin one overlaps a wall only where the sphere
-// would meet it, and is wide enough not to fall through a scan's gaps between neighbouring
-// voxels. nullopt without gravity or ground.
+// With gravity, where a free eye stands: the y of the eye (y points down) whose foot, a sphere
+// of the eye's radius eye_height - radius below the eye's centre, rests on occupied space, found
+// by lifting the foot out of what it meets (a radius at a time, at most to the eye: a step up)
+// and letting it fall at most the eye height (sub-steps of the radius, resting within 1/64
+// radius of what stops it). nullopt without gravity, or with nothing within reach below (off the
+// table's edge, high above the floor). The foot stands under the eye's centre, so a wall the eye
+// passes beside is not ground (a vertical column as wide as the sphere climbed such walls), and
+// it does not fall through the gaps of a scan narrower than the eye.
 std::optional<std::int64_t> groundUnder(std::span<const CollisionInstance> world,
                                         const WalkBody& body, const ModelPoint& eye);
 

@@ -15,9 +15,9 @@ namespace octopoint::testing_support {
 struct BoxRoom {
   static constexpr int kDepth = 6;
   static constexpr std::int64_t kVoxel = std::int64_t{1} << (24 - kDepth);  // Q.24
-  static constexpr int kLow = 4, kHigh = 59;         // the outer walls' voxels along x and z
-  static constexpr int kCeiling = 10, kFloor = 50;   // the ceiling's voxel, the floor's first
-  static constexpr int kThinWall = 32;               // x voxel of the thin wall, for k <= 40
+  static constexpr int kLow = 4, kHigh = 59;        // the outer walls' voxels along x and z
+  static constexpr int kCeiling = 10, kFloor = 50;  // the ceiling's voxel, the floor's first
+  static constexpr int kThinWall = 32;              // x voxel of the thin wall, for k <= 40
   static constexpr int kThinWallEnd = 40;
   static constexpr int kBoxLow = 40, kBoxHigh = 47;  // the low box: i and k of 40..47 / 16..23
   static constexpr int kBoxTop = kFloor - 2;         // its top voxel
@@ -29,7 +29,7 @@ struct BoxRoom {
     if (i < kLow || i > kHigh || k < kLow || k > kHigh || j < kCeiling || j > kFloor + 1) {
       return false;
     }
-    if (j == kCeiling || j >= kFloor) return true;                // ceiling, floor
+    if (j == kCeiling || j >= kFloor) return true;                        // ceiling, floor
     if (i == kLow || i == kHigh || k == kLow || k == kHigh) return true;  // outer walls
     if (i == kThinWall && k <= kThinWallEnd) return true;
     if (i >= 16 && i <= 19 && k >= 44 && k <= 47) return true;  // the pillar
