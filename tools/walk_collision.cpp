@@ -47,8 +47,8 @@ WalkBody walkBodyOf(const ScanCube& cube, const CollisionOptions& options) {
   if (options.eye_height) {
     body.eye_height = lengthOf(cube, *options.eye_height);
     if (body.eye_height <= body.radius || body.eye_height > kMaxCollisionRadius) {
-      throw cli::Error("--eye-height: " + cli::realText(*options.eye_height) +
-                       " scan units is " + edges(*options.eye_height) +
+      throw cli::Error("--eye-height: " + cli::realText(*options.eye_height) + " scan units is " +
+                       edges(*options.eye_height) +
                        " cube edges; it must be above the eye's radius (" +
                        cli::realText(static_cast<double>(body.radius) /
                                      static_cast<double>(kPerspectiveUnit) * cube.edge) +
@@ -68,7 +68,8 @@ CollidedEyes collideEyes(const ModelView& model, const ScanCube& cube, const Wal
   if (eyes.empty()) return result;
   ModelPoint eye = modelPointOf(cube, eyes.front(), option);
   for (const ScanPoint& next : eyes) {
-    const CollisionMove move = moveWithCollision(world, body, eye, modelPointOf(cube, next, option));
+    const CollisionMove move =
+        moveWithCollision(world, body, eye, modelPointOf(cube, next, option));
     eye = move.eye;
     result.stopped += move.blocked ? 1 : 0;
     result.eyes.push_back(scanPointOf(cube, eye));

@@ -19,9 +19,9 @@ namespace octopoint {
 inline constexpr std::int64_t kDefaultEyeRadius = kPerspectiveUnit / 128;
 
 struct CollisionOptions {
-  bool collide = false;               // --collide
-  std::optional<double> eye_radius;   // --eye-radius, scan units
-  std::optional<double> eye_height;   // --eye-height, scan units: gravity
+  bool collide = false;              // --collide
+  std::optional<double> eye_radius;  // --eye-radius, scan units
+  std::optional<double> eye_height;  // --eye-height, scan units: gravity
   bool any() const { return collide || eye_radius || eye_height; }
 };
 
