@@ -20,20 +20,6 @@ InteractiveConfig collidingWalkConfig(std::int64_t radius) {
   return config;
 }
 
-// The walk eye of the fine frame of the current view, once it is drawn.
-ModelPoint fineWalkEye(DualResolutionRenderer& renderer, std::int64_t time_ms) {
-  renderer.handle(at(time_ms, ViewEventKind::kTick));
-  const std::uint64_t version = renderer.status().view_version;
-  EXPECT_TRUE(renderer.waitUntil(
-      [&](const RendererStatus& s) {
-        return s.latest.source == FrameSource::kFine && s.latest.view_version == version;
-      },
-      kPatience));
-  FrameInfo info;
-  EXPECT_NE(renderer.acquireLatest(&info), nullptr);
-  return info.view.walker.eye;
-}
-
 TEST_F(DualResolution, WalkModeSinkingOntoTheTableStopsThereUntilCollisionIsTurnedOff) {
   constexpr std::int64_t kRadius = kCollisionEdge / 128;
   const InteractiveConfig config = collidingWalkConfig(kRadius);
@@ -46,7 +32,7 @@ TEST_F(DualResolution, WalkModeSinkingOntoTheTableStopsThereUntilCollisionIsTurn
                              at(8000, ViewEventKind::kRelease, NavigationKey::kSink)},
                             8000, clock_);
   playThrough(timeline, renderer, ViewEventKind::kQuit);
-  const ModelPoint stopped = fineWalkEye(renderer, 8000);
+  const ModelPoint stopped = fineFrame(renderer, 8000).view.walker.eye;
   EXPECT_FALSE(collision.meets({stopped, kRadius}));
   EXPECT_LT(stopped.y, start_y + kCollisionEdge);  // stopped on the way
   EXPECT_GT(stopped.y, start_y);                   // after sinking some
@@ -59,7 +45,7 @@ TEST_F(DualResolution, WalkModeSinkingOntoTheTableStopsThereUntilCollisionIsTurn
                             at(9000, ViewEventKind::kRelease, NavigationKey::kSink)},
                            9000, clock_);
   playThrough(through, renderer, ViewEventKind::kQuit);
-  EXPECT_EQ(fineWalkEye(renderer, 9000).y, stopped.y + config.walk_speed);
+  EXPECT_EQ(fineFrame(renderer, 9000).view.walker.eye.y, stopped.y + config.walk_speed);
 }
 
 TEST_F(DualResolution, WalkModeWithoutARadiusDoesNotCollide) {
