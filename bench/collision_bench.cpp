@@ -1,7 +1,7 @@
 // Collision queries (renderer/collision.h, docs/perspective.md "Collision"): spheres about the eye
 // at the table's edge of the default model (the view of the perspective benchmarks), against its
 // finest level (depth 8, 62,502 leaves). Queries per second (items_per_second) and the boxes each
-// tests, per radius.
+// tests, per radius; and walk steps (renderer/collision_move.h) per second.
 
 #include <benchmark/benchmark.h>
 
@@ -14,6 +14,7 @@
 #include "octopoint/model.h"
 #include "octopoint/models.h"
 #include "renderer/collision.h"
+#include "renderer/collision_move.h"
 
 namespace octopoint {
 namespace {
@@ -63,9 +64,44 @@ void sphereQueries(benchmark::State& state, std::int64_t radius) {
   state.counters["met_share"] = static_cast<double>(met) / static_cast<double>(centres.size());
 }
 
+// Walk steps of 1/16 cube edge (16 sub-steps of the radius, 1/256 edge) from free centres about
+// the table's edge, each toward the next centre, flying or with gravity (eye height 1/16 edge).
+void walkSteps(benchmark::State& state, std::int64_t eye_height) {
+  const std::optional<CollisionModel> collision = CollisionModel::of(collisionBenchModel());
+  if (!collision) {
+    state.SkipWithError("no collision model");
+    return;
+  }
+  const CollisionInstance instance{&*collision, {}};
+  const WalkBody body{kPerspectiveUnit / 256, eye_height};
+  std::vector<ModelPoint> starts;
+  for (const ModelPoint& c : tableEdgeCentres()) {
+    if (!collision->meets({c, body.radius})) starts.push_back(c);
+  }
+  std::size_t next = 0;
+  std::uint64_t blocked = 0, steps = 0;
+  for (auto _ : state) {
+    const ModelPoint& from = starts[next];
+    const ModelPoint& toward = starts[(next + 1) % starts.size()];
+    // 1/16 edge along the first axis toward the next centre.
+    const std::int64_t step = kPerspectiveUnit / 16;
+    const ModelPoint to{from.x + (toward.x > from.x ? step : -step), from.y, from.z};
+    const CollisionMove move = moveWithCollision({&instance, 1}, body, from, to);
+    benchmark::DoNotOptimize(move.eye);
+    blocked += move.blocked ? 1 : 0;
+    ++steps;
+    next = (next + 1) % starts.size();
+  }
+  state.SetItemsProcessed(state.iterations());
+  state.counters["blocked_share"] = static_cast<double>(blocked) / static_cast<double>(steps);
+}
+
 }  // namespace
 
 void registerAll() {
+  benchmark::RegisterBenchmark("collision/table_edge/walk_step_flying", walkSteps, 0);
+  benchmark::RegisterBenchmark("collision/table_edge/walk_step_gravity", walkSteps,
+                               kPerspectiveUnit / 16);
   // Radii of 1/256, 1/64 and 1/16 cube edge (1, 4 and 16 depth-8 voxels).
   for (const int divisor : {256, 64, 16}) {
     benchmark::RegisterBenchmark(
