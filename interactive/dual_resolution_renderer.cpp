@@ -4,6 +4,8 @@
 #include "fixedpoint/trig.h"
 #include "octopoint/camera.h"
 #include "octopoint/interactive.h"
+#include "renderer/collision.h"
+#include "renderer/collision_move.h"
 #include "renderer/level_of_detail.h"
 #include "renderer/perspective.h"
 #include "renderer/perspective_renderer.h"
@@ -51,10 +53,19 @@ std::int64_t clampEye(std::int64_t coordinate) {
   return std::clamp(coordinate, -kLimit, kLimit);
 }
 
+// Walk mode's collision, when on: the model and the eye's body.
+struct WalkCollision {
+  const CollisionModel* model = nullptr;  // nullptr: off
+  WalkBody body;
+};
+
 // Walk mode: the eye moved by a key held for `held_us`: forward and back along the look's yaw,
 // level (the pitch does not tip the walk), sideways at right angles to it, up and down along -y
-// and +y (the model's y points down).
-WalkEye walked(WalkEye walker, NavigationKey key, std::int64_t held_us, std::int64_t speed) {
+// and +y (the model's y points down); with collision, from where it was toward there, stopping
+// short of the model and sliding along it (renderer/collision_move.h): a function of the held
+// time still, so every frame of a hold shows the same walk.
+WalkEye walked(WalkEye walker, NavigationKey key, std::int64_t held_us, std::int64_t speed,
+               const WalkCollision& collision) {
   // Clamped: the eye cannot leave the camera's reach, so a day's hold gives the same.
   const std::int64_t distance =
       std::min(walkDistance(held_us, speed), 4 * kMaxEyeDistance * kPerspectiveUnit);
@@ -83,15 +94,23 @@ WalkEye walked(WalkEye walker, NavigationKey key, std::int64_t held_us, std::int
     case NavigationKey::kDrag:
       break;
   }
-  walker.eye = {clampEye(walker.eye.x + dx), clampEye(walker.eye.y + dy),
-                clampEye(walker.eye.z + dz)};
+  const ModelPoint to{clampEye(walker.eye.x + dx), clampEye(walker.eye.y + dy),
+                      clampEye(walker.eye.z + dz)};
+  if (collision.model == nullptr) {
+    walker.eye = to;
+    return walker;
+  }
+  const CollisionInstance instance{collision.model, {}};
+  const ModelPoint moved = moveWithCollision({&instance, 1}, collision.body, walker.eye, to).eye;
+  walker.eye = {clampEye(moved.x), clampEye(moved.y), clampEye(moved.z)};
   return walker;
 }
 
 ViewParameters moved(ViewParameters view, NavigationKey key, std::int64_t held_us,
-                     std::int32_t degrees_per_second, std::int64_t walk_speed) {
+                     std::int32_t degrees_per_second, std::int64_t walk_speed,
+                     const WalkCollision& collision) {
   if (view.walk) {
-    view.walker = walked(view.walker, key, held_us, walk_speed);
+    view.walker = walked(view.walker, key, held_us, walk_speed, collision);
     return view;
   }
   const Angle turn = turnFor(held_us, degrees_per_second);
@@ -174,11 +193,18 @@ DualResolutionRenderer::DualResolutionRenderer(const ModelView* model, const Lev
   if (model_ != nullptr) {
     coarse_worker_.perspective = std::make_unique<PerspectiveRenderer>(*model_);
     fine_worker_.perspective = std::make_unique<PerspectiveRenderer>(*model_);
+    if (config.walk_radius > 0) {
+      if (std::optional<CollisionModel> collision = CollisionModel::of(*model_)) {
+        collision_ = std::make_unique<const CollisionModel>(std::move(*collision));
+        collide_ = true;
+      }
+    }
   } else {
     base_view_.walk = false;  // walk mode needs the whole model
   }
   status_.walk = base_view_.walk;
   status_.walk_speed = walk_speed_;
+  status_.walk_collision = collide_;
   if (!render_) {
     const Variant variant = config.variant;
     render_ = [variant](const LevelView& level, const FrameSetup& setup, Framebuffer& frame,
@@ -255,7 +281,9 @@ ViewParameters DualResolutionRenderer::viewAt(std::int64_t time_us) const {
     if (key.held) {
       view = moved(view, static_cast<NavigationKey>(k),
                    std::max<std::int64_t>(0, time_us - key.since_us), config_.degrees_per_second,
-                   walk_speed_);
+                   walk_speed_,
+                   WalkCollision{collide_ ? collision_.get() : nullptr,
+                                 {config_.walk_radius, config_.walk_eye_height}});
     }
   }
   return view;
@@ -288,7 +316,9 @@ void DualResolutionRenderer::handle(const ViewEvent& event) {
         if (!key.held) return;
         base_view_ =
             moved(base_view_, event.key, std::max<std::int64_t>(0, event.time_us - key.since_us),
-                  config_.degrees_per_second, walk_speed_);
+                  config_.degrees_per_second, walk_speed_,
+                  WalkCollision{collide_ ? collision_.get() : nullptr,
+                                {config_.walk_radius, config_.walk_eye_height}});
         key.held = false;
         changeView();
         break;
@@ -352,6 +382,13 @@ void DualResolutionRenderer::handle(const ViewEvent& event) {
         changeView();
         break;
       }
+      case ViewEventKind::kToggleCollision:
+        if (collision_ == nullptr) return;
+        foldMotion(event.time_us);  // the walk so far as it was made
+        collide_ = !collide_;
+        status_.walk_collision = collide_;
+        status_changed_.notify_all();
+        return;
       case ViewEventKind::kContentChanged:
         ++content_version_;  // fineLoop keeps the fine frame due when this moved while it drew
         fine_due_ = true;

@@ -9,21 +9,7 @@
 file(REMOVE_RECURSE ${OUT})
 file(MAKE_DIRECTORY ${OUT})
 
-function(render_ok output_variable)
-  execute_process(COMMAND ${RENDER} ${ARGN} RESULT_VARIABLE status OUTPUT_VARIABLE out
-                  ERROR_VARIABLE err)
-  if(NOT status EQUAL 0)
-    message(FATAL_ERROR "octopoint-render ${ARGN} failed (${status}): ${err}")
-  endif()
-  set(${output_variable} "${out}" PARENT_SCOPE)
-endfunction()
-
-function(render_refused expected)
-  execute_process(COMMAND ${RENDER} ${ARGN} RESULT_VARIABLE status ERROR_VARIABLE err)
-  if(NOT status EQUAL 1 OR NOT err MATCHES "${expected}")
-    message(FATAL_ERROR "octopoint-render ${ARGN}: wanted exit 1 and '${expected}', got ${status}: ${err}")
-  endif()
-endfunction()
+include(${CMAKE_CURRENT_LIST_DIR}/render_checks.cmake)  # render_ok, render_refused
 
 function(same_files a b)
   execute_process(COMMAND ${CMAKE_COMMAND} -E compare_files ${a} ${b} RESULT_VARIABLE differ)

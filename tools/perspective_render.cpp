@@ -147,6 +147,25 @@ class PathOutput {
   bool done_ = false;
 };
 
+// --collide: the path's eyes walked with collision from frame to frame; one line says how often
+// something stopped the eye.
+void collidePoses(const ModelView& model, const ScanCube& cube, const PerspectiveOptions& options,
+                  std::vector<PathPose>& poses) {
+  const WalkBody body = walkBodyOf(cube, options.collision);
+  std::vector<ScanPoint> eyes;
+  for (const PathPose& pose : poses) eyes.push_back(pose.eye);
+  const CollidedEyes collided = collideEyes(model, cube, body, eyes, "--collide");
+  for (std::size_t i = 0; i < poses.size(); ++i) poses[i].eye = collided.eyes[i];
+  const double unit = cube.edge / static_cast<double>(kPerspectiveUnit);
+  char height[64] = "";
+  if (body.eye_height != 0) {
+    std::snprintf(height, sizeof height, ", eye height %.3g",
+                  static_cast<double>(body.eye_height) * unit);
+  }
+  std::printf("collision: eye radius %.3g%s, stopped or turned in %d of %zu frames\n",
+              static_cast<double>(body.radius) * unit, height, collided.stopped, poses.size());
+}
+
 void drawPath(const PerspectiveOptions& options, const PerspectiveJob& job) {
   const ScanCube cube = requireCube(job, "--path");
   const CameraPath path = loadCameraPath(options.path);
@@ -163,7 +182,8 @@ void drawPath(const PerspectiveOptions& options, const PerspectiveJob& job) {
   // Every frame's camera first: a path that leaves what the camera holds is refused before any
   // file is written.
   std::vector<PerspectiveView> views;
-  const std::vector<PathPose> poses = samplePath(path, options.frames);
+  std::vector<PathPose> poses = samplePath(path, options.frames);
+  if (options.collision.collide) collidePoses(*job.model, cube, options, poses);
   for (std::size_t i = 0; i < poses.size(); ++i) {
     views.push_back(
         scanEyeView(cube, poses[i].eye, poses[i].look, fov, job.camera.width, job.camera.height,
@@ -211,7 +231,7 @@ bool parsePerspectiveOption(cli::ArgumentReader& args, PerspectiveOptions& optio
   } else if (args.is("--frames")) {
     options.frames = cli::parseInt(args.name(), args.value(), 1, kMaxPathFrames);
   } else {
-    return false;
+    return parseCollisionOption(args, options.collision);
   }
   return true;
 }
@@ -224,6 +244,9 @@ void checkPerspectiveOptions(const PerspectiveOptions& options, const OtherOptio
   if (options.frames > 0 && options.path.empty()) throw cli::Error("--frames needs --path");
   if (!options.path.empty() && options.frames == 0)
     throw cli::Error("--path needs --frames N (1.." + std::to_string(kMaxPathFrames) + ")");
+  if (options.collision.any() && !options.collision.collide)
+    throw cli::Error("--eye-radius and --eye-height need --collide");
+  if (options.collision.collide && options.path.empty()) throw cli::Error("--collide needs --path");
   if (!options.any()) return;
   if (!options.orbit && other.orbit_camera) {
     throw cli::Error(std::string(options.mode()) +

@@ -13,6 +13,7 @@
 #include "renderer/perspective.h"
 #include "renderer/perspective_walk.h"
 #include "tools/scan_eye.h"
+#include "tools/walk_collision.h"
 
 namespace octopoint {
 
@@ -25,13 +26,14 @@ struct PerspectiveOptions {
   std::optional<Look> look;      // --look
   std::string path;              // --path
   int frames = 0;                // --frames
+  CollisionOptions collision;    // --collide, --eye-radius, --eye-height (with --path)
 
   bool any() const { return orbit || eye || !path.empty(); }
   const char* mode() const { return orbit ? "--perspective" : eye ? "--eye" : "--path"; }
 };
 
 // Reads the option `args` is at into `options`: false when it is none of --perspective, --fov,
-// --eye, --look, --path and --frames.
+// --eye, --look, --path, --frames, --collide, --eye-radius and --eye-height.
 bool parsePerspectiveOption(cli::ArgumentReader& args, PerspectiveOptions& options);
 
 // What else the command line asked for, for the checks between the options.

@@ -90,6 +90,15 @@ nor --file nor --url it draws the default model embedded in this binary.
                      checked before anything is written; a path that fails leaves no file
   --frames N         with --path: the number of frames, 1..3600, evenly spaced in time from the
                      first key to the last; at most 2^30 pixels in all (N x W x H)
+  --collide          with --path: walk the path's eye with collision (docs/perspective.md,
+                     "Collision"): from frame to frame the eye's sphere stops short of the
+                     model's occupied voxels (its finest depth) and slides along them, never
+                     through a wall however thin; prints in how many frames something stopped it
+  --eye-radius R     with --collide: the eye's radius in scan units (default 1/128 of the
+                     cube's edge; 2^-24 to 1 cube edge)
+  --eye-height H     with --collide: gravity: the eye stays H scan units above the ground under
+                     it (what its foot, a sphere of the radius H - R below it, rests on within H),
+                     and keeps its height where there is none; above R, at most one cube edge
   --fov DEG          with --perspective, --eye or --path: the vertical field of view, 10..120
                      (default 60, or the path's "fov")
   --size WxH         framebuffer size in pixels, each side 1..8192 and at most 16777216 pixels

@@ -30,7 +30,7 @@ constexpr const char* kUsage =
     R"(usage: octopoint-view [--model NAME | --file M.oct | --url URL [--point-budget N]] )"
     R"([--size WxH] [--scale N]
                      [--speed DEG] [--eye X,Y,Z [--look YAW,PITCH[,ROLL]]] [--fov DEG]
-                     [--walk-speed S]
+                     [--walk-speed S] [--eye-radius R] [--eye-height H]
 
 Shows an octopoint model in a resizable window. While an arrow key is held the view turns at a
 fixed speed, drawn coarse (thread L); once the last key is let go the fine frame is drawn at the
@@ -62,6 +62,11 @@ perspective (docs/perspective.md, "The viewer's walk mode").
   --fov DEG      walk mode's vertical field of view, 10..120 degrees (default 60)
   --walk-speed S how fast a held key walks, in scan units per second (default a quarter of the
                  model's cube edge; the wheel and + - change it by steps of 5/4)
+  --eye-radius R walk mode's collision (on at start, n turns it off and on): the eye's sphere of
+                 radius R scan units stops short of the model and slides along it (default 1/128
+                 of the cube's edge; docs/perspective.md, "Collision")
+  --eye-height H gravity in walk mode: the eye stays H scan units above the ground under it
+                 (above R, at most one cube edge); none by default
   -h, --help     show this help
 
 keys:
@@ -109,6 +114,8 @@ ViewerOptions parseOptions(int argc, char** argv) {
                        1000));
     } else if (args.is("--walk-speed")) {
       options.walk_speed = cli::parseReal(args.name(), args.value(), 1e-12, kMaxEyeCoordinate);
+    } else if (parseCollisionOption(args, options.collision)) {
+      // --collide is walk mode's default; --eye-radius and --eye-height set the body.
     } else {
       args.refuseUnknown();
     }

@@ -52,6 +52,8 @@ InteractiveConfig interactiveConfig(const ViewerOptions& options, const WalkStar
   config.degrees_per_second = options.degrees_per_second;
   config.fov = walk.fov;
   if (walk.speed > 0) config.walk_speed = walk.speed;
+  config.walk_radius = walk.body.radius;
+  config.walk_eye_height = walk.body.eye_height;
   if (walk.eye) {
     config.initial_view.walk = true;
     config.initial_view.walker = *walk.eye;
@@ -299,6 +301,8 @@ KeyBindings Viewer::keyTable(Viewer* viewer) {
                 "save the frame as octopoint-view-N.png in the current directory (walk: p)",
                 NavigationKey::kPitchDown, [viewer](std::int64_t) { viewer->save(); });
   keys.press({SDLK_p}, "", "", [viewer](std::int64_t) { viewer->save(); });
+  keys.press({SDLK_n}, "n", "walk: collision on and off (on at start: the eye stops at the model)",
+             [viewer](std::int64_t now) { viewer->send(ViewEventKind::kToggleCollision, now); });
   keys.press({SDLK_c}, "c",
              "next style: colour, shaded, lines, toon, outlined (a model with normals)",
              [viewer](std::int64_t) { viewer->nextStyle(); });

@@ -22,6 +22,7 @@
 #include "tools/view_keys.h"
 #include "tools/view_overlay.h"
 #include "tools/view_window.h"
+#include "tools/walk_collision.h"
 
 namespace octopoint {
 
@@ -42,6 +43,8 @@ struct ViewerOptions {
   std::optional<Look> look;
   std::optional<Angle> fov;
   std::optional<double> walk_speed;
+  // --eye-radius and --eye-height (docs/perspective.md, "Collision"): walk mode's collision.
+  CollisionOptions collision;
 };
 
 // What the viewer's walk mode needs of the model: where its cube lies in the scan, the eye to
@@ -52,6 +55,7 @@ struct WalkStart {
   std::optional<WalkEye> eye;
   Angle fov = Angle::fromDegrees(60);
   std::int64_t speed = 0;
+  WalkBody body;  // collision (on until n turns it off): the radius, and the eye height for gravity
 };
 WalkStart walkStart(const ViewerOptions& options, const ModelView* model);
 
@@ -84,6 +88,8 @@ class Viewer {
   void show();
   void save();
   void defaultOverlay(OverlayLines& lines) const;
+  // The overlay's word on collision: on (with gravity) or off, and the key that turns it.
+  std::string collisionText() const;
   void walkOverlay(OverlayLines& lines) const;
   // The eye and look of a walk frame as octopoint-render options (exact: --eye X,Y,Z --look ...).
   std::string walkOptions(const WalkEye& walker) const;

@@ -16,11 +16,13 @@ namespace octopoint {
 WalkStart walkStart(const ViewerOptions& options, const ModelView* model) {
   WalkStart walk;
   if (options.look && !options.eye) throw cli::Error("--look needs --eye");
-  const bool walk_options = options.eye || options.fov || options.walk_speed;
+  const bool walk_options =
+      options.eye || options.fov || options.walk_speed || options.collision.any();
   if (model == nullptr) {
     if (walk_options) {
       throw cli::Error(
-          "--eye, --fov and --walk-speed: walk mode draws a model file or an embedded model, not "
+          "--eye, --fov, --walk-speed and the collision options: walk mode draws a model file or "
+          "an embedded model, not "
           "--url (yet)");
     }
     return walk;
@@ -53,6 +55,14 @@ WalkStart walkStart(const ViewerOptions& options, const ModelView* model) {
       throw cli::Error(text);
     }
     walk.speed = static_cast<std::int64_t>(q24);
+  }
+  if (walk.cube) {
+    walk.body = walkBodyOf(*walk.cube, options.collision);
+  } else if (options.collision.eye_radius || options.collision.eye_height) {
+    throw cli::Error(
+        "--eye-radius and --eye-height need where the model's cube lies in the scan, "
+        "which format version " +
+        std::to_string(model->formatVersion()) + " does not record");
   }
   return walk;
 }
@@ -111,15 +121,21 @@ void Viewer::walkOverlay(OverlayLines& lines) const {
     const ScanPoint eye = scanPointOf(*walk_.cube, walker.eye);
     lines.push_back("eye " + shortNumber(eye[0]) + "," + shortNumber(eye[1]) + "," +
                     shortNumber(eye[2]) + "  look " + look);
-    lines.push_back("speed " + shortNumber(speed_edges * walk_.cube->edge) + " units/s");
+    lines.push_back("speed " + shortNumber(speed_edges * walk_.cube->edge) + " units/s" +
+                    collisionText());
   } else {  // a model that records no placement: cube edges about its centre
     const auto edges = [](std::int64_t q24) {
       return shortNumber(static_cast<double>(q24) / static_cast<double>(kPerspectiveUnit));
     };
     lines.push_back("eye " + edges(walker.eye.x) + "," + edges(walker.eye.y) + "," +
                     edges(walker.eye.z) + " cube edges  look " + look);
-    lines.push_back("speed " + shortNumber(speed_edges) + " cube edges/s");
+    lines.push_back("speed " + shortNumber(speed_edges) + " cube edges/s" + collisionText());
   }
+}
+
+std::string Viewer::collisionText() const {
+  if (!renderer_->status().walk_collision) return "  collision off (n)";
+  return walk_.body.eye_height != 0 ? "  collision on, gravity (n)" : "  collision on (n)";
 }
 
 std::string Viewer::walkOptions(const WalkEye& walker) const {

@@ -85,19 +85,20 @@ inline constexpr int kNavigationKeyCount = 7;
 inline constexpr int kOrbitNavigationKeyCount = 4;  // kYawLeft..kPitchDown move the orbit view
 
 enum class ViewEventKind : std::uint8_t {
-  kPress,           // a navigation key goes down (repeats of a held key are ignored)
-  kRelease,         // a navigation key goes up
-  kTick,            // the frame tick (every kTickPeriodMicroseconds): the fine frame may start
-  kZoomIn,          // one zoom step in (walk mode: the walk speed one step of 5/4 faster)
-  kZoomOut,         // one zoom step out (walk mode: slower)
-  kToggleFill,      // hole filling on/off
-  kReset,           // back to the initial view
-  kToggleWalk,      // orbit mode <-> walk mode (only where the renderer canWalk())
-  kTurn,            // walk mode: the eye turns by turn_yaw, turn_pitch (a mouse drag)
-  kResize,          // the frame becomes width x height pixels (the window was resized)
-  kContentChanged,  // the model has more in it (a streamed chunk arrived): the fine frame is due
-                    // again, without changing the view or aborting a fine frame under way
-  kQuit,            // the source has ended
+  kPress,            // a navigation key goes down (repeats of a held key are ignored)
+  kRelease,          // a navigation key goes up
+  kTick,             // the frame tick (every kTickPeriodMicroseconds): the fine frame may start
+  kZoomIn,           // one zoom step in (walk mode: the walk speed one step of 5/4 faster)
+  kZoomOut,          // one zoom step out (walk mode: slower)
+  kToggleFill,       // hole filling on/off
+  kReset,            // back to the initial view
+  kToggleWalk,       // orbit mode <-> walk mode (only where the renderer canWalk())
+  kTurn,             // walk mode: the eye turns by turn_yaw, turn_pitch (a mouse drag)
+  kResize,           // the frame becomes width x height pixels (the window was resized)
+  kToggleCollision,  // walk mode: collision on/off (where the config gives the eye a radius)
+  kContentChanged,   // the model has more in it (a streamed chunk arrived): the fine frame is due
+                     // again, without changing the view or aborting a fine frame under way
+  kQuit,             // the source has ended
 };
 
 inline constexpr std::int64_t kTickPeriodMicroseconds = 100'000;
@@ -176,6 +177,7 @@ class ScriptedTimeline final : public EventSource {
 namespace octopoint {
 
 class PerspectiveRenderer;  // renderer/perspective_renderer.h: walk mode's frames
+class CollisionModel;       // renderer/collision.h: walk mode's collision
 
 // Walk mode's eye (renderer/perspective.h's PerspectiveCamera): where it stands, in Q.24 cube
 // edges about the cube's centre in the model's axes (x right, y down, z away), and where it looks.
@@ -210,6 +212,12 @@ struct InteractiveConfig {
   // from orbit mode, the eye of that orbit view in perspective (orbitPerspective).
   Angle fov = Angle::fromDegrees(60);
   std::int64_t walk_speed = std::int64_t{1} << 22;  // a quarter cube edge a second
+  // Walk mode's collision (docs/perspective.md, "Collision"): the eye's radius (Q.24 cube edges,
+  // 1..one cube edge; 0: no collision) and, for gravity, its height above the ground (Q.24, above
+  // the radius; 0: none). With a radius, collision starts on; kToggleCollision turns it off and
+  // on again. It collides with the model's finest level.
+  std::int64_t walk_radius = 0;
+  std::int64_t walk_eye_height = 0;
   // Called from a render thread, without any lock held, after each frame it hands over: lets a
   // display sleep until there is something to show (the viewer posts a window event). Must not
   // call back into the renderer.
@@ -247,6 +255,7 @@ struct RendererStatus {
   FrameInfo latest;             // the newest frame handed over (generation 0: none yet)
   bool walk = false;            // the current view is walk mode's
   std::int64_t walk_speed = 0;  // Q.24 cube edges per second
+  bool walk_collision = false;  // walk mode's eye collides with the model
 };
 
 // The walk speed's bounds, Q.24 cube edges per second: 1/1024 to 64 cube edges a second (a held
@@ -370,7 +379,10 @@ class DualResolutionRenderer {
   std::array<HeldKey, kNavigationKeyCount> held_{};
   ViewParameters base_view_;
   std::int64_t walk_speed_;  // Q.24 cube edges per second
-  std::int32_t width_;       // the size of the frames drawn from now on
+  std::unique_ptr<const CollisionModel>
+      collision_;         // with config_.walk_radius, when it can be made
+  bool collide_ = false;  // collision on (toggled)
+  std::int32_t width_;    // the size of the frames drawn from now on
   std::int32_t height_;
   std::uint64_t view_version_ = 1;
   bool coarse_once_ = false;    // one coarse frame after a step change

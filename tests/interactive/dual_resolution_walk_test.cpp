@@ -44,20 +44,6 @@ Framebuffer walkFrame(const ModelView& model, const InteractiveConfig& config,
   return frame;
 }
 
-// Waits for the fine frame of the current view and returns its info.
-FrameInfo fineFrame(DualResolutionRenderer& renderer, std::int64_t time_ms) {
-  renderer.handle(at(time_ms, ViewEventKind::kTick));
-  const std::uint64_t version = renderer.status().view_version;
-  EXPECT_TRUE(renderer.waitUntil(
-      [&](const RendererStatus& s) {
-        return s.latest.source == FrameSource::kFine && s.latest.view_version == version;
-      },
-      kPatience));
-  FrameInfo info;
-  EXPECT_NE(renderer.acquireLatest(&info), nullptr);
-  return info;
-}
-
 TEST_F(DualResolution, WalkKeysMoveTheEyeBySpeedTimesTimeLevelAlongTheYaw) {
   InteractiveConfig config = walkConfig();
   config.initial_view.walker.yaw = Angle::fromDegrees(90);  // looking along +x

@@ -32,6 +32,21 @@ inline ViewEvent at(std::int64_t time_ms, ViewEventKind kind,
   return {time_ms * 1000, kind, key};
 }
 
+// Ticks at `time_ms`, waits for the fine frame of the current view and returns its info (the
+// walk tests: dual_resolution_walk_test.cpp, dual_resolution_collision_test.cpp).
+inline FrameInfo fineFrame(DualResolutionRenderer& renderer, std::int64_t time_ms) {
+  renderer.handle(at(time_ms, ViewEventKind::kTick));
+  const std::uint64_t version = renderer.status().view_version;
+  EXPECT_TRUE(renderer.waitUntil(
+      [&](const RendererStatus& s) {
+        return s.latest.source == FrameSource::kFine && s.latest.view_version == version;
+      },
+      kPatience));
+  FrameInfo info;
+  EXPECT_NE(renderer.acquireLatest(&info), nullptr);
+  return info;
+}
+
 class DualResolution : public ::testing::Test {
  protected:
   void SetUp() override {

@@ -1,0 +1,113 @@
+// Collision queries (renderer/collision.h, docs/perspective.md "Collision"): spheres about the eye
+// at the table's edge of the default model (the view of the perspective benchmarks), against its
+// finest level (depth 8, 62,502 leaves). Queries per second (items_per_second) and the boxes each
+// tests, per radius; and walk steps (renderer/collision_move.h) per second.
+
+#include <benchmark/benchmark.h>
+
+#include <cstdint>
+#include <random>
+#include <string>
+#include <vector>
+
+#include "bench/register_benchmarks.h"
+#include "octopoint/model.h"
+#include "octopoint/models.h"
+#include "renderer/collision.h"
+#include "renderer/collision_move.h"
+
+namespace octopoint {
+namespace {
+
+const ModelView& collisionBenchModel() {
+  static const ModelView model = [] {
+    ModelIssue issue;
+    return *ModelView::fromEmbedded(*models::defaultModel(), &issue);
+  }();
+  return model;
+}
+
+// 4,096 centres within 1/8 cube edge of the eye at the table's edge, (0, 0.28, -0.46) cube edges
+// from the centre (tests/core/perspective_cull_test.cpp's view), seeded.
+std::vector<ModelPoint> tableEdgeCentres() {
+  std::mt19937_64 random(33);
+  const ModelPoint eye{0, kPerspectiveUnit * 28 / 100, -kPerspectiveUnit * 46 / 100};
+  const std::int64_t span = kPerspectiveUnit / 4;
+  std::vector<ModelPoint> centres(4096);
+  for (ModelPoint& c : centres) {
+    auto near = [&](std::int64_t v) {
+      return v - span / 2 + static_cast<std::int64_t>(random() % static_cast<std::uint64_t>(span));
+    };
+    c = {near(eye.x), near(eye.y), near(eye.z)};
+  }
+  return centres;
+}
+
+void sphereQueries(benchmark::State& state, std::int64_t radius) {
+  const std::optional<CollisionModel> collision = CollisionModel::of(collisionBenchModel());
+  if (!collision) {
+    state.SkipWithError("no collision model");
+    return;
+  }
+  const std::vector<ModelPoint> centres = tableEdgeCentres();
+  CollisionStats stats;
+  std::uint64_t met = 0;
+  for (const ModelPoint& c : centres) met += collision->meets({c, radius}, &stats) ? 1 : 0;
+  std::size_t next = 0;
+  for (auto _ : state) {
+    benchmark::DoNotOptimize(collision->meets({centres[next], radius}));
+    next = (next + 1) % centres.size();
+  }
+  state.SetItemsProcessed(state.iterations());
+  state.counters["boxes_per_query"] =
+      static_cast<double>(stats.boxes_tested) / static_cast<double>(centres.size());
+  state.counters["met_share"] = static_cast<double>(met) / static_cast<double>(centres.size());
+}
+
+// Walk steps of 1/16 cube edge (16 sub-steps of the radius, 1/256 edge) from free centres about
+// the table's edge, each toward the next centre, flying or with gravity (eye height 1/16 edge).
+void walkSteps(benchmark::State& state, std::int64_t eye_height) {
+  const std::optional<CollisionModel> collision = CollisionModel::of(collisionBenchModel());
+  if (!collision) {
+    state.SkipWithError("no collision model");
+    return;
+  }
+  const CollisionInstance instance{&*collision, {}};
+  const WalkBody body{kPerspectiveUnit / 256, eye_height};
+  std::vector<ModelPoint> starts;
+  for (const ModelPoint& c : tableEdgeCentres()) {
+    if (!collision->meets({c, body.radius})) starts.push_back(c);
+  }
+  std::size_t next = 0;
+  std::uint64_t blocked = 0, steps = 0;
+  for (auto _ : state) {
+    const ModelPoint& from = starts[next];
+    const ModelPoint& toward = starts[(next + 1) % starts.size()];
+    // 1/16 edge along the first axis toward the next centre.
+    const std::int64_t step = kPerspectiveUnit / 16;
+    const ModelPoint to{from.x + (toward.x > from.x ? step : -step), from.y, from.z};
+    const CollisionMove move = moveWithCollision({&instance, 1}, body, from, to);
+    benchmark::DoNotOptimize(move.eye);
+    blocked += move.blocked ? 1 : 0;
+    ++steps;
+    next = (next + 1) % starts.size();
+  }
+  state.SetItemsProcessed(state.iterations());
+  state.counters["blocked_share"] = static_cast<double>(blocked) / static_cast<double>(steps);
+}
+
+}  // namespace
+
+void registerAll() {
+  benchmark::RegisterBenchmark("collision/table_edge/walk_step_flying", walkSteps, 0);
+  benchmark::RegisterBenchmark("collision/table_edge/walk_step_gravity", walkSteps,
+                               kPerspectiveUnit / 16);
+  // Radii of 1/256, 1/64 and 1/16 cube edge (1, 4 and 16 depth-8 voxels).
+  for (const int divisor : {256, 64, 16}) {
+    benchmark::RegisterBenchmark(
+        ("collision/table_edge/sphere_edge_over_" + std::to_string(divisor)).c_str(), sphereQueries,
+        kPerspectiveUnit / divisor);
+  }
+}
+
+}  // namespace octopoint
