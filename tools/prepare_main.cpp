@@ -347,7 +347,20 @@ std::string describeStream(const octopoint::prepare::SourceInfo& info,
       static_cast<double>(summary.points_in_file) / summary.seconds / 1e6, phase[0], phase[1],
       phase[2], phase[3], static_cast<unsigned long long>(stream.memory_bytes >> 20),
       static_cast<unsigned long long>(summary.spilled_bytes >> 20));
-  return line;
+  std::string text = line;
+  if (summary.pieces_read < summary.pieces) {  // COPC: the crop met only some nodes
+    std::snprintf(line, sizeof line,
+                  "  the crop met %zu of the %zu COPC nodes: %llu points read and decoded\n",
+                  summary.pieces_read, summary.pieces,
+                  static_cast<unsigned long long>(summary.points_read));
+    text += line;
+  }
+  if (summary.bytes_read > 0) {  // LAZ counts what it reads
+    std::snprintf(line, sizeof line, "  %.1f MB of the file read by both passes\n",
+                  static_cast<double>(summary.bytes_read) / 1e6);
+    text += line;
+  }
+  return text;
 }
 
 // Streamed when the file allows it and no option needs the whole scan; else read whole through
