@@ -90,8 +90,8 @@ CopcHierarchy readCopcHierarchy(const InputFile& file, const LasHeader& header,
   }
 
   std::deque<Page> pages;
-  pages.push_back({CopcKey{}, readLittle<std::uint64_t>(info + 40),
-                   readLittle<std::uint64_t>(info + 48)});
+  pages.push_back(
+      {CopcKey{}, readLittle<std::uint64_t>(info + 40), readLittle<std::uint64_t>(info + 48)});
   std::unordered_set<std::uint64_t> page_offsets;
   std::unordered_set<CopcKey, KeyHash> keys;
   std::uint64_t page_bytes_read = 0;

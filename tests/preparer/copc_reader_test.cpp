@@ -148,8 +148,9 @@ TEST_F(CopcReaderTest, ACropThatMeetsNoNodeIsRefused) {
     prepareFromSource(*openPointSource(copc), copc.string(), options, StreamOptions{});
     ADD_FAILURE() << "a crop far from every point was prepared";
   } catch (const PrepareError& error) {
-    EXPECT_NE(std::string(error.what()).find("no point of the 5000 points lies inside the crop box"),
-              std::string::npos)
+    EXPECT_NE(
+        std::string(error.what()).find("no point of the 5000 points lies inside the crop box"),
+        std::string::npos)
         << error.what();
   }
 }

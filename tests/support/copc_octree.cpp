@@ -40,10 +40,10 @@ bool under(const CopcWriterNode& node, const CopcWriterNode& top) {
 
 }  // namespace
 
-CopcOctree buildCopcOctree(const std::uint8_t* records, std::size_t record_bytes,
-                           std::size_t count, const std::array<double, 3>& scale,
-                           const std::array<double, 3>& offset, const std::array<double, 3>& low,
-                           const std::array<double, 3>& high, std::size_t capacity) {
+CopcOctree buildCopcOctree(const std::uint8_t* records, std::size_t record_bytes, std::size_t count,
+                           const std::array<double, 3>& scale, const std::array<double, 3>& offset,
+                           const std::array<double, 3>& low, const std::array<double, 3>& high,
+                           std::size_t capacity) {
   CopcOctree octree;
   double extent = 0;
   for (std::size_t axis = 0; axis < 3; ++axis) {
@@ -71,8 +71,8 @@ CopcOctree buildCopcOctree(const std::uint8_t* records, std::size_t record_bytes
       const double cells = std::ldexp(1.0, level);
       std::array<std::uint64_t, 3> cell{};
       for (std::size_t axis = 0; axis < 3; ++axis) {
-        cell[axis] = static_cast<std::uint64_t>(std::clamp(std::floor(t[axis] * cells), 0.0,
-                                                           cells - 1));
+        cell[axis] =
+            static_cast<std::uint64_t>(std::clamp(std::floor(t[axis] * cells), 0.0, cells - 1));
       }
       const std::uint64_t key = packKey(level, cell[0], cell[1], cell[2]);
       std::size_t& n = filled[key];

@@ -23,16 +23,16 @@ struct CopcWriterNode {
 struct CopcOctree {
   std::array<double, 3> centre{};
   double halfsize = 0;
-  std::vector<std::uint32_t> order;     // record indices, node by node
-  std::vector<CopcWriterNode> nodes;    // by level, then x, y, z
+  std::vector<std::uint32_t> order;   // record indices, node by node
+  std::vector<CopcWriterNode> nodes;  // by level, then x, y, z
 };
 
 // Sorts `count` records (LAS point format 6 to 8: X, Y, Z as int32 at bytes 0, 4, 8) into an
 // octree of nodes of at most `capacity` points (but the deepest), the root cube the bounds'.
-CopcOctree buildCopcOctree(const std::uint8_t* records, std::size_t record_bytes,
-                           std::size_t count, const std::array<double, 3>& scale,
-                           const std::array<double, 3>& offset, const std::array<double, 3>& low,
-                           const std::array<double, 3>& high, std::size_t capacity);
+CopcOctree buildCopcOctree(const std::uint8_t* records, std::size_t record_bytes, std::size_t count,
+                           const std::array<double, 3>& scale, const std::array<double, 3>& offset,
+                           const std::array<double, 3>& low, const std::array<double, 3>& high,
+                           std::size_t capacity);
 
 // Where each node's chunk went (in the order of CopcOctree::nodes).
 struct CopcChunkPlace {
