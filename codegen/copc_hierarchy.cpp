@@ -9,6 +9,7 @@
 #include <string>
 #include <unordered_set>
 
+#include "codegen/little_endian.h"
 #include "codegen/scan_header_check.h"
 
 namespace octopoint::prepare {
@@ -18,13 +19,6 @@ constexpr std::size_t kInfoBytes = 160;
 constexpr std::uint64_t kEntryBytes = 32;
 // The root cube's centre and half size are coordinates: no larger than a crop box's corners.
 constexpr double kMaxCopcCoordinate = 1e13;
-
-template <typename T>
-T readLittle(const std::uint8_t* bytes) {
-  T value;
-  std::memcpy(&value, bytes, sizeof value);
-  return value;
-}
 
 struct KeyHash {
   std::size_t operator()(const CopcKey& key) const {

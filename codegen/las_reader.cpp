@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "codegen/laz_reader.h"
+#include "codegen/little_endian.h"
 #include "codegen/scan_header_check.h"
 
 namespace octopoint::prepare {
@@ -35,14 +36,6 @@ constexpr std::string_view kLazVlrUser = "laszip encoded";
 constexpr std::uint16_t kLazVlrRecord = 22204;
 constexpr std::string_view kCopcVlrUser = "copc";
 constexpr std::uint16_t kCopcInfoRecord = 1;
-
-template <typename T>
-T readLittle(const std::uint8_t* bytes) {
-  T value;
-  std::memcpy(&value, bytes, sizeof value);  // LAS is little-endian, like every host we build for
-  static_assert(std::endian::native == std::endian::little);
-  return value;
-}
 
 std::string byteWhere(std::uint64_t offset) { return "header byte " + std::to_string(offset); }
 

@@ -15,6 +15,7 @@
 #include "codegen/laz_integer.h"
 #include "codegen/laz_layered.h"
 #include "codegen/laz_pointwise.h"
+#include "codegen/little_endian.h"
 #include "codegen/scan_header_check.h"
 
 namespace octopoint::prepare {
@@ -36,13 +37,6 @@ constexpr std::size_t kInputWindow = 1 << 16;
 // The most chunks a chunk table may list (24 bytes each in memory): 2 * 10^11 points in LASzip's
 // chunks of 50,000.
 constexpr std::uint64_t kMaxLazChunks = 1u << 22;
-
-template <typename T>
-T readLittle(const std::uint8_t* bytes) {
-  T value;
-  std::memcpy(&value, bytes, sizeof value);
-  return value;
-}
 
 struct LazLayout {
   Compressor compressor = Compressor::kNone;
