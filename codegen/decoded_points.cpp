@@ -12,11 +12,11 @@ constexpr std::uint64_t kIntensityBytes = sizeof(float);
 DecodedPoints::DecodedPoints(const std::filesystem::path& temp_dir, std::size_t pieces)
     : file_(temp_dir), pieces_(pieces) {}
 
-std::uint64_t DecodedPoints::bytesFor(const SourceInfo& info) {
+std::uint64_t DecodedPoints::bytesFor(const SourceInfo& info, std::uint64_t points) {
   const bool intensity = info.payload == PointPayload::kIntensity || info.has_intensity;
   const std::uint64_t per_point = kXyzBytes + (info.payload == PointPayload::kRgb ? kRgbBytes : 0) +
                                   (intensity ? kIntensityBytes : 0);
-  return info.points * per_point;
+  return points * per_point;
 }
 
 void DecodedPoints::keep(std::size_t piece, const PointChunk& chunk) {

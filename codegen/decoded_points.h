@@ -20,8 +20,9 @@ class DecodedPoints {
   // For the `pieces` pieces of a source whose chunks carry colour and/or intensity as `info` says.
   DecodedPoints(const std::filesystem::path& temp_dir, std::size_t pieces);
 
-  // Bytes of temporary file the points of `info` need (for the disk check before pass 1).
-  static std::uint64_t bytesFor(const SourceInfo& info);
+  // Bytes of temporary file `points` points of a source like `info` need (for the disk check
+  // before pass 1).
+  static std::uint64_t bytesFor(const SourceInfo& info, std::uint64_t points);
 
   // Keeps piece `piece` as read (before anything changes it). Thread-safe for distinct pieces.
   void keep(std::size_t piece, const PointChunk& chunk);

@@ -49,6 +49,7 @@ void InputFile::readAt(std::uint64_t offset, std::span<std::uint8_t> out,
     }
     done += static_cast<std::size_t>(got);
   }
+  bytes_read_.fetch_add(out.size(), std::memory_order_relaxed);
 }
 
 std::uint64_t InputFile::nextHole(std::uint64_t offset) const {

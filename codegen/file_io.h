@@ -29,11 +29,14 @@ class InputFile {
   std::uint64_t nextHole(std::uint64_t offset) const;
   // Tells the kernel the file will be read front to back (larger read-ahead).
   void adviseSequential() const;
+  // The bytes readAt has read so far, from every thread.
+  std::uint64_t bytesRead() const { return bytes_read_.load(std::memory_order_relaxed); }
 
  private:
   std::filesystem::path path_;
   int fd_ = -1;
   std::uint64_t size_ = 0;
+  mutable std::atomic<std::uint64_t> bytes_read_{0};
 };
 
 // A temporary file that is unlinked as soon as it is created: it takes disk space while open and

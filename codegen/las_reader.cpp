@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "codegen/laz_reader.h"
+#include "codegen/little_endian.h"
 #include "codegen/scan_header_check.h"
 
 namespace octopoint::prepare {
@@ -33,14 +34,8 @@ constexpr std::array<std::uint16_t, 11> kRgbOffset = {0, 0, 20, 28, 0, 28, 0, 30
 constexpr std::uint8_t kLazFormatBits = 0xc0;
 constexpr std::string_view kLazVlrUser = "laszip encoded";
 constexpr std::uint16_t kLazVlrRecord = 22204;
-
-template <typename T>
-T readLittle(const std::uint8_t* bytes) {
-  T value;
-  std::memcpy(&value, bytes, sizeof value);  // LAS is little-endian, like every host we build for
-  static_assert(std::endian::native == std::endian::little);
-  return value;
-}
+constexpr std::string_view kCopcVlrUser = "copc";
+constexpr std::uint16_t kCopcInfoRecord = 1;
 
 std::string byteWhere(std::uint64_t offset) { return "header byte " + std::to_string(offset); }
 
@@ -110,10 +105,15 @@ void walkVlrs(const InputFile& file, ByteWindow& window, std::uint64_t header_by
     const std::uint8_t* record = window.at(at, kVlrHeaderBytes, where);
     const std::string_view user(reinterpret_cast<const char*>(record + 2), 16);
     const std::uint64_t length = readLittle<std::uint16_t>(record + 20);
-    if (user.substr(0, user.find('\0')) == kLazVlrUser &&
-        readLittle<std::uint16_t>(record + 18) == kLazVlrRecord) {
+    const std::string_view user_id = user.substr(0, user.find('\0'));
+    const auto record_id = readLittle<std::uint16_t>(record + 18);
+    if (user_id == kLazVlrUser && record_id == kLazVlrRecord) {
       header.laszip_vlr_offset = at + kVlrHeaderBytes;
       header.laszip_vlr_bytes = static_cast<std::uint16_t>(length);
+    }
+    if (user_id == kCopcVlrUser && record_id == kCopcInfoRecord) {
+      header.copc_vlr_offset = at + kVlrHeaderBytes;
+      header.copc_vlr_bytes = static_cast<std::uint16_t>(length);
     }
     at += kVlrHeaderBytes + length;
     if (at > header.point_offset) {

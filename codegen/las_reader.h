@@ -46,6 +46,9 @@ struct LasHeader {
   bool compressed = false;
   std::uint64_t laszip_vlr_offset = 0;  // the VLR's payload
   std::uint16_t laszip_vlr_bytes = 0;
+  // COPC (a LAZ 1.4 file ordered as an octree): its info VLR ("copc", record 1), 0 if none.
+  std::uint64_t copc_vlr_offset = 0;  // the VLR's payload
+  std::uint16_t copc_vlr_bytes = 0;
   std::uint64_t points_end = 0;  // where the point data ends: the EVLRs' start, else the file's end
 };
 

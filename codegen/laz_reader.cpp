@@ -7,12 +7,15 @@
 #include <cstring>
 #include <mutex>
 #include <string>
+#include <unordered_map>
 #include <vector>
 
+#include "codegen/copc_hierarchy.h"
 #include "codegen/laz_arithmetic.h"
 #include "codegen/laz_integer.h"
 #include "codegen/laz_layered.h"
 #include "codegen/laz_pointwise.h"
+#include "codegen/little_endian.h"
 #include "codegen/scan_header_check.h"
 
 namespace octopoint::prepare {
@@ -34,13 +37,6 @@ constexpr std::size_t kInputWindow = 1 << 16;
 // The most chunks a chunk table may list (24 bytes each in memory): 2 * 10^11 points in LASzip's
 // chunks of 50,000.
 constexpr std::uint64_t kMaxLazChunks = 1u << 22;
-
-template <typename T>
-T readLittle(const std::uint8_t* bytes) {
-  T value;
-  std::memcpy(&value, bytes, sizeof value);
-  return value;
-}
 
 struct LazLayout {
   Compressor compressor = Compressor::kNone;
@@ -336,6 +332,61 @@ std::vector<Chunk> wholeFileChunk(const InputFile& file, const LasHeader& header
       Chunk{0, header.point_count, header.point_offset, header.points_end - header.point_offset}};
 }
 
+// A chunk's cube: where its points lie, in the scan's coordinates.
+struct ChunkCube {
+  std::array<double, 3> low{};
+  std::array<double, 3> high{};
+};
+
+// COPC: every chunk is the node of the hierarchy that names its offset, byte size and point count,
+// and every node with points is a chunk. Returns each chunk's cube, widened by one coordinate step
+// on each side (a writer rounds a point on a cube's face to either side).
+std::vector<ChunkCube> copcChunkCubes(const InputFile& file, const LasHeader& header,
+                                      const std::vector<Chunk>& chunks, std::string& description) {
+  const auto& path = file.path();
+  const CopcHierarchy hierarchy = readCopcHierarchy(file, header, chunks.front().offset,
+                                                    chunks.back().offset + chunks.back().bytes);
+  std::unordered_map<std::uint64_t, std::size_t> chunk_at;
+  for (std::size_t i = 0; i < chunks.size(); ++i) chunk_at.emplace(chunks[i].offset, i);
+  std::vector<ChunkCube> cubes(chunks.size());
+  std::vector<bool> claimed(chunks.size(), false);
+  int deepest = 0;
+  for (const CopcNode& node : hierarchy.nodes) {
+    const std::string where =
+        "COPC node " + copcKeyName(node.key) + ", chunk at byte " + std::to_string(node.offset);
+    const auto found = chunk_at.find(node.offset);
+    if (found == chunk_at.end()) {
+      fail(path, "the hierarchy names a chunk that the chunk table does not list", where);
+    }
+    const Chunk& chunk = chunks[found->second];
+    if (chunk.bytes != node.bytes || chunk.points != node.points) {
+      fail(path,
+           "the hierarchy gives the chunk " + std::to_string(node.points) + " points in " +
+               std::to_string(node.bytes) + " bytes, the chunk table " +
+               std::to_string(chunk.points) + " in " + std::to_string(chunk.bytes),
+           where);
+    }
+    if (claimed[found->second]) fail(path, "two nodes of the hierarchy name this chunk", where);
+    claimed[found->second] = true;
+    ChunkCube& cube = cubes[found->second];
+    for (std::size_t axis = 0; axis < 3; ++axis) {
+      cube.low[axis] = node.low[axis] - header.scale[axis];
+      cube.high[axis] = node.high[axis] + header.scale[axis];
+    }
+    deepest = std::max(deepest, node.key.level);
+  }
+  if (hierarchy.nodes.size() != chunks.size()) {
+    fail(path,
+         "the chunk table lists " + std::to_string(chunks.size()) + " chunks, the COPC hierarchy " +
+             std::to_string(hierarchy.nodes.size()) + " nodes with points",
+         "COPC info VLR at byte " + std::to_string(header.copc_vlr_offset));
+  }
+  description = "COPC, " + std::to_string(chunks.size()) + " nodes to level " +
+                std::to_string(deepest) + " in " + std::to_string(hierarchy.pages) +
+                (hierarchy.pages == 1 ? " hierarchy page" : " hierarchy pages");
+  return cubes;
+}
+
 // One thread's chunk decoder: the arithmetic decoder and an item decoder per item (point-wise),
 // or the item decoders that read the layers (layered).
 class ChunkDecoder {
@@ -502,6 +553,11 @@ class LazSource final : public PointSource {
     chunks_ = layout_.compressor == Compressor::kPointwise
                   ? wholeFileChunk(*file_, header_)
                   : readChunkTable(*file_, header_, layout_);
+    if (header_.copc_vlr_offset != 0) {
+      std::string description;
+      cubes_ = copcChunkCubes(*file_, header_, chunks_, description);
+      layout_.description += ", " + description;
+    }
     info_.format += ", " + layout_.description;
     file_->adviseSequential();
   }
@@ -511,6 +567,17 @@ class LazSource final : public PointSource {
   PointRange piece(std::size_t index) const override {
     return {chunks_[index].first_point, static_cast<std::size_t>(chunks_[index].points)};
   }
+
+  bool pieceMayMeet(std::size_t index, const std::array<double, 3>& low,
+                    const std::array<double, 3>& high) const override {
+    if (cubes_.empty()) return true;
+    const ChunkCube& cube = cubes_[index];
+    for (std::size_t axis = 0; axis < 3; ++axis) {
+      if (cube.high[axis] < low[axis] || cube.low[axis] > high[axis]) return false;
+    }
+    return true;
+  }
+  std::uint64_t bytesRead() const override { return file_->bytesRead(); }
 
   void read(std::uint64_t first, std::size_t count, PointChunk& chunk) const override {
     chunk.raw.resize(count * header_.record_length);
@@ -559,6 +626,7 @@ class LazSource final : public PointSource {
   SourceInfo info_;
   LazLayout layout_;
   std::vector<Chunk> chunks_;
+  std::vector<ChunkCube> cubes_;  // COPC: each chunk's cube; empty for other LAZ
   mutable std::mutex mutex_;
   mutable std::vector<std::unique_ptr<ChunkDecoder>> idle_;
 };

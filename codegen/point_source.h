@@ -94,6 +94,16 @@ class PointSource {
     const std::uint64_t left = info().points - first;
     return {first, static_cast<std::size_t>(left < kPiecePoints ? left : kPiecePoints)};
   }
+  // Whether piece `index` may hold a point inside the box [low, high] (the scan's own
+  // coordinates): true unless the source knows where its pieces lie (COPC's octree nodes), so that
+  // a crop reads only the pieces that meet it.
+  virtual bool pieceMayMeet(std::size_t /*index*/, const std::array<double, 3>& /*low*/,
+                            const std::array<double, 3>& /*high*/) const {
+    return true;
+  }
+  // The bytes read from the file so far (0 when the source does not count them): what a crop
+  // saves.
+  virtual std::uint64_t bytesRead() const { return 0; }
 };
 
 // Serves an in-memory scan (already cropped or not; its colours are final 8-bit colours, the

@@ -143,18 +143,25 @@ class StreamedPreparer {
     bin_points_ = std::max<std::uint64_t>(half / kBytesPerBinPoint, kMinBinPoints);
     // A scan that fits the budget never writes a temporary file: it need not have a place for one.
     if (info_.points > std::min(threads_ * buffer_points_, bin_points_)) checkDirectory(temp_dir_);
+    colouring_.depths = options.depths;
+    colouring_.greyscale = options.greyscale;
+    // A crop reads only the pieces that may meet it (COPC's nodes; every piece of other sources).
+    for (std::size_t i = 0; i < source.pieceCount(); ++i) {
+      if (!options.crop || source.pieceMayMeet(i, options.crop->low, options.crop->high)) {
+        pieces_.push_back(i);
+        points_read_ += source.piece(i).count;
+      }
+    }
     // Room for the decoded copy and as much again for the bins' spills, else (also when no
     // temporary file can be made: a scan that fits the budget needs none) decode twice.
-    if (info_.compressed && stream.decode_once && source_.pieceCount() > 0 &&
-        freeDiskBytes(temp_dir_) / 2 >= DecodedPoints::bytesFor(info_)) {
+    if (info_.compressed && stream.decode_once && !pieces_.empty() &&
+        freeDiskBytes(temp_dir_) / 2 >= DecodedPoints::bytesFor(info_, points_read_)) {
       try {
         decoded_ = std::make_unique<DecodedPoints>(temp_dir_, source_.pieceCount());
       } catch (const PrepareError&) {
         decoded_.reset();
       }
     }
-    colouring_.depths = options.depths;
-    colouring_.greyscale = options.greyscale;
   }
 
   PreparedModel run(PrepareSummary& summary) {
@@ -180,7 +187,11 @@ class StreamedPreparer {
     clock.next();
     summary.points_in_file = info_.points + info_.dropped_by_loader;
     summary.finite_points = first_.finite;
-    summary.dropped_non_finite = info_.points - first_.finite + info_.dropped_by_loader;
+    summary.dropped_non_finite = points_read_ - first_.finite + info_.dropped_by_loader;
+    summary.points_read = points_read_;
+    summary.pieces_read = pieces_.size();
+    summary.pieces = source_.pieceCount();
+    summary.bytes_read = source_.bytesRead();
     summary.model_points = first_.bounds.count;
     summary.spilled_bytes = spilled_bytes_.load() + spill_.bytesWritten();
     summary.threads = threads_;
@@ -214,10 +225,11 @@ class StreamedPreparer {
     std::vector<PointChunk>& chunks = chunks_;  // kept for the next pass: already paged in
     chunks.resize(threads_);
     std::atomic<std::uint64_t> done{0};
-    Progress progress(label, info_.points, "points");
+    Progress progress(label, points_read_, "points");
     parallelFor(
-        threads_, source_.pieceCount(),
-        [&](std::size_t piece_index, unsigned worker) {
+        threads_, pieces_.size(),
+        [&](std::size_t i, unsigned worker) {
+          const std::size_t piece_index = pieces_[i];
           const PointRange piece = source_.piece(piece_index);
           if (decoded_ && second_pass) {
             decoded_->read(piece_index, chunks[worker]);
@@ -257,8 +269,12 @@ class StreamedPreparer {
                   });
     for (std::size_t w = 1; w < workers.size(); ++w) workers[0].merge(workers[w]);
     first_ = std::move(workers[0]);
+    if (pieces_.empty()) {  // not one piece met the crop box
+      throw PrepareError(path_ + ": no point of the " + std::to_string(info_.points) +
+                         " points lies inside the crop box (no COPC node's cube meets it)");
+    }
     if (first_.finite == 0) {
-      throw PrepareError(path_ + ": no finite points: all " + std::to_string(info_.points) +
+      throw PrepareError(path_ + ": no finite points: all " + std::to_string(points_read_) +
                          " points have a NaN or infinite coordinate (every point)");
     }
     if (options_.crop && first_.bounds.count == 0) {
@@ -459,6 +475,8 @@ class StreamedPreparer {
   std::vector<ColourStore> colour_stores_;  // per thread: the voxels' colours
   std::vector<PointChunk> chunks_;          // per thread: the records being read
   std::unique_ptr<DecodedPoints> decoded_;  // a compressed source's points, kept by pass 1
+  std::vector<std::size_t> pieces_;         // the source's pieces the passes read
+  std::uint64_t points_read_ = 0;           // their points
   std::atomic<std::uint64_t> spilled_bytes_{0};
 };
 

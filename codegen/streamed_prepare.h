@@ -47,6 +47,11 @@ struct PrepareSummary {
   std::uint64_t finite_points = 0;  // those not dropped as non-finite (before cropping)
   std::uint64_t dropped_non_finite = 0;
   std::uint64_t model_points = 0;  // those voxelized (after cropping)
+  // A crop reads only the pieces that may meet it: all of them, but for COPC's octree nodes.
+  std::uint64_t points_read = 0;
+  std::size_t pieces_read = 0;
+  std::size_t pieces = 0;
+  std::uint64_t bytes_read = 0;  // of the file, by both passes (PointSource::bytesRead)
   ScanShading shading = ScanShading::kNone;
   std::string colour_note;  // e.g. "16-bit LAS colour"; empty if nothing to say
   std::uint64_t spilled_bytes = 0;

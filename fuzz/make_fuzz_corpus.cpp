@@ -9,7 +9,7 @@
 //  - las: a small LAS file of every point format, and 1.0, 1.1 and 1.4 with VLRs, EVLRs and extra
 //    bytes (tests/support/las_writer.h), so the fuzzer starts from every layout the reader knows.
 //  - laz: small LAZ files of point formats 0 to 3 and 6 to 8, fixed and variable chunks of a few
-//    points.
+//    points, and a COPC file whose hierarchy has child pages.
 // usage: make_fuzz_corpus OUTDIR
 #include <cstdio>
 #include <cstring>
@@ -137,7 +137,8 @@ void writeLasSeeds(const fs::path& dir) {
 }
 
 // Small LAZ files of every point format the tests' encoder writes (0 to 3 point-wise, 6 to 8
-// layered), every field varied, in chunks of a few points, fixed and variable (laz_fuzzer).
+// layered), every field varied, in chunks of a few points, fixed and variable, and a COPC file
+// (laz_fuzzer).
 void writeLazSeeds(const fs::path& dir) {
   using octopoint::testing::LasLayout;
   const octopoint::testing::Landscape landscape;
@@ -158,6 +159,16 @@ void writeLazSeeds(const fs::path& dir) {
       writer.finish();
     }
   }
+  // COPC: nodes of at most 2 points, so that the hierarchy has child pages.
+  LasLayout layout;
+  layout.format = 7;
+  layout.vlrs = 0;
+  layout.laz = true;
+  layout.copc = true;
+  layout.laz_chunk_points = 2;
+  octopoint::testing::LasWriter writer(dir / "copc.laz", layout);
+  for (std::uint64_t i = 0; i < 60; ++i) writer.add(landscape.point(i));
+  writer.finish();
 }
 
 }  // namespace

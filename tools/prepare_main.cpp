@@ -48,9 +48,9 @@ Turns a range scan (.las, .pcd or .ply: XYZ, XYZRGB/RGBA or XYZI, organized or n
 octopoint model: OUTDIR/NAME.h, OUTDIR/NAME.cpp and OUTDIR/NAME_depthD.cpp (const arrays an app
 compiles in) and OUTDIR/NAME.oct (the same model as one binary file, for octopoint-render --file).
 LAS (1.0 to 1.4, point formats 0 to 10), LAZ (LASzip-compressed LAS, point formats 0 to 10, read
-natively) and binary PCD/PLY (PLY of either byte order) are streamed: any number of points in
-bounded memory, on every core (LAZ chunks decoded in parallel); other PCD/PLY files are loaded
-whole through PCL. The output is the same byte for byte whatever --memory and --threads
+natively; COPC too) and binary PCD/PLY (PLY of either byte order) are streamed: any number of
+points in bounded memory, on every core (LAZ chunks decoded in parallel); other PCD/PLY files are
+loaded whole through PCL. The output is the same byte for byte whatever --memory and --threads
 (docs/preparer.md).
 
   SCAN                  the scan to read (.las, .laz, .pcd, .ply): a regular file, streamed ones
@@ -73,7 +73,8 @@ whole through PCL. The output is the same byte for byte whatever --memory and --
   --colours N           palette size, 1..256 (default 256)
   --crop X0,Y0,Z0,X1,Y1,Z1
                         keep only the points inside this box (scan units, inclusive) before
-                        fitting: cuts away the background and far-away junk of a range scan
+                        fitting: cuts away the background and far-away junk of a range scan;
+                        from COPC only the octree nodes the box meets are read
   --axes y-down|y-up    the scan's axis convention (default y-down): y-down is x right, y down,
                         z away from the sensor (PCL/OpenNI, OpenCV); y-up is x right, y up,
                         z toward the viewer (OpenGL). Models are stored y-down, so that the
@@ -356,7 +357,20 @@ std::string describeStream(const octopoint::prepare::SourceInfo& info,
       static_cast<double>(summary.points_in_file) / summary.seconds / 1e6, phase[0], phase[1],
       phase[2], phase[3], static_cast<unsigned long long>(stream.memory_bytes >> 20),
       static_cast<unsigned long long>(summary.spilled_bytes >> 20), decodedOnce(summary).c_str());
-  return line;
+  std::string text = line;
+  if (summary.pieces_read < summary.pieces) {  // COPC: the crop met only some nodes
+    std::snprintf(line, sizeof line,
+                  "  the crop met %zu of the %zu COPC nodes: %llu points read and decoded\n",
+                  summary.pieces_read, summary.pieces,
+                  static_cast<unsigned long long>(summary.points_read));
+    text += line;
+  }
+  if (summary.bytes_read > 0) {  // LAZ counts what it reads
+    std::snprintf(line, sizeof line, "  %.1f MB of the file read\n",
+                  static_cast<double>(summary.bytes_read) / 1e6);
+    text += line;
+  }
+  return text;
 }
 
 // Streamed when the file allows it and no option needs the whole scan; else read whole through

@@ -167,6 +167,20 @@ if [ -x "$MAKE_SCAN" ]; then
   refuse 1 laz7_layer_shift "corrupt LAZ: the POINT14 layer z does not end where its size says" "$PREPARE" "$I1/laz7_layer_shift.laz" -o "$W/work/out/p" --name m
   refuse 1 laz7_corrupt "corrupt LAZ" "$PREPARE" "$I1/laz7_corrupt.laz" -o "$W/work/out/p" --name m
   refuse 1 laz7_count "the chunk says it has 999 points" "$PREPARE" "$I1/laz7_count.laz" -o "$W/work/out/p" --name m
+  # COPC (its info VLR first, at byte 375 + 54; nodes of at most 100 points, so child pages): a
+  # root cube of negative size, a root page past the file, a key deeper than any octree, the root
+  # node without points (its chunk then belongs to no node).
+  "$MAKE_SCAN" --points 3000 --format laz --las-format 7 --copc --chunk-points 100 \
+    -o "$IN/good.copc.laz" >/dev/null || { echo "hostile-sweep: cannot write good.copc.laz" >&2; exit 1; }
+  copc_root=$(od -An -tu8 -j$((429 + 40)) -N8 "$IN/good.copc.laz" | tr -d ' ')
+  lazCopy copc_half.laz $((429 + 24)) '\000\000\000\000\000\000\360\277' "$IN/good.copc.laz"  # -1.0
+  lazCopy copc_root_past.laz $((429 + 48)) '\000\000\000\000\000\001\000\000' "$IN/good.copc.laz"
+  lazCopy copc_level.laz "$copc_root" "$(le32Escaped 99)" "$IN/good.copc.laz"
+  lazCopy copc_no_root.laz $((copc_root + 28)) "$(le32Escaped 0)" "$IN/good.copc.laz"
+  refuse 1 q:copc_half "absurd COPC root cube: half size -1" "$PREPARE" "$I1/copc_half.laz" -o "$W/work/out/p" --name m
+  refuse 1 copc_root_past "a hierarchy page of 1099511627776 bytes" "$PREPARE" "$I1/copc_root_past.laz" -o "$W/work/out/p" --name m
+  refuse 1 q:copc_level "octree level 99 (0 to 24 are read)" "$PREPARE" "$I1/copc_level.laz" -o "$W/work/out/p" --name m
+  refuse 1 copc_no_root "nodes with points" "$PREPARE" "$I1/copc_no_root.laz" -o "$W/work/out/p" --name m
 fi
 
 # --- 3: not a regular file, or past the stated size, for every tool that reads one -------------

@@ -7,6 +7,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "tests/support/copc_octree.h"
+
 namespace octopoint::testing {
 namespace {
 
@@ -65,7 +67,20 @@ LasWriter::LasWriter(const std::filesystem::path& path, const LasLayout& layout)
   }
   low_.fill(std::numeric_limits<double>::infinity());
   high_.fill(-std::numeric_limits<double>::infinity());
+  if (layout.copc && (layout.format < 6 || layout.format > 8 || layout.minor() != 4)) {
+    throw std::runtime_error("COPC holds point formats 6 to 8 of LAS 1.4");
+  }
+  if (layout.copc) layout_.laz_variable_chunks = true;  // each node is a chunk of its own size
   std::vector<std::uint8_t> head(headerBytes(layout.minor()), 0);  // patched in finish()
+  if (layout.copc && layout.laz) {  // the COPC info VLR comes first; its payload in finish()
+    std::vector<std::uint8_t> vlr(54 + 160, 0);
+    putText(vlr, 2, "copc", 16);
+    put<std::uint16_t>(vlr, 18, 1);
+    put<std::uint16_t>(vlr, 20, 160);
+    putText(vlr, 22, "COPC info", 32);
+    copc_info_at_ = head.size() + 54;
+    head.insert(head.end(), vlr.begin(), vlr.end());
+  }
   for (int i = 0; i < layout.vlrs; ++i) {
     const std::vector<std::uint8_t> vlr = extendedRecord(false, i);
     head.insert(head.end(), vlr.begin(), vlr.end());
@@ -73,7 +88,7 @@ LasWriter::LasWriter(const std::filesystem::path& path, const LasLayout& layout)
   if (layout.laz) {  // LASzip's VLR
     laz_ = std::make_unique<LazChunkEncoder>(layout.format, layout.extra_bytes);
     const std::vector<std::uint8_t> payload =
-        laz_->vlrPayload(layout.laz_variable_chunks ? 0xffffffffu : layout.laz_chunk_points);
+        laz_->vlrPayload(layout_.laz_variable_chunks ? 0xffffffffu : layout.laz_chunk_points);
     std::vector<std::uint8_t> vlr(54, 0);
     putText(vlr, 2, "laszip encoded", 16);
     put<std::uint16_t>(vlr, 18, kLaszipRecordId);
@@ -119,6 +134,47 @@ void LasWriter::finishLaz() {
   out_.seekp(0, std::ios::end);
 }
 
+// The records in the octree's order: as LAS, or as COPC (each node a chunk, then the chunk table
+// and the hierarchy pages; the info VLR is patched in by finish()).
+void LasWriter::finishCopc() {
+  const std::size_t record_bytes = recordLength(layout_);
+  const CopcOctree octree =
+      buildCopcOctree(copc_records_.data(), record_bytes, static_cast<std::size_t>(count_),
+                      layout_.scale, layout_.offset, low_, high_, layout_.laz_chunk_points);
+  std::vector<CopcChunkPlace> places;
+  for (const CopcWriterNode& node : octree.nodes) {
+    const auto offset = static_cast<std::uint64_t>(out_.tellp());
+    for (std::size_t i = node.first; i < node.first + node.count; ++i) {
+      const std::uint8_t* record =
+          copc_records_.data() + std::size_t{octree.order[i]} * record_bytes;
+      if (laz_) {
+        laz_->add(record);
+      } else {
+        out_.write(reinterpret_cast<const char*>(record),
+                   static_cast<std::streamsize>(record_bytes));
+      }
+    }
+    if (laz_) finishLazChunk();
+    places.push_back({offset, static_cast<std::uint64_t>(out_.tellp()) - offset});
+  }
+  copc_records_ = {};
+  if (!laz_) {
+    evlr_start_ = static_cast<std::uint64_t>(out_.tellp());
+    return;
+  }
+  finishLaz();
+  std::uint64_t root_bytes = 0;
+  copc_pages_ = copcHierarchyPages(octree, places, evlr_start_ + 60, root_bytes);
+  const std::vector<std::uint8_t> info = copcInfoPayload(octree, evlr_start_ + 60, root_bytes);
+  out_.seekp(static_cast<std::streamoff>(copc_info_at_));
+  out_.write(reinterpret_cast<const char*>(info.data()), static_cast<std::streamsize>(info.size()));
+  out_.seekp(0, std::ios::end);
+}
+
+std::uint32_t LasWriter::evlrCount() const {
+  return static_cast<std::uint32_t>(layout_.evlrs + (copc_pages_.empty() ? 0 : 1));
+}
+
 void LasWriter::add(const LandscapePoint& point) {
   const std::size_t at = buffer_.size();
   buffer_.resize(at + recordLength(layout_), 0);
@@ -149,6 +205,11 @@ void LasWriter::add(const LandscapePoint& point) {
                               : 0xee;
   }
   ++count_;
+  if (layout_.copc) {
+    copc_records_.insert(copc_records_.end(), buffer_.begin(), buffer_.end());
+    buffer_.clear();
+    return;
+  }
   if (laz_) {
     laz_->add(record);
     buffer_.clear();
@@ -219,12 +280,24 @@ void LasWriter::finish() {
   flush();
   using namespace las_offsets;
   const int minor = layout_.minor();
-  if (laz_) {
+  if (layout_.copc) {
+    finishCopc();
+  } else if (laz_) {
     finishLaz();
   } else {
     evlr_start_ = point_offset_ + count_ * recordLength(layout_);
   }
   const std::uint64_t evlr_start = evlr_start_;
+  if (!copc_pages_.empty()) {  // COPC's hierarchy EVLR
+    std::vector<std::uint8_t> evlr(60, 0);
+    putText(evlr, 2, "copc", 16);
+    put<std::uint16_t>(evlr, 18, 1000);
+    put<std::uint64_t>(evlr, 20, copc_pages_.size());
+    putText(evlr, 28, "COPC hierarchy", 32);
+    evlr.insert(evlr.end(), copc_pages_.begin(), copc_pages_.end());
+    out_.write(reinterpret_cast<const char*>(evlr.data()),
+               static_cast<std::streamsize>(evlr.size()));
+  }
   for (int i = 0; i < layout_.evlrs; ++i) {
     const std::vector<std::uint8_t> evlr = extendedRecord(true, i);
     out_.write(reinterpret_cast<const char*>(evlr.data()),
@@ -238,7 +311,9 @@ void LasWriter::finish() {
   putText(head, 58, "octopoint tests/tools", 32);
   put<std::uint16_t>(head, kHeaderSize, static_cast<std::uint16_t>(headerBytes(minor)));
   put<std::uint32_t>(head, kPointOffset, static_cast<std::uint32_t>(point_offset_));
-  put<std::uint32_t>(head, kVlrCount, static_cast<std::uint32_t>(layout_.vlrs + (laz_ ? 1 : 0)));
+  put<std::uint32_t>(
+      head, kVlrCount,
+      static_cast<std::uint32_t>(layout_.vlrs + (laz_ ? 1 : 0) + (copc_info_at_ != 0 ? 1 : 0)));
   head[kFormat] = static_cast<std::uint8_t>(layout_.format | (laz_ ? 0x80 : 0));  // LASzip's mark
   put<std::uint16_t>(head, kRecordLength, recordLength(layout_));
   const bool legacy =
@@ -253,8 +328,8 @@ void LasWriter::finish() {
     put<double>(head, 187 + 16 * axis, low_[axis]);
   }
   if (minor >= 4) {
-    put<std::uint64_t>(head, kEvlrStart, layout_.evlrs ? evlr_start : 0);
-    put<std::uint32_t>(head, kEvlrCount, static_cast<std::uint32_t>(layout_.evlrs));
+    put<std::uint64_t>(head, kEvlrStart, evlrCount() != 0 ? evlr_start : 0);
+    put<std::uint32_t>(head, kEvlrCount, evlrCount());
     put<std::uint64_t>(head, kCount, count_);
     put<std::uint64_t>(head, 255, count_);
   }

@@ -36,6 +36,11 @@ struct LasLayout {
   bool varied_fields = false;
   std::uint32_t laz_chunk_points = 50000;
   bool laz_variable_chunks = false;
+  // The records in the order of a COPC octree (tests/support/copc_octree.h) of nodes of at most
+  // laz_chunk_points points; with laz, a COPC file: LAS 1.4 of formats 6 to 8, the COPC info VLR
+  // first, each node one chunk, the hierarchy pages in an EVLR after the chunk table. The records
+  // are held in memory until finish().
+  bool copc = false;
 
   int minor() const {
     return version_minor >= 0 ? version_minor : format <= 3 ? 2 : format <= 5 ? 3 : 4;
@@ -68,6 +73,8 @@ class LasWriter {
   std::uint64_t nextChunkPoints() const;
   void finishLazChunk();
   void finishLaz();
+  void finishCopc();
+  std::uint32_t evlrCount() const;
 
   LasLayout layout_;
   std::unique_ptr<LazChunkEncoder> laz_;
@@ -78,6 +85,9 @@ class LasWriter {
   std::uint64_t count_ = 0;
   std::array<double, 3> low_{}, high_{};
   std::vector<std::uint8_t> buffer_;
+  std::vector<std::uint8_t> copc_records_;  // every record, until finish() orders them
+  std::uint64_t copc_info_at_ = 0;          // the COPC info VLR's payload, patched in finish()
+  std::vector<std::uint8_t> copc_pages_;    // the hierarchy pages, the first EVLR's payload
 };
 
 }  // namespace octopoint::testing

@@ -35,6 +35,11 @@ coloured roofs) to FILE, point by point in constant memory; the same options giv
                         uchar red green blue)
   --chunk-points N      LAZ points per chunk (default 50000, LASzip's)
   --variable-chunks     LAZ chunks of varying sizes, listed in the chunk table
+  --copc                the points ordered as a COPC octree of nodes of at most --chunk-points
+                        points (point formats 6 to 8); with --format laz a COPC file (each node
+                        a chunk, the hierarchy pages in an EVLR), with --format las its
+                        uncompressed twin (the same records in the same order); held in memory
+                        (the records, and 12 bytes per point) until written
   --varied-fields       vary every LAS field (returns, classes, scan angles, user data, point
                         sources, GPS times of interleaved flight lines; from format 6 on also
                         the four scanner channels, classification flags and near infrared;
@@ -102,6 +107,8 @@ int run(int argc, char** argv) {
           static_cast<std::uint32_t>(parseInt(args.name(), args.value(), 1, 1 << 20));
     } else if (args.is("--variable-chunks")) {
       layout.laz_variable_chunks = true;
+    } else if (args.is("--copc")) {
+      layout.copc = true;
     } else if (args.is("--varied-fields")) {
       layout.varied_fields = true;
     } else if (args.is("--las-format")) {
@@ -137,6 +144,12 @@ int run(int argc, char** argv) {
   if (layout.laz && ((layout.format > 3 && layout.format < 6) || layout.format > 8)) {
     throw std::runtime_error("--format laz writes point formats 0 to 3 and 6 to 8, not " +
                              std::to_string(layout.format));
+  }
+  if (layout.copc && (format == "ply" || layout.format < 6 || layout.format > 8 ||
+                      points > UINT32_MAX || layout.laz_variable_chunks)) {
+    throw std::runtime_error(
+        "--copc writes LAS or LAZ of point formats 6 to 8, at most 2^32 - 1 points, one chunk per "
+        "node (no --variable-chunks)");
   }
   const Landscape landscape(seed);
   if (format == "ply") {
