@@ -21,6 +21,7 @@ PerspectiveDetail perspectiveDetail(const PerspectiveView& view, std::span<const
                    : (view.focal_q16 + (std::int64_t{1} << (depth - 8)) - 1) >> (depth - 8);
   }
   detail.coarser = coarser;
+  detail.finest = detail.count - 1;
   const int finest = depths.back();
   for (int level = 0; level <= kMaxRenderDepth; ++level) {
     // Half a node's edge, rotated, plus the rounding its centre gathers on the way down (one unit

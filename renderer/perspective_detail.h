@@ -40,15 +40,21 @@ struct PerspectiveDetail {
 
   // The index of the coarsest depth fine enough at camera-space depth z (Q.24); the finest when
   // none is (z below every threshold: near the eye or behind it).
+  // Never finer than `finest` (the model's finest held depth there, below).
   int ask(std::int64_t z) const {
-    for (int i = 0; i + 1 < count; ++i) {
+    for (int i = 0; i < finest; ++i) {
       if (z >= near_enough[static_cast<std::size_t>(i)]) return std::max(0, i - coarser);
     }
-    return std::max(0, count - 1 - coarser);
+    return std::max(0, finest - coarser);
   }
   // Asks this many stored depths coarser (never past the coarsest): the interactive viewer's
   // coarse frames, drawn while the eye moves. Still non-increasing in z, so the rule below holds.
   int coarser = 0;
+  // The finest depth (an index) any node asks for: count - 1, or less where the model holds only
+  // the coarser depths of the list (a partly held chunked model, renderer/chunked_assembly.h:
+  // each held part drawn with the detail of the whole list, so that a part holding every depth
+  // draws what the whole model draws, and capped at the part's finest depth).
+  int finest = 0;
 };
 
 // `depths`: ascending, 1..kMaxRenderDepth, 1 to format::kMaxLevels of them. `coarser` (0..8)

@@ -41,6 +41,14 @@ ScanCube requireCube(const PerspectiveJob& job, const char* option) {
   return *cube;
 }
 
+// The frame of `view` from the job's model or parts.
+cv::Mat renderView(const PerspectiveJob& job, const PerspectiveView& view,
+                   PerspectiveDrawStats* stats) {
+  if (job.parts)
+    return renderPerspectiveParts(job.parts(view), depthToDraw(job), view, job.background, stats);
+  return renderPerspective(*job.model, depthToDraw(job), view, job.background, stats);
+}
+
 std::string lookText(Angle yaw, Angle pitch, Angle roll) {
   return degreesText(yaw) + "," + degreesText(pitch) + "," + degreesText(roll);
 }
@@ -56,8 +64,7 @@ void drawOrbit(const PerspectiveOptions& options, const PerspectiveJob& job) {
       job.camera, options.fov.value_or(Angle::fromDegrees(kDefaultFieldOfViewDegrees)));
   cli::checkOutputFile(job.output);
   PerspectiveDrawStats stats;
-  writePng(job.output,
-           renderPerspective(*job.model, depthToDraw(job), view, job.background, &stats));
+  writePng(job.output, renderView(job, view, &stats));
   // Where the eye is in the scan, so that --eye can take the view from here.
   std::string eye;
   if (const std::optional<ScanCube> cube = scanCube(job.model->cubePlacement())) {
@@ -78,8 +85,7 @@ void drawEye(const PerspectiveOptions& options, const PerspectiveJob& job) {
                   job.camera.width, job.camera.height, "--eye");
   cli::checkOutputFile(job.output);
   PerspectiveDrawStats stats;
-  writePng(job.output,
-           renderPerspective(*job.model, depthToDraw(job), view, job.background, &stats));
+  writePng(job.output, renderView(job, view, &stats));
   std::printf("%s: %s, eye %s looking %s -> %s (%dx%d)\n", job.label.c_str(),
               depthText(job, stats).c_str(), scanPointText(*options.eye).c_str(),
               lookText(look.yaw, look.pitch, look.roll).c_str(), job.output.c_str(),
@@ -179,8 +185,7 @@ void drawPath(const PerspectiveOptions& options, const PerspectiveJob& job) {
   PerspectiveDrawStats all;  // summed over the frames
   for (std::size_t i = 0; i < views.size(); ++i) {
     PerspectiveDrawStats stats;
-    output.add(static_cast<int>(i),
-               renderPerspective(*job.model, depthToDraw(job), views[i], job.background, &stats));
+    output.add(static_cast<int>(i), renderView(job, views[i], &stats));
     all.leaves += stats.leaves;
   }
   const bool video = output.hasVideo();
@@ -230,10 +235,9 @@ void checkPerspectiveOptions(const PerspectiveOptions& options, const OtherOptio
                      " places the eye in the scan: --yaw, --pitch, --roll, --zoom and --pan do "
                      "not apply (turn it with --look or the path's keys)");
   }
-  if (other.url || other.fill || other.sheet || other.style) {
+  if (other.fill || other.sheet || other.style) {
     throw cli::Error(std::string(options.mode()) +
-                     " draws a model file or an embedded model in colour: --url, --fill, --sheet "
-                     "and --style do not apply yet");
+                     " draws in colour: --fill, --sheet and --style do not apply yet");
   }
 }
 
@@ -250,6 +254,20 @@ PerspectiveView orbitPerspectiveView(const Camera& camera, Angle fov) {
   return view;
 }
 
+namespace {
+
+cv::Mat frameToBgr(const Framebuffer& frame, const ModelView& model, const PerspectiveView& view,
+                   Rgb background) {
+  cv::Mat rgb(view.camera.height, view.camera.width, CV_8UC3);
+  // The frame is sized to the camera: resolveToRgb cannot refuse it.
+  static_cast<void>(resolveToRgb(frame, model, background, {rgb.data, rgb.total() * 3}));
+  cv::Mat bgr;
+  cv::cvtColor(rgb, bgr, cv::COLOR_RGB2BGR);
+  return bgr;
+}
+
+}  // namespace
+
 cv::Mat renderPerspective(const ModelView& model, int depth, const PerspectiveView& view,
                           Rgb background, PerspectiveDrawStats* stats) {
   Framebuffer frame(view.camera.width, view.camera.height);
@@ -259,12 +277,28 @@ cv::Mat renderPerspective(const ModelView& model, int depth, const PerspectiveVi
   options.depth = depth;
   // No abort flag: it completes; `depth` is a stored one (the caller chose it from the model).
   static_cast<void>(renderer.draw(view, options, frame, stats));
-  cv::Mat rgb(view.camera.height, view.camera.width, CV_8UC3);
-  // The frame is sized to the camera: resolveToRgb cannot refuse it.
-  static_cast<void>(resolveToRgb(frame, model, background, {rgb.data, rgb.total() * 3}));
-  cv::Mat bgr;
-  cv::cvtColor(rgb, bgr, cv::COLOR_RGB2BGR);
-  return bgr;
+  return frameToBgr(frame, model, view, background);
+}
+
+cv::Mat renderPerspectiveParts(const HeldParts& parts, int depth, const PerspectiveView& view,
+                               Rgb background, PerspectiveDrawStats* stats) {
+  Framebuffer frame(view.camera.width, view.camera.height);
+  frame.clear();
+  PerspectiveDrawStats all;
+  for (const std::unique_ptr<AssembledModel>& part : parts.parts) {
+    PerspectiveRenderer renderer(*part->view, parts.detailDepths());
+    PerspectiveRenderer::Options options;
+    options.depth = depth;
+    PerspectiveDrawStats drawn;
+    // A part that does not hold `depth` draws nothing (false): the others do.
+    if (renderer.draw(view, options, frame, &drawn)) {
+      all.leaves += drawn.leaves;
+      all.hidden_subtrees += drawn.hidden_subtrees;
+    }
+  }
+  if (stats != nullptr) *stats = all;
+  // Every part has the head's palette.
+  return frameToBgr(frame, *parts.parts.front()->view, view, background);
 }
 
 void runPerspective(const PerspectiveOptions& options, const PerspectiveJob& job) {

@@ -3,6 +3,7 @@
 // camera of the orthographic view seen in perspective; --eye/--look, an eye placed in the scan's
 // own units; --path/--frames, a camera path drawn to numbered PNGs and a video.
 
+#include <functional>
 #include <opencv2/core.hpp>
 #include <optional>
 #include <string>
@@ -10,6 +11,7 @@
 #include "cli/arguments.h"
 #include "octopoint/camera.h"
 #include "octopoint/model.h"
+#include "renderer/chunked_assembly.h"
 #include "renderer/perspective.h"
 #include "renderer/perspective_walk.h"
 #include "tools/scan_eye.h"
@@ -37,7 +39,7 @@ bool parsePerspectiveOption(cli::ArgumentReader& args, PerspectiveOptions& optio
 // What else the command line asked for, for the checks between the options.
 struct OtherOptions {
   bool orbit_camera = false;  // --yaw, --pitch, --roll, --zoom or --pan given
-  bool url = false;
+  bool url = false;           // allowed: a chunked model streamed for the perspective view
   bool fill = false;
   bool sheet = false;
   bool style = false;  // a style other than colour
@@ -67,7 +69,16 @@ struct PerspectiveJob {
   Camera camera;
   std::string output;
   Rgb background;
+  // A chunked model (a file, or streamed by --url): the parts each view is drawn from, held when
+  // it is drawn (renderer/chunked_assembly.h); `model` then gives the cube's placement and the
+  // palette. None: `model` itself.
+  std::function<const HeldParts&(const PerspectiveView&)> parts;
 };
+
+// Draws `parts` with `view` on `background` as renderPerspective draws one model: the parts one
+// after another into one frame, each with the detail of parts.detailDepths().
+cv::Mat renderPerspectiveParts(const HeldParts& parts, int depth, const PerspectiveView& view,
+                               Rgb background, PerspectiveDrawStats* stats = nullptr);
 
 // Draws and writes what `options` asks for, prints one line saying what; cli::Error, one line,
 // leaving no file, when it cannot.

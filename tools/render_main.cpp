@@ -52,7 +52,8 @@ nor --file nor --url it draws the default model embedded in this binary.
                      depth the view needs
   --url URL          a chunked model on an HTTP server with Range requests (octopoint-serve,
                      nginx, ...), http://HOST:PORT/NAME.oct: fetches what this view needs, coarse
-                     first, then draws it (docs/streaming.md)
+                     first, then draws it (docs/streaming.md); with --perspective, --eye or
+                     --path too (each frame of a path fetches what it needs, in turn)
   --bytes N          with --url: stop after N bytes and draw what they give (one connection, so
                      the same N bytes every time)
   --timeout S        with --url: draw what arrived after S seconds at most, 1..86400 (default 60)
@@ -71,8 +72,10 @@ nor --file nor --url it draws the default model embedded in this binary.
                      where the centre's depth is as large on screen as in the orthographic view
                      of the same zoom (so a narrow --fov converges to it); colour only, no
                      --fill, --sheet or --style yet (docs/perspective.md). A chunked file is
-                     drawn from its complete depths, the same frame as the one-file model of
-                     those depths; not --url yet
+                     the same frame as the one-file model of its depths; with --url the stream
+                     follows the perspective view (nearest and largest on screen first, each
+                     region only as fine as its distance asks) and each region is drawn at the
+                     finest depth held there (with --bytes N: coarser where finer did not come)
   --eye X,Y,Z        draw in perspective from an eye at X,Y,Z in the scan's own units and axes
                      (the frame octopoint-prepare --crop takes; --info prints where the model's
                      cube lies in it); anywhere within 128 cube edges of the cube's centre, inside
@@ -353,8 +356,30 @@ void listModels() {
   }
 }
 
+// A chunked model fetched by URL in perspective: each view fetches what it needs and is drawn from
+// what is held then, every region at the finest depth held there (tools/chunked_render.h).
+int renderUrlPerspective(const Options& options) {
+  if (options.fetch.point_budget > 0) {
+    throw cli::Error(std::string(options.perspective.mode()) +
+                     " with --url: --point-budget does not apply yet");
+  }
+  // Before fetching, as renderUrl (a path's frames are checked by name when it draws them).
+  if (options.perspective.path.empty()) cli::checkOutputFile(options.output);
+  PerspectiveUrlSource source(options.source.url, options.fetch);
+  const ModelView& model = source.headModel();
+  PerspectiveJob job{&model,         options.source.url, std::nullopt, &model.finestLevel(),
+                     options.camera, options.output,     kBackground,  {}};
+  job.parts = [&source](const PerspectiveView& view) -> const HeldParts& {
+    return source.follow(view);
+  };
+  runPerspective(options.perspective, job);
+  std::printf("%s: %s\n", options.source.url.c_str(), source.report().c_str());
+  return 0;
+}
+
 // A model fetched by URL, drawn at the depth the view needs.
 int renderUrl(const Options& options) {
+  if (options.perspective.any()) return renderUrlPerspective(options);
   cli::checkOutputFile(
       options.output);  // before fetching: a FIFO, a device or a directory is refused
   std::string report;
@@ -494,8 +519,14 @@ int renderFrame(const ModelView& model, const LevelView& level, FrameStyler& sty
 
 int renderPerspectiveViews(const ModelView& model, const LevelView& level,
                            const std::string& model_label, const Options& options) {
-  runPerspective(options.perspective, {&model, model_label, options.depth, &level, options.camera,
-                                       options.output, kBackground});
+  runPerspective(options.perspective, {&model,
+                                       model_label,
+                                       options.depth,
+                                       &level,
+                                       options.camera,
+                                       options.output,
+                                       kBackground,
+                                       {}});
   return 0;
 }
 
@@ -514,7 +545,19 @@ int renderChunkedPerspective(const Options& options, const LoadedModel& loaded) 
                             std::to_string(assembled->view->finestLevel().depth) + " of " +
                             std::to_string(assembled->chunked_levels) + " levels)";
   const LevelView& level = chooseLevel(*assembled->view, label, options);
-  return renderPerspectiveViews(*assembled->view, level, label, options);
+  // Drawn from its held parts, as a stream of it is: a whole file is one part, the assembled model.
+  const HeldParts parts = assembleHeldParts(*loaded.chunked);
+  PerspectiveJob job{assembled->view ? &*assembled->view : nullptr,
+                     label,
+                     options.depth,
+                     &level,
+                     options.camera,
+                     options.output,
+                     kBackground,
+                     {}};
+  job.parts = [&parts](const PerspectiveView&) -> const HeldParts& { return parts; };
+  runPerspective(options.perspective, job);
+  return 0;
 }
 
 int run(int argc, char** argv) {
