@@ -57,11 +57,17 @@ struct PerspectiveDetail {
   int finest = 0;
 };
 
+// Q.8 pixels: one pixel, the size on screen up to which a voxel is fine enough (depth auto's rule).
+inline constexpr std::uint32_t kOnePixelQ8 = 256;
+
 // `depths`: ascending, 1..kMaxRenderDepth, 1 to format::kMaxLevels of them. `coarser` (0..8)
 // makes every node ask for that many stored depths coarser than its distance asks (never past the
-// coarsest): the interactive viewer's coarse frames, drawn while the eye moves.
+// coarsest): the interactive viewer's coarse frames, drawn while the eye moves. `pixels_q8`
+// (Q.8 pixels, kOnePixelQ8..2^24): the size on screen a voxel may span and still be fine enough;
+// larger, every part of the frame is drawn coarser where its voxels are smallest on screen, the
+// far parts first (a point budget: tools/perspective_render.h).
 PerspectiveDetail perspectiveDetail(const PerspectiveView& view, std::span<const int> depths,
-                                    int coarser = 0);
+                                    int coarser = 0, std::uint32_t pixels_q8 = kOnePixelQ8);
 
 // What the walk of one stored depth (index `layer` of the detail's depths) carries down a path.
 struct DetailState {

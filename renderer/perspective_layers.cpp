@@ -9,7 +9,7 @@ namespace octopoint {
 PerspectiveLayers perspectiveLayers(const ModelView& model, const PerspectiveView& view, int depth,
                                     std::span<const UpperTreeIndex> indexes,
                                     std::span<PerspectiveWalkTables> tables, int coarser,
-                                    std::span<const int> detail_depths) {
+                                    std::span<const int> detail_depths, std::uint32_t pixels_q8) {
   // The levels this build draws: a prefix, the levels being ascending.
   std::array<std::uint64_t, format::kMaxLevels> voxels{};
   std::size_t drawable = 0;
@@ -49,10 +49,11 @@ PerspectiveLayers perspectiveLayers(const ModelView& model, const PerspectiveVie
   }
   result.count = count;
   if (!detail_depths.empty() && depth == 0) {
-    result.detail = perspectiveDetail(view, detail_depths, coarser);
+    result.detail = perspectiveDetail(view, detail_depths, coarser, pixels_q8);
     result.detail.finest = static_cast<int>(count) - 1;
   } else {
-    result.detail = perspectiveDetail(view, std::span<const int>(depths.data(), count), coarser);
+    result.detail =
+        perspectiveDetail(view, std::span<const int>(depths.data(), count), coarser, pixels_q8);
   }
   return result;
 }

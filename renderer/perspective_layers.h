@@ -39,6 +39,7 @@ struct PerspectiveLayers {
 PerspectiveLayers perspectiveLayers(const ModelView& model, const PerspectiveView& view, int depth,
                                     std::span<const UpperTreeIndex> indexes,
                                     std::span<PerspectiveWalkTables> tables, int coarser = 0,
-                                    std::span<const int> detail_depths = {});
+                                    std::span<const int> detail_depths = {},
+                                    std::uint32_t pixels_q8 = kOnePixelQ8);
 
 }  // namespace octopoint

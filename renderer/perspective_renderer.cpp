@@ -37,7 +37,8 @@ bool PerspectiveRenderer::draw(const PerspectiveView& view, const Options& optio
                                const std::atomic<bool>* abort) {
   const PerspectiveLayers layers = perspectiveLayers(
       model_, view, options.depth, std::span<const UpperTreeIndex>(indexes_.data(), count_),
-      tables_, options.coarser, std::span<const int>(detail_depths_.data(), detail_count_));
+      tables_, options.coarser, std::span<const int>(detail_depths_.data(), detail_count_),
+      options.pixels_q8);
   if (layers.count == 0) return false;
   std::optional<OcclusionTiles> occlusion;
   if (options.cull) {

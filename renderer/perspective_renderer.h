@@ -32,6 +32,10 @@ class PerspectiveRenderer {
     int tile_shift = kOcclusionTileShift;  // its tiles: 2^shift pixels square, 1..6
     int coarser = 0;  // detail by distance: each part this many stored depths coarser than its
                       // distance asks, 0..8 (the viewer's coarse frames: 1)
+    // Detail by distance: the size on screen (Q.8 pixels, kOnePixelQ8..2^24) a voxel may span
+    // and still be fine enough; larger draws fewer points, the far parts coarser first (a point
+    // budget, tools/perspective_render.h).
+    std::uint32_t pixels_q8 = kOnePixelQ8;
   };
 
   // `model` must outlive the renderer. `detail_depths` (ascending; empty: the model's densely

@@ -60,7 +60,10 @@ nor --file nor --url it draws the default model embedded in this binary.
   --point-budget N   a chunked model (--url, or --file of a chunked file): draw at most about N
                      points, 1..2^40 (default: no budget). When the view's visible chunks hold
                      more at the depth it needs, those largest on screen, then nearest, keep it
-                     and the rest are drawn one depth coarser (docs/streaming.md, "Point budget")
+                     and the rest are drawn one depth coarser (docs/streaming.md, "Point budget").
+                     In perspective (any model): the frame is drawn coarser where its voxels are
+                     smallest on screen, the far parts first, until it draws at most N points
+                     (docs/perspective.md, "Point budget")
   --yaw DEG          turn about the vertical axis, |DEG| <= 1e6 (default 0; the scan as its
                      sensor saw it)
   --pitch DEG        turn about the horizontal axis (default 0)
@@ -259,6 +262,11 @@ void checkCombination(const Options& options) {
     throw cli::Error("--style " + std::string(styleName(options.style.style)) +
                      ": --url draws a chunked model, in colour only (it stores no normals)");
   }
+  if (options.perspective.any() && options.depth && options.source.point_budget > 0) {
+    throw cli::Error(std::string(options.perspective.mode()) +
+                     " --point-budget chooses each part's depth by distance: --depth N does not "
+                     "apply");
+  }
   checkPerspectiveOptions(options.perspective,
                           {options.orbit_camera, url, options.fill, options.sheet > 0,
                            options.style.style != Style::kColour});
@@ -359,10 +367,6 @@ void listModels() {
 // A chunked model fetched by URL in perspective: each view fetches what it needs and is drawn from
 // what is held then, every region at the finest depth held there (tools/chunked_render.h).
 int renderUrlPerspective(const Options& options) {
-  if (options.fetch.point_budget > 0) {
-    throw cli::Error(std::string(options.perspective.mode()) +
-                     " with --url: --point-budget does not apply yet");
-  }
   // Before fetching, as renderUrl (a path's frames are checked by name when it draws them).
   if (options.perspective.path.empty()) cli::checkOutputFile(options.output);
   PerspectiveUrlSource source(options.source.url, options.fetch);
@@ -372,6 +376,7 @@ int renderUrlPerspective(const Options& options) {
   job.parts = [&source](const PerspectiveView& view) -> const HeldParts& {
     return source.follow(view);
   };
+  job.point_budget = options.fetch.point_budget;
   runPerspective(options.perspective, job);
   std::printf("%s: %s\n", options.source.url.c_str(), source.report().c_str());
   return 0;
@@ -519,14 +524,10 @@ int renderFrame(const ModelView& model, const LevelView& level, FrameStyler& sty
 
 int renderPerspectiveViews(const ModelView& model, const LevelView& level,
                            const std::string& model_label, const Options& options) {
-  runPerspective(options.perspective, {&model,
-                                       model_label,
-                                       options.depth,
-                                       &level,
-                                       options.camera,
-                                       options.output,
-                                       kBackground,
-                                       {}});
+  PerspectiveJob job{&model,         model_label,    options.depth, &level,
+                     options.camera, options.output, kBackground,   {}};
+  job.point_budget = options.fetch.point_budget;
+  runPerspective(options.perspective, job);
   return 0;
 }
 
@@ -534,10 +535,6 @@ int renderPerspectiveViews(const ModelView& model, const LevelView& level,
 // complete file: the same model as prepared in one file), each part of the frame at the depth its
 // distance asks for among them.
 int renderChunkedPerspective(const Options& options, const LoadedModel& loaded) {
-  if (options.fetch.point_budget > 0) {
-    throw cli::Error(loaded.label + ": " + options.perspective.mode() +
-                     " draws a chunked file whole: --point-budget does not apply yet");
-  }
   const std::unique_ptr<AssembledModel> assembled = assembleChunked(*loaded.chunked);
   if (assembled == nullptr) throw cli::Error(loaded.label + ": its chunks do not make one model");
   const std::string label = loaded.label + " (chunked, depths " +
@@ -545,7 +542,8 @@ int renderChunkedPerspective(const Options& options, const LoadedModel& loaded) 
                             std::to_string(assembled->view->finestLevel().depth) + " of " +
                             std::to_string(assembled->chunked_levels) + " levels)";
   const LevelView& level = chooseLevel(*assembled->view, label, options);
-  // Drawn from its held parts, as a stream of it is: a whole file is one part, the assembled model.
+  // Drawn from its held parts, as a stream of it is: a whole file is one part, the assembled model
+  // of its densely sampled depths. `--depth N` draws the assembled model's depth N, sparse or not.
   const HeldParts parts = assembleHeldParts(*loaded.chunked);
   PerspectiveJob job{assembled->view ? &*assembled->view : nullptr,
                      label,
@@ -555,7 +553,9 @@ int renderChunkedPerspective(const Options& options, const LoadedModel& loaded) 
                      options.output,
                      kBackground,
                      {}};
-  job.parts = [&parts](const PerspectiveView&) -> const HeldParts& { return parts; };
+  if (!options.depth)
+    job.parts = [&parts](const PerspectiveView&) -> const HeldParts& { return parts; };
+  job.point_budget = options.fetch.point_budget;
   runPerspective(options.perspective, job);
   return 0;
 }
@@ -581,9 +581,10 @@ int run(int argc, char** argv) {
                      ": a chunked model is drawn in colour only (it stores no normals)");
   }
   if (loaded->chunked) return renderChunked(options, *loaded);
-  if (options.fetch.point_budget > 0) {
+  if (options.fetch.point_budget > 0 && !options.perspective.any()) {
     throw cli::Error(loaded->label +
-                     ": --point-budget applies to a chunked model (octopoint-prepare --chunked)");
+                     ": --point-budget applies to a chunked model (octopoint-prepare --chunked) "
+                     "or a perspective view");
   }
   const ModelView& model = *loaded->view;
   const std::string& model_label = loaded->label;

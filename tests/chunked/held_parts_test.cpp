@@ -1,8 +1,8 @@
-// A partly held chunked model drawn in perspective (renderer/chunked_assembly.h, assembleHeldParts):
-// held whole it is one part, the model assembleChunked gives; held in part (a prefix of the file,
-// cut halfway through a level's chunks) every region is drawn at the finest depth held there: the
-// frame covers what the coarser levels drawn alone cover (no hole where a coarser level is held)
-// and draws the held chunks of the cut level where the view asks for them.
+// A partly held chunked model drawn in perspective (renderer/chunked_assembly.h,
+// assembleHeldParts): held whole it is one part, the model assembleChunked gives; held in part (a
+// prefix of the file, cut halfway through a level's chunks) every region is drawn at the finest
+// depth held there: the frame covers what the coarser levels drawn alone cover (no hole where a
+// coarser level is held) and draws the held chunks of the cut level where the view asks for them.
 #include <gtest/gtest.h>
 
 #include "codegen/chunked_writer.h"
@@ -28,9 +28,9 @@ struct HeldPartsFixture {
 // 2.5 cube edges before the cube's centre (depth 7: a depth-8 voxel spans under a pixel).
 PerspectiveView heldPartsView(bool far) {
   PerspectiveCamera camera;
-  camera.eye = far ? ModelPoint{0, 0, -kPerspectiveUnit * 5 / 2}
-                   : ModelPoint{kPerspectiveUnit / 10, -kPerspectiveUnit / 8,
-                                -kPerspectiveUnit * 2 / 5};
+  camera.eye =
+      far ? ModelPoint{0, 0, -kPerspectiveUnit * 5 / 2}
+          : ModelPoint{kPerspectiveUnit / 10, -kPerspectiveUnit / 8, -kPerspectiveUnit * 2 / 5};
   camera.pitch = Angle::fromDegrees(far ? 0 : -25);
   camera.width = 320;
   camera.height = 240;
@@ -44,7 +44,8 @@ std::uint64_t drawParts(const HeldParts& parts, const PerspectiveView& view, Fra
   std::uint64_t leaves = 0;
   for (const std::unique_ptr<AssembledModel>& part : parts.parts) {
     PerspectiveDrawStats stats;
-    EXPECT_TRUE(PerspectiveRenderer(*part->view, parts.detailDepths()).draw(view, {}, frame, &stats));
+    EXPECT_TRUE(
+        PerspectiveRenderer(*part->view, parts.detailDepths()).draw(view, {}, frame, &stats));
     leaves += stats.leaves;
   }
   return leaves;
@@ -121,8 +122,9 @@ TEST(HeldParts, APartlyHeldLevelIsDrawnWhereHeldAndTheCoarserLevelElsewhere) {
       EXPECT_EQ(lost_whole, 0u) << lost_whole << " of " << whole_covered;
       EXPECT_LE(lost * 40, coarse_covered) << lost << " of " << coarse_covered << " lost";
       // Where the view asks for the cut level (the near view: every level; the far one up to
-      // depth 7, level 4; level 0 is the head's base), its held chunks are drawn: a different, finer frame. Where it does
-      // not, the frame is the coarser levels' bit for bit (a voxel in two parts draws the same).
+      // depth 7, level 4; level 0 is the head's base), its held chunks are drawn: a different,
+      // finer frame. Where it does not, the frame is the coarser levels' bit for bit (a voxel in
+      // two parts draws the same).
       if (!far || level <= 4) {
         EXPECT_GT(differ, 1000u);
         EXPECT_GT(part_leaves, coarse_stats.leaves);

@@ -30,6 +30,10 @@ for view in "--perspective --yaw 30 --pitch 15" "--perspective --zoom 3 --fov 90
   cmp -s "$work/file.png" "$work/url.png" || fail "--url and --file differ for view '$view'"
   grep -q "view complete" "$work/url.out" || fail "--url $view: $(cat "$work/url.out")"
 done
+"$render" --file "$work/models/sphere.oct" --perspective --zoom 3 --point-budget 2000 -o "$work/file.png" >/dev/null
+"$render" --url "$url" --perspective --zoom 3 --point-budget 2000 -o "$work/url.png" >"$work/url.out"
+cmp -s "$work/file.png" "$work/url.png" || fail "--perspective --point-budget: --url and --file differ"
+grep -q "point budget 2000" "$work/url.out" || fail "--perspective --point-budget: $(cat "$work/url.out")"
 "$render" --url "$url" --perspective --zoom 3 --bytes 9000 -o "$work/cut_a.png" >/dev/null
 "$render" --url "$url" --perspective --zoom 3 --bytes 9000 -o "$work/cut_b.png" >/dev/null
 cmp -s "$work/cut_a.png" "$work/cut_b.png" || fail "--perspective --bytes 9000 drew two different pictures"
