@@ -1,6 +1,7 @@
 #include <algorithm>
 #include <atomic>
 #include <thread>
+#include <variant>
 #include <vector>
 
 #include "net/fetch_planner.h"
@@ -18,6 +19,9 @@ struct Plan : FetchRange {
   bool head = false;
   std::vector<std::uint8_t> known;  // the bytes from `offset` on that are already here
 };
+
+// The view the fetch order follows: none (the head only), orthographic or perspective.
+using StreamView = std::variant<std::monostate, Camera, PerspectiveView>;
 
 FetchPlanOptions planOptions(const StreamOptions& options) {
   return {options.max_request_bytes, options.merge_gap_bytes, options.prefetch_invisible};
@@ -49,9 +53,9 @@ class ModelStream::Impl {
     threads_.clear();
   }
 
-  void setView(const Camera& camera) {
+  void setView(const StreamView& view) {
     std::lock_guard<std::mutex> lock(mutex_);
-    view_ = camera;
+    view_ = view;
     cv_.notify_all();
   }
 
@@ -113,12 +117,21 @@ class ModelStream::Impl {
     if (model_) {
       status.file_bytes = model_->head().file_bytes;
       status.chunks_held = model_->chunksIn(ChunkState::kHeld);
-      std::size_t pending = 0;
-      model_->fetchPriority(view_, false, {}, &pending);
+      std::size_t pending = 0, wanted = 0;
+      if (const Camera* camera = std::get_if<Camera>(&view_)) {
+        model_->fetchPriority(*camera, false, {}, &pending);
+        status.view_complete = model_->viewComplete(*camera);
+        model_->fetchPriority(*camera, options_.prefetch_invisible, {}, &wanted);
+      } else if (const PerspectiveView* view = std::get_if<PerspectiveView>(&view_)) {
+        // The perspective view is complete when nothing it sees is left to fetch.
+        static_cast<void>(status_order_.order(*model_, *view, false, {}, &pending));
+        status.view_complete = pending == 0;
+        static_cast<void>(
+            status_order_.order(*model_, *view, options_.prefetch_invisible, {}, &wanted));
+      } else {
+        status.view_complete = true;  // no view yet: the head is all there is to fetch
+      }
       status.chunks_pending = static_cast<std::uint32_t>(pending);
-      status.view_complete = model_->viewComplete(view_);
-      std::size_t wanted = 0;
-      model_->fetchPriority(view_, options_.prefetch_invisible, {}, &wanted);
       status.settled = busy_ == 0 && (wanted == 0 || budgetLeft() == 0);
     } else {
       status.settled = failed_ || (busy_ == 0 && budgetLeft() == 0);
@@ -149,7 +162,12 @@ class ModelStream::Impl {
       head_in_flight_ = true;
       return true;
     }
-    switch (planner_.next(*model_, view_, budget, plan)) {
+    if (std::holds_alternative<std::monostate>(view_)) return false;
+    const FetchPlanner::Outcome outcome =
+        std::holds_alternative<Camera>(view_)
+            ? planner_.next(*model_, std::get<Camera>(view_), budget, plan)
+            : planner_.next(*model_, std::get<PerspectiveView>(view_), budget, plan);
+    switch (outcome) {
       case FetchPlanner::Outcome::kRange:
         break;
       case FetchPlanner::Outcome::kNothing:
@@ -301,8 +319,9 @@ class ModelStream::Impl {
   std::vector<std::uint8_t> head_;  // the file's first bytes, while the head is being read
   std::uint64_t head_bytes_ = 0;
   bool head_in_flight_ = false;
-  Camera view_;
+  StreamView view_ = Camera{};
   FetchPlanner planner_;
+  PerspectiveFetchOrder status_order_;  // statusLocked's count of a perspective view's items
   std::uint64_t received_ = 0, outstanding_ = 0;
   bool budget_spent_ = false;  // the budget left cannot hold the next item
   int busy_ = 0;
@@ -321,6 +340,8 @@ ModelStream::~ModelStream() = default;
 void ModelStream::start() { impl_->start(); }
 void ModelStream::stop() { impl_->stop(); }
 void ModelStream::setView(const Camera& camera) { impl_->setView(camera); }
+void ModelStream::setView(const PerspectiveView& view) { impl_->setView(view); }
+void ModelStream::clearView() { impl_->setView(std::monostate{}); }
 StreamStatus ModelStream::status() { return impl_->status(); }
 void ModelStream::withModel(const std::function<void(ProgressiveModel*)>& use) {
   impl_->withModel(use);

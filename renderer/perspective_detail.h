@@ -40,22 +40,34 @@ struct PerspectiveDetail {
 
   // The index of the coarsest depth fine enough at camera-space depth z (Q.24); the finest when
   // none is (z below every threshold: near the eye or behind it).
+  // Never finer than `finest` (the model's finest held depth there, below).
   int ask(std::int64_t z) const {
-    for (int i = 0; i + 1 < count; ++i) {
+    for (int i = 0; i < finest; ++i) {
       if (z >= near_enough[static_cast<std::size_t>(i)]) return std::max(0, i - coarser);
     }
-    return std::max(0, count - 1 - coarser);
+    return std::max(0, finest - coarser);
   }
   // Asks this many stored depths coarser (never past the coarsest): the interactive viewer's
   // coarse frames, drawn while the eye moves. Still non-increasing in z, so the rule below holds.
   int coarser = 0;
+  // The finest depth (an index) any node asks for: count - 1, or less where the model holds only
+  // the coarser depths of the list (a partly held chunked model, renderer/chunked_assembly.h:
+  // each held part drawn with the detail of the whole list, so that a part holding every depth
+  // draws what the whole model draws, and capped at the part's finest depth).
+  int finest = 0;
 };
+
+// Q.8 pixels: one pixel, the size on screen up to which a voxel is fine enough (depth auto's rule).
+inline constexpr std::uint32_t kOnePixelQ8 = 256;
 
 // `depths`: ascending, 1..kMaxRenderDepth, 1 to format::kMaxLevels of them. `coarser` (0..8)
 // makes every node ask for that many stored depths coarser than its distance asks (never past the
-// coarsest): the interactive viewer's coarse frames, drawn while the eye moves.
+// coarsest): the interactive viewer's coarse frames, drawn while the eye moves. `pixels_q8`
+// (Q.8 pixels, kOnePixelQ8..2^24): the size on screen a voxel may span and still be fine enough;
+// larger, every part of the frame is drawn coarser where its voxels are smallest on screen, the
+// far parts first (a point budget: tools/perspective_render.h).
 PerspectiveDetail perspectiveDetail(const PerspectiveView& view, std::span<const int> depths,
-                                    int coarser = 0);
+                                    int coarser = 0, std::uint32_t pixels_q8 = kOnePixelQ8);
 
 // What the walk of one stored depth (index `layer` of the detail's depths) carries down a path.
 struct DetailState {

@@ -49,9 +49,13 @@ std::size_t PerspectiveFetchOrder::order(const ProgressiveModel& model, const Pe
       break;  // the finer levels' tables come after it
     }
     const int region_level = model.head().levels[at].region_level;
-    // Half the region's edge, rotated, plus a unit for the centre's rounding.
+    // The reach detail by distance gives a node of the region's level (half its edge, rotated,
+    // and the rounding the walk's centres gather), plus the rounding of the walk's centre against
+    // this exact one (half a unit per level and the root's unit): no node a frame draws in the
+    // region is nearer, or reaches further aside, than this says, so a chunk left unfetched is
+    // never one a frame of the view would draw (a partly held model draws the same frame).
     const std::int64_t reach =
-        rotatedCubeReach(std::int64_t{1} << (kPerspectiveUnitBits - 1 - region_level)) + 1;
+        detail.reach[static_cast<std::size_t>(region_level)] + region_level + 1;
     const std::uint32_t count = model.chunkCount(level);
     blocked_[at].assign(count, 0);
     for (std::uint32_t i = 0; i < count; ++i) {

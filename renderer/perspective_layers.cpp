@@ -1,12 +1,15 @@
 #include "renderer/perspective_layers.h"
 
+#include <algorithm>
+
 #include "renderer/level_of_detail.h"
 
 namespace octopoint {
 
 PerspectiveLayers perspectiveLayers(const ModelView& model, const PerspectiveView& view, int depth,
                                     std::span<const UpperTreeIndex> indexes,
-                                    std::span<PerspectiveWalkTables> tables, int coarser) {
+                                    std::span<PerspectiveWalkTables> tables, int coarser,
+                                    std::span<const int> detail_depths, std::uint32_t pixels_q8) {
   // The levels this build draws: a prefix, the levels being ascending.
   std::array<std::uint64_t, format::kMaxLevels> voxels{};
   std::size_t drawable = 0;
@@ -16,6 +19,13 @@ PerspectiveLayers perspectiveLayers(const ModelView& model, const PerspectiveVie
     ++drawable;
   }
   std::size_t first = 0, count = denseDepthCount(std::span(voxels).first(drawable));
+  if (!detail_depths.empty()) {
+    // The model holds a prefix of these depths: detail by distance over all of them, capped.
+    count = std::min(drawable, detail_depths.size());
+    for (std::size_t i = 0; i < count; ++i) {
+      if (model.level(static_cast<int>(i)).depth != detail_depths[i]) return {};
+    }
+  }
   if (depth != 0) {
     first = drawable;
     for (std::size_t i = 0; i < drawable; ++i) {
@@ -38,7 +48,13 @@ PerspectiveLayers perspectiveLayers(const ModelView& model, const PerspectiveVie
     depths[i] = level.depth;
   }
   result.count = count;
-  result.detail = perspectiveDetail(view, std::span<const int>(depths.data(), count), coarser);
+  if (!detail_depths.empty() && depth == 0) {
+    result.detail = perspectiveDetail(view, detail_depths, coarser, pixels_q8);
+    result.detail.finest = static_cast<int>(count) - 1;
+  } else {
+    result.detail =
+        perspectiveDetail(view, std::span<const int>(depths.data(), count), coarser, pixels_q8);
+  }
   return result;
 }
 

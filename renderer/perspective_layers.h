@@ -32,8 +32,14 @@ struct PerspectiveLayers {
 // leaf within a quarter pixel plus the additions' rounding of its exact projection. count 0 when
 // the model stores no such depth (or this build draws none so deep). `coarser`: as
 // perspectiveDetail's (the viewer's coarse frames while the eye moves; 0 elsewhere).
+// `detail_depths` (ascending; empty: the model's densely sampled depths): the depths detail by
+// distance chooses among, of which the model holds the first ones (a part of a partly held chunked
+// model, renderer/chunked_assembly.h): the frame is the whole list's, each part at most as fine as
+// the model's finest of them. count 0 when the model's depths are not a prefix of the list.
 PerspectiveLayers perspectiveLayers(const ModelView& model, const PerspectiveView& view, int depth,
                                     std::span<const UpperTreeIndex> indexes,
-                                    std::span<PerspectiveWalkTables> tables, int coarser = 0);
+                                    std::span<PerspectiveWalkTables> tables, int coarser = 0,
+                                    std::span<const int> detail_depths = {},
+                                    std::uint32_t pixels_q8 = kOnePixelQ8);
 
 }  // namespace octopoint

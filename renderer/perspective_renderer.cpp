@@ -1,11 +1,14 @@
 #include "renderer/perspective_renderer.h"
 
+#include <algorithm>
+
 #include "renderer/level_of_detail.h"
 #include "renderer/perspective_layers.h"
 
 namespace octopoint {
 
-PerspectiveRenderer::PerspectiveRenderer(const ModelView& model) : model_(model) {
+PerspectiveRenderer::PerspectiveRenderer(const ModelView& model, std::span<const int> detail_depths)
+    : model_(model) {
   std::array<std::uint64_t, format::kMaxLevels> voxels{};
   for (int i = 0; i < model.levelCount(); ++i) {
     const LevelView& level = model.level(i);
@@ -16,6 +19,11 @@ PerspectiveRenderer::PerspectiveRenderer(const ModelView& model) : model_(model)
     ++count_;
   }
   dense_ = denseDepthCount(std::span(voxels).first(count_));
+  if (!detail_depths.empty()) {
+    detail_count_ = std::min(detail_depths.size(), detail_depths_.size());
+    std::copy_n(detail_depths.begin(), detail_count_, detail_depths_.begin());
+    dense_ = std::min(count_, detail_count_);
+  }
   index_storage_.resize(count_);
   for (std::size_t i = 0; i < count_; ++i) {
     const LevelView& level = model.level(level_of_[i]);
@@ -29,7 +37,8 @@ bool PerspectiveRenderer::draw(const PerspectiveView& view, const Options& optio
                                const std::atomic<bool>* abort) {
   const PerspectiveLayers layers = perspectiveLayers(
       model_, view, options.depth, std::span<const UpperTreeIndex>(indexes_.data(), count_),
-      tables_, options.coarser);
+      tables_, options.coarser, std::span<const int>(detail_depths_.data(), detail_count_),
+      options.pixels_q8);
   if (layers.count == 0) return false;
   std::optional<OcclusionTiles> occlusion;
   if (options.cull) {

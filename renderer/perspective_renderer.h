@@ -32,12 +32,20 @@ class PerspectiveRenderer {
     int tile_shift = kOcclusionTileShift;  // its tiles: 2^shift pixels square, 1..6
     int coarser = 0;  // detail by distance: each part this many stored depths coarser than its
                       // distance asks, 0..8 (the viewer's coarse frames: 1)
+    // Detail by distance: the size on screen (Q.8 pixels, kOnePixelQ8..2^24) a voxel may span
+    // and still be fine enough; larger draws fewer points, the far parts coarser first (a point
+    // budget, tools/perspective_render.h).
+    std::uint32_t pixels_q8 = kOnePixelQ8;
   };
 
-  // `model` must outlive the renderer.
-  explicit PerspectiveRenderer(const ModelView& model);
+  // `model` must outlive the renderer. `detail_depths` (ascending; empty: the model's densely
+  // sampled depths, docs/splats.md): the depths detail by distance chooses among when the model
+  // holds only the first of them (a part of a partly held chunked model,
+  // renderer/chunked_assembly.h): each part of the frame as the whole list would draw it, but never
+  // finer than the model's finest.
+  explicit PerspectiveRenderer(const ModelView& model, std::span<const int> detail_depths = {});
 
-  // The depths detail by distance chooses among: the densely sampled ones (docs/splats.md).
+  // The depths detail by distance chooses among that the model holds.
   std::span<const int> detailDepths() const { return {depths_.data(), dense_}; }
 
   // Draws `view` into `frame` (cleared by the caller; its size the view's): each leaf within a
@@ -48,10 +56,12 @@ class PerspectiveRenderer {
 
  private:
   const ModelView& model_;
-  std::array<int, format::kMaxLevels> depths_{};    // of the levels drawn, ascending
-  std::array<int, format::kMaxLevels> level_of_{};  // the model's level index of each
-  std::size_t count_ = 0;                           // levels this build draws
-  std::size_t dense_ = 0;                           // of them densely sampled
+  std::array<int, format::kMaxLevels> depths_{};         // of the levels drawn, ascending
+  std::array<int, format::kMaxLevels> level_of_{};       // the model's level index of each
+  std::size_t count_ = 0;                                // levels this build draws
+  std::size_t dense_ = 0;                                // of them densely sampled
+  std::array<int, format::kMaxLevels> detail_depths_{};  // the constructor's, when given
+  std::size_t detail_count_ = 0;
   std::vector<std::vector<UpperTreeNode>> index_storage_;
   std::array<UpperTreeIndex, format::kMaxLevels> indexes_{};
   std::array<PerspectiveWalkTables, format::kMaxLevels> tables_{};  // per frame, by level

@@ -34,11 +34,16 @@ cv::Mat renderChunkedView(ProgressiveModel& model, const Camera& camera, Variant
   return bgr;
 }
 
-cv::Mat renderFromUrl(const std::string& url_text, const Camera& camera, Variant variant, bool fill,
-                      Rgb background, const UrlFetchOptions& options, std::string* report) {
+namespace {
+
+net::HttpUrl parseUrl(const std::string& text) {
   std::string why;
-  const std::optional<net::HttpUrl> url = net::parseHttpUrl(url_text, &why);
-  if (!url) throw ModelLoadError("--url: '" + url_text + "': " + why);
+  const std::optional<net::HttpUrl> url = net::parseHttpUrl(text, &why);
+  if (!url) throw ModelLoadError("--url: '" + text + "': " + why);
+  return *url;
+}
+
+net::StreamOptions streamOptions(const UrlFetchOptions& options) {
   net::StreamOptions stream_options;
   stream_options.byte_budget = options.bytes;
   stream_options.connections = options.bytes > 0 ? 1 : 2;
@@ -47,23 +52,51 @@ cv::Mat renderFromUrl(const std::string& url_text, const Camera& camera, Variant
   stream_options.give_up_after = 3;
   if (options.bytes > 0)
     stream_options.first_request_bytes = std::min<std::uint64_t>(options.bytes, 4096);
-  net::ModelStream stream(*url, stream_options);
+  return stream_options;
+}
+
+// A stream that failed (a lie about the file, a server that kept refusing) or settled without
+// the view (its chunks damaged every time they came) would draw an incomplete picture as if it
+// were the file's: refused instead. Only a byte budget or the timeout leaves a view unfinished.
+void refuseUnfinished(const net::StreamStatus& status, const std::string& url,
+                      const UrlFetchOptions& options) {
+  if (status.failed) throw ModelLoadError(status.error);
+  if (status.settled && !status.view_complete && options.bytes == 0) {
+    throw ModelLoadError(
+        url + ": " + std::to_string(status.chunks_pending) + " of the view's chunks came damaged " +
+        std::to_string(ProgressiveModel::kMaxChunkAttempts) + " times (" +
+        std::to_string(status.refused_items) + " refused; last: " + status.error + ")");
+  }
+}
+
+std::string headMissing(const std::string& url, const UrlFetchOptions& options,
+                        const net::StreamStatus& status) {
+  return url + ": the head did not arrive" +
+         (options.bytes > 0 ? " within " + std::to_string(options.bytes) + " bytes"
+                            : std::string()) +
+         (status.error.empty() ? std::string() : " (" + status.error + ")");
+}
+
+std::string streamReport(const net::StreamStatus& status) {
+  return std::to_string(status.bytes_received) + " of " + std::to_string(status.file_bytes) +
+         " bytes in " + std::to_string(status.requests) + " requests, " +
+         std::to_string(status.chunks_held) + " chunks held, " +
+         (status.view_complete ? "view complete"
+                               : std::to_string(status.chunks_pending) + " still wanted");
+}
+
+}  // namespace
+
+cv::Mat renderFromUrl(const std::string& url_text, const Camera& camera, Variant variant, bool fill,
+                      Rgb background, const UrlFetchOptions& options, std::string* report) {
+  const net::HttpUrl url = parseUrl(url_text);
+  net::ModelStream stream(url, streamOptions(options));
   stream.setView(camera);
   stream.start();
   const net::StreamStatus status =
       stream.waitUntilSettled(std::chrono::seconds(options.timeout_seconds));
   stream.stop();
-  // A stream that failed (a lie about the file, a server that kept refusing) or settled without
-  // the view (its chunks damaged every time they came) would draw an incomplete picture as if it
-  // were the file's: refused instead. Only a byte budget or the timeout leaves a view unfinished.
-  if (status.failed) throw ModelLoadError(status.error);
-  if (status.settled && !status.view_complete && options.bytes == 0) {
-    throw ModelLoadError(url->text() + ": " + std::to_string(status.chunks_pending) +
-                         " of the view's chunks came damaged " +
-                         std::to_string(ProgressiveModel::kMaxChunkAttempts) + " times (" +
-                         std::to_string(status.refused_items) + " refused; last: " + status.error +
-                         ")");
-  }
+  refuseUnfinished(status, url.text(), options);
   cv::Mat image;
   ProgressiveDrawStats stats;
   stream.withModel([&](ProgressiveModel* model) {
@@ -71,19 +104,9 @@ cv::Mat renderFromUrl(const std::string& url_text, const Camera& camera, Variant
     model->setPointBudget(options.point_budget);
     image = renderChunkedView(*model, camera, variant, fill, background, &stats);
   });
-  if (image.empty()) {
-    throw ModelLoadError(url->text() + ": the head did not arrive" +
-                         (options.bytes > 0 ? " within " + std::to_string(options.bytes) + " bytes"
-                                            : std::string()) +
-                         (status.error.empty() ? std::string() : " (" + status.error + ")"));
-  }
+  if (image.empty()) throw ModelLoadError(headMissing(url.text(), options, status));
   if (report != nullptr) {
-    *report = std::to_string(status.bytes_received) + " of " + std::to_string(status.file_bytes) +
-              " bytes in " + std::to_string(status.requests) + " requests, " +
-              std::to_string(status.chunks_held) + " chunks held, " +
-              (status.view_complete ? "view complete"
-                                    : std::to_string(status.chunks_pending) + " still wanted") +
-              ", depth " + std::to_string(stats.drawn_depth) + " drawn, " +
+    *report = streamReport(status) + ", depth " + std::to_string(stats.drawn_depth) + " drawn, " +
               std::to_string(stats.coarser_pieces) + " regions coarser" + overBudgetNote(stats);
   }
   return image;
@@ -94,5 +117,33 @@ std::string overBudgetNote(const ProgressiveDrawStats& stats) {
   return ", " + std::to_string(stats.over_budget_chunks) +
          " chunks one depth coarser for the point budget";
 }
+
+PerspectiveUrlSource::PerspectiveUrlSource(const std::string& url_text,
+                                           const UrlFetchOptions& options)
+    : url_text_(url_text), options_(options) {
+  const net::HttpUrl url = parseUrl(url_text);
+  url_text_ = url.text();
+  stream_ = std::make_unique<net::ModelStream>(url, streamOptions(options));
+  stream_->clearView();  // the views need the head (an eye in the scan's units, its cube)
+  stream_->start();
+  last_ = stream_->waitUntilSettled(std::chrono::seconds(options.timeout_seconds));
+  if (last_.failed) throw ModelLoadError(last_.error);
+  stream_->withModel([&](ProgressiveModel* model) {
+    if (model != nullptr) head_parts_ = assembleHeldParts(*model);
+  });
+  if (head_parts_.parts.empty()) throw ModelLoadError(headMissing(url_text_, options, last_));
+}
+
+PerspectiveUrlSource::~PerspectiveUrlSource() = default;
+
+const HeldParts& PerspectiveUrlSource::follow(const PerspectiveView& view) {
+  stream_->setView(view);
+  last_ = stream_->waitUntilSettled(std::chrono::seconds(options_.timeout_seconds));
+  refuseUnfinished(last_, url_text_, options_);
+  stream_->withModel([&](ProgressiveModel* model) { parts_ = assembleHeldParts(*model); });
+  return parts_;
+}
+
+std::string PerspectiveUrlSource::report() const { return streamReport(last_); }
 
 }  // namespace octopoint

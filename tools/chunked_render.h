@@ -4,12 +4,16 @@
 // allows (`--url URL --bytes N`).
 
 #include <cstdint>
+#include <memory>
 #include <opencv2/core.hpp>
 #include <string>
 
 #include "octopoint/camera.h"
+#include "octopoint/http.h"
 #include "octopoint/progressive.h"
 #include "octopoint/render.h"
+#include "renderer/chunked_assembly.h"
+#include "renderer/perspective.h"
 
 namespace octopoint {
 
@@ -32,5 +36,34 @@ std::string overBudgetNote(const ProgressiveDrawStats& stats);
 // line) when not even the head arrived. `report` gets a one-line summary.
 cv::Mat renderFromUrl(const std::string& url, const Camera& camera, Variant variant, bool fill,
                       Rgb background, const UrlFetchOptions& options, std::string* report);
+
+// A chunked model streamed from an HTTP URL for perspective views (--url with --perspective,
+// --eye or --path): the head first, then for each view what that view needs, in the perspective
+// fetch order (renderer/perspective_fetch.h), until the stream settles, the byte budget is spent
+// or the timeout passes; each view is drawn from the parts held then (renderer/chunked_assembly.h:
+// every region at the finest depth held there). One connection with a byte budget, as
+// renderFromUrl.
+class PerspectiveUrlSource {
+ public:
+  // Waits for the head: ModelLoadError (one line) when it does not come.
+  PerspectiveUrlSource(const std::string& url, const UrlFetchOptions& options);
+  ~PerspectiveUrlSource();
+  PerspectiveUrlSource(const PerspectiveUrlSource&) = delete;
+  PerspectiveUrlSource& operator=(const PerspectiveUrlSource&) = delete;
+
+  // The model as the head gives it (its base), for its cube's placement and palette.
+  const ModelView& headModel() const { return *head_parts_.parts.front()->view; }
+  // Fetches what `view` needs, then returns the parts held (valid until the next call).
+  const HeldParts& follow(const PerspectiveView& view);
+  // "N of M bytes in R requests, C chunks held, view complete" (or "K still wanted").
+  std::string report() const;
+
+ private:
+  std::string url_text_;
+  UrlFetchOptions options_;
+  std::unique_ptr<net::ModelStream> stream_;
+  HeldParts head_parts_, parts_;
+  net::StreamStatus last_;
+};
 
 }  // namespace octopoint

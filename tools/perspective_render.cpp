@@ -1,5 +1,6 @@
 #include "tools/perspective_render.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -41,14 +42,77 @@ ScanCube requireCube(const PerspectiveJob& job, const char* option) {
   return *cube;
 }
 
+// The frame of `view` from the job's model or parts (`held`, when the job has parts), each voxel
+// fine enough up to `pixels_q8` on screen.
+cv::Mat renderAt(const PerspectiveJob& job, const HeldParts* held, const PerspectiveView& view,
+                 std::uint32_t pixels_q8, PerspectiveDrawStats* stats) {
+  if (held != nullptr) {
+    return renderPerspectiveParts(*held, depthToDraw(job), view, job.background, stats, pixels_q8);
+  }
+  return renderPerspective(*job.model, depthToDraw(job), view, job.background, stats, pixels_q8);
+}
+
+// The voxel sizes on screen a point budget tries: one pixel, then up by 2^(1/4) a step (19,484 /
+// 2^14, rounded), to 2^16 pixels, where every part is at the coarsest depth.
+std::vector<std::uint32_t> budgetLadder() {
+  std::vector<std::uint32_t> ladder{kOnePixelQ8};
+  while (ladder.back() < (std::uint32_t{1} << 24)) {
+    const std::uint64_t next = (std::uint64_t{ladder.back()} * 19'484 + 8'192) >> 14;
+    ladder.push_back(static_cast<std::uint32_t>(std::min<std::uint64_t>(next, 1u << 24)));
+  }
+  return ladder;
+}
+
+// The frame of `view`: within the job's point budget, the first voxel size of the ladder at which
+// it hands at most that many points to the plot (found by doubling the step, then halving the
+// gap; fewer points at a larger size, so the same size every run). `pixels_q8` gets the size.
+cv::Mat renderView(const PerspectiveJob& job, const PerspectiveView& view,
+                   PerspectiveDrawStats* stats, std::uint32_t* pixels_q8 = nullptr) {
+  const HeldParts* held = job.parts ? &job.parts(view) : nullptr;
+  PerspectiveDrawStats drawn;
+  cv::Mat image = renderAt(job, held, view, kOnePixelQ8, &drawn);
+  std::uint32_t chosen = kOnePixelQ8;
+  if (job.point_budget > 0 && drawn.leaves > job.point_budget) {
+    static const std::vector<std::uint32_t> ladder = budgetLadder();
+    const auto fits = [&](std::size_t step) {
+      PerspectiveDrawStats probe;
+      static_cast<void>(renderAt(job, held, view, ladder[step], &probe));
+      return probe.leaves <= job.point_budget;
+    };
+    std::size_t over = 0, within = 1;  // ladder[over] draws too many
+    while (within < ladder.size() - 1 && !fits(within)) {
+      over = within;
+      within = std::min(ladder.size() - 1, within * 2);
+    }
+    while (within - over > 1) {
+      const std::size_t middle = over + (within - over) / 2;
+      (fits(middle) ? within : over) = middle;
+    }
+    chosen = ladder[within];
+    image = renderAt(job, held, view, chosen, &drawn);
+  }
+  if (stats != nullptr) *stats = drawn;
+  if (pixels_q8 != nullptr) *pixels_q8 = chosen;
+  return image;
+}
+
 std::string lookText(Angle yaw, Angle pitch, Angle roll) {
   return degreesText(yaw) + "," + degreesText(pitch) + "," + degreesText(roll);
 }
 
-std::string depthText(const PerspectiveJob& job, const PerspectiveDrawStats& stats) {
+// `pixels_q8`: the largest voxel size on screen the point budget chose (kOnePixelQ8: none).
+std::string depthText(const PerspectiveJob& job, const PerspectiveDrawStats& stats,
+                      std::uint32_t pixels_q8 = kOnePixelQ8) {
+  std::string budget;
+  if (job.point_budget > 0) {
+    char size[32];
+    std::snprintf(size, sizeof size, "%.2f", pixels_q8 / 256.0);
+    budget = " (point budget " + std::to_string(job.point_budget) + ": voxels up to " + size +
+             " pixels on screen)";
+  }
   return (job.depth ? "depth " + std::to_string(job.chosen_level->depth)
                     : std::string("depth by distance (auto)")) +
-         ", " + std::to_string(stats.leaves) + " points drawn";
+         ", " + std::to_string(stats.leaves) + " points drawn" + budget;
 }
 
 void drawOrbit(const PerspectiveOptions& options, const PerspectiveJob& job) {
@@ -56,8 +120,8 @@ void drawOrbit(const PerspectiveOptions& options, const PerspectiveJob& job) {
       job.camera, options.fov.value_or(Angle::fromDegrees(kDefaultFieldOfViewDegrees)));
   cli::checkOutputFile(job.output);
   PerspectiveDrawStats stats;
-  writePng(job.output,
-           renderPerspective(*job.model, depthToDraw(job), view, job.background, &stats));
+  std::uint32_t pixels_q8 = kOnePixelQ8;
+  writePng(job.output, renderView(job, view, &stats, &pixels_q8));
   // Where the eye is in the scan, so that --eye can take the view from here.
   std::string eye;
   if (const std::optional<ScanCube> cube = scanCube(job.model->cubePlacement())) {
@@ -65,8 +129,8 @@ void drawOrbit(const PerspectiveOptions& options, const PerspectiveJob& job) {
           lookText(view.camera.yaw, view.camera.pitch, view.camera.roll);
   }
   std::printf("%s: %s, perspective%s -> %s (%dx%d)\n", job.label.c_str(),
-              depthText(job, stats).c_str(), eye.c_str(), job.output.c_str(), job.camera.width,
-              job.camera.height);
+              depthText(job, stats, pixels_q8).c_str(), eye.c_str(), job.output.c_str(),
+              job.camera.width, job.camera.height);
 }
 
 void drawEye(const PerspectiveOptions& options, const PerspectiveJob& job) {
@@ -78,10 +142,10 @@ void drawEye(const PerspectiveOptions& options, const PerspectiveJob& job) {
                   job.camera.width, job.camera.height, "--eye");
   cli::checkOutputFile(job.output);
   PerspectiveDrawStats stats;
-  writePng(job.output,
-           renderPerspective(*job.model, depthToDraw(job), view, job.background, &stats));
+  std::uint32_t pixels_q8 = kOnePixelQ8;
+  writePng(job.output, renderView(job, view, &stats, &pixels_q8));
   std::printf("%s: %s, eye %s looking %s -> %s (%dx%d)\n", job.label.c_str(),
-              depthText(job, stats).c_str(), scanPointText(*options.eye).c_str(),
+              depthText(job, stats, pixels_q8).c_str(), scanPointText(*options.eye).c_str(),
               lookText(look.yaw, look.pitch, look.roll).c_str(), job.output.c_str(),
               job.camera.width, job.camera.height);
 }
@@ -197,17 +261,20 @@ void drawPath(const PerspectiveOptions& options, const PerspectiveJob& job) {
   cli::checkOutputFile(output.videoName());
   output.openVideo(job.camera.width, job.camera.height);
   PerspectiveDrawStats all;  // summed over the frames
+  std::uint32_t largest_q8 = kOnePixelQ8;
   for (std::size_t i = 0; i < views.size(); ++i) {
     PerspectiveDrawStats stats;
-    output.add(static_cast<int>(i),
-               renderPerspective(*job.model, depthToDraw(job), views[i], job.background, &stats));
+    std::uint32_t pixels_q8 = kOnePixelQ8;
+    output.add(static_cast<int>(i), renderView(job, views[i], &stats, &pixels_q8));
     all.leaves += stats.leaves;
+    largest_q8 = std::max(largest_q8, pixels_q8);
   }
   const bool video = output.hasVideo();
   output.finish();
   std::printf("%s: %s, %d frames along %s -> %s .. %s%s%s (%dx%d)\n", job.label.c_str(),
-              depthText(job, all).c_str(), options.frames, cli::displayPath(options.path).c_str(),
-              output.frameName(0).c_str(), output.frameName(options.frames - 1).c_str(),
+              depthText(job, all, largest_q8).c_str(), options.frames,
+              cli::displayPath(options.path).c_str(), output.frameName(0).c_str(),
+              output.frameName(options.frames - 1).c_str(),
               video ? " and " : ", no video (OpenCV's Motion JPEG writer refused it)",
               video ? output.videoName().c_str() : "", job.camera.width, job.camera.height);
 }
@@ -253,10 +320,9 @@ void checkPerspectiveOptions(const PerspectiveOptions& options, const OtherOptio
                      " places the eye in the scan: --yaw, --pitch, --roll, --zoom and --pan do "
                      "not apply (turn it with --look or the path's keys)");
   }
-  if (other.url || other.fill || other.sheet || other.style) {
+  if (other.fill || other.sheet || other.style) {
     throw cli::Error(std::string(options.mode()) +
-                     " draws a model file or an embedded model in colour: --url, --fill, --sheet "
-                     "and --style do not apply yet");
+                     " draws in colour: --fill, --sheet and --style do not apply yet");
   }
 }
 
@@ -273,21 +339,57 @@ PerspectiveView orbitPerspectiveView(const Camera& camera, Angle fov) {
   return view;
 }
 
-cv::Mat renderPerspective(const ModelView& model, int depth, const PerspectiveView& view,
-                          Rgb background, PerspectiveDrawStats* stats) {
-  Framebuffer frame(view.camera.width, view.camera.height);
-  frame.clear();
-  PerspectiveRenderer renderer(model);
-  PerspectiveRenderer::Options options;
-  options.depth = depth;
-  // No abort flag: it completes; `depth` is a stored one (the caller chose it from the model).
-  static_cast<void>(renderer.draw(view, options, frame, stats));
+namespace {
+
+cv::Mat frameToBgr(const Framebuffer& frame, const ModelView& model, const PerspectiveView& view,
+                   Rgb background) {
   cv::Mat rgb(view.camera.height, view.camera.width, CV_8UC3);
   // The frame is sized to the camera: resolveToRgb cannot refuse it.
   static_cast<void>(resolveToRgb(frame, model, background, {rgb.data, rgb.total() * 3}));
   cv::Mat bgr;
   cv::cvtColor(rgb, bgr, cv::COLOR_RGB2BGR);
   return bgr;
+}
+
+}  // namespace
+
+cv::Mat renderPerspective(const ModelView& model, int depth, const PerspectiveView& view,
+                          Rgb background, PerspectiveDrawStats* stats, std::uint32_t pixels_q8) {
+  Framebuffer frame(view.camera.width, view.camera.height);
+  frame.clear();
+  PerspectiveRenderer renderer(model);
+  PerspectiveRenderer::Options options;
+  options.depth = depth;
+  options.pixels_q8 = pixels_q8;
+  // No abort flag: it completes; `depth` is a stored one (the caller chose it from the model).
+  // The renderer adds to the counts it is given: these are this frame's.
+  PerspectiveDrawStats drawn;
+  static_cast<void>(renderer.draw(view, options, frame, &drawn));
+  if (stats != nullptr) *stats = drawn;
+  return frameToBgr(frame, model, view, background);
+}
+
+cv::Mat renderPerspectiveParts(const HeldParts& parts, int depth, const PerspectiveView& view,
+                               Rgb background, PerspectiveDrawStats* stats,
+                               std::uint32_t pixels_q8) {
+  Framebuffer frame(view.camera.width, view.camera.height);
+  frame.clear();
+  PerspectiveDrawStats all;
+  for (const std::unique_ptr<AssembledModel>& part : parts.parts) {
+    PerspectiveRenderer renderer(*part->view, parts.detailDepths());
+    PerspectiveRenderer::Options options;
+    options.depth = depth;
+    options.pixels_q8 = pixels_q8;
+    PerspectiveDrawStats drawn;
+    // A part that does not hold `depth` draws nothing (false): the others do.
+    if (renderer.draw(view, options, frame, &drawn)) {
+      all.leaves += drawn.leaves;
+      all.hidden_subtrees += drawn.hidden_subtrees;
+    }
+  }
+  if (stats != nullptr) *stats = all;
+  // Every part has the head's palette.
+  return frameToBgr(frame, *parts.parts.front()->view, view, background);
 }
 
 void runPerspective(const PerspectiveOptions& options, const PerspectiveJob& job) {

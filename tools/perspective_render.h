@@ -3,6 +3,8 @@
 // camera of the orthographic view seen in perspective; --eye/--look, an eye placed in the scan's
 // own units; --path/--frames, a camera path drawn to numbered PNGs and a video.
 
+#include <cstdint>
+#include <functional>
 #include <opencv2/core.hpp>
 #include <optional>
 #include <string>
@@ -10,6 +12,7 @@
 #include "cli/arguments.h"
 #include "octopoint/camera.h"
 #include "octopoint/model.h"
+#include "renderer/chunked_assembly.h"
 #include "renderer/perspective.h"
 #include "renderer/perspective_walk.h"
 #include "tools/scan_eye.h"
@@ -39,7 +42,7 @@ bool parsePerspectiveOption(cli::ArgumentReader& args, PerspectiveOptions& optio
 // What else the command line asked for, for the checks between the options.
 struct OtherOptions {
   bool orbit_camera = false;  // --yaw, --pitch, --roll, --zoom or --pan given
-  bool url = false;
+  bool url = false;           // allowed: a chunked model streamed for the perspective view
   bool fill = false;
   bool sheet = false;
   bool style = false;  // a style other than colour
@@ -54,8 +57,10 @@ PerspectiveView orbitPerspectiveView(const Camera& camera, Angle fov);
 // Draws `model` with `view` on `background`, as BGR for OpenCV: its stored `depth`, or with 0
 // each part at the depth its distance asks for (detail by distance); occlusion culling on.
 // `stats` (may be null) learns what was drawn.
+// `pixels_q8`: PerspectiveRenderer::Options::pixels_q8 (a point budget's coarser frames).
 cv::Mat renderPerspective(const ModelView& model, int depth, const PerspectiveView& view,
-                          Rgb background, PerspectiveDrawStats* stats = nullptr);
+                          Rgb background, PerspectiveDrawStats* stats = nullptr,
+                          std::uint32_t pixels_q8 = kOnePixelQ8);
 
 // What one run draws: the model and its label, the depth asked for and the level it chose (--depth;
 // without it each part of the frame is drawn at the depth its distance asks for), the orthographic
@@ -69,7 +74,21 @@ struct PerspectiveJob {
   Camera camera;
   std::string output;
   Rgb background;
+  // A chunked model (a file, or streamed by --url): the parts each view is drawn from, held when
+  // it is drawn (renderer/chunked_assembly.h); `model` then gives the cube's placement and the
+  // palette. None: `model` itself.
+  std::function<const HeldParts&(const PerspectiveView&)> parts;
+  // --point-budget (0: none): each frame is drawn with the least voxel size on screen, from one
+  // pixel up by steps of 2^(1/4), at which it hands at most this many points to the plot (the
+  // coarsest when none does): coarser where voxels are smallest on screen, the far parts first.
+  std::uint64_t point_budget = 0;
 };
+
+// Draws `parts` with `view` on `background` as renderPerspective draws one model: the parts one
+// after another into one frame, each with the detail of parts.detailDepths().
+cv::Mat renderPerspectiveParts(const HeldParts& parts, int depth, const PerspectiveView& view,
+                               Rgb background, PerspectiveDrawStats* stats = nullptr,
+                               std::uint32_t pixels_q8 = kOnePixelQ8);
 
 // Draws and writes what `options` asks for, prints one line saying what; cli::Error, one line,
 // leaving no file, when it cannot.

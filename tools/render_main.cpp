@@ -52,14 +52,18 @@ nor --file nor --url it draws the default model embedded in this binary.
                      depth the view needs
   --url URL          a chunked model on an HTTP server with Range requests (octopoint-serve,
                      nginx, ...), http://HOST:PORT/NAME.oct: fetches what this view needs, coarse
-                     first, then draws it (docs/streaming.md)
+                     first, then draws it (docs/streaming.md); with --perspective, --eye or
+                     --path too (each frame of a path fetches what it needs, in turn)
   --bytes N          with --url: stop after N bytes and draw what they give (one connection, so
                      the same N bytes every time)
   --timeout S        with --url: draw what arrived after S seconds at most, 1..86400 (default 60)
   --point-budget N   a chunked model (--url, or --file of a chunked file): draw at most about N
                      points, 1..2^40 (default: no budget). When the view's visible chunks hold
                      more at the depth it needs, those largest on screen, then nearest, keep it
-                     and the rest are drawn one depth coarser (docs/streaming.md, "Point budget")
+                     and the rest are drawn one depth coarser (docs/streaming.md, "Point budget").
+                     In perspective (any model): the frame is drawn coarser where its voxels are
+                     smallest on screen, the far parts first, until it draws at most N points
+                     (docs/perspective.md, "Point budget")
   --yaw DEG          turn about the vertical axis, |DEG| <= 1e6 (default 0; the scan as its
                      sensor saw it)
   --pitch DEG        turn about the horizontal axis (default 0)
@@ -71,8 +75,10 @@ nor --file nor --url it draws the default model embedded in this binary.
                      where the centre's depth is as large on screen as in the orthographic view
                      of the same zoom (so a narrow --fov converges to it); colour only, no
                      --fill, --sheet or --style yet (docs/perspective.md). A chunked file is
-                     drawn from its complete depths, the same frame as the one-file model of
-                     those depths; not --url yet
+                     the same frame as the one-file model of its depths; with --url the stream
+                     follows the perspective view (nearest and largest on screen first, each
+                     region only as fine as its distance asks) and each region is drawn at the
+                     finest depth held there (with --bytes N: coarser where finer did not come)
   --eye X,Y,Z        draw in perspective from an eye at X,Y,Z in the scan's own units and axes
                      (the frame octopoint-prepare --crop takes; --info prints where the model's
                      cube lies in it); anywhere within 128 cube edges of the cube's centre, inside
@@ -265,6 +271,11 @@ void checkCombination(const Options& options) {
     throw cli::Error("--style " + std::string(styleName(options.style.style)) +
                      ": --url draws a chunked model, in colour only (it stores no normals)");
   }
+  if (options.perspective.any() && options.depth && options.source.point_budget > 0) {
+    throw cli::Error(std::string(options.perspective.mode()) +
+                     " --point-budget chooses each part's depth by distance: --depth N does not "
+                     "apply");
+  }
   checkPerspectiveOptions(options.perspective,
                           {options.orbit_camera, url, options.fill, options.sheet > 0,
                            options.style.style != Style::kColour});
@@ -362,8 +373,27 @@ void listModels() {
   }
 }
 
+// A chunked model fetched by URL in perspective: each view fetches what it needs and is drawn from
+// what is held then, every region at the finest depth held there (tools/chunked_render.h).
+int renderUrlPerspective(const Options& options) {
+  // Before fetching, as renderUrl (a path's frames are checked by name when it draws them).
+  if (options.perspective.path.empty()) cli::checkOutputFile(options.output);
+  PerspectiveUrlSource source(options.source.url, options.fetch);
+  const ModelView& model = source.headModel();
+  PerspectiveJob job{&model,         options.source.url, std::nullopt, &model.finestLevel(),
+                     options.camera, options.output,     kBackground,  {}};
+  job.parts = [&source](const PerspectiveView& view) -> const HeldParts& {
+    return source.follow(view);
+  };
+  job.point_budget = options.fetch.point_budget;
+  runPerspective(options.perspective, job);
+  std::printf("%s: %s\n", options.source.url.c_str(), source.report().c_str());
+  return 0;
+}
+
 // A model fetched by URL, drawn at the depth the view needs.
 int renderUrl(const Options& options) {
+  if (options.perspective.any()) return renderUrlPerspective(options);
   cli::checkOutputFile(
       options.output);  // before fetching: a FIFO, a device or a directory is refused
   std::string report;
@@ -503,8 +533,10 @@ int renderFrame(const ModelView& model, const LevelView& level, FrameStyler& sty
 
 int renderPerspectiveViews(const ModelView& model, const LevelView& level,
                            const std::string& model_label, const Options& options) {
-  runPerspective(options.perspective, {&model, model_label, options.depth, &level, options.camera,
-                                       options.output, kBackground});
+  PerspectiveJob job{&model,         model_label,    options.depth, &level,
+                     options.camera, options.output, kBackground,   {}};
+  job.point_budget = options.fetch.point_budget;
+  runPerspective(options.perspective, job);
   return 0;
 }
 
@@ -512,10 +544,6 @@ int renderPerspectiveViews(const ModelView& model, const LevelView& level,
 // complete file: the same model as prepared in one file), each part of the frame at the depth its
 // distance asks for among them.
 int renderChunkedPerspective(const Options& options, const LoadedModel& loaded) {
-  if (options.fetch.point_budget > 0) {
-    throw cli::Error(loaded.label + ": " + options.perspective.mode() +
-                     " draws a chunked file whole: --point-budget does not apply yet");
-  }
   const std::unique_ptr<AssembledModel> assembled = assembleChunked(*loaded.chunked);
   if (assembled == nullptr) throw cli::Error(loaded.label + ": its chunks do not make one model");
   const std::string label = loaded.label + " (chunked, depths " +
@@ -523,7 +551,22 @@ int renderChunkedPerspective(const Options& options, const LoadedModel& loaded) 
                             std::to_string(assembled->view->finestLevel().depth) + " of " +
                             std::to_string(assembled->chunked_levels) + " levels)";
   const LevelView& level = chooseLevel(*assembled->view, label, options);
-  return renderPerspectiveViews(*assembled->view, level, label, options);
+  // Drawn from its held parts, as a stream of it is: a whole file is one part, the assembled model
+  // of its densely sampled depths. `--depth N` draws the assembled model's depth N, sparse or not.
+  const HeldParts parts = assembleHeldParts(*loaded.chunked);
+  PerspectiveJob job{assembled->view ? &*assembled->view : nullptr,
+                     label,
+                     options.depth,
+                     &level,
+                     options.camera,
+                     options.output,
+                     kBackground,
+                     {}};
+  if (!options.depth)
+    job.parts = [&parts](const PerspectiveView&) -> const HeldParts& { return parts; };
+  job.point_budget = options.fetch.point_budget;
+  runPerspective(options.perspective, job);
+  return 0;
 }
 
 int run(int argc, char** argv) {
@@ -547,9 +590,10 @@ int run(int argc, char** argv) {
                      ": a chunked model is drawn in colour only (it stores no normals)");
   }
   if (loaded->chunked) return renderChunked(options, *loaded);
-  if (options.fetch.point_budget > 0) {
+  if (options.fetch.point_budget > 0 && !options.perspective.any()) {
     throw cli::Error(loaded->label +
-                     ": --point-budget applies to a chunked model (octopoint-prepare --chunked)");
+                     ": --point-budget applies to a chunked model (octopoint-prepare --chunked) "
+                     "or a perspective view");
   }
   const ModelView& model = *loaded->view;
   const std::string& model_label = loaded->label;

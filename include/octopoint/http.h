@@ -17,6 +17,10 @@
 #include "octopoint/camera.h"
 #include "octopoint/progressive.h"
 
+namespace octopoint {
+struct PerspectiveView;  // renderer/perspective.h
+}
+
 // An http:// URL as the client takes it: http://HOST[:PORT]/PATH. No https, no user info.
 
 namespace octopoint::net {
@@ -155,8 +159,13 @@ class ModelStream {
 
   void start();
   void stop();
-  // The view the fetch order follows; takes effect for the next request.
+  // The view the fetch order follows; takes effect for the next request. A perspective view
+  // follows renderer/perspective_fetch.h's order (nearest and largest on screen first, each region
+  // only as fine as its distance asks). clearView(): no view, nothing fetched but the head (set
+  // before start() when the view needs the head, as an eye placed in the scan's units does).
   void setView(const Camera& camera);
+  void setView(const PerspectiveView& view);
+  void clearView();
   [[nodiscard]] StreamStatus status();
   // Calls `use(model)` under the stream's lock; `model` is null until the head has arrived.
   void withModel(const std::function<void(ProgressiveModel*)>& use);

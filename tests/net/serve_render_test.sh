@@ -19,6 +19,26 @@ for view in "--yaw 0" "--yaw 30 --pitch -20" "--zoom 4 --yaw 10" "--zoom 0.5 --s
   "$render" --url "$url" $view --no-fill -o "$work/url.png" >/dev/null
   cmp -s "$work/file.png" "$work/url.png" || fail "--url and --file differ for view '$view'"
 done
+# In perspective (docs/perspective.md, "Chunked models"): the stream follows the perspective view,
+# and the whole view is the file's picture; a cut stream draws the same picture every time, each
+# region at the finest depth it holds (tests/chunked/held_parts_test.cpp: without holes).
+for view in "--perspective --yaw 30 --pitch 15" "--perspective --zoom 3 --fov 90 --size 400x300"; do
+  # shellcheck disable=SC2086
+  "$render" --file "$work/models/sphere.oct" $view -o "$work/file.png" >/dev/null
+  # shellcheck disable=SC2086
+  "$render" --url "$url" $view -o "$work/url.png" >"$work/url.out"
+  cmp -s "$work/file.png" "$work/url.png" || fail "--url and --file differ for view '$view'"
+  grep -q "view complete" "$work/url.out" || fail "--url $view: $(cat "$work/url.out")"
+done
+"$render" --file "$work/models/sphere.oct" --perspective --zoom 3 --point-budget 2000 -o "$work/file.png" >/dev/null
+"$render" --url "$url" --perspective --zoom 3 --point-budget 2000 -o "$work/url.png" >"$work/url.out"
+cmp -s "$work/file.png" "$work/url.png" || fail "--perspective --point-budget: --url and --file differ"
+grep -q "point budget 2000" "$work/url.out" || fail "--perspective --point-budget: $(cat "$work/url.out")"
+"$render" --url "$url" --perspective --zoom 3 --bytes 9000 -o "$work/cut_a.png" >/dev/null
+"$render" --url "$url" --perspective --zoom 3 --bytes 9000 -o "$work/cut_b.png" >/dev/null
+cmp -s "$work/cut_a.png" "$work/cut_b.png" || fail "--perspective --bytes 9000 drew two different pictures"
+"$render" --url "$url" --perspective --zoom 3 -o "$work/all.png" >/dev/null
+cmp -s "$work/cut_a.png" "$work/all.png" && fail "--perspective: 9000 bytes drew the complete picture"
 "$render" --url "$url" --bytes 3000 -o "$work/bytes_a.png" >/dev/null
 "$render" --url "$url" --bytes 3000 -o "$work/bytes_b.png" >/dev/null
 cmp -s "$work/bytes_a.png" "$work/bytes_b.png" || fail "--bytes 3000 drew two different pictures"
@@ -39,4 +59,4 @@ for bad in "http://127.0.0.1:$SERVE_PORT/nothere.oct|404" "http://127.0.0.1:$SER
   case "$message" in *"${bad#*|}"*) ;; *) fail "${bad%|*}: '$message' does not say '${bad#*|}'";; esac
   [ ! -e "$work/bad.png" ] || fail "${bad%|*} left a PNG"
 done
-echo "ok: octopoint-serve on port $SERVE_PORT, --url matches --file, --bytes is repeatable, --point-budget"
+echo "ok: octopoint-serve on port $SERVE_PORT, --url matches --file (also in perspective), --bytes is repeatable, --point-budget"
