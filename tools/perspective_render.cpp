@@ -12,6 +12,7 @@
 #include "cli/output_file.h"
 #include "cli/real_numbers.h"
 #include "cli/text.h"
+#include "renderer/perspective_depth.h"
 #include "renderer/perspective_renderer.h"
 #include "tools/camera_path.h"
 #include "tools/png_file.h"
@@ -56,8 +57,8 @@ void drawOrbit(const PerspectiveOptions& options, const PerspectiveJob& job) {
       job.camera, options.fov.value_or(Angle::fromDegrees(kDefaultFieldOfViewDegrees)));
   cli::checkOutputFile(job.output);
   PerspectiveDrawStats stats;
-  writePng(job.output,
-           renderPerspective(*job.model, depthToDraw(job), view, job.background, &stats));
+  writePng(job.output, renderPerspective(*job.model, depthToDraw(job), view, job.background, &stats,
+                                         job.finish));
   // Where the eye is in the scan, so that --eye can take the view from here.
   std::string eye;
   if (const std::optional<ScanCube> cube = scanCube(job.model->cubePlacement())) {
@@ -78,8 +79,8 @@ void drawEye(const PerspectiveOptions& options, const PerspectiveJob& job) {
                   job.camera.width, job.camera.height, "--eye");
   cli::checkOutputFile(job.output);
   PerspectiveDrawStats stats;
-  writePng(job.output,
-           renderPerspective(*job.model, depthToDraw(job), view, job.background, &stats));
+  writePng(job.output, renderPerspective(*job.model, depthToDraw(job), view, job.background, &stats,
+                                         job.finish));
   std::printf("%s: %s, eye %s looking %s -> %s (%dx%d)\n", job.label.c_str(),
               depthText(job, stats).c_str(), scanPointText(*options.eye).c_str(),
               lookText(look.yaw, look.pitch, look.roll).c_str(), job.output.c_str(),
@@ -179,8 +180,8 @@ void drawPath(const PerspectiveOptions& options, const PerspectiveJob& job) {
   PerspectiveDrawStats all;  // summed over the frames
   for (std::size_t i = 0; i < views.size(); ++i) {
     PerspectiveDrawStats stats;
-    output.add(static_cast<int>(i),
-               renderPerspective(*job.model, depthToDraw(job), views[i], job.background, &stats));
+    output.add(static_cast<int>(i), renderPerspective(*job.model, depthToDraw(job), views[i],
+                                                      job.background, &stats, job.finish));
     all.leaves += stats.leaves;
   }
   const bool video = output.hasVideo();
@@ -230,10 +231,10 @@ void checkPerspectiveOptions(const PerspectiveOptions& options, const OtherOptio
                      " places the eye in the scan: --yaw, --pitch, --roll, --zoom and --pan do "
                      "not apply (turn it with --look or the path's keys)");
   }
-  if (other.url || other.fill || other.sheet || other.style) {
+  if (other.url || other.sheet) {
     throw cli::Error(std::string(options.mode()) +
-                     " draws a model file or an embedded model in colour: --url, --fill, --sheet "
-                     "and --style do not apply yet");
+                     " draws a model file or an embedded model: --url and --sheet do not apply "
+                     "yet");
   }
 }
 
@@ -251,17 +252,29 @@ PerspectiveView orbitPerspectiveView(const Camera& camera, Angle fov) {
 }
 
 cv::Mat renderPerspective(const ModelView& model, int depth, const PerspectiveView& view,
-                          Rgb background, PerspectiveDrawStats* stats) {
+                          Rgb background, PerspectiveDrawStats* stats,
+                          const PerspectiveFinish& finish) {
   Framebuffer frame(view.camera.width, view.camera.height);
-  frame.clear();
+  frame.clear(finish.styler != nullptr ? finish.styler->payload() : PixelPayload::kColour);
   PerspectiveRenderer renderer(model);
   PerspectiveRenderer::Options options;
   options.depth = depth;
-  // No abort flag: it completes; `depth` is a stored one (the caller chose it from the model).
+  // No abort flag: it completes; `depth` is a stored one (the caller chose it from the model),
+  // and a frame for normals is asked only of a model that has them (FrameStyler::setOptions).
   static_cast<void>(renderer.draw(view, options, frame, stats));
+  if (finish.fill) {
+    const int finest = depth != 0 ? depth : renderer.detailDepths().back();
+    if (HoleFiller(frame.width()).fill(frame, perspectiveBridge(view, finest)).refused)
+      throw cli::Error("hole filling refused the frame");
+  }
   cv::Mat rgb(view.camera.height, view.camera.width, CV_8UC3);
-  // The frame is sized to the camera: resolveToRgb cannot refuse it.
-  static_cast<void>(resolveToRgb(frame, model, background, {rgb.data, rgb.total() * 3}));
+  // The frame is sized to the camera: neither resolveToRgb nor the styler can refuse it.
+  if (finish.styler != nullptr) {
+    finish.styler->beginPerspectiveFrame(view.world_to_camera, view.focal_q16);
+    static_cast<void>(finish.styler->resolve(frame, {rgb.data, rgb.total() * 3}));
+  } else {
+    static_cast<void>(resolveToRgb(frame, model, background, {rgb.data, rgb.total() * 3}));
+  }
   cv::Mat bgr;
   cv::cvtColor(rgb, bgr, cv::COLOR_RGB2BGR);
   return bgr;

@@ -10,6 +10,7 @@
 #include "cli/arguments.h"
 #include "octopoint/camera.h"
 #include "octopoint/model.h"
+#include "octopoint/styles.h"
 #include "renderer/perspective.h"
 #include "renderer/perspective_walk.h"
 #include "tools/scan_eye.h"
@@ -38,9 +39,7 @@ bool parsePerspectiveOption(cli::ArgumentReader& args, PerspectiveOptions& optio
 struct OtherOptions {
   bool orbit_camera = false;  // --yaw, --pitch, --roll, --zoom or --pan given
   bool url = false;
-  bool fill = false;
   bool sheet = false;
-  bool style = false;  // a style other than colour
 };
 // Throws cli::Error, one line, for options that exclude or need each other.
 void checkPerspectiveOptions(const PerspectiveOptions& options, const OtherOptions& other);
@@ -49,11 +48,19 @@ void checkPerspectiveOptions(const PerspectiveOptions& options, const OtherOptio
 // when the camera is refused.
 PerspectiveView orbitPerspectiveView(const Camera& camera, Angle fov);
 
+// How a perspective frame is finished: hole filling with the perspective bridge rule
+// (renderer/perspective_depth.h), and a style (null: colour, resolveToRgb).
+struct PerspectiveFinish {
+  bool fill = false;
+  FrameStyler* styler = nullptr;  // options set; its background is the frame's
+};
+
 // Draws `model` with `view` on `background`, as BGR for OpenCV: its stored `depth`, or with 0
 // each part at the depth its distance asks for (detail by distance); occlusion culling on.
 // `stats` (may be null) learns what was drawn.
 cv::Mat renderPerspective(const ModelView& model, int depth, const PerspectiveView& view,
-                          Rgb background, PerspectiveDrawStats* stats = nullptr);
+                          Rgb background, PerspectiveDrawStats* stats = nullptr,
+                          const PerspectiveFinish& finish = {});
 
 // What one run draws: the model and its label, the depth asked for and the level it chose (--depth;
 // without it each part of the frame is drawn at the depth its distance asks for), the orthographic
@@ -67,6 +74,7 @@ struct PerspectiveJob {
   Camera camera;
   std::string output;
   Rgb background;
+  PerspectiveFinish finish;  // --fill, --style
 };
 
 // Draws and writes what `options` asks for, prints one line saying what; cli::Error, one line,

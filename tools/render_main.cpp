@@ -69,14 +69,14 @@ nor --file nor --url it draws the default model embedded in this binary.
   --pan X,Y          move the picture X pixels right and Y down, each |.| <= 1e6 (default 0,0)
   --perspective      draw in perspective: the eye on the line of sight through the model's centre,
                      where the centre's depth is as large on screen as in the orthographic view
-                     of the same zoom (so a narrow --fov converges to it); colour only, no
-                     --fill, --sheet or --style yet (docs/perspective.md). A chunked file is
+                     of the same zoom (so a narrow --fov converges to it); --fill and --style
+                     apply, --sheet not yet (docs/perspective.md). A chunked file is
                      drawn from its complete depths, the same frame as the one-file model of
                      those depths; not --url yet
   --eye X,Y,Z        draw in perspective from an eye at X,Y,Z in the scan's own units and axes
                      (the frame octopoint-prepare --crop takes; --info prints where the model's
                      cube lies in it); anywhere within 128 cube edges of the cube's centre, inside
-                     the model too. Colour only, no --fill, --sheet or --style yet; needs a model
+                     the model too. --fill and --style apply, --sheet not yet; needs a model
                      that records its cube's placement (prepared since format version 4)
   --look YAW,PITCH[,ROLL]
                      with --eye: where the eye looks, in degrees (default 0,0: the way the sensor
@@ -256,9 +256,7 @@ void checkCombination(const Options& options) {
     throw cli::Error("--style " + std::string(styleName(options.style.style)) +
                      ": --url draws a chunked model, in colour only (it stores no normals)");
   }
-  checkPerspectiveOptions(options.perspective,
-                          {options.orbit_camera, url, options.fill, options.sheet > 0,
-                           options.style.style != Style::kColour});
+  checkPerspectiveOptions(options.perspective, {options.orbit_camera, url, options.sheet > 0});
   if (options.info &&
       (url || options.perspective.any() || options.sheet > 0 || !options.output.empty())) {
     throw cli::Error(
@@ -492,10 +490,18 @@ int renderFrame(const ModelView& model, const LevelView& level, FrameStyler& sty
   return 0;
 }
 
+// `styler` (null: colour) draws --style.
 int renderPerspectiveViews(const ModelView& model, const LevelView& level,
-                           const std::string& model_label, const Options& options) {
-  runPerspective(options.perspective, {&model, model_label, options.depth, &level, options.camera,
-                                       options.output, kBackground});
+                           const std::string& model_label, const Options& options,
+                           FrameStyler* styler = nullptr) {
+  runPerspective(options.perspective, {&model,
+                                       model_label,
+                                       options.depth,
+                                       &level,
+                                       options.camera,
+                                       options.output,
+                                       kBackground,
+                                       {options.fill, styler}});
   return 0;
 }
 
@@ -530,13 +536,13 @@ int run(int argc, char** argv) {
     std::fputs(modelInfo(*loaded).c_str(), stdout);
     return 0;
   }
-  if (loaded->chunked && options.perspective.any())
-    return renderChunkedPerspective(options, *loaded);
   if (loaded->chunked && options.style.style != Style::kColour) {
     throw cli::Error("--style " + std::string(styleName(options.style.style)) + ": " +
                      loaded->label +
                      ": a chunked model is drawn in colour only (it stores no normals)");
   }
+  if (loaded->chunked && options.perspective.any())
+    return renderChunkedPerspective(options, *loaded);
   if (loaded->chunked) return renderChunked(options, *loaded);
   if (options.fetch.point_budget > 0) {
     throw cli::Error(loaded->label +
@@ -550,7 +556,10 @@ int run(int argc, char** argv) {
   style.background = kBackground;
   setStyle(styler, style, model_label, options.variant);
   // The perspective views check their camera, then the output (tools/perspective_render.h).
-  if (options.perspective.any()) return renderPerspectiveViews(model, level, model_label, options);
+  if (options.perspective.any()) {
+    return renderPerspectiveViews(model, level, model_label, options,
+                                  style.style != Style::kColour ? &styler : nullptr);
+  }
   cli::checkOutputFile(
       options.output);  // before drawing: a FIFO, a device or a directory is refused
   if (options.sheet > 0) return renderSheet(model, model_label, options, style);
