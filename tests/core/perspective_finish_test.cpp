@@ -8,8 +8,8 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
-#include <cstdio>
 #include <cstdint>
+#include <cstdio>
 #include <span>
 #include <string>
 #include <vector>
@@ -80,7 +80,8 @@ TEST(PerspectiveDepthCode, IsMonotonicWithAStepOfAtMostTwoToTheMinusElevenOfTheD
     z += 1 + z / 997;  // every octave, densely
   }
   EXPECT_EQ(perspectiveNormalDepthCode(-5), 0u);
-  EXPECT_EQ(perspectiveNormalDepthCode(INT64_MAX), perspectiveNormalDepthCode(std::int64_t{1} << 34));
+  EXPECT_EQ(perspectiveNormalDepthCode(INT64_MAX),
+            perspectiveNormalDepthCode(std::int64_t{1} << 34));
 }
 
 TEST(PerspectiveFinish, AFrameWithNormalsCoversWhatTheColourFrameCoversCulledOrNot) {
