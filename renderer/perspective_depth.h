@@ -34,10 +34,8 @@ inline constexpr int kNormalDepthMantissaBits = 11;
 // z <= z' gives code(z) <= code(z'). The largest is (28 - 11) << 11 | 2047 < 2^16.
 inline std::uint32_t perspectiveNormalDepthCode(std::int64_t z) {
   constexpr std::uint64_t kLargest = (std::uint64_t{1} << 28) - 1;
-  const std::uint64_t u =
-      std::min<std::uint64_t>(static_cast<std::uint64_t>(std::max<std::int64_t>(z, 0)) >>
-                                  kNormalDepthUnitShift,
-                              kLargest);
+  const std::uint64_t u = std::min<std::uint64_t>(
+      static_cast<std::uint64_t>(std::max<std::int64_t>(z, 0)) >> kNormalDepthUnitShift, kLargest);
   constexpr std::uint64_t kLinear = std::uint64_t{1} << kNormalDepthMantissaBits;
   if (u < kLinear) return static_cast<std::uint32_t>(u);
   const int bits = std::bit_width(u);  // 12..28
