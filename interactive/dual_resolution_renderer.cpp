@@ -1,5 +1,6 @@
 #include <algorithm>
 #include <cassert>
+#include <span>
 
 #include "fixedpoint/trig.h"
 #include "octopoint/camera.h"
@@ -8,6 +9,7 @@
 #include "renderer/collision_move.h"
 #include "renderer/level_of_detail.h"
 #include "renderer/perspective.h"
+#include "renderer/perspective_depth.h"
 #include "renderer/perspective_renderer.h"
 
 namespace octopoint {
@@ -491,11 +493,21 @@ bool DualResolutionRenderer::drawWalk(Slot& slot, Worker& worker, const std::ato
       buildPerspectiveView(camera, kDefaultFractionBits, &view) == PerspectiveError::kNone) {
     PerspectiveRenderer::Options options;  // detail by distance, culled: octopoint-render --eye's
     options.coarser = slot.info.source == FrameSource::kCoarse ? 1 : 0;
-    if (worker.perspective->detailDepths().empty()) {
+    const std::span<const int> depths = worker.perspective->detailDepths();
+    if (depths.empty()) {
       slot.info.depth = 0;
     } else {
       if (!worker.perspective->draw(view, options, slot.frame, nullptr, abort)) return false;
-      slot.info.depth = worker.perspective->detailDepths().back();
+      slot.info.depth = depths.back();
+      // The fill's bridge takes the finest depth the frame drew: a coarse frame's is one coarser.
+      const std::size_t finest =
+          depths.size() - 1 -
+          std::min(static_cast<std::size_t>(options.coarser), depths.size() - 1);
+      // A refused fill cannot happen (fitBuffers made the filler as wide as the frame).
+      if (slot.info.view.fill &&
+          worker.filler.fill(slot.frame, perspectiveBridge(view, depths[finest])).refused) {
+        return false;
+      }
     }
   }
   slot.info.checksum = frameChecksum(slot.frame);

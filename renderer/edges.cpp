@@ -27,9 +27,6 @@ void CreaseTable::build(const ModelView& model, Angle angle) {
 }
 
 void SurfaceSlopes::build(const ModelView& model, const FrameSetup& setup) {
-  slack_.fill(0);
-  const Rotation rotation =
-      rotationFromYawPitchRoll(setup.camera.yaw, setup.camera.pitch, setup.camera.roll);
   // The reach along each axis, footprint + 1 pixels, in 24-bit depth key units: a pixel of depth
   // is 2^F units of z and 2^(F - depth_shift) of the key (< 2^32 while buildFrameSetup accepted
   // the splat's reach). A kColourNormal word keeps the key's top 16 bits: >> 8 at the end.
@@ -37,8 +34,24 @@ void SurfaceSlopes::build(const ModelView& model, const FrameSetup& setup) {
     return (std::uint64_t{static_cast<std::uint32_t>(footprint) + 1} << setup.fraction_bits) >>
            setup.depth_shift;
   };
-  const std::uint64_t reach_x = reach(setup.splat.columns), reach_y = reach(setup.splat.rows);
-  const std::uint64_t edge = voxelEdgeOnScreen(setup) >> setup.depth_shift;  // key units
+  fillSlack(model,
+            rotationFromYawPitchRoll(setup.camera.yaw, setup.camera.pitch, setup.camera.roll),
+            reach(setup.splat.columns), reach(setup.splat.rows),
+            voxelEdgeOnScreen(setup) >> setup.depth_shift);
+}
+
+void SurfaceSlopes::buildPerspective(const ModelView& model, const Rotation& world_to_camera,
+                                     std::int64_t focal_q16) {
+  // A pixel across at depth z is z / f; a depth code step is 2^-11 to 2^-12 of z, so a pixel is at
+  // most 2^12 / f codes: kept in 2^-8 codes until the end, as the orthographic keys' >> 8.
+  const std::uint64_t pixel = perspectivePixelCodesQ8(focal_q16);
+  fillSlack(model, world_to_camera, kPerspectiveSplatReach * pixel, kPerspectiveSplatReach * pixel,
+            pixel);
+}
+
+void SurfaceSlopes::fillSlack(const ModelView& model, const Rotation& rotation,
+                              std::uint64_t reach_x, std::uint64_t reach_y, std::uint64_t edge) {
+  slack_.fill(0);
   const std::uint64_t most = kMaxSurfaceSlope * (std::max(reach_x, reach_y) + edge);
   for (int i = 0; i < model.normalCount(); ++i) {
     const NormalQ14 n = model.normal(i);
@@ -84,6 +97,26 @@ EdgeRule edgeRuleFor(const FrameSetup& setup, PixelPayload payload, const Crease
     rule.creases = nullptr;
     rule.slopes = nullptr;
   }
+  return rule;
+}
+
+std::uint64_t perspectivePixelCodesQ8(std::int64_t focal_q16) {
+  // 2^12 / f codes with f in Q.16, in Q.8: 2^36 / f, rounded up.
+  const auto focal = static_cast<std::uint64_t>(std::max<std::int64_t>(focal_q16, 1));
+  return ((std::uint64_t{1} << 36) + focal - 1) / focal;
+}
+
+EdgeRule perspectiveEdgeRule(std::int64_t focal_q16, const CreaseTable* creases,
+                             const SurfaceSlopes* slopes) {
+  // kSilhouetteVoxelEdges pixels across at the pair's depth: detail by distance draws voxels of
+  // at most a pixel, so this is the orthographic rule's "or pixels where a voxel is smaller".
+  EdgeRule rule;
+  rule.key_shift = 16;
+  rule.jump = static_cast<std::uint32_t>(
+      std::min<std::uint64_t>((kSilhouetteVoxelEdges * perspectivePixelCodesQ8(focal_q16)) >> 8,
+                              Framebuffer::kMaxDepthKey));
+  rule.creases = creases;
+  rule.slopes = slopes;
   return rule;
 }
 

@@ -1,3 +1,5 @@
+#include <algorithm>
+
 #include "octopoint/fixed.h"
 #include "octopoint/styles.h"
 
@@ -58,16 +60,32 @@ void FrameStyler::fillColours() {
   pass_.intensity = shading_.data();
 }
 
+bool FrameStyler::lit() const {
+  return model_.hasNormals() &&
+         (options_.style == Style::kShaded || options_.style == Style::kToon);
+}
+
+bool FrameStyler::outlines() const {
+  return model_.hasNormals() &&
+         (options_.style == Style::kLines || options_.style == Style::kToon ||
+          options_.style == Style::kOutlined);
+}
+
 void FrameStyler::beginFrame(const FrameSetup& setup) {
   setup_ = setup;
-  if (model_.hasNormals() && (options_.style == Style::kShaded || options_.style == Style::kToon)) {
-    const Camera& camera = setup.camera;
+  perspective_focal_q16_ = 0;
+  const Camera& camera = setup.camera;
+  if (lit()) {
     shading_.build(model_, rotationFromYawPitchRoll(camera.yaw, camera.pitch, camera.roll),
                    options_.light);
   }
-  const bool lines = options_.style == Style::kLines || options_.style == Style::kToon ||
-                     options_.style == Style::kOutlined;
-  if (model_.hasNormals() && lines) slopes_.build(model_, setup);
+  if (outlines()) slopes_.build(model_, setup);
+}
+
+void FrameStyler::beginPerspectiveFrame(const Rotation& world_to_camera, std::int64_t focal_q16) {
+  perspective_focal_q16_ = std::max<std::int64_t>(focal_q16, 1);
+  if (lit()) shading_.build(model_, world_to_camera, options_.light);
+  if (outlines()) slopes_.buildPerspective(model_, world_to_camera, perspective_focal_q16_);
 }
 
 StyleError FrameStyler::resolveRows(const FrameView& frame, std::int32_t first_row,
@@ -83,7 +101,9 @@ StyleError FrameStyler::resolveRows(const FrameView& frame, std::int32_t first_r
   }
   if (frame.payload() != PixelPayload::kColourNormal) return StyleError::kFrameWithoutNormals;
   StylePass pass = pass_;
-  pass.rule = edgeRuleFor(setup_, frame.payload(), &creases_, &slopes_);
+  pass.rule = perspective_focal_q16_ != 0
+                  ? perspectiveEdgeRule(perspective_focal_q16_, &creases_, &slopes_)
+                  : edgeRuleFor(setup_, frame.payload(), &creases_, &slopes_);
   switch (options_.style) {
     case Style::kShaded:
       shadedRows(pass, frame, first_row, end_row, rgb);

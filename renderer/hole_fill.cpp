@@ -3,11 +3,18 @@
 #include <limits>
 
 #include "octopoint/render.h"
+#include "renderer/perspective_depth.h"
 
 namespace octopoint {
 namespace {
 
 constexpr std::uint32_t kEmpty = Framebuffer::kEmpty;
+
+HoleFillCounts refusedFill() {
+  HoleFillCounts refused;
+  refused.refused = true;
+  return refused;
+}
 
 // Two covered pixels (packed words) whose depth keys are at most `limit` apart: a surface, not a
 // step.
@@ -22,12 +29,35 @@ std::uint32_t nearer(std::uint32_t a, std::uint32_t b) {
   return Framebuffer::depthKeyOf(b) < Framebuffer::depthKeyOf(a) ? b : a;
 }
 
+// The orthographic rule: depth keys at most `limit` apart.
+struct KeyBridge {
+  std::uint32_t limit;
+  bool operator()(std::uint32_t a, std::uint32_t b) const { return bridgeable(a, b, limit); }
+};
+
+// A perspective frame's rule (PerspectiveBridge), for words of `kPayload`.
+template <PixelPayload kPayload>
+struct DepthBridge {
+  PerspectiveBridge rule;
+  bool operator()(std::uint32_t a, std::uint32_t b) const {
+    if (a == kEmpty || b == kEmpty) return false;
+    const std::uint64_t depth_a = perspectiveWordDepth(a, kPayload);
+    const std::uint64_t depth_b = perspectiveWordDepth(b, kPayload);
+    const std::uint64_t near = std::min(depth_a, depth_b);  // < 2^28: the products fit
+    const std::uint64_t limit = std::max(rule.least, (near * rule.per_depth_q16) >> 16) +
+                                (near >> kNormalDepthMantissaBits);
+    return (depth_a > depth_b ? depth_a - depth_b : depth_b - depth_a) <= limit;
+  }
+};
+
 // Fills the holes of row y of `pixels` from the original words of rows y - 2 .. y + 2 (each
-// readable two columns either side of the row); counts each fill by its type.
+// readable two columns either side of the row); counts each fill by its type. `bridges(a, b)`:
+// whether covered pixels a and b are one surface.
+template <typename Bridge>
 __attribute__((always_inline)) inline void fillHoleRow(
     std::uint32_t* pixels, std::int32_t y, std::int32_t width, const std::uint32_t* up2,
     const std::uint32_t* up1, const std::uint32_t* row, const std::uint32_t* down1,
-    const std::uint32_t* down2, std::uint32_t max_bridge_depth, HoleFillCounts& counts) {
+    const std::uint32_t* down2, const Bridge& bridges, HoleFillCounts& counts) {
   for (std::int32_t x = 0; x < width; ++x) {
     if (row[x] != kEmpty) continue;
     // Every type needs one of these covered (the left, right, upper or lower neighbour, or the
@@ -42,18 +72,17 @@ __attribute__((always_inline)) inline void fillHoleRow(
       ++type_count;
     };
     // Type 1: C P C in the row.
-    if (bridgeable(row[x - 1], row[x + 1], max_bridge_depth)) {
+    if (bridges(row[x - 1], row[x + 1])) {
       fillFrom(nearer(row[x - 1], row[x + 1]), counts.type1);
       continue;
     }
     // Type 2: C above P, C below P.
-    if (bridgeable(up1[x], down1[x], max_bridge_depth)) {
+    if (bridges(up1[x], down1[x])) {
       fillFrom(nearer(up1[x], down1[x]), counts.type2);
       continue;
     }
     // Type 3: the four diagonal neighbours covered, each diagonal pair a surface.
-    if (bridgeable(up1[x - 1], down1[x + 1], max_bridge_depth) &&
-        bridgeable(up1[x + 1], down1[x - 1], max_bridge_depth)) {
+    if (bridges(up1[x - 1], down1[x + 1]) && bridges(up1[x + 1], down1[x - 1])) {
       const std::uint32_t first = nearer(up1[x - 1], up1[x + 1]);
       const std::uint32_t second = nearer(down1[x - 1], down1[x + 1]);
       fillFrom(nearer(first, second), counts.type3);
@@ -61,58 +90,26 @@ __attribute__((always_inline)) inline void fillHoleRow(
     }
     // Type 4: a two-pixel gap, P next to its bounding pixel: C P . C, C . P C, and the same in
     // the column.
-    if (row[x + 1] == kEmpty && bridgeable(row[x - 1], row[x + 2], max_bridge_depth)) {
+    if (row[x + 1] == kEmpty && bridges(row[x - 1], row[x + 2])) {
       fillFrom(row[x - 1], counts.type4);
-    } else if (row[x - 1] == kEmpty && bridgeable(row[x - 2], row[x + 1], max_bridge_depth)) {
+    } else if (row[x - 1] == kEmpty && bridges(row[x - 2], row[x + 1])) {
       fillFrom(row[x + 1], counts.type4);
-    } else if (down1[x] == kEmpty && bridgeable(up1[x], down2[x], max_bridge_depth)) {
+    } else if (down1[x] == kEmpty && bridges(up1[x], down2[x])) {
       fillFrom(up1[x], counts.type4);
-    } else if (up1[x] == kEmpty && bridgeable(up2[x], down1[x], max_bridge_depth)) {
+    } else if (up1[x] == kEmpty && bridges(up2[x], down1[x])) {
       fillFrom(down1[x], counts.type4);
     }
   }
 }
 
-}  // namespace
-
-std::uint32_t bridgeDepthLimit(const FrameSetup& setup) {
-  if (setup.depth < 1 || setup.depth > kMaxRenderDepth || setup.depth_shift < 0 ||
-      setup.depth_shift > 63) {
-    return 0;  // not a set-up buildFrameSetup makes: bridge nothing
-  }
-  const std::uint64_t edge = voxelEdgeOnScreen(setup);  // Q(32-F).F screen pixels
-  // In depth-key units (FrameSetup::depthKey): keys are depths shifted right by depth_shift.
-  const std::uint64_t limit =
-      (edge * static_cast<std::uint64_t>(kBridgeDepthVoxelEdges)) >> setup.depth_shift;
-  return static_cast<std::uint32_t>(std::min<std::uint64_t>(limit, Framebuffer::kMaxDepthKey));
-}
-
-HoleFiller::HoleFiller(std::int32_t width)
-    : width_(width >= 1 && width <= kMaxViewportSide ? width : 0),
-      history_(holeFillHistoryWords(width_), kEmpty) {}
-
-HoleFillCounts HoleFiller::fill(FrameView& frame, std::uint32_t max_bridge_depth) {
-  if (frame.width() != width_ || width_ == 0) {
-    HoleFillCounts refused;
-    refused.refused = true;
-    return refused;
-  }
-  return fillHoleRows(frame, 0, frame.height(), max_bridge_depth, history_);
-}
-
-std::size_t holeFillHistoryWords(std::int32_t width) {
-  return static_cast<std::size_t>(width + 2 * kHoleFillPadColumns) * kHoleFillHistoryRows;
-}
-
-HoleFillCounts fillHoleRows(FrameView& window, std::int32_t row_begin, std::int32_t row_end,
-                            std::uint32_t max_bridge_depth, std::span<std::uint32_t> history) {
+template <typename Bridge>
+HoleFillCounts fillRows(FrameView& window, std::int32_t row_begin, std::int32_t row_end,
+                        const Bridge& bridges, std::span<std::uint32_t> history) {
   const std::int32_t width = window.width();
   const std::int32_t height = window.height();
   if (row_begin < 0 || row_begin > row_end || row_end > height || width < 1 ||
       history.size() < holeFillHistoryWords(width)) {
-    HoleFillCounts refused;
-    refused.refused = true;
-    return refused;
+    return refusedFill();
   }
   constexpr std::int32_t kRows = kHoleFillHistoryRows;
   constexpr std::int32_t kPad = kHoleFillPadColumns;
@@ -144,13 +141,63 @@ HoleFillCounts fillHoleRows(FrameView& window, std::int32_t row_begin, std::int3
     std::uint32_t* const down2_slot = slot_of[4];
     load(down2_slot, y + 2);
     const std::uint32_t* down2 = down2_slot;
-    fillHoleRow(pixels, y, width, up2, up1, row, down1, down2, max_bridge_depth, counts);
+    fillHoleRow(pixels, y, width, up2, up1, row, down1, down2, bridges, counts);
     // Row y - 2's slot takes row y + 3 next.
     std::uint32_t* const oldest = slot_of[0];
     for (std::int32_t i = 0; i + 1 < kRows; ++i) slot_of[i] = slot_of[i + 1];
     slot_of[kRows - 1] = oldest;
   }
   return counts;
+}
+
+}  // namespace
+
+std::uint32_t bridgeDepthLimit(const FrameSetup& setup) {
+  if (setup.depth < 1 || setup.depth > kMaxRenderDepth || setup.depth_shift < 0 ||
+      setup.depth_shift > 63) {
+    return 0;  // not a set-up buildFrameSetup makes: bridge nothing
+  }
+  const std::uint64_t edge = voxelEdgeOnScreen(setup);  // Q(32-F).F screen pixels
+  // In depth-key units (FrameSetup::depthKey): keys are depths shifted right by depth_shift.
+  const std::uint64_t limit =
+      (edge * static_cast<std::uint64_t>(kBridgeDepthVoxelEdges)) >> setup.depth_shift;
+  return static_cast<std::uint32_t>(std::min<std::uint64_t>(limit, Framebuffer::kMaxDepthKey));
+}
+
+HoleFiller::HoleFiller(std::int32_t width)
+    : width_(width >= 1 && width <= kMaxViewportSide ? width : 0),
+      history_(holeFillHistoryWords(width_), kEmpty) {}
+
+HoleFillCounts HoleFiller::fill(FrameView& frame, std::uint32_t max_bridge_depth) {
+  if (frame.width() != width_ || width_ == 0) {
+    return refusedFill();
+  }
+  return fillHoleRows(frame, 0, frame.height(), max_bridge_depth, history_);
+}
+
+HoleFillCounts HoleFiller::fill(FrameView& frame, const PerspectiveBridge& bridge) {
+  if (frame.width() != width_ || width_ == 0) {
+    return refusedFill();
+  }
+  return fillHoleRows(frame, 0, frame.height(), bridge, history_);
+}
+
+std::size_t holeFillHistoryWords(std::int32_t width) {
+  return static_cast<std::size_t>(width + 2 * kHoleFillPadColumns) * kHoleFillHistoryRows;
+}
+
+HoleFillCounts fillHoleRows(FrameView& window, std::int32_t row_begin, std::int32_t row_end,
+                            std::uint32_t max_bridge_depth, std::span<std::uint32_t> history) {
+  return fillRows(window, row_begin, row_end, KeyBridge{max_bridge_depth}, history);
+}
+
+HoleFillCounts fillHoleRows(FrameView& window, std::int32_t row_begin, std::int32_t row_end,
+                            const PerspectiveBridge& bridge, std::span<std::uint32_t> history) {
+  if (window.payload() == PixelPayload::kColourNormal) {
+    return fillRows(window, row_begin, row_end, DepthBridge<PixelPayload::kColourNormal>{bridge},
+                    history);
+  }
+  return fillRows(window, row_begin, row_end, DepthBridge<PixelPayload::kColour>{bridge}, history);
 }
 
 std::int32_t countEnclosedEmptyPixels(const Framebuffer& outline, const Framebuffer& frame,

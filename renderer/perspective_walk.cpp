@@ -124,12 +124,16 @@ PixelSpan pixelSpan(std::int64_t p, std::int64_t half, int fraction_bits, std::i
 
 // Writes each leaf's splat (pixelSpan on both axes) with its packed word, nearer wins. Inside a
 // subtree drawn from one affine map whose every splat lies on the screen (enterAffine), a leaf's
-// pixels are two additions and shifts from its position, without clipping.
+// pixels are two additions and shifts from its position, without clipping. A kColourNormal frame
+// (the styles that light or outline) takes each leaf's normal index too, and the depth code of
+// renderer/perspective_depth.h.
+template <PixelPayload kPayload>
 class PerspectivePlot {
  public:
   PerspectivePlot(const LevelView& level, FrameView& frame, int fraction_bits, std::int64_t padding,
                   OcclusionTiles* occlusion = nullptr)
       : colours_(level.leaves.data()),
+        normals_(level.normals.data()),
         pixels_(frame.pixelData()),
         row_stride_(static_cast<std::size_t>(frame.width())),
         width_(frame.width()),
@@ -144,12 +148,8 @@ class PerspectivePlot {
     const std::int64_t nearest = subtree.centre.z - subtree.reach_z;  // Q.24, every leaf's z >= it
     if (nearest < 0) return false;
     const PixelBox box = pixelsOf(subtree);
-    // A leaf's key is min(z >> shift, kMaxDepthKey); its word is at least that key's with palette
-    // index 0.
-    const std::uint32_t word =
-        FrameView::pack(static_cast<std::uint32_t>(std::min<std::int64_t>(
-                            nearest >> kPerspectiveDepthShift, FrameView::kMaxDepthKey)),
-                        0);
+    // A leaf's key grows with its z; its word is at least that key's with payload 0.
+    const std::uint32_t word = wordOf(nearest, 0);
     // Wholly off the screen, it writes nothing (the frustum test let it through by its margin).
     if (box.empty() || occlusion_->hidden(box.x0, box.x1, box.y0, box.y1, word)) {
       ++hidden_subtrees_;
@@ -193,8 +193,12 @@ class PerspectivePlot {
   __attribute__((always_inline)) void operator()(const PerspectiveLeaf& leaf) {
     ++leaves_;
     if (unchecked_) {
-      const std::uint32_t word = FrameView::pack(
-          static_cast<std::uint32_t>(leaf.z >> kPerspectiveDepthShift), colours_[leaf.index]);
+      // unchecked_: the key is below kMaxDepthKey without the clamp (enterAffine).
+      const std::uint32_t word =
+          kPayload == PixelPayload::kColour
+              ? FrameView::pack(static_cast<std::uint32_t>(leaf.z >> kPerspectiveDepthShift),
+                                colours_[leaf.index])
+              : wordOf(leaf.z, payloadOf(leaf.index));
       const auto f = static_cast<int>(fraction_bits_);
       std::int64_t first_x = (leaf.x + low_x_) >> f, last_x = (leaf.x + high_x_) >> f;
       if (last_x < first_x) first_x = last_x = leaf.x >> f;
@@ -211,10 +215,7 @@ class PerspectivePlot {
     const PixelSpan columns = pixelSpan(leaf.x, leaf.half_x + padding_, f, width_);
     const PixelSpan rows = pixelSpan(leaf.y, leaf.half_y + padding_, f, height_);
     if (columns.first > columns.last || rows.first > rows.last) return;  // off the screen
-    const std::uint32_t key = static_cast<std::uint32_t>(
-        std::min<std::int64_t>(leaf.z >> kPerspectiveDepthShift, FrameView::kMaxDepthKey));
-    fill(columns.first, columns.last, rows.first, rows.last,
-         FrameView::pack(key, colours_[leaf.index]));
+    fill(columns.first, columns.last, rows.first, rows.last, wordOf(leaf.z, payloadOf(leaf.index)));
     if (occlusion_ != nullptr && !in_affine_) {
       occlusion_->touched(
           static_cast<std::int32_t>(columns.first), static_cast<std::int32_t>(columns.last),
@@ -226,6 +227,27 @@ class PerspectivePlot {
   std::uint64_t hiddenSubtrees() const { return hidden_subtrees_; }
 
  private:
+  // What a leaf's word carries besides its depth: its palette index, and in a kColourNormal
+  // frame its normal index << 8.
+  __attribute__((always_inline)) std::uint32_t payloadOf(std::size_t index) const {
+    if constexpr (kPayload == PixelPayload::kColour) {
+      return colours_[index];
+    } else {
+      return colours_[index] | std::uint32_t{normals_[index]} << 8;
+    }
+  }
+  // The word of depth z (Q.24) with `payload`; with payload 0, the least word a leaf at z writes.
+  __attribute__((always_inline)) static std::uint32_t wordOf(std::int64_t z,
+                                                             std::uint32_t payload) {
+    if constexpr (kPayload == PixelPayload::kColour) {
+      return FrameView::pack(static_cast<std::uint32_t>(std::min<std::int64_t>(
+                                 z >> kPerspectiveDepthShift, FrameView::kMaxDepthKey)),
+                             static_cast<std::uint8_t>(payload));
+    } else {
+      return FrameView::packColourNormal(perspectiveNormalDepthKey(z), payload);
+    }
+  }
+
   struct PixelBox {
     std::int32_t x0, x1, y0, y1;  // inclusive, on the screen
     bool empty() const { return x0 > x1 || y0 > y1; }
@@ -294,6 +316,7 @@ class PerspectivePlot {
   // 64-bit fields where a 32-bit one would be reloaded after every pixel written (a uint32 store
   // may alias an int32 field).
   const std::uint8_t* colours_;
+  const std::uint8_t* normals_;  // kColourNormal: the level's normal index per leaf
   std::uint32_t* pixels_;  // the whole frame: a perspective view has no cube-sized bound to give
   std::size_t row_stride_;
   std::int32_t width_, height_;
@@ -314,25 +337,11 @@ std::int64_t splatPadding(const PerspectiveWalkTables& tables) {
   return tables.max_error + tables.depth + 1;
 }
 
-}  // namespace
-
-bool drawPerspective(const LevelView& level, const PerspectiveView& view,
-                     const PerspectiveWalkTables& tables, FrameView& frame,
-                     const std::atomic<bool>* abort) {
-  PerspectivePlot plot(level, frame, view.fraction_bits, splatPadding(tables));
-  PerspectiveWalk<PerspectivePlot> walk(level, view, tables, plot, abort);
-  return walk.run();
-}
-
-bool drawPerspectiveLayers(std::span<const PerspectiveLayer> layers,
-                           const PerspectiveDetail* detail, const PerspectiveView& view,
-                           FrameView& frame, OcclusionTiles* occlusion, PerspectiveDrawStats* stats,
-                           const PerspectiveBand* band, const std::atomic<bool>* abort) {
-  assert(!layers.empty() &&
-         (layers.size() == 1 ||
-          (detail != nullptr && detail->count == static_cast<int>(layers.size()))));
-  assert(occlusion == nullptr ||
-         (occlusion->width() == frame.width() && occlusion->height() == frame.height()));
+template <PixelPayload kPayload>
+bool drawLayers(std::span<const PerspectiveLayer> layers, const PerspectiveDetail* detail,
+                const PerspectiveView& view, FrameView& frame, OcclusionTiles* occlusion,
+                PerspectiveDrawStats* stats, const PerspectiveBand* band,
+                const std::atomic<bool>* abort) {
   bool complete = true;
   // The finest depth's parts first: they are the nearest, and hide most of what lies behind.
   for (std::size_t i = layers.size(); i-- > 0 && complete;) {
@@ -344,9 +353,10 @@ bool drawPerspectiveLayers(std::span<const PerspectiveLayer> layers,
     if (layers.size() > 1) {
       parts.detail = {detail, static_cast<int>(i), i == 0 ? -1 : layers[i - 1].level->depth};
     }
-    PerspectivePlot plot(*layer.level, frame, view.fraction_bits, splatPadding(*layer.tables),
-                         occlusion);
-    PerspectiveWalk<PerspectivePlot> walk(*layer.level, view, *layer.tables, plot, abort, parts);
+    PerspectivePlot<kPayload> plot(*layer.level, frame, view.fraction_bits,
+                                   splatPadding(*layer.tables), occlusion);
+    PerspectiveWalk<PerspectivePlot<kPayload>> walk(*layer.level, view, *layer.tables, plot, abort,
+                                                    parts);
     complete = walk.run();
     if (stats != nullptr) {
       stats->leaves += plot.leaves();
@@ -354,6 +364,40 @@ bool drawPerspectiveLayers(std::span<const PerspectiveLayer> layers,
     }
   }
   return complete;
+}
+
+// Whether every layer has the normal index per leaf a kColourNormal frame takes.
+bool layersHaveNormals(std::span<const PerspectiveLayer> layers) {
+  return std::all_of(layers.begin(), layers.end(), [](const PerspectiveLayer& layer) {
+    return layer.level->normals.size() == layer.level->leaves.size();
+  });
+}
+
+}  // namespace
+
+bool drawPerspective(const LevelView& level, const PerspectiveView& view,
+                     const PerspectiveWalkTables& tables, FrameView& frame,
+                     const std::atomic<bool>* abort) {
+  const PerspectiveLayer layer{&level, &tables, nullptr};
+  return drawPerspectiveLayers({&layer, 1}, nullptr, view, frame, nullptr, nullptr, nullptr, abort);
+}
+
+bool drawPerspectiveLayers(std::span<const PerspectiveLayer> layers,
+                           const PerspectiveDetail* detail, const PerspectiveView& view,
+                           FrameView& frame, OcclusionTiles* occlusion, PerspectiveDrawStats* stats,
+                           const PerspectiveBand* band, const std::atomic<bool>* abort) {
+  assert(!layers.empty() &&
+         (layers.size() == 1 ||
+          (detail != nullptr && detail->count == static_cast<int>(layers.size()))));
+  assert(occlusion == nullptr ||
+         (occlusion->width() == frame.width() && occlusion->height() == frame.height()));
+  if (frame.payload() == PixelPayload::kColour) {
+    return drawLayers<PixelPayload::kColour>(layers, detail, view, frame, occlusion, stats, band,
+                                             abort);
+  }
+  if (!layersHaveNormals(layers)) return false;
+  return drawLayers<PixelPayload::kColourNormal>(layers, detail, view, frame, occlusion, stats,
+                                                 band, abort);
 }
 
 }  // namespace octopoint

@@ -21,6 +21,7 @@
 #include "renderer/bit_scan.h"
 #include "renderer/occlusion_tiles.h"
 #include "renderer/perspective.h"
+#include "renderer/perspective_depth.h"
 #include "renderer/perspective_detail.h"
 #include "renderer/upper_tree_index.h"
 
@@ -482,14 +483,12 @@ class PerspectiveWalk {
 
 namespace octopoint {
 
-// The depth key a perspective leaf writes: camera-space z in units of 2^-14 cube edge (z >> 10),
-// which keeps every z the eye can see (below 2^33.5 units) within FrameView::kMaxDepthKey.
-inline constexpr int kPerspectiveDepthShift = 10;
-
 // Draws `level` into `frame` (cleared by the caller): each leaf covers the pixels whose centres lie
 // within its voxel's projected extent (padded by the rounding), or its one pixel where that
 // extent holds no pixel centre; its position is within `max_error` plus depth / 2 units in the
-// last place of its exact projection. False when aborted.
+// last place of its exact projection. False when aborted. A frame cleared with
+// PixelPayload::kColourNormal takes each leaf's normal index and the depth code of
+// renderer/perspective_depth.h (false, nothing drawn, for a level without normals).
 bool drawPerspective(const LevelView& level, const PerspectiveView& view,
                      const PerspectiveWalkTables& tables, FrameView& frame,
                      const std::atomic<bool>* abort = nullptr);
@@ -514,7 +513,8 @@ struct PerspectiveDrawStats {
 // are the nearest). With `occlusion` (tiles of this frame, reset by the caller after the clear)
 // subtrees behind what is drawn are passed over: the same frame, bit for bit. `stats` may be
 // null. With `band` (`frame` then holds the band's rows, `view` is shifted to them) only subtrees
-// that may reach them are visited. False when aborted.
+// that may reach them are visited. False when aborted, or when `frame` carries normals
+// (PixelPayload::kColourNormal, as drawPerspective) and a layer has none.
 bool drawPerspectiveLayers(std::span<const PerspectiveLayer> layers,
                            const PerspectiveDetail* detail, const PerspectiveView& view,
                            FrameView& frame, OcclusionTiles* occlusion, PerspectiveDrawStats* stats,

@@ -4,7 +4,8 @@
 # - an eye at the orbit camera's position and look, as --perspective prints them, draws the very
 #   frame --perspective draws;
 # - a path's first and last frames are the --eye frames of its first and last keys; its video is
-#   written; a path whose third frame cannot be written leaves no frame behind.
+#   written; a path whose third frame cannot be written leaves no frame behind;
+# - --fill and --style draw in perspective, and a style a model cannot draw is refused.
 # usage: cmake -DRENDER=... -DOUT=DIR -DMODEL_FILE=M.oct -DPATH_FILE=walk.json -P this
 file(REMOVE_RECURSE ${OUT})
 file(MAKE_DIRECTORY ${OUT})
@@ -82,4 +83,27 @@ render_refused("w_0002.png" --size 160x120 --path ${PATH_FILE} --frames 5 -o ${O
 file(GLOB left ${OUT}/stuck/w_000[0134].png ${OUT}/stuck/*.avi)
 if(left)
   message(FATAL_ERROR "a path that failed left ${left}")
+endif()
+
+# --fill and --style in perspective (docs/perspective.md, "Styles and hole filling"): the fill
+# changes the walk's first frame (it closes the specks on the table), a line style draws, and a
+# path takes both; a model without normals is refused a style that needs them.
+render_ok(filled --size 160x120 --fov 70 --eye 0.05,0.1,-0.45 --look -5,-20 --fill
+          -o ${OUT}/first_filled.png)
+execute_process(COMMAND ${CMAKE_COMMAND} -E compare_files ${OUT}/first.png ${OUT}/first_filled.png
+                RESULT_VARIABLE differ)
+if(NOT differ)
+  message(FATAL_ERROR "--fill drew the same frame as without it")
+endif()
+render_ok(lines --size 160x120 --fov 70 --eye 0.05,0.1,-0.45 --look -5,-20 --fill --style lines
+          -o ${OUT}/first_lines.png)
+render_ok(styled_walk --size 160x120 --path ${PATH_FILE} --frames 2 --fill --style outlined
+          -o ${OUT}/styled)
+if(NOT EXISTS ${OUT}/styled_0001.png)
+  message(FATAL_ERROR "--path with --fill --style outlined wrote no second frame: ${styled_walk}")
+endif()
+render_refused("the model has no normals" --file ${MODEL_FILE} --eye 0,0,0 --style shaded
+               -o ${OUT}/no_normals.png)
+if(EXISTS ${OUT}/no_normals.png)
+  message(FATAL_ERROR "a refused --style left ${OUT}/no_normals.png")
 endif()

@@ -13,6 +13,7 @@
 #include "cli/output_file.h"
 #include "cli/real_numbers.h"
 #include "cli/text.h"
+#include "renderer/perspective_depth.h"
 #include "renderer/perspective_renderer.h"
 #include "tools/camera_path.h"
 #include "tools/png_file.h"
@@ -47,9 +48,11 @@ ScanCube requireCube(const PerspectiveJob& job, const char* option) {
 cv::Mat renderAt(const PerspectiveJob& job, const HeldParts* held, const PerspectiveView& view,
                  std::uint32_t pixels_q8, PerspectiveDrawStats* stats) {
   if (held != nullptr) {
-    return renderPerspectiveParts(*held, depthToDraw(job), view, job.background, stats, pixels_q8);
+    return renderPerspectiveParts(*held, depthToDraw(job), view, job.background, stats, pixels_q8,
+                                  job.finish);
   }
-  return renderPerspective(*job.model, depthToDraw(job), view, job.background, stats, pixels_q8);
+  return renderPerspective(*job.model, depthToDraw(job), view, job.background, stats, pixels_q8,
+                           job.finish);
 }
 
 // The voxel sizes on screen a point budget tries: one pixel, then up by 2^(1/4) a step (19,484 /
@@ -320,9 +323,8 @@ void checkPerspectiveOptions(const PerspectiveOptions& options, const OtherOptio
                      " places the eye in the scan: --yaw, --pitch, --roll, --zoom and --pan do "
                      "not apply (turn it with --look or the path's keys)");
   }
-  if (other.fill || other.sheet || other.style) {
-    throw cli::Error(std::string(options.mode()) +
-                     " draws in colour: --fill, --sheet and --style do not apply yet");
+  if (other.sheet) {
+    throw cli::Error(std::string(options.mode()) + ": --sheet does not apply yet");
   }
 }
 
@@ -341,11 +343,23 @@ PerspectiveView orbitPerspectiveView(const Camera& camera, Angle fov) {
 
 namespace {
 
+// Hole filling with the perspective bridge rule at `finest`, if asked.
+void fillIfAsked(Framebuffer& frame, const PerspectiveView& view, const PerspectiveFinish& finish,
+                 int finest) {
+  if (finish.fill && HoleFiller(frame.width()).fill(frame, perspectiveBridge(view, finest)).refused)
+    throw cli::Error("hole filling refused the frame");
+}
+
 cv::Mat frameToBgr(const Framebuffer& frame, const ModelView& model, const PerspectiveView& view,
-                   Rgb background) {
+                   Rgb background, const PerspectiveFinish& finish) {
   cv::Mat rgb(view.camera.height, view.camera.width, CV_8UC3);
-  // The frame is sized to the camera: resolveToRgb cannot refuse it.
-  static_cast<void>(resolveToRgb(frame, model, background, {rgb.data, rgb.total() * 3}));
+  // The frame is sized to the camera: neither resolveToRgb nor the styler can refuse it.
+  if (finish.styler != nullptr) {
+    finish.styler->beginPerspectiveFrame(view.world_to_camera, view.focal_q16);
+    static_cast<void>(finish.styler->resolve(frame, {rgb.data, rgb.total() * 3}));
+  } else {
+    static_cast<void>(resolveToRgb(frame, model, background, {rgb.data, rgb.total() * 3}));
+  }
   cv::Mat bgr;
   cv::cvtColor(rgb, bgr, cv::COLOR_RGB2BGR);
   return bgr;
@@ -354,24 +368,27 @@ cv::Mat frameToBgr(const Framebuffer& frame, const ModelView& model, const Persp
 }  // namespace
 
 cv::Mat renderPerspective(const ModelView& model, int depth, const PerspectiveView& view,
-                          Rgb background, PerspectiveDrawStats* stats, std::uint32_t pixels_q8) {
+                          Rgb background, PerspectiveDrawStats* stats, std::uint32_t pixels_q8,
+                          const PerspectiveFinish& finish) {
   Framebuffer frame(view.camera.width, view.camera.height);
-  frame.clear();
+  frame.clear(finish.styler != nullptr ? finish.styler->payload() : PixelPayload::kColour);
   PerspectiveRenderer renderer(model);
   PerspectiveRenderer::Options options;
   options.depth = depth;
   options.pixels_q8 = pixels_q8;
-  // No abort flag: it completes; `depth` is a stored one (the caller chose it from the model).
+  // No abort flag: it completes; `depth` is a stored one (the caller chose it from the model),
+  // and a frame for normals is asked only of a model that has them (FrameStyler::setOptions).
   // The renderer adds to the counts it is given: these are this frame's.
   PerspectiveDrawStats drawn;
   static_cast<void>(renderer.draw(view, options, frame, &drawn));
   if (stats != nullptr) *stats = drawn;
-  return frameToBgr(frame, model, view, background);
+  fillIfAsked(frame, view, finish, depth != 0 ? depth : renderer.detailDepths().back());
+  return frameToBgr(frame, model, view, background, finish);
 }
 
 cv::Mat renderPerspectiveParts(const HeldParts& parts, int depth, const PerspectiveView& view,
-                               Rgb background, PerspectiveDrawStats* stats,
-                               std::uint32_t pixels_q8) {
+                               Rgb background, PerspectiveDrawStats* stats, std::uint32_t pixels_q8,
+                               const PerspectiveFinish& finish) {
   Framebuffer frame(view.camera.width, view.camera.height);
   frame.clear();
   PerspectiveDrawStats all;
@@ -388,8 +405,10 @@ cv::Mat renderPerspectiveParts(const HeldParts& parts, int depth, const Perspect
     }
   }
   if (stats != nullptr) *stats = all;
-  // Every part has the head's palette.
-  return frameToBgr(frame, *parts.parts.front()->view, view, background);
+  fillIfAsked(frame, view, {finish.fill, nullptr},
+              depth != 0 ? depth : parts.detailDepths().back());
+  // Every part has the head's palette; no part has normals.
+  return frameToBgr(frame, *parts.parts.front()->view, view, background, {});
 }
 
 void runPerspective(const PerspectiveOptions& options, const PerspectiveJob& job) {

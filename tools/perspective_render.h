@@ -12,6 +12,7 @@
 #include "cli/arguments.h"
 #include "octopoint/camera.h"
 #include "octopoint/model.h"
+#include "octopoint/styles.h"
 #include "renderer/chunked_assembly.h"
 #include "renderer/perspective.h"
 #include "renderer/perspective_walk.h"
@@ -42,10 +43,7 @@ bool parsePerspectiveOption(cli::ArgumentReader& args, PerspectiveOptions& optio
 // What else the command line asked for, for the checks between the options.
 struct OtherOptions {
   bool orbit_camera = false;  // --yaw, --pitch, --roll, --zoom or --pan given
-  bool url = false;           // allowed: a chunked model streamed for the perspective view
-  bool fill = false;
   bool sheet = false;
-  bool style = false;  // a style other than colour
 };
 // Throws cli::Error, one line, for options that exclude or need each other.
 void checkPerspectiveOptions(const PerspectiveOptions& options, const OtherOptions& other);
@@ -54,13 +52,21 @@ void checkPerspectiveOptions(const PerspectiveOptions& options, const OtherOptio
 // when the camera is refused.
 PerspectiveView orbitPerspectiveView(const Camera& camera, Angle fov);
 
+// How a perspective frame is finished: hole filling with the perspective bridge rule
+// (renderer/perspective_depth.h), and a style (null: colour, resolveToRgb).
+struct PerspectiveFinish {
+  bool fill = false;
+  FrameStyler* styler = nullptr;  // options set; its background is the frame's
+};
+
 // Draws `model` with `view` on `background`, as BGR for OpenCV: its stored `depth`, or with 0
 // each part at the depth its distance asks for (detail by distance); occlusion culling on.
 // `stats` (may be null) learns what was drawn.
 // `pixels_q8`: PerspectiveRenderer::Options::pixels_q8 (a point budget's coarser frames).
 cv::Mat renderPerspective(const ModelView& model, int depth, const PerspectiveView& view,
                           Rgb background, PerspectiveDrawStats* stats = nullptr,
-                          std::uint32_t pixels_q8 = kOnePixelQ8);
+                          std::uint32_t pixels_q8 = kOnePixelQ8,
+                          const PerspectiveFinish& finish = {});
 
 // What one run draws: the model and its label, the depth asked for and the level it chose (--depth;
 // without it each part of the frame is drawn at the depth its distance asks for), the orthographic
@@ -82,13 +88,16 @@ struct PerspectiveJob {
   // pixel up by steps of 2^(1/4), at which it hands at most this many points to the plot (the
   // coarsest when none does): coarser where voxels are smallest on screen, the far parts first.
   std::uint64_t point_budget = 0;
+  PerspectiveFinish finish;  // --fill, --style
 };
 
 // Draws `parts` with `view` on `background` as renderPerspective draws one model: the parts one
 // after another into one frame, each with the detail of parts.detailDepths().
+// A chunked model has no normals: only `finish.fill` applies.
 cv::Mat renderPerspectiveParts(const HeldParts& parts, int depth, const PerspectiveView& view,
                                Rgb background, PerspectiveDrawStats* stats = nullptr,
-                               std::uint32_t pixels_q8 = kOnePixelQ8);
+                               std::uint32_t pixels_q8 = kOnePixelQ8,
+                               const PerspectiveFinish& finish = {});
 
 // Draws and writes what `options` asks for, prints one line saying what; cli::Error, one line,
 // leaving no file, when it cannot.

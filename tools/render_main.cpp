@@ -73,8 +73,8 @@ nor --file nor --url it draws the default model embedded in this binary.
   --pan X,Y          move the picture X pixels right and Y down, each |.| <= 1e6 (default 0,0)
   --perspective      draw in perspective: the eye on the line of sight through the model's centre,
                      where the centre's depth is as large on screen as in the orthographic view
-                     of the same zoom (so a narrow --fov converges to it); colour only, no
-                     --fill, --sheet or --style yet (docs/perspective.md). A chunked file is
+                     of the same zoom (so a narrow --fov converges to it); --fill and --style
+                     apply, --sheet not yet (docs/perspective.md). A chunked file is
                      the same frame as the one-file model of its depths; with --url the stream
                      follows the perspective view (nearest and largest on screen first, each
                      region only as fine as its distance asks) and each region is drawn at the
@@ -82,7 +82,7 @@ nor --file nor --url it draws the default model embedded in this binary.
   --eye X,Y,Z        draw in perspective from an eye at X,Y,Z in the scan's own units and axes
                      (the frame octopoint-prepare --crop takes; --info prints where the model's
                      cube lies in it); anywhere within 128 cube edges of the cube's centre, inside
-                     the model too. Colour only, no --fill, --sheet or --style yet; needs a model
+                     the model too. --fill and --style apply, --sheet not yet; needs a model
                      that records its cube's placement (prepared since format version 4)
   --look YAW,PITCH[,ROLL]
                      with --eye: where the eye looks, in degrees (default 0,0: the way the sensor
@@ -276,9 +276,7 @@ void checkCombination(const Options& options) {
                      " --point-budget chooses each part's depth by distance: --depth N does not "
                      "apply");
   }
-  checkPerspectiveOptions(options.perspective,
-                          {options.orbit_camera, url, options.fill, options.sheet > 0,
-                           options.style.style != Style::kColour});
+  checkPerspectiveOptions(options.perspective, {options.orbit_camera, options.sheet > 0});
   if (options.info &&
       (url || options.perspective.any() || options.sheet > 0 || !options.output.empty())) {
     throw cli::Error(
@@ -380,8 +378,16 @@ int renderUrlPerspective(const Options& options) {
   if (options.perspective.path.empty()) cli::checkOutputFile(options.output);
   PerspectiveUrlSource source(options.source.url, options.fetch);
   const ModelView& model = source.headModel();
-  PerspectiveJob job{&model,         options.source.url, std::nullopt, &model.finestLevel(),
-                     options.camera, options.output,     kBackground,  {}};
+  PerspectiveJob job{&model,
+                     options.source.url,
+                     std::nullopt,
+                     &model.finestLevel(),
+                     options.camera,
+                     options.output,
+                     kBackground,
+                     {},
+                     0,
+                     {options.fill, nullptr}};
   job.parts = [&source](const PerspectiveView& view) -> const HeldParts& {
     return source.follow(view);
   };
@@ -531,10 +537,20 @@ int renderFrame(const ModelView& model, const LevelView& level, FrameStyler& sty
   return 0;
 }
 
+// `styler` (null: colour) draws --style.
 int renderPerspectiveViews(const ModelView& model, const LevelView& level,
-                           const std::string& model_label, const Options& options) {
-  PerspectiveJob job{&model,         model_label,    options.depth, &level,
-                     options.camera, options.output, kBackground,   {}};
+                           const std::string& model_label, const Options& options,
+                           FrameStyler* styler = nullptr) {
+  PerspectiveJob job{&model,
+                     model_label,
+                     options.depth,
+                     &level,
+                     options.camera,
+                     options.output,
+                     kBackground,
+                     {},
+                     0,
+                     {options.fill, styler}};
   job.point_budget = options.fetch.point_budget;
   runPerspective(options.perspective, job);
   return 0;
@@ -561,7 +577,9 @@ int renderChunkedPerspective(const Options& options, const LoadedModel& loaded) 
                      options.camera,
                      options.output,
                      kBackground,
-                     {}};
+                     {},
+                     0,
+                     {options.fill, nullptr}};
   if (!options.depth)
     job.parts = [&parts](const PerspectiveView&) -> const HeldParts& { return parts; };
   job.point_budget = options.fetch.point_budget;
@@ -582,13 +600,13 @@ int run(int argc, char** argv) {
     std::fputs(modelInfo(*loaded).c_str(), stdout);
     return 0;
   }
-  if (loaded->chunked && options.perspective.any())
-    return renderChunkedPerspective(options, *loaded);
   if (loaded->chunked && options.style.style != Style::kColour) {
     throw cli::Error("--style " + std::string(styleName(options.style.style)) + ": " +
                      loaded->label +
                      ": a chunked model is drawn in colour only (it stores no normals)");
   }
+  if (loaded->chunked && options.perspective.any())
+    return renderChunkedPerspective(options, *loaded);
   if (loaded->chunked) return renderChunked(options, *loaded);
   if (options.fetch.point_budget > 0 && !options.perspective.any()) {
     throw cli::Error(loaded->label +
@@ -603,7 +621,10 @@ int run(int argc, char** argv) {
   style.background = kBackground;
   setStyle(styler, style, model_label, options.variant);
   // The perspective views check their camera, then the output (tools/perspective_render.h).
-  if (options.perspective.any()) return renderPerspectiveViews(model, level, model_label, options);
+  if (options.perspective.any()) {
+    return renderPerspectiveViews(model, level, model_label, options,
+                                  style.style != Style::kColour ? &styler : nullptr);
+  }
   cli::checkOutputFile(
       options.output);  // before drawing: a FIFO, a device or a directory is refused
   if (options.sheet > 0) return renderSheet(model, model_label, options, style);

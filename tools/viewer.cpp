@@ -504,9 +504,9 @@ void Viewer::save() {
   }
   const FrameInfo& info = shown_info_;
   if (info.view.walk) {
-    std::printf("saved %s (%s): --size %dx%d%s\n", name.c_str(),
+    std::printf("saved %s (%s): --size %dx%d%s%s\n", name.c_str(),
                 info.source == FrameSource::kFine ? "H" : "L", info.width, info.height,
-                walkOptions(info.view.walker).c_str());
+                walkOptions(info.view.walker).c_str(), info.view.fill ? " --fill" : "");
     std::fflush(stdout);
     return;
   }

@@ -172,7 +172,8 @@
 //                            width differs).
 //                            fillHoleRows(window, rows, limit, history) does a band's rows with the
 //                            caller's holeFillHistoryWords(width) words. countEnclosedEmptyPixels:
-//                            for measuring.
+//                            for measuring. A perspective frame: fill(frame, PerspectiveBridge),
+//                            the limit at each pair's depth (docs/perspective.md).
 //   kAbortCheckLevel         the tree level at which decoders poll the abort flag.
 //
 // octopoint/rgb_renderer.h: the common case in one call (Example 1)
@@ -193,7 +194,8 @@
 //                            (optional), styleName, nextStyle, styleNeedsNormals.
 //   FrameStyler(model)       setOptions(StyleOptions: style, light, crease angle, background):
 //                            StyleError kNeedsNormals when the model has none (options kept).
-//                            payload(): what to clear frames with. Per frame: beginFrame(setup),
+//                            payload(): what to clear frames with. Per frame: beginFrame(setup)
+//                            (a perspective frame: beginPerspectiveFrame(rotation, focal_q16)),
 //                            then resolve(frame, rgb) or resolveRows(frame, first, end, rgb):
 //                            StyleError kFrameWithoutNormals or kFrameSizeMismatch, else kNone.
 //                            No allocation (tables of about 12 KiB are members).

@@ -183,6 +183,19 @@ inline constexpr std::int32_t kBridgeDepthVoxelEdges = 4;
 // pixels; the length does not depend on the rotation), shifted right by setup.depth_shift.
 std::uint32_t bridgeDepthLimit(const FrameSetup& setup);
 
+// The bridge rule of a perspective frame (renderer/perspective_renderer.h; docs/perspective.md,
+// "Styles and hole filling"): its words' depth is camera-space z, and a pixel spans z / f across,
+// so the depth step a surface makes between two pixels grows with their depth. A pair of covered
+// pixels bounds a gap when their depths differ by at most
+//     max(least, z * per_depth_q16 >> 16) + (z >> 11)
+// with z the nearer one's depth (2^-18 cube edge units, both payloads; the last term is the depth
+// code's step in a frame that carries normals): kBridgeDepthVoxelEdges pixels across at that depth,
+// or as many voxel edges of the finest depth drawn where those are larger (near the eye).
+struct PerspectiveBridge {
+  std::uint64_t least = 0;          // 2^-18 cube edge units
+  std::uint64_t per_depth_q16 = 0;  // kBridgeDepthVoxelEdges / f, Q.16
+};
+
 struct HoleFillCounts {
   std::int32_t type1 = 0, type2 = 0, type3 = 0, type4 = 0;
   bool refused = false;  // the frame, rows or history did not fit: nothing was filled
@@ -208,6 +221,10 @@ std::size_t holeFillHistoryWords(std::int32_t width);
 [[nodiscard]] HoleFillCounts fillHoleRows(FrameView& window, std::int32_t row_begin,
                                           std::int32_t row_end, std::uint32_t max_bridge_depth,
                                           std::span<std::uint32_t> history);
+// The same for a perspective frame: the same gap types, each pair judged by `bridge`.
+[[nodiscard]] HoleFillCounts fillHoleRows(FrameView& window, std::int32_t row_begin,
+                                          std::int32_t row_end, const PerspectiveBridge& bridge,
+                                          std::span<std::uint32_t> history);
 
 class HoleFiller {
  public:
@@ -221,6 +238,8 @@ class HoleFiller {
   // filler's is refused (counts.refused, nothing changed), also in release builds.
   // `max_bridge_depth` is in the frame's depth-key units (bridgeDepthLimit). Never allocates.
   [[nodiscard]] HoleFillCounts fill(FrameView& frame, std::uint32_t max_bridge_depth);
+  // A perspective frame (PerspectiveBridge).
+  [[nodiscard]] HoleFillCounts fill(FrameView& frame, const PerspectiveBridge& bridge);
 
   std::int32_t width() const { return width_; }
 

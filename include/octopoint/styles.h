@@ -167,11 +167,21 @@ class SurfaceSlopes {
  public:
   // For frames of `setup` (its rotation, splat footprint and depth key scale).
   void build(const ModelView& model, const FrameSetup& setup);
+  // For a perspective frame that carries normals, drawn with `world_to_camera` and focal length
+  // `focal_q16` (pixels, Q.16): slack in its depth codes (perspectiveEdgeRule), for splats of
+  // kPerspectiveSplatReach pixels' reach and voxels of a pixel (detail by distance).
+  void buildPerspective(const ModelView& model, const Rotation& world_to_camera,
+                        std::int64_t focal_q16);
   std::uint32_t slack(std::uint32_t normal_a, std::uint32_t normal_b) const {
     return std::min(slack_[normal_a], slack_[normal_b]);
   }
 
  private:
+  // The slack of each palette normal turned by `rotation`, for reaches and a voxel edge in units
+  // of 2^-8 of the frame's (word >> 16).
+  void fillSlack(const ModelView& model, const Rotation& rotation, std::uint64_t reach_x,
+                 std::uint64_t reach_y, std::uint64_t edge);
+
   std::array<std::uint32_t, 256> slack_{};  // 0 past the palette
 };
 
@@ -188,6 +198,19 @@ struct EdgeRule {
 // kColourNormal frames only; `slopes` built for the same set-up).
 EdgeRule edgeRuleFor(const FrameSetup& setup, PixelPayload payload, const CreaseTable* creases,
                      const SurfaceSlopes* slopes);
+
+// A perspective frame's depth (renderer/perspective_depth.h) is camera-space z, and in a frame that
+// carries normals a code whose step is 2^-11 to 2^-12 of z: a depth difference of one pixel across
+// at the pair's depth (z / f) is at most 2^12 / f codes at any depth. perspectivePixelCodesQ8 is
+// that in Q.8 for f = `focal_q16` (pixels, Q.16).
+std::uint64_t perspectivePixelCodesQ8(std::int64_t focal_q16);
+// The splats of a perspective frame drawn by distance span about a pixel, padded: neighbouring
+// pixels show voxels up to this many pixels apart (the orthographic footprint + 1).
+inline constexpr std::uint64_t kPerspectiveSplatReach = 2;
+// The rule for a perspective frame that carries normals (PixelPayload::kColourNormal), focal
+// length `focal_q16`: the jump is kSilhouetteVoxelEdges pixels across at the pair's depth.
+EdgeRule perspectiveEdgeRule(std::int64_t focal_q16, const CreaseTable* creases,
+                             const SurfaceSlopes* slopes);
 
 // Whether covered pixel (x, y) of `frame` has a neighbour in the frame that is background or lies
 // farther than the jump plus the pair's slope slack: a silhouette pixel.
@@ -491,6 +514,9 @@ class FrameStyler {
   // Per frame, before resolving: the intensities of the normals under the light for this camera,
   // and the depth step that counts as a silhouette (with each normal's slope on screen).
   void beginFrame(const FrameSetup& setup);
+  // The same for a perspective frame (drawn by PerspectiveRenderer into a frame cleared with
+  // payload()): the model turned by `world_to_camera` (Q1.30), focal length `focal_q16`.
+  void beginPerspectiveFrame(const Rotation& world_to_camera, std::int64_t focal_q16);
 
   [[nodiscard]] StyleError resolve(const FrameView& frame, std::span<std::uint8_t> rgb) const {
     return resolveRows(frame, 0, frame.height(), rgb);
@@ -501,6 +527,8 @@ class FrameStyler {
 
  private:
   void fillColours();
+  bool lit() const;       // the style lights the normals (a shading table per frame)
+  bool outlines() const;  // the style draws silhouettes and creases (slopes per frame)
 
   const ModelView& model_;
   StyleOptions options_;
@@ -509,6 +537,7 @@ class FrameStyler {
   ShadingTable shading_;
   SurfaceSlopes slopes_;  // the silhouettes' slack on steep surfaces, per frame
   FrameSetup setup_{};
+  std::int64_t perspective_focal_q16_ = 0;  // beginPerspectiveFrame's; 0: an orthographic frame
   StylePass pass_;
 };
 

@@ -3,6 +3,7 @@
 // octopoint-render --eye draws them; coarse: a stored depth coarser), driven headless by scripted
 // events on a manual clock. Real threads, the real model and renderer.
 #include "renderer/perspective.h"
+#include "renderer/perspective_depth.h"
 #include "renderer/perspective_renderer.h"
 #include "tests/support/dual_resolution_fixture.h"
 
@@ -22,9 +23,10 @@ InteractiveConfig walkConfig() {
   return config;
 }
 
-// The frame of `walker` as octopoint-render --eye draws it (coarser 0), or the coarse frame.
+// The frame of `walker` as octopoint-render --eye draws it (coarser 0), or the coarse frame; with
+// `fill`, as --eye --fill draws it.
 Framebuffer walkFrame(const ModelView& model, const InteractiveConfig& config,
-                      const WalkEye& walker, int coarser = 0) {
+                      const WalkEye& walker, int coarser = 0, bool fill = false) {
   PerspectiveCamera camera;
   camera.eye = walker.eye;
   camera.yaw = walker.yaw;
@@ -41,6 +43,14 @@ Framebuffer walkFrame(const ModelView& model, const InteractiveConfig& config,
   PerspectiveRenderer::Options options;
   options.coarser = coarser;
   EXPECT_TRUE(renderer.draw(view, options, frame));
+  if (fill) {
+    const std::span<const int> depths = renderer.detailDepths();
+    EXPECT_FALSE(
+        HoleFiller(frame)
+            .fill(frame, perspectiveBridge(
+                             view, depths[depths.size() - 1 - static_cast<std::size_t>(coarser)]))
+            .refused);
+  }
   return frame;
 }
 
@@ -171,6 +181,24 @@ TEST_F(DualResolution, TabEntersWalkModeAtTheOrbitViewsEyeAndTheWheelSetsTheSpee
   EXPECT_FALSE(back.view.walk);
   EXPECT_EQ(back.view.yaw, config.initial_view.yaw);
   EXPECT_EQ(back.view.zoom, config.initial_view.zoom);
+}
+
+// The fill key (f) in walk mode: the fine frame is octopoint-render --eye --fill's, and differs
+// from the unfilled one (the specks on the table close).
+TEST_F(DualResolution, WalkModeFillsAsRenderDoes) {
+  InteractiveConfig config = walkConfig();
+  DualResolutionRenderer renderer(*model_, clock_, config);
+  const FrameInfo plain = fineFrame(renderer, 0);
+  EXPECT_FALSE(plain.view.fill);
+  renderer.handle(at(0, ViewEventKind::kToggleFill));
+  const FrameInfo filled = fineFrame(renderer, 100);
+  EXPECT_TRUE(filled.view.fill);
+  FrameInfo shown;
+  const Framebuffer* frame = renderer.acquireLatest(&shown);
+  ASSERT_NE(frame, nullptr);
+  EXPECT_EQ(frameChecksum(*frame),
+            frameChecksum(walkFrame(*model_, config, filled.view.walker, 0, true)));
+  EXPECT_NE(frameChecksum(*frame), frameChecksum(walkFrame(*model_, config, filled.view.walker)));
 }
 
 // A renderer of whole views (a streamed model) has no model to walk through: Tab does nothing.
