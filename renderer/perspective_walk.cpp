@@ -128,7 +128,7 @@ PixelSpan pixelSpan(std::int64_t p, std::int64_t half, int fraction_bits, std::i
 class PerspectivePlot {
  public:
   PerspectivePlot(const LevelView& level, FrameView& frame, int fraction_bits, std::int64_t padding,
-                  OcclusionTiles* occlusion = nullptr)
+                  int depth_shift, OcclusionTiles* occlusion = nullptr)
       : colours_(level.leaves.data()),
         pixels_(frame.pixelData()),
         row_stride_(static_cast<std::size_t>(frame.width())),
@@ -136,6 +136,7 @@ class PerspectivePlot {
         height_(frame.height()),
         fraction_bits_(fraction_bits),
         padding_(padding),
+        depth_shift_(depth_shift),
         occlusion_(occlusion) {}
 
   // Occlusion culling (with tiles): whether every pixel the subtree's leaves could write already
@@ -147,8 +148,8 @@ class PerspectivePlot {
     // A leaf's key is min(z >> shift, kMaxDepthKey); its word is at least that key's with palette
     // index 0.
     const std::uint32_t word =
-        FrameView::pack(static_cast<std::uint32_t>(std::min<std::int64_t>(
-                            nearest >> kPerspectiveDepthShift, FrameView::kMaxDepthKey)),
+        FrameView::pack(static_cast<std::uint32_t>(std::min<std::int64_t>(nearest >> depth_shift_,
+                                                                          FrameView::kMaxDepthKey)),
                         0);
     // Wholly off the screen, it writes nothing (the frustum test let it through by its margin).
     if (box.empty() || occlusion_->hidden(box.x0, box.x1, box.y0, box.y1, word)) {
@@ -180,7 +181,7 @@ class PerspectivePlot {
     unchecked_ = x - margin_x >= 0 && x + margin_x < (std::int64_t{width_} << fraction_bits_) &&
                  y - margin_y >= 0 && y + margin_y < (std::int64_t{height_} << fraction_bits_) &&
                  z - subtree.reach_z >= 0 &&
-                 (z + subtree.reach_z) >> kPerspectiveDepthShift <= FrameView::kMaxDepthKey;
+                 (z + subtree.reach_z) >> depth_shift_ <= FrameView::kMaxDepthKey;
     // Where high - low < 1 pixel, no leaf's span is more than two pixels on that axis: then every
     // leaf takes the four-corner path, without the test per leaf which path (a coin toss where
     // spans of two and three pixels mix).
@@ -193,8 +194,8 @@ class PerspectivePlot {
   __attribute__((always_inline)) void operator()(const PerspectiveLeaf& leaf) {
     ++leaves_;
     if (unchecked_) {
-      const std::uint32_t word = FrameView::pack(
-          static_cast<std::uint32_t>(leaf.z >> kPerspectiveDepthShift), colours_[leaf.index]);
+      const std::uint32_t word =
+          FrameView::pack(static_cast<std::uint32_t>(leaf.z >> depth_shift_), colours_[leaf.index]);
       const auto f = static_cast<int>(fraction_bits_);
       std::int64_t first_x = (leaf.x + low_x_) >> f, last_x = (leaf.x + high_x_) >> f;
       if (last_x < first_x) first_x = last_x = leaf.x >> f;
@@ -212,7 +213,7 @@ class PerspectivePlot {
     const PixelSpan rows = pixelSpan(leaf.y, leaf.half_y + padding_, f, height_);
     if (columns.first > columns.last || rows.first > rows.last) return;  // off the screen
     const std::uint32_t key = static_cast<std::uint32_t>(
-        std::min<std::int64_t>(leaf.z >> kPerspectiveDepthShift, FrameView::kMaxDepthKey));
+        std::min<std::int64_t>(leaf.z >> depth_shift_, FrameView::kMaxDepthKey));
     fill(columns.first, columns.last, rows.first, rows.last,
          FrameView::pack(key, colours_[leaf.index]));
     if (occlusion_ != nullptr && !in_affine_) {
@@ -299,6 +300,7 @@ class PerspectivePlot {
   std::int32_t width_, height_;
   std::int64_t fraction_bits_;
   std::int64_t padding_;
+  std::int64_t depth_shift_;  // PerspectiveView::depth_shift
   bool unchecked_ = false;
   bool corners_ = false;  // unchecked_, and no span of the subtree wider than 2 x 2 pixels
   std::int64_t low_x_ = 0, high_x_ = 0, low_y_ = 0, high_y_ = 0;
@@ -319,7 +321,7 @@ std::int64_t splatPadding(const PerspectiveWalkTables& tables) {
 bool drawPerspective(const LevelView& level, const PerspectiveView& view,
                      const PerspectiveWalkTables& tables, FrameView& frame,
                      const std::atomic<bool>* abort) {
-  PerspectivePlot plot(level, frame, view.fraction_bits, splatPadding(tables));
+  PerspectivePlot plot(level, frame, view.fraction_bits, splatPadding(tables), view.depth_shift);
   PerspectiveWalk<PerspectivePlot> walk(level, view, tables, plot, abort);
   return walk.run();
 }
@@ -345,7 +347,7 @@ bool drawPerspectiveLayers(std::span<const PerspectiveLayer> layers,
       parts.detail = {detail, static_cast<int>(i), i == 0 ? -1 : layers[i - 1].level->depth};
     }
     PerspectivePlot plot(*layer.level, frame, view.fraction_bits, splatPadding(*layer.tables),
-                         occlusion);
+                         view.depth_shift, occlusion);
     PerspectiveWalk<PerspectivePlot> walk(*layer.level, view, *layer.tables, plot, abort, parts);
     complete = walk.run();
     if (stats != nullptr) {

@@ -482,10 +482,6 @@ class PerspectiveWalk {
 
 namespace octopoint {
 
-// The depth key a perspective leaf writes: camera-space z in units of 2^-14 cube edge (z >> 10),
-// which keeps every z the eye can see (below 2^33.5 units) within FrameView::kMaxDepthKey.
-inline constexpr int kPerspectiveDepthShift = 10;
-
 // Draws `level` into `frame` (cleared by the caller): each leaf covers the pixels whose centres lie
 // within its voxel's projected extent (padded by the rounding), or its one pixel where that
 // extent holds no pixel centre; its position is within `max_error` plus depth / 2 units in the
