@@ -80,6 +80,17 @@ class CityFrames {
   Framebuffer frame_{1, 1};
 };
 
+// The points the scene holds at full detail: each instance's model's finest depth, and the bytes
+// of the distinct models.
+std::string sizeText(const LoadedScene& scene) {
+  std::uint64_t points = 0;
+  for (const SceneInstance& instance : scene.instances)
+    points += scene.models[instance.model]->finestLevel().leaves.size();
+  return std::to_string(scene.models.size()) + " models (" + std::to_string(scene.model_bytes) +
+         " bytes), " + std::to_string(scene.instances.size()) + " instances, " +
+         std::to_string(points) + " points at full detail";
+}
+
 std::string statsText(const SceneDrawStats& stats) {
   return std::to_string(stats.instances_drawn) + " instances drawn (" +
          std::to_string(stats.outside_frustum) + " outside the view, " +
@@ -100,9 +111,8 @@ void drawCityEye(const PerspectiveOptions& options, const CityJob& job, const Lo
   CityFrames frames(scene);
   SceneDrawStats stats;
   writePng(job.output, frames.draw(view, job.background, &stats));
-  std::printf("%s: %zu models, %zu instances: %s -> %s (%dx%d)\n", scene.label.c_str(),
-              scene.models.size(), scene.instances.size(), statsText(stats).c_str(),
-              job.output.c_str(), job.camera.width, job.camera.height);
+  std::printf("%s: %s: %s -> %s (%dx%d)\n", scene.label.c_str(), sizeText(scene).c_str(),
+              statsText(stats).c_str(), job.output.c_str(), job.camera.width, job.camera.height);
 }
 
 void drawCityPath(const PerspectiveOptions& options, const CityJob& job, const LoadedScene& scene) {
@@ -148,10 +158,10 @@ void drawCityPath(const PerspectiveOptions& options, const CityJob& job, const L
     for (const std::string& file : written) std::filesystem::remove(file, ignored);
     throw;
   }
-  std::printf("%s: %zu models, %zu instances, %d frames along %s: %s in all -> %s .. %s (%dx%d)\n",
-              scene.label.c_str(), scene.models.size(), scene.instances.size(), options.frames,
-              cli::displayPath(options.path).c_str(), statsText(all).c_str(), name(0).c_str(),
-              name(views.size() - 1).c_str(), job.camera.width, job.camera.height);
+  std::printf("%s: %s, %d frames along %s: %s in all -> %s .. %s (%dx%d)\n", scene.label.c_str(),
+              sizeText(scene).c_str(), options.frames, cli::displayPath(options.path).c_str(),
+              statsText(all).c_str(), name(0).c_str(), name(views.size() - 1).c_str(),
+              job.camera.width, job.camera.height);
 }
 
 }  // namespace
