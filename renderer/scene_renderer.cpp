@@ -2,7 +2,6 @@
 
 #include <algorithm>
 
-#include "renderer/perspective_layers.h"
 #include "renderer/scene_view.h"
 
 namespace octopoint {
@@ -42,11 +41,7 @@ SceneError SceneRenderer::place(std::size_t i, const InstanceTransform& transfor
   return SceneError::kNone;
 }
 
-bool SceneRenderer::draw(const PerspectiveView& view, FrameView& frame, SceneDrawStats* stats,
-                         const std::atomic<bool>* abort) {
-  if (!valid_) return false;
-  SceneDrawStats local;
-  SceneDrawStats& counted = stats != nullptr ? *stats : local;
+std::size_t SceneRenderer::orderInView(const PerspectiveView& view, SceneDrawStats& counted) {
   // The frustum's side slopes for the instances' boxes (any depth's tables hold them).
   const PerspectiveWalkTables frustum = perspectiveWalkTables(view, 1, 0);
   std::size_t count = 0;
@@ -69,6 +64,38 @@ bool SceneRenderer::draw(const PerspectiveView& view, FrameView& frame, SceneDra
             [](const Slot& a, const Slot& b) {
               return a.nearest != b.nearest ? a.nearest < b.nearest : a.instance < b.instance;
             });
+  return count;
+}
+
+bool SceneRenderer::layersOf(const PerspectiveView& view, const SceneInstance& instance,
+                             PerspectiveView* model_view, PerspectiveLayers* layers) {
+  if (instanceView(view, instance.transform, depth_shift_, model_view) != PerspectiveError::kNone)
+    return false;  // turned, its eye lies beyond the camera's reach
+  *layers = perspectiveLayers(*models_[instance.model], *model_view, 0,
+                              renderers_[instance.model]->upperTreeIndexes(), tables_);
+  return true;
+}
+
+std::size_t SceneRenderer::setUp(const PerspectiveView& view, SceneDrawStats* stats) {
+  if (!valid_) return 0;
+  SceneDrawStats local;
+  SceneDrawStats& counted = stats != nullptr ? *stats : local;
+  const std::size_t count = orderInView(view, counted);
+  std::size_t set_up = 0;
+  for (std::size_t k = 0; k < count; ++k) {
+    PerspectiveView model_view;
+    PerspectiveLayers layers;
+    set_up += layersOf(view, instances_[order_[k].instance], &model_view, &layers) ? 1 : 0;
+  }
+  return set_up;
+}
+
+bool SceneRenderer::draw(const PerspectiveView& view, FrameView& frame, SceneDrawStats* stats,
+                         const std::atomic<bool>* abort) {
+  if (!valid_) return false;
+  SceneDrawStats local;
+  SceneDrawStats& counted = stats != nullptr ? *stats : local;
+  const std::size_t count = orderInView(view, counted);
   if (frame.width() != tiles_width_ || frame.height() != tiles_height_) {
     tiles_.assign(occlusionTileCount(frame.width(), frame.height(), kOcclusionTileShift), {});
     tiles_width_ = frame.width();
@@ -77,16 +104,12 @@ bool SceneRenderer::draw(const PerspectiveView& view, FrameView& frame, SceneDra
   OcclusionTiles occlusion(frame, tiles_, kOcclusionTileShift);
   occlusion.reset();
   for (std::size_t k = 0; k < count; ++k) {
-    const SceneInstance& instance = instances_[order_[k].instance];
     PerspectiveView model_view;
-    if (instanceView(view, instance.transform, depth_shift_, &model_view) !=
-        PerspectiveError::kNone) {
-      ++counted.beyond_reach;  // turned, its eye lies beyond the camera's reach
+    PerspectiveLayers layers;
+    if (!layersOf(view, instances_[order_[k].instance], &model_view, &layers)) {
+      ++counted.beyond_reach;
       continue;
     }
-    const PerspectiveRenderer& renderer = *renderers_[instance.model];
-    const PerspectiveLayers layers = perspectiveLayers(*models_[instance.model], model_view, 0,
-                                                       renderer.upperTreeIndexes(), tables_);
     if (layers.count == 0) continue;  // a model with no depth this build draws
     if (!drawPerspectiveLayers(layers.layers(), &layers.detail, model_view, frame, &occlusion,
                                &counted.points, nullptr, abort)) {

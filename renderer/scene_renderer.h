@@ -23,6 +23,7 @@
 #include "octopoint/scene.h"
 #include "renderer/occlusion_tiles.h"
 #include "renderer/perspective.h"
+#include "renderer/perspective_layers.h"
 #include "renderer/perspective_renderer.h"
 #include "renderer/perspective_walk.h"
 
@@ -59,6 +60,11 @@ class SceneRenderer {
   bool draw(const PerspectiveView& view, FrameView& frame, SceneDrawStats* stats = nullptr,
             const std::atomic<bool>* abort = nullptr);
 
+  // What draw does per frame before any point is drawn (the instances' boxes, the frustum test,
+  // the nearest-first order, each instance's view and walk tables), without drawing: the
+  // benchmark's measure of the set-up (bench/scene_bench.cpp). Returns the instances set up.
+  std::size_t setUp(const PerspectiveView& view, SceneDrawStats* stats = nullptr);
+
  private:
   struct Slot {
     std::int64_t nearest = 0;  // the box's nearest camera-space depth, scene units (sort key)
@@ -67,6 +73,12 @@ class SceneRenderer {
 
   std::vector<const ModelView*> models_;
   std::vector<std::unique_ptr<PerspectiveRenderer>> renderers_;  // per model: its indexes
+  // The instances in view, nearest first, in order_: their count.
+  std::size_t orderInView(const PerspectiveView& view, SceneDrawStats& counted);
+  // Instance `instance`'s model view and layers; false when the camera cannot reach it.
+  bool layersOf(const PerspectiveView& view, const SceneInstance& instance,
+                PerspectiveView* model_view, PerspectiveLayers* layers);
+
   std::vector<SceneInstance> instances_;
   std::vector<Slot> order_;  // this frame's instances to draw, nearest first
   std::array<PerspectiveWalkTables, format::kMaxLevels> tables_{};  // per instance drawn
