@@ -10,6 +10,8 @@
 //    bytes (tests/support/las_writer.h), so the fuzzer starts from every layout the reader knows.
 //  - laz: small LAZ files of point formats 0 to 3 and 6 to 8, fixed and variable chunks of a few
 //    points, and a COPC file whose hierarchy has child pages.
+//  - scene: scene files (docs/city.md) of one and of several models and instances, turned, scaled
+//    and at the coordinates' limits.
 // usage: make_fuzz_corpus OUTDIR
 #include <cstdio>
 #include <cstring>
@@ -173,6 +175,20 @@ void writeLazSeeds(const fs::path& dir) {
 
 }  // namespace
 
+void writeSceneSeeds(const fs::path& dir) {
+  fs::create_directories(dir);
+  write(dir / "one.json",
+        std::string(R"({"models": ["tabletop"], "instances": [[0, 0, 0, 0, 0, 0]]})"));
+  write(dir / "several.json",
+        std::string(
+            R"({"models": ["tower.oct", "tree.oct"], "instances": [[0, 0, -8388608, 0, 0, 0], )"
+            R"([1, 33554432, -2097152, -16777216, 16384, -2], [0, -50331648, 0, 1, 65535, 8]]})"));
+  write(
+      dir / "limits.json",
+      std::string(R"({"models": ["a.oct"], "instances": [[0, 17592186044416, -17592186044416, 0, )"
+                  R"(32768, -8], [0, 0, 0, -17592186044416, 1, 8]]})"));
+}
+
 int main(int argc, char** argv) {
   if (argc != 2) {
     std::fprintf(stderr, "usage: make_fuzz_corpus OUTDIR\n");
@@ -195,6 +211,7 @@ int main(int argc, char** argv) {
     writeChunkedSeeds(out / "chunked", model);
     writeLasSeeds(out / "las");
     writeLazSeeds(out / "laz");
+    writeSceneSeeds(out / "scene");
   } catch (const std::exception& error) {
     std::fprintf(stderr, "make_fuzz_corpus: %s\n", error.what());
     return 1;

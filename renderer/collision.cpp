@@ -213,7 +213,7 @@ struct LocalFrame {
 // its turned cube; nullopt otherwise, or for a scale outside the range.
 std::optional<LocalFrame> frameNear(const CollisionInstance& instance, const ModelPoint& point,
                                     std::int64_t margin) {
-  const InstanceTransform& t = instance.transform;
+  const CollisionTransform& t = instance.transform;
   if (instance.model == nullptr || t.scale_log2 < kMinInstanceScaleLog2 ||
       t.scale_log2 > kMaxInstanceScaleLog2) {
     return std::nullopt;

@@ -80,14 +80,16 @@ class CollisionModel {
   int bottom_ = 0;                    // its deepest tree level
 };
 
-// Where an instance of a model stands in a scene (issue 33's scenes of many models): world =
+// Where an instance of a model stands for collision: world =
 // translation + 2^scale_log2 * Ry(yaw) * model, where Ry turns +z towards +x by yaw (the walk's
-// forward, sin yaw, 0, cos yaw) about the vertical (y) axis. Q.24 units both sides.
-struct InstanceTransform {
+// forward, sin yaw, 0, cos yaw) about the vertical (y) axis. Q.24 units both sides. (The scenes
+// of many models, octopoint/scene.h, place instances by an InstanceTransform of their own: turning
+// one into the other, so that a scene's walk collides with its instances, is still to be done.)
+struct CollisionTransform {
   ModelPoint translation{0, 0, 0};
   Angle yaw;
   int scale_log2 = 0;  // kMinInstanceScaleLog2 .. kMaxInstanceScaleLog2
-  bool operator==(const InstanceTransform&) const = default;
+  bool operator==(const CollisionTransform&) const = default;
 };
 
 inline constexpr int kMinInstanceScaleLog2 = -8;
@@ -95,7 +97,7 @@ inline constexpr int kMaxInstanceScaleLog2 = 6;
 
 struct CollisionInstance {
   const CollisionModel* model = nullptr;
-  InstanceTransform transform;
+  CollisionTransform transform;
 };
 
 // Whether the sphere (world units) meets any instance. The sphere is carried into each instance's

@@ -36,6 +36,9 @@ inline constexpr std::int64_t kPerspectiveUnit = std::int64_t{1} << kPerspective
 inline constexpr std::int64_t kMaxEyeDistance = 128;
 inline constexpr int kMinFieldOfViewDegrees = 10;
 inline constexpr int kMaxFieldOfViewDegrees = 120;
+// The depth key a perspective leaf writes: camera-space z in units of 2^-14 cube edge (z >> 10),
+// which keeps every z the eye can see (below 2^33.5 units) within FrameView::kMaxDepthKey.
+inline constexpr int kPerspectiveDepthShift = 10;
 
 // The number of bits |v| takes (0 for 0, 64 for INT64_MIN).
 inline int significantBits(std::int64_t v) {
@@ -93,6 +96,10 @@ struct PerspectiveView {
   int fraction_bits = kDefaultFractionBits;
   std::int64_t centre_x = 0;  // width / 2, Q(32-F).F
   std::int64_t centre_y = 0;  // height / 2, Q(32-F).F
+  // A leaf's depth key is its camera-space z >> depth_shift. A scene of many models
+  // (renderer/scene_renderer.h) draws a model scaled by 2^s with depth_shift + s of the scene's
+  // own, so that every instance's keys measure the same distance in one z-buffer.
+  int depth_shift = kPerspectiveDepthShift;
 };
 
 [[nodiscard]] PerspectiveError buildPerspectiveView(const PerspectiveCamera& camera,

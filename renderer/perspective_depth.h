@@ -20,11 +20,6 @@
 
 namespace octopoint {
 
-// The depth key a perspective leaf writes in a colour frame: camera-space z (Q.24 cube edges) in
-// units of 2^-14 cube edge (z >> 10), which keeps every z the eye can see (below 2^33.5 units)
-// within FrameView::kMaxDepthKey.
-inline constexpr int kPerspectiveDepthShift = 10;
-
 // Depths below 2^-18 cube edge are one step (z >> 6); the code counts that unit linearly up to
 // 2^11 units, then by 2^11 steps per octave.
 inline constexpr int kNormalDepthUnitShift = 6;  // Q.24 z >> 6: 2^-18 cube edge units

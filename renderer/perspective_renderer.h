@@ -48,6 +48,11 @@ class PerspectiveRenderer {
   // The depths detail by distance chooses among that the model holds.
   std::span<const int> detailDepths() const { return {depths_.data(), dense_}; }
 
+  // Each drawn level's upper tree index, by the model's level index (perspectiveLayers takes
+  // them): a scene of many models (renderer/scene_renderer.h) draws its instances of this model
+  // with them, into one frame.
+  std::span<const UpperTreeIndex> upperTreeIndexes() const { return {indexes_.data(), count_}; }
+
   // Draws `view` into `frame` (cleared by the caller; its size the view's): each leaf within a
   // quarter pixel plus the additions' rounding of its exact projection. False when the depth is
   // not one the model stores (or is deeper than this build draws), or when aborted.

@@ -131,7 +131,7 @@ template <PixelPayload kPayload>
 class PerspectivePlot {
  public:
   PerspectivePlot(const LevelView& level, FrameView& frame, int fraction_bits, std::int64_t padding,
-                  OcclusionTiles* occlusion = nullptr)
+                  int depth_shift, OcclusionTiles* occlusion = nullptr)
       : colours_(level.leaves.data()),
         normals_(level.normals.data()),
         pixels_(frame.pixelData()),
@@ -140,6 +140,7 @@ class PerspectivePlot {
         height_(frame.height()),
         fraction_bits_(fraction_bits),
         padding_(padding),
+        depth_shift_(depth_shift),
         occlusion_(occlusion) {}
 
   // Occlusion culling (with tiles): whether every pixel the subtree's leaves could write already
@@ -180,7 +181,7 @@ class PerspectivePlot {
     unchecked_ = x - margin_x >= 0 && x + margin_x < (std::int64_t{width_} << fraction_bits_) &&
                  y - margin_y >= 0 && y + margin_y < (std::int64_t{height_} << fraction_bits_) &&
                  z - subtree.reach_z >= 0 &&
-                 (z + subtree.reach_z) >> kPerspectiveDepthShift <= FrameView::kMaxDepthKey;
+                 (z + subtree.reach_z) >> depth_shift_ <= FrameView::kMaxDepthKey;
     // Where high - low < 1 pixel, no leaf's span is more than two pixels on that axis: then every
     // leaf takes the four-corner path, without the test per leaf which path (a coin toss where
     // spans of two and three pixels mix).
@@ -196,7 +197,7 @@ class PerspectivePlot {
       // unchecked_: the key is below kMaxDepthKey without the clamp (enterAffine).
       const std::uint32_t word =
           kPayload == PixelPayload::kColour
-              ? FrameView::pack(static_cast<std::uint32_t>(leaf.z >> kPerspectiveDepthShift),
+              ? FrameView::pack(static_cast<std::uint32_t>(leaf.z >> depth_shift_),
                                 colours_[leaf.index])
               : wordOf(leaf.z, payloadOf(leaf.index));
       const auto f = static_cast<int>(fraction_bits_);
@@ -237,14 +238,18 @@ class PerspectivePlot {
     }
   }
   // The word of depth z (Q.24) with `payload`; with payload 0, the least word a leaf at z writes.
-  __attribute__((always_inline)) static std::uint32_t wordOf(std::int64_t z,
-                                                             std::uint32_t payload) {
+  // A scaled instance of a scene (depth_shift_ other than kPerspectiveDepthShift) has its z in its
+  // own units: the normal frame's code takes it in the scene's.
+  __attribute__((always_inline)) std::uint32_t wordOf(std::int64_t z, std::uint32_t payload) const {
     if constexpr (kPayload == PixelPayload::kColour) {
       return FrameView::pack(static_cast<std::uint32_t>(std::min<std::int64_t>(
-                                 z >> kPerspectiveDepthShift, FrameView::kMaxDepthKey)),
+                                 z >> depth_shift_, FrameView::kMaxDepthKey)),
                              static_cast<std::uint8_t>(payload));
     } else {
-      return FrameView::packColourNormal(perspectiveNormalDepthKey(z), payload);
+      const std::int64_t scene_z = depth_shift_ >= kPerspectiveDepthShift
+                                       ? z >> (depth_shift_ - kPerspectiveDepthShift)
+                                       : z << (kPerspectiveDepthShift - depth_shift_);
+      return FrameView::packColourNormal(perspectiveNormalDepthKey(scene_z), payload);
     }
   }
 
@@ -322,6 +327,7 @@ class PerspectivePlot {
   std::int32_t width_, height_;
   std::int64_t fraction_bits_;
   std::int64_t padding_;
+  std::int64_t depth_shift_;  // PerspectiveView::depth_shift
   bool unchecked_ = false;
   bool corners_ = false;  // unchecked_, and no span of the subtree wider than 2 x 2 pixels
   std::int64_t low_x_ = 0, high_x_ = 0, low_y_ = 0, high_y_ = 0;
@@ -354,7 +360,7 @@ bool drawLayers(std::span<const PerspectiveLayer> layers, const PerspectiveDetai
       parts.detail = {detail, static_cast<int>(i), i == 0 ? -1 : layers[i - 1].level->depth};
     }
     PerspectivePlot<kPayload> plot(*layer.level, frame, view.fraction_bits,
-                                   splatPadding(*layer.tables), occlusion);
+                                   splatPadding(*layer.tables), view.depth_shift, occlusion);
     PerspectiveWalk<PerspectivePlot<kPayload>> walk(*layer.level, view, *layer.tables, plot, abort,
                                                     parts);
     complete = walk.run();

@@ -31,6 +31,7 @@
 #include "tools/model_source.h"
 #include "tools/perspective_render.h"
 #include "tools/png_file.h"
+#include "tools/scene_render.h"
 
 namespace {
 
@@ -40,6 +41,7 @@ using namespace octopoint;
 constexpr const char* kUsage =
     R"(usage: octopoint-render [--model NAME | --file M.oct | --url URL [--bytes N]] )"
     R"([options] -o OUT.png
+       octopoint-render --city SCENE.json (--eye X,Y,Z | --path P.json --frames N) -o OUT.png
        octopoint-render [--model NAME | --file M.oct] --info
        octopoint-render --list
 
@@ -107,6 +109,13 @@ nor --file nor --url it draws the default model embedded in this binary.
                      and keeps its height where there is none; above R, at most one cube edge
   --fov DEG          with --perspective, --eye or --path: the vertical field of view, 10..120
                      (default 60, or the path's "fov")
+  --city SCENE.json  draw a scene of many models (docs/city.md: models and instances of them,
+                     each placed, turned about the vertical and scaled by a power of two; a
+                     file of at most 64 MiB, 1..256 models sharing at most 255 colours, 1..2^20
+                     instances) with --eye (in scene edges, the cube edge of a model at scale 0,
+                     within 128 of the scene's origin) and --look, or --path and --frames (PNGs
+                     only, no video); colour, each instance at the depth its distance asks for,
+                     nearer instances hiding farther ones
   --size WxH         framebuffer size in pixels, each side 1..8192 and at most 16777216 pixels
                      (4096x4096) in all (default 320x240)
   --depth N|auto     which of the model's depths to draw (default auto: depth by projected size,
@@ -172,6 +181,7 @@ struct Options {
   int sheet = 0;  // yaw angles of the contact sheet; 0: a single view
   PerspectiveOptions perspective;
   StyleOptions style;
+  std::string city;  // --city SCENE.json
 };
 
 // "AZ,EL" in degrees, each within +-90.
@@ -262,6 +272,15 @@ bool parseFetchOption(cli::ArgumentReader& args, UrlFetchOptions& fetch) {
 // The options that exclude or need each other.
 void checkCombination(const Options& options) {
   checkOneModelSource(options.source);
+  if (!options.city.empty()) {
+    checkCityOptions(options.perspective, options.orbit_camera,
+                     !options.source.model_name.empty() || !options.source.model_file.empty() ||
+                         !options.source.url.empty(),
+                     options.depth.has_value(), options.fill, options.sheet > 0,
+                     options.style.style != Style::kColour);
+    if (options.output.empty()) throw cli::Error("no output given: use -o OUT.png");
+    return;
+  }
   const bool url = !options.source.url.empty();
   if (!url && options.fetch.bytes > 0) throw cli::Error("--bytes needs --url");
   if (url && (options.depth || options.sheet > 0)) {
@@ -339,6 +358,9 @@ Options parseOptions(int argc, char** argv) {
       options.sheet = cli::parseInt(args.name(), args.value(), 1, 36);
     } else if (args.is("-o") || args.is("--output")) {
       options.output = args.value();
+    } else if (args.is("--city")) {
+      options.city = args.value();
+      if (options.city.empty()) throw cli::Error("--city: empty (give a scene file)");
     } else {
       args.refuseUnknown();
     }
@@ -591,6 +613,10 @@ int run(int argc, char** argv) {
   const Options options = parseOptions(argc, argv);
   if (options.list) {
     listModels();
+    return 0;
+  }
+  if (!options.city.empty()) {
+    runCity(options.perspective, {options.city, options.camera, options.output, kBackground});
     return 0;
   }
   if (!options.source.url.empty()) return renderUrl(options);

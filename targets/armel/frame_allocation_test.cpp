@@ -14,6 +14,7 @@
 #include "octopoint/smooth.h"
 #include "octopoint/styles.h"
 #include "renderer/level_of_detail.h"
+#include "renderer/scene_renderer.h"
 #include "targets/armel/allocation_counter.h"
 #include "tests/support/dual_resolution_fixture.h"
 #include "tests/support/model_images.h"
@@ -186,6 +187,47 @@ TEST(FrameAllocation, WalkModeFramesAllocateNothingOnceASizeIsDrawn) {
   EXPECT_TRUE(renderer.status().latest.view.walk);
   EXPECT_GE(renderer.status().coarse_shown, 15u);
   EXPECT_EQ(allocations, 0) << "in 5 walks (15 coarse frames or more, 5 fine ones)";
+}
+
+// A scene of many models (renderer/scene_renderer.h, docs/city.md): its instances, sort slots and
+// indexes are sized when it is made, its occlusion tiles at the first frame of a size; then frames
+// from any eye, and instances moved between them, allocate nothing.
+TEST(FrameAllocation, SceneFramesAllocateNothingOnceASizeIsDrawn) {
+  ModelIssue issue;
+  const auto model = ModelView::fromEmbedded(*models::defaultModel(), &issue);
+  ASSERT_TRUE(model.has_value()) << describe(issue.error);
+  const std::int64_t edge = kPerspectiveUnit;
+  std::vector<SceneInstance> instances;
+  for (int i = 0; i < 64; ++i) {
+    instances.push_back(
+        {0, {{(i % 8 - 4) * edge, 0, (i / 8) * edge}, Angle::fromTurns16(i * 999), i % 3 - 1}});
+  }
+  const ModelView* models[] = {&*model};
+  SceneError error;
+  SceneRenderer scene(models, instances, &error);
+  ASSERT_EQ(error, SceneError::kNone);
+  PerspectiveCamera camera;
+  camera.eye = {edge / 2, -edge / 4, -3 * edge};
+  PerspectiveView view;
+  ASSERT_EQ(buildPerspectiveView(camera, kDefaultFractionBits, &view), PerspectiveError::kNone);
+  Framebuffer frame(camera.width, camera.height);
+  frame.clear();
+  ASSERT_TRUE(scene.draw(view, frame));
+
+  SceneDrawStats stats;
+  const long before = heapAllocationCount();
+  for (int i = 0; i < 4; ++i) {
+    camera.eye.z += edge;
+    camera.yaw = Angle::fromDegrees(10 * i);
+    ASSERT_EQ(buildPerspectiveView(camera, kDefaultFractionBits, &view), PerspectiveError::kNone);
+    ASSERT_EQ(scene.place(static_cast<std::size_t>(i), {{i * edge, 0, 2 * edge}, {}, 0}),
+              SceneError::kNone);
+    frame.clear();
+    ASSERT_TRUE(scene.draw(view, frame, &stats));
+  }
+  const long allocations = heapAllocationCount() - before;
+  EXPECT_GT(stats.instances_drawn, 10u);
+  EXPECT_EQ(allocations, 0) << "in 4 frames of 64 instances";
 }
 
 // The one-call path (octopoint/rgb_renderer.h) allocates its frame on the first draw and again

@@ -214,7 +214,7 @@ TEST(CollisionGround, IsTheHighestTopUnderTheColumnAsEveryLeafSays) {
 // The exact answer for an instance, in 128-bit integers and doubles for the turn: the world
 // sphere carried into the model's frame exactly, against every leaf, with `extra` world units
 // added to the radius.
-bool exactInstanceMeets(const CollisionLeafList& leaves, const InstanceTransform& t,
+bool exactInstanceMeets(const CollisionLeafList& leaves, const CollisionTransform& t,
                         const CollisionSphere& sphere, double extra) {
   const double turn = t.yaw.turns16() * 2 * 3.14159265358979323846 / Angle::kUnitsPerTurn;
   const double scale = std::ldexp(1.0, t.scale_log2);
@@ -244,7 +244,7 @@ TEST(CollisionInstances, TurnedScaledAndMovedAreNeverMissedAndErrOnlyByThePad) {
   std::mt19937_64 random(3303);
   int met = 0;
   for (int q = 0; q < 600; ++q) {
-    InstanceTransform t;
+    CollisionTransform t;
     t.translation = {static_cast<std::int64_t>(random() % (1u << 28)) - (1 << 27),
                      static_cast<std::int64_t>(random() % (1u << 26)),
                      static_cast<std::int64_t>(random() % (1u << 28)) - (1 << 27)};

@@ -220,11 +220,17 @@ for kind in "${kinds[@]}"; do
   refuse 3 "prepare_scene_$tag" "$expected" "$PREPARE" "$IN/good.pcd" --scene "$path" -o "$W/work/out/p" --name m
   refuse 3 "${q}render_file_$tag" "$expected" "$RENDER" --file "$path" -o "$W/work/out/x.png"
   refuse 3 "tradeoff_scan_$tag" "$expected" "$TRADEOFF" "$path" -o "$W/work/out/t"
+  city_expected=$expected  # a scene file (docs/city.md) holds at most 64 MiB of JSON text
+  [ "$kind" = sparse_2g.pcd ] && city_expected="2147483648 bytes, more than the 64 MiB"
+  [ "$kind" = empty ] && city_expected="not valid JSON"
+  refuse 3 "${q}render_city_$tag" "$city_expected" "$RENDER" --city "$path" --eye 0,0,-2 -o "$W/work/out/x.png"
   [ -n "$VIEW" ] && refuse 3 "view_file_$tag" "$expected" env -u DISPLAY -u WAYLAND_DISPLAY -u SDL_VIDEODRIVER \
     "$VIEW" --file "$path"
 done
 refuse 3 q:scene_past_1mib "more than the 1 MiB" "$PREPARE" "$IN/good.pcd" --scene "$I3/sparse_2m.json" \
   -o "$W/work/out/p" --name m
+refuse 3 city_nul_bytes "a NUL byte at byte 0" "$RENDER" --city "$I3/sparse_2m.json" --eye 0,0,-2 \
+  -o "$W/work/out/x.png"
 refuse 3 proc_file_as_scan "status" "$PREPARE" /proc/self/status -o "$W/work/out/p" --name m
 refuse 3 dev_urandom_as_model "is a character device" "$RENDER" --file /dev/urandom -o "$W/work/out/x.png"
 

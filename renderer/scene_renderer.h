@@ -1,0 +1,92 @@
+#pragma once
+// Draws a scene of many models (octopoint/scene.h, docs/city.md) in perspective into one frame:
+// each instance as its model is drawn alone by the inverse camera (renderer/scene_view.h), with
+// detail by distance, nearest instance first, and occlusion culling across instances (one set of
+// tiles for the frame: what a near building hides of a far one is passed over). Instances wholly
+// outside the frustum, or beyond the draw distance (more than kMaxEyeDistance of their own cube
+// edges from the eye), cost a few products each and are not drawn.
+//
+// Memory: per distinct model its upper tree indexes (as PerspectiveRenderer keeps them); per
+// instance its transform and a sort slot, sized when the scene is made; the occlusion tiles once
+// per framebuffer size. A frame allocates nothing after the first of its size. Not on a
+// bare-metal build (it keeps these on the heap). Integer only.
+
+#include <array>
+#include <atomic>
+#include <cstdint>
+#include <memory>
+#include <span>
+#include <vector>
+
+#include "octopoint/framebuffer.h"
+#include "octopoint/model.h"
+#include "octopoint/scene.h"
+#include "renderer/occlusion_tiles.h"
+#include "renderer/perspective.h"
+#include "renderer/perspective_layers.h"
+#include "renderer/perspective_renderer.h"
+#include "renderer/perspective_walk.h"
+
+namespace octopoint {
+
+// What a scene frame drew.
+struct SceneDrawStats {
+  std::uint64_t instances_drawn = 0;
+  std::uint64_t outside_frustum = 0;  // instances passed over by the frustum test
+  std::uint64_t beyond_reach = 0;     // instances beyond the draw distance
+  PerspectiveDrawStats points;        // summed over the drawn instances
+};
+
+class SceneRenderer {
+ public:
+  // `models` (each must outlive the renderer) and the instances; `*error` says why a scene is
+  // refused (then nothing is drawn).
+  SceneRenderer(std::span<const ModelView* const> models, std::span<const SceneInstance> instances,
+                SceneError* error);
+
+  std::size_t instanceCount() const { return instances_.size(); }
+  const SceneInstance& instance(std::size_t i) const { return instances_[i]; }
+  // The scene's depth shift (renderer/scene_view.h: sceneDepthShift of its largest scale).
+  int depthShift() const { return depth_shift_; }
+
+  // Moves instance `i` (containers, cranes): the next frame draws it there. Refused (and the
+  // instance left where it was) for a bad transform, an unknown instance, or a scale larger than
+  // the largest the scene was made with (the depth keys' shift is fixed with the scene).
+  SceneError place(std::size_t i, const InstanceTransform& transform);
+
+  // Draws the scene as `view` sees it (the eye in Q.24 scene edges about the scene's origin) into
+  // `frame` (cleared by the caller, the view's size). False when the scene was refused or when
+  // aborted.
+  bool draw(const PerspectiveView& view, FrameView& frame, SceneDrawStats* stats = nullptr,
+            const std::atomic<bool>* abort = nullptr);
+
+  // What draw does per frame before any point is drawn (the instances' boxes, the frustum test,
+  // the nearest-first order, each instance's view and walk tables), without drawing: the
+  // benchmark's measure of the set-up (bench/scene_bench.cpp). Returns the instances set up.
+  std::size_t setUp(const PerspectiveView& view, SceneDrawStats* stats = nullptr);
+
+ private:
+  struct Slot {
+    std::int64_t nearest = 0;  // the box's nearest camera-space depth, scene units (sort key)
+    std::uint32_t instance = 0;
+  };
+
+  std::vector<const ModelView*> models_;
+  std::vector<std::unique_ptr<PerspectiveRenderer>> renderers_;  // per model: its indexes
+  // The instances in view, nearest first, in order_: their count.
+  std::size_t orderInView(const PerspectiveView& view, SceneDrawStats& counted);
+  // Instance `instance`'s model view and layers; false when the camera cannot reach it.
+  bool layersOf(const PerspectiveView& view, const SceneInstance& instance,
+                PerspectiveView* model_view, PerspectiveLayers* layers);
+
+  std::vector<SceneInstance> instances_;
+  std::vector<Slot> order_;  // this frame's instances to draw, nearest first
+  std::array<PerspectiveWalkTables, format::kMaxLevels> tables_{};  // per instance drawn
+  std::vector<OcclusionTile> tiles_;
+  std::int32_t tiles_width_ = 0, tiles_height_ = 0;
+  int depth_shift_ = kPerspectiveDepthShift;
+  int largest_scale_ = 0;
+  bool valid_ = false;
+};
+
+}  // namespace octopoint
