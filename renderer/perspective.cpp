@@ -15,6 +15,11 @@ std::int64_t magnitude(std::int64_t value) { return value < 0 ? -value : value; 
 
 bool fitsInt32(std::int64_t value) { return value >= INT32_MIN && value <= INT32_MAX; }
 
+// significantBits(value) <= bits (0..62), by two comparisons: -2^bits < value < 2^bits.
+bool within(std::int64_t value, int bits) {
+  return value > -(std::int64_t{1} << bits) && value < (std::int64_t{1} << bits);
+}
+
 // round(numerator * 2^shift / denominator) for a shift that may be negative (then the denominator
 // takes the power of two): the screen's F against a Q.16 focal length.
 std::optional<std::int64_t> divScaled(std::int64_t numerator, std::int64_t denominator, int shift) {
@@ -195,7 +200,14 @@ std::optional<std::int64_t> affineErrorBound(const PerspectiveView& view, const 
 }
 
 std::optional<AffineProjection> affineAt(const PerspectiveView& view, const CameraPoint& centre) {
-  if (centre.z < view.camera.near) return std::nullopt;
+  AffineProjection affine;
+  if (!affineAtInto(view, centre, &affine)) return std::nullopt;
+  return affine;
+}
+
+bool affineAtInto(const PerspectiveView& view, const CameraPoint& centre,
+                  AffineProjection* affine_out) {
+  if (centre.z < view.camera.near) return false;
   assert(magnitude(centre.x) < (std::int64_t{1} << 32) &&
          magnitude(centre.y) < (std::int64_t{1} << 32));
   // f / z in Q.16 pixels per cube edge; the slopes x / z and y / z in Q.30: three hardware
@@ -207,19 +219,24 @@ std::optional<AffineProjection> affineAt(const PerspectiveView& view, const Came
   // The centre's projection f * slope, Q.16 * Q.30 to Q(32-F).F: within 1/2 ulp plus f * 2^-31
   // pixel of the exact one (the slope's rounding).
   const int shift = 46 - view.fraction_bits;
-  const std::optional<std::int64_t> dx = mulShiftRoundQuick(view.focal_q16, slope_x, shift);
-  const std::optional<std::int64_t> dy = mulShiftRoundQuick(view.focal_q16, slope_y, shift);
-  if (!dx || !dy) return std::nullopt;
+  // mulShiftRoundQuick's choice with f's bits counted once: significantBits(slope) <= 62 - those.
+  const int slope_bits = 62 - significantBits(view.focal_q16);
+  const auto offset = [&](std::int64_t slope) -> std::optional<std::int64_t> {
+    if (within(slope, slope_bits)) return mulShiftRoundSmall(view.focal_q16, slope, shift);
+    return mulShiftRound(view.focal_q16, slope, shift);
+  };
+  const std::optional<std::int64_t> dx = offset(slope_x);
+  const std::optional<std::int64_t> dy = offset(slope_y);
+  if (!dx || !dy) return false;
   const std::int64_t screen_x = view.centre_x + *dx, screen_y = view.centre_y + *dy;
-  if (!fitsInt32(screen_x) || !fitsInt32(screen_y)) return std::nullopt;
-  AffineProjection affine;
+  if (!fitsInt32(screen_x) || !fitsInt32(screen_y)) return false;
+  AffineProjection& affine = *affine_out;
   affine.centre = {static_cast<std::int32_t>(screen_x), static_cast<std::int32_t>(screen_y), z};
   const auto& m = view.world_to_camera.m_q30;
   // The projection's derivative along w: (f / z) * (w.x - (x / z) * w.z), likewise for y. With
   // |slope| < 2 (31 bits, Q.30) and f / z below 2^30 (Q.16), every product below fits int64
   // (|w| <= 2^30, |w - tilt| < 2^32): one multiplication each, no check per product.
-  if (significantBits(slope_x) <= 31 && significantBits(slope_y) <= 31 &&
-      significantBits(inverse) <= 30) {
+  if (within(slope_x, 31) && within(slope_y, 31) && within(inverse, 30)) {
     for (int a = 0; a < 3; ++a) {
       const std::int64_t w_z = m[2][a];
       affine.axis[a] = {
@@ -227,19 +244,19 @@ std::optional<AffineProjection> affineAt(const PerspectiveView& view, const Came
           mulShiftRoundSmall(inverse, m[1][a] - mulShiftRoundSmall(slope_y, w_z, 30), shift),
           roundShiftRight(w_z, 30 - kPerspectiveUnitBits)};
     }
-    return affine;
+    return true;
   }
   for (int a = 0; a < 3; ++a) {
     const std::int64_t w_x = m[0][a], w_y = m[1][a], w_z = m[2][a];
     const std::optional<std::int64_t> tilt_x = mulShiftRoundQuick(slope_x, w_z, 30);
     const std::optional<std::int64_t> tilt_y = mulShiftRoundQuick(slope_y, w_z, 30);
-    if (!tilt_x || !tilt_y) return std::nullopt;
+    if (!tilt_x || !tilt_y) return false;
     const std::optional<std::int64_t> x = mulShiftRoundQuick(inverse, w_x - *tilt_x, shift);
     const std::optional<std::int64_t> y = mulShiftRoundQuick(inverse, w_y - *tilt_y, shift);
-    if (!x || !y) return std::nullopt;
+    if (!x || !y) return false;
     affine.axis[a] = {*x, *y, roundShiftRight(w_z, 30 - kPerspectiveUnitBits)};
   }
-  return affine;
+  return true;
 }
 
 std::int64_t rotatedCubeReach(std::int64_t half) {

@@ -148,6 +148,9 @@ struct AffineProjection {
 // nullopt when `centre` lies nearer than the near plane, projects beyond what Q(32-F).F holds, or
 // an axis vector does not fit int64.
 std::optional<AffineProjection> affineAt(const PerspectiveView& view, const CameraPoint& centre);
+// The same map written to `*affine` (false, and *affine unspecified, where affineAt gives
+// nullopt): the walk's form, which does not copy the map out of an optional per subtree.
+bool affineAtInto(const PerspectiveView& view, const CameraPoint& centre, AffineProjection* affine);
 
 // A rotated cube of half-edge `half` (Q.24) reaches at most this far on any camera axis
 // (half * sqrt(3), rounded up).

@@ -79,6 +79,10 @@ struct PerspectiveWalkTables {
   // pan moves the principal point, so they differ, and one is negative when it leaves the
   // screen); INT64_MAX where a slope does not fit (that side is not tested).
   std::int64_t left_q30 = 0, right_q30 = 0, top_q30 = 0, bottom_q30 = 0;
+  // Their significantBits (63 for INT64_MAX), so that the frustum test counts only the depth's
+  // bits per node (counting is most of a product's cost where the product itself is one
+  // instruction: callgrind).
+  int left_bits = 0, right_bits = 0, top_bits = 0, bottom_bits = 0;
   // The largest |x / z| and |y / z| on the screen (for the affine error bound).
   std::int64_t slope_x_q30 = 0;
   std::int64_t slope_y_q30 = 0;
@@ -103,13 +107,19 @@ inline bool outsideFrustumSides(const PerspectiveWalkTables& tables, const Camer
   const std::int64_t far_z = c.z + reach;
   if (far_z < near) return true;
   const std::int64_t near_z = c.z - reach > near ? c.z - reach : near;
-  const auto extent = [&](std::int64_t slope_q30) {
-    return mulShiftRoundQuick(slope_q30 >= 0 ? far_z : near_z, slope_q30, 30);
+  const int far_bits = significantBits(far_z), near_bits = significantBits(near_z);
+  // mulShiftRoundQuick(slope >= 0 ? far_z : near_z, slope, 30), the slope's bits counted once a
+  // frame: the same bits.
+  const auto extent = [&](std::int64_t slope_q30, int slope_bits) -> std::optional<std::int64_t> {
+    const std::int64_t z = slope_q30 >= 0 ? far_z : near_z;
+    if ((slope_q30 >= 0 ? far_bits : near_bits) + slope_bits <= 62)
+      return mulShiftRoundSmall(z, slope_q30, 30);
+    return mulShiftRound(z, slope_q30, 30);
   };
-  const std::optional<std::int64_t> left = extent(tables.left_q30);
-  const std::optional<std::int64_t> right = extent(tables.right_q30);
-  const std::optional<std::int64_t> top = extent(tables.top_q30);
-  const std::optional<std::int64_t> bottom = extent(tables.bottom_q30);
+  const std::optional<std::int64_t> left = extent(tables.left_q30, tables.left_bits);
+  const std::optional<std::int64_t> right = extent(tables.right_q30, tables.right_bits);
+  const std::optional<std::int64_t> top = extent(tables.top_q30, tables.top_bits);
+  const std::optional<std::int64_t> bottom = extent(tables.bottom_q30, tables.bottom_bits);
   return (right && c.x - reach > *right + 1) || (left && c.x + reach < -*left - 1) ||
          (bottom && c.y - reach > *bottom + 1) || (top && c.y + reach < -*top - 1);
 }
@@ -185,8 +195,7 @@ class PerspectiveWalk {
 
   // What to do at an inner node: pass over it (aborted, outside the frustum, or drawn by another
   // depth), draw it from its affine map (`affine`), or descend.
-  Step judge(int level, const CameraPoint& centre, DetailState& state,
-             std::optional<AffineProjection>& affine) {
+  Step judge(int level, const CameraPoint& centre, DetailState& state, AffineProjection& affine) {
     if (abort_ != nullptr && abort_->load(std::memory_order_relaxed)) aborted_ = true;
     const std::int64_t reach = tables_.reach[static_cast<std::size_t>(level)];
     if (aborted_ || outsideFrustum(centre, reach)) return Step::kPass;
@@ -195,8 +204,7 @@ class PerspectiveWalk {
     }
     if (state.committed && centre.z >= tables_.affine_depth[static_cast<std::size_t>(level)] &&
         centre.z - reach >= view_.camera.near) {
-      affine = affineAt(view_, centre);
-      if (affine) return Step::kAffine;
+      if (affineAtInto(view_, centre, &affine)) return Step::kAffine;
     }
     return Step::kDescend;
   }
@@ -206,9 +214,10 @@ class PerspectiveWalk {
     if (level == tables_.depth) {
       if (state.committed || parts_.detail.drawsLeaf(level, centre.z, state)) {
         if (const std::optional<ScreenPoint> p = project(view_, centre)) {
-          const std::optional<AffineProjection> affine = affineAt(view_, centre);
-          const Point3<std::int64_t> half =
-              affine ? voxelHalfExtent(cubeShadow(*affine), tables_.depth) : Point3<std::int64_t>{};
+          AffineProjection affine;
+          const Point3<std::int64_t> half = affineAtInto(view_, centre, &affine)
+                                                ? voxelHalfExtent(cubeShadow(affine), tables_.depth)
+                                                : Point3<std::int64_t>{};
           sink_(PerspectiveLeaf{leaf_, p->x, p->y, p->z, half.x, half.y});
         }
       }
@@ -216,13 +225,13 @@ class PerspectiveWalk {
       return;
     }
     const std::uint8_t mask = *node_++;
-    std::optional<AffineProjection> affine;
+    AffineProjection affine;
     switch (judge(level, centre, state, affine)) {
       case Step::kPass:
         skipChildren(level, mask);
         return;
       case Step::kAffine:
-        if (!drawAffine(level, mask, *affine)) skipChildren(level, mask);
+        if (!drawAffine(level, mask, affine)) skipChildren(level, mask);
         return;
       case Step::kDescend:
         break;
@@ -250,14 +259,14 @@ class PerspectiveWalk {
       return;
     }
     const unsigned mask = nodes_[node.node];
-    std::optional<AffineProjection> affine;
+    AffineProjection affine;
     switch (judge(level, centre, state, affine)) {
       case Step::kPass:
         return;
       case Step::kAffine:
         node_ = nodes_ + node.node + 1;
         leaf_ = node.leaf;
-        static_cast<void>(drawAffine(level, static_cast<std::uint8_t>(mask), *affine, &node,
+        static_cast<void>(drawAffine(level, static_cast<std::uint8_t>(mask), affine, &node,
                                      model_centre));  // hidden: nothing to read past
         return;
       case Step::kDescend:

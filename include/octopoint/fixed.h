@@ -78,10 +78,44 @@ constexpr UnsignedDivision longDivide(uint64_t n, uint64_t d) {
   return {quotient, n};
 }
 
+// longDivide's quotient and remainder for a divisor below 2^32 (d > 0), in 32-bit words: what a
+// Cortex-M0+ (32-bit registers, no divide) does in a few instructions a step where longDivide's
+// 64-bit shifts, compares and subtractions take about thirty (the perspective walk's f / z,
+// x / z and y / z have such divisors: z < 2^33 is below 2^32 wherever the eye may see it, the
+// walk's numerators are near 2^50). The high word is divided first where it is not already below
+// d; then the low word's 32 bits, top first, one quotient bit a step: the remainder stays below
+// d < 2^32, and doubling it may carry out of the word, which then certainly exceeds d (the
+// subtraction, taken modulo 2^32, is still exact: the true difference is below d).
+constexpr uint32_t divideWordInto(uint32_t word, uint32_t d, uint32_t& remainder) {
+  for (int step = 0; step < 32; ++step) {
+    const bool carry = (remainder >> 31) != 0;
+    remainder = (remainder << 1) | (word >> 31);
+    word <<= 1;  // the quotient's bits enter at the bottom as the dividend's leave at the top
+    if (carry || remainder >= d) {
+      remainder -= d;
+      word |= 1;
+    }
+  }
+  return word;
+}
+constexpr UnsignedDivision longDivideNarrow(uint64_t n, uint32_t d) {
+  assert(d != 0);
+  const auto high = static_cast<uint32_t>(n >> 32);
+  uint32_t remainder = high;
+  uint32_t quotient_high = 0;
+  if (high >= d) {
+    remainder = 0;
+    quotient_high = divideWordInto(high, d, remainder);
+  }
+  const uint32_t quotient_low = divideWordInto(static_cast<uint32_t>(n), d, remainder);
+  return {(uint64_t{quotient_high} << 32) | quotient_low, remainder};
+}
+
 // n / d and n % d (d > 0): the hardware's division where it has one for 64 bits (or a library
-// routine the target allows), longDivide on a Cortex-M (M profile).
+// routine the target allows), longDivideNarrow or longDivide on a Cortex-M (M profile).
 constexpr UnsignedDivision divideUnsigned(uint64_t n, uint64_t d) {
 #if defined(__ARM_ARCH_PROFILE) && __ARM_ARCH_PROFILE == 'M'
+  if ((d >> 32) == 0) return longDivideNarrow(n, static_cast<uint32_t>(d));
   return longDivide(n, d);
 #else
   return {n / d, n % d};

@@ -555,5 +555,33 @@ TEST(LongDivide, QuotientAndRemainderAreTheHardwares) {
   }
 }
 
+// longDivideNarrow (a Cortex-M's division by a divisor below 2^32) likewise: the extremes (a high
+// word below, equal to and above the divisor; the doubled remainder carrying out of its word) and
+// a million random pairs.
+TEST(LongDivide, NarrowQuotientAndRemainderAreTheHardwares) {
+  constexpr std::uint64_t kMax = std::numeric_limits<std::uint64_t>::max();
+  const std::uint64_t numerators[] = {
+      0,        1,        0xFFFF'FFFF, 0x1'0000'0000,         0x1'FFFF'FFFF,
+      kMax / 2, kMax - 1, kMax,        0xFFFF'FFFE'0000'0001, 0x8000'0000'0000'0000};
+  const std::uint32_t divisors[] = {1,           2,           3,           7,          0x7FFF'FFFF,
+                                    0x8000'0000, 0x8000'0001, 0xFFFF'FFFE, 0xFFFF'FFFF};
+  for (const std::uint64_t n : numerators) {
+    for (const std::uint32_t d : divisors) {
+      const UnsignedDivision division = longDivideNarrow(n, d);
+      EXPECT_EQ(division.quotient, n / d) << n << " / " << d;
+      EXPECT_EQ(division.remainder, n % d) << n << " % " << d;
+    }
+  }
+  std::mt19937_64 random(2027);
+  for (int i = 0; i < 1'000'000; ++i) {
+    const std::uint64_t n = random() >> (random() % 64);
+    const auto d =
+        std::max<std::uint32_t>(1, static_cast<std::uint32_t>(random() >> 32) >> (random() % 32));
+    const UnsignedDivision division = longDivideNarrow(n, d);
+    ASSERT_EQ(division.quotient, n / d) << n << " / " << d;
+    ASSERT_EQ(division.remainder, n % d) << n << " % " << d;
+  }
+}
+
 }  // namespace
 }  // namespace octopoint
