@@ -25,13 +25,14 @@ struct PerspectiveOptions {
   std::optional<Look> look;      // --look
   std::string path;              // --path
   int frames = 0;                // --frames
+  std::optional<double> near;    // --near, scan units; none: modelNearPlane's default
 
   bool any() const { return orbit || eye || !path.empty(); }
   const char* mode() const { return orbit ? "--perspective" : eye ? "--eye" : "--path"; }
 };
 
 // Reads the option `args` is at into `options`: false when it is none of --perspective, --fov,
-// --eye, --look, --path and --frames.
+// --eye, --look, --path, --frames and --near.
 bool parsePerspectiveOption(cli::ArgumentReader& args, PerspectiveOptions& options);
 
 // What else the command line asked for, for the checks between the options.
@@ -45,9 +46,10 @@ struct OtherOptions {
 // Throws cli::Error, one line, for options that exclude or need each other.
 void checkPerspectiveOptions(const PerspectiveOptions& options, const OtherOptions& other);
 
-// orbitPerspective (renderer/perspective.h) for octopoint-render: throws cli::Error, one line,
-// when the camera is refused.
-PerspectiveView orbitPerspectiveView(const Camera& camera, Angle fov);
+// orbitPerspective (renderer/perspective.h) for octopoint-render, with the near plane `near`
+// (Q.24 cube edges): throws cli::Error, one line, when the camera is refused.
+PerspectiveView orbitPerspectiveView(const Camera& camera, Angle fov,
+                                     std::int64_t near = PerspectiveCamera{}.near);
 
 // Draws `model` with `view` on `background`, as BGR for OpenCV: its stored `depth`, or with 0
 // each part at the depth its distance asks for (detail by distance); occlusion culling on.

@@ -92,6 +92,9 @@ nor --file nor --url it draws the default model embedded in this binary.
                      first key to the last; at most 2^30 pixels in all (N x W x H)
   --fov DEG          with --perspective, --eye or --path: the vertical field of view, 10..120
                      (default 60, or the path's "fov")
+  --near D           with --perspective, --eye or --path: the near plane, D scan units before the
+                     eye; nothing nearer is drawn (default half the voxel edge of the model's
+                     finest depth: the ground at the eye's feet is drawn)
   --size WxH         framebuffer size in pixels, each side 1..8192 and at most 16777216 pixels
                      (4096x4096) in all (default 320x240)
   --depth N|auto     which of the model's depths to draw (default auto: depth by projected size,

@@ -29,7 +29,7 @@ using namespace octopoint;
 constexpr const char* kUsage =
     R"(usage: octopoint-view [--model NAME | --file M.oct | --url URL [--point-budget N]] )"
     R"([--size WxH] [--scale N]
-                     [--speed DEG] [--eye X,Y,Z [--look YAW,PITCH[,ROLL]]] [--fov DEG]
+                     [--speed DEG] [--eye X,Y,Z [--look YAW,PITCH[,ROLL]]] [--fov DEG] [--near D]
                      [--walk-speed S]
 
 Shows an octopoint model in a resizable window. While an arrow key is held the view turns at a
@@ -62,6 +62,8 @@ perspective (docs/perspective.md, "The viewer's walk mode").
   --fov DEG      walk mode's vertical field of view, 10..120 degrees (default 60)
   --walk-speed S how fast a held key walks, in scan units per second (default a quarter of the
                  model's cube edge; the wheel and + - change it by steps of 5/4)
+  --near D       walk mode's near plane, in scan units: nothing nearer the eye is drawn (default
+                 half the voxel edge of the model's finest depth; docs/perspective.md)
   -h, --help     show this help
 
 keys:
@@ -109,6 +111,8 @@ ViewerOptions parseOptions(int argc, char** argv) {
                        1000));
     } else if (args.is("--walk-speed")) {
       options.walk_speed = cli::parseReal(args.name(), args.value(), 1e-12, kMaxEyeCoordinate);
+    } else if (args.is("--near")) {
+      options.near = cli::parseReal(args.name(), args.value(), 1e-12, kMaxEyeCoordinate);
     } else {
       args.refuseUnknown();
     }

@@ -52,6 +52,7 @@ InteractiveConfig interactiveConfig(const ViewerOptions& options, const WalkStar
   config.degrees_per_second = options.degrees_per_second;
   config.fov = walk.fov;
   if (walk.speed > 0) config.walk_speed = walk.speed;
+  config.near = walk.near;
   if (walk.eye) {
     config.initial_view.walk = true;
     config.initial_view.walker = *walk.eye;

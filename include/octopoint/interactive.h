@@ -210,6 +210,9 @@ struct InteractiveConfig {
   // from orbit mode, the eye of that orbit view in perspective (orbitPerspective).
   Angle fov = Angle::fromDegrees(60);
   std::int64_t walk_speed = std::int64_t{1} << 22;  // a quarter cube edge a second
+  // Walk mode's near plane, Q.24 cube edges; 0: half the voxel edge of the model's finest depth
+  // (nearPlaneForDepth, renderer/perspective.h).
+  std::int64_t near = 0;
   // Called from a render thread, without any lock held, after each frame it hands over: lets a
   // display sleep until there is something to show (the viewer posts a window event). Must not
   // call back into the renderer.
