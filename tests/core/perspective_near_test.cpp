@@ -2,8 +2,8 @@
 // edge of its finest depth, so that an eye standing just above a surface sees it at its feet.
 // Drawn with the eye a few voxels above the default model's table, looking ahead and down: the
 // lower part of the frame is the table, covered; with the bare camera's near plane (1/64 cube
-// edge, four depth-8 voxels) it is not. And the renderer's bounds hold that near: no leaf farther
-// than its 0.5 px test from its exact projection, nothing refused for overflow (under UBSan too).
+// edge, four depth-8 voxels) it is not. And a near plane below nearPlaneFloor is raised to it
+// (tests/core/perspective_walk_test.cpp checks the walk's half pixel with these near planes).
 
 #include <gtest/gtest.h>
 
@@ -91,7 +91,9 @@ PerspectiveCamera aboveTheTable(std::int64_t cell_x, std::int64_t cell_z, std::i
   const std::int64_t top = topOfColumn(level, cell_x, cell_z);
   EXPECT_GE(top, 0) << "no surface in that column";
   const std::int64_t edge = kPerspectiveUnit >> level.depth;  // Q.24
-  const auto centre = [&](std::int64_t cell) { return cell * edge + edge / 2 - kPerspectiveUnit / 2; };
+  const auto centre = [&](std::int64_t cell) {
+    return cell * edge + edge / 2 - kPerspectiveUnit / 2;
+  };
   return perspectiveCameraOf({centre(cell_x), centre(top) - voxels * edge, centre(cell_z)}, 0, -30,
                              60, 320, 240);
 }

@@ -80,7 +80,7 @@ TEST_F(PerspectiveWalkTest, EveryLeafInViewIsDrawnWithinHalfAPixelOfItsExactProj
        nearPlaneForDepth(8)},
       {"deep inside, the model's near plane", {u / 16, u / 8, 0}, 170, 30, nearPlaneForDepth(8)},
       // 300 units above a leaf centre on the table, looking down, with a near plane of 1 unit:
-      // raised to nearPlaneFloor (without it that leaf is drawn 0.65 pixel off at 120 degrees).
+      // raised to nearPlaneFloor, every leaf that can reach the screen stays within half a pixel.
       {"300 units above a leaf, near plane 1 unit",
        {32768 + 150, 2260992 - 300, -2064384 + 150},
        7,
