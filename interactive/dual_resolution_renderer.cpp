@@ -485,6 +485,11 @@ bool DualResolutionRenderer::drawWalk(Slot& slot, Worker& worker, const std::ato
   camera.pitch = slot.info.view.walker.pitch;
   camera.roll = slot.info.view.walker.roll;
   camera.fov = config_.fov;
+  if (config_.near > 0) {
+    camera.near = config_.near;
+  } else if (model_ != nullptr) {
+    camera.near = nearPlaneForDepth(model_->finestLevel().depth);
+  }
   camera.width = slot.info.width;
   camera.height = slot.info.height;
   PerspectiveView view;

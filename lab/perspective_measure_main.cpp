@@ -4,6 +4,7 @@
 #include <cstdlib>
 #include <memory>
 #include <opencv2/core.hpp>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -49,6 +50,8 @@ occlusion culling) and measures, per frame size, one CSV row on stdout (docs/per
   --eye X,Y,Z         the eye in the scan's own units and axes (octopoint-render --info: cube)
   --look YAW,PITCH[,ROLL]  degrees (default 0,0)
   --fov DEG           vertical field of view, 10..120 (default 60)
+  --near D            the near plane in scan units (default, as octopoint-render's, half the
+                      voxel edge of the model's finest depth)
   --size WxH          a frame size (repeatable; default 320x240, 640x480 and 1280x960)
   --rounds N          timed frames of each kind, 0..1000 (default 5; 0: no timing)
   --pictures PREFIX   also write PREFIX_WxH.png (the frame) and PREFIX_WxH_empty.png (the
@@ -64,6 +67,7 @@ struct Options {
   std::string eye_text;
   Look look{};
   Angle fov = Angle::fromDegrees(60);
+  std::optional<double> near;
   std::vector<cli::FrameSize> sizes;
   int rounds = 5;
   std::string pictures;
@@ -84,6 +88,8 @@ Options parseOptions(int argc, char** argv) {
       options.look = parseLook(args.name(), args.value());
     } else if (args.is("--fov")) {
       options.fov = cli::parseDegrees(args.name(), args.value());
+    } else if (args.is("--near")) {
+      options.near = cli::parseReal(args.name(), args.value(), 1e-12, kMaxEyeCoordinate);
     } else if (args.is("--size")) {
       options.sizes.push_back(
           cli::parseFrameSize(args.name(), args.value(), 1, kMaxViewportSide, kMaxMeasuredPixels));
@@ -137,8 +143,9 @@ int run(int argc, char** argv) {
       "perspective_ms,orthographic_ms,time_ratio,orthographic_depth,orthographic_leaves,"
       "per_point_ratio,depths\n");
   for (const cli::FrameSize& size : options.sizes) {
-    const PerspectiveView view =
-        scanEyeView(*cube, eye, options.look, options.fov, size.width, size.height, "--eye");
+    const PerspectiveView view = scanEyeView(*cube, eye, options.look, options.fov,
+                                             modelNearPlane(model, options.near, "--near"),
+                                             size.width, size.height, "--eye");
     std::vector<std::uint8_t> rgb, silhouette;
     const lab::PerspectiveMeasurement m =
         lab::measurePerspective(model, view, options.rounds, &rgb, &silhouette);

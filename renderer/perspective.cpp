@@ -45,6 +45,13 @@ std::int64_t divideRounded(std::int64_t numerator, std::int64_t denominator) {
 
 }  // namespace
 
+std::int64_t nearPlaneFloor(std::int64_t focal_q16, std::int32_t width, std::int32_t height) {
+  // Rounding a camera-space coordinate to the unit moves x = f * c.x / c.z by at most
+  // f * (1/2) * (1 + |c.x| / c.z) / c.z pixels, and |c.x| / c.z <= (W / 2) / f on the screen:
+  // (f + W / 2) / (2 z), at most 1/8 pixel from z = 4 (f + max(W, H) / 2) units on. f <= 2^16.
+  return 4 * ((focal_q16 >> 16) + 1 + (std::max(width, height) + 1) / 2);
+}
+
 const char* describe(PerspectiveError error) {
   switch (error) {
     case PerspectiveError::kNone:
@@ -95,6 +102,7 @@ PerspectiveError buildPerspectiveView(const PerspectiveCamera& camera, int fract
       divShiftRound(std::int64_t{camera.height} * cosQ30(half), 2 * std::int64_t{sinQ30(half)}, 16);
   if (!focal) return PerspectiveError::kBadFieldOfView;  // unreachable for 10..120 degrees
   built.focal_q16 = *focal;
+  built.camera.near = std::max(camera.near, nearPlaneFloor(*focal, camera.width, camera.height));
   built.centre_x = std::int64_t{camera.width} << (fraction_bits - 1);
   built.centre_y = std::int64_t{camera.height} << (fraction_bits - 1);
   *view = built;
@@ -102,8 +110,9 @@ PerspectiveError buildPerspectiveView(const PerspectiveCamera& camera, int fract
 }
 
 PerspectiveError orbitPerspective(const Camera& camera, Angle fov, int fraction_bits,
-                                  PerspectiveView* view) {
+                                  PerspectiveView* view, std::int64_t near) {
   PerspectiveCamera perspective;
+  perspective.near = near;
   perspective.width = camera.width;
   perspective.height = camera.height;
   perspective.fov = fov;

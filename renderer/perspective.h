@@ -68,14 +68,26 @@ using CameraPoint = Point3<std::int64_t>;  // Q.24 cube edges, camera space
 
 struct PerspectiveCamera {
   ModelPoint eye{0, 0, -2 * kPerspectiveUnit};  // Q.24 cube edges: two edges before the cube
-  Angle yaw;                                  // turns the view right (towards +x); 0 looks along +z
-  Angle pitch;                                // turns the view up (towards -y)
-  Angle roll;                                 // turns the picture clockwise
-  Angle fov = Angle::fromDegrees(60);         // vertical field of view, 10 to 120 degrees
-  std::int64_t near = kPerspectiveUnit / 64;  // Q.24 cube edges, > 0: nearer points are not drawn
+  Angle yaw;                           // turns the view right (towards +x); 0 looks along +z
+  Angle pitch;                         // turns the view up (towards -y)
+  Angle roll;                          // turns the picture clockwise
+  Angle fov = Angle::fromDegrees(60);  // vertical field of view, 10 to 120 degrees
+  // Q.24 cube edges, > 0: nearer points are not drawn. A camera built for a model takes
+  // nearPlaneForDepth of its finest depth; this default (1/64 edge) is for a bare camera.
+  std::int64_t near = kPerspectiveUnit / 64;
   std::int32_t width = 320;
   std::int32_t height = 240;
 };
+
+// The near plane a model of finest stored depth `depth` (1..16) is seen with: half that depth's
+// voxel edge, Q.24 cube edges (2^(23 - depth), at least 2^7). A leaf whose centre lies that near
+// spans twice the focal length in pixels (its edge at half an edge's distance: the frame's height
+// at a 90 degree field of view), so only leaves that cover most of the frame are left out, and the
+// ground at the eye's feet and what is right before it are drawn.
+constexpr std::int64_t nearPlaneForDepth(int depth) {
+  const int clamped = depth < 1 ? 1 : depth > 16 ? 16 : depth;
+  return kPerspectiveUnit >> (clamped + 1);
+}
 
 enum class PerspectiveError : std::uint8_t {
   kNone,
@@ -102,6 +114,14 @@ struct PerspectiveView {
   int depth_shift = kPerspectiveDepthShift;
 };
 
+// The least near plane a view keeps, Q.24 cube edges: 4 (f + max(W, H) / 2) units for the focal
+// length f (Q.16 pixels), where rounding a camera-space coordinate to the unit moves a point's
+// projection on the screen by at most 1/8 pixel. Below the bare camera's 1/64 edge at every size
+// and field of view (203,660 units at 8192 rows and 10 degrees). buildPerspectiveView raises a
+// nearer plane to it: a 1 km cube's unit is 60 micrometres, and at a few thousand units from the
+// eye the rounding of the eye and the points alone would move them by a pixel and more.
+std::int64_t nearPlaneFloor(std::int64_t focal_q16, std::int32_t width, std::int32_t height);
+
 [[nodiscard]] PerspectiveError buildPerspectiveView(const PerspectiveCamera& camera,
                                                     int fraction_bits, PerspectiveView* view);
 
@@ -110,8 +130,10 @@ struct PerspectiveView {
 // centre, at the distance where a cube edge at the centre's depth spans as many pixels as in the
 // orthographic view, so that a narrow field of view converges to its picture; the pan moves the
 // picture as it does there. kEyeTooFar when that distance exceeds kMaxEyeDistance cube edges.
+// `near` is the camera's near plane (Q.24 cube edges).
 [[nodiscard]] PerspectiveError orbitPerspective(const Camera& camera, Angle fov, int fraction_bits,
-                                                PerspectiveView* view);
+                                                PerspectiveView* view,
+                                                std::int64_t near = PerspectiveCamera{}.near);
 
 // The camera-space position of a model point within kMaxEyeDistance cube edges of the centre:
 // each coordinate rounded once to the nearest unit (error <= 1/2 unit plus the rotation's).

@@ -2,7 +2,7 @@
 # - --info prints the cube's placement (`cube X0,Y0,Z0 EDGE`) of a version 4 model, and says that a
 #   version 2 file (the same model with its placement cut out) has none; --eye refuses that file;
 # - an eye at the orbit camera's position and look, as --perspective prints them, draws the very
-#   frame --perspective draws;
+#   frame --perspective draws; --near is taken with them and refused alone or beyond the camera;
 # - a path's first and last frames are the --eye frames of its first and last keys; its video is
 #   written; a path whose third frame cannot be written leaves no frame behind;
 # - --fill and --style draw in perspective, and a style a model cannot draw is refused.
@@ -57,6 +57,15 @@ set(eye ${CMAKE_MATCH_1})
 set(look ${CMAKE_MATCH_2})
 render_ok(placed ${view} --eye ${eye} --look ${look} --fov 50 -o ${OUT}/eye.png)
 same_files(${OUT}/orbit.png ${OUT}/eye.png)
+
+# --near: in scan units, with a perspective option only, within the camera's 128 cube edges.
+render_ok(near ${view} --eye ${eye} --look ${look} --fov 50 --near 0.01 -o ${OUT}/near.png)
+render_refused("--near needs --perspective, --eye or --path" --near 0.01 -o ${OUT}/near_alone.png)
+render_refused("--near: 1000 scan units is 1.43e\\+03 cube edges" ${view} --eye ${eye} --near 1000
+               -o ${OUT}/near_far.png)
+if(EXISTS ${OUT}/near_alone.png OR EXISTS ${OUT}/near_far.png)
+  message(FATAL_ERROR "a refused --near left a file")
+endif()
 
 # A path: 5 frames, the video, and its ends are its end keys' --eye frames.
 render_ok(walk --size 160x120 --path ${PATH_FILE} --frames 5 -o ${OUT}/walk.png)

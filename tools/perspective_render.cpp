@@ -120,7 +120,8 @@ std::string depthText(const PerspectiveJob& job, const PerspectiveDrawStats& sta
 
 void drawOrbit(const PerspectiveOptions& options, const PerspectiveJob& job) {
   const PerspectiveView view = orbitPerspectiveView(
-      job.camera, options.fov.value_or(Angle::fromDegrees(kDefaultFieldOfViewDegrees)));
+      job.camera, options.fov.value_or(Angle::fromDegrees(kDefaultFieldOfViewDegrees)),
+      modelNearPlane(*job.model, options.near, "--near"));
   cli::checkOutputFile(job.output);
   PerspectiveDrawStats stats;
   std::uint32_t pixels_q8 = kOnePixelQ8;
@@ -142,7 +143,8 @@ void drawEye(const PerspectiveOptions& options, const PerspectiveJob& job) {
   const PerspectiveView view =
       scanEyeView(cube, *options.eye, look,
                   options.fov.value_or(Angle::fromDegrees(kDefaultFieldOfViewDegrees)),
-                  job.camera.width, job.camera.height, "--eye");
+                  modelNearPlane(*job.model, options.near, "--near"), job.camera.width,
+                  job.camera.height, "--eye");
   cli::checkOutputFile(job.output);
   PerspectiveDrawStats stats;
   std::uint32_t pixels_q8 = kOnePixelQ8;
@@ -251,11 +253,12 @@ void drawPath(const PerspectiveOptions& options, const PerspectiveJob& job) {
   std::vector<PerspectiveView> views;
   std::vector<PathPose> poses = samplePath(path, options.frames);
   if (options.collision.collide) collidePoses(*job.model, cube, options, poses);
+  const std::int64_t near = modelNearPlane(*job.model, options.near, "--near");
   for (std::size_t i = 0; i < poses.size(); ++i) {
-    views.push_back(
-        scanEyeView(cube, poses[i].eye, poses[i].look, fov, job.camera.width, job.camera.height,
-                    "--path " + cli::displayPath(options.path) + ": frame " + std::to_string(i) +
-                        " (eye " + scanPointText(poses[i].eye) + ")"));
+    views.push_back(scanEyeView(
+        cube, poses[i].eye, poses[i].look, fov, near, job.camera.width, job.camera.height,
+        "--path " + cli::displayPath(options.path) + ": frame " + std::to_string(i) + " (eye " +
+            scanPointText(poses[i].eye) + ")"));
   }
   std::string prefix = job.output;
   if (prefix.size() > 4 && prefix.ends_with(".png")) prefix.resize(prefix.size() - 4);
@@ -300,6 +303,9 @@ bool parsePerspectiveOption(cli::ArgumentReader& args, PerspectiveOptions& optio
     if (options.path.empty()) throw cli::Error("--path: empty (give a value)");
   } else if (args.is("--frames")) {
     options.frames = cli::parseInt(args.name(), args.value(), 1, kMaxPathFrames);
+  } else if (args.is("--near")) {
+    // modelNearPlane checks it against the model's cube.
+    options.near = cli::parseReal(args.name(), args.value(), 1e-12, kMaxEyeCoordinate);
   } else {
     return parseCollisionOption(args, options.collision);
   }
@@ -312,6 +318,8 @@ void checkPerspectiveOptions(const PerspectiveOptions& options, const OtherOptio
   if (options.fov && !options.any()) throw cli::Error("--fov needs --perspective, --eye or --path");
   if (options.look && !options.eye) throw cli::Error("--look needs --eye");
   if (options.frames > 0 && options.path.empty()) throw cli::Error("--frames needs --path");
+  if (options.near && !options.any())
+    throw cli::Error("--near needs --perspective, --eye or --path");
   if (!options.path.empty() && options.frames == 0)
     throw cli::Error("--path needs --frames N (1.." + std::to_string(kMaxPathFrames) + ")");
   if (options.collision.any() && !options.collision.collide)
@@ -328,9 +336,10 @@ void checkPerspectiveOptions(const PerspectiveOptions& options, const OtherOptio
   }
 }
 
-PerspectiveView orbitPerspectiveView(const Camera& camera, Angle fov) {
+PerspectiveView orbitPerspectiveView(const Camera& camera, Angle fov, std::int64_t near) {
   PerspectiveView view;
-  if (const PerspectiveError error = orbitPerspective(camera, fov, kDefaultFractionBits, &view);
+  if (const PerspectiveError error =
+          orbitPerspective(camera, fov, kDefaultFractionBits, &view, near);
       error == PerspectiveError::kEyeTooFar) {
     throw cli::Error("--perspective: at this zoom and field of view the eye would be more than " +
                      std::to_string(kMaxEyeDistance) +

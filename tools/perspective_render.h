@@ -31,13 +31,14 @@ struct PerspectiveOptions {
   std::string path;              // --path
   int frames = 0;                // --frames
   CollisionOptions collision;    // --collide, --eye-radius, --eye-height (with --path)
+  std::optional<double> near;    // --near, scan units; none: modelNearPlane's default
 
   bool any() const { return orbit || eye || !path.empty(); }
   const char* mode() const { return orbit ? "--perspective" : eye ? "--eye" : "--path"; }
 };
 
 // Reads the option `args` is at into `options`: false when it is none of --perspective, --fov,
-// --eye, --look, --path, --frames, --collide, --eye-radius and --eye-height.
+// --eye, --look, --path, --frames, --near, --collide, --eye-radius and --eye-height.
 bool parsePerspectiveOption(cli::ArgumentReader& args, PerspectiveOptions& options);
 
 // What else the command line asked for, for the checks between the options.
@@ -48,9 +49,10 @@ struct OtherOptions {
 // Throws cli::Error, one line, for options that exclude or need each other.
 void checkPerspectiveOptions(const PerspectiveOptions& options, const OtherOptions& other);
 
-// orbitPerspective (renderer/perspective.h) for octopoint-render: throws cli::Error, one line,
-// when the camera is refused.
-PerspectiveView orbitPerspectiveView(const Camera& camera, Angle fov);
+// orbitPerspective (renderer/perspective.h) for octopoint-render, with the near plane `near`
+// (Q.24 cube edges): throws cli::Error, one line, when the camera is refused.
+PerspectiveView orbitPerspectiveView(const Camera& camera, Angle fov,
+                                     std::int64_t near = PerspectiveCamera{}.near);
 
 // How a perspective frame is finished: hole filling with the perspective bridge rule
 // (renderer/perspective_depth.h), and a style (null: colour, resolveToRgb).

@@ -116,6 +116,9 @@ nor --file nor --url it draws the default model embedded in this binary.
                      within 128 of the scene's origin) and --look, or --path and --frames (PNGs
                      only, no video); colour, each instance at the depth its distance asks for,
                      nearer instances hiding farther ones
+  --near D           with --perspective, --eye or --path: the near plane, D scan units before the
+                     eye; nothing nearer is drawn (default half the voxel edge of the model's
+                     finest depth: the ground at the eye's feet is drawn)
   --size WxH         framebuffer size in pixels, each side 1..8192 and at most 16777216 pixels
                      (4096x4096) in all (default 320x240)
   --depth N|auto     which of the model's depths to draw (default auto: depth by projected size,

@@ -98,10 +98,35 @@ ScanPoint scanPointOf(const ScanCube& cube, const ModelPoint& point) {
   return scan;
 }
 
+std::int64_t modelNearPlane(const ModelView& model, std::optional<double> distance,
+                            std::string_view option) {
+  if (!distance) return nearPlaneForDepth(model.finestLevel().depth);
+  const std::optional<ScanCube> cube = scanCube(model.cubePlacement());
+  if (!cube) {
+    throw cli::Error(std::string(option) +
+                     " is in scan units, and this model does not record its cube's placement "
+                     "(format version " +
+                     std::to_string(model.formatVersion()) +
+                     "): prepare the scan again with octopoint-prepare");
+  }
+  const double edges = *distance / cube->edge;
+  const double q24 = std::round(edges * static_cast<double>(kPerspectiveUnit));
+  if (!(q24 >= 1 && q24 <= static_cast<double>(kMaxEyeDistance * kPerspectiveUnit))) {
+    char text[200];
+    std::snprintf(text, sizeof text,
+                  ": %s scan units is %.3g cube edges (of %s); the camera takes 2^-24 to %d",
+                  cli::realText(*distance).c_str(), edges, cli::realText(cube->edge).c_str(),
+                  static_cast<int>(kMaxEyeDistance));
+    throw cli::Error(std::string(option) + text);
+  }
+  return static_cast<std::int64_t>(q24);
+}
+
 PerspectiveView scanEyeView(const ScanCube& cube, const ScanPoint& eye, const Look& look, Angle fov,
-                            int width, int height, std::string_view option) {
+                            std::int64_t near, int width, int height, std::string_view option) {
   PerspectiveCamera camera;
   camera.eye = modelPointOf(cube, eye, option);
+  camera.near = near;
   camera.yaw = look.yaw;
   camera.pitch = look.pitch;
   camera.roll = look.roll;

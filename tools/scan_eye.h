@@ -48,10 +48,17 @@ ModelPoint modelPointOf(const ScanCube& cube, const ScanPoint& point, std::strin
 // And back: where a model point lies in the scan.
 ScanPoint scanPointOf(const ScanCube& cube, const ModelPoint& point);
 
+// The near plane a camera drawing `model` takes: `distance` scan units (--near) where given, a
+// cli::Error naming `option` when that is not within (0, kMaxEyeDistance] cube edges once rounded
+// to Q.24 or the model records no placement; nearPlaneForDepth of its finest depth otherwise.
+std::int64_t modelNearPlane(const ModelView& model, std::optional<double> distance,
+                            std::string_view option);
+
 // The perspective camera of an eye at `eye` looking `look` with the vertical field of view `fov`
-// on a width x height frame; a cli::Error naming `option` when it cannot be drawn.
+// and the near plane `near` (Q.24 cube edges) on a width x height frame; a cli::Error naming
+// `option` when it cannot be drawn.
 PerspectiveView scanEyeView(const ScanCube& cube, const ScanPoint& eye, const Look& look, Angle fov,
-                            int width, int height, std::string_view option);
+                            std::int64_t near, int width, int height, std::string_view option);
 
 // "X,Y,Z" with the digits that give the same numbers back, and an angle in degrees likewise.
 std::string scanPointText(const ScanPoint& point);

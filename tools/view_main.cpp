@@ -29,7 +29,7 @@ using namespace octopoint;
 constexpr const char* kUsage =
     R"(usage: octopoint-view [--model NAME | --file M.oct | --url URL [--point-budget N]] )"
     R"([--size WxH] [--scale N]
-                     [--speed DEG] [--eye X,Y,Z [--look YAW,PITCH[,ROLL]]] [--fov DEG]
+                     [--speed DEG] [--eye X,Y,Z [--look YAW,PITCH[,ROLL]]] [--fov DEG] [--near D]
                      [--walk-speed S] [--eye-radius R] [--eye-height H]
 
 Shows an octopoint model in a resizable window. While an arrow key is held the view turns at a
@@ -67,6 +67,8 @@ perspective (docs/perspective.md, "The viewer's walk mode").
                  of the cube's edge; docs/perspective.md, "Collision")
   --eye-height H gravity in walk mode: the eye stays H scan units above the ground under it
                  (above R, at most one cube edge); none by default
+  --near D       walk mode's near plane, in scan units: nothing nearer the eye is drawn (default
+                 half the voxel edge of the model's finest depth; docs/perspective.md)
   -h, --help     show this help
 
 keys:
@@ -114,6 +116,8 @@ ViewerOptions parseOptions(int argc, char** argv) {
                        1000));
     } else if (args.is("--walk-speed")) {
       options.walk_speed = cli::parseReal(args.name(), args.value(), 1e-12, kMaxEyeCoordinate);
+    } else if (args.is("--near")) {
+      options.near = cli::parseReal(args.name(), args.value(), 1e-12, kMaxEyeCoordinate);
     } else if (parseCollisionOption(args, options.collision)) {
       // --collide is walk mode's default; --eye-radius and --eye-height set the body.
     } else {

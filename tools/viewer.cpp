@@ -54,6 +54,7 @@ InteractiveConfig interactiveConfig(const ViewerOptions& options, const WalkStar
   if (walk.speed > 0) config.walk_speed = walk.speed;
   config.walk_radius = walk.body.radius;
   config.walk_eye_height = walk.body.eye_height;
+  config.near = walk.near;
   if (walk.eye) {
     config.initial_view.walk = true;
     config.initial_view.walker = *walk.eye;

@@ -38,24 +38,27 @@ struct ViewerOptions {
   int scale = 1;
   int degrees_per_second = 90;
   // Walk mode (docs/perspective.md, "The viewer's walk mode"): --eye and --look in the scan's
-  // units, as octopoint-render takes them; --fov; --walk-speed in scan units per second.
+  // units, as octopoint-render takes them; --fov; --walk-speed in scan units per second; --near
+  // in scan units.
   std::optional<ScanPoint> eye;
   std::optional<Look> look;
   std::optional<Angle> fov;
   std::optional<double> walk_speed;
   // --eye-radius and --eye-height (docs/perspective.md, "Collision"): walk mode's collision.
   CollisionOptions collision;
+  std::optional<double> near;
 };
 
 // What the viewer's walk mode needs of the model: where its cube lies in the scan, the eye to
-// start from (with --eye) and the speed in Q.24 cube edges per second. A cli::Error, one line, for
-// options it cannot take.
+// start from (with --eye), the speed in Q.24 cube edges per second and the near plane in Q.24 cube
+// edges (modelNearPlane, tools/scan_eye.h). A cli::Error, one line, for options it cannot take.
 struct WalkStart {
   std::optional<ScanCube> cube;  // none: walk mode shows no scan units (a model of format 1..3)
   std::optional<WalkEye> eye;
   Angle fov = Angle::fromDegrees(60);
   std::int64_t speed = 0;
   WalkBody body;  // collision (on until n turns it off): the radius, and the eye height for gravity
+  std::int64_t near = 0;  // 0: no model (--url)
 };
 WalkStart walkStart(const ViewerOptions& options, const ModelView* model);
 

@@ -17,17 +17,17 @@ WalkStart walkStart(const ViewerOptions& options, const ModelView* model) {
   WalkStart walk;
   if (options.look && !options.eye) throw cli::Error("--look needs --eye");
   const bool walk_options =
-      options.eye || options.fov || options.walk_speed || options.collision.any();
+      options.eye || options.fov || options.walk_speed || options.near || options.collision.any();
   if (model == nullptr) {
     if (walk_options) {
       throw cli::Error(
-          "--eye, --fov, --walk-speed and the collision options: walk mode draws a model file or "
-          "an embedded model, not "
-          "--url (yet)");
+          "--eye, --fov, --walk-speed, --near and the collision options: walk mode draws a model "
+          "file or an embedded model, not --url (yet)");
     }
     return walk;
   }
   walk.fov = options.fov.value_or(Angle::fromDegrees(60));
+  walk.near = modelNearPlane(*model, options.near, "--near");
   walk.cube = scanCube(model->cubePlacement());
   if (!walk.cube && (options.eye || options.walk_speed)) {
     throw cli::Error(std::string(options.eye ? "--eye" : "--walk-speed") +
@@ -38,7 +38,7 @@ WalkStart walkStart(const ViewerOptions& options, const ModelView* model) {
   if (options.eye) {
     const Look look = options.look.value_or(Look{});
     // Refuses, in one line, an eye or a field of view the camera cannot draw.
-    const PerspectiveView view = scanEyeView(*walk.cube, *options.eye, look, walk.fov,
+    const PerspectiveView view = scanEyeView(*walk.cube, *options.eye, look, walk.fov, walk.near,
                                              options.width, options.height, "--eye");
     walk.eye = WalkEye{view.camera.eye, look.yaw, look.pitch, look.roll};
   }

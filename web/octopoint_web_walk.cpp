@@ -230,6 +230,7 @@ int octopoint_web_walk_draw(std::int32_t width, std::int32_t height, std::int32_
   camera.pitch = shown.pitch;
   camera.roll = shown.roll;
   camera.fov = shown.fov;
+  camera.near = nearPlaneForDepth(model->finestLevel().depth);  // octopoint-render --eye's default
   camera.width = width;
   camera.height = height;
   PerspectiveView view;

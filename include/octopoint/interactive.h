@@ -218,6 +218,9 @@ struct InteractiveConfig {
   // on again. It collides with the model's finest level.
   std::int64_t walk_radius = 0;
   std::int64_t walk_eye_height = 0;
+  // Walk mode's near plane, Q.24 cube edges; 0: half the voxel edge of the model's finest depth
+  // (nearPlaneForDepth, renderer/perspective.h).
+  std::int64_t near = 0;
   // Called from a render thread, without any lock held, after each frame it hands over: lets a
   // display sleep until there is something to show (the viewer posts a window event). Must not
   // call back into the renderer.
