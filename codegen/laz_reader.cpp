@@ -12,6 +12,7 @@
 
 #include "codegen/copc_hierarchy.h"
 #include "codegen/laz_arithmetic.h"
+#include "codegen/laz_chunk_table.h"
 #include "codegen/laz_integer.h"
 #include "codegen/laz_layered.h"
 #include "codegen/laz_pointwise.h"
@@ -31,26 +32,13 @@ enum class Compressor : std::uint16_t {
   kLayered = 3
 };
 
-constexpr std::uint32_t kVariableChunks = 0xffffffffu;
 constexpr std::size_t kVlrFixedBytes = 34;  // before the items, 6 bytes each
-constexpr std::size_t kInputWindow = 1 << 16;
-// The most chunks a chunk table may list (24 bytes each in memory): 2 * 10^11 points in LASzip's
-// chunks of 50,000.
-constexpr std::uint64_t kMaxLazChunks = 1u << 22;
 
 struct LazLayout {
   Compressor compressor = Compressor::kNone;
   std::uint32_t chunk_size = 0;  // kVariableChunks: each chunk's size is in the chunk table
   std::vector<Item> items;
   std::string description;  // for the summary
-};
-
-// One chunk: its points and where its bytes lie.
-struct Chunk {
-  std::uint64_t first_point = 0;
-  std::uint64_t points = 0;
-  std::uint64_t offset = 0;
-  std::uint64_t bytes = 0;
 };
 
 // The items each point format has, in order (extra bytes come after, as a BYTE or BYTE14 item):
@@ -177,161 +165,6 @@ LazLayout readLaszipVlr(const InputFile& file, const LasHeader& header) {
   return layout;
 }
 
-// The bytes of [offset, end) of a file, handed to a decoder a window at a time.
-class FileInput final : public laz::ByteInput {
- public:
-  FileInput(const InputFile& file, std::uint64_t offset, std::uint64_t end, std::string what)
-      : file_(file), next_(offset), end_(end), what_(std::move(what)) {}
-
-  std::span<const std::uint8_t> more() override {
-    const auto n = static_cast<std::size_t>(std::min<std::uint64_t>(kInputWindow, end_ - next_));
-    if (n == 0) return {};
-    window_.resize(n);
-    file_.readAt(next_, window_, what_);
-    next_ += n;
-    handed_ += n;
-    return window_;
-  }
-  std::uint64_t handed() const { return handed_; }
-
- private:
-  const InputFile& file_;
-  std::uint64_t next_;
-  std::uint64_t end_;
-  std::string what_;
-  std::vector<std::uint8_t> window_;
-  std::uint64_t handed_ = 0;
-};
-
-// The chunk table: where each chunk starts and, for variable chunks, how many points it has.
-std::vector<Chunk> readChunkTable(const InputFile& file, const LasHeader& header,
-                                  const LazLayout& layout) {
-  const auto& path = file.path();
-  const std::uint64_t data_start = header.point_offset + 8;
-  const std::string where = "chunk table pointer at byte " + std::to_string(header.point_offset);
-  if (header.points_end < data_start)
-    fail(path, "truncated: the point data ends before its chunk table pointer", where);
-  std::uint8_t pointer_bytes[8];
-  file.readAt(header.point_offset, pointer_bytes, where);
-  auto table_offset = readLittle<std::int64_t>(pointer_bytes);
-  if (table_offset == -1) {  // written by a streaming compressor: the pointer is at the file's end
-    file.readAt(file.size() - 8, pointer_bytes, "chunk table pointer at the end of the file");
-    table_offset = readLittle<std::int64_t>(pointer_bytes);
-  }
-  if (table_offset == static_cast<std::int64_t>(header.point_offset)) {
-    fail(path, "no chunk table: the compressor was interrupted before writing it", where);
-  }
-  if (table_offset < static_cast<std::int64_t>(data_start) ||
-      static_cast<std::uint64_t>(table_offset) + 8 > header.points_end) {
-    fail(path,
-         "the chunk table at byte " + std::to_string(table_offset) +
-             " lies outside the point data (" + std::to_string(data_start) + " to " +
-             std::to_string(header.points_end) + ")",
-         where);
-  }
-  const auto table_start = static_cast<std::uint64_t>(table_offset);
-  const std::string table_where = "chunk table at byte " + std::to_string(table_start);
-  std::uint8_t head[8];
-  file.readAt(table_start, head, table_where);
-  if (readLittle<std::uint32_t>(head) != 0) {
-    fail(path, "unknown chunk table version " + std::to_string(readLittle<std::uint32_t>(head)),
-         table_where);
-  }
-  const std::uint64_t chunk_count = readLittle<std::uint32_t>(head + 4);
-  // Every chunk holds at least its first point raw.
-  const std::uint64_t room = table_start - data_start;
-  if (chunk_count == 0 || chunk_count > room / header.record_length) {
-    fail(path,
-         "the chunk table declares " + std::to_string(chunk_count) + " chunks, the " +
-             std::to_string(room) + " bytes of point data hold 1 to " +
-             std::to_string(room / header.record_length),
-         table_where);
-  }
-  const bool variable = layout.chunk_size == kVariableChunks;
-  if (!variable &&
-      chunk_count != (header.point_count + layout.chunk_size - 1) / layout.chunk_size) {
-    fail(path,
-         "the header declares " + std::to_string(header.point_count) + " points, which take " +
-             std::to_string((header.point_count + layout.chunk_size - 1) / layout.chunk_size) +
-             " chunks of " + std::to_string(layout.chunk_size) + ", the chunk table lists " +
-             std::to_string(chunk_count),
-         table_where);
-  }
-  if (chunk_count > kMaxLazChunks) {
-    fail(path,
-         "the chunk table declares " + std::to_string(chunk_count) + " chunks, more than the " +
-             std::to_string(kMaxLazChunks) + " read",
-         table_where);
-  }
-  FileInput input(file, table_start + 8, header.points_end, table_where);
-  laz::ArithmeticDecoder decoder;
-  decoder.attach(input);
-  decoder.start();
-  laz::IntegerModels sizes(32, 2);
-  sizes.reset();
-  std::vector<Chunk> chunks(static_cast<std::size_t>(chunk_count));
-  std::uint64_t first_point = 0;
-  std::uint64_t offset = data_start;
-  std::int32_t last_points = 0;
-  std::int32_t last_bytes = 0;
-  for (std::size_t i = 0; i < chunks.size(); ++i) {
-    Chunk& chunk = chunks[i];
-    if (variable) last_points = sizes.decode(decoder, last_points, 0);
-    last_bytes = sizes.decode(decoder, last_bytes, 1);
-    if (decoder.overrun() > 0) {
-      fail(path,
-           "truncated: the chunk table ends after " + std::to_string(i) + " of its " +
-               std::to_string(chunk_count) + " chunks",
-           table_where);
-    }
-    chunk.points = variable ? static_cast<std::uint32_t>(last_points)
-                            : std::min<std::uint64_t>(
-                                  layout.chunk_size,
-                                  header.point_count - std::min(header.point_count, first_point));
-    chunk.bytes = static_cast<std::uint32_t>(last_bytes);
-    chunk.first_point = first_point;
-    chunk.offset = offset;
-    const std::string chunk_where = "chunk " + std::to_string(i + 1) + " of " +
-                                    std::to_string(chunk_count) + ", " + table_where;
-    if (chunk.points == 0 || chunk.points > kMaxLazChunkPoints) {
-      fail(path,
-           "a chunk of " + std::to_string(chunk.points) + " points (1 to " +
-               std::to_string(kMaxLazChunkPoints) + " are read)",
-           chunk_where);
-    }
-    if (chunk.bytes < header.record_length || chunk.bytes > table_start - offset) {
-      fail(path,
-           "a chunk of " + std::to_string(chunk.bytes) + " bytes at byte " +
-               std::to_string(offset) + " does not fit between its first point's " +
-               std::to_string(header.record_length) + " bytes and the chunk table",
-           chunk_where);
-    }
-    first_point += chunk.points;
-    offset += chunk.bytes;
-    if (first_point > header.point_count) break;  // reported below
-  }
-  if (first_point != header.point_count) {
-    fail(path,
-         "the header declares " + std::to_string(header.point_count) + " points, the " +
-             std::to_string(chunk_count) + " chunks of the chunk table hold " +
-             (first_point > header.point_count ? "more" : std::to_string(first_point)),
-         table_where);
-  }
-  return chunks;
-}
-
-// A point-wise LAZ file without chunks: one chunk of every point.
-std::vector<Chunk> wholeFileChunk(const InputFile& file, const LasHeader& header) {
-  if (header.point_count > kMaxLazChunkPoints) {
-    fail(file.path(),
-         "LAZ without chunks (LASzip's point-wise compressor) of more than " +
-             std::to_string(kMaxLazChunkPoints) + " points is not read",
-         "LASzip VLR");
-  }
-  return {
-      Chunk{0, header.point_count, header.point_offset, header.points_end - header.point_offset}};
-}
-
 // A chunk's cube: where its points lie, in the scan's coordinates.
 struct ChunkCube {
   std::array<double, 3> low{};
@@ -342,7 +175,8 @@ struct ChunkCube {
 // and every node with points is a chunk. Returns each chunk's cube, widened by one coordinate step
 // on each side (a writer rounds a point on a cube's face to either side).
 std::vector<ChunkCube> copcChunkCubes(const InputFile& file, const LasHeader& header,
-                                      const std::vector<Chunk>& chunks, std::string& description) {
+                                      const std::vector<LazChunk>& chunks,
+                                      std::string& description) {
   const auto& path = file.path();
   const CopcHierarchy hierarchy = readCopcHierarchy(file, header, chunks.front().offset,
                                                     chunks.back().offset + chunks.back().bytes);
@@ -358,7 +192,7 @@ std::vector<ChunkCube> copcChunkCubes(const InputFile& file, const LasHeader& he
     if (found == chunk_at.end()) {
       fail(path, "the hierarchy names a chunk that the chunk table does not list", where);
     }
-    const Chunk& chunk = chunks[found->second];
+    const LazChunk& chunk = chunks[found->second];
     if (chunk.bytes != node.bytes || chunk.points != node.points) {
       fail(path,
            "the hierarchy gives the chunk " + std::to_string(node.points) + " points in " +
@@ -406,7 +240,7 @@ class ChunkDecoder {
   }
 
   // Decodes the chunk's points [skip, skip + take) into `out`.
-  void decode(const InputFile& file, const Chunk& chunk, std::size_t chunk_index,
+  void decode(const InputFile& file, const LazChunk& chunk, std::size_t chunk_index,
               std::uint64_t skip, std::size_t take, std::uint8_t* out) {
     const std::string where =
         "LAZ chunk " + std::to_string(chunk_index + 1) + " at byte " + std::to_string(chunk.offset);
@@ -450,7 +284,7 @@ class ChunkDecoder {
   // A layered chunk: its first point raw, its point count, every layer's size (32 bits each,
   // item by item), then the layers in the same order. The chunk is read whole: its layers are
   // decoded side by side.
-  void decodeLayered(const InputFile& file, const Chunk& chunk, const std::string& where,
+  void decodeLayered(const InputFile& file, const LazChunk& chunk, const std::string& where,
                      std::uint64_t skip, std::size_t take, std::uint8_t* out) {
     const auto refuse = [&](const std::string& what) {
       fail(file.path(), "corrupt LAZ: " + what, where);
@@ -552,7 +386,7 @@ class LazSource final : public PointSource {
     layout_ = readLaszipVlr(*file_, header_);
     chunks_ = layout_.compressor == Compressor::kPointwise
                   ? wholeFileChunk(*file_, header_)
-                  : readChunkTable(*file_, header_, layout_);
+                  : readChunkTable(*file_, header_, layout_.chunk_size);
     if (header_.copc_vlr_offset != 0) {
       std::string description;
       cubes_ = copcChunkCubes(*file_, header_, chunks_, description);
@@ -583,13 +417,13 @@ class LazSource final : public PointSource {
     chunk.raw.resize(count * header_.record_length);
     std::unique_ptr<ChunkDecoder> decoder = takeDecoder();
     // The chunks that hold [first, first + count): the last one starting at or before `first`, on.
-    auto it =
-        std::upper_bound(chunks_.begin(), chunks_.end(), first,
-                         [](std::uint64_t point, const Chunk& c) { return point < c.first_point; });
+    auto it = std::upper_bound(
+        chunks_.begin(), chunks_.end(), first,
+        [](std::uint64_t point, const LazChunk& c) { return point < c.first_point; });
     std::size_t index = static_cast<std::size_t>(it - chunks_.begin()) - 1;
     std::uint64_t done = 0;
     while (done < count) {
-      const Chunk& c = chunks_[index];
+      const LazChunk& c = chunks_[index];
       const std::uint64_t skip = first + done - c.first_point;
       const auto take =
           static_cast<std::size_t>(std::min<std::uint64_t>(c.points - skip, count - done));
@@ -625,7 +459,7 @@ class LazSource final : public PointSource {
   LasHeader header_;
   SourceInfo info_;
   LazLayout layout_;
-  std::vector<Chunk> chunks_;
+  std::vector<LazChunk> chunks_;
   std::vector<ChunkCube> cubes_;  // COPC: each chunk's cube; empty for other LAZ
   mutable std::mutex mutex_;
   mutable std::vector<std::unique_ptr<ChunkDecoder>> idle_;
