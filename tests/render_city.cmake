@@ -8,23 +8,11 @@
 file(REMOVE_RECURSE ${OUT})
 file(MAKE_DIRECTORY ${OUT})
 
-function(render_ok output_variable)
-  execute_process(COMMAND ${RENDER} ${ARGN} RESULT_VARIABLE status OUTPUT_VARIABLE out
-                  ERROR_VARIABLE err)
-  if(NOT status EQUAL 0)
-    message(FATAL_ERROR "octopoint-render ${ARGN} failed (${status}): ${err}")
-  endif()
-  set(${output_variable} "${out}" PARENT_SCOPE)
-endfunction()
+include(${CMAKE_CURRENT_LIST_DIR}/render_checks.cmake)  # render_ok, render_refused
 
-function(render_refused expected)
-  execute_process(COMMAND ${RENDER} ${ARGN} RESULT_VARIABLE status ERROR_VARIABLE err)
-  string(REGEX MATCHALL "\n" lines "${err}")
-  list(LENGTH lines line_count)
-  if(NOT status EQUAL 1 OR NOT err MATCHES "${expected}" OR NOT line_count EQUAL 1)
-    message(FATAL_ERROR
-            "octopoint-render ${ARGN}: wanted exit 1 and one line '${expected}', got ${status}: ${err}")
-  endif()
+# Refused in one line (render_checks.cmake), and no PNG left.
+function(render_refused_without_png expected)
+  render_refused("${expected}" ${ARGN})
   if(EXISTS ${OUT}/refused.png)
     message(FATAL_ERROR "octopoint-render ${ARGN} was refused but wrote ${OUT}/refused.png")
   endif()
@@ -66,7 +54,7 @@ endif()
 # Bad scene files: one line naming the file and the field.
 function(bad_scene name text expected)
   file(WRITE ${OUT}/${name}.json "${text}")
-  render_refused("${name}.json.*${expected}" --city ${OUT}/${name}.json --eye 0,0,-2
+  render_refused_without_png("${name}.json.*${expected}" --city ${OUT}/${name}.json --eye 0,0,-2
                  -o ${OUT}/refused.png)
 endfunction()
 set(m "\"models\": [\"${MODEL_FILE}\"]")
@@ -96,10 +84,10 @@ bad_scene(no_embedded "{\"models\": [\"nosuchmodel\"], \"instances\": [[0, 0, 0,
 bad_scene(broken "{${m}, \"instances\": [[0, 0, 0, 0, 0, 0]" "")
 
 # Options that do not go with --city, and an eye the camera cannot hold.
-render_refused("--eye X,Y,Z" --city ${OUT}/one.json -o ${OUT}/refused.png)
-render_refused("--depth" --city ${OUT}/one.json --eye 0,0,-2 --depth 6 -o ${OUT}/refused.png)
-render_refused("--model, --file and --url" --city ${OUT}/one.json --file ${MODEL_FILE}
+render_refused_without_png("--eye X,Y,Z" --city ${OUT}/one.json -o ${OUT}/refused.png)
+render_refused_without_png("--depth" --city ${OUT}/one.json --eye 0,0,-2 --depth 6 -o ${OUT}/refused.png)
+render_refused_without_png("--model, --file and --url" --city ${OUT}/one.json --file ${MODEL_FILE}
                --eye 0,0,-2 -o ${OUT}/refused.png)
-render_refused("--yaw" --city ${OUT}/one.json --eye 0,0,-2 --yaw 10 -o ${OUT}/refused.png)
-render_refused("more than 128 scene edges" --city ${OUT}/one.json --eye 200,0,0
+render_refused_without_png("--yaw" --city ${OUT}/one.json --eye 0,0,-2 --yaw 10 -o ${OUT}/refused.png)
+render_refused_without_png("more than 128 scene edges" --city ${OUT}/one.json --eye 200,0,0
                -o ${OUT}/refused.png)

@@ -16,6 +16,7 @@
 #include "codegen/point_source.h"
 #include "codegen/prepare_error.h"
 #include "codegen/streamed_prepare.h"
+#include "tests/support/expect_refused.h"
 #include "tests/support/landscape.h"
 #include "tests/support/las_writer.h"
 
@@ -95,15 +96,7 @@ class CopcReaderTest : public ::testing::Test {
 
   // Opening `path` must fail with one line that names the file and contains `expected`.
   static void expectRefused(const fs::path& path, const std::string& expected) {
-    try {
-      openPointSource(path);
-      ADD_FAILURE() << path << " was opened; expected '" << expected << "'";
-    } catch (const PrepareError& error) {
-      const std::string message = error.what();
-      EXPECT_NE(message.find(expected), std::string::npos) << message;
-      EXPECT_EQ(message.rfind(path.string(), 0), 0u) << message;
-      EXPECT_EQ(message.find('\n'), std::string::npos) << message;
-    }
+    testing::expectRefusedInOneLine(path, expected, [](const fs::path& p) { openPointSource(p); });
   }
 
   fs::path dir_;
