@@ -213,6 +213,13 @@
 //   renderSmooth(variant, level, setup, frame, smooth, palette)
 //                            renderLevel, then blend. paletteOf(model): the 256 colours.
 //
+// octopoint/scene.h: scenes of many models (docs/city.md)
+//   InstanceTransform        at (Q.24 scene edges), turn about the vertical, scale 2^-8..2^8: where
+//                            an instance of a model stands. SceneInstance: a model index and one.
+//   checkTransform(transform), describe(SceneError)
+//                            the limits (kMaxSceneModels, kMaxSceneInstances, kMaxSceneCoordinate)
+//                            a scene's renderer checks; octopoint-render --city draws scene files.
+//
 // octopoint/bands.h: a frame in bands of a few rows, for RAM smaller than a frame (Example 2)
 //   renderBands(level, setup, config, index, palette, buffers, sink)
 //                            draws the frame top to bottom into the caller's band buffers and calls
@@ -284,5 +291,6 @@
 #include "octopoint/models.h"
 #include "octopoint/render.h"
 #include "octopoint/rgb_renderer.h"
+#include "octopoint/scene.h"
 #include "octopoint/smooth.h"
 #include "octopoint/styles.h"

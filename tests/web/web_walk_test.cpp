@@ -139,9 +139,10 @@ TEST_F(WebWalk, DrawsTheFrameOctopointRenderDrawsFromTheEye) {
   camera.fov = Angle::fromDegrees(60);
   camera.width = width;
   camera.height = height;
+  const ModelView& model = *web::embeddedModel();
+  camera.near = nearPlaneForDepth(model.finestLevel().depth);  // octopoint-render --eye's default
   PerspectiveView view;
   ASSERT_EQ(buildPerspectiveView(camera, kDefaultFractionBits, &view), PerspectiveError::kNone);
-  const ModelView& model = *web::embeddedModel();
   Framebuffer frame(width, height);
   frame.clear();
   PerspectiveRenderer renderer(model);
