@@ -10,6 +10,11 @@ usage: web/test/stream_check.py URL complete OUT.png [SECONDS]
        web/test/stream_check.py URL stopped [SECONDS]
          waits until the page says it stopped asking (a server that kept failing) or that the
          model cannot be read, checks the tab still answers (an animation frame comes), and prints its message
+       web/test/stream_check.py URL settled [SECONDS]
+         as `stopped`, or until the view is complete: a server that sends the bytes asked for and
+         then more gives the page verified chunks before it refuses the rest, so whether its
+         requests fail five times in a row before the view is complete depends on how the bytes
+         come in; prints the page's state either way
 
 Exits 1, saying what the page last said, when that does not happen within SECONDS (default 30).
 """
@@ -28,9 +33,9 @@ STATE = ("JSON.stringify({stream: document.body.dataset.stream, frames: document
 
 def main():
     args = sys.argv[1:]
-    if len(args) < 2 or args[1] not in ("complete", "stopped") or \
+    if len(args) < 2 or args[1] not in ("complete", "stopped", "settled") or \
             (args[1] == "complete" and len(args) not in (3, 4)) or \
-            (args[1] == "stopped" and len(args) not in (2, 3)):
+            (args[1] != "complete" and len(args) not in (2, 3)):
         sys.exit(__doc__.split("\n\n")[1])
     url, mode = args[0], args[1]
     seconds = float(args[-1]) if len(args) == (4 if mode == "complete" else 3) else 30.0
@@ -51,10 +56,12 @@ def main():
                 state = tools.evaluate(session, STATE)
                 print("stream_check: complete at %.0f ms: %s" % (done, state))
             else:
+                complete = " || document.body.dataset.stream === 'complete'" \
+                    if mode == "settled" else ""
                 stopped = tools.wait_for(session, "document.body && ((document.body.dataset.problem"
                                          " || '').startsWith('stopped asking') || document.body."
-                                         "dataset.stream === 'failed') && document.body.dataset"
-                                         ".problem", seconds)
+                                         "dataset.stream === 'failed'" + complete + ") && "
+                                         "document.body.dataset.problem", seconds)
                 if not stopped:
                     sys.exit("stream_check: did not stop in %g s: %s" %
                              (seconds, tools.evaluate(session, STATE)))
@@ -65,7 +72,9 @@ def main():
                 if answered["result"].get("value") != 1:
                     sys.exit("stream_check: the tab no longer answers: %s" %
                              tools.evaluate(session, STATE))
-                print("stream_check: stopped, the tab still answering: %s" % stopped)
+                print("stream_check: %s, the tab still answering: %s" %
+                      ("settled" if mode == "settled" else "stopped",
+                       tools.evaluate(session, STATE) if mode == "settled" else stopped))
         finally:
             tools.close()
 
