@@ -396,9 +396,12 @@ bool drawPerspectiveLayers(std::span<const PerspectiveLayer> layers,
                            const PerspectiveDetail* detail, const PerspectiveView& view,
                            FrameView& frame, OcclusionTiles* occlusion, PerspectiveDrawStats* stats,
                            const PerspectiveBand* band, const std::atomic<bool>* abort) {
+  // A part of a partly held model (renderer/chunked_assembly.h) has layers for the coarsest of
+  // the whole model's detail depths only, and its detail's `finest` caps the ask at its own.
   assert(!layers.empty() &&
          (layers.size() == 1 ||
-          (detail != nullptr && detail->count == static_cast<int>(layers.size()))));
+          (detail != nullptr && detail->count >= static_cast<int>(layers.size()) &&
+           detail->finest < static_cast<int>(layers.size()))));
   assert(occlusion == nullptr ||
          (occlusion->width() == frame.width() && occlusion->height() == frame.height()));
   if (frame.payload() == PixelPayload::kColour) {
