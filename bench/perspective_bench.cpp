@@ -21,6 +21,7 @@
 #include "octopoint/render.h"
 #include "renderer/perspective_renderer.h"
 #include "renderer/perspective_walk.h"
+#include "tests/support/perspective_reference.h"
 
 namespace octopoint {
 namespace {
@@ -88,19 +89,6 @@ void perspective(benchmark::State& state, int width, int height, int fov_degrees
       perspectiveWalkTables(view, level.depth, std::int64_t{1} << (kDefaultFractionBits - 2));
   timeFrames(state, width, height,
              [&](Framebuffer& frame) { return drawPerspective(level, view, tables, frame); });
-}
-
-// The eye at the table's edge, looking down at the objects (docs/perspective.md, "Occlusion
-// culling").
-PerspectiveCamera tableEdgeCamera(int width, int height) {
-  const std::int64_t u = kPerspectiveUnit;
-  PerspectiveCamera camera;
-  camera.eye = {0, 28 * u / 100, -46 * u / 100};
-  camera.pitch = Angle::fromDegrees(28);
-  camera.fov = Angle::fromDegrees(90);
-  camera.width = width;
-  camera.height = height;
-  return camera;
 }
 
 // The table's edge drawn by PerspectiveRenderer with `options`; `per_leaf_of` the number of leaves

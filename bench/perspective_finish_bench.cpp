@@ -18,6 +18,7 @@
 #include "octopoint/styles.h"
 #include "renderer/perspective_depth.h"
 #include "renderer/perspective_renderer.h"
+#include "tests/support/perspective_reference.h"
 
 namespace octopoint {
 namespace {
@@ -33,15 +34,9 @@ const ModelView& finishBenchModel() {
 // `style`: nullopt for the plain colour frame through resolveToRgb.
 void finishedFrame(benchmark::State& state, int width, int height, bool fill,
                    std::optional<Style> style) {
-  const std::int64_t u = kPerspectiveUnit;
-  PerspectiveCamera camera;
-  camera.eye = {0, 28 * u / 100, -46 * u / 100};
-  camera.pitch = Angle::fromDegrees(28);
-  camera.fov = Angle::fromDegrees(90);
-  camera.width = width;
-  camera.height = height;
   PerspectiveView view;
-  if (buildPerspectiveView(camera, kDefaultFractionBits, &view) != PerspectiveError::kNone) {
+  if (buildPerspectiveView(tableEdgeCamera(width, height), kDefaultFractionBits, &view) !=
+      PerspectiveError::kNone) {
     state.SkipWithError("camera refused");
     return;
   }

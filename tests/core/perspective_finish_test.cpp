@@ -38,11 +38,8 @@ const ModelView& finishModel() {
 // The first frame of tests/paths/table_walk.json's walk, in the camera's own units: the eye at the
 // table's edge looking down at it (the view of perspective_cull_test.cpp), 640x480.
 PerspectiveView tableEdgeView(int width = 640, int height = 480) {
-  const std::int64_t u = kPerspectiveUnit;
   PerspectiveView view;
-  EXPECT_EQ(buildPerspectiveView(
-                perspectiveCameraOf({0, 28 * u / 100, -46 * u / 100}, 0, 28, 90, width, height),
-                kDefaultFractionBits, &view),
+  EXPECT_EQ(buildPerspectiveView(tableEdgeCamera(width, height), kDefaultFractionBits, &view),
             PerspectiveError::kNone);
   return view;
 }

@@ -17,11 +17,8 @@ namespace {
 
 // The eye at the table's edge (tests/core/perspective_cull_test.cpp's view, perspective_bench's).
 PerspectiveView tableEdgeView(int width, int height) {
-  const std::int64_t u = kPerspectiveUnit;
   PerspectiveView view;
-  EXPECT_EQ(buildPerspectiveView(
-                perspectiveCameraOf({0, 28 * u / 100, -46 * u / 100}, 0, 28, 90, width, height),
-                kDefaultFractionBits, &view),
+  EXPECT_EQ(buildPerspectiveView(tableEdgeCamera(width, height), kDefaultFractionBits, &view),
             PerspectiveError::kNone);
   return view;
 }

@@ -25,6 +25,14 @@ inline PerspectiveCamera perspectiveCameraOf(ModelPoint eye, int yaw, int pitch,
   return camera;
 }
 
+// The eye at the default model's table's edge looking down at the objects (tests/paths/
+// table_walk.json's first frame; docs/perspective.md, "Occlusion culling"): the tests' and the
+// benchmarks' inside view.
+inline PerspectiveCamera tableEdgeCamera(int width, int height) {
+  const std::int64_t u = kPerspectiveUnit;
+  return perspectiveCameraOf({0, 28 * u / 100, -46 * u / 100}, 0, 28, 90, width, height);
+}
+
 inline double radiansOf(Angle angle) { return angle.turns16() * 2 * kPi / Angle::kUnitsPerTurn; }
 
 using Matrix = std::array<std::array<double, 3>, 3>;
