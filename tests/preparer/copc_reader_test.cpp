@@ -17,6 +17,7 @@
 #include "codegen/prepare_error.h"
 #include "codegen/streamed_prepare.h"
 #include "tests/support/expect_refused.h"
+#include "tests/support/file_bytes.h"
 #include "tests/support/landscape.h"
 #include "tests/support/las_writer.h"
 
@@ -81,17 +82,8 @@ class CopcReaderTest : public ::testing::Test {
     return image;
   }
 
-  static std::string bytesOf(const fs::path& path) {
-    std::string bytes(fs::file_size(path), '\0');
-    std::ifstream(path, std::ios::binary)
-        .read(bytes.data(), static_cast<std::streamsize>(bytes.size()));
-    return bytes;
-  }
-
   fs::path writeBytes(const std::string& name, const std::string& bytes) {
-    const fs::path path = dir_ / name;
-    std::ofstream(path, std::ios::binary) << bytes;
-    return path;
+    return testing::writeFileBytes(dir_, name, bytes);
   }
 
   // Opening `path` must fail with one line that names the file and contains `expected`.
@@ -154,7 +146,7 @@ class CopcBadInputTest : public CopcReaderTest {
  protected:
   void SetUp() override {
     CopcReaderTest::SetUp();
-    bytes_ = bytesOf(write("good.copc.laz", true, 20000, 500));
+    bytes_ = testing::fileBytes(write("good.copc.laz", true, 20000, 500));
     root_ = readCopc<std::uint64_t>(bytes_, kInfo + 40);
     root_bytes_ = readCopc<std::uint64_t>(bytes_, kInfo + 48);
   }

@@ -25,6 +25,7 @@
 #include "codegen/prepare_error.h"
 #include "codegen/streamed_prepare.h"
 #include "tests/support/expect_refused.h"
+#include "tests/support/file_bytes.h"
 #include "tests/support/landscape.h"
 #include "tests/support/las_writer.h"
 
@@ -69,9 +70,7 @@ class LasReaderTest : public ::testing::Test {
   }
 
   fs::path writeBytes(const std::string& name, const std::string& bytes) {
-    const fs::path path = dir_ / name;
-    std::ofstream(path, std::ios::binary) << bytes;
-    return path;
+    return testing::writeFileBytes(dir_, name, bytes);
   }
 
   // Opening `path` must fail with one line that names the file and contains `expected`.

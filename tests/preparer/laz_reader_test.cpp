@@ -19,6 +19,7 @@
 #include "codegen/prepare_error.h"
 #include "codegen/streamed_prepare.h"
 #include "tests/support/expect_refused.h"
+#include "tests/support/file_bytes.h"
 #include "tests/support/landscape.h"
 #include "tests/support/las_writer.h"
 #include "tests/support/laz_encoder.h"
@@ -30,13 +31,6 @@ namespace fs = std::filesystem;
 using testing::Landscape;
 using testing::LasLayout;
 using testing::LasWriter;
-
-std::string lazFileBytes(const fs::path& path) {
-  std::string bytes(fs::file_size(path), '\0');
-  std::ifstream(path, std::ios::binary)
-      .read(bytes.data(), static_cast<std::streamsize>(bytes.size()));
-  return bytes;
-}
 
 class LazReaderTest : public ::testing::Test {
  protected:
@@ -93,9 +87,7 @@ class LazReaderTest : public ::testing::Test {
   }
 
   fs::path writeBytes(const std::string& name, const std::string& bytes) {
-    const fs::path path = dir_ / name;
-    std::ofstream(path, std::ios::binary) << bytes;
-    return path;
+    return testing::writeFileBytes(dir_, name, bytes);
   }
 
   // Opening and reading every record of `path` must fail with one line that names the file and
@@ -257,7 +249,7 @@ TEST_F(LazReaderTest, LayeredPreparesToTheSameModelAsItsLasTwinOnAnyThreads) {
 
 LazParts smallLaz(const fs::path& path) {
   LazParts parts;
-  parts.bytes = lazFileBytes(path);
+  parts.bytes = testing::fileBytes(path);
   parts.point_offset = readAt<std::uint32_t>(parts.bytes, 96);
   parts.table = readAt<std::uint64_t>(parts.bytes, parts.point_offset);
   return parts;
@@ -376,13 +368,13 @@ TEST_F(LazBadInputTest, MorePointsDeclaredThanTheChunksHoldIsRefused) {
   layout.laz_variable_chunks = true;  // the table's counts must add up to the header's
   const fs::path path = write("variable.laz", layout, 2500);
   ASSERT_NO_THROW(records(path));
-  std::string bytes = lazFileBytes(path);
+  std::string bytes = testing::fileBytes(path);
   patchAt<std::uint32_t>(bytes, 107, 2600);
   expectRefused(writeBytes("more.laz", bytes), "the header declares 2600 points, the");
   patchAt<std::uint32_t>(bytes, 107, 2400);
   expectRefused(writeBytes("fewer.laz", bytes), "the header declares 2400 points, the");
   layout.laz_variable_chunks = false;  // fixed chunks: the count of chunks must fit the points
-  bytes = lazFileBytes(write("fixed.laz", layout, 2500));
+  bytes = testing::fileBytes(write("fixed.laz", layout, 2500));
   patchAt<std::uint32_t>(bytes, 107, 3001);
   expectRefused(writeBytes("fixed_more.laz", bytes), "which take 4 chunks of 1000");
 }
