@@ -36,6 +36,7 @@ struct CollisionSphere {
 // How much a query read: the nodes and leaves whose cube it tested.
 struct CollisionStats {
   std::uint64_t boxes_tested = 0;
+  std::uint64_t instances_tested = 0;  // instances whose model a scene's query entered
 };
 
 // One level of a validated model, ready for queries: the level's bytes (owned by the model, which
@@ -96,6 +97,27 @@ struct CollisionInstance {
 // checkTransform refuses (a scale outside -8..8, a coordinate past 2^44) meets nothing.
 bool sphereMeets(std::span<const CollisionInstance> instances, const CollisionSphere& sphere,
                  CollisionStats* stats = nullptr);
+// What a walk collides with (renderer/collision_move.h): whether a sphere meets occupied space.
+class CollisionWorld {
+ public:
+  virtual ~CollisionWorld() = default;
+  virtual bool meets(const CollisionSphere& sphere) const = 0;
+};
+
+// A few instances, each tested in turn (a single model: one instance at the identity). A scene of
+// many: renderer/scene_collision.h, which finds the nearby ones first.
+class CollisionInstances final : public CollisionWorld {
+ public:
+  explicit CollisionInstances(std::span<const CollisionInstance> instances)
+      : instances_(instances) {}
+  bool meets(const CollisionSphere& sphere) const override {
+    return sphereMeets(instances_, sphere);
+  }
+
+ private:
+  std::span<const CollisionInstance> instances_;
+};
+
 // The same for one instance.
 bool instanceMeets(const CollisionInstance& instance, const CollisionSphere& sphere,
                    CollisionStats* stats = nullptr);
