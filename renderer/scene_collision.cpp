@@ -85,9 +85,8 @@ SceneCollision::SceneCollision(std::span<const ModelView* const> models,
   cell_items_.resize(cell_start_.back());
   std::vector<std::uint32_t> filled(cell_start_.begin(), cell_start_.end() - 1);
   for (std::size_t i = 0; i < instances_.size(); ++i) {
-    cellsOf(instances_[i].transform, [&](std::size_t cell) {
-      cell_items_[filled[cell]++] = static_cast<std::uint32_t>(i);
-    });
+    cellsOf(instances_[i].transform,
+            [&](std::size_t cell) { cell_items_[filled[cell]++] = static_cast<std::uint32_t>(i); });
   }
   valid_ = true;
 }
