@@ -5,7 +5,7 @@
 # usage: cmake -DMAKE_CITY=... -DPREPARE=... -DCITY_WALK=... -DOUT=DIR -P this
 file(REMOVE_RECURSE ${OUT})
 file(MAKE_DIRECTORY ${OUT})
-execute_process(COMMAND ${MAKE_CITY} --blocks 2 --spacing 6 --seed 3 -o ${OUT}
+execute_process(COMMAND ${MAKE_CITY} --blocks 2 --spacing 6 --seed 4 -o ${OUT}
                 RESULT_VARIABLE result OUTPUT_VARIABLE output ERROR_VARIABLE output)
 if(NOT result EQUAL 0)
   message(FATAL_ERROR "make_city failed:\n${output}")
