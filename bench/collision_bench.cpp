@@ -1,7 +1,11 @@
 // Collision queries (renderer/collision.h, docs/perspective.md "Collision"): spheres about the eye
 // at the table's edge of the default model (the view of the perspective benchmarks), against its
 // finest level (depth 8, 62,502 leaves). Queries per second (items_per_second) and the boxes each
-// tests, per radius; and walk steps (renderer/collision_move.h) per second.
+// tests, per radius; and walk steps (renderer/collision_move.h) per second. And a scene of 10^4
+// instances (docs/city.md, "Collision"): scene_bench's 100 x 100 instances of the default model,
+// one scene edge apart, quarter turns, scale -1; spheres of 1/128 scene edge (25 cm in the
+// generated city) about the middle of it, through the grid (renderer/scene_collision.h) and by
+// testing every instance, side by side; and walk steps of 1/8 scene edge (4 m) with gravity.
 
 #include <benchmark/benchmark.h>
 
@@ -15,6 +19,7 @@
 #include "octopoint/models.h"
 #include "renderer/collision.h"
 #include "renderer/collision_move.h"
+#include "renderer/scene_collision.h"
 
 namespace octopoint {
 namespace {
@@ -96,9 +101,96 @@ void walkSteps(benchmark::State& state, std::int64_t eye_height) {
   state.counters["blocked_share"] = static_cast<double>(blocked) / static_cast<double>(steps);
 }
 
+struct CollisionBenchScene {
+  std::vector<SceneInstance> instances;
+  std::optional<SceneCollision> collision;
+  std::vector<ModelPoint> centres;  // 4,096 within 2 scene edges of the middle, seeded
+};
+
+const CollisionBenchScene& collisionBenchScene() {
+  static const CollisionBenchScene* built = [] {
+    auto* s = new CollisionBenchScene;
+    constexpr std::int64_t kEdge = kPerspectiveUnit;
+    for (int i = 0; i < 100; ++i) {
+      for (int j = 0; j < 100; ++j) {
+        s->instances.push_back({0,
+                                {{(i - 50) * kEdge, 0, (j - 50) * kEdge},
+                                 Angle::fromTurns16(((i * 7 + j) & 3) * 16384),
+                                 -1}});
+      }
+    }
+    const ModelView* models[] = {&collisionBenchModel()};
+    SceneError error;
+    s->collision.emplace(models, s->instances, &error);
+    std::mt19937_64 random(34);
+    for (int k = 0; k < 4096; ++k) {
+      auto within = [&random](std::int64_t half) {
+        return static_cast<std::int64_t>(random() % static_cast<std::uint64_t>(2 * half)) - half;
+      };
+      s->centres.push_back({within(2 * kEdge), within(kEdge / 4), within(2 * kEdge)});
+    }
+    return s;
+  }();
+  return *built;
+}
+
+void sceneQueries(benchmark::State& state, bool through_grid) {
+  const CollisionBenchScene& s = collisionBenchScene();
+  const std::int64_t radius = kPerspectiveUnit / 128;
+  const auto meets = [&](const ModelPoint& c, CollisionStats* stats) {
+    return through_grid ? s.collision->meets({c, radius}, stats)
+                        : sphereMeets(s.collision->instances(), {c, radius}, stats);
+  };
+  CollisionStats stats;
+  std::uint64_t met = 0;
+  for (const ModelPoint& c : s.centres) met += meets(c, &stats) ? 1 : 0;
+  std::size_t next = 0;
+  for (auto _ : state) {
+    benchmark::DoNotOptimize(meets(s.centres[next], nullptr));
+    next = (next + 1) % s.centres.size();
+  }
+  state.SetItemsProcessed(state.iterations());
+  const auto per_query = [&s](std::uint64_t n) {
+    return static_cast<double>(n) / static_cast<double>(s.centres.size());
+  };
+  state.counters["instances_per_query"] =
+      through_grid ? per_query(stats.instances_tested) : static_cast<double>(s.instances.size());
+  state.counters["boxes_per_query"] = per_query(stats.boxes_tested);
+  state.counters["met_share"] = per_query(met);
+}
+
+// Steps of 1/8 scene edge with gravity (eye height 1.7/32 scene edge), from free centres toward
+// the next, through the grid.
+void sceneWalkSteps(benchmark::State& state) {
+  const CollisionBenchScene& s = collisionBenchScene();
+  const WalkBody body{kPerspectiveUnit / 128, kPerspectiveUnit * 17 / 320};
+  std::vector<ModelPoint> starts;
+  for (const ModelPoint& c : s.centres) {
+    if (!s.collision->meets({c, body.radius})) starts.push_back(c);
+  }
+  std::size_t next = 0;
+  std::uint64_t blocked = 0, steps = 0;
+  for (auto _ : state) {
+    const ModelPoint& from = starts[next];
+    const ModelPoint& toward = starts[(next + 1) % starts.size()];
+    const std::int64_t step = kPerspectiveUnit / 8;
+    const ModelPoint to{from.x + (toward.x > from.x ? step : -step), from.y, from.z};
+    const CollisionMove move = moveWithCollision(*s.collision, body, from, to);
+    benchmark::DoNotOptimize(move.eye);
+    blocked += move.blocked ? 1 : 0;
+    ++steps;
+    next = (next + 1) % starts.size();
+  }
+  state.SetItemsProcessed(state.iterations());
+  state.counters["blocked_share"] = static_cast<double>(blocked) / static_cast<double>(steps);
+}
+
 }  // namespace
 
 void registerAll() {
+  benchmark::RegisterBenchmark("collision/scene_10000/sphere_grid", sceneQueries, true);
+  benchmark::RegisterBenchmark("collision/scene_10000/sphere_every_instance", sceneQueries, false);
+  benchmark::RegisterBenchmark("collision/scene_10000/walk_step_gravity", sceneWalkSteps);
   benchmark::RegisterBenchmark("collision/table_edge/walk_step_flying", walkSteps, 0);
   benchmark::RegisterBenchmark("collision/table_edge/walk_step_gravity", walkSteps,
                                kPerspectiveUnit / 16);

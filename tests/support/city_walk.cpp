@@ -156,8 +156,8 @@ WalkCount walk(const City& city, const SceneCollision& world, const WalkBody& bo
                        ": the eye is under the ground");
     }
   }
-  std::printf("%s: %d steps, %d stopped by a wall or the ground, %d slid along one\n", label,
-              steps, count.blocked, count.slid);
+  std::printf("%s: %d steps, %d stopped by a wall or the ground, %d slid along one\n", label, steps,
+              count.blocked, count.slid);
   if (count.slid < steps / 200) {
     throw cli::Error(std::string(label) + ": only " + std::to_string(count.slid) +
                      " steps slid along a wall (at least 0.5%)");
