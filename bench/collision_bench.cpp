@@ -69,29 +69,20 @@ void sphereQueries(benchmark::State& state, std::int64_t radius) {
   state.counters["met_share"] = static_cast<double>(met) / static_cast<double>(centres.size());
 }
 
-// Walk steps of 1/16 cube edge (16 sub-steps of the radius, 1/256 edge) from free centres about
-// the table's edge, each toward the next centre, flying or with gravity (eye height 1/16 edge).
-void walkSteps(benchmark::State& state, std::int64_t eye_height) {
-  const std::optional<CollisionModel> collision = CollisionModel::of(collisionBenchModel());
-  if (!collision) {
-    state.SkipWithError("no collision model");
-    return;
-  }
-  const CollisionInstance instance{&*collision, {}};
-  const WalkBody body{kPerspectiveUnit / 256, eye_height};
+// Walk steps of `step` along x from free centres, each toward the next centre.
+void timeWalkSteps(benchmark::State& state, const CollisionWorld& world, const WalkBody& body,
+                   const std::vector<ModelPoint>& centres, std::int64_t step) {
   std::vector<ModelPoint> starts;
-  for (const ModelPoint& c : tableEdgeCentres()) {
-    if (!collision->meets({c, body.radius})) starts.push_back(c);
+  for (const ModelPoint& c : centres) {
+    if (!world.meets({c, body.radius})) starts.push_back(c);
   }
   std::size_t next = 0;
   std::uint64_t blocked = 0, steps = 0;
   for (auto _ : state) {
     const ModelPoint& from = starts[next];
     const ModelPoint& toward = starts[(next + 1) % starts.size()];
-    // 1/16 edge along the first axis toward the next centre.
-    const std::int64_t step = kPerspectiveUnit / 16;
     const ModelPoint to{from.x + (toward.x > from.x ? step : -step), from.y, from.z};
-    const CollisionMove move = moveWithCollision({&instance, 1}, body, from, to);
+    const CollisionMove move = moveWithCollision(world, body, from, to);
     benchmark::DoNotOptimize(move.eye);
     blocked += move.blocked ? 1 : 0;
     ++steps;
@@ -99,6 +90,19 @@ void walkSteps(benchmark::State& state, std::int64_t eye_height) {
   }
   state.SetItemsProcessed(state.iterations());
   state.counters["blocked_share"] = static_cast<double>(blocked) / static_cast<double>(steps);
+}
+
+// Walk steps of 1/16 cube edge (16 sub-steps of the radius, 1/256 edge) from free centres about
+// the table's edge, flying or with gravity (eye height 1/16 edge).
+void walkSteps(benchmark::State& state, std::int64_t eye_height) {
+  const std::optional<CollisionModel> collision = CollisionModel::of(collisionBenchModel());
+  if (!collision) {
+    state.SkipWithError("no collision model");
+    return;
+  }
+  const CollisionInstance instance{&*collision, {}};
+  timeWalkSteps(state, CollisionInstances({&instance, 1}), {kPerspectiveUnit / 256, eye_height},
+                tableEdgeCentres(), kPerspectiveUnit / 16);
 }
 
 struct CollisionBenchScene {
@@ -159,30 +163,11 @@ void sceneQueries(benchmark::State& state, bool through_grid) {
   state.counters["met_share"] = per_query(met);
 }
 
-// Steps of 1/8 scene edge with gravity (eye height 1.7/32 scene edge), from free centres toward
-// the next, through the grid.
+// Steps of 1/8 scene edge with gravity (eye height 1.7/32 scene edge) through the grid.
 void sceneWalkSteps(benchmark::State& state) {
   const CollisionBenchScene& s = collisionBenchScene();
-  const WalkBody body{kPerspectiveUnit / 128, kPerspectiveUnit * 17 / 320};
-  std::vector<ModelPoint> starts;
-  for (const ModelPoint& c : s.centres) {
-    if (!s.collision->meets({c, body.radius})) starts.push_back(c);
-  }
-  std::size_t next = 0;
-  std::uint64_t blocked = 0, steps = 0;
-  for (auto _ : state) {
-    const ModelPoint& from = starts[next];
-    const ModelPoint& toward = starts[(next + 1) % starts.size()];
-    const std::int64_t step = kPerspectiveUnit / 8;
-    const ModelPoint to{from.x + (toward.x > from.x ? step : -step), from.y, from.z};
-    const CollisionMove move = moveWithCollision(*s.collision, body, from, to);
-    benchmark::DoNotOptimize(move.eye);
-    blocked += move.blocked ? 1 : 0;
-    ++steps;
-    next = (next + 1) % starts.size();
-  }
-  state.SetItemsProcessed(state.iterations());
-  state.counters["blocked_share"] = static_cast<double>(blocked) / static_cast<double>(steps);
+  timeWalkSteps(state, *s.collision, {kPerspectiveUnit / 128, kPerspectiveUnit * 17 / 320},
+                s.centres, kPerspectiveUnit / 8);
 }
 
 }  // namespace
