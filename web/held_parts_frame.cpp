@@ -10,22 +10,17 @@ bool HeldPartsFrame::draw(const ProgressiveModel& model, std::uint64_t taken,
     renderers_.clear();
     parts_ = assembleHeldParts(model);
     for (const std::unique_ptr<AssembledModel>& part : parts_.parts)
-      renderers_.push_back(std::make_unique<PerspectiveRenderer>(*part->view, parts_.detailDepths()));
+      renderers_.push_back(
+          std::make_unique<PerspectiveRenderer>(*part->view, parts_.detailDepths()));
     taken_ = taken;
     assembled_ = true;
   }
-  PerspectiveRenderer::Options options;   // detail by distance, culled: octopoint-render --eye's
-  options.coarser = coarse ? 1 : 0;       // while a key is held: octopoint-view's coarse frames
-  points_ = 0;
+  PerspectiveRenderer::Options options;  // detail by distance, culled: octopoint-render --eye's
+  options.coarser = coarse ? 1 : 0;      // while a key is held: octopoint-view's coarse frames
   bool drew = false;
-  for (const std::unique_ptr<PerspectiveRenderer>& renderer : renderers_) {
-    PerspectiveDrawStats drawn;
-    // A part that holds none of the depths asked for draws nothing (false): the others do.
-    if (renderer->draw(view, options, frame, &drawn)) {
-      points_ += drawn.leaves;
-      drew = true;
-    }
-  }
+  // A part that holds none of the depths asked for draws nothing (false): the others do.
+  for (const std::unique_ptr<PerspectiveRenderer>& renderer : renderers_)
+    drew = renderer->draw(view, options, frame) || drew;
   return drew;
 }
 

@@ -25,15 +25,12 @@ class HeldPartsFrame {
   // held parts again. False when nothing could be drawn (no part holds anything yet).
   bool draw(const ProgressiveModel& model, std::uint64_t taken, const PerspectiveView& view,
             bool coarse, Framebuffer& frame);
-  // The points the last draw drew.
-  std::uint64_t points() const { return points_; }
 
  private:
   HeldParts parts_;
   std::vector<std::unique_ptr<PerspectiveRenderer>> renderers_;  // one a part, in its order
   std::uint64_t taken_ = 0;
   bool assembled_ = false;
-  std::uint64_t points_ = 0;
 };
 
 }  // namespace octopoint::web

@@ -96,7 +96,7 @@
   let image = null;  // the last frame's pixels, reused while the size stays
   let stream = null;  // the chunked model's fetching (web/octopoint_stream.js), once one is open
   let streamProblem = '';  // what its server did wrong, kept in the overlay
-  let walk = null;  // walk mode (web/octopoint_walk.js), once the module has started
+  let walk = null;  // walk mode (web/octopoint_walk.js), where the module has it
   // The address's eye=, look=, fov= for a streamed model: placed when its head has come.
   let eyeToPlace = null;
 
@@ -139,7 +139,8 @@
 
   // Walk mode from the address's eye, once there is a model to walk in; '' or what is wrong.
   function placeEye(asked) {
-    const wrong = walk.place(asked.eye, asked.look, asked.fov);
+    const wrong = walk === null ? 'eye: this page has no walk mode' :
+                                  walk.place(asked.eye, asked.look, asked.fov);
     if (wrong === '') walk.active = true;
     else report(problem = wrong + ': the orbit view', true);
     return wrong;
@@ -147,7 +148,7 @@
 
   function draw() {
     pending = false;
-    if (eyeToPlace !== null && walk.ready()) {
+    if (eyeToPlace !== null && (walk === null || walk.ready())) {
       placeEye(eyeToPlace);
       eyeToPlace = null;
     }
@@ -279,7 +280,7 @@
     }
     if (stream !== null) stream.stop();
     if (walking() !== null) walk.leave();  // another model: another cube, another eye
-    walk.forget();
+    if (walk !== null) walk.forget();
     modelField.value = name;
     streamProblem = '';
     setStyle('colour');  // a chunked model stores no normals: colour only
@@ -299,8 +300,9 @@
   // back to the orbit view.
   function toggleWalk() {
     if (walk === null || !walk.ready()) {
-      report('walk mode: ' + (stream !== null ? "the model's head has not come yet"
-                                              : 'this page has no model with its place in the scan'),
+      report('walk mode: ' + (walk === null ? 'this page has none (it embeds no model)' :
+                              stream !== null ? "the model's head has not come yet" :
+                                                'this page has no model with its place in the scan'),
              true);
       return;
     }

@@ -6,8 +6,10 @@
 // octopoint-render's --eye X,Y,Z --look YAW,PITCH[,ROLL] --fov DEG.
 'use strict';
 
-// Returns the walk, with its methods (walk.ready() says whether there is a model to walk in).
+// Returns null when the module has no walk mode (the page without a model); otherwise the walk,
+// with its methods (walk.ready() says whether there is a model to walk in).
 window.octopointWalk = function (Module) {
+  if (typeof Module._octopoint_web_walk_cube !== 'function') return null;
   const kUnit = 16777216;  // Q.24: one cube edge
   const kTurn = 65536;     // the module's angles: 1/65536 turn
   // The walk keys, in the module's order (0 forward ... 5 down), by the key's name.
