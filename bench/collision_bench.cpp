@@ -13,6 +13,7 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <cstdio>
 #include <cstdlib>
 #include <memory>
 #include <random>
@@ -25,7 +26,9 @@
 #include "renderer/collision.h"
 #include "renderer/collision_move.h"
 #include "renderer/scene_collision.h"
+#ifdef OCTOPOINT_COLLISION_BENCH_CITY
 #include "tools/scene_file.h"
+#endif
 
 namespace octopoint {
 namespace {
@@ -112,7 +115,9 @@ void walkSteps(benchmark::State& state, std::int64_t eye_height) {
 }
 
 struct CollisionBenchScene {
+#ifdef OCTOPOINT_COLLISION_BENCH_CITY
   std::unique_ptr<LoadedScene> loaded;  // a city's models, when loaded
+#endif
   std::vector<SceneInstance> instances;
   std::optional<SceneCollision> collision;
   std::vector<ModelPoint> centres;  // 4,096 within 2 scene edges of the middle, seeded
@@ -145,16 +150,26 @@ const CollisionBenchScene& collisionBenchScene() {
   return *built;
 }
 
+#ifdef OCTOPOINT_COLLISION_BENCH_CITY
 // The city OCTOPOINT_CITY names (ground at y = 0, one scene edge 32 m), or null.
 const CollisionBenchScene* collisionBenchCity() {
   static const CollisionBenchScene* built = []() -> const CollisionBenchScene* {
     const char* path = std::getenv("OCTOPOINT_CITY");
     if (path == nullptr) return nullptr;
     auto* s = new CollisionBenchScene;
-    s->loaded = loadScene(path);
+    try {
+      s->loaded = loadScene(path);
+    } catch (const std::exception& error) {
+      std::fprintf(stderr, "collision_bench: OCTOPOINT_CITY: %s\n", error.what());
+      std::exit(1);
+    }
     s->instances = s->loaded->instances;
     SceneError error;
     s->collision.emplace(s->loaded->models, s->instances, &error);
+    if (error != SceneError::kNone || s->collision->unindexedModel()) {
+      std::fprintf(stderr, "collision_bench: OCTOPOINT_CITY: %s: cannot collide with it\n", path);
+      std::exit(1);
+    }
     std::int64_t low = 0, high = 0;
     for (const SceneInstance& instance : s->instances) {
       low = std::min(low, instance.transform.at.x);
@@ -172,6 +187,8 @@ const CollisionBenchScene* collisionBenchCity() {
   }();
   return built;
 }
+
+#endif
 
 void sceneQueries(benchmark::State& state, const CollisionBenchScene& s, bool through_grid) {
   const std::int64_t radius = kPerspectiveUnit / 128;
@@ -218,8 +235,10 @@ void registerAll() {
         [scene](benchmark::State& state) { sceneWalkSteps(state, scene()); });
   };
   scenes("scene_10000", collisionBenchScene);
+#ifdef OCTOPOINT_COLLISION_BENCH_CITY
   if (std::getenv("OCTOPOINT_CITY") != nullptr)
     scenes("city", []() -> const CollisionBenchScene& { return *collisionBenchCity(); });
+#endif
   benchmark::RegisterBenchmark("collision/table_edge/walk_step_flying", walkSteps, 0);
   benchmark::RegisterBenchmark("collision/table_edge/walk_step_gravity", walkSteps,
                                kPerspectiveUnit / 16);
