@@ -6,10 +6,16 @@
 // one scene edge apart, quarter turns, scale -1; spheres of 1/128 scene edge (25 cm in the
 // generated city) about the middle of it, through the grid (renderer/scene_collision.h) and by
 // testing every instance, side by side; and walk steps of 1/8 scene edge (4 m) with gravity.
+// With OCTOPOINT_CITY=DIR/city.json (scripts/make-city), the same on that city: `collision/city/`,
+// its spheres at eye height (1.7 m) over the ground anywhere in it.
 
 #include <benchmark/benchmark.h>
 
+#include <algorithm>
 #include <cstdint>
+#include <cstdio>
+#include <cstdlib>
+#include <memory>
 #include <random>
 #include <string>
 #include <vector>
@@ -20,6 +26,9 @@
 #include "renderer/collision.h"
 #include "renderer/collision_move.h"
 #include "renderer/scene_collision.h"
+#ifdef OCTOPOINT_COLLISION_BENCH_CITY
+#include "tools/scene_file.h"
+#endif
 
 namespace octopoint {
 namespace {
@@ -106,6 +115,9 @@ void walkSteps(benchmark::State& state, std::int64_t eye_height) {
 }
 
 struct CollisionBenchScene {
+#ifdef OCTOPOINT_COLLISION_BENCH_CITY
+  std::unique_ptr<LoadedScene> loaded;  // a city's models, when loaded
+#endif
   std::vector<SceneInstance> instances;
   std::optional<SceneCollision> collision;
   std::vector<ModelPoint> centres;  // 4,096 within 2 scene edges of the middle, seeded
@@ -138,8 +150,47 @@ const CollisionBenchScene& collisionBenchScene() {
   return *built;
 }
 
-void sceneQueries(benchmark::State& state, bool through_grid) {
-  const CollisionBenchScene& s = collisionBenchScene();
+#ifdef OCTOPOINT_COLLISION_BENCH_CITY
+// The city OCTOPOINT_CITY names (ground at y = 0, one scene edge 32 m), or null.
+const CollisionBenchScene* collisionBenchCity() {
+  static const CollisionBenchScene* built = []() -> const CollisionBenchScene* {
+    const char* path = std::getenv("OCTOPOINT_CITY");
+    if (path == nullptr) return nullptr;
+    auto* s = new CollisionBenchScene;
+    try {
+      s->loaded = loadScene(path);
+    } catch (const std::exception& error) {
+      std::fprintf(stderr, "collision_bench: OCTOPOINT_CITY: %s\n", error.what());
+      std::exit(1);
+    }
+    s->instances = s->loaded->instances;
+    SceneError error;
+    s->collision.emplace(s->loaded->models, s->instances, &error);
+    if (error != SceneError::kNone || s->collision->unindexedModel()) {
+      std::fprintf(stderr, "collision_bench: OCTOPOINT_CITY: %s: cannot collide with it\n", path);
+      std::exit(1);
+    }
+    std::int64_t low = 0, high = 0;
+    for (const SceneInstance& instance : s->instances) {
+      low = std::min(low, instance.transform.at.x);
+      high = std::max(high, instance.transform.at.x);
+    }
+    std::mt19937_64 random(35);
+    const std::int64_t eye_y = -kPerspectiveUnit * 17 / 320;  // 1.7 m over the ground
+    for (int k = 0; k < 4096; ++k) {
+      auto across = [&] {
+        return low + static_cast<std::int64_t>(random() % static_cast<std::uint64_t>(high - low));
+      };
+      s->centres.push_back({across(), eye_y, across()});
+    }
+    return s;
+  }();
+  return built;
+}
+
+#endif
+
+void sceneQueries(benchmark::State& state, const CollisionBenchScene& s, bool through_grid) {
   const std::int64_t radius = kPerspectiveUnit / 128;
   const auto meets = [&](const ModelPoint& c, CollisionStats* stats) {
     return through_grid ? s.collision->meets({c, radius}, stats)
@@ -164,8 +215,7 @@ void sceneQueries(benchmark::State& state, bool through_grid) {
 }
 
 // Steps of 1/8 scene edge with gravity (eye height 1.7/32 scene edge) through the grid.
-void sceneWalkSteps(benchmark::State& state) {
-  const CollisionBenchScene& s = collisionBenchScene();
+void sceneWalkSteps(benchmark::State& state, const CollisionBenchScene& s) {
   timeWalkSteps(state, *s.collision, {kPerspectiveUnit / 128, kPerspectiveUnit * 17 / 320},
                 s.centres, kPerspectiveUnit / 8);
 }
@@ -173,9 +223,22 @@ void sceneWalkSteps(benchmark::State& state) {
 }  // namespace
 
 void registerAll() {
-  benchmark::RegisterBenchmark("collision/scene_10000/sphere_grid", sceneQueries, true);
-  benchmark::RegisterBenchmark("collision/scene_10000/sphere_every_instance", sceneQueries, false);
-  benchmark::RegisterBenchmark("collision/scene_10000/walk_step_gravity", sceneWalkSteps);
+  const auto scenes = [](const std::string& name, const CollisionBenchScene& (*scene)()) {
+    benchmark::RegisterBenchmark(
+        ("collision/" + name + "/sphere_grid").c_str(),
+        [scene](benchmark::State& state) { sceneQueries(state, scene(), true); });
+    benchmark::RegisterBenchmark(
+        ("collision/" + name + "/sphere_every_instance").c_str(),
+        [scene](benchmark::State& state) { sceneQueries(state, scene(), false); });
+    benchmark::RegisterBenchmark(
+        ("collision/" + name + "/walk_step_gravity").c_str(),
+        [scene](benchmark::State& state) { sceneWalkSteps(state, scene()); });
+  };
+  scenes("scene_10000", collisionBenchScene);
+#ifdef OCTOPOINT_COLLISION_BENCH_CITY
+  if (std::getenv("OCTOPOINT_CITY") != nullptr)
+    scenes("city", []() -> const CollisionBenchScene& { return *collisionBenchCity(); });
+#endif
   benchmark::RegisterBenchmark("collision/table_edge/walk_step_flying", walkSteps, 0);
   benchmark::RegisterBenchmark("collision/table_edge/walk_step_gravity", walkSteps,
                                kPerspectiveUnit / 16);

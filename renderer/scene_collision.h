@@ -3,9 +3,9 @@
 // renderer/collision_move.h among a city's instances, as they are drawn (the same
 // InstanceTransform: turned, scaled, moved). A sphere is tested only against the instances whose
 // box (instanceReach, renderer/collision.h) lies near it, found through a coarse grid over the
-// ground plane (x, z) built once with the scene: cells at least twice as wide as the widest
-// instance box, so each instance is listed in at most 2 x 2 cells, and at most 4 cells per
-// instance (and 4,096) in all. A query looks at the few cells its sphere's box covers: its cost
+// ground plane (x, z) built once with the scene: cells a power of two at least as wide as the
+// widest instance box, so each instance is listed in at most 2 x 2 cells, and at most 4 cells per
+// instance (or 4,096) in all. A query looks at the few cells its sphere's box covers: its cost
 // follows the instances near the eye, not the scene; it allocates nothing. Integer only.
 
 #include <cstdint>

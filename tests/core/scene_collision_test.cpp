@@ -70,7 +70,7 @@ TEST(SceneCollision, FindsWhatTestingEveryInstanceFindsAndTestsFew) {
   }
   EXPECT_GT(met, kQueries / 10);
   EXPECT_LT(met, kQueries * 9 / 10);
-  // A tenth of the 400 per query at most (the grid's cells are twice the widest instance's box).
+  // A tenth of the 400 per query at most (the grid's cells as wide as the widest box).
   EXPECT_LT(stats.instances_tested, std::uint64_t{40} * kQueries);
 }
 
