@@ -313,7 +313,12 @@ std::string applyScene(const octopoint::prepare::Scene& scene,
   options.axes = scene.axes;
   options.metres_per_scan_unit = scene.metres_per_scan_unit;
   options.normals = scene.normals;
-  if (scene.prune) options.visibility_cameras = sceneCameras(scene);
+  if (scene.prune) {
+    if (scene.orthographic_views) options.visibility_cameras = sceneCameras(scene);
+    options.visibility_eyes = scene.eyes;
+    options.eye_width = scene.width;
+    options.eye_height = scene.height;
+  }
   return reason;
 }
 
@@ -432,10 +437,11 @@ void printLevels(const octopoint::prepare::PreparedModel& model,
   for (const PreparedLevel& level : model.levels) {
     if (level.voxels_before_pruning == 0) continue;
     std::printf(
-        "  depth %2d pruned from %zu views: %zu -> %zu voxels, %zu -> %zu bytes (-%.1f%%) in %.2f "
-        "s\n",
-        level.depth, options.visibility_cameras.size(), level.voxels_before_pruning,
-        level.leaves.size(), level.bytes_before_pruning, level.nodes.size() + level.leaves.size(),
+        "  depth %2d pruned from %zu views and %zu eyes: %zu -> %zu voxels, %zu -> %zu bytes "
+        "(-%.1f%%) in %.2f s\n",
+        level.depth, options.visibility_cameras.size(), options.visibility_eyes.size(),
+        level.voxels_before_pruning, level.leaves.size(), level.bytes_before_pruning,
+        level.nodes.size() + level.leaves.size(),
         100.0 - 100.0 * static_cast<double>(level.nodes.size() + level.leaves.size()) /
                     static_cast<double>(level.bytes_before_pruning),
         level.pruning_seconds);
