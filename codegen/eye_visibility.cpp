@@ -95,7 +95,8 @@ class EyeJudge {
         tables_[frame.first + i] = perspectiveWalkTables(view, level.depth, max_error);
         depths[i] = level.depth;
       }
-      const PerspectiveDetail detail = perspectiveDetail(view, std::span(depths.data(), frame.count));
+      const PerspectiveDetail detail =
+          perspectiveDetail(view, std::span(depths.data(), frame.count));
       for (const KeyKind kind : {KeyKind::kColour, KeyKind::kNormal}) {
         if (kind == KeyKind::kNormal && !normals_) continue;
         nearest_.assign(static_cast<std::size_t>(view.camera.width) *
@@ -106,8 +107,7 @@ class EyeJudge {
             const std::size_t k = frame.first + i;
             PerspectiveWalkParts parts;
             if (frame.count > 1) {
-              parts.detail = {&detail, static_cast<int>(i),
-                              i == 0 ? -1 : levels_[k - 1].depth};
+              parts.detail = {&detail, static_cast<int>(i), i == 0 ? -1 : levels_[k - 1].depth};
             }
             const LeafPixels pixels_of{view, splatPadding(tables_[k]), kind};
             if (mark) {
