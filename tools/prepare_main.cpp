@@ -89,7 +89,8 @@ loaded whole through PCL. The output is the same byte for byte whatever --memory
   --scene SCENE.json    (a file of at most 1 MiB) the views the app will show (docs/scene.md): )"
                                R"(yaw/pitch ranges or
                         viewpoints, zoom range, framebuffer size, depths (or "auto"), palette,
-                        crop box, outlier removal, axes, normals. Voxels no view can see are
+                        crop box, outlier removal, axes, normals; perspective eyes and camera
+                        paths (octopoint-render --eye/--path's). Voxels no view can see are
                         pruned. Replaces --depths, --colours, --crop, --axes, --scan-unit and
                         --normals
   --emit strings|bytes  how the generated sources spell the arrays (default strings): string
