@@ -1,7 +1,8 @@
 # A scene's eyes and paths end to end (docs/scene.md, "Eyes and paths"): the default model's scan
 # prepared for a walk at the table's edge, pruned and unpruned; from every listed eye and every
 # frame of the path (as octopoint-render --eye and --path --frames draw them) the two models draw
-# the same PNG, byte for byte; the pruned model is smaller; an eye not on the list may differ.
+# the same PNG, byte for byte, also in the lit styles of a model with normals; the pruned model is
+# smaller; an eye not on the list differs.
 # usage: cmake -DPREPARE=... -DRENDER=... -DSCAN=milk.pcd -DSCENE=tabletop_walk.json -DOUT=DIR -P this
 cmake_policy(VERSION 3.20)
 file(REMOVE_RECURSE ${OUT})
@@ -70,3 +71,32 @@ if(NOT differ)
   message(FATAL_ERROR "an eye not on the list draws the same frame: nothing it sees was pruned")
 endif()
 message(STATUS "pruned ${pruned_bytes} bytes, unpruned ${unpruned_bytes}")
+
+# With normals (the whole-scan preparer): the lit styles' frames, whose depth code is coarser, are
+# kept too: the first eye shaded and outlined, and the path shaded, the same PNGs.
+foreach(kind pruned unpruned)
+  set(text "${scene}")
+  if(kind STREQUAL "unpruned")
+    set(text "${unpruned}")
+  endif()
+  string(REGEX REPLACE "}[ \n]*$" ",\n  \"normals\": true\n}\n" text "${text}")
+  file(WRITE ${OUT}/normals_${kind}.json "${text}")
+  execute_process(COMMAND ${PREPARE} ${SCAN} --scene ${OUT}/normals_${kind}.json
+                          -o ${OUT}/normals_${kind} --name walk
+                  RESULT_VARIABLE status OUTPUT_QUIET ERROR_VARIABLE err)
+  if(NOT status EQUAL 0)
+    message(FATAL_ERROR "octopoint-prepare with normals failed (${status}): ${err}")
+  endif()
+  foreach(style shaded outlined)
+    render_ok(out --file ${OUT}/normals_${kind}/walk.oct --eye 0.05,0.1,-0.45 --look -5,-20
+              --fov 70 --style ${style} -o ${OUT}/normals_${kind}_${style}.png)
+  endforeach()
+  render_ok(out --file ${OUT}/normals_${kind}/walk.oct --path ${OUT}/tabletop_walk_path.json
+            --frames 16 --style shaded -o ${OUT}/normals_${kind}_path.png)
+endforeach()
+foreach(style shaded outlined)
+  same_files(${OUT}/normals_pruned_${style}.png ${OUT}/normals_unpruned_${style}.png)
+endforeach()
+foreach(frame 0000 0005 0010 0015)
+  same_files(${OUT}/normals_pruned_path_${frame}.png ${OUT}/normals_unpruned_path_${frame}.png)
+endforeach()
