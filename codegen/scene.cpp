@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <nlohmann/json.hpp>
 #include <set>
@@ -342,6 +343,16 @@ Scene parseScene(const std::string& text, const std::string& path) {
   if (root.contains("zoom_step"))
     scene.zoom_step = reader.number(root["zoom_step"], "zoom_step", 1.01, 16);
   readPerspectiveViews(reader, root, path, scene);
+  // Each eye draws its whole frame at every stored depth, as an orthographic view does.
+  const double eye_pixels = static_cast<double>(scene.eyes.size()) * scene.width * scene.height;
+  if (scene.prune && eye_pixels > kMaxSceneViewPixels) {
+    char too_much[320];
+    std::snprintf(too_much, sizeof too_much,
+                  "%zu eyes and path frames of %dx%d pixels are %.3g view pixels; pruning draws "
+                  "at most %.3g: fewer eyes or path_frames, or shrink the framebuffer",
+                  scene.eyes.size(), scene.width, scene.height, eye_pixels, kMaxSceneViewPixels);
+    reader.fail(root.contains("paths") ? "paths" : "eyes", too_much);
+  }
   if (scene.prune && scene.orthographic_views) {
     const std::string too_much = sceneWorkProblem(scene);
     if (!too_much.empty()) throw PrepareError(cli::displayPath(path) + ": " + too_much);

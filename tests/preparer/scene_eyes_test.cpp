@@ -120,6 +120,15 @@ TEST_F(SceneEyesFolder, HostileEyesAndPathsAreRefusedOnOneLineNamingFileAndKey) 
            "path_frames": 3600})",
        "key 'paths': the eyes and path frames come to more than 20000 views: lower path_frames"},
   };
+  std::string many_eyes;
+  for (int i = 0; i < 300; ++i) many_eyes += std::string(i ? "," : "") + R"({"eye": [0, 0, 0]})";
+  EXPECT_EQ(errorOf(R"({"framebuffer": [8192, 8192], "eyes": [)" + many_eyes + "]}"),
+            file +
+                ": key 'eyes': 300 eyes and path frames of 8192x8192 pixels are 2.01e+10 view "
+                "pixels; pruning draws at most 1.72e+10: fewer eyes or path_frames, or shrink "
+                "the framebuffer");
+  EXPECT_NO_THROW(
+      parse(R"({"framebuffer": [8192, 8192], "prune": false, "eyes": [)" + many_eyes + "]}"));
   for (const auto& c : cases) {
     const std::string error = errorOf(c.text);
     EXPECT_EQ(error.rfind(file + ": " + c.expected, 0), 0u) << c.text << "\n  gave: " << error;
