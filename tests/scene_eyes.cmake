@@ -3,7 +3,8 @@
 # frame of the path (as octopoint-render --eye and --path --frames draw them) the two models draw
 # the same PNG, byte for byte, also in the lit styles of a model with normals; the pruned model is
 # smaller; an eye not on the list differs.
-# usage: cmake -DPREPARE=... -DRENDER=... -DSCAN=milk.pcd -DSCENE=tabletop_walk.json -DOUT=DIR -P this
+# usage: cmake -DPREPARE=... -DRENDER=... -DSCAN=milk.pcd -DSCENE=tabletop_walk.json -DOUT=DIR
+#        -P this
 cmake_policy(VERSION 3.20)
 file(REMOVE_RECURSE ${OUT})
 file(MAKE_DIRECTORY ${OUT})
