@@ -44,8 +44,8 @@ SymbolModel::SymbolModel(std::uint32_t symbols, bool for_decoding)
     // At least twice as many entries as symbols (2^12 for 2048 symbols: Q15 quantiles >> 3).
     const int table_bits = std::bit_width(symbols_ - 1) + 1;
     table_shift = static_cast<std::uint32_t>(kSymbolModelShift - table_bits);
-    table.resize(std::size_t{1} << table_bits);
-    table_last = static_cast<std::uint32_t>(table.size() - 1);
+    table_last = (1u << table_bits) - 1;
+    table.resize(table_last + 2);  // the last slot only counts (update)
   }
   reset();
 }
@@ -71,14 +71,16 @@ void SymbolModel::update() {
     sum += counts[s];
   }
   if (!table.empty()) {
-    // Entry t names the symbol whose interval holds quantile t << shift: the last s whose
-    // distribution[s] is at most it (distribution[0] is 0).
-    std::uint32_t s = 0;
-    for (std::uint32_t t = 0; t <= table_last; ++t) {
-      const std::uint32_t quantile = t << table_shift;
-      while (distribution[s + 1] <= quantile) ++s;
-      table[t] = static_cast<std::uint16_t>(s);
-    }
+    // Entry t names the symbol whose interval holds quantile t << shift: the number of symbols
+    // s >= 1 whose distribution[s] is at most it, counted without a branch (each symbol marks the
+    // first entry it is at or below, a running sum adds the marks; one slot past the last entry
+    // takes the marks of symbols that lie above every entry).
+    std::fill(table.begin(), table.end(), std::uint16_t{0});
+    const std::uint32_t round_up = (1u << table_shift) - 1;
+    for (std::uint32_t s = 1; s < symbols_; ++s)
+      ++table[(distribution[s] + round_up) >> table_shift];
+    std::uint16_t symbols_below = 0;
+    for (std::uint32_t t = 0; t <= table_last; ++t) table[t] = symbols_below += table[t];
   }
   cycle_ = std::min((5 * cycle_) >> 2, (symbols_ + 6) << 3);
   until_update = cycle_;
@@ -109,20 +111,10 @@ std::uint8_t ArithmeticDecoder::refill() {
   return *next_++;
 }
 
-std::uint32_t ArithmeticDecoder::readBits(int bits) {
-  if (bits > 19) {  // wider values come as a low 16-bit half and the rest
-    const std::uint32_t low = readBits(16);
-    return (readBits(bits - 16) << 16) | low;
-  }
-  length_ >>= bits;
-  std::uint32_t value = value_ / length_;
-  value_ -= length_ * value;
-  if (length_ < kMinLength) renormalise();
-  if (value >> bits) {  // only a corrupt stream gets here
-    failed_ = true;
-    value &= (1u << bits) - 1;
-  }
-  return value;
+std::uint32_t ArithmeticDecoder::readWideBits(int bits) {
+  // Wider values come as a low 16-bit half and the rest.
+  const std::uint32_t low = readBits(16);
+  return (readBits(bits - 16) << 16) | low;
 }
 
 void ArithmeticEncoder::start() {

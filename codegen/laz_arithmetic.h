@@ -65,7 +65,7 @@ class SymbolModel {
   std::vector<std::uint32_t> counts;
   std::vector<std::uint16_t> table;  // decoder: table[q] = the symbol at Q15 quantile q << shift
   std::uint32_t table_shift = 0;
-  std::uint32_t table_last = 0;  // table.size() - 1: a quantile past the table takes its last entry
+  std::uint32_t table_last = 0;  // a quantile past the table takes this, its last entry
   std::uint32_t until_update = 0;
 
  private:
@@ -107,7 +107,7 @@ class ArithmeticDecoder {
   // decodeBit and decodeSymbol are inline (below): they are most of a point's decoding.
   std::uint32_t decodeBit(BitModel& model);
   std::uint32_t decodeSymbol(SymbolModel& model);
-  std::uint32_t readBits(int bits);  // 1 to 32 raw bits
+  std::uint32_t readBits(int bits);  // 1 to 32 raw bits; inline up to 19
   std::uint32_t readInt() { return readBits(32); }
   // Zero bytes read past the end of the input; a valid stream needs none.
   std::uint64_t overrun() const { return overrun_; }
@@ -124,6 +124,7 @@ class ArithmeticDecoder {
     return *next_++;
   }
   std::uint8_t refill();
+  std::uint32_t readWideBits(int bits);  // 20 to 32 raw bits
   void renormalise() {
     do {
       value_ = (value_ << 8) | nextByte();
@@ -163,7 +164,9 @@ inline std::uint32_t ArithmeticDecoder::decodeSymbol(SymbolModel& model) {
   // distribution[s] <= quantile, so the symbol is the last s with distribution[s] <= quantile.
   const std::uint32_t quantile = value_ / length_;
   std::uint32_t symbol = model.table[std::min(quantile >> model.table_shift, model.table_last)];
-  while (distribution[symbol + 1] <= quantile) ++symbol;  // rarely: the entry spans symbols
+  // The entry spans symbols: one step up is common enough to be taken without a branch, more rare.
+  symbol += distribution[symbol + 1] <= quantile;
+  while (distribution[symbol + 1] <= quantile) ++symbol;
   const std::uint32_t low = distribution[symbol] * length_;
   // The last symbol takes the rest of the interval, up to its end.
   const std::uint32_t high =
@@ -174,6 +177,19 @@ inline std::uint32_t ArithmeticDecoder::decodeSymbol(SymbolModel& model) {
   ++model.counts[symbol];
   if (--model.until_update == 0) model.update();
   return symbol;
+}
+
+inline std::uint32_t ArithmeticDecoder::readBits(int bits) {
+  if (bits > 19) return readWideBits(bits);
+  length_ >>= bits;
+  std::uint32_t value = value_ / length_;
+  value_ -= length_ * value;
+  if (length_ < kMinLength) renormalise();
+  if (value >> bits) [[unlikely]] {  // only a corrupt stream gets here
+    failed_ = true;
+    value &= (1u << bits) - 1;
+  }
+  return value;
 }
 
 // The encoder: the exact inverse of ArithmeticDecoder, writing to a byte vector.
