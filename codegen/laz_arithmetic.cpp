@@ -3,6 +3,7 @@
 #include "codegen/laz_arithmetic.h"
 
 #include <algorithm>
+#include <bit>
 
 namespace octopoint::laz {
 namespace {
@@ -11,7 +12,6 @@ constexpr std::uint32_t kBitModelMaxCount = 1u << kBitModelShift;
 constexpr std::uint32_t kSymbolModelMaxCount = 1u << kSymbolModelShift;
 constexpr std::uint32_t kBitModelMaxCycle = 64;
 constexpr std::uint32_t kMaxSymbols = 1u << 11;
-constexpr std::uint32_t kSmallestTabledAlphabet = 17;  // smaller ones bisect in a step or four
 
 }  // namespace
 
@@ -37,14 +37,15 @@ void BitModel::update() {
 
 SymbolModel::SymbolModel(std::uint32_t symbols, bool for_decoding)
     : symbols_(std::clamp(symbols, 2u, kMaxSymbols)) {
-  distribution.resize(symbols_);
+  distribution.resize(symbols_ + 1);
+  distribution[symbols_] = kPastLastSymbol;
   counts.resize(symbols_);
-  if (for_decoding && symbols_ >= kSmallestTabledAlphabet) {
-    std::uint32_t table_bits = 3;
-    while (symbols_ > (1u << (table_bits + 2))) ++table_bits;
-    table_size = 1u << table_bits;
-    table_shift = kSymbolModelShift - table_bits;
-    table.resize(table_size + 2);
+  if (for_decoding) {
+    // At least twice as many entries as symbols (2^12 for 2048 symbols: Q15 quantiles >> 3).
+    const int table_bits = std::bit_width(symbols_ - 1) + 1;
+    table_shift = static_cast<std::uint32_t>(kSymbolModelShift - table_bits);
+    table_last = (1u << table_bits) - 1;
+    table.resize(table_last + 2);  // the last slot only counts (update)
   }
   reset();
 }
@@ -65,17 +66,21 @@ void SymbolModel::update() {
   }
   const std::uint32_t scale = 0x80000000u / total_;  // Q31 / total
   std::uint32_t sum = 0;
-  std::uint32_t filled = 0;  // table entries set so far
   for (std::uint32_t s = 0; s < symbols_; ++s) {
     distribution[s] = (scale * sum) >> (31 - kSymbolModelShift);  // Q15
     sum += counts[s];
-    if (table.empty()) continue;
-    const std::uint32_t quantile = distribution[s] >> table_shift;
-    while (filled < quantile) table[++filled] = s - 1;
   }
   if (!table.empty()) {
-    table[0] = 0;
-    while (filled <= table_size) table[++filled] = symbols_ - 1;
+    // Entry t names the symbol whose interval holds quantile t << shift: the number of symbols
+    // s >= 1 whose distribution[s] is at most it, counted without a branch (each symbol marks the
+    // first entry it is at or below, a running sum adds the marks; one slot past the last entry
+    // takes the marks of symbols that lie above every entry).
+    std::fill(table.begin(), table.end(), std::uint16_t{0});
+    const std::uint32_t round_up = (1u << table_shift) - 1;
+    for (std::uint32_t s = 1; s < symbols_; ++s)
+      ++table[(distribution[s] + round_up) >> table_shift];
+    std::uint16_t symbols_below = 0;
+    for (std::uint32_t t = 0; t <= table_last; ++t) table[t] = symbols_below += table[t];
   }
   cycle_ = std::min((5 * cycle_) >> 2, (symbols_ + 6) << 3);
   until_update = cycle_;
@@ -106,80 +111,10 @@ std::uint8_t ArithmeticDecoder::refill() {
   return *next_++;
 }
 
-std::uint32_t ArithmeticDecoder::decodeBit(BitModel& model) {
-  const std::uint32_t split = model.probability_0 * (length_ >> kBitModelShift);
-  const std::uint32_t bit = value_ >= split;
-  if (bit == 0) {
-    length_ = split;
-    ++model.count_0;
-  } else {
-    value_ -= split;
-    length_ -= split;
-  }
-  if (length_ < kMinLength) renormalise();
-  if (--model.until_update == 0) model.update();
-  return bit;
-}
-
-std::uint32_t ArithmeticDecoder::decodeSymbol(SymbolModel& model) {
-  const std::uint32_t* distribution = model.distribution.data();
-  const std::uint32_t last = model.symbols() - 1;
-  std::uint32_t symbol = 0;
-  std::uint32_t low = 0;
-  std::uint32_t high = length_;
-  length_ >>= kSymbolModelShift;
-  if (!model.table.empty()) {
-    // The table narrows the search to the symbols of one quantile, then bisection.
-    const std::uint32_t quantile_value = value_ / length_;
-    const std::uint32_t t = std::min(quantile_value >> model.table_shift, model.table_size);
-    symbol = model.table[t];
-    std::uint32_t above = model.table[t + 1] + 1;
-    while (above > symbol + 1) {
-      const std::uint32_t middle = (symbol + above) >> 1;
-      if (distribution[middle] > quantile_value) {
-        above = middle;
-      } else {
-        symbol = middle;
-      }
-    }
-    low = distribution[symbol] * length_;
-    if (symbol != last) high = distribution[symbol + 1] * length_;
-  } else {
-    std::uint32_t above = model.symbols();
-    std::uint32_t middle = above >> 1;
-    do {
-      const std::uint32_t z = length_ * distribution[middle];
-      if (z > value_) {
-        above = middle;
-        high = z;
-      } else {
-        symbol = middle;
-        low = z;
-      }
-    } while ((middle = (symbol + above) >> 1) != symbol);
-  }
-  value_ -= low;
-  length_ = high - low;
-  if (length_ < kMinLength) renormalise();
-  ++model.counts[symbol];
-  if (--model.until_update == 0) model.update();
-  return symbol;
-}
-
-std::uint32_t ArithmeticDecoder::readBits(int bits) {
-  if (bits > 19) {  // wider values come as a low 16-bit half and the rest
-    const std::uint32_t low = readBits(16);
-    return (readBits(bits - 16) << 16) | low;
-  }
-  length_ >>= bits;
-  std::uint32_t value = value_ / length_;
-  value_ -= length_ * value;
-  if (length_ < kMinLength) renormalise();
-  if (value >> bits) {  // only a corrupt stream gets here
-    failed_ = true;
-    value &= (1u << bits) - 1;
-  }
-  return value;
+std::uint32_t ArithmeticDecoder::readWideBits(int bits) {
+  // Wider values come as a low 16-bit half and the rest.
+  const std::uint32_t low = readBits(16);
+  return (readBits(bits - 16) << 16) | low;
 }
 
 void ArithmeticEncoder::start() {

@@ -18,6 +18,7 @@
 // (overrun()), and a raw value out of range marks it failed(): the caller checks both at the end of
 // a chunk and refuses the chunk, so that a corrupt stream costs its own length and no more.
 
+#include <algorithm>
 #include <cstddef>
 #include <cstdint>
 #include <span>
@@ -44,8 +45,13 @@ class BitModel {
   std::uint32_t cycle = 0;
 };
 
-// An adaptive model of `symbols` symbols (2 to 2048), with a lookup table that finds a symbol's
-// interval in one step for the decoder of larger alphabets.
+// An adaptive model of `symbols` symbols (2 to 2048). A decoder's model also keeps a lookup table
+// that finds the symbol of a Q15 quantile in one step almost always: the table has at least twice
+// as many entries as the model has symbols, so that most entries lie inside one symbol's interval
+// and the rest name the first of the few symbols they cover (the decoder steps up from it).
+// LASzip's decoder tables have a quarter to a half as many entries as symbols (and none below 17
+// symbols) and bisect the rest, a branch the processor cannot predict at every step; which symbol
+// is found is the same either way, so the format does not care.
 class SymbolModel {
  public:
   explicit SymbolModel(std::uint32_t symbols, bool for_decoding = true);
@@ -53,11 +59,13 @@ class SymbolModel {
   void update();
   std::uint32_t symbols() const { return symbols_; }
 
-  std::vector<std::uint32_t> distribution;  // Q15 cumulative: distribution[s] = P(< s)
+  // Q15 cumulative: distribution[s] = P(< s); distribution[symbols] is kPastLastSymbol, so that a
+  // decoder's upward step stops at the last symbol without a test of its own.
+  std::vector<std::uint32_t> distribution;
   std::vector<std::uint32_t> counts;
-  std::vector<std::uint32_t> table;  // decoder: table[q] = the first symbol of Q15 quantile q
+  std::vector<std::uint16_t> table;  // decoder: table[q] = the symbol at Q15 quantile q << shift
   std::uint32_t table_shift = 0;
-  std::uint32_t table_size = 0;
+  std::uint32_t table_last = 0;  // a quantile past the table takes this, its last entry
   std::uint32_t until_update = 0;
 
  private:
@@ -65,6 +73,8 @@ class SymbolModel {
   std::uint32_t total_ = 0;
   std::uint32_t cycle_ = 0;
 };
+
+inline constexpr std::uint32_t kPastLastSymbol = 0xffffffffu;
 
 // Where a decoder takes its bytes from: windows handed out one after another, empty at the end.
 class ByteInput {
@@ -94,9 +104,10 @@ class ArithmeticDecoder {
   void attach(ByteInput& input);
   // Starts the arithmetic code: reads its first four bytes.
   void start();
+  // decodeBit and decodeSymbol are inline (below): they are most of a point's decoding.
   std::uint32_t decodeBit(BitModel& model);
   std::uint32_t decodeSymbol(SymbolModel& model);
-  std::uint32_t readBits(int bits);  // 1 to 32 raw bits
+  std::uint32_t readBits(int bits);  // 1 to 32 raw bits; inline up to 19
   std::uint32_t readInt() { return readBits(32); }
   // Zero bytes read past the end of the input; a valid stream needs none.
   std::uint64_t overrun() const { return overrun_; }
@@ -113,6 +124,7 @@ class ArithmeticDecoder {
     return *next_++;
   }
   std::uint8_t refill();
+  std::uint32_t readWideBits(int bits);  // 20 to 32 raw bits
   void renormalise() {
     do {
       value_ = (value_ << 8) | nextByte();
@@ -128,6 +140,57 @@ class ArithmeticDecoder {
   std::uint64_t overrun_ = 0;
   bool failed_ = false;
 };
+
+inline std::uint32_t ArithmeticDecoder::decodeBit(BitModel& model) {
+  const std::uint32_t split = model.probability_0 * (length_ >> kBitModelShift);
+  const std::uint32_t bit = value_ >= split;
+  if (bit == 0) {
+    length_ = split;
+    ++model.count_0;
+  } else {
+    value_ -= split;
+    length_ -= split;
+  }
+  if (length_ < kMinLength) renormalise();
+  if (--model.until_update == 0) model.update();
+  return bit;
+}
+
+inline std::uint32_t ArithmeticDecoder::decodeSymbol(SymbolModel& model) {
+  const std::uint32_t* distribution = model.distribution.data();
+  const std::uint32_t whole = length_;
+  length_ >>= kSymbolModelShift;
+  // The value as a Q15 quantile of the interval: distribution[s] * length_ <= value_ exactly when
+  // distribution[s] <= quantile, so the symbol is the last s with distribution[s] <= quantile.
+  const std::uint32_t quantile = value_ / length_;
+  std::uint32_t symbol = model.table[std::min(quantile >> model.table_shift, model.table_last)];
+  // The entry spans symbols: one step up is common enough to be taken without a branch, more rare.
+  symbol += distribution[symbol + 1] <= quantile;
+  while (distribution[symbol + 1] <= quantile) ++symbol;
+  const std::uint32_t low = distribution[symbol] * length_;
+  // The last symbol takes the rest of the interval, up to its end.
+  const std::uint32_t high =
+      symbol + 1 == model.symbols() ? whole : distribution[symbol + 1] * length_;
+  value_ -= low;
+  length_ = high - low;
+  if (length_ < kMinLength) renormalise();
+  ++model.counts[symbol];
+  if (--model.until_update == 0) model.update();
+  return symbol;
+}
+
+inline std::uint32_t ArithmeticDecoder::readBits(int bits) {
+  if (bits > 19) return readWideBits(bits);
+  length_ >>= bits;
+  std::uint32_t value = value_ / length_;
+  value_ -= length_ * value;
+  if (length_ < kMinLength) renormalise();
+  if (value >> bits) [[unlikely]] {  // only a corrupt stream gets here
+    failed_ = true;
+    value &= (1u << bits) - 1;
+  }
+  return value;
+}
 
 // The encoder: the exact inverse of ArithmeticDecoder, writing to a byte vector.
 class ArithmeticEncoder {
