@@ -3,20 +3,23 @@
 // spacing. Widened by the reach the preparer measures (codegen/sample_reach.h), box and smooth
 // splats leave at most 1% (grid) and 3% (irregular) of the surface the coarsest depth covers
 // empty; one footprint leaves the confetti and the grid of empty lines the issue shows.
+#include "codegen/sample_reach.h"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <filesystem>
 #include <fstream>
 #include <string>
 #include <vector>
 
+#include "codegen/depth_range.h"
 #include "codegen/level_voxels.h"
 #include "codegen/model_writer.h"
 #include "codegen/prepare.h"
-#include "codegen/sample_reach.h"
 #include "octopoint/camera.h"
 #include "octopoint/framebuffer.h"
 #include "octopoint/model.h"
@@ -52,17 +55,16 @@ AirborneModel prepareAirborne(AirborneSampling sampling) {
   return model;
 }
 
-std::vector<std::uint64_t> keysOf(const AirborneModel& model, int depth) {
-  for (const prepare::PreparedLevel& level : model.prepared.levels) {
-    if (level.depth == depth) return prepare::decodeLevel(level).keys;
+std::int32_t measuredReach(const AirborneModel& model, int depth) {
+  std::vector<prepare::LevelVoxels> levels;
+  for (const prepare::PreparedLevel& level : model.prepared.levels)
+    levels.push_back(prepare::decodeLevel(level));
+  const std::vector<std::int32_t> reaches = prepare::measureSampleReaches(levels);
+  for (std::size_t i = 0; i < levels.size(); ++i) {
+    if (levels[i].depth == depth) return reaches[i];
   }
   ADD_FAILURE() << "no depth " << depth;
-  return {};
-}
-
-std::int32_t measuredReach(const AirborneModel& model, int depth) {
-  return prepare::measureSampleReach(keysOf(model, depth), depth, keysOf(model, kReferenceDepth),
-                                     kReferenceDepth);
+  return kOneSampleReach;
 }
 
 // Which pixels a level covers: its box frame, or its smooth frame (blended outline).
@@ -70,7 +72,8 @@ std::vector<bool> coverage(const ModelView& model, int depth, const Camera& came
                            std::int32_t reach, bool smooth, const char* picture) {
   const LevelView& level = *model.levelOfDepth(depth);
   FrameSetup setup;
-  EXPECT_EQ(buildFrameSetup(camera, depth, kDefaultFractionBits, &setup, reach), CameraError::kNone);
+  EXPECT_EQ(buildFrameSetup(camera, depth, kDefaultFractionBits, &setup, reach),
+            CameraError::kNone);
   Framebuffer frame(setup);
   frame.clear();
   const PaletteRgb palette = paletteOf(model);
@@ -171,6 +174,40 @@ TEST(SampleReach, GridScanLinesLeaveAtMostOnePercentOfTheSurfaceEmpty) {
 
 TEST(SampleReach, IrregularSamplesLeaveAtMostThreePercentOfTheSurfaceEmpty) {
   expectHoleFree(AirborneSampling::kIrregular, 30, "irregular");
+}
+
+// The real scans' densely sampled depths (the default model's 6..8, lms400's) need no reach: once
+// a model carries the measured reach, their frames are what they were.
+TEST(SampleReach, DenselySampledDepthsOfTheRealScansNeedOneFootprint) {
+  for (const char* name : {"milk_cartoon_all_small_clorox.pcd", "table_scene_lms400.pcd"}) {
+    const std::filesystem::path path = std::filesystem::path(OCTOPOINT_TEST_SCANS_DIR) / name;
+    if (!std::filesystem::exists(path)) GTEST_SKIP() << path << " absent (data/ not linked)";
+    prepare::PrepareOptions options;
+    options.name = "real";
+    options.depths = {6, 7, 8, 9, 10};
+    if (std::string(name).starts_with("milk")) {  // the default model (scripts/regenerate-models)
+      options.axes = prepare::ScanAxes::kYUp;
+      options.crop = prepare::parseCropBox("--crop", "-0.35,-0.25,-1.1,0.35,0.45,-0.45");
+    }
+    const prepare::PreparedModel model =
+        prepare::prepareModel(prepare::loadScan(path), path.string(), options);
+    std::vector<std::size_t> counts;
+    for (const prepare::PreparedLevel& level : model.levels) counts.push_back(level.leaves.size());
+    const std::size_t dense = prepare::denseDepthCount(counts);
+    std::vector<prepare::LevelVoxels> levels;
+    for (const prepare::PreparedLevel& level : model.levels)
+      levels.push_back(prepare::decodeLevel(level));
+    const std::vector<std::int32_t> reaches = prepare::measureSampleReaches(levels);
+    for (std::size_t i = 1; i < model.levels.size(); ++i) {
+      const int depth = model.levels[i].depth;
+      const std::int32_t reach = reaches[i];
+      std::printf("%s depth %d (%s): reach %d/16\n", name, depth, i < dense ? "dense" : "sparse",
+                  reach);
+      if (i < dense) {
+        EXPECT_EQ(reach, kOneSampleReach) << name << " depth " << depth;
+      }
+    }
+  }
 }
 
 TEST(SampleReach, OneFootprintIsTheSetUpOfBeforeAndTheRangeIsChecked) {

@@ -28,11 +28,11 @@ struct Block {
 
 // Buildings on the ground: a few roofs of 15 to 30 m at 4 to 12 m.
 constexpr std::array<Block, 6> kBlocks = {{{20, 15, 45, 35, 6},
-                                            {60, 55, 90, 80, 12},
-                                            {110, 10, 128, 40, 4},
-                                            {140, 60, 170, 85, 9},
-                                            {185, 20, 210, 45, 7},
-                                            {95, 65, 115, 90, 5}}};
+                                           {60, 55, 90, 80, 12},
+                                           {110, 10, 128, 40, 4},
+                                           {140, 60, 170, 85, 9},
+                                           {185, 20, 210, 45, 7},
+                                           {95, 65, 115, 90, 5}}};
 
 void addPoint(prepare::Scan& scan, double x, double y) {
   const double height = airborneHeight(x, y);
