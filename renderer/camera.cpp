@@ -24,6 +24,8 @@ const char* describe(CameraError error) {
       return "depth outside the supported range";
     case CameraError::kOverflow:
       return "zoom or pan too large: coordinates would overflow 32 bits";
+    case CameraError::kBadSampleReach:
+      return "sample reach outside 16..128 sixteenths of a voxel";
   }
   return "unknown error";
 }
@@ -108,10 +110,14 @@ std::optional<SplatFootprint> leafFootprint(const Camera& camera, int depth, int
   return splatFootprint(largest[0], largest[1], depth, fraction_bits);
 }
 
-CameraError buildFrameSetup(const Camera& camera, int depth, int fraction_bits, FrameSetup* setup) {
+CameraError buildFrameSetup(const Camera& camera, int depth, int fraction_bits, FrameSetup* setup,
+                            std::int32_t sample_reach) {
   if (const CameraError error = checkCamera(camera, depth, fraction_bits);
       error != CameraError::kNone) {
     return error;
+  }
+  if (sample_reach < kOneSampleReach || sample_reach > kMaxSampleReach) {
+    return CameraError::kBadSampleReach;
   }
   const Rotation rotation = rotationFromYawPitchRoll(camera.yaw, camera.pitch, camera.roll);
   const std::int64_t edge_px_q16 = edgePixelsQ16(camera);
@@ -148,6 +154,11 @@ CameraError buildFrameSetup(const Camera& camera, int depth, int fraction_bits, 
     }
     for (int axis = 0; axis < 3; ++axis) worst[axis] += largest[axis];
   }
+  // Widened by the sample reach (Q4; half extents below 2^31, so the product fits 64 bits), rounded
+  // up so that the widened splat covers at least what the reach asks for.
+  if (sample_reach != kOneSampleReach) {
+    for (int axis = 0; axis < 2; ++axis) largest[axis] = (largest[axis] * sample_reach + 15) >> 4;
+  }
   // A splat reaches at most its padded half extent (largest + depth + 1) and one pixel further
   // from a leaf (octopoint/camera.h); a leaf without one, only its own position.
   const SplatFootprint splat = splatFootprint(largest[0], largest[1], depth, fraction_bits);
@@ -161,6 +172,7 @@ CameraError buildFrameSetup(const Camera& camera, int depth, int fraction_bits, 
   }
   result.root = Vec3{static_cast<std::int32_t>(root[0]), static_cast<std::int32_t>(root[1]), 0};
   result.splat = splat;
+  result.sample_reach = sample_reach;
   result.depth_bias = static_cast<std::uint32_t>(worst[2]);
   const std::uint64_t depth_range = 2 * static_cast<std::uint64_t>(worst[2]);
   while ((depth_range >> result.depth_shift) > Framebuffer::kMaxDepthKey) ++result.depth_shift;

@@ -30,6 +30,10 @@ RenderError checkFrameSetup(const FrameSetup& setup) {
       setup.height < 1 || setup.height > kMaxViewportSide) {
     return RenderError::kBadSetup;
   }
+  // The smooth kernel's radius scales with the sample reach: only the range buildFrameSetup takes.
+  if (setup.sample_reach < kOneSampleReach || setup.sample_reach > kMaxSampleReach) {
+    return RenderError::kBadSetup;
+  }
   // The bound buildFrameSetup proves (renderer/camera.cpp), on the offsets as they are now: no sum
   // of the root and one offset per level, nor a splat's reach from it, may wrap 32 bits.
   constexpr std::int64_t kLimit = std::numeric_limits<std::int32_t>::max();

@@ -96,7 +96,9 @@ class BlendWalk {
     const auto edge = static_cast<std::int64_t>(voxelEdgeOnScreen(setup));
     const std::int64_t edge_or_pixel =
         std::max<std::int64_t>(edge, std::int64_t{1} << setup.fraction_bits);
-    return std::max<std::int64_t>(edge_or_pixel * kRadiusSixteenths / 16, 1);
+    // Widened by the level's sample reach (Q4; 16 leaves it as it was): neighbouring samples are
+    // that much farther apart than the voxels (docs/splats.md, "Samples coarser than the voxel").
+    return std::max<std::int64_t>(edge_or_pixel * kRadiusSixteenths * setup.sample_reach / 256, 1);
   }
 
   // The pixels a leaf reaches, as a footprint for SubtreeClip: p - R .. p + R per axis.
@@ -409,8 +411,11 @@ bool SmoothSplats::begin(const FrameSetup& setup, const FrameView& frame) {
   // Magnified: a voxel's edge longer than a pixel. A turned voxel of depth auto (edge at most a
   // pixel, footprint up to 2 x 2) is drawn as the box frame draws it: its kernel would be under
   // a pixel wide, and blending it cost 4 to 8 times the box frame (docs/splats.md).
-  blended_ =
-      setup.splat.active() && voxelEdgeOnScreen(setup) > (std::uint64_t{1} << setup.fraction_bits);
+  // A level whose samples lie farther apart than its voxels (setup.sample_reach, Q4) is blended
+  // where the samples' spacing is over a pixel.
+  blended_ = setup.splat.active() &&
+             ((voxelEdgeOnScreen(setup) * static_cast<std::uint64_t>(setup.sample_reach)) >> 4) >
+                 (std::uint64_t{1} << setup.fraction_bits);
   blended_rect_ = blended_ ? frame.drawnRect() : PixelRect{};
   if (blended_rect_.empty()) return true;
   const auto width = static_cast<std::size_t>(width_);

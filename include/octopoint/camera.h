@@ -111,7 +111,15 @@ enum class CameraError : std::uint8_t {
   kBadFractionBits,  // outside kMinFractionBits..kMaxFractionBits
   kBadDepth,         // outside 1..kMaxRenderDepth (format::kMaxDepth unless a build says less)
   kOverflow,         // some leaf coordinate would not fit 32 bits: zoom or pan too large
+  kBadSampleReach,   // a sample reach outside kOneSampleReach..kMaxSampleReach
 };
+
+// Samples coarser than the voxel (docs/splats.md, "Samples coarser than the voxel"): a level whose
+// samples lie farther apart than its voxels draws each leaf's splat this many sixteenths (Q4) of
+// its voxel's footprint wide (sampleReach, renderer/sample_reach.h, says how many). One footprint,
+// kOneSampleReach, is the frame every level drew before; at most kMaxSampleReach (8 footprints).
+inline constexpr std::int32_t kOneSampleReach = 16;
+inline constexpr std::int32_t kMaxSampleReach = 128;
 
 const char* describe(CameraError error);
 
@@ -144,6 +152,9 @@ struct FrameSetup {
   // the paper's variants (fixed_baseline .. fixed_clipped, float_*) always set one pixel per leaf.
   // A caller may reset it to SplatFootprint{} to draw one pixel per leaf with any variant.
   SplatFootprint splat;
+  // The sample reach the splat was widened by (Q4, kOneSampleReach: not widened); the smooth
+  // splats' kernel radius follows it too.
+  std::int32_t sample_reach = kOneSampleReach;
 
   std::uint32_t depthKey(std::int32_t z) const {
     return (static_cast<std::uint32_t>(z) + depth_bias) >> depth_shift;  // mod 2^32: no overflow
@@ -159,8 +170,12 @@ std::uint64_t voxelEdgeOnScreen(const FrameSetup& setup);
 // overflow: the worst case |root| + sum over levels of the largest child offset is checked per
 // axis, so the decoder's additions can never wrap, nor the splat's pixel range (its reach is
 // included in the check).
+// `sample_reach` (Q4, kOneSampleReach..kMaxSampleReach) widens the splat: its half extents are
+// sample_reach / 16 times the voxel's, rounded up, before the footprint is made of them (so a
+// level of voxels under a pixel whose samples lie farther apart than a pixel gets a splat too).
 [[nodiscard]] CameraError buildFrameSetup(const Camera& camera, int depth, int fraction_bits,
-                                          FrameSetup* setup);
+                                          FrameSetup* setup,
+                                          std::int32_t sample_reach = kOneSampleReach);
 
 // The footprint a leaf of `depth` has for `camera` (FrameSetup::splat of buildFrameSetup, computed
 // from the last level's offsets alone: cheap enough to ask for every stored depth), or nullopt

@@ -130,6 +130,9 @@
 //                            depth, with positions in Q(32-F).F pixels (kDefaultFractionBits: 15).
 //                            Returns CameraError: kNone, or why the camera is refused (size, zoom,
 //                            fraction bits, depth, or a coordinate that could overflow 32 bits).
+//                            An optional fifth argument, the sample reach (Q4 voxel footprints,
+//                            kOneSampleReach 16 .. kMaxSampleReach 128), widens the splat for a
+//                            level sampled more coarsely than its voxels (docs/splats.md).
 //   leafFootprint(camera, depth, fraction_bits)
 //                            the splat a leaf covers (SplatFootprint); nullopt for a refused
 //                            camera.
