@@ -80,6 +80,9 @@ nor --file nor --url it draws the default model embedded in this binary.
                      within 128 of the scene's origin) and --look, or --path and --frames (PNGs
                      only, no video); colour, each instance at the depth its distance asks for,
                      nearer instances hiding farther ones
+  --cells CELLS      with --city: the scene's visibility cells (octopoint-pvs, docs/city.md):
+                     only the instances the eye's cell sees are drawn (all of them when the eye
+                     lies outside the cells' grid)
   --near D           with --perspective, --eye or --path: the near plane, D scan units before the
                      eye; nothing nearer is drawn (default half the voxel edge of the model's
                      finest depth: the ground at the eye's feet is drawn)
