@@ -71,16 +71,26 @@ CellTableError walkRuns(const std::uint8_t* at, const std::uint8_t* end, std::ui
 
 const char* describe(CellTableError error) {
   switch (error) {
-    case CellTableError::kNone: return "no error";
-    case CellTableError::kTooLarge: return "larger than 64 MiB";
-    case CellTableError::kTruncated: return "truncated";
-    case CellTableError::kBadMagic: return "not a cell table (no OCTCELL1 magic)";
-    case CellTableError::kWrongScene: return "made for a scene of another instance count";
-    case CellTableError::kBadGrid: return "a grid count, edge or bound outside its limits";
-    case CellTableError::kBadLayers: return "layer bounds not increasing";
-    case CellTableError::kBadOffsets: return "cell offsets out of order or past the payload";
-    case CellTableError::kBadRun: return "a cell's runs malformed or naming an unknown instance";
-    case CellTableError::kTrailingBytes: return "bytes after a cell's runs";
+    case CellTableError::kNone:
+      return "accepted";
+    case CellTableError::kTooLarge:
+      return "larger than 64 MiB";
+    case CellTableError::kTruncated:
+      return "truncated";
+    case CellTableError::kBadMagic:
+      return "not a cell table (no OCTCELL1 magic)";
+    case CellTableError::kWrongScene:
+      return "made for a scene of another instance count";
+    case CellTableError::kBadGrid:
+      return "a grid count, edge or bound outside its limits";
+    case CellTableError::kBadLayers:
+      return "layer bounds not increasing";
+    case CellTableError::kBadOffsets:
+      return "cell offsets out of order or past the payload";
+    case CellTableError::kBadRun:
+      return "a cell's runs malformed or naming an unknown instance";
+    case CellTableError::kTrailingBytes:
+      return "bytes after a cell's runs";
   }
   return "unknown error";
 }
@@ -144,7 +154,8 @@ CellTable CellTable::parse(std::span<const std::uint8_t> bytes, std::uint32_t sc
     const std::uint8_t* at = table.bytes_.data() + payload_at + table.offset(c);
     const std::uint8_t* end = table.bytes_.data() + payload_at + table.offset(c + 1);
     std::size_t count = 0;
-    const CellTableError why = walkRuns(at, end, g.instances, &count, [](std::uint32_t, std::uint64_t) {});
+    const CellTableError why =
+        walkRuns(at, end, g.instances, &count, [](std::uint32_t, std::uint64_t) {});
     if (why != CellTableError::kNone) return fail(why);
     table.largest_ = std::max(table.largest_, count);
   }
@@ -175,11 +186,11 @@ std::size_t CellTable::decode(std::uint32_t cell, std::span<std::uint32_t> out) 
   const std::uint8_t* end = bytes_.data() + payload_at_ + offset(cell + 1);
   std::size_t count = 0, written = 0;
   // Validated on parse: the runs are well formed and hold at most grid_.instances distinct ids.
-  static_cast<void>(walkRuns(at, end, grid_.instances, &count,
-                             [&](std::uint32_t first, std::uint64_t length) {
-                               for (std::uint64_t k = 0; k < length && written < out.size(); ++k)
-                                 out[written++] = first + static_cast<std::uint32_t>(k);
-                             }));
+  static_cast<void>(
+      walkRuns(at, end, grid_.instances, &count, [&](std::uint32_t first, std::uint64_t length) {
+        for (std::uint64_t k = 0; k < length && written < out.size(); ++k)
+          out[written++] = first + static_cast<std::uint32_t>(k);
+      }));
   return written;
 }
 

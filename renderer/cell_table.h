@@ -8,8 +8,8 @@
 //   "OCTCELL1"                    8 bytes
 //   u32 instances                 the scene's instance count (every id below it)
 //   u32 nx, nz, ny                cells along x and z, and layers along y (each at least 1)
-//   i64 origin_x, origin_z, edge  the grid's corner and its cells' edge in x and z, Q.24 scene edges
-//   i64 y[ny + 1]                 the layers' bounds, increasing (y down: the highest first)
+//   i64 origin_x, origin_z, edge  the grid's corner and its cells' edge in x and z, Q.24 scene
+//   edges i64 y[ny + 1]                 the layers' bounds, increasing (y down: the highest first)
 //   u32 offset[nx nz ny + 1]      each cell's bytes in the payload: offset[0] = 0, non-decreasing,
 //                                 the last the payload's size
 //   payload                       per cell (index (layer nz + z) nx + x) its sorted ids as runs:

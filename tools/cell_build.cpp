@@ -17,7 +17,8 @@ std::int64_t floorDiv(std::int64_t a, std::int64_t b) {
 bool gridOf(std::span<const SceneInstance> instances, const CellBuildOptions& options,
             CellGrid* grid) {
   if (options.edge < kPerspectiveUnit / 64 || options.y.size() < 2 ||
-      options.y.size() > kMaxCellLayers + 1 || !std::is_sorted(options.y.begin(), options.y.end()) ||
+      options.y.size() > kMaxCellLayers + 1 ||
+      !std::is_sorted(options.y.begin(), options.y.end()) ||
       std::adjacent_find(options.y.begin(), options.y.end()) != options.y.end()) {
     return false;
   }
@@ -60,8 +61,7 @@ class SampleViews {
   // The instances seen from `eye` in any direction: marks() after it.
   void look(const Point3<std::int64_t>& eye, std::uint64_t* frames) {
     std::fill(marks_.begin(), marks_.end(), std::uint8_t{0});
-    static constexpr int kFaces[6][2] = {{0, 0},     {90, 0},  {180, 0},
-                                         {270, 0},   {0, 90},  {0, -90}};
+    static constexpr int kFaces[6][2] = {{0, 0}, {90, 0}, {180, 0}, {270, 0}, {0, 90}, {0, -90}};
     for (const auto& [yaw, pitch] : kFaces) {
       PerspectiveCamera camera;
       camera.eye = eye;
@@ -102,7 +102,9 @@ CellBuild buildCells(std::span<const ModelView* const> models,
   const CellGrid& g = build.grid;
   const std::size_t n = instances.size(), cells = g.cellCount();
   std::vector<std::uint8_t> seen(cells * n);  // per cell, per instance
-  const auto row = [&](std::size_t cell) { return std::span<std::uint8_t>(seen).subspan(cell * n, n); };
+  const auto row = [&](std::size_t cell) {
+    return std::span<std::uint8_t>(seen).subspan(cell * n, n);
+  };
   const auto cellIndex = [&](std::int64_t x, std::int64_t z, std::int64_t layer) {
     return static_cast<std::size_t>((layer * g.nz + z) * g.nx + x);
   };
@@ -141,9 +143,11 @@ CellBuild buildCells(std::span<const ModelView* const> models,
     for (int s = 0; s < options.random_samples; ++s) {
       const std::int64_t height = g.y[layer + 1] - g.y[layer];
       const Point3<std::int64_t> eye{
-          g.origin_x + x * g.edge + static_cast<std::int64_t>(random() % static_cast<std::uint64_t>(g.edge)),
+          g.origin_x + x * g.edge +
+              static_cast<std::int64_t>(random() % static_cast<std::uint64_t>(g.edge)),
           g.y[layer] + static_cast<std::int64_t>(random() % static_cast<std::uint64_t>(height)),
-          g.origin_z + z * g.edge + static_cast<std::int64_t>(random() % static_cast<std::uint64_t>(g.edge))};
+          g.origin_z + z * g.edge +
+              static_cast<std::int64_t>(random() % static_cast<std::uint64_t>(g.edge))};
       views.look(eye, &build.frames);
       ++build.samples;
       orInto(row(cell), views.marks());
@@ -155,10 +159,14 @@ CellBuild buildCells(std::span<const ModelView* const> models,
     const std::int64_t reach = (t.scale >= -1 ? (3 * kPerspectiveUnit / 4) << (t.scale + 1)
                                               : (3 * kPerspectiveUnit / 4) >> -(t.scale + 1)) +
                                options.margin;
-    const std::int64_t x0 = std::max<std::int64_t>(0, floorDiv(t.at.x - reach - g.origin_x, g.edge));
-    const std::int64_t x1 = std::min<std::int64_t>(g.nx - 1, floorDiv(t.at.x + reach - g.origin_x, g.edge));
-    const std::int64_t z0 = std::max<std::int64_t>(0, floorDiv(t.at.z - reach - g.origin_z, g.edge));
-    const std::int64_t z1 = std::min<std::int64_t>(g.nz - 1, floorDiv(t.at.z + reach - g.origin_z, g.edge));
+    const std::int64_t x0 =
+        std::max<std::int64_t>(0, floorDiv(t.at.x - reach - g.origin_x, g.edge));
+    const std::int64_t x1 =
+        std::min<std::int64_t>(g.nx - 1, floorDiv(t.at.x + reach - g.origin_x, g.edge));
+    const std::int64_t z0 =
+        std::max<std::int64_t>(0, floorDiv(t.at.z - reach - g.origin_z, g.edge));
+    const std::int64_t z1 =
+        std::min<std::int64_t>(g.nz - 1, floorDiv(t.at.z + reach - g.origin_z, g.edge));
     for (std::int64_t layer = 0; layer < g.ny; ++layer) {
       const std::size_t l = static_cast<std::size_t>(layer);
       if (t.at.y + reach < g.y[l] || t.at.y - reach > g.y[l + 1]) continue;

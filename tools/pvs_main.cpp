@@ -85,7 +85,8 @@ int run(int argc, char** argv) {
     } else if (args.is("--samples")) {
       options.random_samples = cli::parseInt(args.name(), args.value(), 0, 64);
     } else if (args.is("--seed")) {
-      options.seed = static_cast<std::uint32_t>(cli::parseInt(args.name(), args.value(), 0, 1'000'000'000));
+      options.seed =
+          static_cast<std::uint32_t>(cli::parseInt(args.name(), args.value(), 0, 1'000'000'000));
     } else if (args.is("--margin")) {
       options.margin = edgesOption("--margin", args.value(), 64);
       if (options.margin < 0) throw cli::Error("--margin: negative");
@@ -131,4 +132,6 @@ int run(int argc, char** argv) {
 
 }  // namespace
 
-int main(int argc, char** argv) { return octopoint::cli::runTool("octopoint-pvs", argc, argv, run); }
+int main(int argc, char** argv) {
+  return octopoint::cli::runTool("octopoint-pvs", argc, argv, run);
+}

@@ -67,7 +67,7 @@ class CityFrames {
     cells_ = CellTable::parse(cli::readInputBytes(cells, kCellTableInput),
                               static_cast<std::uint32_t>(scene.instances.size()), &why);
     if (why != CellTableError::kNone)
-      throw cli::Error(cli::displayPath(cells) + ": " + describe(why));
+      throw cli::Error(cli::displayPath(cells) + ": cell table " + describe(why));
     visible_.resize(cells_->largestSet());
   }
 

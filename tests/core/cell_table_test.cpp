@@ -47,7 +47,8 @@ CellTableError parseError(const std::vector<std::uint8_t>& bytes, std::uint32_t 
 constexpr std::size_t kNxAt = 12, kEdgeAt = 40, kLayersAt = 48;
 
 void put32(std::vector<std::uint8_t>& bytes, std::size_t at, std::uint32_t v) {
-  for (int i = 0; i < 4; ++i) bytes[at + static_cast<std::size_t>(i)] = static_cast<std::uint8_t>(v >> (8 * i));
+  for (int i = 0; i < 4; ++i)
+    bytes[at + static_cast<std::size_t>(i)] = static_cast<std::uint8_t>(v >> (8 * i));
 }
 
 TEST(CellTable, DecodesWhatWasEncodedAndFindsTheEyesCell) {
@@ -59,8 +60,9 @@ TEST(CellTable, DecodesWhatWasEncodedAndFindsTheEyesCell) {
   std::vector<std::uint32_t> out(1000);
   for (std::uint32_t cell = 0; cell < 12; ++cell) {
     const std::size_t count = table.decode(cell, out);
-    EXPECT_EQ(std::vector<std::uint32_t>(out.begin(), out.begin() + static_cast<std::ptrdiff_t>(count)),
-              smallSets()[cell])
+    EXPECT_EQ(
+        std::vector<std::uint32_t>(out.begin(), out.begin() + static_cast<std::ptrdiff_t>(count)),
+        smallSets()[cell])
         << "cell " << cell;
   }
   // x: cells from -3 edges by 2; z from -2 by 2; layers [-4, -1/4), [-1/4, -1/64).
@@ -77,7 +79,8 @@ TEST(CellTable, DecodesWhatWasEncodedAndFindsTheEyesCell) {
 TEST(CellTable, RefusesEveryTruncationAndMalformedField) {
   const std::vector<std::uint8_t> good = encodeCellTable(smallGrid(), smallSets());
   for (std::size_t size = 0; size < good.size(); ++size) {
-    const std::vector<std::uint8_t> cut(good.begin(), good.begin() + static_cast<std::ptrdiff_t>(size));
+    const std::vector<std::uint8_t> cut(good.begin(),
+                                        good.begin() + static_cast<std::ptrdiff_t>(size));
     EXPECT_NE(parseError(cut), CellTableError::kNone) << "cut at " << size;
   }
   EXPECT_EQ(parseError(good, 999), CellTableError::kWrongScene);
