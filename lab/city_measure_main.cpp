@@ -45,7 +45,7 @@ sees a set cut short).
 )";
 
 constexpr std::int64_t kEdge = kPerspectiveUnit;  // one scene edge, Q.24
-constexpr double kMetre = 1.0 / 32;                // the generated city's scene edge is 32 m
+constexpr double kMetre = 1.0 / 32;               // the generated city's scene edge is 32 m
 
 std::int64_t q24(double edges) { return std::llround(std::ldexp(edges, kPerspectiveUnitBits)); }
 
@@ -60,7 +60,8 @@ class Streets {
   Streets(const LoadedScene& scene, const SceneText& text) {
     for (std::size_t m = 0; m < text.models.size(); ++m)
       if (text.models[m].ends_with("street.oct")) street_model_ = static_cast<std::int64_t>(m);
-    if (street_model_ < 0) throw cli::Error(scene.label + ": no street.oct model: not a generated city");
+    if (street_model_ < 0)
+      throw cli::Error(scene.label + ": no street.oct model: not a generated city");
     for (const SceneInstance& instance : scene.instances) {
       const auto& at = instance.transform.at;
       low_x_ = std::min(low_x_, at.x);
@@ -94,7 +95,9 @@ class Streets {
     const auto [i, j] = list[random() % list.size()];
     std::uniform_real_distribution<double> along(-0.5, 0.5), across(-0.25, 0.25), turn(0, 360);
     const bool along_z = street(i, j - 1) && street(i, j + 1);
-    double dx = crossing || !along_z ? across(random) : across(random);
+    // Along the street up to half a tile, across it a quarter (8 m: the lanes); a crossing either
+    // way.
+    double dx = across(random);
     double dz = crossing ? across(random) : along(random);
     if (!crossing && !along_z) std::swap(dx, dz);
     return {{i * kEdge + q24(dx), q24(-1.6 * kMetre), j * kEdge + q24(dz)}, turn(random), 0};
@@ -140,7 +143,8 @@ class Streets {
 
  private:
   static std::pair<std::int64_t, std::int64_t> key(std::int64_t x, std::int64_t z) {
-    return {(x + (x >= 0 ? kEdge / 2 : -kEdge / 2)) / kEdge, (z + (z >= 0 ? kEdge / 2 : -kEdge / 2)) / kEdge};
+    return {(x + (x >= 0 ? kEdge / 2 : -kEdge / 2)) / kEdge,
+            (z + (z >= 0 ? kEdge / 2 : -kEdge / 2)) / kEdge};
   }
   std::int64_t street_model_ = -1;
   std::int64_t low_x_ = INT64_MAX, high_x_ = INT64_MIN, low_z_ = INT64_MAX, high_z_ = INT64_MIN;
@@ -151,7 +155,11 @@ class Streets {
 class Frames {
  public:
   Frames(const LoadedScene& scene, const CellTable& cells, bool cut)
-      : scene_(scene), cells_(cells), cut_(cut), all_(320, 240), with_(320, 240),
+      : scene_(scene),
+        cells_(cells),
+        cut_(cut),
+        all_(320, 240),
+        with_(320, 240),
         visible_(scene.instances.size()) {
     SceneError error;
     renderer_.emplace(scene.models, scene.instances, &error);
@@ -185,7 +193,8 @@ class Frames {
     drawOne(view, with_, &result.passed_cells, &result.points_cells, &result.seconds_cells);
     std::size_t differ = 0;
     for (std::size_t i = 0; i < all_.pixels().size(); ++i)
-      differ += FrameView::colourIndexOf(all_.pixels()[i]) != FrameView::colourIndexOf(with_.pixels()[i]);
+      differ +=
+          FrameView::colourIndexOf(all_.pixels()[i]) != FrameView::colourIndexOf(with_.pixels()[i]);
     result.differing = static_cast<double>(differ) / static_cast<double>(all_.pixels().size());
     return result;
   }
@@ -206,8 +215,9 @@ class Frames {
     double best = 1e300;
     for (std::size_t k = 0; k < count; ++k) {
       const auto& at = scene_.instances[visible_[k]].transform.at;
-      const double d = std::hypot(static_cast<double>(at.x - eye.x), static_cast<double>(at.y - eye.y),
-                                  static_cast<double>(at.z - eye.z));
+      const double d =
+          std::hypot(static_cast<double>(at.x - eye.x), static_cast<double>(at.y - eye.y),
+                     static_cast<double>(at.z - eye.z));
       if (d < best) best = d, nearest = k;
     }
     std::copy(visible_.begin() + static_cast<std::ptrdiff_t>(nearest) + 1,

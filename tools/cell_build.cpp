@@ -13,6 +13,13 @@ std::int64_t floorDiv(std::int64_t a, std::int64_t b) {
   return a >= 0 ? a / b : -((-a + b - 1) / b);
 }
 
+// Half an instance's cube edge times 3/2 (its cube turned about y, and some room), Q.24 scene
+// edges.
+std::int64_t cubeReach(int scale) {
+  return scale >= -1 ? (3 * kPerspectiveUnit / 4) << (scale + 1)
+                     : (3 * kPerspectiveUnit / 4) >> -(scale + 1);
+}
+
 // The grid over the instances' cubes in x and z (each cube's half edge times 3/2 covers it turned).
 bool gridOf(std::span<const SceneInstance> instances, const CellBuildOptions& options,
             CellGrid* grid) {
@@ -26,8 +33,7 @@ bool gridOf(std::span<const SceneInstance> instances, const CellBuildOptions& op
   std::int64_t high[2] = {-kMaxSceneCoordinate, -kMaxSceneCoordinate};
   for (const SceneInstance& instance : instances) {
     const InstanceTransform& t = instance.transform;
-    const std::int64_t reach = t.scale >= -1 ? (3 * kPerspectiveUnit / 4) << (t.scale + 1)
-                                             : (3 * kPerspectiveUnit / 4) >> -(t.scale + 1);
+    const std::int64_t reach = cubeReach(t.scale);
     low[0] = std::min(low[0], t.at.x - reach);
     high[0] = std::max(high[0], t.at.x + reach);
     low[1] = std::min(low[1], t.at.z - reach);
@@ -156,9 +162,7 @@ CellBuild buildCells(std::span<const ModelView* const> models,
   // The margin: instances whose (turned) cube comes within `margin` of the cell's box.
   for (std::size_t i = 0; i < n; ++i) {
     const InstanceTransform& t = instances[i].transform;
-    const std::int64_t reach = (t.scale >= -1 ? (3 * kPerspectiveUnit / 4) << (t.scale + 1)
-                                              : (3 * kPerspectiveUnit / 4) >> -(t.scale + 1)) +
-                               options.margin;
+    const std::int64_t reach = cubeReach(t.scale) + options.margin;
     const std::int64_t x0 =
         std::max<std::int64_t>(0, floorDiv(t.at.x - reach - g.origin_x, g.edge));
     const std::int64_t x1 =
