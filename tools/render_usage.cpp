@@ -5,7 +5,8 @@ namespace octopoint {
 const char* const kRenderUsage =
     R"(usage: octopoint-render [--model NAME | --file M.oct | --url URL [--bytes N]] )"
     R"([options] -o OUT.png
-       octopoint-render --city SCENE.json (--eye X,Y,Z | --path P.json --frames N) -o OUT.png
+       octopoint-render --city SCENE.json [--cells CELLS] (--eye X,Y,Z | --path P.json
+                        --frames N) -o OUT.png
        octopoint-render [--model NAME | --file M.oct] --info
        octopoint-render --list
 
