@@ -61,6 +61,7 @@ std::size_t SceneRenderer::orderInView(const PerspectiveView& view, SceneDrawSta
   for (std::size_t k = 0; k < candidates; ++k) {
     const std::size_t i = restricted_ ? visible_[k] : k;
     if (i >= instances_.size()) continue;
+    if (count == order_.size()) break;  // a set with repeated ids: never more slots than instances
     const InstanceTransform& transform = instances_[i].transform;
     const std::optional<InstanceBox> box = instanceBox(view, transform);
     if (!box) {
