@@ -1,7 +1,6 @@
 #include "codegen/model_assembly.h"
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <limits>
 #include <optional>
@@ -12,7 +11,6 @@
 #include "codegen/palette.h"
 #include "codegen/parallel.h"
 #include "codegen/prepare_error.h"
-#include "codegen/visibility.h"
 
 namespace octopoint::prepare {
 namespace {
@@ -23,30 +21,6 @@ constexpr std::size_t kLookupTableLeaves = std::size_t{1} << 20;
 Rgb8 unpack(std::uint32_t c) {
   return {static_cast<std::uint8_t>(c >> 16), static_cast<std::uint8_t>(c >> 8),
           static_cast<std::uint8_t>(c)};
-}
-
-// Keeps the voxels no camera of the scene can see out of `level` (nodes and leaves).
-void prune(PreparedLevel& level, const std::vector<Camera>& cameras, const std::string& path) {
-  const auto start = std::chrono::steady_clock::now();
-  level.voxels_before_pruning = level.leaves.size();
-  level.bytes_before_pruning = level.nodes.size() + level.leaves.size();
-  const std::vector<std::uint64_t> keys = decodeLeafKeys(level.nodes, level.depth);
-  const std::vector<std::uint8_t> visible = visibleVoxels(keys, level.depth, cameras);
-  std::vector<std::uint64_t> kept_keys;
-  std::vector<std::uint8_t> kept_leaves;
-  for (std::size_t i = 0; i < keys.size(); ++i) {
-    if (!visible[i]) continue;
-    kept_keys.push_back(keys[i]);
-    kept_leaves.push_back(level.leaves[i]);
-  }
-  if (kept_keys.empty()) {
-    throw PrepareError(path + ": no voxel at depth " + std::to_string(level.depth) +
-                       " is visible from the scene's views");
-  }
-  level.nodes = encodeOctree(kept_keys, level.depth);
-  level.leaves = std::move(kept_leaves);
-  level.pruning_seconds =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
 }  // namespace
@@ -95,7 +69,6 @@ PreparedModel assembleModel(std::vector<EncodedLevel> levels, const CubeFit& fit
       }
     });
     encoded.colours = {};
-    if (!options.visibility_cameras.empty()) prune(level, options.visibility_cameras, path);
     model.levels.push_back(std::move(level));
   }
   return model;

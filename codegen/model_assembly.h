@@ -1,7 +1,7 @@
 #pragma once
-// The last step of the preparer: from each depth's node stream and leaf colours to a model: one
-// palette from the finest depth's colours, a palette index per leaf, and visibility pruning when
-// the options ask for it.
+// The last step of the streamed preparer: from each depth's node stream and leaf colours to a
+// model: one palette from the finest depth's colours and a palette index per leaf (visibility
+// pruning follows, codegen/scene_pruning.h).
 
 #include <cstdint>
 #include <span>
@@ -23,8 +23,7 @@ struct EncodedLevel {
   std::size_t leaves = 0;
 };
 
-// `levels` ascending by depth, as options.depths; uses `threads` threads. Throws PrepareError
-// naming `path` when pruning leaves a depth without any voxel.
+// `levels` ascending by depth, as options.depths; uses `threads` threads.
 PreparedModel assembleModel(std::vector<EncodedLevel> levels, const CubeFit& fit,
                             const PrepareOptions& options, const std::string& path,
                             unsigned threads);

@@ -18,8 +18,8 @@
 #include "codegen/point_source.h"
 #include "codegen/prepare_error.h"
 #include "codegen/progress.h"
+#include "codegen/scene_pruning.h"
 #include "codegen/streamed_prepare.h"
-#include "codegen/visibility.h"
 #include "codegen/voxelizer.h"
 
 namespace octopoint::prepare {
@@ -73,19 +73,6 @@ namespace {
 Rgb8 toGrey(const Rgb8& c) {
   const auto grey = static_cast<std::uint8_t>((77 * c[0] + 150 * c[1] + 29 * c[2] + 128) >> 8);
   return {grey, grey, grey};
-}
-
-// Keeps the voxels with visible[i] != 0, in order.
-VoxelSet keepVisible(const VoxelSet& voxels, const std::vector<std::uint8_t>& visible) {
-  VoxelSet kept;
-  kept.depth = voxels.depth;
-  for (std::size_t i = 0; i < voxels.keys.size(); ++i) {
-    if (!visible[i]) continue;
-    kept.keys.push_back(voxels.keys[i]);
-    kept.colours.push_back(voxels.colours[i]);
-    if (!voxels.normals.empty()) kept.normals.push_back(voxels.normals[i]);
-  }
-  return kept;
 }
 
 // Estimates the scan's normals, in the scan's own axes (integral images need the sensor's);
@@ -153,27 +140,12 @@ NormalPalette buildNormalPalette(const std::vector<Normal3f>& finest_normals,
   return normal_palette;
 }
 
-// One depth as stored: its voxels pruned to those the scene's views can see (when it has views),
-// then encoded with their palette indices.
-PreparedLevel storedLevel(VoxelSet& voxels, const Palette& palette,
-                          const std::optional<NormalPalette>& normal_palette,
-                          const PrepareOptions& options, const std::string& scan_path) {
+// One depth as stored: its voxels encoded with their palette indices (pruned later,
+// codegen/scene_pruning.h).
+PreparedLevel storedLevel(const VoxelSet& voxels, const Palette& palette,
+                          const std::optional<NormalPalette>& normal_palette) {
   PreparedLevel level;
   level.depth = voxels.depth;
-  if (!options.visibility_cameras.empty()) {
-    const auto start = std::chrono::steady_clock::now();
-    level.voxels_before_pruning = voxels.keys.size();
-    level.bytes_before_pruning =
-        encodeOctree(voxels.keys, voxels.depth).size() + voxels.keys.size();
-    voxels =
-        keepVisible(voxels, visibleVoxels(voxels.keys, voxels.depth, options.visibility_cameras));
-    if (voxels.keys.empty()) {
-      throw PrepareError(scan_path + ": no voxel at depth " + std::to_string(voxels.depth) +
-                         " is visible from the scene's views");
-    }
-    level.pruning_seconds =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  }
   level.nodes = encodeOctree(voxels.keys, voxels.depth);
   level.leaves.reserve(voxels.colours.size());
   for (const Rgb8& colour : voxels.colours) level.leaves.push_back(palette.indexOf(colour));
@@ -218,8 +190,9 @@ PreparedModel prepareWithNormals(const Scan& full_scan, const std::string& scan_
         std::chrono::duration<double>(std::chrono::steady_clock::now() - normals_start).count();
   }
   for (VoxelSet& voxels : voxel_sets) {
-    model.levels.push_back(storedLevel(voxels, palette, normal_palette, options, scan_path));
+    model.levels.push_back(storedLevel(voxels, palette, normal_palette));
   }
+  pruneModel(model, options, scan_path);
   return model;
 }
 
@@ -230,6 +203,9 @@ PreparedModel prepareModel(const Scan& full_scan, const std::string& scan_path,
   if (options.normals) return prepareWithNormals(full_scan, scan_path, options, threads);
   const Scan scan = modelPoints(full_scan, scan_path, options);
   PrepareOptions streamed = options;  // the points are cropped, cleaned and turned already
+  // Pruned below, once the cube's placement is the scan's (the eyes are in the scan's axes).
+  streamed.visibility_cameras.clear();
+  streamed.visibility_eyes.clear();
   streamed.crop.reset();
   streamed.outliers.reset();
   streamed.axes = ScanAxes::kYDown;
@@ -246,6 +222,7 @@ PreparedModel prepareModel(const Scan& full_scan, const std::string& scan_path,
     fit.edge = std::bit_cast<double>(model.cube.edge_bits);
     model.cube = cubePlacement(fit, true);
   }
+  pruneModel(model, options, scan_path);
   return model;
 }
 

@@ -13,6 +13,7 @@
 #include "codegen/prepared_model.h"
 #include "codegen/scan_loader.h"
 #include "octopoint/camera.h"
+#include "tools/scan_eye.h"
 
 namespace octopoint::prepare {
 
@@ -44,6 +45,15 @@ struct OutlierRemoval {
   double stddev_factor = 2.0;
 };
 
+// A perspective view an app will show (a scene's "eyes" and "paths", docs/scene.md): an eye in the
+// scan's own units and axes (octopoint-render --eye's frame) and a look, with the vertical field
+// of view; angles as octopoint-render's --look and --fov round them.
+struct SceneEye {
+  ScanPoint eye{};
+  Look look;
+  Angle fov = Angle::fromDegrees(60);
+};
+
 struct PrepareOptions {
   std::string name;                  // the model's C++ identifier
   std::string source_description;    // for the generated comments
@@ -65,6 +75,12 @@ struct PrepareOptions {
   // Visibility pruning: when not empty, a voxel is kept only if it wins the z-test at some pixel
   // for at least one of these cameras (codegen/visibility.h). Each camera's size is its frame's.
   std::vector<Camera> visibility_cameras;
+  // And these perspective views, on frames of eye_width x eye_height, each drawn as
+  // octopoint-render --eye draws it: with detail by distance over the model's stored depths and
+  // the model's near plane (codegen/eye_visibility.h). A voxel either kind of view sees is kept.
+  std::vector<SceneEye> visibility_eyes;
+  int eye_width = 320;
+  int eye_height = 240;
 };
 
 // The points of `scan` inside `box` (inclusive), with their colours. Throws PrepareError naming

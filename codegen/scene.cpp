@@ -1,17 +1,22 @@
 #include "codegen/scene.h"
 
 #include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
 #include <nlohmann/json.hpp>
 #include <set>
 #include <vector>
 
 #include "cli/input_file.h"
+#include "cli/real_numbers.h"
 #include "cli/strict_json.h"
 #include "cli/text.h"
 #include "codegen/prepare_error.h"
 #include "codegen/scene_views.h"
 #include "octopoint/camera.h"
 #include "octopoint/model.h"
+#include "tools/camera_path.h"
 
 namespace octopoint::prepare {
 namespace {
@@ -225,6 +230,90 @@ void readNormals(const SceneReader& reader, const json& normals, Scene& scene) {
   }
 }
 
+Angle degrees(double value) { return Angle::fromMilliDegrees(std::llround(value * 1000)); }
+
+// "eyes": [{"eye": [x, y, z], "look": [yaw, pitch(, roll)], "fov": D}, ...], as --eye, --look and
+// --fov take them.
+void readEyes(const SceneReader& reader, const json& value, Scene& scene) {
+  if (!value.is_array() || value.empty() || value.size() > kMaxSceneEyes) {
+    reader.fail("eyes", "expected a list of 1 to " + std::to_string(kMaxSceneEyes) +
+                            " {\"eye\": [x, y, z], \"look\": [yaw, pitch], \"fov\": D}");
+  }
+  for (std::size_t i = 0; i < value.size(); ++i) {
+    const std::string where = "eyes[" + std::to_string(i) + "]";
+    const json& item = value[i];
+    reader.onlyKeys(item, where, {"eye", "look", "fov"});
+    if (!item.contains("eye")) reader.fail(where, "has no \"eye\"");
+    const json& eye = item["eye"];
+    if (!eye.is_array() || eye.size() != 3) reader.fail(where + ".eye", "expected [x, y, z]");
+    SceneEye view;
+    for (std::size_t axis = 0; axis < 3; ++axis)
+      view.eye[axis] =
+          reader.number(eye[axis], where + ".eye", -kMaxEyeCoordinate, kMaxEyeCoordinate);
+    if (item.contains("look")) {
+      const json& look = item["look"];
+      if (!look.is_array() || look.size() < 2 || look.size() > 3)
+        reader.fail(where + ".look", "expected [yaw, pitch] or [yaw, pitch, roll] in degrees");
+      std::array<Angle, 3> angles{};
+      for (std::size_t k = 0; k < look.size(); ++k)
+        angles[k] =
+            degrees(reader.number(look[k], where + ".look", -cli::kMaxDegrees, cli::kMaxDegrees));
+      view.look = {angles[0], angles[1], angles[2]};
+    }
+    if (item.contains("fov")) {
+      view.fov = degrees(reader.number(item["fov"], where + ".fov", kMinFieldOfViewDegrees,
+                                       kMaxFieldOfViewDegrees));
+    }
+    scene.eyes.push_back(view);
+  }
+}
+
+// "paths": camera path files (tools/camera_path.h, what octopoint-render --path reads), relative to
+// the scene file's folder, each sampled at path_frames times as --frames samples it.
+void readPaths(const SceneReader& reader, const json& value, const std::string& scene_path,
+               Scene& scene) {
+  if (!value.is_array() || value.empty() || value.size() > kMaxSceneEyes)
+    reader.fail("paths", "expected a non-empty list of camera path files");
+  for (std::size_t i = 0; i < value.size(); ++i) {
+    const std::string where = "paths[" + std::to_string(i) + "]";
+    if (!value[i].is_string() || value[i].get<std::string>().empty())
+      reader.fail(where, "expected the name of a camera path file");
+    std::filesystem::path file(value[i].get<std::string>());
+    if (file.is_relative()) file = std::filesystem::path(scene_path).parent_path() / file;
+    CameraPath camera_path;
+    try {
+      camera_path = loadCameraPath(file.string());
+    } catch (const cli::Error& error) {
+      reader.fail(where, error.what());
+    }
+    if (scene.eyes.size() + static_cast<std::size_t>(scene.path_frames) > kMaxSceneEyes) {
+      reader.fail("paths", "the eyes and path frames come to more than " +
+                               std::to_string(kMaxSceneEyes) + " views: lower path_frames");
+    }
+    const Angle fov =
+        camera_path.fov_degrees ? degrees(*camera_path.fov_degrees) : Angle::fromDegrees(60);
+    for (const PathPose& pose : samplePath(camera_path, scene.path_frames))
+      scene.eyes.push_back({pose.eye, pose.look, fov});
+  }
+}
+
+// Eyes and paths: perspective views (docs/scene.md); without any orthographic key they are the
+// scene's only views.
+void readPerspectiveViews(const SceneReader& reader, const json& root, const std::string& path,
+                          Scene& scene) {
+  if (root.contains("path_frames")) {
+    if (!root.contains("paths")) reader.fail("path_frames", "needs \"paths\"");
+    scene.path_frames = reader.integer(root["path_frames"], "path_frames", 1, kMaxPathFrames);
+  }
+  if (root.contains("eyes")) readEyes(reader, root["eyes"], scene);
+  if (root.contains("paths")) readPaths(reader, root["paths"], path, scene);
+  if (!scene.eyes.empty()) {
+    scene.orthographic_views = false;
+    for (const char* key : {"yaw", "pitch", "roll", "viewpoints", "zoom"})
+      scene.orthographic_views = scene.orthographic_views || root.contains(key);
+  }
+}
+
 }  // namespace
 
 Scene parseScene(const std::string& text, const std::string& path) {
@@ -232,10 +321,10 @@ Scene parseScene(const std::string& text, const std::string& path) {
   const json root = parseJson(text, path);
   if (!root.is_object())
     throw PrepareError(cli::displayPath(path) + ": expected a JSON object at the top level");
-  reader.onlyKeys(
-      root, "",
-      {"yaw", "pitch", "roll", "viewpoints", "zoom", "framebuffer", "depths", "palette", "crop",
-       "outliers", "axes", "scan_unit", "prune", "angle_step", "zoom_step", "normals"});
+  reader.onlyKeys(root, "",
+                  {"yaw", "pitch", "roll", "viewpoints", "zoom", "framebuffer", "depths", "palette",
+                   "crop", "outliers", "axes", "scan_unit", "prune", "angle_step", "zoom_step",
+                   "normals", "eyes", "paths", "path_frames"});
 
   Scene scene;
   readViews(reader, root, scene);
@@ -253,7 +342,18 @@ Scene parseScene(const std::string& text, const std::string& path) {
     scene.angle_step_deg = reader.number(root["angle_step"], "angle_step", 0.01, 90);
   if (root.contains("zoom_step"))
     scene.zoom_step = reader.number(root["zoom_step"], "zoom_step", 1.01, 16);
-  if (scene.prune) {
+  readPerspectiveViews(reader, root, path, scene);
+  // Each eye draws its whole frame at every stored depth, as an orthographic view does.
+  const double eye_pixels = static_cast<double>(scene.eyes.size()) * scene.width * scene.height;
+  if (scene.prune && eye_pixels > kMaxSceneViewPixels) {
+    char too_much[320];
+    std::snprintf(too_much, sizeof too_much,
+                  "%zu eyes and path frames of %dx%d pixels are %.3g view pixels; pruning draws "
+                  "at most %.3g: fewer eyes or path_frames, or shrink the framebuffer",
+                  scene.eyes.size(), scene.width, scene.height, eye_pixels, kMaxSceneViewPixels);
+    reader.fail(root.contains("paths") ? "paths" : "eyes", too_much);
+  }
+  if (scene.prune && scene.orthographic_views) {
     const std::string too_much = sceneWorkProblem(scene);
     if (!too_much.empty()) throw PrepareError(cli::displayPath(path) + ": " + too_much);
   }

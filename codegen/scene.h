@@ -44,7 +44,18 @@ struct Scene {
   std::optional<NormalOptions> normals;  // "normals": estimate and store them (docs/styles.md)
   double angle_step_deg = 2.0;           // the largest step between sampled yaw or pitch angles
   double zoom_step = 1.25;               // the largest ratio between neighbouring sampled zooms
+  // Perspective views: the "eyes", then each of the "paths" sampled at `path_frames` evenly spaced
+  // times (as octopoint-render --path P --frames path_frames draws it).
+  std::vector<SceneEye> eyes;
+  int path_frames = 64;
+  // Whether the orthographic views (yaw, pitch, roll, viewpoints, zoom) take part in pruning and
+  // depth choice: always, unless the scene gives eyes or paths and none of those keys.
+  bool orthographic_views = true;
 };
+
+// The most perspective views a scene may ask for (eyes plus path frames): each draws the whole
+// model at every stored depth, about as much as an orthographic view.
+inline constexpr std::size_t kMaxSceneEyes = 20'000;
 
 // Scene files are regular files of at most 1 MiB (cli/input_file.h): a real one has a few lines.
 inline constexpr cli::InputKind kSceneInput{"scene file", cli::kMiB};

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <numbers>
 
 #include "codegen/depth_range.h"
 #include "octopoint/model.h"
@@ -113,20 +114,58 @@ std::vector<Camera> sceneCameras(const Scene& scene) {
   return cameras;
 }
 
+std::vector<int> eyeDepths(const Scene& scene) {
+  if (scene.eyes.empty()) return {};
+  double widest = 0;  // the largest field of view, in radians: its voxels are the smallest
+  for (const SceneEye& eye : scene.eyes) {
+    widest = std::max(widest, eye.fov.turns16() * (2 * std::numbers::pi / Angle::kUnitsPerTurn));
+  }
+  const double focal = scene.height / 2.0 / std::tan(widest / 2);
+  // A voxel of depth d spans focal * 2^-d / z pixels at z cube edges: at most one pixel from two
+  // edges on (the far side of the cube from an eye at or in it).
+  const int coarsest =
+      std::clamp(static_cast<int>(std::ceil(std::log2(focal / 2))), 1, format::kMaxDepth);
+  std::vector<int> depths;
+  for (int d = coarsest; d <= format::kMaxDepth && d < coarsest + format::kMaxLevels; ++d)
+    depths.push_back(d);
+  return depths;
+}
+
 DepthChoice chooseDepths(const Scene& scene) {
   DepthChoice choice;
-  const std::vector<Camera> cameras = sceneCameras(scene);
+  std::vector<Camera> cameras;
+  if (scene.orthographic_views) cameras = sceneCameras(scene);
   choice.depths = neededDepthRange(cameras);
+  const std::vector<int> for_eyes = eyeDepths(scene);
+  if (!for_eyes.empty()) {
+    // Both kinds of view: one consecutive range over both, its finest kMaxLevels depths.
+    int low = for_eyes.front(), high = for_eyes.back();
+    if (!choice.depths.empty()) {
+      low = std::min(low, choice.depths.front());
+      high = std::max(high, choice.depths.back());
+    }
+    low = std::max(low, high - format::kMaxLevels + 1);
+    choice.depths.clear();
+    for (int d = low; d <= high; ++d) choice.depths.push_back(d);
+  }
   if (choice.depths.empty()) choice.depths = {1};  // every view refused: pruning reports it
-  char reason[320];
-  std::snprintf(
-      reason, sizeof reason,
-      "depths auto: %s, what the scene's %zu views need by projected size on %dx%d at zoom %g..%g "
-      "(the coarsest depth whose voxel edge is at most one pixel, per view; one coarser for "
-      "moving views), cut where the scan stops sampling densely",
-      describeDepths(choice.depths).c_str(), cameras.size(), scene.width, scene.height,
-      scene.zoom.low, scene.zoom.high);
-  choice.reason = reason;
+  std::string reason = "depths auto: " + describeDepths(choice.depths) + ", what the scene's ";
+  char views[320] = "";
+  if (!cameras.empty()) {
+    std::snprintf(views, sizeof views,
+                  "%zu views need by projected size on %dx%d at zoom %g..%g (the coarsest depth "
+                  "whose voxel edge is at most one pixel, per view; one coarser for moving views)",
+                  cameras.size(), scene.width, scene.height, scene.zoom.low, scene.zoom.high);
+    reason += views;
+  }
+  if (!for_eyes.empty()) {
+    std::snprintf(views, sizeof views,
+                  "%s%zu eyes need on %dx%d (from the depth whose voxel spans at most a pixel 2 "
+                  "cube edges away)",
+                  cameras.empty() ? "" : " and its ", scene.eyes.size(), scene.width, scene.height);
+    reason += views;
+  }
+  choice.reason = reason + ", cut where the scan stops sampling densely";
   return choice;
 }
 

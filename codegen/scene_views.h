@@ -51,6 +51,14 @@ struct DepthChoice {
 // What the scene's views need (codegen/depth_range.h, neededDepthRange over sceneCameras): from
 // one depth coarser than the coarsest depth auto would draw at any view, to the finest.
 // octopoint-prepare also cuts them where the scan stops sampling densely.
+// With eyes, also the depths detail by distance draws for them (eyeDepths), in one consecutive
+// range of at most format::kMaxLevels depths, the finest kept.
 DepthChoice chooseDepths(const Scene& scene);
+
+// The depths a scene's eyes may draw by detail by distance: from the depth whose voxel spans at
+// most a pixel two cube edges away at the widest field of view (the far side of the cube from an
+// eye at or in it), format::kMaxLevels depths (octopoint-prepare cuts them where the scan stops
+// sampling densely). Empty without eyes.
+std::vector<int> eyeDepths(const Scene& scene);
 
 }  // namespace octopoint::prepare

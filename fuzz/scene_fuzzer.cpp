@@ -3,7 +3,9 @@
 // parses (its models named, but the default model stands in for each, every name the same) is
 // made into a SceneRenderer, which must accept it, and, when small, drawn from two eyes and every
 // instance moved: no crash, no sanitizer report, whatever the transforms (|at| up to 2^44, scales
-// -8..8, any turn).
+// -8..8, any turn). A small scene is also made into a SceneCollision (renderer/scene_collision.h),
+// which must accept it and answer spheres about every instance as testing every instance answers
+// them, and walk a step with gravity.
 #include <cstddef>
 #include <cstdint>
 #include <cstdlib>
@@ -13,6 +15,8 @@
 #include "cli/error.h"
 #include "octopoint/framebuffer.h"
 #include "octopoint/models.h"
+#include "renderer/collision_move.h"
+#include "renderer/scene_collision.h"
 #include "renderer/scene_renderer.h"
 #include "tools/scene_text.h"
 
@@ -55,6 +59,21 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
       std::abort();
     frame.clear();
     if (!renderer.draw(view, frame)) std::abort();
+  }
+  if (scene.models.size() <= 4) {  // each model indexed for collision: few, for speed
+    const SceneCollision collision(models, scene.instances, &error);
+    if (error != SceneError::kNone || collision.unindexedModel()) std::abort();
+    for (const SceneInstance& instance : scene.instances) {
+      for (const std::int64_t radius :
+           {std::int64_t{1}, kPerspectiveUnit / 128, kMaxCollisionRadius}) {
+        const CollisionSphere sphere{instance.transform.at, radius};
+        if (collision.meets(sphere) != sphereMeets(collision.instances(), sphere)) std::abort();
+      }
+    }
+    const WalkBody body{kPerspectiveUnit / 128, kPerspectiveUnit / 16};
+    const ModelPoint from = scene.instances.front().transform.at;
+    static_cast<void>(moveWithCollision(collision, body, from,
+                                        {from.x + kPerspectiveUnit, from.y, from.z - 12345}));
   }
   for (std::size_t i = 0; i < scene.instances.size(); ++i) {
     InstanceTransform moved = scene.instances[i].transform;

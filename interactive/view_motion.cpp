@@ -2,11 +2,9 @@
 
 #include "interactive/view_motion.h"
 
-#include <algorithm>
-
-#include "fixedpoint/trig.h"
 #include "renderer/collision_move.h"
 #include "renderer/perspective.h"
+#include "renderer/walk_motion.h"
 
 namespace octopoint {
 namespace {
@@ -19,24 +17,6 @@ Angle turnFor(std::int64_t held_us, std::int32_t degrees_per_second) {
   return Angle::fromTurns16(units);
 }
 
-// How far the eye walks in `held_us` at `speed` (Q.24 cube edges per second): exact to the unit
-// below, whole seconds and the rest apart so that nothing overflows (speed <= 2^30).
-std::int64_t walkDistance(std::int64_t held_us, std::int64_t speed) {
-  return held_us / 1'000'000 * speed + held_us % 1'000'000 * speed / 1'000'000;
-}
-
-// `distance` (Q.24) times a Q1.30 sine.
-std::int64_t along(std::int64_t distance, std::int32_t sine_q30) {
-  // The eye stays within kMaxEyeDistance cube edges: the product's result fits.
-  return mulShiftRoundQuick(distance, sine_q30, 30).value_or(0);
-}
-
-// Keeps the eye where the camera holds it (renderer/perspective.h).
-std::int64_t clampEye(std::int64_t coordinate) {
-  constexpr std::int64_t kLimit = kMaxEyeDistance * kPerspectiveUnit;
-  return std::clamp(coordinate, -kLimit, kLimit);
-}
-
 }  // namespace
 
 // Walk mode: the eye moved by a key held for `held_us`: forward and back along the look's yaw,
@@ -46,43 +26,36 @@ std::int64_t clampEye(std::int64_t coordinate) {
 // time still, so every frame of a hold shows the same walk.
 WalkEye walked(WalkEye walker, NavigationKey key, std::int64_t held_us, std::int64_t speed,
                const WalkCollision& collision) {
-  // Clamped: the eye cannot leave the camera's reach, so a day's hold gives the same.
-  const std::int64_t distance =
-      std::min(walkDistance(held_us, speed), 4 * kMaxEyeDistance * kPerspectiveUnit);
-  const std::int32_t sine = sinQ30(walker.yaw), cosine = cosQ30(walker.yaw);
-  // Forward is (sin yaw, 0, cos yaw), right (cos yaw, 0, -sin yaw).
-  std::int64_t dx = 0, dy = 0, dz = 0;
+  WalkStep step = WalkStep::kForward;
   switch (key) {
     case NavigationKey::kPitchUp:
-      dx = along(distance, sine), dz = along(distance, cosine);
       break;
     case NavigationKey::kPitchDown:
-      dx = -along(distance, sine), dz = -along(distance, cosine);
+      step = WalkStep::kBack;
       break;
     case NavigationKey::kYawRight:
-      dx = along(distance, cosine), dz = -along(distance, sine);
+      step = WalkStep::kRight;
       break;
     case NavigationKey::kYawLeft:
-      dx = -along(distance, cosine), dz = along(distance, sine);
+      step = WalkStep::kLeft;
       break;
     case NavigationKey::kRise:
-      dy = -distance;
+      step = WalkStep::kUp;
       break;
     case NavigationKey::kSink:
-      dy = distance;
+      step = WalkStep::kDown;
       break;
     case NavigationKey::kDrag:
-      break;
+      return walker;
   }
-  const ModelPoint to{clampEye(walker.eye.x + dx), clampEye(walker.eye.y + dy),
-                      clampEye(walker.eye.z + dz)};
+  const ModelPoint to = walkedEye(walker.eye, walker.yaw, step, walkDistance(held_us, speed));
   if (collision.model == nullptr) {
     walker.eye = to;
     return walker;
   }
   const CollisionInstance instance{collision.model, {}};
   const ModelPoint moved = moveWithCollision({&instance, 1}, collision.body, walker.eye, to).eye;
-  walker.eye = {clampEye(moved.x), clampEye(moved.y), clampEye(moved.z)};
+  walker.eye = withinReach(moved);
   return walker;
 }
 
@@ -113,15 +86,6 @@ ViewParameters moved(ViewParameters view, NavigationKey key, std::int64_t held_u
       break;
   }
   return view;
-}
-
-// Walk mode's pitch stays within straight down .. straight up.
-Angle turnedPitch(Angle pitch, std::int32_t turn) {
-  constexpr std::int32_t kQuarter = Angle::kUnitsPerTurn / 4;
-  const std::int32_t units = pitch.turns16();
-  const std::int32_t signed_units =
-      units > Angle::kUnitsPerTurn / 2 ? units - Angle::kUnitsPerTurn : units;
-  return Angle::fromTurns16(std::clamp(signed_units + turn, -kQuarter, kQuarter));
 }
 
 }  // namespace octopoint

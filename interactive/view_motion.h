@@ -8,6 +8,7 @@
 
 #include "octopoint/interactive.h"
 #include "renderer/collision_move.h"
+#include "renderer/walk_motion.h"  // turnedPitch
 
 namespace octopoint {
 
@@ -26,8 +27,5 @@ WalkEye walked(WalkEye walker, NavigationKey key, std::int64_t held_us, std::int
 ViewParameters moved(ViewParameters view, NavigationKey key, std::int64_t held_us,
                      std::int32_t degrees_per_second, std::int64_t walk_speed,
                      const WalkCollision& collision);
-
-// Walk mode's pitch turned by `turn` (1/65536 turn), within straight down .. straight up.
-Angle turnedPitch(Angle pitch, std::int32_t turn);
 
 }  // namespace octopoint

@@ -10,9 +10,11 @@ namespace octopoint {
 namespace {
 
 constexpr std::int64_t kHalfCube = kPerspectiveUnit / 2;  // Q.24: the cube is [-2^23, 2^23]^3
-// A model query's sphere may be larger than a world sphere (an instance scaled down): gaps below
-// 2^31 keep three squares within an unsigned 64-bit sum.
-constexpr std::int64_t kMaxModelRadius = (std::int64_t{1} << 31) - 1;
+// A model query's sphere may be larger than a world sphere (an instance scaled down by 2^8: up to
+// 2^32 + 2^10). Gaps below 2^31 keep three squares within an unsigned 64-bit sum; a larger
+// radius compares gaps and radius a quarter as large (SphereVisitor).
+constexpr std::int64_t kExactModelRadius = (std::int64_t{1} << 31) - 1;
+constexpr std::int64_t kMaxModelRadius = std::int64_t{1} << 33;
 // Coordinates past this are far outside every cube a query can reach; clamping them there keeps
 // every difference within 64 bits.
 constexpr std::int64_t kFarAway = std::int64_t{1} << 40;
@@ -42,7 +44,10 @@ ModelPoint childCorner(const ModelPoint& lo, unsigned child, std::int64_t child_
 struct SphereVisitor {
   ModelPoint centre;
   std::int64_t radius;
-  std::uint64_t radius_squared;
+  // 0, or 2 for a radius past kExactModelRadius: gaps rounded down and the radius rounded up by
+  // that many bits before squaring, which errs towards "meets" by less than 12 units.
+  int shift;
+  std::uint64_t radius_squared;  // of the radius so shifted
   CollisionStats* stats;
 
   bool enter(const ModelPoint& lo, std::int64_t edge) {
@@ -50,8 +55,9 @@ struct SphereVisitor {
     const std::int64_t gx = axisGap(centre.x, lo.x, edge), gy = axisGap(centre.y, lo.y, edge),
                        gz = axisGap(centre.z, lo.z, edge);
     if (gx >= radius || gy >= radius || gz >= radius) return false;
-    const auto ux = static_cast<std::uint64_t>(gx), uy = static_cast<std::uint64_t>(gy),
-               uz = static_cast<std::uint64_t>(gz);
+    const auto ux = static_cast<std::uint64_t>(gx) >> shift,
+               uy = static_cast<std::uint64_t>(gy) >> shift,
+               uz = static_cast<std::uint64_t>(gz) >> shift;
     return ux * ux + uy * uy + uz * uz < radius_squared;  // each square below 2^62
   }
   bool leaf(const ModelPoint&, std::int64_t) { return true; }  // entered: met; stop
@@ -152,8 +158,10 @@ void CollisionModel::skipStream(const std::uint8_t*& cursor, int tree_level) con
 
 bool CollisionModel::meets(const CollisionSphere& sphere, CollisionStats* stats) const {
   if (sphere.radius < 1 || sphere.radius > kMaxModelRadius) return false;
-  const auto radius = static_cast<std::uint64_t>(sphere.radius);
-  SphereVisitor visitor{clampedFar(sphere.centre), sphere.radius, radius * radius, stats};
+  const int shift = sphere.radius > kExactModelRadius ? 2 : 0;
+  const std::uint64_t radius =
+      (static_cast<std::uint64_t>(sphere.radius) + (1u << shift) - 1) >> shift;
+  SphereVisitor visitor{clampedFar(sphere.centre), sphere.radius, shift, radius * radius, stats};
   return walk(visitor);
 }
 
@@ -172,20 +180,29 @@ std::optional<std::int64_t> CollisionModel::groundBelow(const ModelPoint& point,
 
 namespace {
 
-// A point of the world in an instance's model units, and how far (world units) from the
-// instance's centre it may be for the instance's turned cube to matter.
+// Instance positions are within kMaxSceneCoordinate (2^44); a point past this is far from all
+// of them, and clamping it here keeps every difference within 64 bits.
+constexpr std::int64_t kFarFromInstances = std::int64_t{1} << 46;
+
+ModelPoint clampedFromInstances(const ModelPoint& p) {
+  return {std::clamp(p.x, -kFarFromInstances, kFarFromInstances),
+          std::clamp(p.y, -kFarFromInstances, kFarFromInstances),
+          std::clamp(p.z, -kFarFromInstances, kFarFromInstances)};
+}
+
+// A point of the world in an instance's model units.
 struct LocalFrame {
-  int shift;            // scale_log2
+  int shift;            // the instance's scale
   std::int32_t sine;    // Q1.30
   std::int32_t cosine;  // Q1.30
-  ModelPoint translation;
+  ModelPoint at;
 
-  // World differences below 2^31 on each axis (the caller checks): every product below 2^61.
+  // World differences within instanceReach's box plus the margin (the caller checks): below
+  // 2^31.6 on each axis, so each Q1.30 product is below 2^61.6 and the sum of two below 2^62.1.
   ModelPoint toModel(const ModelPoint& world) const {
-    const std::int64_t dx = world.x - translation.x, dy = world.y - translation.y,
-                       dz = world.z - translation.z;
+    const std::int64_t dx = world.x - at.x, dy = world.y - at.y, dz = world.z - at.z;
     constexpr std::int64_t kHalfQ30 = std::int64_t{1} << 29;
-    // The inverse turn Ry(-yaw): model x = cos dx - sin dz, model z = sin dx + cos dz (Q1.30,
+    // The inverse turn Ry(-turn): model x = cos dx - sin dz, model z = sin dx + cos dz (Q1.30,
     // rounded to the unit).
     const std::int64_t tx = (cosine * dx - sine * dz + kHalfQ30) >> 30;
     const std::int64_t tz = (sine * dx + cosine * dz + kHalfQ30) >> 30;
@@ -205,30 +222,25 @@ struct LocalFrame {
   // A model y back in world units, rounded down (the ground a little higher, never lower).
   std::int64_t yToWorld(std::int64_t y) const {
     const std::int64_t scaled = shift >= 0 ? y * (std::int64_t{1} << shift) : y >> -shift;
-    return translation.y + scaled;
+    return at.y + scaled;
   }
 };
 
-// The frame of `instance` when `point` lies within `margin` (world units) of the box that holds
-// its turned cube; nullopt otherwise, or for a scale outside the range.
+// The frame of `instance` when `point` lies within `margin` (world units, at most 2^26) of the
+// box that holds its turned cube (instanceReach); nullopt otherwise, or for a transform
+// checkTransform refuses.
 std::optional<LocalFrame> frameNear(const CollisionInstance& instance, const ModelPoint& point,
                                     std::int64_t margin) {
-  const CollisionTransform& t = instance.transform;
-  if (instance.model == nullptr || t.scale_log2 < kMinInstanceScaleLog2 ||
-      t.scale_log2 > kMaxInstanceScaleLog2) {
+  const InstanceTransform& t = instance.transform;
+  if (instance.model == nullptr || checkTransform(t) != SceneError::kNone) return std::nullopt;
+  const InstanceReach reach = instanceReach(t.scale);
+  const ModelPoint p = clampedFromInstances(point);
+  const std::int64_t dx = p.x - t.at.x, dy = p.y - t.at.y, dz = p.z - t.at.z;
+  const std::int64_t across = reach.across + margin, up = reach.up + margin;
+  if (dx > across || -dx > across || dy > up || -dy > up || dz > across || -dz > across) {
     return std::nullopt;
   }
-  // The turned cube's half-diagonal in the horizontal plane is sqrt(2) half edges: within one
-  // world edge of the centre on every axis.
-  const std::int64_t edge =
-      t.scale_log2 >= 0 ? kPerspectiveUnit << t.scale_log2 : kPerspectiveUnit >> -t.scale_log2;
-  const ModelPoint p = clampedFar(point), c = clampedFar(t.translation);
-  const std::int64_t reach = edge + margin;
-  if (p.x - c.x > reach || c.x - p.x > reach || p.y - c.y > reach || c.y - p.y > reach ||
-      p.z - c.z > reach || c.z - p.z > reach) {
-    return std::nullopt;
-  }
-  return LocalFrame{t.scale_log2, sinQ30(t.yaw), cosQ30(t.yaw), c};
+  return LocalFrame{t.scale, sinQ30(t.turn), cosQ30(t.turn), t.at};
 }
 
 }  // namespace
@@ -237,17 +249,29 @@ bool sphereMeets(std::span<const CollisionInstance> instances, const CollisionSp
                  CollisionStats* stats) {
   if (sphere.radius < 1 || sphere.radius > kMaxCollisionRadius) return false;
   for (const CollisionInstance& instance : instances) {
-    const std::optional<LocalFrame> frame = frameNear(instance, sphere.centre, sphere.radius);
-    if (!frame) continue;
-    const bool turned = instance.transform.yaw != Angle{};
-    // The half unit of the scale's rounding, rounded up to one model unit, and the turn's pad.
-    const std::int64_t radius =
-        frame->lengthToModel(sphere.radius + (turned ? kTurnPad : 0)) + (frame->shift > 0 ? 1 : 0);
-    if (instance.model->meets({frame->toModel(clampedFar(sphere.centre)), radius}, stats)) {
-      return true;
-    }
+    if (instanceMeets(instance, sphere, stats)) return true;
   }
   return false;
+}
+
+bool instanceMeets(const CollisionInstance& instance, const CollisionSphere& sphere,
+                   CollisionStats* stats) {
+  if (sphere.radius < 1 || sphere.radius > kMaxCollisionRadius) return false;
+  const std::optional<LocalFrame> frame = frameNear(instance, sphere.centre, sphere.radius);
+  if (!frame) return false;
+  const bool turned = instance.transform.turn != Angle{};
+  // The half unit of the scale's rounding, rounded up to one model unit, and the turn's pad.
+  const std::int64_t radius =
+      frame->lengthToModel(sphere.radius + (turned ? kTurnPad : 0)) + (frame->shift > 0 ? 1 : 0);
+  return instance.model->meets({frame->toModel(sphere.centre), radius}, stats);
+}
+
+InstanceReach instanceReach(int scale) {
+  const std::int64_t edge =
+      scale >= 0 ? kPerspectiveUnit << scale : kPerspectiveUnit >> -scale;  // 2^16 .. 2^32
+  // Turned, the cube's half-width across is at most sqrt(2)/2 edges (182/256 > 0.7072); the
+  // carried centre's rounding (kTurnPad) and a unit more on both.
+  return {(edge >> 8) * 182 + kTurnPad + 1, edge / 2 + kTurnPad + 1};
 }
 
 std::optional<std::int64_t> groundBelow(std::span<const CollisionInstance> instances,
@@ -262,11 +286,10 @@ std::optional<std::int64_t> groundBelow(std::span<const CollisionInstance> insta
     const std::optional<LocalFrame> frame = frameNear(instance, point, half_width + reach);
     if (!frame) continue;
     // A turned column's square reaches sqrt(2) times as far: 3/2 covers it.
-    const bool turned = instance.transform.yaw != Angle{};
+    const bool turned = instance.transform.turn != Angle{};
     const std::int64_t width = turned ? (half_width * 3 + 1) / 2 : half_width;
-    const std::optional<std::int64_t> top =
-        instance.model->groundBelow(frame->toModel(clampedFar(point)), frame->lengthToModel(width),
-                                    frame->lengthToModel(reach) + 1);
+    const std::optional<std::int64_t> top = instance.model->groundBelow(
+        frame->toModel(point), frame->lengthToModel(width), frame->lengthToModel(reach) + 1);
     if (top) {
       const std::int64_t world_top = frame->yToWorld(*top);
       if (!ground || world_top < *ground) ground = world_top;

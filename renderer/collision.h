@@ -19,6 +19,7 @@
 
 #include "octopoint/fixed.h"
 #include "octopoint/model.h"
+#include "octopoint/scene.h"
 #include "renderer/perspective.h"
 #include "renderer/upper_tree_index.h"
 
@@ -35,6 +36,7 @@ struct CollisionSphere {
 // How much a query read: the nodes and leaves whose cube it tested.
 struct CollisionStats {
   std::uint64_t boxes_tested = 0;
+  std::uint64_t instances_tested = 0;  // instances whose model a scene's query entered
 };
 
 // One level of a validated model, ready for queries: the level's bytes (owned by the model, which
@@ -80,32 +82,56 @@ class CollisionModel {
   int bottom_ = 0;                    // its deepest tree level
 };
 
-// Where an instance of a model stands for collision: world =
-// translation + 2^scale_log2 * Ry(yaw) * model, where Ry turns +z towards +x by yaw (the walk's
-// forward, sin yaw, 0, cos yaw) about the vertical (y) axis. Q.24 units both sides. (The scenes
-// of many models, octopoint/scene.h, place instances by an InstanceTransform of their own: turning
-// one into the other, so that a scene's walk collides with its instances, is still to be done.)
-struct CollisionTransform {
-  ModelPoint translation{0, 0, 0};
-  Angle yaw;
-  int scale_log2 = 0;  // kMinInstanceScaleLog2 .. kMaxInstanceScaleLog2
-  bool operator==(const CollisionTransform&) const = default;
-};
-
-inline constexpr int kMinInstanceScaleLog2 = -8;
-inline constexpr int kMaxInstanceScaleLog2 = 6;
-
+// An instance of a model placed for collision by the scene's own transform (octopoint/scene.h):
+// world = at + 2^scale * Ry(turn) * model, Ry turning +z towards +x (the walk's forward, sin yaw,
+// 0, cos yaw) about the vertical (y) axis; Q.24 units both sides (the world's: scene edges). One
+// placement type for drawing and colliding, so that a scene's walk collides with its instances.
 struct CollisionInstance {
   const CollisionModel* model = nullptr;
-  CollisionTransform transform;
+  InstanceTransform transform;
 };
 
 // Whether the sphere (world units) meets any instance. The sphere is carried into each instance's
 // model units, padded by the rotation's and the scale's rounding (at most 3 units), so the answer
-// errs towards "meets" by that much and never the other way. An instance with a scale outside the
-// range meets nothing.
+// errs towards "meets" by that much and never the other way. An instance whose transform
+// checkTransform refuses (a scale outside -8..8, a coordinate past 2^44) meets nothing.
 bool sphereMeets(std::span<const CollisionInstance> instances, const CollisionSphere& sphere,
                  CollisionStats* stats = nullptr);
+// What a walk collides with (renderer/collision_move.h): whether a sphere meets occupied space.
+class CollisionWorld {
+ public:
+  virtual ~CollisionWorld() = default;
+  virtual bool meets(const CollisionSphere& sphere) const = 0;
+};
+
+// A few instances, each tested in turn (a single model: one instance at the identity). A scene of
+// many: renderer/scene_collision.h, which finds the nearby ones first.
+class CollisionInstances final : public CollisionWorld {
+ public:
+  explicit CollisionInstances(std::span<const CollisionInstance> instances)
+      : instances_(instances) {}
+  bool meets(const CollisionSphere& sphere) const override {
+    return sphereMeets(instances_, sphere);
+  }
+
+ private:
+  std::span<const CollisionInstance> instances_;
+};
+
+// The same for one instance.
+bool instanceMeets(const CollisionInstance& instance, const CollisionSphere& sphere,
+                   CollisionStats* stats = nullptr);
+
+// How far from an instance's `at` (world units) its model's turned cube, padded by the carried
+// centre's rounding, may reach: `across` on x and z (sqrt(2)/2 of the cube's edge and a little
+// more), `up` on y (half the edge and a little more). A sphere whose centre lies farther than
+// its radius beyond this box meets nothing of the instance (scene_collision.h finds instances by
+// it).
+struct InstanceReach {
+  std::int64_t across = 0;
+  std::int64_t up = 0;
+};
+InstanceReach instanceReach(int scale);
 
 // The ground under `point` over all instances (CollisionModel::groundBelow in world units; a
 // turned instance's column is the world column turned, the same half-width).

@@ -15,10 +15,9 @@ std::int64_t absolute(std::int64_t v) { return v < 0 ? -v : v; }
 
 class Mover {
  public:
-  Mover(std::span<const CollisionInstance> world, const WalkBody& body)
-      : world_(world), body_(body) {}
+  Mover(const CollisionWorld& world, const WalkBody& body) : world_(world), body_(body) {}
 
-  bool free(const ModelPoint& p) const { return !sphereMeets(world_, {p, body_.radius}); }
+  bool free(const ModelPoint& p) const { return !world_.meets({p, body_.radius}); }
 
   // One sub-step by `d` (each axis at most the radius) from the free `p`.
   ModelPoint slide(ModelPoint p, const ModelPoint& d, bool& blocked) const {
@@ -88,7 +87,7 @@ class Mover {
   }
 
  private:
-  std::span<const CollisionInstance> world_;
+  const CollisionWorld& world_;
   const WalkBody& body_;
 };
 
@@ -102,6 +101,16 @@ ModelPoint clampedEye(const ModelPoint& p) {
 
 std::optional<std::int64_t> groundUnder(std::span<const CollisionInstance> world,
                                         const WalkBody& body, const ModelPoint& eye) {
+  return groundUnder(CollisionInstances(world), body, eye);
+}
+
+CollisionMove moveWithCollision(std::span<const CollisionInstance> world, const WalkBody& body,
+                                const ModelPoint& from, const ModelPoint& to) {
+  return moveWithCollision(CollisionInstances(world), body, from, to);
+}
+
+std::optional<std::int64_t> groundUnder(const CollisionWorld& world, const WalkBody& body,
+                                        const ModelPoint& eye) {
   if (body.radius < 1 || body.radius > kMaxCollisionRadius || body.eye_height <= body.radius ||
       body.eye_height > kMaxCollisionRadius) {
     return std::nullopt;
@@ -109,7 +118,7 @@ std::optional<std::int64_t> groundUnder(std::span<const CollisionInstance> world
   return Mover(world, body).standingY(eye);
 }
 
-CollisionMove moveWithCollision(std::span<const CollisionInstance> world, const WalkBody& body,
+CollisionMove moveWithCollision(const CollisionWorld& world, const WalkBody& body,
                                 const ModelPoint& from, const ModelPoint& to) {
   const bool gravity = body.eye_height != 0;
   const bool body_valid =

@@ -28,6 +28,8 @@ struct WalkBody {
 // table's edge, high above the floor). The foot stands under the eye's centre, so a wall the eye
 // passes beside is not ground (a vertical column as wide as the sphere climbed such walls), and
 // it does not fall through the gaps of a scan narrower than the eye.
+std::optional<std::int64_t> groundUnder(const CollisionWorld& world, const WalkBody& body,
+                                        const ModelPoint& eye);
 std::optional<std::int64_t> groundUnder(std::span<const CollisionInstance> world,
                                         const WalkBody& body, const ModelPoint& eye);
 
@@ -49,6 +51,9 @@ struct CollisionMove {
 // occupied space (placed there by hand) moves to `to` freely, so that it can walk out. A body
 // with a radius outside 1 .. kMaxCollisionRadius, or a nonzero eye height outside radius + 1 ..
 // kMaxCollisionRadius, moves freely too.
+CollisionMove moveWithCollision(const CollisionWorld& world, const WalkBody& body,
+                                const ModelPoint& from, const ModelPoint& to);
+// The same among a few instances (CollisionInstances).
 CollisionMove moveWithCollision(std::span<const CollisionInstance> world, const WalkBody& body,
                                 const ModelPoint& from, const ModelPoint& to);
 

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cassert>
 
+#include "renderer/perspective_splat.h"
+
 namespace octopoint {
 
 namespace {
@@ -112,19 +114,6 @@ PerspectiveWalkTables perspectiveWalkTables(const PerspectiveView& view, int dep
 }
 
 namespace {
-
-// The pixels [first, last] whose centres lie within [p - half, p + half] on one axis (Q(32-F).F),
-// clipped to [0, size); the pixel p >> F alone when no centre does.
-struct PixelSpan {
-  std::int64_t first, last;
-};
-PixelSpan pixelSpan(std::int64_t p, std::int64_t half, int fraction_bits, std::int32_t size) {
-  const std::int64_t one = std::int64_t{1} << fraction_bits, mid = one >> 1;
-  std::int64_t first = (p - half - mid + one - 1) >> fraction_bits;
-  std::int64_t last = (p + half - mid) >> fraction_bits;
-  if (last < first) first = last = p >> fraction_bits;
-  return {std::max<std::int64_t>(first, 0), std::min<std::int64_t>(last, size - 1)};
-}
 
 // Writes each leaf's splat (pixelSpan on both axes) with its packed word, nearer wins. Inside a
 // subtree drawn from one affine map whose every splat lies on the screen (enterAffine), a leaf's
@@ -340,12 +329,6 @@ class PerspectivePlot {
   std::uint64_t leaves_ = 0;
   std::uint64_t hidden_subtrees_ = 0;
 };
-
-// How far a leaf may lie from its exact position (the affine map's error, the additions'
-// rounding): its neighbour may lie as far the other way, so each widens its splat by that much.
-std::int64_t splatPadding(const PerspectiveWalkTables& tables) {
-  return tables.max_error + tables.depth + 1;
-}
 
 template <PixelPayload kPayload>
 bool drawLayers(std::span<const PerspectiveLayer> layers, const PerspectiveDetail* detail,

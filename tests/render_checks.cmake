@@ -19,3 +19,11 @@ function(render_refused expected)
             "octopoint-render ${ARGN}: wanted exit 1 and one line '${expected}', got ${status}: ${err}")
   endif()
 endfunction()
+
+# Fails unless files `a` and `b` hold the same bytes.
+function(same_files a b)
+  execute_process(COMMAND ${CMAKE_COMMAND} -E compare_files ${a} ${b} RESULT_VARIABLE differ)
+  if(differ)
+    message(FATAL_ERROR "${a} and ${b} differ")
+  endif()
+endfunction()

@@ -10,14 +10,7 @@
 file(REMOVE_RECURSE ${OUT})
 file(MAKE_DIRECTORY ${OUT})
 
-include(${CMAKE_CURRENT_LIST_DIR}/render_checks.cmake)  # render_ok, render_refused
-
-function(same_files a b)
-  execute_process(COMMAND ${CMAKE_COMMAND} -E compare_files ${a} ${b} RESULT_VARIABLE differ)
-  if(differ)
-    message(FATAL_ERROR "${a} and ${b} differ")
-  endif()
-endfunction()
+include(${CMAKE_CURRENT_LIST_DIR}/render_checks.cmake)  # render_ok, render_refused, same_files
 
 set(number "-?[0-9.e+-]+")
 # --info: the embedded default model and a model file, version 4.

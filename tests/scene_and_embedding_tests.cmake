@@ -15,6 +15,9 @@ scene_error_test(depth_zero "depth_zero.json: key 'depths': 0 is outside 1..16" 
 scene_error_test(depth_too_deep "depth_too_deep.json: key 'depths': 17 is outside 1..16"
                  depth_too_deep.json)
 scene_error_test(missing_file "missing.json: no such file" missing.json)
+# An eye the perspective camera cannot hold, refused once the cube is known (docs/scene.md).
+scene_error_test(eye_too_far "good_small.pcd: scene eye 0: the eye is 1e+03 cube edges from the \
+model's centre along x; the camera holds at most 128" eye_too_far.json)
 prepare_error_test(scene_with_depths "--depths: not allowed with --scene" ${bad}/good_small.pcd
                    --scene ${scenes}/frontal.json --depths 7 -o ${cli_out}/scene_with_depths
                    --name m)

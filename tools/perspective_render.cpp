@@ -225,14 +225,7 @@ void collidePoses(const ModelView& model, const ScanCube& cube, const Perspectiv
   for (const PathPose& pose : poses) eyes.push_back(pose.eye);
   const CollidedEyes collided = collideEyes(model, cube, body, eyes, "--collide");
   for (std::size_t i = 0; i < poses.size(); ++i) poses[i].eye = collided.eyes[i];
-  const double unit = cube.edge / static_cast<double>(kPerspectiveUnit);
-  char height[64] = "";
-  if (body.eye_height != 0) {
-    std::snprintf(height, sizeof height, ", eye height %.3g",
-                  static_cast<double>(body.eye_height) * unit);
-  }
-  std::printf("collision: eye radius %.3g%s, stopped or turned in %d of %zu frames\n",
-              static_cast<double>(body.radius) * unit, height, collided.stopped, poses.size());
+  std::printf("%s\n", collisionSummary(cube, body, collided.stopped, poses.size()).c_str());
 }
 
 void drawPath(const PerspectiveOptions& options, const PerspectiveJob& job) {

@@ -89,7 +89,8 @@ loaded whole through PCL. The output is the same byte for byte whatever --memory
   --scene SCENE.json    (a file of at most 1 MiB) the views the app will show (docs/scene.md): )"
                                R"(yaw/pitch ranges or
                         viewpoints, zoom range, framebuffer size, depths (or "auto"), palette,
-                        crop box, outlier removal, axes, normals. Voxels no view can see are
+                        crop box, outlier removal, axes, normals; perspective eyes and camera
+                        paths (octopoint-render --eye/--path's). Voxels no view can see are
                         pruned. Replaces --depths, --colours, --crop, --axes, --scan-unit and
                         --normals
   --emit strings|bytes  how the generated sources spell the arrays (default strings): string
@@ -313,7 +314,12 @@ std::string applyScene(const octopoint::prepare::Scene& scene,
   options.axes = scene.axes;
   options.metres_per_scan_unit = scene.metres_per_scan_unit;
   options.normals = scene.normals;
-  if (scene.prune) options.visibility_cameras = sceneCameras(scene);
+  if (scene.prune) {
+    if (scene.orthographic_views) options.visibility_cameras = sceneCameras(scene);
+    options.visibility_eyes = scene.eyes;
+    options.eye_width = scene.width;
+    options.eye_height = scene.height;
+  }
   return reason;
 }
 
@@ -432,10 +438,11 @@ void printLevels(const octopoint::prepare::PreparedModel& model,
   for (const PreparedLevel& level : model.levels) {
     if (level.voxels_before_pruning == 0) continue;
     std::printf(
-        "  depth %2d pruned from %zu views: %zu -> %zu voxels, %zu -> %zu bytes (-%.1f%%) in %.2f "
-        "s\n",
-        level.depth, options.visibility_cameras.size(), level.voxels_before_pruning,
-        level.leaves.size(), level.bytes_before_pruning, level.nodes.size() + level.leaves.size(),
+        "  depth %2d pruned from %zu views and %zu eyes: %zu -> %zu voxels, %zu -> %zu bytes "
+        "(-%.1f%%) in %.2f s\n",
+        level.depth, options.visibility_cameras.size(), options.visibility_eyes.size(),
+        level.voxels_before_pruning, level.leaves.size(), level.bytes_before_pruning,
+        level.nodes.size() + level.leaves.size(),
         100.0 - 100.0 * static_cast<double>(level.nodes.size() + level.leaves.size()) /
                     static_cast<double>(level.bytes_before_pruning),
         level.pruning_seconds);

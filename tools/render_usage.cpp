@@ -66,7 +66,9 @@ nor --file nor --url it draws the default model embedded in this binary.
   --collide          with --path: walk the path's eye with collision (docs/perspective.md,
                      "Collision"): from frame to frame the eye's sphere stops short of the
                      model's occupied voxels (its finest depth) and slides along them, never
-                     through a wall however thin; prints in how many frames something stopped it
+                     through a wall however thin; prints in how many frames something stopped it.
+                     With --city: against every instance of the scene (docs/city.md,
+                     "Collision"), R and H then in scene edges
   --eye-radius R     with --collide: the eye's radius in scan units (default 1/128 of the
                      cube's edge; 2^-24 to 1 cube edge)
   --eye-height H     with --collide: gravity: the eye stays H scan units above the ground under

@@ -11,10 +11,12 @@
 #include "cli/text.h"
 #include "octopoint/framebuffer.h"
 #include "renderer/cell_table.h"
+#include "renderer/scene_collision.h"
 #include "renderer/scene_renderer.h"
 #include "tools/camera_path.h"
 #include "tools/png_file.h"
 #include "tools/scene_file.h"
+#include "tools/walk_collision.h"
 
 namespace octopoint {
 namespace {
@@ -126,6 +128,26 @@ Angle fovOf(const PerspectiveOptions& options, const std::optional<double>& path
   return Angle::fromDegrees(kDefaultFieldOfViewDegrees);
 }
 
+// --collide: the path's eyes walked with collision against the scene's instances from frame to
+// frame (renderer/scene_collision.h); one line says how often something stopped the eye.
+void collideCityPoses(const LoadedScene& scene, const PerspectiveOptions& options,
+                      std::vector<PathPose>& poses) {
+  const WalkBody body = walkBodyOf(kSceneUnits, options.collision);
+  SceneError error;
+  const SceneCollision world(scene.models, scene.instances, &error);
+  if (error != SceneError::kNone) throw cli::Error(scene.label + ": " + describe(error));
+  if (const std::optional<std::size_t> model = world.unindexedModel()) {
+    throw cli::Error("--collide: " + scene.label + ": model " + std::to_string(*model) +
+                     "'s finest level is too large to walk");
+  }
+  std::vector<ScanPoint> eyes;
+  for (const PathPose& pose : poses) eyes.push_back(pose.eye);
+  const CollidedEyes collided = collideEyes(world, kSceneUnits, body, eyes, "--collide");
+  for (std::size_t i = 0; i < poses.size(); ++i) poses[i].eye = collided.eyes[i];
+  std::printf("%s (scene edges)\n",
+              collisionSummary(kSceneUnits, body, collided.stopped, poses.size()).c_str());
+}
+
 void drawCityEye(const PerspectiveOptions& options, const CityJob& job, const LoadedScene& scene) {
   const PerspectiveView view = cityView(*options.eye, options.look.value_or(Look{}),
                                         fovOf(options, std::nullopt), job.camera, "--eye");
@@ -147,7 +169,8 @@ void drawCityPath(const PerspectiveOptions& options, const CityJob& job, const L
   }
   const Angle fov = fovOf(options, path.fov_degrees);
   std::vector<PerspectiveView> views;
-  const std::vector<PathPose> poses = samplePath(path, options.frames);
+  std::vector<PathPose> poses = samplePath(path, options.frames);
+  if (options.collision.collide) collideCityPoses(scene, options, poses);
   for (std::size_t i = 0; i < poses.size(); ++i) {
     views.push_back(
         cityView(poses[i].eye, poses[i].look, fov, job.camera,

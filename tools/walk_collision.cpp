@@ -63,7 +63,11 @@ CollidedEyes collideEyes(const ModelView& model, const ScanCube& cube, const Wal
   const std::optional<CollisionModel> collision = CollisionModel::of(model);
   if (!collision) throw cli::Error(option + ": the model's finest level is too large to walk");
   const CollisionInstance instance{&*collision, {}};
-  const std::span<const CollisionInstance> world(&instance, 1);
+  return collideEyes(CollisionInstances({&instance, 1}), cube, body, eyes, option);
+}
+
+CollidedEyes collideEyes(const CollisionWorld& world, const ScanCube& cube, const WalkBody& body,
+                         const std::vector<ScanPoint>& eyes, const std::string& option) {
   CollidedEyes result;
   if (eyes.empty()) return result;
   ModelPoint eye = modelPointOf(cube, eyes.front(), option);
@@ -75,6 +79,21 @@ CollidedEyes collideEyes(const ModelView& model, const ScanCube& cube, const Wal
     result.eyes.push_back(scanPointOf(cube, eye));
   }
   return result;
+}
+
+std::string collisionSummary(const ScanCube& cube, const WalkBody& body, int stopped,
+                             std::size_t frames) {
+  const double unit = cube.edge / static_cast<double>(kPerspectiveUnit);
+  char line[160];
+  char height[64] = "";
+  if (body.eye_height != 0) {
+    std::snprintf(height, sizeof height, ", eye height %.3g",
+                  static_cast<double>(body.eye_height) * unit);
+  }
+  std::snprintf(line, sizeof line,
+                "collision: eye radius %.3g%s, stopped or turned in %d of %zu frames",
+                static_cast<double>(body.radius) * unit, height, stopped, frames);
+  return line;
 }
 
 }  // namespace octopoint

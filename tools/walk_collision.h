@@ -5,6 +5,7 @@
 // integer walk does the rest.
 
 #include <optional>
+#include <string>
 #include <vector>
 
 #include "cli/arguments.h"
@@ -42,5 +43,17 @@ struct CollidedEyes {
 };
 CollidedEyes collideEyes(const ModelView& model, const ScanCube& cube, const WalkBody& body,
                          const std::vector<ScanPoint>& eyes, const std::string& option);
+// The same through any world: a scene's instances (renderer/scene_collision.h), `cube` the
+// scene's units (sceneUnits).
+CollidedEyes collideEyes(const CollisionWorld& world, const ScanCube& cube, const WalkBody& body,
+                         const std::vector<ScanPoint>& eyes, const std::string& option);
+
+// A scene's units as a cube: one scene edge, centred on the origin, so that its points are the
+// scene's coordinates in scene edges.
+inline constexpr ScanCube kSceneUnits{{-0.5, -0.5, -0.5}, 1.0, false};
+
+// The line --collide prints: the body (in the cube's units) and how often the eye was stopped.
+std::string collisionSummary(const ScanCube& cube, const WalkBody& body, int stopped,
+                             std::size_t frames);
 
 }  // namespace octopoint

@@ -97,6 +97,8 @@
   let stream = null;  // the chunked model's fetching (web/octopoint_stream.js), once one is open
   let streamProblem = '';  // what its server did wrong, kept in the overlay
   let walk = null;  // walk mode (web/octopoint_walk.js), where the module has it
+  // The address's eye=, look=, fov= for a streamed model: placed when its head has come.
+  let eyeToPlace = null;
 
   function kilobytes(bytes) {
     return (bytes / 1000).toFixed(1) + ' kB';
@@ -135,8 +137,21 @@
     return 'walk: ' + options + ', speed ' + now.speed.toPrecision(3) + ' units/s: ';
   }
 
+  // Walk mode from the address's eye, once there is a model to walk in; '' or what is wrong.
+  function placeEye(asked) {
+    const wrong = walk === null ? 'eye: this page has no walk mode' :
+                                  walk.place(asked.eye, asked.look, asked.fov);
+    if (wrong === '') walk.active = true;
+    else report(problem = wrong + ': the orbit view', true);
+    return wrong;
+  }
+
   function draw() {
     pending = false;
+    if (eyeToPlace !== null && (walk === null || walk.ready())) {
+      placeEye(eyeToPlace);
+      eyeToPlace = null;
+    }
     const size = frameSize();
     const started = performance.now();
     const walker = walking();
@@ -264,7 +279,8 @@
       return;
     }
     if (stream !== null) stream.stop();
-    if (walking() !== null) walk.leave();  // walk mode draws the embedded model only (yet)
+    if (walking() !== null) walk.leave();  // another model: another cube, another eye
+    if (walk !== null) walk.forget();
     modelField.value = name;
     streamProblem = '';
     setStyle('colour');  // a chunked model stores no normals: colour only
@@ -283,9 +299,10 @@
   // Tab: walk mode (the eye where octopoint-render --perspective puts it for the orbit view) and
   // back to the orbit view.
   function toggleWalk() {
-    if (walk === null || stream !== null) {
-      report('walk mode: ' + (walk === null ? 'this page has no model with its place in the scan'
-                                            : 'a streamed model cannot be walked through yet'),
+    if (walk === null || !walk.ready()) {
+      report('walk mode: ' + (walk === null ? 'this page has none (it embeds no model)' :
+                              stream !== null ? "the model's head has not come yet" :
+                                                'this page has no model with its place in the scan'),
              true);
       return;
     }
@@ -358,14 +375,14 @@
     if (!setStyle(view.style)) setStyle('colour');
     setBudget(view.budget);
     walk = window.octopointWalk(Module);
+    // The address's eye: the page starts in walk mode (in a streamed model once its head is in).
+    const asked = params.has('eye') ?
+        {eye: params.get('eye'), look: params.get('look'), fov: params.get('fov')} : null;
     if (params.has('model') && params.get('model') !== '') {
       openModel(params.get('model'));
-    } else if (params.has('eye')) {  // the address's eye: the page starts in walk mode
-      const wrong = walk === null ? 'eye: this page has no model with its place in the scan'
-                                  : walk.place(params.get('eye'), params.get('look'),
-                                               params.get('fov'));
-      if (wrong === '') walk.active = true;
-      else report(problem = wrong + ': the orbit view', true);
+      eyeToPlace = asked;
+    } else if (asked !== null) {
+      placeEye(asked);
     }
     draw();
   };

@@ -1,17 +1,15 @@
 // The page's walk mode (docs/web.md, "Walk mode"; loaded before web/octopoint.js, which calls it):
-// the eye stands in the embedded model, as in octopoint-view's walk mode. The module keeps the eye
+// the eye stands in the embedded model or a streamed chunked one, as in octopoint-view's walk mode. The module keeps the eye
 // in integers and draws (web/octopoint_web_walk.cpp); here are the keys held and their times, the
 // drag and the wheel, and the conversion between the scan's units and the camera's Q.24 cube edges,
 // with the doubles of tools/scan_eye.cpp, so that the address and the overlay speak
 // octopoint-render's --eye X,Y,Z --look YAW,PITCH[,ROLL] --fov DEG.
 'use strict';
 
-// Returns null when the module has no walk mode (the page without a model) or the model records no
-// placement of its cube in the scan; otherwise the walk, with its methods.
+// Returns null when the module has no walk mode (the page without a model); otherwise the walk,
+// with its methods (walk.ready() says whether there is a model to walk in).
 window.octopointWalk = function (Module) {
   if (typeof Module._octopoint_web_walk_cube !== 'function') return null;
-  const cubeWords = Module._octopoint_web_walk_cube();
-  if (cubeWords === 0) return null;
   const kUnit = 16777216;  // Q.24: one cube edge
   const kTurn = 65536;     // the module's angles: 1/65536 turn
   // The walk keys, in the module's order (0 forward ... 5 down), by the key's name.
@@ -40,12 +38,21 @@ window.octopointWalk = function (Module) {
   function int64(low, high) {  // exact: the eye stays within 2^31 units
     return (high | 0) * 4294967296 + low;
   }
-  const placement = words(cubeWords, 9);
-  const cube = {
-    corner: [0, 1, 2].map((axis) => float64(placement[axis * 2], placement[axis * 2 + 1])),
-    edge: float64(placement[6], placement[7]),
-    yUp: placement[8] === 1,
-  };
+  // Where the walked model's cube lies in the scan: read when first needed, and again for a model
+  // opened later (walk.forget); null while there is none (no model, or its head still to come).
+  let cube = null;
+  function cubeNow() {
+    if (cube !== null) return cube;
+    const at = Module._octopoint_web_walk_cube();
+    if (at === 0) return null;
+    const placement = words(at, 9);
+    cube = {
+      corner: [0, 1, 2].map((axis) => float64(placement[axis * 2], placement[axis * 2 + 1])),
+      edge: float64(placement[6], placement[7]),
+      yUp: placement[8] === 1,
+    };
+    return cube;
+  }
 
   // C's llround, which octopoint-render's option parsing uses: halves away from zero.
   function roundAway(x) {
@@ -85,7 +92,15 @@ window.octopointWalk = function (Module) {
 
   const held = new Map();  // walk key (0..5) -> since when it moves the eye, in microseconds
   let dragged = null;      // while a drag turns the eye: the pixels it spans and the turn sent
-  const walk = {active: false, cube: cube};
+  const walk = {active: false};
+  // Whether there is a model with its cube's place in the scan to walk in.
+  walk.ready = function () {
+    return cubeNow() !== null;
+  };
+  // Another model is opened: its cube is read when its head has come.
+  walk.forget = function () {
+    cube = null;
+  };
 
   function now() {
     return Math.round(performance.now() * 1000);
@@ -101,6 +116,7 @@ window.octopointWalk = function (Module) {
   // Places the eye from the address's eye=X,Y,Z, look=YAW,PITCH[,ROLL] and fov=DEG (degrees);
   // returns what is wrong with them, or ''.
   walk.place = function (eyeText, lookText, fovText) {
+    if (!walk.ready()) return 'eye: there is no model with its place in the scan to walk in';
     const eye = eyeText.split(',').map(Number);
     if (eye.length !== 3 || !eye.every(Number.isFinite)) return 'eye=' + eyeText + ' is not X,Y,Z';
     const look = lookText === null ? [0, 0, 0] : lookText.split(',').map(Number);

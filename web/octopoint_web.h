@@ -66,15 +66,17 @@ int octopoint_web_set_point_budget(std::int32_t points);
 const std::uint32_t* octopoint_web_stream_status(void);
 
 // Walk mode (docs/web.md, "Walk mode"; web/octopoint_web_walk.cpp): the eye stands in the embedded
-// model, as octopoint-view's walk mode and octopoint-render --eye --look --fov place it. Not in the
-// page without a model (build/wasm/web-nomodel/ exports none of these). The eye is in the camera's
-// Q.24 cube edges about the cube's centre (renderer/perspective.h), each coordinate given as its
-// low and high 32 bits; angles as the other calls take them; the page converts from and to the
-// scan's units with the cube's placement.
+// model, or in the chunked model opened (once its head is in: its held parts, the fetch following
+// the eye), as octopoint-view's walk mode and octopoint-render --eye --look --fov place it. Not in
+// the page without a model (build/wasm/web-nomodel/ exports none of these: its weight). The eye
+// is in the camera's Q.24 cube edges about the cube's centre (renderer/perspective.h), each
+// coordinate given as its low and high 32 bits; angles as the other calls take them; the page
+// converts from and to the scan's units with the cube's placement.
 //
-// Where the embedded model's cube lies in the scan (octopoint/model.h, CubePlacement): nine words,
+// Where the walked model's cube lies in the scan (octopoint/model.h, CubePlacement): nine words,
 // the binary64 bits of the lowest corner's x, y, z and of the edge (low, high word each), then 1
-// when the model is the scan turned y-up. Null when there is no embedded model or it records none.
+// when the model is the scan turned y-up. Null when there is no model (a chunked one's head not in
+// yet) or it records none.
 const std::uint32_t* octopoint_web_walk_cube(void);
 // Puts the eye at that point looking yaw, pitch, roll, with that vertical field of view (10..120
 // degrees, in thousandths); refused when the eye is more than 128 cube edges from the centre.

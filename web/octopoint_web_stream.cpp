@@ -16,6 +16,7 @@
 
 #include "net/fetch_planner.h"
 #include "octopoint/progressive.h"
+#include "renderer/perspective_fetch.h"
 #include "web/octopoint_web.h"
 #include "web/web_canvas.h"
 
@@ -48,6 +49,9 @@ struct Stream {
   std::vector<Request> requests;  // in flight
   std::int32_t next_id = 1;
   Camera view;  // the camera of the last draw: what the fetch order follows
+  // In walk mode, the perspective view of the last walk frame: what the fetch order follows then.
+  std::optional<PerspectiveView> walk_view;
+  PerspectiveFetchOrder walk_order;  // the status's count of the walk view's parts still to come
   std::uint64_t point_budget = 0;
   std::uint64_t received = 0;
   std::uint32_t refused = 0;
@@ -62,6 +66,12 @@ struct Stream {
 std::optional<Stream>& stream() {
   static std::optional<Stream> instance;
   return instance;
+}
+
+// Counts every part any stream's model took (and every stream opened): a new count, new held parts.
+std::uint64_t& taken() {
+  static std::uint64_t count = 0;
+  return count;
 }
 
 std::vector<std::uint8_t>& input() {
@@ -98,9 +108,13 @@ int takeHead(Stream& s) {
     std::optional<ProgressiveModel> model = ProgressiveModel::fromHead(s.head, &issue);
     if (!model) return failStream(s, "the model's head is refused: " + where(issue));
     s.model = std::move(model);
+    ++taken();
   }
   // A part refused here is asked for again later as an item of its own.
-  if (s.model) static_cast<void>(s.model->acceptBytes(0, s.head, &issue));
+  if (s.model) {
+    static_cast<void>(s.model->acceptBytes(0, s.head, &issue));
+    ++taken();  // whatever it took: the walk's held parts are assembled again
+  }
   return succeed();
 }
 
@@ -121,6 +135,7 @@ bool streamOpen() { return stream().has_value(); }
 int drawStream(Variant variant, const Camera& camera) {
   Stream& s = *stream();
   s.view = camera;
+  s.walk_view.reset();
   if (!s.model) return fail(s.failed ? s.failure : "waiting for the head");
   Canvas& out = canvas();
   Framebuffer& frame = out.sized(camera.width, camera.height);
@@ -135,12 +150,23 @@ int drawStream(Variant variant, const Camera& camera) {
   return succeed();
 }
 
+const ProgressiveModel* streamModel() {
+  return stream() && stream()->model ? &*stream()->model : nullptr;
+}
+
+std::uint64_t streamTaken() { return taken(); }
+
+void streamFollow(const PerspectiveView& view) {
+  if (stream()) stream()->walk_view = view;
+}
+
 }  // namespace octopoint::web
 
 extern "C" {
 
 int octopoint_web_stream_open(void) {
   stream().emplace();
+  ++taken();
   return succeed();
 }
 
@@ -173,7 +199,8 @@ std::int32_t octopoint_web_stream_next(void) {
     request.head = true;
     request.range.offset = s.head.size();
     request.range.size = want - s.head.size();
-  } else if (s.planner.next(*s.model, s.view, UINT64_MAX, request.range) !=
+  } else if ((s.walk_view ? s.planner.next(*s.model, *s.walk_view, UINT64_MAX, request.range)
+                          : s.planner.next(*s.model, s.view, UINT64_MAX, request.range)) !=
              net::FetchPlanner::Outcome::kRange) {
     return 0;
   }
@@ -214,7 +241,10 @@ int octopoint_web_stream_receive(std::int32_t id, std::int32_t bytes) {
   request->next = s.planner.deliver(
       *s.model, request->range, request->body, request->next,
       [&](const FetchItem& item, const ChunkedIssue& issue) {
-        if (issue.error == ChunkedError::kNone) return;
+        if (issue.error == ChunkedError::kNone) {
+          ++taken();
+          return;
+        }
         ++s.refused;
         refusal = std::string("refused a damaged ") +
                   (item.kind == FetchItem::Kind::kChunk ? "chunk" : "record table") + " of level " +
@@ -258,9 +288,15 @@ const std::uint32_t* octopoint_web_stream_status(void) {
     words[4] = static_cast<std::uint32_t>(file_bytes >> 32);
     words[5] = s.model->chunksIn(ChunkState::kHeld);
     std::size_t pending = 0;
-    s.model->fetchPriority(s.view, false, {}, &pending);
+    if (s.walk_view) {
+      // The walk view is complete when nothing it sees is left to fetch (as net's ModelStream).
+      static_cast<void>(s.walk_order.order(*s.model, *s.walk_view, false, {}, &pending));
+      words[7] = pending == 0 ? 1 : 0;
+    } else {
+      s.model->fetchPriority(s.view, false, {}, &pending);
+      words[7] = s.model->viewComplete(s.view) ? 1 : 0;
+    }
     words[6] = static_cast<std::uint32_t>(pending);
-    words[7] = s.model->viewComplete(s.view) ? 1 : 0;
   }
   words[8] = s.refused;
   words[9] = static_cast<std::uint32_t>(s.requests.size());

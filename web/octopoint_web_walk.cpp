@@ -9,11 +9,12 @@
 #include <cstdint>
 #include <optional>
 
-#include "fixedpoint/trig.h"
 #include "octopoint/framebuffer.h"
 #include "octopoint/model.h"
 #include "renderer/perspective.h"
 #include "renderer/perspective_renderer.h"
+#include "renderer/walk_motion.h"
+#include "web/held_parts_frame.h"
 #include "web/octopoint_web.h"
 #include "web/web_canvas.h"
 
@@ -41,13 +42,8 @@ Walker& walker() {  // the eye with every key hold folded in so far
   return instance;
 }
 
-// What a key held in walk mode moves along: forward follows the look's yaw, level; right is at
-// right angles to it; up is the scan's up, -y of the model. In the order of WalkKey.
-struct Direction {
-  int forward, right, up;
-};
-constexpr std::array<Direction, web::kWalkKeys> kDirections = {
-    {{1, 0, 0}, {-1, 0, 0}, {0, -1, 0}, {0, 1, 0}, {0, 0, 1}, {0, 0, -1}}};
+// The page's keys are the walk's steps, in their order (0 forward ... 5 down).
+static_assert(web::kWalkKeys == kWalkSteps);
 
 std::int64_t joined(std::int32_t low, std::int32_t high) {
   return static_cast<std::int64_t>(static_cast<std::uint64_t>(static_cast<std::uint32_t>(high))
@@ -55,29 +51,11 @@ std::int64_t joined(std::int32_t low, std::int32_t high) {
                                    static_cast<std::uint32_t>(low));
 }
 
-std::int64_t clampedEye(std::int64_t coordinate) {
-  return std::clamp(coordinate, -kEyeLimit, kEyeLimit);
-}
-
-// `distance` (Q.24) times a Q1.30 sine or cosine, rounded.
-std::int64_t along(std::int64_t distance, std::int32_t sine_q30) {
-  return mulShiftRoundQuick(distance, sine_q30, 30).value_or(0);
-}
-
-// `eye` after `key` was held for `held_us` at `walker`'s speed and yaw: speed times time, exact to
-// the unit below (whole seconds and the rest apart: no overflow), never past the camera's reach.
+// `eye` after `key` was held for `held_us` at `walker`'s speed and yaw (renderer/walk_motion.h:
+// octopoint-view's walk, without collision).
 ModelPoint movedEye(const ModelPoint& eye, const Walker& walker, int key, std::int64_t held_us) {
-  const Direction direction = kDirections[static_cast<std::size_t>(key)];
-  const std::int64_t distance =
-      std::min(held_us / 1'000'000 * walker.speed + held_us % 1'000'000 * walker.speed / 1'000'000,
-               4 * kEyeLimit);
-  const std::int64_t sine = along(distance, sinQ30(walker.yaw));
-  const std::int64_t cosine = along(distance, cosQ30(walker.yaw));
-  // Forward is (sin yaw, 0, cos yaw), right (cos yaw, 0, -sin yaw).
-  const std::int64_t dx = direction.forward * sine + direction.right * cosine;
-  const std::int64_t dz = direction.forward * cosine - direction.right * sine;
-  const std::int64_t dy = -direction.up * distance;
-  return {clampedEye(eye.x + dx), clampedEye(eye.y + dy), clampedEye(eye.z + dz)};
+  return walkedEye(eye, walker.yaw, static_cast<WalkStep>(key),
+                   walkDistance(held_us, walker.speed));
 }
 
 bool validKey(std::int32_t key) { return key >= 0 && key < web::kWalkKeys; }
@@ -115,15 +93,41 @@ std::optional<PerspectiveRenderer>& perspectiveRenderer() {
   return instance;
 }
 
+// The chunked model's: its held parts, assembled again as chunks arrive.
+web::HeldPartsFrame& heldPartsFrame() {
+  static web::HeldPartsFrame instance;
+  return instance;
+}
+
+// The model walked in: the chunked model the page opened (its base, for the palette and the near
+// plane, once its head is in), else the embedded one; null when neither.
+const ModelView* walkedModel() {
+  if (!web::streamOpen()) return web::embeddedModel();
+  const ProgressiveModel* chunked = web::streamModel();
+  return chunked != nullptr ? &chunked->baseModel() : nullptr;
+}
+
+// Where its cube lies in the scan (a chunked model's head records it from format version 5 on);
+// null when nowhere.
+const CubePlacement* walkedCube() {
+  const CubePlacement* cube = nullptr;
+  if (!web::streamOpen()) {
+    if (const ModelView* model = web::embeddedModel()) cube = &model->cubePlacement();
+  } else if (const ProgressiveModel* chunked = web::streamModel()) {
+    if (chunked->head().format_version == chunked::kVersion5) cube = &chunked->head().cube;
+  }
+  return cube != nullptr && cube->recorded() ? cube : nullptr;
+}
+
 }  // namespace
 
 extern "C" {
 
 const std::uint32_t* octopoint_web_walk_cube(void) {
   static std::array<std::uint32_t, 9> words{};
-  const ModelView* model = web::embeddedModel();
-  if (model == nullptr || !model->cubePlacement().recorded()) return nullptr;
-  const CubePlacement& cube = model->cubePlacement();
+  const CubePlacement* placed = walkedCube();
+  if (placed == nullptr) return nullptr;
+  const CubePlacement& cube = *placed;
   const std::uint64_t bits[4] = {cube.corner_bits[0], cube.corner_bits[1], cube.corner_bits[2],
                                  cube.edge_bits};
   for (std::size_t i = 0; i < 4; ++i) {
@@ -192,11 +196,7 @@ int octopoint_web_walk_move(std::int32_t key, std::int32_t held_us) {
 int octopoint_web_walk_turn(std::int32_t yaw_turns16, std::int32_t pitch_turns16) {
   Walker& walk = walker();
   walk.yaw = walk.yaw + Angle::fromTurns16(yaw_turns16);
-  // The pitch stays within straight down .. straight up.
-  constexpr std::int64_t kQuarter = Angle::kUnitsPerTurn / 4;
-  std::int64_t pitch = walk.pitch.turns16();
-  if (pitch > Angle::kUnitsPerTurn / 2) pitch -= Angle::kUnitsPerTurn;
-  walk.pitch = Angle::fromTurns16(std::clamp(pitch + pitch_turns16, -kQuarter, kQuarter));
+  walk.pitch = turnedPitch(walk.pitch, pitch_turns16);
   publish(walk);
   return succeed();
 }
@@ -214,8 +214,11 @@ const std::uint32_t* octopoint_web_walk_state(void) { return stateWords().data()
 int octopoint_web_walk_draw(std::int32_t width, std::int32_t height, std::int32_t coarse,
                             std::int32_t forward_us, std::int32_t back_us, std::int32_t left_us,
                             std::int32_t right_us, std::int32_t up_us, std::int32_t down_us) {
-  const ModelView* model = web::embeddedModel();
-  if (model == nullptr) return fail("walk mode draws the embedded model (not a chunked one yet)");
+  const ModelView* model = walkedModel();
+  if (model == nullptr) {
+    return fail(web::streamOpen() ? "waiting for the chunked model's head"
+                                  : "no model to walk in: open a chunked one (model=NAME.oct)");
+  }
   if (!web::sizeAllowed(width, height)) return fail(web::kSizeRule);
   // The eye of this frame: each key held moved it by its time so far (folded in when let go).
   const std::int32_t held[web::kWalkKeys] = {forward_us, back_us, left_us,
@@ -230,7 +233,9 @@ int octopoint_web_walk_draw(std::int32_t width, std::int32_t height, std::int32_
   camera.pitch = shown.pitch;
   camera.roll = shown.roll;
   camera.fov = shown.fov;
-  camera.near = nearPlaneForDepth(model->finestLevel().depth);  // octopoint-render --eye's default
+  // octopoint-render --eye's default near plane: the model's finest depth (a chunked model's
+  // head's, as --url takes it: its base's).
+  camera.near = nearPlaneForDepth(model->finestLevel().depth);
   camera.width = width;
   camera.height = height;
   PerspectiveView view;
@@ -238,13 +243,19 @@ int octopoint_web_walk_draw(std::int32_t width, std::int32_t height, std::int32_
       error != PerspectiveError::kNone) {
     return fail(describe(error));
   }
-  if (!perspectiveRenderer()) perspectiveRenderer().emplace(*model);
   web::Canvas& out = web::canvas();
   Framebuffer& frame = out.sized(width, height);
   frame.clear();
-  PerspectiveRenderer::Options options;   // detail by distance, culled: octopoint-render --eye's
-  options.coarser = coarse != 0 ? 1 : 0;  // while a key is held: octopoint-view's coarse frames
-  if (!perspectiveRenderer()->draw(view, options, frame)) return fail("the walk's draw failed");
+  if (web::streamOpen()) {
+    web::streamFollow(view);  // the fetch order follows the eye from now on
+    if (!heldPartsFrame().draw(*web::streamModel(), web::streamTaken(), view, coarse != 0, frame))
+      return fail("nothing of the chunked model is held yet");
+  } else {
+    if (!perspectiveRenderer()) perspectiveRenderer().emplace(*model);
+    PerspectiveRenderer::Options options;   // detail by distance, culled: octopoint-render --eye's
+    options.coarser = coarse != 0 ? 1 : 0;  // while a key is held: octopoint-view's coarse frames
+    if (!perspectiveRenderer()->draw(view, options, frame)) return fail("the walk's draw failed");
+  }
   if (!resolveToRgb(frame, *model, web::kBackground, out.rgb)) return fail("the resolve failed");
   out.toRgba();
   return succeed();

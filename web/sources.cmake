@@ -3,8 +3,9 @@
 set(octopoint_web_sources
     ${PROJECT_SOURCE_DIR}/web/octopoint_web.cpp
     ${PROJECT_SOURCE_DIR}/web/octopoint_web_stream.cpp
-    # Walk mode, in the embedded model (the page without a model leaves it out).
+    # Walk mode, in the embedded model or a chunked one streamed (its held parts).
     ${PROJECT_SOURCE_DIR}/web/octopoint_web_walk.cpp
+    ${PROJECT_SOURCE_DIR}/web/held_parts_frame.cpp
     ${PROJECT_SOURCE_DIR}/web/web_canvas.cpp
     # The native client's choice of the next byte range (transport-free), so that the page asks
     # for what octopoint-view would.

@@ -10,7 +10,9 @@
 
 #include "octopoint/camera.h"
 #include "octopoint/framebuffer.h"
+#include "octopoint/progressive.h"
 #include "octopoint/render.h"
+#include "renderer/perspective.h"
 
 namespace octopoint::web {
 
@@ -51,5 +53,12 @@ const char* errorText();  // "" after a success
 // fetch order follows).
 bool streamOpen();
 int drawStream(Variant variant, const Camera& camera);
+// Walk mode on the chunked model (web/octopoint_web_walk.cpp): the model once its head has arrived
+// (null before); how many parts it has taken so far (a new count: the held parts changed); and the
+// perspective view its fetch order follows from now on (renderer/perspective_fetch.h: visible,
+// coarse before fine, nearest first), until the next orbit draw.
+const ProgressiveModel* streamModel();
+std::uint64_t streamTaken();
+void streamFollow(const PerspectiveView& view);
 
 }  // namespace octopoint::web

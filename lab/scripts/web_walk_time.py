@@ -5,7 +5,9 @@ round in one tab (docs/web.md, "Walk mode"): the orbit view (yaw 30, pitch 10, z
 table's edge (eye 0.05,0.1,-0.45, look -5,-20, fov 70: tests/paths/table_walk.json's first key)
 at 320x240 and 1280x960. Each time is the fastest of 10 batches of 10 draws after 5 to warm up
 (performance.now() in the page; the module's draw, resolve and RGBA copy, not putImageData); the
-median over the rounds is printed, each round's in brackets.
+median over the rounds is printed, each round's in brackets. A URL with a query naming a chunked
+model (`index.html?model=NAME.oct`) streams it first, until the page says the view is complete,
+and times the same draws of the model it then holds (the walk's: its held parts).
 
 usage: lab/scripts/web_walk_time.py ROUNDS URL... (each the page's index.html on a server)
 """
@@ -34,8 +36,8 @@ TIMING = """(() => {
     return ms;
   };
   const orbit = best(() => Module._octopoint_web_draw(30000, 10000, 0, 65536, %(w)d, %(h)d));
-  if (typeof Module._octopoint_web_walk_draw !== 'function') return [orbit, -1, -1];
   const walk = window.octopointWalk(Module);
+  if (!walk.ready()) return [orbit, -1, -1];
   if (walk.place('0.05,0.1,-0.45', '-5,-20', '70') !== '') return [orbit, -2, -2];
   const fine = best(() => Module._octopoint_web_walk_draw(%(w)d, %(h)d, 0, 0, 0, 0, 0, 0, 0));
   const coarse = best(() => Module._octopoint_web_walk_draw(%(w)d, %(h)d, 1, 0, 0, 0, 0, 0, 0));
@@ -61,9 +63,12 @@ def main():
             for _ in range(rounds):
                 for url in urls:
                     tools.evaluate(tab, "window.leftBehind = true")
-                    tools.call("Page.navigate", {"url": url + "?w=320&h=240&bare=1"}, tab)
-                    if not tools.wait_for(tab, "!window.leftBehind && document.body && "
-                                          "document.body.dataset.frames", 60):
+                    streamed = "model=" in url
+                    tools.call("Page.navigate", {"url": url + ("&" if "?" in url else "?") +
+                                                 "w=320&h=240&bare=1"}, tab)
+                    if not tools.wait_for(tab, "!window.leftBehind && document.body && " +
+                                          ("document.body.dataset.stream === 'complete'"
+                                           if streamed else "document.body.dataset.frames"), 60):
                         sys.exit("web_walk_time: %s drew nothing in 60 s" % url)
                     for w, h in SIZES:
                         times = tools.evaluate(tab, TIMING % {"w": w, "h": h})

@@ -117,7 +117,7 @@ TEST(CollisionMove, AMovedRoomMovesTheWalkAndATurnedOneStillStopsIt) {
   const CollisionMove local = moveWithCollision(room.world(), body, from, to);
   const ModelPoint shift{5 * kPerspectiveUnit + 12345, -kPerspectiveUnit / 3, 77};
   CollisionInstance moved = room.instance;
-  moved.transform.translation = shift;
+  moved.transform.at = shift;
   const auto plus = [&shift](const ModelPoint& p) {
     return ModelPoint{p.x + shift.x, p.y + shift.y, p.z + shift.z};
   };
@@ -127,7 +127,7 @@ TEST(CollisionMove, AMovedRoomMovesTheWalkAndATurnedOneStillStopsIt) {
   // Turned a quarter turn (the model's +x now along the world's -z) and doubled: the thin wall
   // now lies across z, and a long step along -z stops before it.
   CollisionInstance turned = room.instance;
-  turned.transform = {shift, Angle::fromDegrees(90), 1};
+  turned.transform = {.at = shift, .turn = Angle::fromDegrees(90), .scale = 1};
   // World = shift + 2 Ry(90) model: model (x, y, z) -> (2 z, 2 y, -2 x) about the shift.
   const auto world_of = [&shift](const ModelPoint& m) {
     return ModelPoint{shift.x + 2 * m.z, shift.y + 2 * m.y, shift.z - 2 * m.x};

@@ -214,13 +214,13 @@ TEST(CollisionGround, IsTheHighestTopUnderTheColumnAsEveryLeafSays) {
 // The exact answer for an instance, in 128-bit integers and doubles for the turn: the world
 // sphere carried into the model's frame exactly, against every leaf, with `extra` world units
 // added to the radius.
-bool exactInstanceMeets(const CollisionLeafList& leaves, const CollisionTransform& t,
+bool exactInstanceMeets(const CollisionLeafList& leaves, const InstanceTransform& t,
                         const CollisionSphere& sphere, double extra) {
-  const double turn = t.yaw.turns16() * 2 * 3.14159265358979323846 / Angle::kUnitsPerTurn;
-  const double scale = std::ldexp(1.0, t.scale_log2);
-  const double dx = static_cast<double>(sphere.centre.x - t.translation.x),
-               dy = static_cast<double>(sphere.centre.y - t.translation.y),
-               dz = static_cast<double>(sphere.centre.z - t.translation.z);
+  const double turn = t.turn.turns16() * 2 * 3.14159265358979323846 / Angle::kUnitsPerTurn;
+  const double scale = std::ldexp(1.0, t.scale);
+  const double dx = static_cast<double>(sphere.centre.x - t.at.x),
+               dy = static_cast<double>(sphere.centre.y - t.at.y),
+               dz = static_cast<double>(sphere.centre.z - t.at.z);
   const double mx = (std::cos(turn) * dx - std::sin(turn) * dz) / scale, my = dy / scale,
                mz = (std::sin(turn) * dx + std::cos(turn) * dz) / scale;
   const double r = (static_cast<double>(sphere.radius) + extra) / scale;
@@ -243,25 +243,30 @@ TEST(CollisionInstances, TurnedScaledAndMovedAreNeverMissedAndErrOnlyByThePad) {
   const CollisionLeafList leaves = collisionLeavesOf(*model.levelOfDepth(6));
   std::mt19937_64 random(3303);
   int met = 0;
-  for (int q = 0; q < 600; ++q) {
-    CollisionTransform t;
-    t.translation = {static_cast<std::int64_t>(random() % (1u << 28)) - (1 << 27),
-                     static_cast<std::int64_t>(random() % (1u << 26)),
-                     static_cast<std::int64_t>(random() % (1u << 28)) - (1 << 27)};
-    t.yaw = Angle::fromTurns16(q % 4 == 0 ? 16384 * (q / 4 % 4)
-                                          : static_cast<std::int64_t>(random() % 65536));
-    t.scale_log2 = static_cast<int>(random() % 5) - 2;
+  for (int q = 0; q < 1000; ++q) {
+    // Every scale of a scene (-8..8), anywhere a scene may place it (|at| up to 2^44).
+    InstanceTransform t;
+    const auto coordinate = [&random](int bits) {
+      return static_cast<std::int64_t>(random() % (std::uint64_t{1} << (bits + 1))) -
+             (std::int64_t{1} << bits);
+    };
+    const int place_bits = q % 8 == 0 ? 44 : 27;
+    t.at = {coordinate(place_bits), coordinate(place_bits - 1), coordinate(place_bits)};
+    t.turn = Angle::fromTurns16(q % 4 == 0 ? 16384 * (q / 4 % 4)
+                                           : static_cast<std::int64_t>(random() % 65536));
+    t.scale = static_cast<int>(random() % 17) - 8;
     const CollisionInstance instance{&*collision, t};
     // A sphere about a leaf of the instance, in world units.
     const ModelPoint& lo = leaves.corners[random() % leaves.corners.size()];
-    const double turn = t.yaw.turns16() * 2 * 3.14159265358979323846 / Angle::kUnitsPerTurn;
-    const double scale = std::ldexp(1.0, t.scale_log2);
+    const double turn = t.turn.turns16() * 2 * 3.14159265358979323846 / Angle::kUnitsPerTurn;
+    const double scale = std::ldexp(1.0, t.scale);
     const double lx = static_cast<double>(lo.x), lz = static_cast<double>(lo.z);
     const ModelPoint world_leaf{
-        t.translation.x + std::llround(scale * (std::cos(turn) * lx + std::sin(turn) * lz)),
-        t.translation.y + std::llround(scale * static_cast<double>(lo.y)),
-        t.translation.z + std::llround(scale * (-std::sin(turn) * lx + std::cos(turn) * lz))};
-    const std::int64_t radius = std::int64_t{1} << (14 + static_cast<int>(random() % 6));
+        t.at.x + std::llround(scale * (std::cos(turn) * lx + std::sin(turn) * lz)),
+        t.at.y + std::llround(scale * static_cast<double>(lo.y)),
+        t.at.z + std::llround(scale * (-std::sin(turn) * lx + std::cos(turn) * lz))};
+    // Radii of 2^6 .. 2^24 (up to a scene edge: past 2^31 model units at scale -8).
+    const std::int64_t radius = std::int64_t{1} << (6 + static_cast<int>(random() % 19));
     const std::int64_t span = 4 * radius;
     auto around = [&](std::int64_t v) {
       return v - 2 * radius +
@@ -274,19 +279,20 @@ TEST(CollisionInstances, TurnedScaledAndMovedAreNeverMissedAndErrOnlyByThePad) {
       EXPECT_TRUE(answer) << q;  // never missed
     }
     if (answer) {
-      // Only within the pad: 3 units of the turn, and a model unit of the scale's rounding.
-      EXPECT_TRUE(exactInstanceMeets(leaves, t, sphere, 4.0 + 2.0 * scale)) << q;
+      // Only within the pad: 3 units of the turn, a model unit of the scale's rounding, and
+      // (past 2^31 model units) the 12 model units of the quartered squares.
+      EXPECT_TRUE(exactInstanceMeets(leaves, t, sphere, 4.0 + 2.0 * scale + 12.0 * scale)) << q;
     }
     // Unturned and unscaled: exactly the model's answer about the translation.
-    if (t.yaw == Angle{} && t.scale_log2 == 0) {
-      const ModelPoint local{sphere.centre.x - t.translation.x, sphere.centre.y - t.translation.y,
-                             sphere.centre.z - t.translation.z};
+    if (t.turn == Angle{} && t.scale == 0) {
+      const ModelPoint local{sphere.centre.x - t.at.x, sphere.centre.y - t.at.y,
+                             sphere.centre.z - t.at.z};
       EXPECT_EQ(answer, collision->meets({local, radius})) << q;
     }
     met += answer ? 1 : 0;
   }
-  EXPECT_GT(met, 100);
-  EXPECT_LT(met, 500);
+  EXPECT_GT(met, 170);
+  EXPECT_LT(met, 830);
 }
 
 }  // namespace

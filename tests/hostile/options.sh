@@ -31,6 +31,9 @@ scene 2 everything_small_steps "views" \
 viewpoints=$(awk 'BEGIN { for (i = 1; i <= 20000; i++) printf "{\"yaw\": %d, \"pitch\": 0},", i % 360 - 180 }')
 scene 2 many_viewpoints_big_frames "shrink the framebuffer" \
   "{\"viewpoints\": [${viewpoints%,}], \"framebuffer\": [8192, 8192], \"zoom\": [1, 32767]}"
+eyes=$(awk 'BEGIN { for (i = 1; i <= 20000; i++) printf "{\"eye\": [%d, 0, 0]},", i % 100 }')
+scene 2 many_eyes_big_frames "fewer eyes or path_frames" \
+  "{\"eyes\": [${eyes%,}], \"framebuffer\": [8192, 8192]}"
 
 # --- 4: output size -------------------------------------------------------------------------
 refuse 4 q:render_8192_square "at most 16777216" "$RENDER" --size 8192x8192 -o "$X_PNG"
@@ -105,6 +108,10 @@ scene 7 scene_depth_fraction "key 'depths': expected a whole number" '{"depths":
 scene 7 scene_depth_u64 "key 'depths'" '{"depths": [18446744073709551617]}'
 scene 7 scene_framebuffer_wraps "key 'framebuffer'" '{"framebuffer": [4294967616, 240]}'
 scene 7 scene_zoom_nan_string "key 'zoom'" '{"zoom": "nan"}'
+scene 7 scene_eye_overflow "(key 'eyes.eye')" '{"eyes": [{"eye": [0, 0, 1e400]}]}'
+scene 7 scene_eye_fov_nan "key 'eyes[0].fov'" '{"eyes": [{"eye": [0, 0, 0], "fov": "nan"}]}'
+scene 7 scene_path_missing "key 'paths[0]'" '{"paths": ["no_such_walk.json"], "path_frames": 3600}'
+scene 7 scene_path_frames_huge "key 'path_frames'" '{"paths": ["x.json"], "path_frames": 1e12}'
 
 # --- 8: model names -------------------------------------------------------------------------
 name() {  # name NAME EXPECTED MODEL_NAME

@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <cstdint>
 #include <cstring>
+#include <memory>
 #include <optional>
 #include <span>
 #include <string>
@@ -17,6 +18,9 @@
 #include "codegen/chunked_writer.h"
 #include "octopoint/models.h"
 #include "octopoint/progressive.h"
+#include "renderer/chunked_assembly.h"
+#include "renderer/perspective.h"
+#include "renderer/perspective_renderer.h"
 #include "tests/support/model_images.h"
 #include "web/octopoint_web.h"
 #include "web/web_canvas.h"
@@ -216,10 +220,12 @@ TEST_F(WebStream, StopsForGoodOnAHeadThatIsNotAChunkedModel) {
 }
 
 // Plays the page for `view` until the view is complete: the offsets of the requests it made.
-std::vector<std::uint64_t> offsetsUntilViewComplete(const Bytes& image, const WebView& view) {
+// The offsets of the requests until `draw()` (0: drawn) draws a complete view, serving each whole.
+template <typename Draw>
+std::vector<std::uint64_t> offsetsUntilDrawnComplete(const Bytes& image, Draw draw) {
   std::vector<std::uint64_t> offsets;
   for (int round = 0; round < 10000; ++round) {
-    const bool drew = drawWebView(view) == 0;  // the view the order follows
+    const bool drew = draw() == 0;  // the view the order follows
     if (drew && octopoint_web_stream_status()[7] == 1) break;
     const std::int32_t id = octopoint_web_stream_next();
     if (id <= 0) break;
@@ -232,6 +238,10 @@ std::vector<std::uint64_t> offsetsUntilViewComplete(const Bytes& image, const We
     EXPECT_EQ(octopoint_web_stream_end(id), 0) << octopoint_web_error();
   }
   return offsets;
+}
+
+std::vector<std::uint64_t> offsetsUntilViewComplete(const Bytes& image, const WebView& view) {
+  return offsetsUntilDrawnComplete(image, [&view] { return drawWebView(view); });
 }
 
 TEST_F(WebStream, AsksForWhatTheLastDrawnViewSeesFirst) {
@@ -253,6 +263,75 @@ TEST_F(WebStream, AsksForWhatTheLastDrawnViewSeesFirst) {
   ASSERT_EQ(octopoint_web_stream_open(), 0);
   const Served all = serveAll(image, front, 1000, [](std::uint64_t, std::uint64_t) { return -1; });
   EXPECT_LT(for_front.size(), std::size_t(all.requests));
+}
+
+// Walk mode on the streamed model: the eye placed (Q.24 about the cube's centre) once the head is
+// in, its frame drawn (320x240, fov 60); 0 when drawn.
+int drawWalkAt(const ModelPoint& eye, std::int32_t yaw_millidegrees) {
+  if (octopoint_web_walk_cube() == nullptr) return -1;  // the head is not in yet
+  const auto low = [](std::int64_t v) { return std::int32_t(std::uint32_t(std::uint64_t(v))); };
+  const auto high = [](std::int64_t v) { return std::int32_t(std::uint64_t(v) >> 32); };
+  EXPECT_EQ(octopoint_web_walk_place(low(eye.x), high(eye.x), low(eye.y), high(eye.y), low(eye.z),
+                                     high(eye.z), yaw_millidegrees, -10000, 0, 60000),
+            0);
+  return octopoint_web_walk_draw(320, 240, 0, 0, 0, 0, 0, 0, 0);
+}
+
+// octopoint-render --url --eye's frame of the same eye from the whole file: its held parts each
+// drawn by the perspective renderer (tools/perspective_render.cpp, renderPerspectiveParts),
+// resolved on its background, as RGBA.
+Bytes nativePartsFrame(std::span<const std::uint8_t> image, const ModelPoint& eye,
+                       std::int32_t yaw_millidegrees) {
+  ChunkedIssue issue;
+  std::optional<ProgressiveModel> model = progressiveModelFromPrefix(image, &issue);
+  EXPECT_TRUE(model.has_value());
+  PerspectiveCamera camera;
+  camera.eye = eye;
+  camera.yaw = Angle::fromMilliDegrees(yaw_millidegrees);
+  camera.pitch = Angle::fromMilliDegrees(-10000);
+  camera.near = nearPlaneForDepth(model->baseModel().finestLevel().depth);
+  PerspectiveView view;
+  EXPECT_EQ(buildPerspectiveView(camera, kDefaultFractionBits, &view), PerspectiveError::kNone);
+  const HeldParts parts = assembleHeldParts(*model);
+  Framebuffer frame(camera.width, camera.height);
+  frame.clear();
+  for (const std::unique_ptr<AssembledModel>& part : parts.parts)
+    static_cast<void>(PerspectiveRenderer(*part->view, parts.detailDepths()).draw(view, {}, frame));
+  Bytes rgb(std::size_t(camera.width) * std::size_t(camera.height) * 3);
+  EXPECT_TRUE(resolveToRgb(frame, *parts.parts.front()->view, web::kBackground, rgb));
+  Bytes rgba;
+  for (std::size_t i = 0; i < rgb.size(); i += 3)
+    rgba.insert(rgba.end(), {rgb[i], rgb[i + 1], rgb[i + 2], 255});
+  return rgba;
+}
+
+TEST_F(WebStream, WalksTheStreamedModelFetchingWhatTheEyeSeesFirst) {
+  // The file as octopoint-prepare writes it from a scan: with its cube's place in the scan.
+  prepare::PreparedModel prepared = fuzzing::preparedModel(*models::defaultModel(), {5, 6, 7, 8});
+  prepared.cube = web::embeddedModel()->cubePlacement();
+  image = prepare::serializeChunkedModel(prepared, {64, 600});
+  // Nothing to walk in before the head.
+  EXPECT_EQ(octopoint_web_walk_cube(), nullptr);
+  EXPECT_NE(octopoint_web_walk_draw(320, 240, 0, 0, 0, 0, 0, 0, 0), 0);
+  // Two eyes inside the cube's edge, looking in opposite directions: each asks for its own parts
+  // first (the perspective fetch order).
+  const ModelPoint front{0, -kPerspectiveUnit / 8, -kPerspectiveUnit * 3 / 4};
+  const ModelPoint back{0, -kPerspectiveUnit / 8, kPerspectiveUnit * 3 / 4};
+  const std::vector<std::uint64_t> for_front =
+      offsetsUntilDrawnComplete(image, [&] { return drawWalkAt(front, 0); });
+  ASSERT_EQ(octopoint_web_stream_open(), 0);  // a new stream of the same file
+  const std::vector<std::uint64_t> for_back =
+      offsetsUntilDrawnComplete(image, [&] { return drawWalkAt(back, 180000); });
+  EXPECT_NE(for_front, for_back);
+  // The complete view's frame is octopoint-render --url --eye's, pixel for pixel.
+  ASSERT_EQ(drawWalkAt(back, 180000), 0) << octopoint_web_error();
+  const WebView size;
+  EXPECT_EQ(webPixels(size), nativePartsFrame(image, back, 180000));
+  // And the rest of the file changes nothing of it.
+  const Served rest = serveAll(image, size, 1000, [](std::uint64_t, std::uint64_t) { return -1; });
+  EXPECT_GT(rest.requests, 0);
+  ASSERT_EQ(drawWalkAt(back, 180000), 0) << octopoint_web_error();
+  EXPECT_EQ(webPixels(size), nativePartsFrame(image, back, 180000));
 }
 
 }  // namespace

@@ -10,6 +10,9 @@ ranges, the page's content types and its Content-Security-Policy, and, for reque
   --whole-file       answers 200 with the whole file instead of 206 (a server ignoring ranges)
   --endless          answers 206 with the right headers and body, then sends zeros for ever
   --short            answers 206 with the right headers and half the body, then closes
+  --wrong-range      answers a range past the head (the file's first bytes come right, so the
+                     page has a model to draw) with 206 and the bytes one further on, saying so in
+                     its Content-Range: not the bytes asked for (the page must refuse them)
 
 usage: web/test/hostile_server.py DIR MODE   (prints "port N" once it listens on 127.0.0.1)
 """
@@ -65,6 +68,10 @@ def make_handler(folder, mode):
                 except OSError:
                     pass
                 self.close_connection = True
+            elif mode == "--wrong-range" and first > 0:
+                first, last = first + 1, min(last + 1, len(data) - 1)
+                self.answer(206, name, data[first:last + 1],
+                            {"Content-Range": "bytes %d-%d/%d" % (first, last, len(data))})
             elif mode == "--short":
                 self.send_response(206)
                 self.send_header("Content-Range", ranged["Content-Range"])
@@ -96,7 +103,7 @@ def make_handler(folder, mode):
 
 
 def main():
-    modes = ("--damage-once", "--whole-file", "--endless", "--short")
+    modes = ("--damage-once", "--whole-file", "--endless", "--short", "--wrong-range")
     if len(sys.argv) != 3 or sys.argv[2] not in modes:
         sys.exit("usage: web/test/hostile_server.py DIR " + "|".join(modes))
     server = http.server.ThreadingHTTPServer(("127.0.0.1", 0),

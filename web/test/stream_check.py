@@ -74,7 +74,7 @@ def main():
                              tools.evaluate(session, STATE))
                 print("stream_check: %s, the tab still answering: %s" %
                       ("settled" if mode == "settled" else "stopped",
-                       tools.evaluate(session, STATE) if mode == "settled" else stopped))
+                       tools.evaluate(session, STATE)))
         finally:
             tools.close()
 
