@@ -10,6 +10,7 @@
 //    bytes (tests/support/las_writer.h), so the fuzzer starts from every layout the reader knows.
 //  - laz: small LAZ files of point formats 0 to 3 and 6 to 8, fixed and variable chunks of a few
 //    points, and a COPC file whose hierarchy has child pages.
+//  - cell_table: a cell table (renderer/cell_table.h) of a small grid
 //  - scene: scene files (docs/city.md) of one and of several models and instances, turned, scaled
 //    and at the coordinates' limits.
 // usage: make_fuzz_corpus OUTDIR
@@ -21,6 +22,7 @@
 #include <vector>
 
 #include "octopoint/models.h"
+#include "renderer/cell_table.h"
 #include "tests/support/landscape.h"
 #include "tests/support/las_writer.h"
 #include "tests/support/model_images.h"
@@ -189,6 +191,26 @@ void writeSceneSeeds(const fs::path& dir) {
                   R"(32768, -8], [0, 0, 0, -17592186044416, 1, 8]]})"));
 }
 
+// Cell tables (renderer/cell_table.h): a small grid of two layers, sets empty, short and whole.
+void writeCellTableSeeds(const fs::path& dir) {
+  fs::create_directories(dir);
+  octopoint::CellGrid grid;
+  grid.instances = 300;
+  grid.nx = 3;
+  grid.nz = 2;
+  grid.ny = 2;
+  grid.origin_x = -3 << 24;
+  grid.origin_z = -2 << 24;
+  grid.edge = 2 << 24;
+  grid.y = {-4 << 24, -(1 << 22), -(1 << 18)};
+  std::vector<std::vector<std::uint32_t>> sets(12);
+  sets[0] = {0, 1, 2, 7, 299};
+  for (std::uint32_t i = 0; i < 300; i += 2) sets[5].push_back(i);
+  for (std::uint32_t i = 0; i < 300; ++i) sets[11].push_back(i);
+  const std::vector<std::uint8_t> bytes = octopoint::encodeCellTable(grid, sets);
+  write(dir / "small.cells", bytes);
+}
+
 int main(int argc, char** argv) {
   if (argc != 2) {
     std::fprintf(stderr, "usage: make_fuzz_corpus OUTDIR\n");
@@ -212,6 +234,7 @@ int main(int argc, char** argv) {
     writeLasSeeds(out / "las");
     writeLazSeeds(out / "laz");
     writeSceneSeeds(out / "scene");
+    writeCellTableSeeds(out / "cell_table");
   } catch (const std::exception& error) {
     std::fprintf(stderr, "make_fuzz_corpus: %s\n", error.what());
     return 1;

@@ -41,11 +41,27 @@ SceneError SceneRenderer::place(std::size_t i, const InstanceTransform& transfor
   return SceneError::kNone;
 }
 
+void SceneRenderer::setVisibleSet(std::span<const std::uint32_t> ids) {
+  visible_ = ids;
+  restricted_ = true;
+}
+
+void SceneRenderer::clearVisibleSet() {
+  visible_ = {};
+  restricted_ = false;
+}
+
+void SceneRenderer::setSubmittedMarks(std::span<std::uint8_t> marks) { marks_ = marks; }
+
 std::size_t SceneRenderer::orderInView(const PerspectiveView& view, SceneDrawStats& counted) {
   // The frustum's side slopes for the instances' boxes (any depth's tables hold them).
   const PerspectiveWalkTables frustum = perspectiveWalkTables(view, 1, 0);
   std::size_t count = 0;
-  for (std::size_t i = 0; i < instances_.size(); ++i) {
+  const std::size_t candidates = restricted_ ? visible_.size() : instances_.size();
+  for (std::size_t k = 0; k < candidates; ++k) {
+    const std::size_t i = restricted_ ? visible_[k] : k;
+    if (i >= instances_.size()) continue;
+    if (count == order_.size()) break;  // a set with repeated ids: never more slots than instances
     const InstanceTransform& transform = instances_[i].transform;
     const std::optional<InstanceBox> box = instanceBox(view, transform);
     if (!box) {
@@ -56,7 +72,7 @@ std::size_t SceneRenderer::orderInView(const PerspectiveView& view, SceneDrawSta
       const std::int64_t nearest = box->centre.z - box->reach;  // model units
       order_[count++] = {transform.scale >= 0 ? nearest * (std::int64_t{1} << transform.scale)
                                               : nearest >> -transform.scale,
-                         static_cast<std::uint32_t>(i)};
+                         static_cast<std::uint32_t>(i), *box};
     }
   }
   // Nearest first: what they draw hides the farther instances' subtrees from the culling.
@@ -104,18 +120,28 @@ bool SceneRenderer::draw(const PerspectiveView& view, FrameView& frame, SceneDra
   OcclusionTiles occlusion(frame, tiles_, kOcclusionTileShift);
   occlusion.reset();
   for (std::size_t k = 0; k < count; ++k) {
+    const SceneInstance& instance = instances_[order_[k].instance];
+    if (frame.payload() == PixelPayload::kColour &&
+        instanceHidden(view, instance.transform, order_[k].box,
+                       depth_shift_ - instance.transform.scale, occlusion)) {
+      ++counted.occluded;  // wholly behind nearer instances: not set up, not walked
+      continue;
+    }
     PerspectiveView model_view;
     PerspectiveLayers layers;
-    if (!layersOf(view, instances_[order_[k].instance], &model_view, &layers)) {
+    if (!layersOf(view, instance, &model_view, &layers)) {
       ++counted.beyond_reach;
       continue;
     }
     if (layers.count == 0) continue;  // a model with no depth this build draws
+    const std::uint64_t before = counted.points.leaves;
     if (!drawPerspectiveLayers(layers.layers(), &layers.detail, model_view, frame, &occlusion,
                                &counted.points, nullptr, abort)) {
       return false;
     }
     ++counted.instances_drawn;
+    const std::uint32_t drawn = order_[k].instance;
+    if (counted.points.leaves != before && drawn < marks_.size()) marks_[drawn] = 1;
   }
   return true;
 }

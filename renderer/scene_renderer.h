@@ -26,6 +26,7 @@
 #include "renderer/perspective_layers.h"
 #include "renderer/perspective_renderer.h"
 #include "renderer/perspective_walk.h"
+#include "renderer/scene_view.h"
 
 namespace octopoint {
 
@@ -34,7 +35,8 @@ struct SceneDrawStats {
   std::uint64_t instances_drawn = 0;
   std::uint64_t outside_frustum = 0;  // instances passed over by the frustum test
   std::uint64_t beyond_reach = 0;     // instances beyond the draw distance
-  PerspectiveDrawStats points;        // summed over the drawn instances
+  std::uint64_t occluded = 0;   // instances in view whose box nearer instances hid (not set up)
+  PerspectiveDrawStats points;  // summed over the drawn instances
 };
 
 class SceneRenderer {
@@ -65,10 +67,22 @@ class SceneRenderer {
   // benchmark's measure of the set-up (bench/scene_bench.cpp). Returns the instances set up.
   std::size_t setUp(const PerspectiveView& view, SceneDrawStats* stats = nullptr);
 
+  // Visibility cells (renderer/cell_table.h, docs/city.md): from now on draw and setUp consider
+  // only the instances `ids` (sorted, distinct; the caller's memory, kept alive while it is set);
+  // the others cost nothing per frame. Ids past the instances are passed over.
+  void setVisibleSet(std::span<const std::uint32_t> ids);
+  // Back to every instance.
+  void clearVisibleSet();
+  // For computing the cells (tools/cell_build.h): from now on draw sets marks[i] to 1 for each
+  // instance i that submitted a point, its subtrees not all passed over by the frustum or the
+  // occlusion tiles (the caller's memory, at least instanceCount() bytes); empty to stop.
+  void setSubmittedMarks(std::span<std::uint8_t> marks);
+
  private:
   struct Slot {
     std::int64_t nearest = 0;  // the box's nearest camera-space depth, scene units (sort key)
     std::uint32_t instance = 0;
+    InstanceBox box;  // in its model's units (renderer/scene_view.h)
   };
 
   std::vector<const ModelView*> models_;
@@ -87,6 +101,9 @@ class SceneRenderer {
   int depth_shift_ = kPerspectiveDepthShift;
   int largest_scale_ = 0;
   bool valid_ = false;
+  bool restricted_ = false;                 // only visible_ is drawn
+  std::span<const std::uint32_t> visible_;  // setVisibleSet's ids
+  std::span<std::uint8_t> marks_;           // setSubmittedMarks's
 };
 
 }  // namespace octopoint

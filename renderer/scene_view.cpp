@@ -1,6 +1,7 @@
 #include "renderer/scene_view.h"
 
 #include <algorithm>
+#include <climits>
 
 #include "fixedpoint/trig.h"
 
@@ -66,6 +67,45 @@ bool instanceOutsideFrustum(const PerspectiveView& scene_view, const Perspective
   // The side slopes are ratios x / z: the same in any unit. The near plane in the model's units.
   return outsideFrustumSides(tables, box.centre, box.reach,
                              lengthToModelUnits(scene_view.camera.near, transform.scale));
+}
+
+bool instanceHidden(const PerspectiveView& scene_view, const InstanceTransform& transform,
+                    const InstanceBox& box, int model_depth_shift, OcclusionTiles& tiles) {
+  const std::int64_t nearest = box.centre.z - box.reach;  // Q.24 model cube edges
+  if (nearest < lengthToModelUnits(scene_view.camera.near, transform.scale) || nearest <= 0)
+    return false;
+  // The box's corners on the screen (x / z and y / z are monotonic on it, z > 0): their bounds hold
+  // its projection. The near plane is checked above in the model's units; project's own check in
+  // the scene's is not meant here, so it is given a view without one.
+  PerspectiveView ratios = scene_view;
+  ratios.camera.near = 1;
+  std::int64_t low_x = INT64_MAX, high_x = INT64_MIN, low_y = INT64_MAX, high_y = INT64_MIN;
+  for (int corner = 0; corner < 8; ++corner) {
+    const CameraPoint point{box.centre.x + (corner & 1 ? box.reach : -box.reach),
+                            box.centre.y + (corner & 2 ? box.reach : -box.reach),
+                            box.centre.z + (corner & 4 ? box.reach : -box.reach)};
+    const std::optional<ScreenPoint> screen = project(ratios, point);
+    if (!screen) return false;
+    low_x = std::min<std::int64_t>(low_x, screen->x);
+    high_x = std::max<std::int64_t>(high_x, screen->x);
+    low_y = std::min<std::int64_t>(low_y, screen->y);
+    high_y = std::max<std::int64_t>(high_y, screen->y);
+  }
+  // Q(32-F).F to pixels, widened by two.
+  const int f = scene_view.fraction_bits;
+  const std::int64_t x0 = std::max<std::int64_t>(0, (low_x >> f) - 2);
+  const std::int64_t x1 = std::min<std::int64_t>(tiles.width() - 1, (high_x >> f) + 2);
+  const std::int64_t y0 = std::max<std::int64_t>(0, (low_y >> f) - 2);
+  const std::int64_t y1 = std::min<std::int64_t>(tiles.height() - 1, (high_y >> f) + 2);
+  if (x0 > x1 || y0 > y1) return false;  // off the frame: the frustum test's to judge
+  // Every point's key is at least the nearest's (keys are z >> shift, capped), less one for the
+  // model view's eye, rounded apart from the box's: every word of the box at least this one.
+  const std::uint64_t key = std::min<std::uint64_t>(
+      static_cast<std::uint64_t>(nearest) >> model_depth_shift, FrameView::kMaxDepthKey);
+  const std::uint32_t word = FrameView::packLeaf<PixelPayload::kColour>(
+      static_cast<std::uint32_t>(key > 0 ? key - 1 : 0), 0);
+  return tiles.hidden(static_cast<std::int32_t>(x0), static_cast<std::int32_t>(x1),
+                      static_cast<std::int32_t>(y0), static_cast<std::int32_t>(y1), word);
 }
 
 PerspectiveError instanceView(const PerspectiveView& scene_view, const InstanceTransform& transform,

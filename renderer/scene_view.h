@@ -11,6 +11,7 @@
 #include <cstdint>
 
 #include "octopoint/scene.h"
+#include "renderer/occlusion_tiles.h"
 #include "renderer/perspective.h"
 #include "renderer/perspective_walk.h"
 
@@ -37,6 +38,15 @@ std::optional<InstanceBox> instanceBox(const PerspectiveView& scene_view,
 // walk tables, whose side slopes do not depend on scale). Conservative.
 bool instanceOutsideFrustum(const PerspectiveView& scene_view, const PerspectiveWalkTables& tables,
                             const InstanceTransform& transform, const InstanceBox& box);
+
+// Whether the instance's box (instanceBox, model units; `model_depth_shift` its model view's
+// shift) lies wholly behind what `tiles` hold: every pixel its projection may touch (widened by two
+// pixels for the splats and the rounding) holds a word nearer than the box's nearest (words of a
+// PixelPayload::kColour frame: the caller asks only for those). Then no
+// point of it can change the frame: it need not be set up nor walked. False when unsure (the box
+// reaches the near plane, or projects off any int32 screen).
+bool instanceHidden(const PerspectiveView& scene_view, const InstanceTransform& transform,
+                    const InstanceBox& box, int model_depth_shift, OcclusionTiles& tiles);
 
 // The view of the instance's model that draws it as the scene camera sees it, with the depth
 // shift `scene_depth_shift - scale`. Not kNone when that camera cannot be built (kEyeTooFar: the

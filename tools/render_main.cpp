@@ -56,7 +56,8 @@ struct Options {
   int sheet = 0;  // yaw angles of the contact sheet; 0: a single view
   PerspectiveOptions perspective;
   StyleOptions style;
-  std::string city;  // --city SCENE.json
+  std::string city;   // --city SCENE.json
+  std::string cells;  // --cells CELLS, with --city
 };
 
 // "AZ,EL" in degrees, each within +-90.
@@ -156,6 +157,7 @@ void checkCombination(const Options& options) {
     if (options.output.empty()) throw cli::Error("no output given: use -o OUT.png");
     return;
   }
+  if (!options.cells.empty()) throw cli::Error("--cells needs --city (they are a scene's cells)");
   const bool url = !options.source.url.empty();
   if (!url && options.fetch.bytes > 0) throw cli::Error("--bytes needs --url");
   if (url && (options.depth || options.sheet > 0)) {
@@ -233,6 +235,9 @@ Options parseOptions(int argc, char** argv) {
       options.sheet = cli::parseInt(args.name(), args.value(), 1, 36);
     } else if (args.is("-o") || args.is("--output")) {
       options.output = args.value();
+    } else if (args.is("--cells")) {
+      options.cells = args.value();
+      if (options.cells.empty()) throw cli::Error("--cells: empty (give a cell table)");
     } else if (args.is("--city")) {
       options.city = args.value();
       if (options.city.empty()) throw cli::Error("--city: empty (give a scene file)");
@@ -491,7 +496,8 @@ int run(int argc, char** argv) {
     return 0;
   }
   if (!options.city.empty()) {
-    runCity(options.perspective, {options.city, options.camera, options.output, kBackground});
+    runCity(options.perspective,
+            {options.city, options.cells, options.camera, options.output, kBackground});
     return 0;
   }
   if (!options.source.url.empty()) return renderUrl(options);

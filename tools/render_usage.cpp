@@ -5,7 +5,8 @@ namespace octopoint {
 const char* const kRenderUsage =
     R"(usage: octopoint-render [--model NAME | --file M.oct | --url URL [--bytes N]] )"
     R"([options] -o OUT.png
-       octopoint-render --city SCENE.json (--eye X,Y,Z | --path P.json --frames N) -o OUT.png
+       octopoint-render --city SCENE.json [--cells CELLS] (--eye X,Y,Z | --path P.json
+                        --frames N) -o OUT.png
        octopoint-render [--model NAME | --file M.oct] --info
        octopoint-render --list
 
@@ -82,6 +83,9 @@ nor --file nor --url it draws the default model embedded in this binary.
                      within 128 of the scene's origin) and --look, or --path and --frames (PNGs
                      only, no video); colour, each instance at the depth its distance asks for,
                      nearer instances hiding farther ones
+  --cells CELLS      with --city: the scene's visibility cells (octopoint-pvs, docs/city.md):
+                     only the instances the eye's cell sees are drawn (all of them when the eye
+                     lies outside the cells' grid)
   --near D           with --perspective, --eye or --path: the near plane, D scan units before the
                      eye; nothing nearer is drawn (default half the voxel edge of the model's
                      finest depth: the ground at the eye's feet is drawn)

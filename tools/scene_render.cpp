@@ -10,6 +10,7 @@
 #include "cli/output_file.h"
 #include "cli/text.h"
 #include "octopoint/framebuffer.h"
+#include "renderer/cell_table.h"
 #include "renderer/scene_collision.h"
 #include "renderer/scene_renderer.h"
 #include "tools/camera_path.h"
@@ -54,18 +55,37 @@ PerspectiveView cityView(const ScanPoint& eye, const Look& look, Angle fov, cons
   return view;
 }
 
+// A cell table: up to 64 MiB (renderer/cell_table.h).
+constexpr cli::InputKind kCellTableInput{"cell table", kMaxCellTableBytes};
+
 class CityFrames {
  public:
-  explicit CityFrames(const LoadedScene& scene) : scene_(scene) {
+  CityFrames(const LoadedScene& scene, const std::string& cells) : scene_(scene) {
     SceneError error;
     renderer_.emplace(scene.models, scene.instances, &error);
     if (error != SceneError::kNone) throw cli::Error(scene.label + ": " + describe(error));
+    if (cells.empty()) return;
+    CellTableError why;
+    cells_ = CellTable::parse(cli::readInputBytes(cells, kCellTableInput),
+                              static_cast<std::uint32_t>(scene.instances.size()), &why);
+    if (why != CellTableError::kNone)
+      throw cli::Error(cli::displayPath(cells) + ": cell table " + describe(why));
+    visible_.resize(cells_->largestSet());
   }
 
   cv::Mat draw(const PerspectiveView& view, Rgb background, SceneDrawStats* stats) {
     if (frame_.width() != view.camera.width || frame_.height() != view.camera.height)
       frame_ = Framebuffer(view.camera.width, view.camera.height);
     frame_.clear();
+    if (cells_) {  // only the eye's cell's set; outside the grid, everything
+      const std::int64_t cell = cells_->cellAt(view.camera.eye);
+      if (cell < 0) {
+        renderer_->clearVisibleSet();
+      } else {
+        const std::size_t count = cells_->decode(static_cast<std::uint32_t>(cell), visible_);
+        renderer_->setVisibleSet(std::span<const std::uint32_t>(visible_).first(count));
+      }
+    }
     static_cast<void>(renderer_->draw(view, frame_, stats));  // no abort flag: it completes
     cv::Mat rgb(view.camera.height, view.camera.width, CV_8UC3);
     // Every model holds the scene's palette (tools/scene_file.h): the first one's resolves.
@@ -79,6 +99,8 @@ class CityFrames {
  private:
   const LoadedScene& scene_;
   std::optional<SceneRenderer> renderer_;
+  std::optional<CellTable> cells_;
+  std::vector<std::uint32_t> visible_;  // the eye's cell's set, room for the largest
   Framebuffer frame_{1, 1};
 };
 
@@ -96,8 +118,8 @@ std::string sizeText(const LoadedScene& scene) {
 std::string statsText(const SceneDrawStats& stats) {
   return std::to_string(stats.instances_drawn) + " instances drawn (" +
          std::to_string(stats.outside_frustum) + " outside the view, " +
-         std::to_string(stats.beyond_reach) + " beyond reach), " +
-         std::to_string(stats.points.leaves) + " points";
+         std::to_string(stats.beyond_reach) + " beyond reach, " + std::to_string(stats.occluded) +
+         " hidden by nearer ones), " + std::to_string(stats.points.leaves) + " points";
 }
 
 Angle fovOf(const PerspectiveOptions& options, const std::optional<double>& path_fov) {
@@ -130,7 +152,7 @@ void drawCityEye(const PerspectiveOptions& options, const CityJob& job, const Lo
   const PerspectiveView view = cityView(*options.eye, options.look.value_or(Look{}),
                                         fovOf(options, std::nullopt), job.camera, "--eye");
   cli::checkOutputFile(job.output);
-  CityFrames frames(scene);
+  CityFrames frames(scene, job.cells);
   SceneDrawStats stats;
   writePng(job.output, frames.draw(view, job.background, &stats));
   std::printf("%s: %s: %s -> %s (%dx%d)\n", scene.label.c_str(), sizeText(scene).c_str(),
@@ -162,7 +184,7 @@ void drawCityPath(const PerspectiveOptions& options, const CityJob& job, const L
     return prefix + suffix;
   };
   cli::checkOutputFile(name(0));
-  CityFrames frames(scene);
+  CityFrames frames(scene, job.cells);
   SceneDrawStats all;
   std::vector<std::string> written;
   try {
@@ -174,6 +196,7 @@ void drawCityPath(const PerspectiveOptions& options, const CityJob& job, const L
       all.instances_drawn += stats.instances_drawn;
       all.outside_frustum += stats.outside_frustum;
       all.beyond_reach += stats.beyond_reach;
+      all.occluded += stats.occluded;
       all.points.leaves += stats.points.leaves;
     }
   } catch (...) {

@@ -14,6 +14,7 @@ namespace octopoint {
 
 struct CityJob {
   std::string scene;  // --city
+  std::string cells;  // --cells: the scene's visibility cells (renderer/cell_table.h), or empty
   Camera camera;      // its size
   std::string output;
   Rgb background;

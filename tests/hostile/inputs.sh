@@ -231,6 +231,21 @@ refuse 3 q:scene_past_1mib "more than the 1 MiB" "$PREPARE" "$IN/good.pcd" --sce
   -o "$W/work/out/p" --name m
 refuse 3 city_nul_bytes "a NUL byte at byte 0" "$RENDER" --city "$I3/sparse_2m.json" --eye 0,0,-2 \
   -o "$W/work/out/x.png"
+# Cell tables (docs/city.md, "Visibility cells"): what is no table, or not this scene's, is refused.
+printf '{"models": ["good.oct"], "instances": [[0, 0, 0, 0, 0, 0]]}' >"$IN/one_scene.json"
+printf 'OCTCELL1\001\000\000\000' >"$I3/short.cells"
+head -c 200 /dev/zero | tr '\0' 'x' >"$I3/magic.cells"
+{ printf 'OCTCELL1\002\000\000\000'; head -c 200 /dev/zero; } >"$I3/other_scene.cells"
+refuse 3 q:cells_truncated "short.cells: cell table truncated" "$RENDER" --city "$IN/one_scene.json" \
+  --cells "$I3/short.cells" --eye 0,0,-2 -o "$W/work/out/x.png"
+refuse 3 cells_bad_magic "no OCTCELL1 magic" "$RENDER" --city "$IN/one_scene.json" \
+  --cells "$I3/magic.cells" --eye 0,0,-2 -o "$W/work/out/x.png"
+refuse 3 cells_other_scene "made for a scene of another instance count" "$RENDER" \
+  --city "$IN/one_scene.json" --cells "$I3/other_scene.cells" --eye 0,0,-2 -o "$W/work/out/x.png"
+refuse 3 cells_directory "is a directory" "$RENDER" --city "$IN/one_scene.json" --cells "$I3/directory" \
+  --eye 0,0,-2 -o "$W/work/out/x.png"
+refuse 3 cells_past_64mib "more than the 64 MiB" "$RENDER" --city "$IN/one_scene.json" \
+  --cells "$I3/sparse_2g.pcd" --eye 0,0,-2 -o "$W/work/out/x.png"
 refuse 3 proc_file_as_scan "status" "$PREPARE" /proc/self/status -o "$W/work/out/p" --name m
 refuse 3 dev_urandom_as_model "is a character device" "$RENDER" --file /dev/urandom -o "$W/work/out/x.png"
 

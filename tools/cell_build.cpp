@@ -1,0 +1,200 @@
+#include "tools/cell_build.h"
+
+#include <algorithm>
+#include <random>
+
+#include "octopoint/framebuffer.h"
+#include "renderer/scene_renderer.h"
+
+namespace octopoint {
+namespace {
+
+std::int64_t floorDiv(std::int64_t a, std::int64_t b) {
+  return a >= 0 ? a / b : -((-a + b - 1) / b);
+}
+
+// Half an instance's cube edge times 3/2 (its cube turned about y, and some room), Q.24 scene
+// edges.
+std::int64_t cubeReach(int scale) {
+  return scale >= -1 ? (3 * kPerspectiveUnit / 4) << (scale + 1)
+                     : (3 * kPerspectiveUnit / 4) >> -(scale + 1);
+}
+
+// The grid over the instances' cubes in x and z (each cube's half edge times 3/2 covers it turned).
+bool gridOf(std::span<const SceneInstance> instances, const CellBuildOptions& options,
+            CellGrid* grid) {
+  if (options.edge < kPerspectiveUnit / 64 || options.y.size() < 2 ||
+      options.y.size() > kMaxCellLayers + 1 ||
+      !std::is_sorted(options.y.begin(), options.y.end()) ||
+      std::adjacent_find(options.y.begin(), options.y.end()) != options.y.end()) {
+    return false;
+  }
+  std::int64_t low[2] = {kMaxSceneCoordinate, kMaxSceneCoordinate};
+  std::int64_t high[2] = {-kMaxSceneCoordinate, -kMaxSceneCoordinate};
+  for (const SceneInstance& instance : instances) {
+    const InstanceTransform& t = instance.transform;
+    const std::int64_t reach = cubeReach(t.scale);
+    low[0] = std::min(low[0], t.at.x - reach);
+    high[0] = std::max(high[0], t.at.x + reach);
+    low[1] = std::min(low[1], t.at.z - reach);
+    high[1] = std::max(high[1], t.at.z + reach);
+  }
+  grid->origin_x = floorDiv(low[0], options.edge) * options.edge;
+  grid->origin_z = floorDiv(low[1], options.edge) * options.edge;
+  const std::int64_t nx = floorDiv(high[0] - grid->origin_x, options.edge) + 1;
+  const std::int64_t nz = floorDiv(high[1] - grid->origin_z, options.edge) + 1;
+  const std::int64_t ny = static_cast<std::int64_t>(options.y.size()) - 1;
+  if (nx > kMaxCellsPerAxis || nz > kMaxCellsPerAxis || nx * nz * ny > kMaxCells) return false;
+  grid->instances = static_cast<std::uint32_t>(instances.size());
+  grid->nx = static_cast<std::uint32_t>(nx);
+  grid->nz = static_cast<std::uint32_t>(nz);
+  grid->ny = static_cast<std::uint32_t>(ny);
+  grid->edge = options.edge;
+  grid->y = options.y;
+  return true;
+}
+
+class SampleViews {
+ public:
+  SampleViews(SceneRenderer& renderer, int face, std::size_t instances)
+      : renderer_(renderer), face_(face), frame_(face, face), marks_(instances) {
+    renderer_.setSubmittedMarks(marks_);
+  }
+  ~SampleViews() { renderer_.setSubmittedMarks({}); }
+  SampleViews(const SampleViews&) = delete;
+  SampleViews& operator=(const SampleViews&) = delete;
+
+  // The instances seen from `eye` in any direction: marks() after it.
+  void look(const Point3<std::int64_t>& eye, std::uint64_t* frames) {
+    std::fill(marks_.begin(), marks_.end(), std::uint8_t{0});
+    static constexpr int kFaces[6][2] = {{0, 0}, {90, 0}, {180, 0}, {270, 0}, {0, 90}, {0, -90}};
+    for (const auto& [yaw, pitch] : kFaces) {
+      PerspectiveCamera camera;
+      camera.eye = eye;
+      camera.yaw = Angle::fromDegrees(yaw);
+      camera.pitch = Angle::fromDegrees(pitch);
+      camera.fov = Angle::fromDegrees(90);
+      camera.width = face_;
+      camera.height = face_;
+      PerspectiveView view;
+      if (buildPerspectiveView(camera, kDefaultFractionBits, &view) != PerspectiveError::kNone)
+        continue;  // an eye beyond the camera's reach: the margin's instances stand for it
+      frame_.clear();
+      static_cast<void>(renderer_.draw(view, frame_));
+      ++*frames;
+    }
+  }
+  std::span<const std::uint8_t> marks() const { return marks_; }
+
+ private:
+  SceneRenderer& renderer_;
+  int face_;
+  Framebuffer frame_;
+  std::vector<std::uint8_t> marks_;
+};
+
+void orInto(std::span<std::uint8_t> into, std::span<const std::uint8_t> marks) {
+  for (std::size_t i = 0; i < into.size(); ++i) into[i] |= marks[i];
+}
+
+}  // namespace
+
+CellBuild buildCells(std::span<const ModelView* const> models,
+                     std::span<const SceneInstance> instances, const CellBuildOptions& options) {
+  CellBuild build;
+  SceneError error;
+  SceneRenderer renderer(models, instances, &error);
+  if (error != SceneError::kNone || !gridOf(instances, options, &build.grid)) return {};
+  const CellGrid& g = build.grid;
+  const std::size_t n = instances.size(), cells = g.cellCount();
+  std::vector<std::uint8_t> seen(cells * n);  // per cell, per instance
+  const auto row = [&](std::size_t cell) {
+    return std::span<std::uint8_t>(seen).subspan(cell * n, n);
+  };
+  const auto cellIndex = [&](std::int64_t x, std::int64_t z, std::int64_t layer) {
+    return static_cast<std::size_t>((layer * g.nz + z) * g.nx + x);
+  };
+  SampleViews views(renderer, options.face, n);
+  // The lattice on the layers' bounds: the cells' corners, each every touching cell's, and their
+  // centres.
+  for (std::int64_t k = 0; k <= g.ny; ++k) {
+    const std::int64_t y = g.y[static_cast<std::size_t>(k)];
+    for (std::int64_t j = 0; j <= g.nz; ++j) {
+      for (std::int64_t i = 0; i <= g.nx; ++i) {
+        views.look({g.origin_x + i * g.edge, y, g.origin_z + j * g.edge}, &build.frames);
+        ++build.samples;
+        for (std::int64_t layer = k - 1; layer <= k; ++layer) {
+          for (std::int64_t z = j - 1; z <= j; ++z) {
+            for (std::int64_t x = i - 1; x <= i; ++x) {
+              if (layer < 0 || layer >= g.ny || z < 0 || z >= g.nz || x < 0 || x >= g.nx) continue;
+              orInto(row(cellIndex(x, z, layer)), views.marks());
+            }
+          }
+        }
+        if (i == g.nx || j == g.nz) continue;
+        views.look({g.origin_x + i * g.edge + g.edge / 2, y, g.origin_z + j * g.edge + g.edge / 2},
+                   &build.frames);
+        ++build.samples;
+        for (std::int64_t layer = k - 1; layer <= k; ++layer)
+          if (layer >= 0 && layer < g.ny) orInto(row(cellIndex(i, j, layer)), views.marks());
+      }
+    }
+  }
+  // Seeded points inside each cell.
+  for (std::size_t cell = 0; cell < cells; ++cell) {
+    const std::int64_t x = static_cast<std::int64_t>(cell % g.nx);
+    const std::int64_t z = static_cast<std::int64_t>(cell / g.nx % g.nz);
+    const std::size_t layer = cell / (std::size_t{g.nx} * g.nz);
+    std::mt19937_64 random(options.seed * 0x9E3779B97F4A7C15ull + cell);
+    for (int s = 0; s < options.random_samples; ++s) {
+      const std::int64_t height = g.y[layer + 1] - g.y[layer];
+      const Point3<std::int64_t> eye{
+          g.origin_x + x * g.edge +
+              static_cast<std::int64_t>(random() % static_cast<std::uint64_t>(g.edge)),
+          g.y[layer] + static_cast<std::int64_t>(random() % static_cast<std::uint64_t>(height)),
+          g.origin_z + z * g.edge +
+              static_cast<std::int64_t>(random() % static_cast<std::uint64_t>(g.edge))};
+      views.look(eye, &build.frames);
+      ++build.samples;
+      orInto(row(cell), views.marks());
+    }
+  }
+  // The margin: instances whose (turned) cube comes within `margin` of the cell's box.
+  for (std::size_t i = 0; i < n; ++i) {
+    const InstanceTransform& t = instances[i].transform;
+    const std::int64_t reach = cubeReach(t.scale) + options.margin;
+    const std::int64_t x0 =
+        std::max<std::int64_t>(0, floorDiv(t.at.x - reach - g.origin_x, g.edge));
+    const std::int64_t x1 =
+        std::min<std::int64_t>(g.nx - 1, floorDiv(t.at.x + reach - g.origin_x, g.edge));
+    const std::int64_t z0 =
+        std::max<std::int64_t>(0, floorDiv(t.at.z - reach - g.origin_z, g.edge));
+    const std::int64_t z1 =
+        std::min<std::int64_t>(g.nz - 1, floorDiv(t.at.z + reach - g.origin_z, g.edge));
+    for (std::int64_t layer = 0; layer < g.ny; ++layer) {
+      const std::size_t l = static_cast<std::size_t>(layer);
+      if (t.at.y + reach < g.y[l] || t.at.y - reach > g.y[l + 1]) continue;
+      for (std::int64_t z = z0; z <= z1; ++z)
+        for (std::int64_t x = x0; x <= x1; ++x) seen[cellIndex(x, z, layer) * n + i] = 1;
+    }
+  }
+  build.sets.resize(cells);
+  std::vector<std::uint8_t> widened(n);
+  for (std::size_t cell = 0; cell < cells; ++cell) {
+    const std::int64_t x = static_cast<std::int64_t>(cell % g.nx);
+    const std::int64_t z = static_cast<std::int64_t>(cell / g.nx % g.nz);
+    const std::int64_t layer = static_cast<std::int64_t>(cell / (std::size_t{g.nx} * g.nz));
+    std::copy(row(cell).begin(), row(cell).end(), widened.begin());
+    for (std::int64_t dz = -1; options.neighbours && dz <= 1; ++dz) {
+      for (std::int64_t dx = -1; dx <= 1; ++dx) {
+        if (x + dx < 0 || x + dx >= g.nx || z + dz < 0 || z + dz >= g.nz) continue;
+        orInto(widened, row(cellIndex(x + dx, z + dz, layer)));
+      }
+    }
+    for (std::size_t i = 0; i < n; ++i)
+      if (widened[i] != 0) build.sets[cell].push_back(static_cast<std::uint32_t>(i));
+  }
+  return build;
+}
+
+}  // namespace octopoint

@@ -1,0 +1,137 @@
+// octopoint-pvs: a scene's visibility cells (docs/city.md, "Visibility cells"): per view cell, the
+// instances seen from anywhere in it (tools/cell_build.h), written beside the scene in the cell
+// table format (renderer/cell_table.h) that octopoint-render --cells reads.
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <string>
+
+#include "cli/arguments.h"
+#include "cli/error.h"
+#include "cli/numbers.h"
+#include "cli/output_file.h"
+#include "cli/run_tool.h"
+#include "cli/text.h"
+#include "tools/cell_build.h"
+#include "tools/scene_file.h"
+
+namespace {
+
+using namespace octopoint;
+
+constexpr const char* kUsage =
+    R"(usage: octopoint-pvs SCENE.json -o CELLS [--cell EDGES] [--layers Y0,Y1,...] [--face PX]
+                     [--samples N] [--seed N] [--margin EDGES] [--no-neighbours]
+
+Computes a scene's visibility cells (docs/city.md): a grid of view cells over the instances'
+extent in x and z and the layers of height the eye may take, and per cell the instances visible
+from anywhere in it. From sample points (every cell's corners and centre on its layer's top and
+bottom) and N seeded points inside each cell, the scene is drawn to
+the six faces of a cube by octopoint's own renderer; an instance is seen when it submitted a point.
+Each set is widened by the instances within the margin of its cell and by its eight neighbours'
+sets. octopoint-render --city SCENE.json --cells CELLS draws only the eye's cell's set.
+
+  -o CELLS           the cell table written (renderer/cell_table.h: a few percent of the scene)
+  --cell EDGES       the cells' edge in x and z, scene edges (default 2; 1/64..4096)
+  --layers Y0,...    the layers' bounds in y, scene edges, increasing (y down: the highest
+                     first), 2..65 of them (default -1.5,-0.09375,-0.015625: in the generated
+                     city 48 m, 3 m and 0.5 m above the ground; an eye outside every layer
+                     draws everything)
+  --face PX          pixels of a cube face's side, 16..1024 (default 64)
+  --samples N        seeded points inside each cell, 0..64 (default 1)
+  --seed N           their seed, 0..10^9 (default 1)
+  --margin EDGES     instances whose cube comes this near a cell are in its set (default 0.5)
+  --no-neighbours    do not widen a set by its neighbours' (for measuring what that buys)
+)";
+
+// A decimal number of scene edges to Q.24, within +-limit scene edges; cli::Error otherwise.
+std::int64_t edgesOption(const std::string& option, const std::string& text, double limit) {
+  char* end = nullptr;
+  const double value = std::strtod(text.c_str(), &end);
+  if (text.empty() || end != text.c_str() + text.size() || !(std::fabs(value) <= limit))
+    throw cli::Error(option + ": '" + text + "' is no number of scene edges within +-" +
+                     std::to_string(static_cast<long long>(limit)));
+  return std::llround(std::ldexp(value, kPerspectiveUnitBits));
+}
+
+int run(int argc, char** argv) {
+  cli::ArgumentReader args(argc, argv);
+  std::string scene_path, output;
+  CellBuildOptions options;
+  while (args.next()) {
+    if (args.is("-h") || args.is("--help")) {
+      std::fputs(kUsage, stdout);
+      return 0;
+    } else if (args.is("-o")) {
+      output = args.value();
+    } else if (args.is("--cell")) {
+      options.edge = edgesOption("--cell", args.value(), 4096);
+      if (options.edge < kPerspectiveUnit / 64) throw cli::Error("--cell: below 1/64 scene edge");
+    } else if (args.is("--layers")) {
+      options.y.clear();
+      const std::string list = args.value();
+      for (std::size_t at = 0; at <= list.size();) {
+        const std::size_t comma = std::min(list.find(',', at), list.size());
+        options.y.push_back(edgesOption("--layers", list.substr(at, comma - at), 128));
+        at = comma + 1;
+      }
+      if (options.y.size() < 2 || options.y.size() > kMaxCellLayers + 1)
+        throw cli::Error("--layers: give 2 to 65 bounds");
+      for (std::size_t k = 1; k < options.y.size(); ++k)
+        if (options.y[k] <= options.y[k - 1]) throw cli::Error("--layers: bounds not increasing");
+    } else if (args.is("--face")) {
+      options.face = cli::parseInt(args.name(), args.value(), 16, 1024);
+    } else if (args.is("--samples")) {
+      options.random_samples = cli::parseInt(args.name(), args.value(), 0, 64);
+    } else if (args.is("--seed")) {
+      options.seed =
+          static_cast<std::uint32_t>(cli::parseInt(args.name(), args.value(), 0, 1'000'000'000));
+    } else if (args.is("--margin")) {
+      options.margin = edgesOption("--margin", args.value(), 64);
+      if (options.margin < 0) throw cli::Error("--margin: negative");
+    } else if (args.is("--no-neighbours")) {
+      args.noValue();
+      options.neighbours = false;
+    } else if (scene_path.empty() && args.isPlain()) {
+      scene_path = args.current();
+    } else {
+      args.refuseUnknown();
+    }
+  }
+  if (scene_path.empty()) throw cli::Error("no scene given: octopoint-pvs SCENE.json -o CELLS");
+  if (output.empty()) throw cli::Error("no output given: use -o CELLS");
+  cli::checkOutputFile(output);
+  const std::unique_ptr<LoadedScene> scene = loadScene(scene_path);
+  const auto start = std::chrono::steady_clock::now();
+  const CellBuild build = buildCells(scene->models, scene->instances, options);
+  if (build.grid.nx == 0) {
+    throw cli::Error(scene->label + ": the cells' grid over its instances would exceed " +
+                     std::to_string(kMaxCellsPerAxis) + " cells a side or " +
+                     std::to_string(kMaxCells) + " cells: give a larger --cell");
+  }
+  const std::vector<std::uint8_t> bytes = encodeCellTable(build.grid, build.sets);
+  const double seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  cli::writeFileAtomically(output, {reinterpret_cast<const char*>(bytes.data()), bytes.size()});
+  std::size_t total = 0, largest = 0;
+  for (const auto& set : build.sets) {
+    total += set.size();
+    largest = std::max(largest, set.size());
+  }
+  std::printf(
+      "%s: %u x %u cells x %u layers, %llu samples (%llu frames of %dx%d) in %.1f s: sets of %.0f "
+      "of %zu instances on average, largest %zu; %zu bytes -> %s\n",
+      scene->label.c_str(), build.grid.nx, build.grid.nz, build.grid.ny,
+      static_cast<unsigned long long>(build.samples), static_cast<unsigned long long>(build.frames),
+      options.face, options.face, seconds,
+      static_cast<double>(total) / static_cast<double>(build.sets.size()), scene->instances.size(),
+      largest, bytes.size(), output.c_str());
+  return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  return octopoint::cli::runTool("octopoint-pvs", argc, argv, run);
+}
