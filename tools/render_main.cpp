@@ -179,11 +179,10 @@ void checkCombination(const Options& options) {
   }
   if (options.splats == SplatMode::kSmooth &&
       (url || options.fill || options.sheet > 0 || options.perspective.any() ||
-       options.style.style != Style::kColour || !drawsSplats(options.variant))) {
+       !drawsSplats(options.variant))) {
     throw cli::Error(
-        "--splats smooth draws a single orthographic view in colour with fixed_fast or "
-        "fixed_simd: --url, --fill, --sheet, --perspective, --eye, --path, --style and other "
-        "variants do not apply yet");
+        "--splats smooth draws a single orthographic view with fixed_fast or fixed_simd: --url, "
+        "--fill, --sheet, --perspective, --eye, --path and other variants do not apply yet");
   }
   if (!options.list && !options.info && options.output.empty())
     throw cli::Error("no output given: use -o OUT.png");
@@ -388,14 +387,17 @@ int renderSheet(const ModelView& model, const std::string& model_label, const Op
   return 0;
 }
 
-// --splats smooth: the box frame, blended (octopoint/smooth.h), as RGB888.
+// --splats smooth: the box frame, blended (octopoint/smooth.h), in the style, as RGB888.
 void drawSmooth(Variant variant, const LevelView& level, const FrameSetup& setup,
-                const ModelView& model, Framebuffer& frame, std::span<std::uint8_t> rgb) {
-  SmoothSplats smooth(setup);
-  const PaletteRgb palette = paletteOf(model);
-  if (!renderSmooth(variant, level, setup, frame, smooth, palette) ||
-      !smooth.resolveToRgb(frame, palette, kBackground, rgb)) {
+                const ModelView& model, FrameStyler& styler, Framebuffer& frame,
+                std::span<std::uint8_t> rgb) {
+  SmoothSplats smooth(setup.width, setup.height, model);
+  if (!renderSmooth(variant, level, setup, frame, smooth, paletteOf(model)))
     throw cli::Error(std::string("draw refused: ") + describe(checkRender(level, setup, frame)));
+  styler.beginFrame(setup);
+  if (const StyleError error = styler.resolve(frame, rgb, smooth.pixelBlend());
+      error != StyleError::kNone) {
+    throw cli::Error(std::string("style refused: ") + describe(error));
   }
 }
 
@@ -411,7 +413,7 @@ int renderFrame(const ModelView& model, const LevelView& level, FrameStyler& sty
   frame.clear(styler.payload());
   cv::Mat rgb(options.camera.height, options.camera.width, CV_8UC3);
   if (options.splats == SplatMode::kSmooth) {
-    drawSmooth(options.variant, level, setup, model, frame, {rgb.data, rgb.total() * 3});
+    drawSmooth(options.variant, level, setup, model, styler, frame, {rgb.data, rgb.total() * 3});
   } else {
     if (!renderLevel(options.variant, level, setup, frame))
       throw cli::Error(std::string("draw refused: ") + describe(checkRender(level, setup, frame)));
