@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cstring>
 
 #if defined(__x86_64__) && defined(__GNUC__)
 #include <immintrin.h>  // SSE2, which every x86-64 has; AVX2 where the CPU has it
@@ -433,10 +434,10 @@ SmoothSplats::SmoothSplats(std::int32_t width, std::int32_t height, const ModelV
 }
 
 bool SmoothSplats::fits(const FrameSetup& setup, const FrameView& frame) const {
-  return width_ != 0 && frame.width() == width_ && frame.height() == height_ &&
+  return width_ != 0 && frame.width() == width_ && frame.height() <= height_ &&
          (frame.payload() == PixelPayload::kColour || !normal_sums_.empty()) &&
          checkFrameSetup(setup) == RenderError::kNone && setup.width == width_ &&
-         setup.height == height_;
+         setup.height == frame.height();
 }
 
 bool SmoothSplats::begin(const FrameSetup& setup, const FrameView& frame) {
@@ -482,7 +483,7 @@ bool SmoothSplats::accumulate(const LevelView& level, const FrameSetup& setup,
 }
 
 bool SmoothSplats::finish(FrameView& frame) {
-  if (width_ == 0 || frame.width() != width_ || frame.height() != height_) return false;
+  if (width_ == 0 || frame.width() != width_ || frame.height() > height_) return false;
   if (!blended_ || blended_rect_.empty()) return true;
   // Covered pixels lie in the rectangle the box frame drew: the rest is kEmpty.
   const PixelRect& rect = blended_rect_;
@@ -526,8 +527,8 @@ bool SmoothSplats::blend(const LevelView& level, const FrameSetup& setup, FrameV
 
 bool SmoothSplats::resolveToRgb(const FrameView& frame, const PaletteRgb& palette, Rgb background,
                                 std::span<std::uint8_t> rgb) const {
-  if (width_ == 0 || frame.width() != width_ || frame.height() != height_ ||
-      rgb.size() < pixelCount(width_, height_) * 3) {
+  if (width_ == 0 || frame.width() != width_ || frame.height() > height_ ||
+      rgb.size() < pixelCount(width_, frame.height()) * 3) {
     return false;
   }
   const std::span<const std::uint32_t> words = frame.pixels();
@@ -554,7 +555,7 @@ bool SmoothSplats::resolveToRgb(const FrameView& frame, const PaletteRgb& palett
       rgb[3 * at + 2] = colour.b;
     }
   };
-  for (std::int32_t y = 0; y < height_; ++y) {
+  for (std::int32_t y = 0; y < frame.height(); ++y) {
     const std::size_t row_at = static_cast<std::size_t>(y) * width;
     if (!blended_ || y < blended_rect_.y_begin || y >= blended_rect_.y_end) {
       resolveRun(row_at, 0, width_, false);
@@ -567,6 +568,32 @@ bool SmoothSplats::resolveToRgb(const FrameView& frame, const PaletteRgb& palett
   return true;
 }
 
+bool SmoothSplats::resolveToRgb565(const FrameView& frame, const Rgb565Palette& palette,
+                                   std::uint8_t* out) const {
+  if (width_ == 0 || frame.width() != width_ || frame.height() > height_) return false;
+  const std::uint32_t* const words = frame.pixels().data();
+  const std::size_t count = pixelCount(width_, frame.height());
+  if (!blended_ || blended_rect_.empty()) {
+    packedToRgb565(words, count, palette, out);
+    return true;
+  }
+  // In place as packedToRgb565 (`out` may be the words' memory): pixel i's word and sums are read
+  // before its halfword lands in bytes 2i and 2i + 1, which no later pixel's word occupies. Every
+  // covered pixel lies in the blended rectangle (finish), where its colour is the blend's.
+  for (std::size_t i = 0; i < count; ++i) {
+    const std::uint32_t word = words[i];
+    std::uint16_t colour = palette.background;
+    if (word != FrameView::kEmpty) {
+      const std::uint32_t packed = sums_[i].r;
+      colour =
+          toRgb565({static_cast<std::uint8_t>(packed >> 16), static_cast<std::uint8_t>(packed >> 8),
+                    static_cast<std::uint8_t>(packed)});
+    }
+    std::memcpy(out + 2 * i, &colour, 2);
+  }
+  return true;
+}
+
 bool renderSmooth(Variant variant, const LevelView& level, const FrameSetup& setup,
                   FrameView& frame, SmoothSplats& smooth, const PaletteRgb& palette,
                   const std::atomic<bool>* abort) {
@@ -574,7 +601,7 @@ bool renderSmooth(Variant variant, const LevelView& level, const FrameSetup& set
   // where a magnified voxel's other pixels lie.
   if (setup.splat.active() && !drawsSplats(variant)) return false;
   // The frame's payload is the buffers' to check (fits): kColourNormal needs them made for normals.
-  if (smooth.width() != frame.width() || smooth.height() != frame.height()) return false;
+  if (smooth.width() != frame.width() || smooth.height() < frame.height()) return false;
   return renderLevel(variant, level, setup, frame, abort) &&
          smooth.blend(level, setup, frame, palette, abort);
 }

@@ -214,6 +214,9 @@
 //                            28 bytes a pixel where the model has normals: a kColourNormal frame
 //                            also blends them; styler.resolve(frame, rgb, smooth.pixelBlend())
 //                            lights the blended normals in any style.
+//   renderSmoothBands(level, setup, config, index, palette565, colours, buffers, smooth, sink)
+//                            (octopoint/bands.h) renderBands with each band blended: the whole
+//                            frame's blend bit for bit, no margin rows, 16 bytes a band pixel.
 //   renderSmooth(variant, level, setup, frame, smooth, palette)
 //                            renderLevel, then blend. paletteOf(model): the 256 colours.
 //

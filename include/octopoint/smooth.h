@@ -61,8 +61,9 @@ class SmoothSplats {
   // And x, y, z sums of the normals, 32 bits each.
   static constexpr std::size_t kBytesPerPixelWithNormals = 28;
 
-  // For frames of width x height pixels, each 1..kMaxViewportSide; any other size makes buffers
-  // that refuse every frame.
+  // For frames of width x height pixels, each 1..kMaxViewportSide (or as wide and fewer rows: the
+  // bands of a band renderer, octopoint/bands.h); any other size makes buffers that refuse every
+  // frame.
   SmoothSplats(std::int32_t width, std::int32_t height);
   explicit SmoothSplats(const FrameSetup& setup) : SmoothSplats(setup.width, setup.height) {}
   // The same, and where `model` has normals, buffers that also blend them: a frame cleared with
@@ -96,6 +97,11 @@ class SmoothSplats {
   // the buffers' size: otherwise nothing is written and the result is false.
   [[nodiscard]] bool resolveToRgb(const FrameView& frame, const PaletteRgb& palette, Rgb background,
                                   std::span<std::uint8_t> rgb) const;
+  // The same in RGB565 (octopoint/framebuffer.h, packedToRgb565: halfword i into bytes 2i and
+  // 2i + 1 of `out`, which may be the frame's own words): blended colours rounded down to 5, 6 and
+  // 5 bits, palette.background where empty; after a set-up without splats, packedToRgb565's.
+  [[nodiscard]] bool resolveToRgb565(const FrameView& frame, const Rgb565Palette& palette,
+                                     std::uint8_t* out) const;
 
   // The last blended frame's own colours (and, in a kColourNormal frame, normals in view axes) for
   // FrameStyler::resolve; empty (the palettes') after a set-up without splats, where the frame is
