@@ -178,10 +178,10 @@ void checkCombination(const Options& options) {
         "--url, --sheet or perspective option");
   }
   if (options.splats == SplatMode::kSmooth &&
-      (url || options.fill || options.sheet > 0 || options.perspective.any() ||
+      (options.fill || options.sheet > 0 || options.perspective.any() ||
        !drawsSplats(options.variant))) {
     throw cli::Error(
-        "--splats smooth draws a single orthographic view with fixed_fast or fixed_simd: --url, "
+        "--splats smooth draws a single orthographic view with fixed_fast or fixed_simd: "
         "--fill, --sheet, --perspective, --eye, --path and other variants do not apply yet");
   }
   if (!options.list && !options.info && options.output.empty())
@@ -299,8 +299,9 @@ int renderUrl(const Options& options) {
   cli::checkOutputFile(
       options.output);  // before fetching: a FIFO, a device or a directory is refused
   std::string report;
-  const cv::Mat image = renderFromUrl(options.source.url, options.camera, options.variant,
-                                      options.fill, kBackground, options.fetch, &report);
+  const cv::Mat image =
+      renderFromUrl(options.source.url, options.camera, options.variant, options.fill, kBackground,
+                    options.fetch, &report, options.splats);
   writePng(options.output, image);
   std::printf("%s: %s -> %s (%dx%d)\n", options.source.url.c_str(), report.c_str(),
               options.output.c_str(), options.camera.width, options.camera.height);
@@ -318,7 +319,7 @@ int renderChunked(const Options& options, LoadedModel& loaded) {
   ProgressiveDrawStats stats;
   loaded.chunked->setPointBudget(options.fetch.point_budget);
   writePng(options.output, renderChunkedView(*loaded.chunked, options.camera, options.variant,
-                                             options.fill, kBackground, &stats));
+                                             options.fill, kBackground, &stats, options.splats));
   std::printf("%s: chunked, depth %d, %llu points%s -> %s (%dx%d)\n", loaded.label.c_str(),
               stats.drawn_depth, static_cast<unsigned long long>(stats.points),
               overBudgetNote(stats).c_str(), options.output.c_str(), options.camera.width,

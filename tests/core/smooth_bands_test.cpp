@@ -1,6 +1,7 @@
 // Smooth splats band by band (octopoint/bands.h, renderSmoothBands): the concatenated RGB565 bands
 // are the whole frame's blend bit for bit, in bands of 1, 7, 8 and 24 rows, with and without the
-// subtree index, and the box bands where voxels are at most a pixel; what does not apply is refused.
+// subtree index, and the box bands where voxels are at most a pixel; what does not apply is
+// refused.
 #include <gtest/gtest.h>
 
 #include <array>
@@ -74,8 +75,8 @@ BandError drawSmoothBands(Variant variant, const FrameSetup& setup, std::int32_t
   const BandConfig config{variant, rows, false, Rgb{}};
   std::vector<std::uint32_t> buffer(bandBufferWords(setup.width, config));
   SmoothSplats smooth(setup.width, rows);
-  return renderSmoothBands(*model.levelOfDepth(8), setup, config, index, palette,
-                           paletteOf(model), {buffer, {}, {}}, smooth, out.sink());
+  return renderSmoothBands(*model.levelOfDepth(8), setup, config, index, palette, paletteOf(model),
+                           {buffer, {}, {}}, smooth, out.sink());
 }
 
 std::vector<Variant> smoothBandVariants() {
@@ -140,10 +141,10 @@ TEST(SmoothBands, WhatDoesNotApplyIsRefused) {
     return renderSmoothBands(level, setup, config, BandIndex{}, palette, paletteOf(model),
                              {buffer, {}, history}, smooth, out.sink());
   };
-  EXPECT_EQ(refuse(Variant::kFixedFast, true, 64, 8), BandError::kRefused);   // hole filling
-  EXPECT_EQ(refuse(Variant::kFixedDelta, false, 64, 8), BandError::kRefused); // no splats
-  EXPECT_EQ(refuse(Variant::kFixedFast, false, 64, 7), BandError::kRefused);  // a band too high
-  EXPECT_EQ(refuse(Variant::kFixedFast, false, 63, 8), BandError::kRefused);  // another width
+  EXPECT_EQ(refuse(Variant::kFixedFast, true, 64, 8), BandError::kRefused);    // hole filling
+  EXPECT_EQ(refuse(Variant::kFixedDelta, false, 64, 8), BandError::kRefused);  // no splats
+  EXPECT_EQ(refuse(Variant::kFixedFast, false, 64, 7), BandError::kRefused);   // a band too high
+  EXPECT_EQ(refuse(Variant::kFixedFast, false, 63, 8), BandError::kRefused);   // another width
   EXPECT_EQ(refuse(Variant::kFixedFast, false, 64, 8), BandError::kNone);
   EXPECT_EQ(out.rgb.size(), std::size_t{64 * 48});  // the last call only
 }
