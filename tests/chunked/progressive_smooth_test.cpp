@@ -45,10 +45,10 @@ TEST(ProgressiveSmooth, HoldingEverythingBlendsTheWholeModelStreamsFrame) {
   const PaletteRgb palette = smoothProgressivePalette();
   ProgressiveFrame snapshot;
   int blended = 0;
-  for (const Camera& camera :
-       {octopoint::testing::makeCamera(30, -20, 3, 320, 240),
-        octopoint::testing::makeCamera(15, 5, 6, 320, 240, 40, -30),
-        octopoint::testing::makeCamera(-60, 10, 4, 200, 150), octopoint::testing::makeCamera(0, 0, 1, 320, 240)}) {
+  for (const Camera& camera : {octopoint::testing::makeCamera(30, -20, 3, 320, 240),
+                               octopoint::testing::makeCamera(15, 5, 6, 320, 240, 40, -30),
+                               octopoint::testing::makeCamera(-60, 10, 4, 200, 150),
+                               octopoint::testing::makeCamera(0, 0, 1, 320, 240)}) {
     ASSERT_TRUE(model->viewComplete(camera));
     const int wanted = *model->wantedDepth(camera);
     const auto level =
@@ -64,8 +64,8 @@ TEST(ProgressiveSmooth, HoldingEverythingBlendsTheWholeModelStreamsFrame) {
     expected.clear();
     SmoothSplats whole(setup);
     ASSERT_TRUE(renderSmooth(Variant::kFixedFast,
-                             LevelView{level->depth, level->nodes, level->leaves}, setup,
-                             expected, whole, palette));
+                             LevelView{level->depth, level->nodes, level->leaves}, setup, expected,
+                             whole, palette));
     std::vector<std::uint8_t> expected_rgb(bytes), rgb(bytes);
     ASSERT_TRUE(whole.resolveToRgb(expected, palette, Rgb{}, expected_rgb));
 
