@@ -201,11 +201,27 @@ BandError checkBands(const LevelView& level, const FrameSetup& setup, const Band
   return BandError::kNone;
 }
 
-}  // namespace
+// What a smooth band frame blends with (renderSmoothBands).
+struct SmoothBands {
+  SmoothSplats& splats;
+  const PaletteRgb& colours;
+};
 
-BandError renderBands(const LevelView& level, const FrameSetup& setup, const BandConfig& config,
-                      const BandIndex& index, const Rgb565Palette& palette,
-                      const BandBuffers& buffers, const BandSink& sink) {
+// Blends band rows [y0, y0 + window.height()) of `setup`'s frame, drawn into `window`, and leaves
+// them in RGB565 at `out`. Not inlined: its set-up (1.6 KB) is then on the stack only for smooth
+// bands, not in every band renderer's frame on a microcontroller.
+[[gnu::noinline]] bool blendBand(const LevelView& level, const FrameSetup& setup, std::int32_t y0,
+                                 FrameView& window, const Rgb565Palette& palette,
+                                 const SmoothBands& smooth, std::uint8_t* out) {
+  FrameSetup band;
+  return bandFrameSetup(setup, y0, window.height(), &band) == CameraError::kNone &&
+         smooth.splats.blend(level, band, window, smooth.colours) &&
+         smooth.splats.resolveToRgb565(window, palette, out);
+}
+
+BandError drawBands(const LevelView& level, const FrameSetup& setup, const BandConfig& config,
+                    const BandIndex& index, const Rgb565Palette& palette,
+                    const BandBuffers& buffers, const BandSink& sink, const SmoothBands* smooth) {
   if (const BandError error = checkBands(level, setup, config, index, buffers, sink);
       error != BandError::kNone) {
     return error;
@@ -271,11 +287,38 @@ BandError renderBands(const LevelView& level, const FrameSetup& setup, const Ban
     }
     const std::size_t pixels = static_cast<std::size_t>(rows) * static_cast<std::size_t>(width);
     const std::span<std::uint8_t> rgb565 = bytesOf(buffer).first(pixels * 2);
-    packedToRgb565(buffer.data() + static_cast<std::ptrdiff_t>(first_row) * width, pixels, palette,
-                   rgb565.data());
+    if (smooth != nullptr) {  // no margin: the window is the band
+      if (!blendBand(level, setup, y0, window, palette, *smooth, rgb565.data()))
+        return BandError::kRefused;  // cannot happen: the set-ups and sizes were checked
+    } else {
+      packedToRgb565(buffer.data() + static_cast<std::ptrdiff_t>(first_row) * width, pixels,
+                     palette, rgb565.data());
+    }
     sink.flush(sink.user, y0, rows, rgb565);
   }
   return BandError::kNone;
+}
+
+}  // namespace
+
+BandError renderBands(const LevelView& level, const FrameSetup& setup, const BandConfig& config,
+                      const BandIndex& index, const Rgb565Palette& palette,
+                      const BandBuffers& buffers, const BandSink& sink) {
+  return drawBands(level, setup, config, index, palette, buffers, sink, nullptr);
+}
+
+BandError renderSmoothBands(const LevelView& level, const FrameSetup& setup,
+                            const BandConfig& config, const BandIndex& index,
+                            const Rgb565Palette& palette, const PaletteRgb& colours,
+                            const BandBuffers& buffers, SmoothSplats& smooth,
+                            const BandSink& sink) {
+  // Pass 1 needs the footprints where there are splats, as renderSmooth does.
+  if (config.fill || (setup.splat.active() && !drawsSplats(config.variant)) ||
+      smooth.width() != setup.width || smooth.height() < std::min(config.band_rows, setup.height)) {
+    return BandError::kRefused;
+  }
+  const SmoothBands bands{smooth, colours};
+  return drawBands(level, setup, config, index, palette, buffers, sink, &bands);
 }
 
 }  // namespace octopoint

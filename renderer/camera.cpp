@@ -7,6 +7,7 @@
 
 #include "octopoint/fixed.h"
 #include "octopoint/framebuffer.h"
+#include "renderer/integer_square_root.h"
 
 namespace octopoint {
 
@@ -60,23 +61,6 @@ CameraError checkCamera(const Camera& camera, int depth, int fraction_bits) {
   }
   if (depth < 1 || depth > kMaxRenderDepth) return CameraError::kBadDepth;
   return CameraError::kNone;
-}
-
-// floor(sqrt(value)), bit by bit: integer only.
-std::uint64_t integerSquareRoot(std::uint64_t value) {
-  std::uint64_t root = 0;
-  std::uint64_t bit = std::uint64_t{1} << 62;
-  while (bit > value) bit >>= 2;
-  while (bit != 0) {
-    if (value >= root + bit) {
-      value -= root + bit;
-      root = (root >> 1) + bit;
-    } else {
-      root >>= 1;
-    }
-    bit >>= 2;
-  }
-  return root;
 }
 
 }  // namespace

@@ -58,6 +58,8 @@ void FrameStyler::fillColours() {
   }
   pass_.background = options_.style == Style::kLines ? kPaper : packed(options_.background);
   pass_.intensity = shading_.data();
+  pass_.to_light = lightInView(options_.light);
+  pass_.mix = options_.light.headlight ? kHeadlightMix : kLightMix;
 }
 
 bool FrameStyler::lit() const {
@@ -89,18 +91,22 @@ void FrameStyler::beginPerspectiveFrame(const Rotation& world_to_camera, std::in
 }
 
 StyleError FrameStyler::resolveRows(const FrameView& frame, std::int32_t first_row,
-                                    std::int32_t end_row, std::span<std::uint8_t> rgb) const {
+                                    std::int32_t end_row, std::span<std::uint8_t> rgb,
+                                    const PixelBlend& blend) const {
   if (first_row < 0 || end_row > frame.height() || first_row > end_row ||
       rgb.size() < static_cast<std::size_t>(end_row - first_row) *
                        static_cast<std::size_t>(frame.width()) * 3) {
     return StyleError::kFrameSizeMismatch;
   }
+  StylePass pass = pass_;
+  // A scan without colour is lit in one grey (fillColours), blended or not.
+  const bool grey = model_.colourIsSynthetic() && lit();
+  pass.blend = {grey ? nullptr : blend.colour, blend.colour_stride, lit() ? blend.normal : nullptr};
   if (options_.style == Style::kColour) {
-    colourRows(pass_, frame, first_row, end_row, rgb);
+    colourRows(pass, frame, first_row, end_row, rgb);
     return StyleError::kNone;
   }
   if (frame.payload() != PixelPayload::kColourNormal) return StyleError::kFrameWithoutNormals;
-  StylePass pass = pass_;
   pass.rule = perspective_focal_q16_ != 0
                   ? perspectiveEdgeRule(perspective_focal_q16_, &creases_, &slopes_)
                   : edgeRuleFor(setup_, frame.payload(), &creases_, &slopes_);

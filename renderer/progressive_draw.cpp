@@ -51,6 +51,23 @@ struct PieceDrawer {
   }
 };
 
+// Adds each piece to a smooth frame (ProgressiveModel::drawSmooth) with the set-up draw gave it.
+struct PieceBlender {
+  SmoothSplats& smooth;
+  FrameView& frame;
+  const PaletteRgb& palette;
+  const std::atomic<bool>* abort;
+  bool failed = false;
+
+  void operator()(FrameSetup& setup, const Vec3& centre, std::span<const std::uint8_t> nodes,
+                  std::span<const std::uint8_t> leaves, bool) {
+    if (nodes.empty() || failed) return;
+    setup.root = centre;
+    failed =
+        !smooth.accumulate(LevelView{setup.depth, nodes, leaves}, setup, frame, palette, abort);
+  }
+};
+
 // Only counts: whether any piece is coarser than the view needs.
 struct PieceCounter {
   ProgressiveDrawStats stats;
@@ -295,6 +312,29 @@ bool ProgressiveModel::draw(ProgressiveFrame& snapshot, const Camera& camera, Va
     stats->drawn_depth = levelDepth(snapshot.setups_.drawn_level);
   }
   return !drawer.aborted;
+}
+
+bool ProgressiveModel::drawSmooth(ProgressiveFrame& snapshot, const Camera& camera, Variant variant,
+                                  FrameView& frame, SmoothSplats& smooth, const PaletteRgb& palette,
+                                  ProgressiveDrawStats* stats, const std::atomic<bool>* abort,
+                                  int coarser_levels) const {
+  if (!draw(snapshot, camera, variant, frame, stats, abort, coarser_levels)) return false;
+  // Whether the frame blends follows the depth drawn (the whole frame's set-up at that depth);
+  // pieces drawn coarser blend with their own, wider kernel.
+  const FrameSetup& drawn =
+      snapshot.setups_.full[static_cast<std::size_t>(snapshot.setups_.drawn_level)];
+  if (drawn.splat.active() && !drawsSplats(variant)) return false;
+  if (!smooth.begin(drawn, frame)) return false;
+  PieceBlender blender{smooth, frame, palette, abort};
+  visitPieces(snapshot, 0, 0, blender);
+  return !blender.failed && smooth.finish(frame);
+}
+
+bool ProgressiveModel::drawSmooth(const Camera& camera, Variant variant, FrameView& frame,
+                                  SmoothSplats& smooth, const PaletteRgb& palette,
+                                  ProgressiveDrawStats* stats) {
+  snapshot(own_frame_);
+  return drawSmooth(own_frame_, camera, variant, frame, smooth, palette, stats);
 }
 
 bool ProgressiveModel::viewComplete(const Camera& camera) {

@@ -33,6 +33,15 @@ std::int32_t weighted(std::int32_t cosine_q28, std::int32_t weight_q8) {
          14;  // Q1.14 x Q8 = Q9.22 -> Q8
 }
 
+// A normal's intensity (Q8) from its cosines (Q2.28) with the viewer and the light: two-sided,
+// a normal facing away lit as if it faced the viewer.
+std::uint16_t intensityOf(std::int32_t facing, std::int32_t lit, const LightMix& mix) {
+  const std::int32_t diffuse = facing >= 0 ? lit : -lit;
+  const std::int32_t value = mix.ambient + weighted(diffuse, mix.diffuse) +
+                             weighted(facing >= 0 ? facing : -facing, mix.headlight);
+  return static_cast<std::uint16_t>(std::min(value, kFullIntensity));
+}
+
 }  // namespace
 
 DirectionQ14 lightInView(const Light& light) {
@@ -42,6 +51,14 @@ DirectionQ14 lightInView(const Light& light) {
                                                     -mulQ30(cosQ30(light.azimuth), cos_elevation)};
   const auto q14 = [](std::int32_t v) { return (v + (1 << 15)) >> 16; };
   return {q14(toward_light[0]), q14(toward_light[1]), q14(toward_light[2])};
+}
+
+std::uint16_t intensityInView(const DirectionQ14& normal, const DirectionQ14& to_light,
+                              const LightMix& mix) {
+  // As ShadingTable::build, whose to_viewer is (0, 0, -1) in view axes: facing = -z (Q2.28).
+  const std::int32_t facing = -normal.z * (1 << 14);
+  const std::int32_t lit = normal.x * to_light.x + normal.y * to_light.y + normal.z * to_light.z;
+  return intensityOf(facing, lit, mix);
 }
 
 void ShadingTable::build(const ModelView& model, const Rotation& model_to_view,
@@ -55,13 +72,8 @@ void ShadingTable::build(const ModelView& model, const Rotation& model_to_view,
   intensity_.fill(0);
   for (int i = 0; i < model.normalCount(); ++i) {
     const NormalQ14 n = model.normal(i);
-    const std::int32_t facing = dotQ28(n, to_viewer);
-    const std::int32_t lit = dotQ28(n, to_light);
-    const std::int32_t diffuse = facing >= 0 ? lit : -lit;  // two-sided
-    const std::int32_t value = mix.ambient + weighted(diffuse, mix.diffuse) +
-                               weighted(facing >= 0 ? facing : -facing, mix.headlight);
     intensity_[static_cast<std::size_t>(i)] =
-        static_cast<std::uint16_t>(std::min(value, kFullIntensity));
+        intensityOf(dotQ28(n, to_viewer), dotQ28(n, to_light), mix);
   }
 }
 

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cstring>
 
 #if defined(__x86_64__) && defined(__GNUC__)
 #include <immintrin.h>  // SSE2, which every x86-64 has; AVX2 where the CPU has it
@@ -12,16 +13,11 @@
 #include "octopoint/smooth.h"
 #include "renderer/bit_scan.h"
 #include "renderer/decode_algorithms.h"
+#include "renderer/smooth_normals.h"
 #include "renderer/subtree_clip.h"
 
 namespace octopoint {
 namespace {
-
-constexpr std::array kModes = {
-    SplatModeInfo{SplatMode::kBox, "box", "each magnified voxel a flat rectangle of its colour"},
-    SplatModeInfo{SplatMode::kSmooth, "smooth",
-                  "magnified voxels blended with their neighbours, round silhouettes"},
-};
 
 // The kernel's table: the weight at a distance of i / kKernelSteps of the kernel's radius, Q8
 // (256 at the centre, falling to 1 at the last step). The cubic 1 - 3t^2 + 2t^3 sums to one
@@ -62,13 +58,23 @@ constexpr std::uint32_t kCoverWeight = 1024;
 // within a kernel's reach and the depth tolerance are a few dozen.
 constexpr int kProductShift = 4;
 
+// What a walk blends of the leaves' normals: their indices, the palette turned for the frame, and
+// the pixels' sums.
+struct NormalBlend {
+  const std::uint8_t* leaf_normals = nullptr;  // one index per leaf; nullptr: no normals blended
+  std::array<BlendNormal, 256> turned{};
+  DirectionQ14* sums = nullptr;
+};
+
 class BlendWalk {
  public:
   BlendWalk(const LevelView& level, const FrameSetup& setup, const FrameView& frame,
             SmoothSplats::Sums* sums, const PaletteRgb& palette, std::uint16_t* column_weight,
-            std::uint16_t* row_weight, const std::atomic<bool>* abort)
+            std::uint16_t* row_weight, const NormalBlend& normals, const std::atomic<bool>* abort)
       : node_(level.nodes.data()),
         leaf_(level.leaves.data()),
+        first_leaf_(level.leaves.data()),
+        normals_(normals),
         setup_(setup),
         words_(frame.pixels().data()),
         sums_(sums),
@@ -123,7 +129,7 @@ class BlendWalk {
     unsigned mask = *node_++;
     const auto& offsets = setup_.child_offset[static_cast<std::size_t>(level)];
     if (level + 1 == setup_.depth) {
-      for (; mask != 0; mask &= mask - 1) add(centre + offsets[lowestChild(mask)], *leaf_++);
+      for (; mask != 0; mask &= mask - 1) add(centre + offsets[lowestChild(mask)], leaf_++);
       return;
     }
     for (; mask != 0; mask &= mask - 1) visit(level + 1, centre + offsets[lowestChild(mask)]);
@@ -151,7 +157,7 @@ class BlendWalk {
     return {begin, end};
   }
 
-  void add(const Vec3& p, std::uint8_t colour_index) {
+  void add(const Vec3& p, const std::uint8_t* leaf_at) {
     const Span columns = weigh(p.x, radius_x_, inverse_x_, setup_.width, column_weight_);
     if (columns.begin >= columns.end) return;
     const Span rows = weigh(p.y, radius_y_, inverse_y_, setup_.height, row_weight_);
@@ -160,7 +166,7 @@ class BlendWalk {
         static_cast<std::size_t>(rows.begin) * width + static_cast<std::size_t>(columns.begin);
     const LeafReach leaf{setup_.depthKey(p.z),
                          tolerance_,
-                         palette_[colour_index],
+                         palette_[*leaf_at],
                          column_weight_,
                          row_weight_,
                          static_cast<std::size_t>(columns.end - columns.begin),
@@ -168,6 +174,12 @@ class BlendWalk {
                          words_ + first,
                          sums_ + first,
                          width};
+    if (normals_.leaf_normals != nullptr) {
+      const auto index = static_cast<std::size_t>(leaf_at - first_leaf_);
+      addWithNormal(leaf, normals_.turned[normals_.leaf_normals[index]], normals_.turned,
+                    normals_.sums + first);
+      return;
+    }
     std::size_t done = 0;  // the columns of every row the vector steps did
 #ifdef OCTOPOINT_SMOOTH_SSE2
     if (leaf.columns >= 4) done = avx2_ ? addVectorsAvx2(leaf) : addVectorsSse2(leaf);
@@ -209,6 +221,41 @@ class BlendWalk {
         sum.g += weight * leaf.colour.g;
         sum.b += weight * leaf.colour.b;
         sum.weight += weight;
+      }
+    }
+  }
+
+  // addScalar for a frame that carries normals (PixelPayload::kColourNormal), whose words keep the
+  // depth key's top 16 bits: the tolerance in those units, rounded up; the leaf's normal (view
+  // axes, Q1.10) added with the same weight as its colour, turned to the side of the pixel's own
+  // (its word's) normal: where a surface behind lies within the tolerance (a sphere's far side
+  // near its outline), its normals, turned toward the viewer, would otherwise cancel the near
+  // side's across the screen and light the outline as if it faced the viewer. One pixel at a
+  // time: styled close-ups are the viewer's and octopoint-render's, not the bare colour frames
+  // the vector steps serve.
+  static void addWithNormal(const LeafReach& leaf, const BlendNormal& normal,
+                            const std::array<BlendNormal, 256>& turned, DirectionQ14* normal_sums) {
+    const std::uint32_t key = leaf.key >> 8, tolerance = (leaf.tolerance + 255) >> 8;
+    for (std::size_t r = 0; r < leaf.rows; ++r) {
+      const std::uint32_t row_weight = leaf.row_weight[r];
+      const std::size_t at = r * leaf.stride;
+      for (std::size_t i = 0; i < leaf.columns; ++i) {
+        const std::uint32_t word = leaf.words[at + i];
+        if (word == FrameView::kEmpty || key - (word >> 16) + tolerance > 2 * tolerance) continue;
+        const std::uint32_t weight = (row_weight * leaf.column_weight[i]) >> kProductShift;  // Q12
+        SmoothSplats::Sums& sum = leaf.sums[at + i];
+        sum.r += weight * leaf.colour.r;
+        sum.g += weight * leaf.colour.g;
+        sum.b += weight * leaf.colour.b;
+        sum.weight += weight;
+        DirectionQ14& n = normal_sums[at + i];
+        const BlendNormal& own = turned[FrameView::normalIndexOf(word)];
+        const std::int32_t agree = own.x * normal.x + own.y * normal.y + own.z * normal.z;
+        const auto w =
+            agree < 0 ? -static_cast<std::int32_t>(weight) : static_cast<std::int32_t>(weight);
+        n.x += w * normal.x;
+        n.y += w * normal.y;
+        n.z += w * normal.z;
       }
     }
   }
@@ -322,6 +369,8 @@ class BlendWalk {
 
   const std::uint8_t* node_;
   const std::uint8_t* leaf_;
+  const std::uint8_t* const first_leaf_;  // the level's first leaf: a leaf's index, for its normal
+  const NormalBlend& normals_;
   const FrameSetup& setup_;
   const std::uint32_t* words_;
   SmoothSplats::Sums* sums_;
@@ -370,29 +419,6 @@ std::uint32_t packRgb(std::uint32_t r, std::uint32_t g, std::uint32_t b) {
 
 }  // namespace
 
-std::span<const SplatModeInfo> allSplatModes() { return kModes; }
-
-std::optional<SplatMode> splatModeFromName(std::string_view name) {
-  for (const SplatModeInfo& info : kModes) {
-    if (info.name == name) return info.mode;
-  }
-  return std::nullopt;
-}
-
-std::string_view splatModeName(SplatMode mode) {
-  for (const SplatModeInfo& info : kModes) {
-    if (info.mode == mode) return info.name;
-  }
-  return {};
-}
-
-PaletteRgb paletteOf(const ModelView& model) {
-  PaletteRgb palette{};
-  for (int i = 0; i < model.paletteCount(); ++i)
-    palette[static_cast<std::size_t>(i)] = model.paletteColour(i);
-  return palette;
-}
-
 SmoothSplats::SmoothSplats(std::int32_t width, std::int32_t height)
     : width_(validSize(width, height) ? width : 0),
       height_(validSize(width, height) ? height : 0),
@@ -400,10 +426,20 @@ SmoothSplats::SmoothSplats(std::int32_t width, std::int32_t height)
       column_weight_(static_cast<std::size_t>(width_)),
       row_weight_(static_cast<std::size_t>(height_)) {}
 
+SmoothSplats::SmoothSplats(std::int32_t width, std::int32_t height, const ModelView& model)
+    : SmoothSplats(width, height) {
+  if (width_ == 0 || !model.hasNormals()) return;
+  normal_count_ = model.normalCount();
+  for (int i = 0; i < normal_count_; ++i)
+    normal_palette_[static_cast<std::size_t>(i)] = model.normal(i);
+  normal_sums_.resize(sums_.size());
+}
+
 bool SmoothSplats::fits(const FrameSetup& setup, const FrameView& frame) const {
-  return width_ != 0 && frame.width() == width_ && frame.height() == height_ &&
-         frame.payload() == PixelPayload::kColour && checkFrameSetup(setup) == RenderError::kNone &&
-         setup.width == width_ && setup.height == height_;
+  return width_ != 0 && frame.width() == width_ && frame.height() <= height_ &&
+         (frame.payload() == PixelPayload::kColour || !normal_sums_.empty()) &&
+         checkFrameSetup(setup) == RenderError::kNone && setup.width == width_ &&
+         setup.height == frame.height();
 }
 
 bool SmoothSplats::begin(const FrameSetup& setup, const FrameView& frame) {
@@ -416,12 +452,18 @@ bool SmoothSplats::begin(const FrameSetup& setup, const FrameView& frame) {
   blended_ = setup.splat.active() &&
              ((voxelEdgeOnScreen(setup) * static_cast<std::uint64_t>(setup.sample_reach)) >> 4) >
                  (std::uint64_t{1} << setup.fraction_bits);
+  blends_normals_ = blended_ && frame.payload() == PixelPayload::kColourNormal;
   blended_rect_ = blended_ ? frame.drawnRect() : PixelRect{};
   if (blended_rect_.empty()) return true;
   const auto width = static_cast<std::size_t>(width_);
   for (std::int32_t y = blended_rect_.y_begin; y < blended_rect_.y_end; ++y) {
-    Sums* const row = sums_.data() + static_cast<std::size_t>(y) * width;
-    std::fill(row + blended_rect_.x_begin, row + blended_rect_.x_end, Sums{0, 0, 0, 0});
+    const std::size_t row = static_cast<std::size_t>(y) * width;
+    const auto begin = static_cast<std::ptrdiff_t>(row) + blended_rect_.x_begin;
+    const auto end = static_cast<std::ptrdiff_t>(row) + blended_rect_.x_end;
+    std::fill(sums_.begin() + begin, sums_.begin() + end, Sums{0, 0, 0, 0});
+    if (blends_normals_) {
+      std::fill(normal_sums_.begin() + begin, normal_sums_.begin() + end, DirectionQ14{});
+    }
   }
   return true;
 }
@@ -431,13 +473,22 @@ bool SmoothSplats::accumulate(const LevelView& level, const FrameSetup& setup,
                               const std::atomic<bool>* abort) {
   if (!fits(setup, frame) || checkRender(level, setup, frame) != RenderError::kNone) return false;
   if (!blended_ || blended_rect_.empty()) return true;  // nothing to blend
+  NormalBlend normals;
+  if (blends_normals_) {
+    normals.leaf_normals = level.normals.data();  // one per leaf: checkRender
+    turnNormalsToViewer(
+        normal_palette_, normal_count_,
+        rotationFromYawPitchRoll(setup.camera.yaw, setup.camera.pitch, setup.camera.roll),
+        normals.turned);
+    normals.sums = normal_sums_.data();
+  }
   return BlendWalk(level, setup, frame, sums_.data(), palette, column_weight_.data(),
-                   row_weight_.data(), abort)
+                   row_weight_.data(), normals, abort)
       .run();
 }
 
 bool SmoothSplats::finish(FrameView& frame) {
-  if (width_ == 0 || frame.width() != width_ || frame.height() != height_) return false;
+  if (width_ == 0 || frame.width() != width_ || frame.height() > height_) return false;
   if (!blended_ || blended_rect_.empty()) return true;
   // Covered pixels lie in the rectangle the box frame drew: the rest is kEmpty.
   const PixelRect& rect = blended_rect_;
@@ -457,9 +508,20 @@ bool SmoothSplats::finish(FrameView& frame) {
       const Reciprocal weight(sum.weight);
       sum.r = packRgb(weight.divide(sum.r + half), weight.divide(sum.g + half),
                       weight.divide(sum.b + half));
+      if (blends_normals_) {
+        DirectionQ14& n = normal_sums_[row + static_cast<std::size_t>(x)];
+        n = unitDirection(n.x, n.y, n.z);
+      }
     }
   }
   return true;
+}
+
+PixelBlend SmoothSplats::pixelBlend() const {
+  if (!blended_ || blended_rect_.empty()) return {};
+  static_assert(sizeof(Sums) == 4 * sizeof(std::uint32_t));
+  return {&sums_.front().r, sizeof(Sums) / sizeof(std::uint32_t),
+          blends_normals_ ? normal_sums_.data() : nullptr};
 }
 
 bool SmoothSplats::blend(const LevelView& level, const FrameSetup& setup, FrameView& frame,
@@ -470,8 +532,8 @@ bool SmoothSplats::blend(const LevelView& level, const FrameSetup& setup, FrameV
 
 bool SmoothSplats::resolveToRgb(const FrameView& frame, const PaletteRgb& palette, Rgb background,
                                 std::span<std::uint8_t> rgb) const {
-  if (width_ == 0 || frame.width() != width_ || frame.height() != height_ ||
-      rgb.size() < pixelCount(width_, height_) * 3) {
+  if (width_ == 0 || frame.width() != width_ || frame.height() > height_ ||
+      rgb.size() < pixelCount(width_, frame.height()) * 3) {
     return false;
   }
   const std::span<const std::uint32_t> words = frame.pixels();
@@ -498,7 +560,7 @@ bool SmoothSplats::resolveToRgb(const FrameView& frame, const PaletteRgb& palett
       rgb[3 * at + 2] = colour.b;
     }
   };
-  for (std::int32_t y = 0; y < height_; ++y) {
+  for (std::int32_t y = 0; y < frame.height(); ++y) {
     const std::size_t row_at = static_cast<std::size_t>(y) * width;
     if (!blended_ || y < blended_rect_.y_begin || y >= blended_rect_.y_end) {
       resolveRun(row_at, 0, width_, false);
@@ -511,16 +573,40 @@ bool SmoothSplats::resolveToRgb(const FrameView& frame, const PaletteRgb& palett
   return true;
 }
 
+bool SmoothSplats::resolveToRgb565(const FrameView& frame, const Rgb565Palette& palette,
+                                   std::uint8_t* out) const {
+  if (width_ == 0 || frame.width() != width_ || frame.height() > height_) return false;
+  const std::uint32_t* const words = frame.pixels().data();
+  const std::size_t count = pixelCount(width_, frame.height());
+  if (!blended_ || blended_rect_.empty()) {
+    packedToRgb565(words, count, palette, out);
+    return true;
+  }
+  // In place as packedToRgb565 (`out` may be the words' memory): pixel i's word and sums are read
+  // before its halfword lands in bytes 2i and 2i + 1, which no later pixel's word occupies. Every
+  // covered pixel lies in the blended rectangle (finish), where its colour is the blend's.
+  for (std::size_t i = 0; i < count; ++i) {
+    const std::uint32_t word = words[i];
+    std::uint16_t colour = palette.background;
+    if (word != FrameView::kEmpty) {
+      const std::uint32_t packed = sums_[i].r;
+      colour =
+          toRgb565({static_cast<std::uint8_t>(packed >> 16), static_cast<std::uint8_t>(packed >> 8),
+                    static_cast<std::uint8_t>(packed)});
+    }
+    std::memcpy(out + 2 * i, &colour, 2);
+  }
+  return true;
+}
+
 bool renderSmooth(Variant variant, const LevelView& level, const FrameSetup& setup,
                   FrameView& frame, SmoothSplats& smooth, const PaletteRgb& palette,
                   const std::atomic<bool>* abort) {
   // Pass 1 needs the footprints: a variant that sets one pixel per leaf finds no nearest depth
   // where a magnified voxel's other pixels lie.
   if (setup.splat.active() && !drawsSplats(variant)) return false;
-  if (frame.payload() != PixelPayload::kColour || smooth.width() != frame.width() ||
-      smooth.height() != frame.height()) {
-    return false;
-  }
+  // The frame's payload is the buffers' to check (fits): kColourNormal needs them made for normals.
+  if (smooth.width() != frame.width() || smooth.height() < frame.height()) return false;
   return renderLevel(variant, level, setup, frame, abort) &&
          smooth.blend(level, setup, frame, palette, abort);
 }

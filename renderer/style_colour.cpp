@@ -10,9 +10,9 @@ void colourRows(const StylePass& pass, const FrameView& frame, std::int32_t firs
       frame.pixels().data() + static_cast<std::ptrdiff_t>(first_row) * width;
   const std::uint32_t* const end =
       frame.pixels().data() + static_cast<std::ptrdiff_t>(end_row) * width;
-  for (std::uint8_t* out = rgb.data(); word != end; ++word, out += 3) {
-    storeRgb(out, *word == Framebuffer::kEmpty ? pass.background
-                                               : pass.colour[Framebuffer::colourIndexOf(*word)]);
+  auto at = static_cast<std::size_t>(first_row) * static_cast<std::size_t>(width);
+  for (std::uint8_t* out = rgb.data(); word != end; ++word, ++at, out += 3) {
+    storeRgb(out, *word == Framebuffer::kEmpty ? pass.background : pass.colourAt(*word, at));
   }
 }
 

@@ -12,12 +12,12 @@ void shadedRows(const StylePass& pass, const FrameView& frame, std::int32_t firs
       frame.pixels().data() + static_cast<std::ptrdiff_t>(first_row) * width;
   const std::uint32_t* const end =
       frame.pixels().data() + static_cast<std::ptrdiff_t>(end_row) * width;
-  for (std::uint8_t* out = rgb.data(); word != end; ++word, out += 3) {
+  auto at = static_cast<std::size_t>(first_row) * static_cast<std::size_t>(width);
+  for (std::uint8_t* out = rgb.data(); word != end; ++word, ++at, out += 3) {
     const std::uint32_t w = *word;
     storeRgb(out, w == Framebuffer::kEmpty
                       ? pass.background
-                      : scaledRgb(pass.colour[Framebuffer::colourIndexOf(w)],
-                                  pass.intensity[Framebuffer::normalIndexOf(w)]));
+                      : scaledRgb(pass.colourAt(w, at), pass.intensityAt(w, at)));
   }
 }
 

@@ -1,7 +1,8 @@
 # octopoint-render --perspective and --eye on a chunked model file (docs/perspective.md, "Chunked
 # models"): the scan prepared with --chunked and as one file of the same depths (the chunked file's
 # base included) draws the same PNG, byte for byte, from an orbit camera in perspective and
-# from an eye at the cube's corner looking in.
+# from an eye at the cube's corner looking in; and, orthographic, with smooth splats
+# (docs/splats.md: the progressive model blends what it holds), which differ from box splats.
 # usage: cmake -DRENDER=... -DPREPARE=... -DSCAN=sphere.pcd -DOUT=DIR -P this
 file(REMOVE_RECURSE ${OUT})
 file(MAKE_DIRECTORY ${OUT}/one ${OUT}/chunked)
@@ -48,3 +49,26 @@ foreach(view "orbit;--perspective;--yaw;30;--pitch;15;--zoom;2"
   endif()
   message(STATUS "${name}: ${chunked_points} points, the same PNG from both files")
 endforeach()
+
+foreach(splats box smooth)
+  foreach(model one chunked)
+    run(said ${RENDER} --file ${OUT}/${model}/m.oct --yaw 30 --pitch 15 --zoom 3 --size 320x240
+        --splats ${splats} -o ${OUT}/${model}_${splats}.png)
+    if(NOT said MATCHES "depth ([0-9]+)[^,]*, ([1-9][0-9]*) points")
+      message(FATAL_ERROR "${model} ${splats}: nothing drawn: ${said}")
+    endif()
+    set(${model}_drawn "depth ${CMAKE_MATCH_1}, ${CMAKE_MATCH_2} points")
+  endforeach()
+  execute_process(COMMAND ${CMAKE_COMMAND} -E compare_files ${OUT}/one_${splats}.png
+                  ${OUT}/chunked_${splats}.png RESULT_VARIABLE differ)
+  if(differ OR NOT one_drawn STREQUAL chunked_drawn)
+    message(FATAL_ERROR "--splats ${splats}: the chunked file's frame (${chunked_drawn}) is not "
+                        "the one file's (${one_drawn})")
+  endif()
+endforeach()
+execute_process(COMMAND ${CMAKE_COMMAND} -E compare_files ${OUT}/chunked_box.png
+                ${OUT}/chunked_smooth.png RESULT_VARIABLE differ)
+if(NOT differ)
+  message(FATAL_ERROR "--splats smooth drew the chunked file's box frame: nothing blended")
+endif()
+message(STATUS "box and smooth splats: the same PNGs from both files (${chunked_drawn})")

@@ -10,10 +10,23 @@
 namespace octopoint {
 
 cv::Mat renderChunkedView(ProgressiveModel& model, const Camera& camera, Variant variant, bool fill,
-                          Rgb background, ProgressiveDrawStats* stats) {
+                          Rgb background, ProgressiveDrawStats* stats, SplatMode splats) {
   Framebuffer frame(camera.width, camera.height);
   frame.clear();
   ProgressiveDrawStats drawn;
+  cv::Mat rgb(camera.height, camera.width, CV_8UC3);
+  if (splats == SplatMode::kSmooth) {  // octopoint-render refuses --fill with it
+    SmoothSplats smooth(camera.width, camera.height);
+    const PaletteRgb palette = paletteOf(model.baseModel());
+    if (!model.drawSmooth(camera, variant, frame, smooth, palette, &drawn) ||
+        !smooth.resolveToRgb(frame, palette, background, {rgb.data, rgb.total() * 3})) {
+      throw ModelLoadError("camera refused: coordinates would overflow");
+    }
+    if (stats != nullptr) *stats = drawn;
+    cv::Mat bgr;
+    cv::cvtColor(rgb, bgr, cv::COLOR_RGB2BGR);
+    return bgr;
+  }
   if (!model.draw(camera, variant, frame, &drawn))
     throw ModelLoadError("camera refused: coordinates would overflow");
   if (fill) {
@@ -26,7 +39,6 @@ cv::Mat renderChunkedView(ProgressiveModel& model, const Camera& camera, Variant
     }
   }
   if (stats != nullptr) *stats = drawn;
-  cv::Mat rgb(camera.height, camera.width, CV_8UC3);
   if (!resolveToRgb(frame, model.baseModel(), background, {rgb.data, rgb.total() * 3}))
     throw ModelLoadError("the image is smaller than the frame");
   cv::Mat bgr;
@@ -88,7 +100,8 @@ std::string streamReport(const net::StreamStatus& status) {
 }  // namespace
 
 cv::Mat renderFromUrl(const std::string& url_text, const Camera& camera, Variant variant, bool fill,
-                      Rgb background, const UrlFetchOptions& options, std::string* report) {
+                      Rgb background, const UrlFetchOptions& options, std::string* report,
+                      SplatMode splats) {
   const net::HttpUrl url = parseUrl(url_text);
   net::ModelStream stream(url, streamOptions(options));
   stream.setView(camera);
@@ -102,7 +115,7 @@ cv::Mat renderFromUrl(const std::string& url_text, const Camera& camera, Variant
   stream.withModel([&](ProgressiveModel* model) {
     if (model == nullptr) return;
     model->setPointBudget(options.point_budget);
-    image = renderChunkedView(*model, camera, variant, fill, background, &stats);
+    image = renderChunkedView(*model, camera, variant, fill, background, &stats, splats);
   });
   if (image.empty()) throw ModelLoadError(headMissing(url.text(), options, status));
   if (report != nullptr) {

@@ -17,10 +17,11 @@
 
 namespace octopoint {
 
-// The view as octopoint-render draws a level: the frame, hole filling when asked, the palette to
-// an 8-bit BGR image.
+// The view as octopoint-render draws a level: the frame, hole filling when asked (or smooth
+// splats, docs/splats.md: what the model holds blended), the palette to an 8-bit BGR image.
 cv::Mat renderChunkedView(ProgressiveModel& model, const Camera& camera, Variant variant, bool fill,
-                          Rgb background, ProgressiveDrawStats* stats);
+                          Rgb background, ProgressiveDrawStats* stats,
+                          SplatMode splats = SplatMode::kBox);
 
 struct UrlFetchOptions {
   std::uint64_t bytes = 0;         // stop after this many bytes (0: whatever the view needs)
@@ -35,7 +36,8 @@ std::string overBudgetNote(const ProgressiveDrawStats& stats);
 // connection, so that the same N bytes always arrive in the same order. Throws ModelLoadError (one
 // line) when not even the head arrived. `report` gets a one-line summary.
 cv::Mat renderFromUrl(const std::string& url, const Camera& camera, Variant variant, bool fill,
-                      Rgb background, const UrlFetchOptions& options, std::string* report);
+                      Rgb background, const UrlFetchOptions& options, std::string* report,
+                      SplatMode splats = SplatMode::kBox);
 
 // A chunked model streamed from an HTTP URL for perspective views (--url with --perspective,
 // --eye or --path): the head first, then for each view what that view needs, in the perspective

@@ -180,12 +180,11 @@ void checkCombination(const Options& options) {
         "--url, --sheet or perspective option");
   }
   if (options.splats == SplatMode::kSmooth &&
-      (url || options.fill || options.sheet > 0 || options.perspective.any() ||
-       options.style.style != Style::kColour || !drawsSplats(options.variant))) {
+      (options.fill || options.sheet > 0 || options.perspective.any() ||
+       !drawsSplats(options.variant))) {
     throw cli::Error(
-        "--splats smooth draws a single orthographic view in colour with fixed_fast or "
-        "fixed_simd: --url, --fill, --sheet, --perspective, --eye, --path, --style and other "
-        "variants do not apply yet");
+        "--splats smooth draws a single orthographic view with fixed_fast or fixed_simd: "
+        "--fill, --sheet, --perspective, --eye, --path and other variants do not apply yet");
   }
   if (!options.list && !options.info && options.output.empty())
     throw cli::Error("no output given: use -o OUT.png");
@@ -305,8 +304,9 @@ int renderUrl(const Options& options) {
   cli::checkOutputFile(
       options.output);  // before fetching: a FIFO, a device or a directory is refused
   std::string report;
-  const cv::Mat image = renderFromUrl(options.source.url, options.camera, options.variant,
-                                      options.fill, kBackground, options.fetch, &report);
+  const cv::Mat image =
+      renderFromUrl(options.source.url, options.camera, options.variant, options.fill, kBackground,
+                    options.fetch, &report, options.splats);
   writePng(options.output, image);
   std::printf("%s: %s -> %s (%dx%d)\n", options.source.url.c_str(), report.c_str(),
               options.output.c_str(), options.camera.width, options.camera.height);
@@ -324,7 +324,7 @@ int renderChunked(const Options& options, LoadedModel& loaded) {
   ProgressiveDrawStats stats;
   loaded.chunked->setPointBudget(options.fetch.point_budget);
   writePng(options.output, renderChunkedView(*loaded.chunked, options.camera, options.variant,
-                                             options.fill, kBackground, &stats));
+                                             options.fill, kBackground, &stats, options.splats));
   std::printf("%s: chunked, depth %d, %llu points%s -> %s (%dx%d)\n", loaded.label.c_str(),
               stats.drawn_depth, static_cast<unsigned long long>(stats.points),
               overBudgetNote(stats).c_str(), options.output.c_str(), options.camera.width,
@@ -393,14 +393,17 @@ int renderSheet(const ModelView& model, const std::string& model_label, const Op
   return 0;
 }
 
-// --splats smooth: the box frame, blended (octopoint/smooth.h), as RGB888.
+// --splats smooth: the box frame, blended (octopoint/smooth.h), in the style, as RGB888.
 void drawSmooth(Variant variant, const LevelView& level, const FrameSetup& setup,
-                const ModelView& model, Framebuffer& frame, std::span<std::uint8_t> rgb) {
-  SmoothSplats smooth(setup);
-  const PaletteRgb palette = paletteOf(model);
-  if (!renderSmooth(variant, level, setup, frame, smooth, palette) ||
-      !smooth.resolveToRgb(frame, palette, kBackground, rgb)) {
+                const ModelView& model, FrameStyler& styler, Framebuffer& frame,
+                std::span<std::uint8_t> rgb) {
+  SmoothSplats smooth(setup.width, setup.height, model);
+  if (!renderSmooth(variant, level, setup, frame, smooth, paletteOf(model)))
     throw cli::Error(std::string("draw refused: ") + describe(checkRender(level, setup, frame)));
+  styler.beginFrame(setup);
+  if (const StyleError error = styler.resolve(frame, rgb, smooth.pixelBlend());
+      error != StyleError::kNone) {
+    throw cli::Error(std::string("style refused: ") + describe(error));
   }
 }
 
@@ -416,7 +419,7 @@ int renderFrame(const ModelView& model, const LevelView& level, FrameStyler& sty
   frame.clear(styler.payload());
   cv::Mat rgb(options.camera.height, options.camera.width, CV_8UC3);
   if (options.splats == SplatMode::kSmooth) {
-    drawSmooth(options.variant, level, setup, model, frame, {rgb.data, rgb.total() * 3});
+    drawSmooth(options.variant, level, setup, model, styler, frame, {rgb.data, rgb.total() * 3});
   } else {
     if (!renderLevel(options.variant, level, setup, frame))
       throw cli::Error(std::string("draw refused: ") + describe(checkRender(level, setup, frame)));

@@ -99,9 +99,10 @@ nor --file nor --url it draws the default model embedded in this binary.
                      else fixed_fast; see --list)
   --splats MODE      how a magnified voxel is drawn: box (default), a flat rectangle of its colour,
                      or smooth, blended with its neighbours by an integer kernel, with round
-                     silhouettes (docs/splats.md); smooth needs fixed_fast or fixed_simd, colour
-                     style, a single view, no --fill or --perspective; where voxels are at most a
-                     pixel both draw the same frame
+                     silhouettes (docs/splats.md), in every --style (the lit styles light the
+                     blended normal; a chunked model or --url: what arrived, blended); smooth
+                     needs fixed_fast or fixed_simd, a single view, no --fill or --perspective;
+                     where voxels are at most a pixel both draw the same frame
   --fill, --no-fill  scanline hole filling after decoding, as the paper does (default --no-fill:
                      footprint splats leave no holes; docs/holefill.md)
   --style NAME       colour (default), shaded, lines, toon or outlined (docs/styles.md); all but

@@ -231,7 +231,6 @@ bool Viewer::resolveSmooth(const FrameInfo& info, std::span<std::uint8_t> rgb) {
   const LevelView* level = info.depth > 0 ? model_->levelOfDepth(info.depth) : nullptr;
   FrameSetup setup;
   if (level == nullptr || info.view.walk || info.view.fill ||
-      styler_->options().style != Style::kColour ||
       buildFrameSetup(cameraOf(info), info.depth, kDefaultFractionBits, &setup) !=
           CameraError::kNone) {
     return false;
@@ -239,12 +238,13 @@ bool Viewer::resolveSmooth(const FrameInfo& info, std::span<std::uint8_t> rgb) {
   if (!blend_frame_ || blend_frame_->width() != info.width ||
       blend_frame_->height() != info.height) {  // allocates on a new size only
     blend_frame_.emplace(info.width, info.height);
-    smooth_.emplace(info.width, info.height);
+    smooth_.emplace(info.width, info.height, *model_);  // with normals where the model has them
   }
-  blend_frame_->clear();
-  return renderSmooth(InteractiveConfig{}.variant, *level, setup, *blend_frame_, *smooth_,
-                      palette_) &&
-         smooth_->resolveToRgb(*blend_frame_, palette_, kBackground, rgb);
+  blend_frame_->clear(styler_->payload());
+  if (!renderSmooth(InteractiveConfig{}.variant, *level, setup, *blend_frame_, *smooth_, palette_))
+    return false;
+  styler_->beginFrame(setup);
+  return styler_->resolve(*blend_frame_, rgb, smooth_->pixelBlend()) == StyleError::kNone;
 }
 
 void Viewer::resolveStyled(const Framebuffer& frame, const FrameInfo& info,
@@ -294,7 +294,7 @@ KeyBindings Viewer::keyTable(Viewer* viewer) {
   keys.press({SDLK_f}, "f", "hole filling on and off",
              [viewer](std::int64_t now) { viewer->send(ViewEventKind::kToggleFill, now); });
   keys.press({SDLK_m}, "m",
-             "box or smooth splats (magnified voxels blended; colour style, filling off)",
+             "box or smooth splats (magnified voxels blended, in every style; filling off)",
              [viewer](std::int64_t) { viewer->nextSplatMode(); });
   keys.press({SDLK_r}, "r", "back to the initial view",
              [viewer](std::int64_t now) { viewer->send(ViewEventKind::kReset, now); });
@@ -472,7 +472,7 @@ void Viewer::defaultOverlay(OverlayLines& lines) const {
   lines.emplace_back(line);
   if (splats_ == SplatMode::kSmooth) {
     lines.emplace_back(smooth_shown_ ? "smooth splats"
-                                     : "smooth splats: off with filling, a style or walking");
+                                     : "smooth splats: off with filling or walking");
   }
   if (styler_ && styler_->options().style != Style::kColour && !info.view.walk) {
     const StyleOptions& style = styler_->options();

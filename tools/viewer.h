@@ -106,8 +106,8 @@ class Viewer {
   void resolveStyled(const Framebuffer& frame, const FrameInfo& info, std::span<std::uint8_t> rgb);
   // `m`: box or smooth splats (docs/splats.md).
   void nextSplatMode();
-  // Draws the frame `info` describes smoothly into blend_frame_ and resolves it into `rgb`; false
-  // where smooth splats do not apply (a style other than colour, hole filling, no depth drawn).
+  // Draws the frame `info` describes smoothly into blend_frame_ and resolves it in the style into
+  // `rgb`; false where smooth splats do not apply (hole filling, walking, no depth drawn).
   bool resolveSmooth(const FrameInfo& info, std::span<std::uint8_t> rgb);
 
   const ViewerOptions options_;
@@ -122,7 +122,8 @@ class Viewer {
   std::optional<FrameStyler> styler_;  // none for a stream: the styles need a model with normals
   SplatMode splats_ = SplatMode::kBox;
   // Smooth splats are drawn here, on the window's thread, at the size of the frame on screen:
-  // the render threads draw box frames (with normals, for the styles), a blend needs colour ones.
+  // the render threads draw box frames, and the blend draws the frame on screen again, in the
+  // style's payload (docs/splats.md).
   std::optional<Framebuffer> blend_frame_;
   std::optional<SmoothSplats> smooth_;
   PaletteRgb palette_{};

@@ -10,6 +10,7 @@
 #include "octopoint/framebuffer.h"
 #include "octopoint/model.h"
 #include "octopoint/render.h"
+#include "octopoint/smooth.h"
 
 // Where the subtrees of one tree level end in a level's depth-first stream: what lets band
 // rendering (octopoint/bands.h) jump straight to the subtrees that meet a band instead of
@@ -145,5 +146,19 @@ const char* describe(BandError error);
                                     const BandConfig& config, const BandIndex& index,
                                     const Rgb565Palette& palette, const BandBuffers& buffers,
                                     const BandSink& sink);
+
+// renderBands with smooth splats (octopoint/smooth.h, docs/splats.md "Smooth splats"): each band's
+// box frame is blended before it becomes RGB565, bit-identical to the whole frame's blend
+// (SmoothSplats::resolveToRgb565 of renderSmooth's frame). A band needs no margin: a pixel's blend
+// reads its own nearest depth and the leaves within the kernel's reach, which the blend's own walk
+// of the level finds whatever band it draws. `smooth` must be made for frames `setup.width` wide
+// and at least `config.band_rows` high (16 bytes a pixel of a band); `colours` is the model's
+// palette (paletteOf). Colour frames only, without hole filling (kRefused); `smooth` allocates
+// when it is made, so a device without a heap has no smooth bands (docs/device.md).
+[[nodiscard]] BandError renderSmoothBands(const LevelView& level, const FrameSetup& setup,
+                                          const BandConfig& config, const BandIndex& index,
+                                          const Rgb565Palette& palette, const PaletteRgb& colours,
+                                          const BandBuffers& buffers, SmoothSplats& smooth,
+                                          const BandSink& sink);
 
 }  // namespace octopoint

@@ -213,6 +213,13 @@
 //                            16 bytes a pixel, allocated once. blend(level, setup, frame, palette)
 //                            over a box frame (kColour) drawn by fixed_fast or fixed_simd, then
 //                            resolveToRgb(frame, palette, background, rgb). Never allocates.
+//   SmoothSplats(width, height, model)
+//                            28 bytes a pixel where the model has normals: a kColourNormal frame
+//                            also blends them; styler.resolve(frame, rgb, smooth.pixelBlend())
+//                            lights the blended normals in any style.
+//   renderSmoothBands(level, setup, config, index, palette565, colours, buffers, smooth, sink)
+//                            (octopoint/bands.h) renderBands with each band blended: the whole
+//                            frame's blend bit for bit, no margin rows, 16 bytes a band pixel.
 //   renderSmooth(variant, level, setup, frame, smooth, palette)
 //                            renderLevel, then blend. paletteOf(model): the 256 colours.
 //

@@ -16,6 +16,7 @@
 #include "octopoint/framebuffer.h"
 #include "octopoint/model.h"
 #include "octopoint/render.h"
+#include "octopoint/smooth.h"
 
 // A chunked model (octopoint/progressive.h) that fills in while its bytes arrive, drawn at every
 // moment from what it holds. It does no I/O: a caller (net/ for HTTP, a file reader, a radio link)
@@ -227,6 +228,22 @@ class ProgressiveModel {
   [[nodiscard]] bool draw(ProgressiveFrame& snapshot, const Camera& camera, Variant variant,
                           FrameView& frame, ProgressiveDrawStats* stats = nullptr,
                           const std::atomic<bool>* abort = nullptr, int coarser_levels = 0) const;
+
+  // draw from a snapshot, then its pieces blended by smooth splats (octopoint/smooth.h, docs/
+  // splats.md "Smooth splats"): what the model holds, each piece's leaves with its own depth's
+  // kernel, into `smooth` (made for the frame's size) with `palette`; then smooth.resolveToRgb or
+  // pixelBlend. Holding every chunk the view needs, the frame is renderSmooth's of the whole
+  // model at that depth, bit for bit. False where draw is, or where blending refuses the frame
+  // (a variant without splats while there are splats). Allocates nothing.
+  [[nodiscard]] bool drawSmooth(ProgressiveFrame& snapshot, const Camera& camera, Variant variant,
+                                FrameView& frame, SmoothSplats& smooth, const PaletteRgb& palette,
+                                ProgressiveDrawStats* stats = nullptr,
+                                const std::atomic<bool>* abort = nullptr,
+                                int coarser_levels = 0) const;
+  // The same without a snapshot, as draw(camera, ...): with the point budget setPointBudget set.
+  [[nodiscard]] bool drawSmooth(const Camera& camera, Variant variant, FrameView& frame,
+                                SmoothSplats& smooth, const PaletteRgb& palette,
+                                ProgressiveDrawStats* stats = nullptr);
 
   // The point budget of draw(camera, ...) (0, the default: none); see draw.
   void setPointBudget(std::uint64_t points) { own_frame_.setPointBudget(points); }

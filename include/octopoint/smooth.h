@@ -29,6 +29,7 @@
 #include "octopoint/framebuffer.h"
 #include "octopoint/model.h"
 #include "octopoint/render.h"
+#include "octopoint/styles.h"
 
 namespace octopoint {
 
@@ -50,24 +51,33 @@ std::string_view splatModeName(SplatMode mode);
 using PaletteRgb = std::array<Rgb, 256>;
 PaletteRgb paletteOf(const ModelView& model);
 
-// The blending buffers for frames of one size: kBytesPerPixel a pixel besides the frame's own 4,
-// allocated once, at construction; blending never allocates.
+// The blending buffers for frames of one size: kBytesPerPixel a pixel besides the frame's own 4
+// (kBytesPerPixelWithNormals where normals are blended), allocated once, at construction;
+// blending never allocates.
 class SmoothSplats {
  public:
   // Red, green, blue and weight sums, 32 bits each.
   static constexpr std::size_t kBytesPerPixel = 16;
+  // And x, y, z sums of the normals, 32 bits each.
+  static constexpr std::size_t kBytesPerPixelWithNormals = 28;
 
-  // For frames of width x height pixels, each 1..kMaxViewportSide; any other size makes buffers
-  // that refuse every frame.
+  // For frames of width x height pixels, each 1..kMaxViewportSide (or as wide and fewer rows: the
+  // bands of a band renderer, octopoint/bands.h); any other size makes buffers that refuse every
+  // frame.
   SmoothSplats(std::int32_t width, std::int32_t height);
   explicit SmoothSplats(const FrameSetup& setup) : SmoothSplats(setup.width, setup.height) {}
+  // The same, and where `model` has normals, buffers that also blend them: a frame cleared with
+  // PixelPayload::kColourNormal (for the styles, octopoint/styles.h) of one of `model`'s levels
+  // gets a blended unit normal per covered pixel (pixelBlend), weighted as its colour is.
+  SmoothSplats(std::int32_t width, std::int32_t height, const ModelView& model);
 
   // Passes 2 and 3 over `frame`, which holds `level`'s box frame drawn with `setup` by a variant
   // that draws splats (drawsSplats), cleared to PixelPayload::kColour: begin, accumulate, finish.
   // Pixels whose blended weight stays below the threshold become kEmpty in `frame`; the others
   // keep their box word (depth and palette index) and get a blended colour here, read by
-  // resolveToRgb. A frame of another size than the buffers', of normals, or a set-up checkRender
-  // refuses for `level` are refused: false, nothing changed. When `abort` becomes true, returns
+  // resolveToRgb or a style (pixelBlend). A frame of another size than the buffers', of normals
+  // where the buffers were not made for a model with normals, or a set-up checkRender refuses for
+  // `level` are refused: false, nothing changed. When `abort` becomes true, returns
   // false at the next poll (the frame is then incomplete). Returns true for a complete frame.
   [[nodiscard]] bool blend(const LevelView& level, const FrameSetup& setup, FrameView& frame,
                            const PaletteRgb& palette, const std::atomic<bool>* abort = nullptr);
@@ -87,6 +97,16 @@ class SmoothSplats {
   // the buffers' size: otherwise nothing is written and the result is false.
   [[nodiscard]] bool resolveToRgb(const FrameView& frame, const PaletteRgb& palette, Rgb background,
                                   std::span<std::uint8_t> rgb) const;
+  // The same in RGB565 (octopoint/framebuffer.h, packedToRgb565: halfword i into bytes 2i and
+  // 2i + 1 of `out`, which may be the frame's own words): blended colours rounded down to 5, 6 and
+  // 5 bits, palette.background where empty; after a set-up without splats, packedToRgb565's.
+  [[nodiscard]] bool resolveToRgb565(const FrameView& frame, const Rgb565Palette& palette,
+                                     std::uint8_t* out) const;
+
+  // The last blended frame's own colours (and, in a kColourNormal frame, normals in view axes) for
+  // FrameStyler::resolve; empty (the palettes') after a set-up without splats, where the frame is
+  // the box frame.
+  PixelBlend pixelBlend() const;
 
   std::int32_t width() const { return width_; }
   std::int32_t height() const { return height_; }
@@ -100,9 +120,15 @@ class SmoothSplats {
 
   std::int32_t width_;
   std::int32_t height_;
-  bool blended_ = false;    // whether the frame blends (begin's set-up had splats)
-  PixelRect blended_rect_;  // where the sums are kept: the box frame's drawn rectangle
-  std::vector<Sums> sums_;  // width * height; pass 3 leaves the colour packed in r
+  bool blended_ = false;         // whether the frame blends (begin's set-up had splats)
+  bool blends_normals_ = false;  // and its normals (a kColourNormal frame)
+  PixelRect blended_rect_;       // where the sums are kept: the box frame's drawn rectangle
+  std::vector<Sums> sums_;       // width * height; pass 3 leaves the colour packed in r
+  // width * height normal sums (view axes), which pass 3 makes unit vectors (Q1.14); empty for
+  // a model without normals.
+  std::vector<DirectionQ14> normal_sums_;
+  int normal_count_ = 0;
+  std::array<NormalQ14, 256> normal_palette_{};  // the model's, Q1.14
   // One leaf's weights per column and row within its reach (Q8), kept here so that a leaf of any
   // size costs no allocation.
   std::vector<std::uint16_t> column_weight_, row_weight_;

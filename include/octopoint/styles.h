@@ -9,6 +9,7 @@
 #include <optional>
 #include <span>
 #include <string_view>
+#include <type_traits>
 
 #include "octopoint/camera.h"
 #include "octopoint/fixed.h"
@@ -90,6 +91,12 @@ struct DirectionQ14 {
 
 // The unit vector toward the light in view axes (x right, y down, z away from the viewer).
 DirectionQ14 lightInView(const Light& light);
+
+// The intensity (Q8) of a unit normal in view axes (Q1.14) under a light toward `to_light` (view
+// axes, lightInView) and `mix`: an entry's ShadingTable intensity, computed for one normal (a
+// blended pixel's, octopoint/smooth.h).
+std::uint16_t intensityInView(const DirectionQ14& normal, const DirectionQ14& to_light,
+                              const LightMix& mix);
 
 class ShadingTable {
  public:
@@ -292,6 +299,17 @@ inline void fillRgb(std::uint8_t* out, std::int32_t count, std::uint32_t rgb) {
 
 namespace styled_rows_detail {
 
+// paint(word, edge, at) where `paint` takes the pixel's index in the frame (y width + x: a blended
+// frame's own colour and normal, octopoint/smooth.h), paint(word, edge) where it does not.
+template <typename Paint>
+inline std::uint32_t paintPixel(Paint& paint, std::uint32_t word, Edge edge, std::size_t at) {
+  if constexpr (std::is_invocable_v<Paint&, std::uint32_t, Edge, std::size_t>) {
+    return paint(word, edge, at);
+  } else {
+    return paint(word, edge);
+  }
+}
+
 // Whether normals n and the one of `neighbour`'s word are a crease pair (0 or 1); 0 for a
 // neighbour of the same index (CreaseTable::build) and, without a table, always.
 template <bool kCreases>
@@ -370,13 +388,14 @@ void paintInnerRun(const FrameView& frame, std::int32_t y, std::int32_t x, std::
       edge = classifyPixel(frame, x, y, rule);  // farther than the jump: is it the slope's?
     }
     left_pair = right_pair;
-    storeRgb(pixel_out, paint(word, edge));
+    storeRgb(pixel_out, paintPixel(paint, word, edge, static_cast<std::size_t>(y * stride + x)));
   }
 }
 
 }  // namespace styled_rows_detail
 
-// Calls paint(word, edge) for every covered pixel of rows [first_row, end_row) of `frame` and
+// Calls paint(word, edge) (or paint(word, edge, at), at = y width + x) for every covered pixel
+// of rows [first_row, end_row) of `frame` and
 // stores the RGB888 it returns (packed 0xRRGGBB) into `rgb`, row first_row first; background pixels
 // (word Framebuffer::kEmpty) get paint(kEmpty, Edge::kNone), asked once. `paint` must be a
 // function of its arguments only.
@@ -385,7 +404,8 @@ void forEachStyledPixel(const FrameView& frame, std::int32_t first_row, std::int
                         const EdgeRule& rule, std::span<std::uint8_t> rgb, Paint paint) {
   const std::int32_t width = frame.width();
   const std::uint32_t* pixels = frame.pixels().data();
-  const std::uint32_t background = paint(Framebuffer::kEmpty, Edge::kNone);
+  const std::uint32_t background =
+      styled_rows_detail::paintPixel(paint, Framebuffer::kEmpty, Edge::kNone, 0);
   const PixelRect& drawn = frame.drawnRect();
   const std::int32_t x_begin = std::max<std::int32_t>(drawn.x_begin, 0);
   const std::int32_t x_end = std::min<std::int32_t>(drawn.x_end, width);
@@ -404,9 +424,13 @@ void forEachStyledPixel(const FrameView& frame, std::int32_t first_row, std::int
     const std::uint32_t* below = y + 1 < frame.height() ? row + width : nullptr;
     const auto onePixel = [&](std::int32_t x) {
       const std::uint32_t word = row[x];
-      storeRgb(
-          out + static_cast<std::ptrdiff_t>(x) * 3,
-          word == Framebuffer::kEmpty ? background : paint(word, classifyPixel(frame, x, y, rule)));
+      storeRgb(out + static_cast<std::ptrdiff_t>(x) * 3,
+               word == Framebuffer::kEmpty
+                   ? background
+                   : styled_rows_detail::paintPixel(
+                         paint, word, classifyPixel(frame, x, y, rule),
+                         static_cast<std::size_t>(y) * static_cast<std::size_t>(width) +
+                             static_cast<std::size_t>(x)));
     };
     std::int32_t x = x_begin;
     if (above == nullptr || below == nullptr || !words_compare) {
@@ -439,12 +463,33 @@ void forEachStyledPixel(const FrameView& frame, std::int32_t first_row, std::int
 
 namespace octopoint {
 
+// A blended frame's own colour and normal per pixel (octopoint/smooth.h, SmoothSplats::pixelBlend),
+// which the styles take instead of the palettes' for every covered pixel; null: the palettes'.
+struct PixelBlend {
+  const std::uint32_t* colour = nullptr;  // pixel `at`'s 0xRRGGBB at colour[at * colour_stride]
+  std::size_t colour_stride = 1;
+  const DirectionQ14* normal = nullptr;  // pixel `at`'s unit normal in view axes (Q1.14)
+};
+
 struct StylePass {
   std::array<std::uint32_t, 256>
       colour{};  // palette index -> 0xRRGGBB (the base colour of lit styles)
   const std::uint16_t* intensity = nullptr;  // normal index -> Q8 intensity (ShadingTable)
   EdgeRule rule;                             // the line pass (octopoint/styles.h)
   std::uint32_t background = 0;              // 0xRRGGBB
+  PixelBlend blend;                          // a blended frame's colours and normals, or none
+  DirectionQ14 to_light;                     // view axes (intensityInView), for blend.normal
+  LightMix mix = kLightMix;
+
+  // Pixel `at`'s base colour and its intensity (Q8): the blend's where it has them.
+  std::uint32_t colourAt(std::uint32_t word, std::size_t at) const {
+    return blend.colour != nullptr ? blend.colour[at * blend.colour_stride]
+                                   : colour[Framebuffer::colourIndexOf(word)];
+  }
+  std::uint32_t intensityAt(std::uint32_t word, std::size_t at) const {
+    return blend.normal != nullptr ? intensityInView(blend.normal[at], to_light, mix)
+                                   : intensity[Framebuffer::normalIndexOf(word)];
+  }
 };
 
 // Rows [first_row, end_row) of `frame` into `rgb` (3 bytes per pixel, first_row first).
@@ -518,12 +563,17 @@ class FrameStyler {
   // payload()): the model turned by `world_to_camera` (Q1.30), focal length `focal_q16`.
   void beginPerspectiveFrame(const Rotation& world_to_camera, std::int64_t focal_q16);
 
-  [[nodiscard]] StyleError resolve(const FrameView& frame, std::span<std::uint8_t> rgb) const {
-    return resolveRows(frame, 0, frame.height(), rgb);
+  [[nodiscard]] StyleError resolve(const FrameView& frame, std::span<std::uint8_t> rgb,
+                                   const PixelBlend& blend = {}) const {
+    return resolveRows(frame, 0, frame.height(), rgb, blend);
   }
-  // Rows [first_row, end_row) of `frame` into `rgb` (3 bytes per pixel, first_row first).
+  // Rows [first_row, end_row) of `frame` into `rgb` (3 bytes per pixel, first_row first). A frame
+  // blended by smooth splats (octopoint/smooth.h) passes its pixelBlend(): its colours (in the
+  // styles that show colours, except a scan without colour lit in grey) and its normals (in the
+  // lit styles) replace the palettes'; lines and creases follow the frame's words as ever.
   [[nodiscard]] StyleError resolveRows(const FrameView& frame, std::int32_t first_row,
-                                       std::int32_t end_row, std::span<std::uint8_t> rgb) const;
+                                       std::int32_t end_row, std::span<std::uint8_t> rgb,
+                                       const PixelBlend& blend = {}) const;
 
  private:
   void fillColours();
