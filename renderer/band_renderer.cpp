@@ -219,6 +219,10 @@ struct SmoothBands {
          smooth.splats.resolveToRgb565(window, palette, out);
 }
 
+// kBlended chooses at compile time, so that renderBands' code refers to nothing of smooth splats:
+// a bare-metal image that draws box bands links no blend, and none of its divisions
+// (mcu.no_hidden_helpers).
+template <bool kBlended>
 BandError drawBands(const LevelView& level, const FrameSetup& setup, const BandConfig& config,
                     const BandIndex& index, const Rgb565Palette& palette,
                     const BandBuffers& buffers, const BandSink& sink, const SmoothBands* smooth) {
@@ -287,7 +291,7 @@ BandError drawBands(const LevelView& level, const FrameSetup& setup, const BandC
     }
     const std::size_t pixels = static_cast<std::size_t>(rows) * static_cast<std::size_t>(width);
     const std::span<std::uint8_t> rgb565 = bytesOf(buffer).first(pixels * 2);
-    if (smooth != nullptr) {  // no margin: the window is the band
+    if constexpr (kBlended) {  // no margin: the window is the band
       if (!blendBand(level, setup, y0, window, palette, *smooth, rgb565.data()))
         return BandError::kRefused;  // cannot happen: the set-ups and sizes were checked
     } else {
@@ -304,7 +308,7 @@ BandError drawBands(const LevelView& level, const FrameSetup& setup, const BandC
 BandError renderBands(const LevelView& level, const FrameSetup& setup, const BandConfig& config,
                       const BandIndex& index, const Rgb565Palette& palette,
                       const BandBuffers& buffers, const BandSink& sink) {
-  return drawBands(level, setup, config, index, palette, buffers, sink, nullptr);
+  return drawBands<false>(level, setup, config, index, palette, buffers, sink, nullptr);
 }
 
 BandError renderSmoothBands(const LevelView& level, const FrameSetup& setup,
@@ -318,7 +322,7 @@ BandError renderSmoothBands(const LevelView& level, const FrameSetup& setup,
     return BandError::kRefused;
   }
   const SmoothBands bands{smooth, colours};
-  return drawBands(level, setup, config, index, palette, buffers, sink, &bands);
+  return drawBands<true>(level, setup, config, index, palette, buffers, sink, &bands);
 }
 
 }  // namespace octopoint
