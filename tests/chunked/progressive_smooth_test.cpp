@@ -51,10 +51,8 @@ TEST(ProgressiveSmooth, HoldingEverythingBlendsTheWholeModelStreamsFrame) {
                                octopoint::testing::makeCamera(0, 0, 1, 320, 240)}) {
     ASSERT_TRUE(model->viewComplete(camera));
     const int wanted = *model->wantedDepth(camera);
-    const auto level =
-        std::find_if(f.streams.rbegin(), f.streams.rend(),
-                     [&](const prepare::PreparedLevel& l) { return l.depth <= wanted; });
-    ASSERT_NE(level, f.streams.rend());
+    const prepare::PreparedLevel* level = octopoint::testing::finestLevelAtMost(f.streams, wanted);
+    ASSERT_NE(level, nullptr);
     FrameSetup setup;
     ASSERT_EQ(buildFrameSetup(camera, level->depth, kDefaultFractionBits, &setup),
               CameraError::kNone);

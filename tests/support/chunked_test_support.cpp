@@ -34,6 +34,14 @@ bool held(const ProgressiveModel& model, int level, std::uint32_t region) {
 
 }  // namespace
 
+const prepare::PreparedLevel* finestLevelAtMost(const std::vector<prepare::PreparedLevel>& levels,
+                                                int depth) {
+  const auto level =
+      std::find_if(levels.rbegin(), levels.rend(),
+                   [&](const prepare::PreparedLevel& l) { return l.depth <= depth; });
+  return level == levels.rend() ? nullptr : &*level;
+}
+
 Framebuffer referenceFrame(const ProgressiveModel& model,
                            const std::vector<prepare::PreparedLevel>& levels, const Camera& camera,
                            Variant variant) {

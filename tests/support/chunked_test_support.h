@@ -27,6 +27,11 @@ Framebuffer referenceFrame(const ProgressiveModel& model,
                            const std::vector<prepare::PreparedLevel>& levels, const Camera& camera,
                            Variant variant);
 
+// The finest of `levels` (in depth order) at most `depth` deep, or nullptr: the whole-model stream
+// a complete model draws for a view that wants `depth`.
+const prepare::PreparedLevel* finestLevelAtMost(const std::vector<prepare::PreparedLevel>& levels,
+                                                int depth);
+
 // The base and chunked levels' whole-model streams of a chunked image written from `prepared`:
 // the base decoded from the image's head, then the prepared levels the chunked levels hold.
 std::vector<prepare::PreparedLevel> levelStreams(std::span<const std::uint8_t> image,
