@@ -121,8 +121,8 @@ namespace octopoint {
 
 enum class RenderError : std::uint8_t {
   kNone,
-  kBadSetup,  // not a set-up buildFrameSetup makes: depth, fraction bits or size out of range,
-              // or offsets and splat that could overflow 32 bits
+  kBadSetup,  // not a set-up buildFrameSetup makes: depth, fraction bits, size or sample reach
+              // out of range, or offsets and splat that could overflow 32 bits
   kFrameSizeMismatch,  // the framebuffer's width or height differs from the set-up's
   kDepthMismatch,      // the level's depth differs from the set-up's
   kImplausibleLevel,   // no nodes or leaves, or node bytes and leaf count no tree of its depth has
