@@ -1,5 +1,5 @@
 #pragma once
-// Airborne-like scans (issue 31, "samples coarser than the voxel"): a flat ground of
+// Airborne-like scans (docs/splats.md, "Samples coarser than the voxel"): a flat ground of
 // kAirborneGroundLength x kAirborneGroundWidth metres with raised blocks (roofs), sampled from
 // above at a spacing of its own, either on scan lines of a regular grid (spacing s along and
 // across, as a lidar's lines are) or irregularly (uniform random positions at the same mean
