@@ -20,6 +20,7 @@
 #include <string>
 #include <vector>
 
+#include "bench/instance_grid.h"
 #include "bench/register_benchmarks.h"
 #include "octopoint/model.h"
 #include "octopoint/models.h"
@@ -127,14 +128,7 @@ const CollisionBenchScene& collisionBenchScene() {
   static const CollisionBenchScene* built = [] {
     auto* s = new CollisionBenchScene;
     constexpr std::int64_t kEdge = kPerspectiveUnit;
-    for (int i = 0; i < 100; ++i) {
-      for (int j = 0; j < 100; ++j) {
-        s->instances.push_back({0,
-                                {{(i - 50) * kEdge, 0, (j - 50) * kEdge},
-                                 Angle::fromTurns16(((i * 7 + j) & 3) * 16384),
-                                 -1}});
-      }
-    }
+    s->instances = bench::instanceGrid();
     const ModelView* models[] = {&collisionBenchModel()};
     SceneError error;
     s->collision.emplace(models, s->instances, &error);

@@ -10,6 +10,7 @@
 #include <chrono>
 #include <vector>
 
+#include "bench/instance_grid.h"
 #include "bench/register_benchmarks.h"
 #include "octopoint/models.h"
 #include "renderer/scene_renderer.h"
@@ -30,14 +31,7 @@ BenchScene& scene() {
   static BenchScene* built = [] {
     ModelIssue issue;
     auto* s = new BenchScene{*ModelView::fromEmbedded(*models::defaultModel(), &issue), {}, {}, {}};
-    for (int i = 0; i < 100; ++i) {
-      for (int j = 0; j < 100; ++j) {
-        s->instances.push_back({0,
-                                {{(i - 50) * kEdge, 0, (j - 50) * kEdge},
-                                 Angle::fromTurns16(((i * 7 + j) & 3) * 16384),
-                                 -1}});
-      }
-    }
+    s->instances = bench::instanceGrid();
     const ModelView* models[] = {&s->model};
     SceneError error;
     s->renderer.emplace(models, s->instances, &error);
