@@ -17,8 +17,10 @@ inline std::vector<SceneInstance> instanceGrid() {
   instances.reserve(100 * 100);
   for (int i = 0; i < 100; ++i) {
     for (int j = 0; j < 100; ++j) {
-      instances.push_back(
-          {0, {{(i - 50) * kEdge, 0, (j - 50) * kEdge}, Angle::fromTurns16(((i * 7 + j) & 3) * 16384), -1}});
+      instances.push_back({0,
+                           {{(i - 50) * kEdge, 0, (j - 50) * kEdge},
+                            Angle::fromTurns16(((i * 7 + j) & 3) * 16384),
+                            -1}});
     }
   }
   return instances;
