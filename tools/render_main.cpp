@@ -288,7 +288,8 @@ int renderUrlPerspective(const Options& options) {
                      kBackground,
                      {},
                      0,
-                     {options.fill, nullptr}};
+                     {options.fill, nullptr},
+                     options.sheet};
   job.parts = [&source](const PerspectiveView& view) -> const HeldParts& {
     return source.follow(view);
   };
@@ -455,7 +456,8 @@ int renderPerspectiveViews(const ModelView& model, const LevelView& level,
                      kBackground,
                      {},
                      0,
-                     {options.fill, styler}};
+                     {options.fill, styler},
+                     options.sheet};
   job.point_budget = options.fetch.point_budget;
   runPerspective(options.perspective, job);
   return 0;
@@ -484,7 +486,8 @@ int renderChunkedPerspective(const Options& options, const LoadedModel& loaded) 
                      kBackground,
                      {},
                      0,
-                     {options.fill, nullptr}};
+                     {options.fill, nullptr},
+                     options.sheet};
   if (!options.depth)
     job.parts = [&parts](const PerspectiveView&) -> const HeldParts& { return parts; };
   job.point_budget = options.fetch.point_budget;
