@@ -75,19 +75,19 @@ TEST(EyePruning, KeepsTheDenseDepthsSoThatEveryEyesFrameIsTheUnprunedModels) {
 
   const std::vector<std::uint64_t> before = voxelsPerDepth(unpruned);
   const std::vector<std::uint64_t> after = voxelsPerDepth(pruned);
-  ASSERT_EQ(denseDepthCount(before), 4u) << before[0] << " " << before[1] << " " << before[2]
-                                         << " " << before[3];
-  EXPECT_EQ(denseDepthCount(after), 4u) << after[0] << " " << after[1] << " " << after[2] << " "
-                                        << after[3];
+  ASSERT_EQ(denseDepthCount(before), 4u)
+      << before[0] << " " << before[1] << " " << before[2] << " " << before[3];
+  EXPECT_EQ(denseDepthCount(after), 4u)
+      << after[0] << " " << after[1] << " " << after[2] << " " << after[3];
   EXPECT_LT(after.back(), before.back() / 2) << "the eyes see less than half of the sphere";
 
   for (const prepare::SceneEye& eye : eyes) {
     const Framebuffer expected = eyeFrame(unpruned, eye);
     const Framebuffer actual = eyeFrame(pruned, eye);
     EXPECT_GT(coveredPixels(expected), static_cast<std::size_t>(kEyeWidth * kEyeHeight / 10));
-    EXPECT_TRUE(expected.pixels().size() == actual.pixels().size() &&
-                std::equal(expected.pixels().begin(), expected.pixels().end(),
-                           actual.pixels().begin()))
+    EXPECT_TRUE(
+        expected.pixels().size() == actual.pixels().size() &&
+        std::equal(expected.pixels().begin(), expected.pixels().end(), actual.pixels().begin()))
         << "eye at z " << eye.eye[2] << ": the pruned model draws another frame";
   }
 }
