@@ -63,8 +63,8 @@ cv::Mat renderPerspectiveSheet(const PerspectiveJob& job, std::span<const Perspe
     putSheetLabel(sheet, rowLabel(job, rows[r]), top);
     for (std::size_t column = 0; column < views.size(); ++column) {
       renderPerspectiveView(row_job, views[column])
-          .copyTo(sheet(cv::Rect(static_cast<int>(column) * width, top + kSheetLabelHeight, width,
-                                 height)));
+          .copyTo(sheet(
+              cv::Rect(static_cast<int>(column) * width, top + kSheetLabelHeight, width, height)));
     }
   }
   return sheet;
