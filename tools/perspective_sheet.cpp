@@ -14,9 +14,6 @@
 namespace octopoint {
 namespace {
 
-// At most as many pixels as octopoint-render writes in one PNG (48 MiB of RGB).
-constexpr std::int64_t kMaxSheetPixels = std::int64_t{4096} * 4096;
-
 // The sheet's rows: nullptr for detail by distance, then each stored depth the renderer draws.
 std::vector<const LevelView*> sheetRows(const ModelView& model) {
   std::vector<const LevelView*> rows = {nullptr};
@@ -73,11 +70,11 @@ cv::Mat renderPerspectiveSheet(const PerspectiveJob& job, std::span<const Perspe
 void drawPerspectiveSheet(const PerspectiveJob& job, std::span<const PerspectiveView> views) {
   const auto columns = static_cast<int>(views.size());
   const std::int64_t pixels = perspectiveSheetPixels(job, columns);
-  if (pixels > kMaxSheetPixels) {
+  if (pixels > kMaxOutputPixels) {
     throw cli::Error("--sheet " + std::to_string(columns) + " at --size " +
                      std::to_string(job.camera.width) + "x" + std::to_string(job.camera.height) +
                      " makes a " + std::to_string(pixels) + "-pixel image, at most " +
-                     std::to_string(kMaxSheetPixels) + ": give fewer views or a smaller --size");
+                     std::to_string(kMaxOutputPixels) + ": give fewer views or a smaller --size");
   }
   cli::checkOutputFile(job.output);
   writePng(job.output, renderPerspectiveSheet(job, views));

@@ -76,10 +76,6 @@ Light parseLight(std::string_view option, std::string_view text) {
   return light;
 }
 
-// Every image this tool writes has at most this many pixels (a frame: 64 MiB of framebuffer,
-// 48 MiB of RGB), whatever its shape; a contact sheet's cells and labels count together.
-constexpr std::int64_t kMaxOutputPixels = std::int64_t{4096} * 4096;
-
 // The view options (--yaw, --pitch, --roll, --zoom, --pan, --size): false when `args` holds
 // another option.
 bool parseViewOption(cli::ArgumentReader& args, Camera& camera) {
