@@ -105,9 +105,10 @@ int octopoint_web_walk_faster(std::int32_t faster);
 int octopoint_web_walk_draw(std::int32_t width, std::int32_t height, std::int32_t coarse,
                             std::int32_t forward_us, std::int32_t back_us, std::int32_t left_us,
                             std::int32_t right_us, std::int32_t up_us, std::int32_t down_us);
-// The eye of the last draw (or of the last call that moved it): twelve words, x, y, z (low, high
+// The eye of the last draw (or of the last call that moved it): thirteen words, x, y, z (low, high
 // word each), yaw, pitch, roll and the field of view in 1/65536 turns, the speed in Q.24 cube edges
-// a second (low, high).
+// a second (low, high), and the points the last walk frame drew (the perspective renderer's
+// leaves, octopoint-render --eye's "points drawn"; at most 2^32 - 1).
 const std::uint32_t* octopoint_web_walk_state(void);
 }
 
