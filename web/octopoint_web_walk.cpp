@@ -98,11 +98,13 @@ void publishPoints(const PerspectiveDrawStats& stats) {
   stateWords()[12] = static_cast<std::uint32_t>(std::min<std::uint64_t>(stats.leaves, UINT32_MAX));
 }
 
+#if OCTOPOINT_WEB_EMBEDDED_MODEL
 // The embedded model's perspective renderer: its indexes built once, at the first walk frame.
 std::optional<PerspectiveRenderer>& perspectiveRenderer() {
   static std::optional<PerspectiveRenderer> instance;
   return instance;
 }
+#endif
 
 // The chunked model's: its held parts, assembled again as chunks arrive.
 web::HeldPartsFrame& heldPartsFrame() {
@@ -264,13 +266,16 @@ int octopoint_web_walk_draw(std::int32_t width, std::int32_t height, std::int32_
                                &stats)) {
       return fail("nothing of the chunked model is held yet");
     }
-  } else {
+  }
+#if OCTOPOINT_WEB_EMBEDDED_MODEL  // (the page without a model walks only in what it streams)
+  else {
     if (!perspectiveRenderer()) perspectiveRenderer().emplace(*model);
     PerspectiveRenderer::Options options;   // detail by distance, culled: octopoint-render --eye's
     options.coarser = coarse != 0 ? 1 : 0;  // while a key is held: octopoint-view's coarse frames
     if (!perspectiveRenderer()->draw(view, options, frame, &stats))
       return fail("the walk's draw failed");
   }
+#endif
   if (!resolveToRgb(frame, *model, web::kBackground, out.rgb)) return fail("the resolve failed");
   out.toRgba();
   publishPoints(stats);
