@@ -67,11 +67,11 @@ const std::uint32_t* octopoint_web_stream_status(void);
 
 // Walk mode (docs/web.md, "Walk mode"; web/octopoint_web_walk.cpp): the eye stands in the embedded
 // model, or in the chunked model opened (once its head is in: its held parts, the fetch following
-// the eye), as octopoint-view's walk mode and octopoint-render --eye --look --fov place it. Not in
-// the page without a model (build/wasm/web-nomodel/ exports none of these: its weight). The eye
-// is in the camera's Q.24 cube edges about the cube's centre (renderer/perspective.h), each
-// coordinate given as its low and high 32 bits; angles as the other calls take them; the page
-// converts from and to the scan's units with the cube's placement.
+// the eye), as octopoint-view's walk mode and octopoint-render --eye --look --fov place it (the
+// page without a model, build/wasm/web-nomodel/: in the chunked model only). The eye is in the
+// camera's Q.24 cube edges about the cube's centre (renderer/perspective.h), each coordinate given
+// as its low and high 32 bits; angles as the other calls take them; the page converts from and to
+// the scan's units with the cube's placement.
 //
 // Where the walked model's cube lies in the scan (octopoint/model.h, CubePlacement): nine words,
 // the binary64 bits of the lowest corner's x, y, z and of the edge (low, high word each), then 1
