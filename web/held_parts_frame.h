@@ -22,9 +22,10 @@ class HeldPartsFrame {
  public:
   // Draws `view` of `model` into `frame` (cleared by the caller), each part a depth coarser when
   // `coarse`; `taken` counts what the model took: a count other than the last draw's assembles the
-  // held parts again. False when nothing could be drawn (no part holds anything yet).
+  // held parts again. Adds what the parts that drew drew to `stats` (as octopoint-render --url
+  // --eye counts them). False when nothing could be drawn (no part holds anything yet).
   bool draw(const ProgressiveModel& model, std::uint64_t taken, const PerspectiveView& view,
-            bool coarse, Framebuffer& frame);
+            bool coarse, Framebuffer& frame, PerspectiveDrawStats* stats);
 
  private:
   HeldParts parts_;

@@ -127,14 +127,17 @@
     return walk !== null && walk.active ? walk : null;
   }
 
-  // The overlay's words about the eye, and for the checks (scripts/test-web) the options that make
-  // octopoint-render draw the same frame (a fine frame: nothing held).
+  // The overlay's words about the eye and the points the frame drew (octopoint-render --eye's
+  // "N points drawn"), and for the checks (scripts/test-web) the options that make octopoint-render
+  // draw the same frame and its points (a fine frame: nothing held).
   function walkWords(size) {
     const now = walk.state();
     const options = '--size ' + size.width + 'x' + size.height + ' --eye ' + now.eye +
                     ' --look ' + now.look + ' --fov ' + now.fovText;
     document.body.dataset.walk = walk.moving() ? '' : options;
-    return 'walk: ' + options + ', speed ' + now.speed.toPrecision(3) + ' units/s: ';
+    document.body.dataset.walkPoints = String(now.points);
+    return 'walk: ' + options + ', speed ' + now.speed.toPrecision(3) + ' units/s, ' +
+           now.points.toLocaleString('en') + ' points drawn: ';
   }
 
   // Walk mode from the address's eye, once there is a model to walk in; '' or what is wrong.
@@ -300,7 +303,7 @@
   // back to the orbit view.
   function toggleWalk() {
     if (walk === null || !walk.ready()) {
-      report('walk mode: ' + (walk === null ? 'this page has none (it embeds no model)' :
+      report('walk mode: ' + (walk === null ? 'this page has none' :
                               stream !== null ? "the model's head has not come yet" :
                                                 'this page has no model with its place in the scan'),
              true);

@@ -6,8 +6,8 @@
 // octopoint-render's --eye X,Y,Z --look YAW,PITCH[,ROLL] --fov DEG.
 'use strict';
 
-// Returns null when the module has no walk mode (the page without a model); otherwise the walk,
-// with its methods (walk.ready() says whether there is a model to walk in).
+// Returns null when the module has no walk mode; otherwise the walk, with its methods (walk.ready()
+// says whether there is a model to walk in: the embedded one, or a streamed one once its head came).
 window.octopointWalk = function (Module) {
   if (typeof Module._octopoint_web_walk_cube !== 'function') return null;
   const kUnit = 16777216;  // Q.24: one cube edge
@@ -204,9 +204,9 @@ window.octopointWalk = function (Module) {
     return api.draw(width, height, walk.moving() ? 1 : 0, ...times);
   };
   // The eye of the last frame: in the scan's units, its look and field of view in degrees as
-  // octopoint-render reads them, the speed in scan units a second.
+  // octopoint-render reads them, the speed in scan units a second, and the points that frame drew.
   walk.state = function () {
-    const w = words(api.state(), 12);
+    const w = words(api.state(), 13);
     const eye = scanPoint([int64(w[0], w[1]), int64(w[2], w[3]), int64(w[4], w[5])]);
     return {
       eye: eye.map(String).join(','),
@@ -214,6 +214,7 @@ window.octopointWalk = function (Module) {
       fov: w[9],
       fovText: degreesText(w[9]),
       speed: int64(w[10], w[11]) / kUnit * cube.edge,
+      points: w[12],
     };
   };
   return walk;

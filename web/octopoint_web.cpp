@@ -29,6 +29,10 @@ using namespace octopoint;
 using web::fail;
 using web::succeed;
 
+#if OCTOPOINT_WEB_EMBEDDED_MODEL
+// The embedded model and its styles. The page without a model has neither: its chunked models are
+// drawn in colour by the stream (web/octopoint_web_stream.cpp), and leaving the styles' code out
+// keeps it within its weight (docs/web.md, "Page weight").
 struct WebRenderer {
   ModelView model;
   FrameStyler styler;
@@ -39,6 +43,7 @@ std::optional<WebRenderer>& renderer() {
   static std::optional<WebRenderer> instance;
   return instance;
 }
+#endif
 
 bool& created() {
   static bool done = false;
@@ -82,14 +87,15 @@ int octopoint_web_set_style(const char* name) {
   if (!created()) return fail("octopoint_web_create was not called");
   const std::optional<Style> style = name == nullptr ? std::nullopt : styleFromName(name);
   if (!style) return fail("no such style (colour, shaded, lines, toon, outlined)");
-  if (*style != Style::kColour && (web::streamOpen() || !renderer()))
+  if (*style != Style::kColour && (web::streamOpen() || !OCTOPOINT_WEB_EMBEDDED_MODEL))
     return fail("a chunked model is drawn in colour only (it stores no normals)");
-  if (!renderer()) return succeed();  // no embedded model: colour is all there is
+#if OCTOPOINT_WEB_EMBEDDED_MODEL
   StyleOptions options = renderer()->styler.options();
   options.style = *style;
   if (const StyleError error = renderer()->styler.setOptions(options); error != StyleError::kNone) {
     return fail(describe(error));
   }
+#endif
   return succeed();
 }
 
@@ -99,7 +105,13 @@ const char* octopoint_web_error(void) { return web::errorText(); }
 
 namespace octopoint::web {
 
-const ModelView* embeddedModel() { return renderer() ? &renderer()->model : nullptr; }
+const ModelView* embeddedModel() {
+#if OCTOPOINT_WEB_EMBEDDED_MODEL
+  return renderer() ? &renderer()->model : nullptr;
+#else
+  return nullptr;
+#endif
+}
 
 int drawWith(Variant variant, std::int32_t yaw_millidegrees, std::int32_t pitch_millidegrees,
              std::int32_t roll_millidegrees, std::int32_t zoom_q16, std::int32_t width,
@@ -114,7 +126,10 @@ int drawWith(Variant variant, std::int32_t yaw_millidegrees, std::int32_t pitch_
   camera.width = width;
   camera.height = height;
   if (streamOpen()) return drawStream(variant, camera);
-  if (!renderer()) return fail("this page embeds no model: open a chunked one (model=NAME.oct)");
+#if !OCTOPOINT_WEB_EMBEDDED_MODEL
+  return fail("this page embeds no model: open a chunked one (model=NAME.oct)");
+#else
+  if (!renderer()) return fail("the embedded model is invalid");
   WebRenderer& web = *renderer();
   const LevelView* level = autoLevel(web.model, camera);
   if (level == nullptr) return fail(describe(CameraError::kOverflow));
@@ -131,6 +146,7 @@ int drawWith(Variant variant, std::int32_t yaw_millidegrees, std::int32_t pitch_
   if (web.styler.resolve(frame, out.rgb) != StyleError::kNone) return fail("the style refused");
   out.toRgba();
   return succeed();
+#endif
 }
 
 }  // namespace octopoint::web

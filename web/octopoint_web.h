@@ -67,11 +67,11 @@ const std::uint32_t* octopoint_web_stream_status(void);
 
 // Walk mode (docs/web.md, "Walk mode"; web/octopoint_web_walk.cpp): the eye stands in the embedded
 // model, or in the chunked model opened (once its head is in: its held parts, the fetch following
-// the eye), as octopoint-view's walk mode and octopoint-render --eye --look --fov place it. Not in
-// the page without a model (build/wasm/web-nomodel/ exports none of these: its weight). The eye
-// is in the camera's Q.24 cube edges about the cube's centre (renderer/perspective.h), each
-// coordinate given as its low and high 32 bits; angles as the other calls take them; the page
-// converts from and to the scan's units with the cube's placement.
+// the eye), as octopoint-view's walk mode and octopoint-render --eye --look --fov place it (the
+// page without a model, build/wasm/web-nomodel/: in the chunked model only). The eye is in the
+// camera's Q.24 cube edges about the cube's centre (renderer/perspective.h), each coordinate given
+// as its low and high 32 bits; angles as the other calls take them; the page converts from and to
+// the scan's units with the cube's placement.
 //
 // Where the walked model's cube lies in the scan (octopoint/model.h, CubePlacement): nine words,
 // the binary64 bits of the lowest corner's x, y, z and of the edge (low, high word each), then 1
@@ -105,9 +105,10 @@ int octopoint_web_walk_faster(std::int32_t faster);
 int octopoint_web_walk_draw(std::int32_t width, std::int32_t height, std::int32_t coarse,
                             std::int32_t forward_us, std::int32_t back_us, std::int32_t left_us,
                             std::int32_t right_us, std::int32_t up_us, std::int32_t down_us);
-// The eye of the last draw (or of the last call that moved it): twelve words, x, y, z (low, high
+// The eye of the last draw (or of the last call that moved it): thirteen words, x, y, z (low, high
 // word each), yaw, pitch, roll and the field of view in 1/65536 turns, the speed in Q.24 cube edges
-// a second (low, high).
+// a second (low, high), and the points the last walk frame drew (the perspective renderer's
+// leaves, octopoint-render --eye's "points drawn"; at most 2^32 - 1).
 const std::uint32_t* octopoint_web_walk_state(void);
 }
 

@@ -61,7 +61,7 @@ ModelPoint movedEye(const ModelPoint& eye, const Walker& walker, int key, std::i
 bool validKey(std::int32_t key) { return key >= 0 && key < web::kWalkKeys; }
 
 // The walk's state as the page reads it (octopoint_web_walk_state).
-using StateWords = std::array<std::uint32_t, 12>;
+using StateWords = std::array<std::uint32_t, 13>;
 
 StateWords wordsOf(const Walker& shown) {
   StateWords words{};
@@ -85,13 +85,26 @@ StateWords& stateWords() {  // the walker's from the start: the speed is right b
   return words;
 }
 
-void publish(const Walker& shown) { stateWords() = wordsOf(shown); }
+// The eye's words; the last draw's points stay until the next draw says its own.
+void publish(const Walker& shown) {
+  const std::uint32_t points = stateWords()[12];
+  stateWords() = wordsOf(shown);
+  stateWords()[12] = points;
+}
 
+// The points (leaves handed to the plot) the last walk frame drew, as octopoint-render --eye
+// prints them ("N points drawn"), at most 2^32 - 1.
+void publishPoints(const PerspectiveDrawStats& stats) {
+  stateWords()[12] = static_cast<std::uint32_t>(std::min<std::uint64_t>(stats.leaves, UINT32_MAX));
+}
+
+#if OCTOPOINT_WEB_EMBEDDED_MODEL
 // The embedded model's perspective renderer: its indexes built once, at the first walk frame.
 std::optional<PerspectiveRenderer>& perspectiveRenderer() {
   static std::optional<PerspectiveRenderer> instance;
   return instance;
 }
+#endif
 
 // The chunked model's: its held parts, assembled again as chunks arrive.
 web::HeldPartsFrame& heldPartsFrame() {
@@ -246,18 +259,26 @@ int octopoint_web_walk_draw(std::int32_t width, std::int32_t height, std::int32_
   web::Canvas& out = web::canvas();
   Framebuffer& frame = out.sized(width, height);
   frame.clear();
+  PerspectiveDrawStats stats;  // the renderer adds to it: this frame's
   if (web::streamOpen()) {
     web::streamFollow(view);  // the fetch order follows the eye from now on
-    if (!heldPartsFrame().draw(*web::streamModel(), web::streamTaken(), view, coarse != 0, frame))
+    if (!heldPartsFrame().draw(*web::streamModel(), web::streamTaken(), view, coarse != 0, frame,
+                               &stats)) {
       return fail("nothing of the chunked model is held yet");
-  } else {
+    }
+  }
+#if OCTOPOINT_WEB_EMBEDDED_MODEL  // (the page without a model walks only in what it streams)
+  else {
     if (!perspectiveRenderer()) perspectiveRenderer().emplace(*model);
     PerspectiveRenderer::Options options;   // detail by distance, culled: octopoint-render --eye's
     options.coarser = coarse != 0 ? 1 : 0;  // while a key is held: octopoint-view's coarse frames
-    if (!perspectiveRenderer()->draw(view, options, frame)) return fail("the walk's draw failed");
+    if (!perspectiveRenderer()->draw(view, options, frame, &stats))
+      return fail("the walk's draw failed");
   }
+#endif
   if (!resolveToRgb(frame, *model, web::kBackground, out.rgb)) return fail("the resolve failed");
   out.toRgba();
+  publishPoints(stats);
   return succeed();
 }
 

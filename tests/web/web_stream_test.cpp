@@ -279,9 +279,9 @@ int drawWalkAt(const ModelPoint& eye, std::int32_t yaw_millidegrees) {
 
 // octopoint-render --url --eye's frame of the same eye from the whole file: its held parts each
 // drawn by the perspective renderer (tools/perspective_render.cpp, renderPerspectiveParts),
-// resolved on its background, as RGBA.
+// resolved on its background, as RGBA; `points` gets the points the parts that drew drew.
 Bytes nativePartsFrame(std::span<const std::uint8_t> image, const ModelPoint& eye,
-                       std::int32_t yaw_millidegrees) {
+                       std::int32_t yaw_millidegrees, std::uint64_t* points) {
   ChunkedIssue issue;
   std::optional<ProgressiveModel> model = progressiveModelFromPrefix(image, &issue);
   EXPECT_TRUE(model.has_value());
@@ -295,8 +295,12 @@ Bytes nativePartsFrame(std::span<const std::uint8_t> image, const ModelPoint& ey
   const HeldParts parts = assembleHeldParts(*model);
   Framebuffer frame(camera.width, camera.height);
   frame.clear();
-  for (const std::unique_ptr<AssembledModel>& part : parts.parts)
-    static_cast<void>(PerspectiveRenderer(*part->view, parts.detailDepths()).draw(view, {}, frame));
+  *points = 0;
+  for (const std::unique_ptr<AssembledModel>& part : parts.parts) {
+    PerspectiveDrawStats drawn;
+    if (PerspectiveRenderer(*part->view, parts.detailDepths()).draw(view, {}, frame, &drawn))
+      *points += drawn.leaves;
+  }
   Bytes rgb(std::size_t(camera.width) * std::size_t(camera.height) * 3);
   EXPECT_TRUE(resolveToRgb(frame, *parts.parts.front()->view, web::kBackground, rgb));
   Bytes rgba;
@@ -326,12 +330,17 @@ TEST_F(WebStream, WalksTheStreamedModelFetchingWhatTheEyeSeesFirst) {
   // The complete view's frame is octopoint-render --url --eye's, pixel for pixel.
   ASSERT_EQ(drawWalkAt(back, 180000), 0) << octopoint_web_error();
   const WebView size;
-  EXPECT_EQ(webPixels(size), nativePartsFrame(image, back, 180000));
+  std::uint64_t points = 0;
+  EXPECT_EQ(webPixels(size), nativePartsFrame(image, back, 180000, &points));
+  // The overlay's points drawn (the walk state's last word): octopoint-render --url --eye's.
+  ASSERT_GT(points, 0u);
+  EXPECT_EQ(octopoint_web_walk_state()[12], points);
   // And the rest of the file changes nothing of it.
   const Served rest = serveAll(image, size, 1000, [](std::uint64_t, std::uint64_t) { return -1; });
   EXPECT_GT(rest.requests, 0);
   ASSERT_EQ(drawWalkAt(back, 180000), 0) << octopoint_web_error();
-  EXPECT_EQ(webPixels(size), nativePartsFrame(image, back, 180000));
+  EXPECT_EQ(webPixels(size), nativePartsFrame(image, back, 180000, &points));
+  EXPECT_EQ(octopoint_web_walk_state()[12], points);
 }
 
 }  // namespace

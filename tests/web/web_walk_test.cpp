@@ -146,17 +146,23 @@ TEST_F(WebWalk, DrawsTheFrameOctopointRenderDrawsFromTheEye) {
   Framebuffer frame(width, height);
   frame.clear();
   PerspectiveRenderer renderer(model);
-  ASSERT_TRUE(renderer.draw(view, {}, frame));
+  PerspectiveDrawStats stats;
+  ASSERT_TRUE(renderer.draw(view, {}, frame, &stats));
   std::vector<std::uint8_t> rgb(std::size_t(width) * height * 3);
   ASSERT_TRUE(resolveToRgb(frame, model, web::kBackground, rgb));
   std::vector<std::uint8_t> rgba;
   for (std::size_t i = 0; i < rgb.size(); i += 3)
     rgba.insert(rgba.end(), {rgb[i], rgb[i + 1], rgb[i + 2], 255});
   EXPECT_EQ(drawn, rgba);
-  // A coarse frame (a key held) is another picture; the eye out of reach is refused.
+  // The points it drew, for the overlay: octopoint-render --eye's "N points drawn".
+  ASSERT_GT(stats.leaves, 0u);
+  EXPECT_EQ(octopoint_web_walk_state()[12], stats.leaves);
+  // A coarse frame (a key held) is another picture, of fewer points; the eye out of reach is
+  // refused.
   ASSERT_EQ(octopoint_web_walk_draw(width, height, 1, 0, 0, 0, 0, 0, 0), 0);
   const std::uint8_t* coarse = octopoint_web_pixels();
   EXPECT_NE(std::vector<std::uint8_t>(coarse, coarse + width * height * 4), rgba);
+  EXPECT_LT(octopoint_web_walk_state()[12], stats.leaves);
   EXPECT_EQ(placeWalker({129 * kWalkUnit, 0, 0}, 0, 0), -1);
 }
 

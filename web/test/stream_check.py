@@ -6,7 +6,8 @@ docs/web.md's time to the first picture).
 usage: web/test/stream_check.py URL complete OUT.png [SECONDS]
          waits until the page says the view is complete and has drawn it, writes the canvas as a
          PNG, and prints the first picture's and the complete view's times (ms from the request),
-         the bytes received and the damaged parts refused
+         the bytes received, the damaged parts refused and, in walk mode, the points the frame
+         drew (walkPoints)
        web/test/stream_check.py URL stopped [SECONDS]
          waits until the page says it stopped asking (a server that kept failing) or that the
          model cannot be read, checks the tab still answers (an animation frame comes), and prints its message
@@ -28,7 +29,8 @@ from devtools import DevTools
 STATE = ("JSON.stringify({stream: document.body.dataset.stream, frames: document.body.dataset.frames,"
          " opened: document.body.dataset.opened, first: document.body.dataset.firstPicture,"
          " received: document.body.dataset.received,"
-         " refused: document.body.dataset.refused, problem: document.body.dataset.problem})")
+         " refused: document.body.dataset.refused, problem: document.body.dataset.problem,"
+         " walkPoints: document.body.dataset.walkPoints})")
 
 
 def main():

@@ -10,7 +10,8 @@ usage: web/test/walk_check.py URL OUT.png [walk]
          and holds w for 0.2 s more. Waits for the fine frame once everything is let go, writes
          the canvas as a PNG and prints, on its last line, the options the page says make
          octopoint-render draw that frame (--size WxH --eye X,Y,Z --look Y,P,R --fov F); on the
-         line before, the eye and look before the walk.
+         line before, the points the overlay says that frame drew (octopoint-render --eye's
+         "N points drawn"); on the first line, the eye and look before the walk.
 
 Exits 1, saying what the page last said, when a frame does not come within 30 s.
 """
@@ -95,9 +96,11 @@ def main():
             time.sleep(0.1)
             said = fine_frame(tools, session, frames(tools, session) - 1)
             png = tools.evaluate(session, "document.getElementById('view').toDataURL('image/png')")
+            points = tools.evaluate(session, "document.body.dataset.walkPoints")
             with open(out, "wb") as written:
                 written.write(base64.b64decode(png.split(",", 1)[1]))
             print(before)
+            print(points)
             print(said)
         finally:
             tools.close()
