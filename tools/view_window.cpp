@@ -54,13 +54,6 @@ ViewWindow::ViewWindow(const std::string& title, int width, int height, int min_
     throw WindowError(message);
   }
   SDL_SetWindowMinimumSize(window_, min_width, min_height);
-  wake_event_type_ = SDL_RegisterEvents(1);
-  if (wake_event_type_ == static_cast<std::uint32_t>(-1)) {
-    const std::string message = sdlError("cannot open a window");
-    SDL_DestroyWindow(window_);
-    SDL_Quit();
-    throw WindowError(message);
-  }
 }
 
 ViewWindow::~ViewWindow() {
@@ -72,22 +65,20 @@ std::optional<WindowEvent> ViewWindow::next(int timeout_ms) {
   const std::int64_t deadline_ms = steadyMilliseconds() + std::max(0, timeout_ms);
   SDL_Event event;
   while (true) {
+    if (wake_requested_.exchange(false)) return WindowEvent{};  // its kind is kWake
+    if (SDL_PollEvent(&event) != 0) {
+      if (std::optional<WindowEvent> translated = translate(event)) return translated;
+      continue;
+    }
     const std::int64_t left_ms = deadline_ms - steadyMilliseconds();
-    const int got = left_ms > 0 ? SDL_WaitEventTimeout(&event, static_cast<int>(left_ms))
-                                : SDL_PollEvent(&event);
-    if (got == 0) return std::nullopt;
-    if (std::optional<WindowEvent> translated = translate(event)) return translated;
+    if (left_ms <= 0) return std::nullopt;
+    SDL_Delay(static_cast<std::uint32_t>(std::min<std::int64_t>(left_ms, kWakePollMs)));
   }
 }
 
 std::optional<WindowEvent> ViewWindow::translate(const SDL_Event& event) {
   using Kind = WindowEvent::Kind;
   WindowEvent out;
-  if (event.type == wake_event_type_) {
-    wake_queued_.store(false);
-    out.kind = Kind::kWake;
-    return out;
-  }
   switch (event.type) {
     case SDL_KEYDOWN:
     case SDL_KEYUP:
@@ -140,12 +131,7 @@ std::optional<WindowEvent> ViewWindow::translate(const SDL_Event& event) {
   }
 }
 
-void ViewWindow::wake() {
-  if (wake_queued_.exchange(true)) return;
-  SDL_Event event{};
-  event.type = wake_event_type_;
-  if (SDL_PushEvent(&event) != 1) wake_queued_.store(false);  // full or filtered: try next time
-}
+void ViewWindow::wake() { wake_requested_.store(true); }
 
 int ViewWindow::width() const {
   int width = 0;

@@ -61,9 +61,19 @@ class ViewWindow {
   // none came. Events the viewer has no use for (mouse motion without the button, ...) are skipped.
   std::optional<WindowEvent> next(int timeout_ms);
 
-  // From any thread: makes next() return a kWake event soon. Wakes that come while one is still
-  // queued are merged into it.
+  // From any thread: makes next() return a kWake event within kWakePollMs. Wakes that come while
+  // one is still pending are merged into it. It only sets a flag.
   void wake();
+
+  // next() polls (SDL_PollEvent, then a sleep of at most this) instead of SDL_WaitEventTimeout,
+  // so that neither an input event nor wake() is seen later than this. The reason is SDL 2.26's
+  // X11 wait: while it waits, every event pushed, whether by another thread (SDL_PushEvent) or by
+  // the wait itself dispatching the key that quits, wakes it with an XSendEvent to the window on
+  // SDL's second X connection, which the X server may process after the window's XDestroyWindow
+  // on the first: BadWindow, and Xlib ends the process with exit 1 at SDL_Quit. Polling never
+  // arms that wake-up, so nothing is ever sent on the second connection (net.viewer_url_smoke
+  // checks it under strace).
+  static constexpr int kWakePollMs = 2;
 
   int width() const;
   int height() const;
@@ -77,8 +87,7 @@ class ViewWindow {
   std::optional<WindowEvent> translate(const SDL_Event& event);
 
   SDL_Window* window_ = nullptr;
-  std::uint32_t wake_event_type_ = 0;
-  std::atomic<bool> wake_queued_{false};
+  std::atomic<bool> wake_requested_{false};
   float wheel_remainder_ = 0;  // trackpads scroll in fractions of a notch
 };
 
