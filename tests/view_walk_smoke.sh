@@ -11,6 +11,8 @@
 #    frame height degrees;
 # 5. Tab switches to orbit mode (s saves an orbit view) and back: the eye enters where
 #    octopoint-render --perspective of that orbit view puts it, and draws its frame;
+# 1b. Between 1 and 2, c steps through the styles (shaded, lines, toon, outlined, colour): each walk
+# frame is octopoint-render --eye --style's of the same eye, pixel for pixel.
 # 6. Esc quits.
 # Frames and views are read with the viewer's p key ("saved NAME (L|H): --size WxH --eye ...").
 # Exits 77 (skipped) without Xvfb or xdotool (scripts/viewer-smoke installs them).
@@ -97,11 +99,22 @@ start=$(fine_view)
 [ "$(field size "$start")" = $size ] || fail "the first frame is not $size: $start"
 same_as_render "$start"
 
+# 1b. The styles in walk mode.
+for style in shaded lines toon outlined; do
+  xdotool key c
+  styled=$(fine_view)
+  [ "$(field style "$styled")" = $style ] || fail "c did not make the style $style: $styled"
+  same_as_render "$styled"
+done
+xdotool key c
+[ -z "$(field style "$(fine_view)")" ] || fail "c after outlined did not go back to colour"
+
 # 2. w held for 1 s walks forward, level.
 before_ns=$(date +%s%N)
+held_number=$(($(saves) + 1))
 xdotool keydown w sleep 0.5 key p sleep 0.5 keyup w
 after_ns=$(date +%s%N)
-held=$(grep "^saved octopoint-view-2.png " "$work/viewer.log" || true)
+held=$(grep "^saved octopoint-view-$held_number.png " "$work/viewer.log" || true)
 case "$held" in *" (L): "*) ;; *) fail "while w was held, the frame was not L's: $held" ;; esac
 walked=$(fine_view)
 same_as_render "$walked"

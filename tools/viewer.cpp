@@ -188,6 +188,12 @@ void Viewer::applyStyle(const StyleOptions& options) {
     cli::printError("octopoint-view", message.c_str());
     return;
   }
+  // Walk frames carry normals only for a style (DualResolutionRenderer::drawWalk says why).
+  ViewEvent normals;
+  normals.time_us = clock_.nowMicroseconds();
+  normals.kind = ViewEventKind::kWalkNormals;
+  normals.on = options.style != Style::kColour;
+  renderer_->handle(normals);
   resolve_again_ = true;
 }
 
@@ -251,19 +257,24 @@ void Viewer::resolveStyled(const Framebuffer& frame, const FrameInfo& info,
                            std::span<std::uint8_t> rgb) {
   smooth_shown_ = splats_ == SplatMode::kSmooth && resolveSmooth(info, rgb);
   if (smooth_shown_) return;
-  const Camera camera = cameraOf(info);
-  FrameSetup setup;
-  const bool styled =
-      styler_->options().style != Style::kColour && info.depth > 0 && !info.view.walk &&
-      buildFrameSetup(camera, info.depth, kDefaultFractionBits, &setup) == CameraError::kNone;
-  // The window's pixels are sized to the frame: resolveToRgb cannot refuse them.
-  if (!styled) {
-    static_cast<void>(resolveToRgb(frame, *model_, kBackground, rgb));
-    return;
+  if (styler_->options().style != Style::kColour && info.depth > 0) {
+    // A walk frame is styled as octopoint-render --eye --style styles it: with its perspective
+    // view's rotation and focal length; an orbit frame with its orthographic setup.
+    FrameSetup setup;
+    PerspectiveView view;
+    bool styled = false;
+    if (info.view.walk && renderer_->walkView(info, &view)) {
+      styler_->beginPerspectiveFrame(view.world_to_camera, view.focal_q16);
+      styled = true;
+    } else if (!info.view.walk && buildFrameSetup(cameraOf(info), info.depth, kDefaultFractionBits,
+                                                  &setup) == CameraError::kNone) {
+      styler_->beginFrame(setup);
+      styled = true;
+    }
+    if (styled && styler_->resolve(frame, rgb) == StyleError::kNone) return;
   }
-  styler_->beginFrame(setup);
-  if (styler_->resolve(frame, rgb) != StyleError::kNone)
-    static_cast<void>(resolveToRgb(frame, *model_, kBackground, rgb));
+  // The window's pixels are sized to the frame: resolveToRgb cannot refuse them.
+  static_cast<void>(resolveToRgb(frame, *model_, kBackground, rgb));
 }
 
 KeyBindings Viewer::keyTable(Viewer* viewer) {
@@ -474,7 +485,7 @@ void Viewer::defaultOverlay(OverlayLines& lines) const {
     lines.emplace_back(smooth_shown_ ? "smooth splats"
                                      : "smooth splats: off with filling or walking");
   }
-  if (styler_ && styler_->options().style != Style::kColour && !info.view.walk) {
+  if (styler_ && styler_->options().style != Style::kColour) {
     const StyleOptions& style = styler_->options();
     std::snprintf(line, sizeof line, "%s  light %.0f,%.0f",
                   std::string(styleName(style.style)).c_str(), signedDegreesOf(style.light.azimuth),
@@ -504,13 +515,6 @@ void Viewer::save() {
     return;
   }
   const FrameInfo& info = shown_info_;
-  if (info.view.walk) {
-    std::printf("saved %s (%s): --size %dx%d%s%s\n", name.c_str(),
-                info.source == FrameSource::kFine ? "H" : "L", info.width, info.height,
-                walkOptions(info.view.walker).c_str(), info.view.fill ? " --fill" : "");
-    std::fflush(stdout);
-    return;
-  }
   std::string style;
   if (styler_ && styler_->options().style != Style::kColour) {
     char text[96];
@@ -519,6 +523,14 @@ void Viewer::save() {
                   signedDegreesOf(styler_->options().light.azimuth),
                   signedDegreesOf(styler_->options().light.elevation));
     style = text;
+  }
+  if (info.view.walk) {
+    std::printf("saved %s (%s): --size %dx%d%s%s%s\n", name.c_str(),
+                info.source == FrameSource::kFine ? "H" : "L", info.width, info.height,
+                walkOptions(info.view.walker).c_str(), info.view.fill ? " --fill" : "",
+                style.c_str());
+    std::fflush(stdout);
+    return;
   }
   const char* splats = smooth_shown_ ? " --splats smooth" : "";
   std::printf("saved %s (%s): --size %dx%d --yaw %.2f --pitch %.2f --zoom %.4f --depth %d%s%s%s\n",

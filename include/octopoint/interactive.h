@@ -96,6 +96,8 @@ enum class ViewEventKind : std::uint8_t {
   kTurn,             // walk mode: the eye turns by turn_yaw, turn_pitch (a mouse drag)
   kResize,           // the frame becomes width x height pixels (the window was resized)
   kToggleCollision,  // walk mode: collision on/off (where the config gives the eye a radius)
+  kWalkNormals,      // walk frames carry normals from now on (`on`: config.payload, for a style)
+                     // or not (colour only, as octopoint-render --eye draws them)
   kContentChanged,   // the model has more in it (a streamed chunk arrived): the fine frame is due
                      // again, without changing the view or aborting a fine frame under way
   kQuit,             // the source has ended
@@ -111,6 +113,7 @@ struct ViewEvent {
   std::int32_t height = 0;
   std::int32_t turn_yaw = 0;    // for kTurn: in 1/65536 turn, > 0 to the right
   std::int32_t turn_pitch = 0;  // > 0 up
+  bool on = false;              // for kWalkNormals
 };
 
 class EventSource {
@@ -178,6 +181,7 @@ namespace octopoint {
 
 class PerspectiveRenderer;  // renderer/perspective_renderer.h: walk mode's frames
 class CollisionModel;       // renderer/collision.h: walk mode's collision
+struct PerspectiveView;     // renderer/perspective.h: a walk frame's view
 
 // Walk mode's eye (renderer/perspective.h's PerspectiveCamera): where it stands, in Q.24 cube
 // edges about the cube's centre in the model's axes (x right, y down, z away), and where it looks.
@@ -198,6 +202,8 @@ struct ViewParameters {
   // culling; docs/perspective.md), and yaw, pitch, zoom and fill wait for orbit mode.
   bool walk = false;
   WalkEye walker;
+  // Walk frames carry normals (kWalkNormals: the display shows a style); colour-only otherwise.
+  bool walk_normals = false;
   bool operator==(const ViewParameters&) const = default;
 };
 
@@ -305,6 +311,11 @@ class DualResolutionRenderer {
 
   // Whether kToggleWalk can enter walk mode: a renderer built from a whole model.
   bool canWalk() const { return model_ != nullptr; }
+
+  // The perspective view the walk frame `info` describes was drawn with, for the display to style
+  // it (FrameStyler::beginPerspectiveFrame); false when `info` is not a walk frame or its camera
+  // was refused (the frame is empty).
+  [[nodiscard]] bool walkView(const FrameInfo& info, PerspectiveView* view) const;
 
   // For the display, from one thread only: makes the newest complete frame the front buffer and
   // returns it (nullptr before the first frame). The front buffer is not touched by anyone until
