@@ -84,8 +84,8 @@ DualResolutionRenderer::DualResolutionRenderer(const ModelView* model, const Lev
         collide_ = true;
       }
     }
-  } else {
-    base_view_.walk = false;  // walk mode needs the whole model
+  } else if (!config.walk_draw) {
+    base_view_.walk = false;  // walk mode needs the whole model, or a walk drawer
   }
   status_.walk = base_view_.walk;
   status_.walk_speed = walk_speed_;
@@ -394,7 +394,16 @@ bool DualResolutionRenderer::drawWalk(Slot& slot, Worker& worker, const std::ato
   slot.frame.clear(slot.info.view.walk_normals ? config_.payload : PixelPayload::kColour);
   PerspectiveView view;
   // The eye is kept within reach and the size within bounds; a refused camera leaves it empty.
-  if (worker.perspective != nullptr && walkView(slot.info, &view)) {
+  if (worker.perspective == nullptr && config_.walk_draw && walkView(slot.info, &view)) {
+    int finest = 0;
+    if (!config_.walk_draw(slot.info.source, view, slot.frame, abort, &finest)) return false;
+    slot.info.depth = finest;
+    // A refused fill cannot happen (fitBuffers made the filler as wide as the frame).
+    if (finest > 0 && slot.info.view.fill &&
+        worker.filler.fill(slot.frame, perspectiveBridge(view, finest)).refused) {
+      return false;
+    }
+  } else if (worker.perspective != nullptr && walkView(slot.info, &view)) {
     PerspectiveRenderer::Options options;  // detail by distance, culled: octopoint-render --eye's
     options.coarser = slot.info.source == FrameSource::kCoarse ? 1 : 0;
     const std::span<const int> depths = worker.perspective->detailDepths();

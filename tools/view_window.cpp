@@ -16,6 +16,8 @@ std::int64_t steadyMilliseconds() {
       .count();
 }
 
+}  // namespace
+
 // Left to itself, SDL tries every video driver it has and ends with "offscreen", an invisible
 // window, when there is no display. Unless the user picks a driver (SDL_VIDEODRIVER), take the one
 // the environment names, or refuse.
@@ -35,8 +37,6 @@ void chooseVideoDriver() {
         "SDL_VIDEODRIVER picks another SDL video driver, e.g. kmsdrm)");
   }
 }
-
-}  // namespace
 
 ViewWindow::ViewWindow(const std::string& title, int width, int height, int min_width,
                        int min_height) {

@@ -48,6 +48,11 @@ struct WindowEvent {
   int height = 0;
 };
 
+// Picks SDL's video driver from the environment (DISPLAY: x11, WAYLAND_DISPLAY: wayland) unless
+// SDL_VIDEODRIVER names one; throws WindowError (one line) when there is no display. The window
+// calls it; so may a caller that wants to know before it does anything slow.
+void chooseVideoDriver();
+
 class ViewWindow {
  public:
   // Opens a resizable window of width x height pixels that cannot be made smaller than

@@ -18,6 +18,7 @@
 #include "cli/text.h"
 #include "octopoint/progressive.h"
 #include "renderer/perspective.h"
+#include "tools/view_stream.h"
 
 namespace octopoint {
 namespace {
@@ -63,34 +64,20 @@ InteractiveConfig interactiveConfig(const ViewerOptions& options, const WalkStar
   return config;
 }
 
-// Draws the views of a chunked model as it streams in: the fine frame at the depth the view needs,
-// the coarse one a stored depth coarser; an empty frame until the head has arrived. Each render
-// thread draws from its own snapshot of the chunks held, taken under the stream's lock for a copy
-// of one byte per chunk, and draws without the lock: chunks keep arriving while it draws.
-ViewDrawFunction streamDrawer(net::ModelStream& stream, std::uint64_t point_budget) {
-  const Variant variant = InteractiveConfig{}.variant;
-  // One per render thread (FrameSource: L draws kCoarse, H kFine), kept across frames.
-  auto snapshots = std::make_shared<std::array<ProgressiveFrame, 2>>();
-  for (ProgressiveFrame& snapshot : *snapshots) snapshot.setPointBudget(point_budget);
-  return [&stream, variant, snapshots](FrameSource source, const Camera& camera, Framebuffer& frame,
-                                       const std::atomic<bool>* abort, int* depth) {
-    ProgressiveFrame& snapshot = (*snapshots)[source == FrameSource::kFine ? 1 : 0];
-    const ProgressiveModel* model = stream.snapshot(snapshot);
-    if (model == nullptr) return true;
-    ProgressiveDrawStats stats;
-    const int coarser = source == FrameSource::kCoarse ? 1 : 0;
-    const bool complete = model->draw(snapshot, camera, variant, frame, &stats, abort, coarser) ||
-                          abort == nullptr || !abort->load();
-    *depth = stats.drawn_depth;
-    return complete;
-  };
-}
-
 // A model with normals is drawn with them, so that the style keys work on every frame.
 InteractiveConfig interactiveConfig(const ViewerOptions& options, const WalkStart& walk,
                                     ViewWindow& window, const ModelView& model) {
   InteractiveConfig config = interactiveConfig(options, walk, window);
   if (model.hasNormals()) config.payload = PixelPayload::kColourNormal;
+  return config;
+}
+
+// A streamed model walks too (tools/view_stream.h); its frames carry colours only.
+InteractiveConfig streamConfig(const ViewerOptions& options, const WalkStart& walk,
+                               ViewWindow& window, net::ModelStream& stream,
+                               const std::atomic<std::uint64_t>& content) {
+  InteractiveConfig config = interactiveConfig(options, walk, window);
+  config.walk_draw = streamWalkDrawer(stream, content);
   return config;
 }
 
@@ -117,7 +104,7 @@ Viewer::Viewer(const ViewerOptions& options, const WalkStart& walk, const ModelV
                           *model, clock_, interactiveConfig(options, walk, window_, *model))
                     : std::make_unique<DualResolutionRenderer>(
                           streamDrawer(*stream, options.source.point_budget), clock_,
-                          interactiveConfig(options, walk, window_))),
+                          streamConfig(options, walk, window_, *stream, stream_content_))),
       keys_(keyTable(this)),
       resolve_(
           [this](const Framebuffer& frame, const FrameInfo& info, std::span<std::uint8_t> rgb) {
@@ -148,6 +135,7 @@ Viewer::Viewer(const ViewerOptions& options, const WalkStart& walk, const ModelV
 }
 
 void Viewer::contentChanged() {
+  stream_content_.fetch_add(1);  // before the renderer hears of it: its walk frames reassemble
   renderer_->handle({clock_.nowMicroseconds(), ViewEventKind::kContentChanged});
   window_.wake();  // the overlay's byte count moved too
 }
@@ -156,14 +144,16 @@ void Viewer::followView() {
   if (stream_ == nullptr) return;
   const FrameInfo latest = renderer_->status().latest;
   if (latest.generation == 0) return;
-  const Camera camera = cameraOf(latest);
-  const bool same =
-      followed_view_ && followed_view_->yaw == camera.yaw &&
-      followed_view_->pitch == camera.pitch && followed_view_->zoom.raw() == camera.zoom.raw() &&
-      followed_view_->width == camera.width && followed_view_->height == camera.height;
+  const bool same = followed_ && followed_->view == latest.view &&
+                    followed_->width == latest.width && followed_->height == latest.height;
   if (same) return;
-  followed_view_ = camera;
-  stream_->setView(camera);
+  followed_ = latest;
+  PerspectiveView walk_view;
+  if (latest.view.walk) {
+    if (renderer_->walkView(latest, &walk_view)) stream_->setView(walk_view);
+  } else {
+    stream_->setView(cameraOf(latest));
+  }
 }
 
 void Viewer::streamOverlay(OverlayLines& lines) {

@@ -3,6 +3,7 @@
 
 #pragma once
 
+#include <atomic>
 #include <cstdint>
 #include <functional>
 #include <memory>
@@ -115,6 +116,7 @@ class Viewer {
   const ModelView* model_;
   net::ModelStream* stream_;
   const SteadyClock clock_;
+  std::atomic<std::uint64_t> stream_content_{0};  // chunks accepted (contentChanged)
   ViewWindow window_;  // before renderer_: its threads wake the window until they are joined
   std::unique_ptr<DualResolutionRenderer> renderer_;
   KeyBindings keys_;
@@ -144,7 +146,7 @@ class Viewer {
   RateCounter drawn_rate_;
   RateCounter shown_rate_;
   int saved_ = 0;
-  std::optional<Camera> followed_view_;  // the view the stream fetches for
+  std::optional<FrameInfo> followed_;  // the frame whose view the stream fetches for
   // The drag under way: its motion so far (window pixels) and the turn already sent for it.
   std::int64_t drag_x_ = 0, drag_y_ = 0;
   std::int64_t drag_yaw_sent_ = 0, drag_pitch_sent_ = 0;

@@ -183,6 +183,8 @@ class PerspectiveRenderer;  // renderer/perspective_renderer.h: walk mode's fram
 class CollisionModel;       // renderer/collision.h: walk mode's collision
 struct PerspectiveView;     // renderer/perspective.h: a walk frame's view
 
+enum class FrameSource : std::uint8_t { kCoarse, kFine };  // drawn by L or by H
+
 // Walk mode's eye (renderer/perspective.h's PerspectiveCamera): where it stands, in Q.24 cube
 // edges about the cube's centre in the model's axes (x right, y down, z away), and where it looks.
 struct WalkEye {
@@ -206,6 +208,15 @@ struct ViewParameters {
   bool walk_normals = false;
   bool operator==(const ViewParameters&) const = default;
 };
+
+// Draws a walk frame of a model that is not one ModelView (a chunked model streaming in:
+// tools/viewer.cpp with --url) into a cleared colour frame: `view` is the frame's
+// (DualResolutionRenderer::walkView), the coarse frame (`source` kCoarse) a stored depth coarser
+// where it can. Returns false when `abort` stopped it; sets `finest_depth` to the finest depth it
+// drew (0: nothing), which hole filling bridges by.
+using WalkDrawFunction =
+    std::function<bool(FrameSource source, const PerspectiveView& view, Framebuffer& frame,
+                       const std::atomic<bool>* abort, int* finest_depth)>;
 
 struct InteractiveConfig {
   std::int32_t width = 320;  // the initial frame size (kResize changes it), 1..kMaxViewportSide
@@ -234,9 +245,11 @@ struct InteractiveConfig {
   // What the frames carry besides depth and colour: PixelPayload::kColourNormal lets the display
   // draw them in any style (octopoint/styles.h); it needs a model with normals.
   PixelPayload payload = PixelPayload::kColour;
+  // For a renderer of whole views (ViewDrawFunction): draws its walk frames, so that it can walk
+  // (canWalk); must be safe to call from both render threads at once. Walk mode's near plane is
+  // then `near` (0: PerspectiveCamera's default).
+  WalkDrawFunction walk_draw;
 };
-
-enum class FrameSource : std::uint8_t { kCoarse, kFine };  // drawn by L or by H
 
 struct FrameInfo {
   FrameSource source = FrameSource::kCoarse;
@@ -309,8 +322,9 @@ class DualResolutionRenderer {
   // Applies one event from the event source (kQuit is the caller's business).
   void handle(const ViewEvent& event);
 
-  // Whether kToggleWalk can enter walk mode: a renderer built from a whole model.
-  bool canWalk() const { return model_ != nullptr; }
+  // Whether kToggleWalk can enter walk mode: a renderer built from a whole model, or given
+  // config.walk_draw.
+  bool canWalk() const { return model_ != nullptr || config_.walk_draw != nullptr; }
 
   // The perspective view the walk frame `info` describes was drawn with, for the display to style
   // it (FrameStyler::beginPerspectiveFrame); false when `info` is not a walk frame or its camera
