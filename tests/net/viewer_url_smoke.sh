@@ -11,41 +11,21 @@
 set -euo pipefail
 prepare=$1 serve=$2 viewer=$3 render=$4 scan=$5 work=$6
 source "$(dirname "$0")/net_script_lib.sh"
-for tool in Xvfb xdotool compare; do
-  command -v "$tool" >/dev/null || { echo "$tool is not installed: skipped"; exit 77; }
-done
+source "$(dirname "$0")/../viewer_script_lib.sh"
+require_viewer_tools
 rm -rf "$work" && mkdir -p "$work/models" "$work/run"
 # Depths the test sphere samples densely (depth auto draws no finer one: depth 6 has 2.7x the
 # voxels of depth 5).
 "$prepare" "$scan" -o "$work/models" --name sphere --depths 3,4,5 --chunked >/dev/null
 start_octopoint_serve "$serve" "$work/models" --rate 2000 --latency 100
-xvfb_pid="" viewer_pid=""
-cleanup() {
-  [ -n "$viewer_pid" ] && stop_pid "$viewer_pid"
-  [ -n "$xvfb_pid" ] && stop_pid "$xvfb_pid"
-  stop_pid "$SERVE_PID"
-}
-trap cleanup EXIT
-Xvfb -displayfd 3 -screen 0 800x600x24 -nolisten tcp 3>"$work/display" 2>"$work/xvfb.log" &
-xvfb_pid=$!
-for _ in $(seq 100); do [ -s "$work/display" ] && break; sleep 0.05; done
-[ -s "$work/display" ] || fail "Xvfb did not start: $(cat "$work/xvfb.log")"
-DISPLAY=:$(cat "$work/display")
-export DISPLAY
+start_xvfb_for_served_viewer
 tracer=()
 if command -v strace >/dev/null && strace -f -o /dev/null true 2>/dev/null; then
   tracer=(strace -f -o "$work/strace.log" -e trace=connect,close,write,writev,sendmsg)
 fi
 (cd "$work/run" && exec "${tracer[@]}" "$viewer" --url "http://127.0.0.1:$SERVE_PORT/sphere.oct" --size 320x240) >"$work/viewer.log" 2>&1 &
 viewer_pid=$!
-window=""
-for _ in $(seq 100); do
-  window=$(xdotool search --onlyvisible --name '^octopoint-view$' 2>/dev/null | head -1) && [ -n "$window" ] && break
-  kill -0 "$viewer_pid" 2>/dev/null || fail "the viewer exited: $(cat "$work/viewer.log")"
-  sleep 0.05
-done
-[ -n "$window" ] || fail "no viewer window appeared"
-xdotool windowfocus --sync "$window"
+wait_for_viewer_window
 save() {  # presses s and waits for the viewer to say it saved frame $1
   xdotool key s
   for _ in $(seq 100); do

@@ -9,9 +9,8 @@
 set -euo pipefail
 prepare=$1 serve=$2 viewer=$3 render=$4 scan=$5 work=$6
 source "$(dirname "$0")/net_script_lib.sh"
-for tool in Xvfb xdotool compare; do
-  command -v "$tool" >/dev/null || { echo "$tool is not installed: skipped"; exit 77; }
-done
+source "$(dirname "$0")/../viewer_script_lib.sh"
+require_viewer_tools
 rm -rf "$work" && mkdir -p "$work/models" "$work/run"
 "$prepare" "$scan" -o "$work/models" --name sphere --depths 3,4,5 --chunked >/dev/null
 # An eye inside the cube, looking at the sphere: the one --perspective puts at zoom 2.
@@ -22,54 +21,12 @@ look=$(sed -n 's/.* eye \([^ ]*\) looking \([^ ]*\) .*/\2/p' <<<"$eye_line")
 [ -n "$eye" ] && [ -n "$look" ] || fail "no eye in: $eye_line"
 start_octopoint_serve "$serve" "$work/models" --rate 2000 --latency 100
 url="http://127.0.0.1:$SERVE_PORT/sphere.oct"
-xvfb_pid="" viewer_pid=""
-cleanup() {
-  [ -n "$viewer_pid" ] && stop_pid "$viewer_pid"
-  [ -n "$xvfb_pid" ] && stop_pid "$xvfb_pid"
-  stop_pid "$SERVE_PID"
-}
-trap cleanup EXIT
-Xvfb -displayfd 3 -screen 0 800x600x24 -nolisten tcp 3>"$work/display" 2>"$work/xvfb.log" &
-xvfb_pid=$!
-for _ in $(seq 100); do [ -s "$work/display" ] && break; sleep 0.05; done
-[ -s "$work/display" ] || fail "Xvfb did not start: $(cat "$work/xvfb.log")"
-DISPLAY=:$(cat "$work/display")
-export DISPLAY
+start_xvfb_for_served_viewer
 (cd "$work/run" && exec "$viewer" --url "$url" --eye "$eye" --look "$look" --fov 60 --size 320x240 \
   --walk-speed 0.5) >"$work/viewer.log" 2>&1 &
 viewer_pid=$!
-window=""
-for _ in $(seq 200); do
-  window=$(xdotool search --onlyvisible --name '^octopoint-view$' 2>/dev/null | head -1) && [ -n "$window" ] && break
-  kill -0 "$viewer_pid" 2>/dev/null || fail "the viewer exited: $(cat "$work/viewer.log")"
-  sleep 0.05
-done
-[ -n "$window" ] || fail "no viewer window appeared"
-xdotool windowfocus --sync "$window"
+wait_for_viewer_window
 
-saves() { grep -c '^saved ' "$work/viewer.log" || true; }
-# Presses KEY (p in walk mode, s in orbit mode) and prints the line it makes the viewer print.
-save_view() {
-  local key=$1 number=$(($(saves) + 1))
-  xdotool key "$key"
-  for _ in $(seq 100); do
-    line=$(grep "^saved octopoint-view-$number.png " "$work/viewer.log" || true)
-    [ -n "$line" ] && { echo "$line"; return; }
-    sleep 0.02
-  done
-  fail "$key printed nothing: $(cat "$work/viewer.log")"
-}
-# Saves until the frame saved is H's.
-fine_view() {
-  for _ in $(seq 20); do
-    line=$(save_view "${1:-p}")
-    case "$line" in *" (H): "*) echo "$line"; return ;; esac
-    sleep 0.1
-  done
-  fail "H drew no frame: $line"
-}
-options_of() { sed 's/^saved [^:]*: //' <<<"$1"; }
-file_of() { sed 's/^saved \([^ ]*\) .*/\1/' <<<"$1"; }
 # How many pixels the saved frame differs in from octopoint-render --url's of the options printed.
 differs_from_render() {
   local line=$1 name
@@ -95,13 +52,8 @@ done
 [ "$early" != 0 ] || fail "the first walk frame is already the final picture: the stream was not seen"
 
 # 2. Tab to orbit mode and back: walk mode again, at the orbit view's eye.
-xdotool key Tab
-sleep 0.3
-orbit=$(fine_view s)
-case "$orbit" in *" --yaw "*) ;; *) fail "after Tab, s saved no orbit view: $orbit" ;; esac
-xdotool key Tab
-sleep 0.3
-entered=$(fine_view)
+{ read -r orbit; read -r entered; } < <(orbit_and_back) || true
+[ -n "$entered" ] || fail "Tab to orbit mode and back saved no walk frame"
 [ "$(differs_from_render "$entered")" = 0 ] || fail "after Tab twice, $entered differs from octopoint-render's"
 
 # 3. w held: a new eye, still the render's frame.
