@@ -114,6 +114,8 @@ Viewer::Viewer(const ViewerOptions& options, const WalkStart& walk, const ModelV
             }
             // The palette never changes once the head is in: resolved without the stream's lock.
             if (const ProgressiveModel* chunked = stream_->model(); chunked != nullptr) {
+              smooth_shown_ = splats_ == SplatMode::kSmooth && resolveStreamSmooth(info, rgb);
+              if (smooth_shown_) return;
               // The window's pixels are sized to the frame: resolveToRgb cannot refuse them.
               static_cast<void>(resolveToRgb(frame, chunked->baseModel(), kBackground, rgb));
               return;
@@ -129,6 +131,7 @@ Viewer::Viewer(const ViewerOptions& options, const WalkStart& walk, const ModelV
     // The colour style needs no normals: setOptions cannot refuse it.
     static_cast<void>(styler_.emplace(*model_).setOptions(style));
   }
+  stream_snapshot_.setPointBudget(options.source.point_budget);
   overlay_.add([this](OverlayLines& lines) { defaultOverlay(lines); });
   overlay_.add([this](OverlayLines& lines) { walkOverlay(lines); });
   if (stream_ != nullptr) overlay_.add([this](OverlayLines& lines) { streamOverlay(lines); });
@@ -213,12 +216,6 @@ void Viewer::moveLight(int azimuth_steps, int elevation_steps) {
 }
 
 void Viewer::nextSplatMode() {
-  if (model_ == nullptr) {
-    cli::printError("octopoint-view",
-                    "smooth splats: not for a streamed model yet; open a model file or an "
-                    "embedded model");
-    return;
-  }
   splats_ = splats_ == SplatMode::kBox ? SplatMode::kSmooth : SplatMode::kBox;
   resolve_again_ = true;
 }
@@ -231,16 +228,35 @@ bool Viewer::resolveSmooth(const FrameInfo& info, std::span<std::uint8_t> rgb) {
           CameraError::kNone) {
     return false;
   }
-  if (!blend_frame_ || blend_frame_->width() != info.width ||
-      blend_frame_->height() != info.height) {  // allocates on a new size only
-    blend_frame_.emplace(info.width, info.height);
-    smooth_.emplace(info.width, info.height, *model_);  // with normals where the model has them
-  }
+  fitBlend(info.width, info.height);
   blend_frame_->clear(styler_->payload());
   if (!renderSmooth(InteractiveConfig{}.variant, *level, setup, *blend_frame_, *smooth_, palette_))
     return false;
   styler_->beginFrame(setup);
   return styler_->resolve(*blend_frame_, rgb, smooth_->pixelBlend()) == StyleError::kNone;
+}
+
+void Viewer::fitBlend(int width, int height) {
+  if (blend_frame_ && blend_frame_->width() == width && blend_frame_->height() == height) return;
+  blend_frame_.emplace(width, height);
+  if (model_ != nullptr) {
+    smooth_.emplace(width, height, *model_);  // with normals where the model has them
+  } else {
+    smooth_.emplace(width, height);
+  }
+}
+
+bool Viewer::resolveStreamSmooth(const FrameInfo& info, std::span<std::uint8_t> rgb) {
+  if (info.view.walk || info.view.fill || info.depth == 0) return false;
+  fitBlend(info.width, info.height);
+  blend_frame_->clear();
+  // A snapshot of the chunks held now, as a render thread takes one: drawn without the lock.
+  const ProgressiveModel* model = stream_->snapshot(stream_snapshot_);
+  if (model == nullptr) return false;
+  palette_ = paletteOf(model->baseModel());
+  return model->drawSmooth(stream_snapshot_, cameraOf(info), InteractiveConfig{}.variant,
+                           *blend_frame_, *smooth_, palette_) &&
+         smooth_->resolveToRgb(*blend_frame_, palette_, kBackground, rgb);
 }
 
 void Viewer::resolveStyled(const Framebuffer& frame, const FrameInfo& info,

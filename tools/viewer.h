@@ -16,6 +16,7 @@
 #include "octopoint/http.h"
 #include "octopoint/interactive.h"
 #include "octopoint/model.h"
+#include "octopoint/progressive.h"
 #include "octopoint/smooth.h"
 #include "octopoint/styles.h"
 #include "tools/model_source.h"
@@ -110,6 +111,11 @@ class Viewer {
   // Draws the frame `info` describes smoothly into blend_frame_ and resolves it in the style into
   // `rgb`; false where smooth splats do not apply (hole filling, walking, no depth drawn).
   bool resolveSmooth(const FrameInfo& info, std::span<std::uint8_t> rgb);
+  // The same for a streamed model: the chunks held now, drawn smoothly at the depth the view
+  // needs (ProgressiveModel::drawSmooth), as octopoint-render --url --splats smooth draws them.
+  bool resolveStreamSmooth(const FrameInfo& info, std::span<std::uint8_t> rgb);
+  // Sizes blend_frame_ and smooth_ to the frame on screen (allocates on a new size only).
+  void fitBlend(int width, int height);
 
   const ViewerOptions options_;
   const WalkStart walk_;
@@ -129,7 +135,8 @@ class Viewer {
   std::optional<Framebuffer> blend_frame_;
   std::optional<SmoothSplats> smooth_;
   PaletteRgb palette_{};
-  bool smooth_shown_ = false;  // the frame on screen was blended
+  ProgressiveFrame stream_snapshot_;  // the chunks held, for a streamed model's smooth frame
+  bool smooth_shown_ = false;         // the frame on screen was blended
   // Turns a frame into RGB888 for the screen and for `s` (default: its palette colours).
   std::function<void(const Framebuffer&, const FrameInfo&, std::span<std::uint8_t>)> resolve_;
 

@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # octopoint-view --url in a real X server (Xvfb), against octopoint-serve shaped to a slow link: the
 # window shows a coarse picture early, and once the view's chunks are in, the fine frame is the
-# file's own picture (pixel for pixel what octopoint-render --file draws). Frames are read with the
+# file's own picture (pixel for pixel what octopoint-render --file draws); after m, what
+# octopoint-render --file --splats smooth draws. Frames are read with the
 # viewer's `s` key (xdotool). Where strace can trace it, the viewer runs under strace: no thread but
 # the main one may write to the X server, and nothing may go on SDL's second X connection (a
 # wake-up sent there can reach the server after the window is gone: BadWindow, exit 1 at SDL_Quit;
@@ -47,11 +48,23 @@ while [ "$final" != 0 ] && [ "$n" -lt 41 ]; do
   save "$n"
   final=$(differs "$n")
 done
+[ "$final" = 0 ] || fail "after the stream, the viewer's frame differs from the file's in $final pixels"
+# m: smooth splats, the file's picture as octopoint-render --splats smooth draws it (not the box's).
+"$render" --file "$work/models/sphere.oct" --size 320x240 --splats smooth -o "$work/smooth.png" >/dev/null
+[ "$(compare -metric AE "$work/smooth.png" "$work/file.png" null: 2>&1 || true)" != 0 ] ||
+  fail "--splats smooth draws the test sphere as box does: m would not be seen"
+xdotool key m
+sleep 0.3
+n=$((n + 1))
+save "$n"
+grep -q "^saved octopoint-view-$n.png (.): .* --splats smooth" "$work/viewer.log" ||
+  fail "after m, s saved no smooth frame: $(grep "^saved octopoint-view-$n.png" "$work/viewer.log")"
+smooth=$(compare -metric AE "$work/run/octopoint-view-$n.png" "$work/smooth.png" null: 2>&1 || true)
+[ "$smooth" = 0 ] || fail "after m, the frame differs from --splats smooth's in $smooth pixels"
 xdotool key q  # while the rest of the file is prefetched: the stream still wakes the window
 for _ in $(seq 100); do kill -0 "$viewer_pid" 2>/dev/null || break; sleep 0.05; done
 wait "$viewer_pid" || fail "the viewer exited with an error: $(cat "$work/viewer.log")"
 viewer_pid=""
-[ "$final" = 0 ] || fail "after the stream, the viewer's frame differs from the file's in $final pixels"
 [ "$early" != 0 ] || fail "the early frame is already the final picture: the stream was not seen"
 # What the viewer wrote to the X server (its sockets: connected to X11-unix until closed): writes
 # by a thread other than the main one (the first line's: it loads the libraries before any thread
@@ -71,4 +84,4 @@ if [ ${#tracer[@]} -gt 0 ]; then
     fail "the viewer wrote to the X server off its main thread, or sent it events (SDL's" \
       "wake-ups), $x_writes times: a wake-up can reach the server after the window is gone"
 fi
-echo "ok: the early frame differs from the file's picture in $early pixels, frame $n (after $((n - 1)) s) in none${x_writes:+; no wake-up sent to the X server}"
+echo "ok: the early frame differs from the file's picture in $early pixels, frame $n (after $((n - 1)) s) in none, and after m none from --splats smooth${x_writes:+; no wake-up sent to the X server}"
