@@ -1,5 +1,10 @@
 #include "tools/view_window.h"
 
+#include <SDL2/SDL_syswm.h>
+#include <poll.h>
+#include <sys/eventfd.h>
+#include <unistd.h>
+
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -54,11 +59,29 @@ ViewWindow::ViewWindow(const std::string& title, int width, int height, int min_
     throw WindowError(message);
   }
   SDL_SetWindowMinimumSize(window_, min_width, min_height);
+  wake_fd_ = eventfd(0, EFD_NONBLOCK | EFD_CLOEXEC);
+  SDL_SysWMinfo info;
+  SDL_VERSION(&info.version);
+  if (SDL_GetWindowWMInfo(window_, &info) == SDL_TRUE && info.subsystem == SDL_SYSWM_X11)
+    x11_fd_ = ConnectionNumber(info.info.x11.display);
 }
 
 ViewWindow::~ViewWindow() {
   SDL_DestroyWindow(window_);
   SDL_Quit();
+  if (wake_fd_ >= 0) close(wake_fd_);
+}
+
+void ViewWindow::sleep(std::int64_t at_most_ms) {
+  if (x11_fd_ < 0 || wake_fd_ < 0) {
+    SDL_Delay(static_cast<std::uint32_t>(std::min<std::int64_t>(at_most_ms, kWakePollMs)));
+    return;
+  }
+  pollfd fds[2] = {{x11_fd_, POLLIN, 0}, {wake_fd_, POLLIN, 0}};
+  if (poll(fds, 2, static_cast<int>(at_most_ms)) > 0 && (fds[1].revents & POLLIN) != 0) {
+    std::uint64_t count = 0;  // drained: a wake already taken by its flag must not spin the poll
+    static_cast<void>(read(wake_fd_, &count, sizeof count));
+  }
 }
 
 std::optional<WindowEvent> ViewWindow::next(int timeout_ms) {
@@ -72,7 +95,7 @@ std::optional<WindowEvent> ViewWindow::next(int timeout_ms) {
     }
     const std::int64_t left_ms = deadline_ms - steadyMilliseconds();
     if (left_ms <= 0) return std::nullopt;
-    SDL_Delay(static_cast<std::uint32_t>(std::min<std::int64_t>(left_ms, kWakePollMs)));
+    sleep(left_ms);
   }
 }
 
@@ -131,7 +154,11 @@ std::optional<WindowEvent> ViewWindow::translate(const SDL_Event& event) {
   }
 }
 
-void ViewWindow::wake() { wake_requested_.store(true); }
+void ViewWindow::wake() {
+  if (wake_requested_.exchange(true) || wake_fd_ < 0) return;
+  const std::uint64_t one = 1;
+  static_cast<void>(write(wake_fd_, &one, sizeof one));
+}
 
 int ViewWindow::width() const {
   int width = 0;

@@ -66,18 +66,19 @@ class ViewWindow {
   // none came. Events the viewer has no use for (mouse motion without the button, ...) are skipped.
   std::optional<WindowEvent> next(int timeout_ms);
 
-  // From any thread: makes next() return a kWake event within kWakePollMs. Wakes that come while
-  // one is still pending are merged into it. It only sets a flag.
+  // From any thread: makes next() return a kWake event soon. Wakes that come while one is still
+  // pending are merged into it. It sets a flag and writes to an eventfd: it calls no SDL.
   void wake();
 
-  // next() polls (SDL_PollEvent, then a sleep of at most this) instead of SDL_WaitEventTimeout,
-  // so that neither an input event nor wake() is seen later than this. The reason is SDL 2.26's
-  // X11 wait: while it waits, every event pushed, whether by another thread (SDL_PushEvent) or by
-  // the wait itself dispatching the key that quits, wakes it with an XSendEvent to the window on
-  // SDL's second X connection, which the X server may process after the window's XDestroyWindow
-  // on the first: BadWindow, and Xlib ends the process with exit 1 at SDL_Quit. Polling never
-  // arms that wake-up, so nothing is ever sent on the second connection (net.viewer_url_smoke
-  // checks it under strace).
+  // next() does not wait in SDL_WaitEventTimeout. In SDL 2.26's X11 wait, every event pushed
+  // while it waits, whether by another thread (SDL_PushEvent) or by the wait itself dispatching
+  // the key that quits, wakes it with an XSendEvent to the window on SDL's second X connection,
+  // which the X server may process after the window's XDestroyWindow on the first: BadWindow, and
+  // Xlib ends the process with exit 1 at SDL_Quit. Instead next() takes what SDL_PollEvent has
+  // (which never arms that wake-up, so nothing is ever sent on the second connection:
+  // net.viewer_url_smoke checks it under strace), then sleeps in poll() on the X connection and
+  // wake()'s eventfd; with another video driver (no X connection to watch) it sleeps at most
+  // kWakePollMs at a time.
   static constexpr int kWakePollMs = 2;
 
   int width() const;
@@ -90,9 +91,14 @@ class ViewWindow {
 
  private:
   std::optional<WindowEvent> translate(const SDL_Event& event);
+  // Sleeps until the X connection has input or wake() is called, at most `at_most_ms` (see
+  // kWakePollMs).
+  void sleep(std::int64_t at_most_ms);
 
   SDL_Window* window_ = nullptr;
   std::atomic<bool> wake_requested_{false};
+  int wake_fd_ = -1;           // an eventfd wake() writes to (-1: none could be made)
+  int x11_fd_ = -1;            // the X connection SDL reads its events from (-1: not X11)
   float wheel_remainder_ = 0;  // trackpads scroll in fractions of a notch
 };
 
