@@ -249,5 +249,45 @@ TEST_F(DualResolution, AViewDrawerCannotWalk) {
   EXPECT_FALSE(renderer.status().walk);
 }
 
+// A renderer of whole views given a walk drawer (a streamed model: tools/view_stream.h) walks: it
+// starts in walk mode, hands the drawer each frame's perspective view (walkView's), and shows what
+// the drawer drew; Tab goes to orbit mode and back.
+TEST_F(DualResolution, AViewDrawerWithAWalkDrawerWalks) {
+  const ViewDrawFunction nothing = [](FrameSource, const Camera&, Framebuffer&,
+                                      const std::atomic<bool>*, int* depth) {
+    *depth = 0;
+    return true;
+  };
+  InteractiveConfig config = walkConfig();
+  const ModelView& model = *model_;
+  std::atomic<int> drawn{0};
+  config.walk_draw = [&model, &drawn](FrameSource source, const PerspectiveView& view,
+                                      Framebuffer& frame, const std::atomic<bool>* abort,
+                                      int* finest_depth) {
+    PerspectiveRenderer renderer(model);
+    PerspectiveRenderer::Options options;
+    options.coarser = source == FrameSource::kCoarse ? 1 : 0;
+    if (!renderer.draw(view, options, frame, nullptr, abort)) return false;
+    *finest_depth = renderer.detailDepths().back();
+    drawn.fetch_add(1);
+    return true;
+  };
+  DualResolutionRenderer renderer(nothing, clock_, config);
+  EXPECT_TRUE(renderer.canWalk());
+  EXPECT_TRUE(renderer.status().walk);
+  const FrameInfo walked = fineFrame(renderer, 0);
+  EXPECT_TRUE(walked.view.walk);
+  EXPECT_GT(drawn.load(), 0);
+  FrameInfo shown;
+  const Framebuffer* frame = renderer.acquireLatest(&shown);
+  ASSERT_NE(frame, nullptr);
+  EXPECT_EQ(shown.depth, model.finestLevel().depth);
+  EXPECT_EQ(frameChecksum(*frame), frameChecksum(walkFrame(model, config, walked.view.walker)));
+  renderer.handle(at(100, ViewEventKind::kToggleWalk));
+  EXPECT_FALSE(renderer.status().walk);
+  renderer.handle(at(200, ViewEventKind::kToggleWalk));
+  EXPECT_TRUE(renderer.status().walk);
+}
+
 }  // namespace
 }  // namespace octopoint::dual_resolution_testing
