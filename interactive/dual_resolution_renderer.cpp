@@ -84,8 +84,8 @@ DualResolutionRenderer::DualResolutionRenderer(const ModelView* model, const Lev
         collide_ = true;
       }
     }
-  } else {
-    base_view_.walk = false;  // walk mode needs the whole model
+  } else if (!config.walk_draw) {
+    base_view_.walk = false;  // walk mode needs the whole model, or a walk drawer
   }
   status_.walk = base_view_.walk;
   status_.walk_speed = walk_speed_;
@@ -235,11 +235,20 @@ void DualResolutionRenderer::handle(const ViewEvent& event) {
         coarse_once_ = true;
         changeView();
         break;
-      case ViewEventKind::kReset:
+      case ViewEventKind::kReset: {
+        const bool walk_normals = base_view_.walk_normals;  // the style stays
         base_view_ = config_.initial_view;
+        base_view_.walk_normals = walk_normals;
         base_view_.walk = base_view_.walk && canWalk();
         status_.walk = base_view_.walk;
         for (HeldKey& key : held_) key.since_us = event.time_us;  // held keys turn on from here
+        coarse_once_ = true;
+        changeView();
+        break;
+      }
+      case ViewEventKind::kWalkNormals:
+        if (base_view_.walk_normals == event.on) return;
+        base_view_.walk_normals = event.on;
         coarse_once_ = true;
         changeView();
         break;
@@ -359,26 +368,42 @@ bool DualResolutionRenderer::draw(Slot& slot, Worker& worker, const std::atomic<
   return true;
 }
 
-bool DualResolutionRenderer::drawWalk(Slot& slot, Worker& worker, const std::atomic<bool>* abort) {
-  const std::int64_t start_us = steadyMicroseconds();
-  slot.frame.clear(PixelPayload::kColour);  // the perspective frames carry colours only
+bool DualResolutionRenderer::walkView(const FrameInfo& info, PerspectiveView* view) const {
+  if (!info.view.walk) return false;
   PerspectiveCamera camera;
-  camera.eye = slot.info.view.walker.eye;
-  camera.yaw = slot.info.view.walker.yaw;
-  camera.pitch = slot.info.view.walker.pitch;
-  camera.roll = slot.info.view.walker.roll;
+  camera.eye = info.view.walker.eye;
+  camera.yaw = info.view.walker.yaw;
+  camera.pitch = info.view.walker.pitch;
+  camera.roll = info.view.walker.roll;
   camera.fov = config_.fov;
   if (config_.near > 0) {
     camera.near = config_.near;
   } else if (model_ != nullptr) {
     camera.near = nearPlaneForDepth(model_->finestLevel().depth);
   }
-  camera.width = slot.info.width;
-  camera.height = slot.info.height;
+  camera.width = info.width;
+  camera.height = info.height;
+  return buildPerspectiveView(camera, kDefaultFractionBits, view) == PerspectiveError::kNone;
+}
+
+bool DualResolutionRenderer::drawWalk(Slot& slot, Worker& worker, const std::atomic<bool>* abort) {
+  const std::int64_t start_us = steadyMicroseconds();
+  // With normals (config_.payload) only for a style: a kColourNormal frame's coarser depth code
+  // (renderer/perspective_depth.h) lets other leaves win some pixels, and octopoint-render --eye
+  // draws its colour frame without normals.
+  slot.frame.clear(slot.info.view.walk_normals ? config_.payload : PixelPayload::kColour);
   PerspectiveView view;
   // The eye is kept within reach and the size within bounds; a refused camera leaves it empty.
-  if (worker.perspective != nullptr &&
-      buildPerspectiveView(camera, kDefaultFractionBits, &view) == PerspectiveError::kNone) {
+  if (worker.perspective == nullptr && config_.walk_draw && walkView(slot.info, &view)) {
+    int finest = 0;
+    if (!config_.walk_draw(slot.info.source, view, slot.frame, abort, &finest)) return false;
+    slot.info.depth = finest;
+    // A refused fill cannot happen (fitBuffers made the filler as wide as the frame).
+    if (finest > 0 && slot.info.view.fill &&
+        worker.filler.fill(slot.frame, perspectiveBridge(view, finest)).refused) {
+      return false;
+    }
+  } else if (worker.perspective != nullptr && walkView(slot.info, &view)) {
     PerspectiveRenderer::Options options;  // detail by distance, culled: octopoint-render --eye's
     options.coarser = slot.info.source == FrameSource::kCoarse ? 1 : 0;
     const std::span<const int> depths = worker.perspective->detailDepths();

@@ -11,15 +11,16 @@
 #    frame height degrees;
 # 5. Tab switches to orbit mode (s saves an orbit view) and back: the eye enters where
 #    octopoint-render --perspective of that orbit view puts it, and draws its frame;
+# 1b. Between 1 and 2, c steps through the styles (shaded, lines, toon, outlined, colour): each walk
+# frame is octopoint-render --eye --style's of the same eye, pixel for pixel.
 # 6. Esc quits.
 # Frames and views are read with the viewer's p key ("saved NAME (L|H): --size WxH --eye ...").
 # Exits 77 (skipped) without Xvfb or xdotool (scripts/viewer-smoke installs them).
 # usage: view_walk_smoke.sh VIEW RENDER WORKDIR
 set -euo pipefail
 viewer=$(realpath "$1") render=$(realpath "$2") work=$(realpath -m "$3")
-for tool in Xvfb xdotool compare; do
-  command -v "$tool" >/dev/null || { echo "$tool is not installed: skipped"; exit 77; }
-done
+source "$(dirname "$0")/viewer_script_lib.sh"
+require_viewer_tools
 rm -rf "$work" && mkdir -p "$work/run"
 xvfb_pid="" viewer_pid=""
 cleanup() {
@@ -33,12 +34,7 @@ fail() {
   exit 1
 }
 
-Xvfb -displayfd 3 -screen 0 800x600x24 -nolisten tcp 3>"$work/display" 2>"$work/xvfb.log" &
-xvfb_pid=$!
-for _ in $(seq 100); do [ -s "$work/display" ] && break; sleep 0.05; done
-[ -s "$work/display" ] || fail "Xvfb did not start: $(cat "$work/xvfb.log")"
-DISPLAY=:$(cat "$work/display")
-export DISPLAY
+start_xvfb
 
 speed=0.1  # scan units (metres) per second
 fov=70
@@ -46,39 +42,8 @@ size=320x240
 (cd "$work/run" && exec "$viewer" --eye 0.05,0.1,-0.45 --look -5,-20 --fov $fov --size $size \
   --walk-speed $speed) >"$work/viewer.log" 2>&1 &
 viewer_pid=$!
-window=""
-for _ in $(seq 100); do
-  window=$(xdotool search --onlyvisible --name '^octopoint-view$' 2>/dev/null | head -1) && [ -n "$window" ] && break
-  kill -0 "$viewer_pid" 2>/dev/null || fail "the viewer exited"
-  sleep 0.05
-done
-[ -n "$window" ] || fail "no viewer window appeared"
-timeout 10 xdotool windowfocus --sync "$window" || fail "cannot focus the viewer's window"
+wait_for_viewer_window
 
-saves() { grep -c '^saved ' "$work/viewer.log" || true; }
-# Presses KEY (p in walk mode, s in orbit mode) and prints the line it makes the viewer print.
-save_view() {
-  local key=$1 number=$(($(saves) + 1))
-  xdotool key "$key"
-  for _ in $(seq 100); do
-    line=$(grep "^saved octopoint-view-$number.png " "$work/viewer.log" || true)
-    [ -n "$line" ] && { echo "$line"; return; }
-    sleep 0.02
-  done
-  fail "$key printed nothing"
-}
-# Saves until the frame saved is H's.
-fine_view() {
-  for _ in $(seq 20); do
-    line=$(save_view "${1:-p}")
-    case "$line" in *" (H): "*) echo "$line"; return ;; esac
-    sleep 0.1
-  done
-  fail "H drew no frame: $line"
-}
-options_of() { sed 's/^saved [^:]*: //' <<<"$1"; }
-file_of() { sed 's/^saved \([^ ]*\) .*/\1/' <<<"$1"; }
-field() { sed -n "s/.*--$1 \([^ ]*\).*/\1/p" <<<"$2"; }
 coordinate() { cut -d, -f"$1" <<<"$(field eye "$2")"; }
 # The saved frame against octopoint-render's of the options the viewer printed: identical.
 same_as_render() {
@@ -97,11 +62,22 @@ start=$(fine_view)
 [ "$(field size "$start")" = $size ] || fail "the first frame is not $size: $start"
 same_as_render "$start"
 
+# 1b. The styles in walk mode.
+for style in shaded lines toon outlined; do
+  xdotool key c
+  styled=$(fine_view)
+  [ "$(field style "$styled")" = $style ] || fail "c did not make the style $style: $styled"
+  same_as_render "$styled"
+done
+xdotool key c
+[ -z "$(field style "$(fine_view)")" ] || fail "c after outlined did not go back to colour"
+
 # 2. w held for 1 s walks forward, level.
 before_ns=$(date +%s%N)
+held_number=$(($(saves) + 1))
 xdotool keydown w sleep 0.5 key p sleep 0.5 keyup w
 after_ns=$(date +%s%N)
-held=$(grep "^saved octopoint-view-2.png " "$work/viewer.log" || true)
+held=$(grep "^saved octopoint-view-$held_number.png " "$work/viewer.log" || true)
 case "$held" in *" (L): "*) ;; *) fail "while w was held, the frame was not L's: $held" ;; esac
 walked=$(fine_view)
 same_as_render "$walked"
@@ -137,13 +113,8 @@ within "$(awk -v a="$yaw0" -v b="$yaw1" 'BEGIN { print b - a }')" \
   fail "a drag of 48 pixels turned the eye from $yaw0 to $yaw1 degrees, not by 48 x $fov / 240"
 
 # 5. Tab: orbit mode, then walk mode again from the orbit view's eye.
-xdotool key Tab
-sleep 0.3
-orbit=$(fine_view s)
-case "$orbit" in *" --yaw "*) ;; *) fail "after Tab, s saved no orbit view: $orbit" ;; esac
-xdotool key Tab
-sleep 0.3
-entered=$(fine_view)
+{ read -r orbit; read -r entered; } < <(orbit_and_back) || true
+[ -n "$entered" ] || fail "Tab to orbit mode and back saved no walk frame"
 same_as_render "$entered"
 perspective=$("$render" --size $size --yaw "$(field yaw "$orbit")" --pitch "$(field pitch "$orbit")" \
   --zoom "$(field zoom "$orbit")" --perspective --fov "$(field fov "$entered")" -o "$work/orbit.png")

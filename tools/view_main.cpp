@@ -3,6 +3,8 @@
 // frames, thread H's fine frame follows at the next 100 ms tick after the last release, and the
 // frames follow the window's size. This file: the command line; the window is tools/viewer.h.
 
+#include <atomic>
+#include <chrono>
 #include <cmath>
 #include <cstdint>
 #include <cstdlib>
@@ -10,6 +12,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <thread>
 
 #include "cli/arguments.h"
 #include "cli/error.h"
@@ -19,7 +22,9 @@
 #include "cli/text.h"
 #include "octopoint/http.h"
 #include "octopoint/progressive.h"
+#include "renderer/chunked_assembly.h"
 #include "tools/model_source.h"
+#include "tools/view_window.h"
 #include "tools/viewer.h"
 
 namespace {
@@ -46,7 +51,9 @@ perspective (docs/perspective.md, "The viewer's walk mode").
   --url URL      a chunked model (octopoint-prepare --chunked) on an HTTP server with Range
                  requests, http://HOST:PORT/NAME.oct (octopoint-serve, nginx, ...): the view
                  sharpens as its chunks arrive, those it shows first, coarse before fine; turning
-                 or zooming asks for what the new view needs (docs/streaming.md)
+                 or zooming asks for what the new view needs (docs/streaming.md). The window opens
+                 once the model's head is in (at most 30 s); walk mode fetches for the walk's
+                 view, and draws what is held as octopoint-render --url --eye does
   --point-budget N  with --url: draw at most about N points a frame, 1..2^40 (default: no
                  budget). When the view's visible chunks hold more at the depth it needs, those
                  largest on screen, then nearest, keep it and the rest are drawn one depth
@@ -128,7 +135,35 @@ ViewerOptions parseOptions(int argc, char** argv) {
   if (options.source.point_budget > 0 && options.source.url.empty())
     throw cli::Error("--point-budget needs --url");
   if (options.look && !options.eye) throw cli::Error("--look needs --eye");
+  if (!options.source.url.empty() && options.collision.any()) {
+    throw cli::Error(
+        "--collide, --eye-radius and --eye-height: walk mode on a streamed model (--url) does not "
+        "collide (the model is not all held)");
+  }
   return options;
+}
+
+// Waits until the stream has the model's head (or refuses, one line, when it fails or takes more
+// than kHeadTimeoutSeconds) and returns it assembled (its base): a model with the cube's placement
+// and the base's depth, as octopoint-render --url takes them for --eye and --near.
+constexpr int kHeadTimeoutSeconds = 30;
+HeldParts waitForHead(net::ModelStream& stream, const std::string& url) {
+  const auto deadline =
+      std::chrono::steady_clock::now() + std::chrono::seconds(kHeadTimeoutSeconds);
+  while (true) {
+    const net::StreamStatus status = stream.status();
+    if (status.failed) throw cli::Error("--url: " + cli::inQuotes(url) + ": " + status.error);
+    if (status.head_known) break;
+    if (std::chrono::steady_clock::now() > deadline) {
+      throw cli::Error("--url: " + cli::inQuotes(url) + ": no model head within " +
+                       std::to_string(kHeadTimeoutSeconds) + " s");
+    }
+    std::this_thread::sleep_for(std::chrono::milliseconds(10));
+  }
+  HeldParts head;
+  stream.withModel([&head](ProgressiveModel* model) { head = assembleHeldParts(*model); });
+  if (head.parts.empty()) throw cli::Error("--url: " + cli::inQuotes(url) + ": a bad head");
+  return head;
 }
 
 int run(int argc, char** argv) {
@@ -137,15 +172,21 @@ int run(int argc, char** argv) {
     std::string why;
     const std::optional<net::HttpUrl> url = net::parseHttpUrl(options.source.url, &why);
     if (!url) throw cli::Error("--url: " + cli::inQuotes(options.source.url) + ": " + why);
+    chooseVideoDriver();  // no display: refused before waiting for the head
     net::ModelStream stream(*url, net::StreamOptions{});  // prefetches the rest once the view is in
-    Camera first_view;  // the renderer's initial view, until its first frame says otherwise
-    first_view.width = options.width;
-    first_view.height = options.height;
-    stream.setView(first_view);
-    Viewer viewer(options, walkStart(options, nullptr), nullptr, &stream);
-    // Set before the stream starts, so that no accepted chunk goes unseen by the renderer.
-    stream.onAccepted([&viewer](ProgressiveModel&, std::uint64_t) { viewer.contentChanged(); });
+    // The head first, alone (no view until the viewer's first frame sets it): walk mode needs the
+    // cube's placement (--eye in scan units, the overlay, p) and the base's depth for its near
+    // plane, as octopoint-render --url --eye takes them.
+    stream.clearView();
+    std::atomic<Viewer*> shown{nullptr};
+    stream.onAccepted([&shown](ProgressiveModel&, std::uint64_t) {
+      if (Viewer* viewer = shown.load(); viewer != nullptr) viewer->contentChanged();
+    });
     stream.start();
+    const HeldParts head = waitForHead(stream, options.source.url);
+    Viewer viewer(options, walkStart(options, &*head.parts.front()->view), nullptr, &stream);
+    shown.store(&viewer);
+    viewer.contentChanged();  // what arrived with the head or since
     viewer.run();
     stream.onAccepted({});
     stream.stop();

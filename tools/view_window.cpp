@@ -1,5 +1,10 @@
 #include "tools/view_window.h"
 
+#include <SDL2/SDL_syswm.h>
+#include <poll.h>
+#include <sys/eventfd.h>
+#include <unistd.h>
+
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -15,6 +20,8 @@ std::int64_t steadyMilliseconds() {
              std::chrono::steady_clock::now().time_since_epoch())
       .count();
 }
+
+}  // namespace
 
 // Left to itself, SDL tries every video driver it has and ends with "offscreen", an invisible
 // window, when there is no display. Unless the user picks a driver (SDL_VIDEODRIVER), take the one
@@ -36,8 +43,6 @@ void chooseVideoDriver() {
   }
 }
 
-}  // namespace
-
 ViewWindow::ViewWindow(const std::string& title, int width, int height, int min_width,
                        int min_height) {
   chooseVideoDriver();
@@ -54,40 +59,49 @@ ViewWindow::ViewWindow(const std::string& title, int width, int height, int min_
     throw WindowError(message);
   }
   SDL_SetWindowMinimumSize(window_, min_width, min_height);
-  wake_event_type_ = SDL_RegisterEvents(1);
-  if (wake_event_type_ == static_cast<std::uint32_t>(-1)) {
-    const std::string message = sdlError("cannot open a window");
-    SDL_DestroyWindow(window_);
-    SDL_Quit();
-    throw WindowError(message);
-  }
+  wake_fd_ = eventfd(0, EFD_NONBLOCK | EFD_CLOEXEC);
+  SDL_SysWMinfo info;
+  SDL_VERSION(&info.version);
+  if (SDL_GetWindowWMInfo(window_, &info) == SDL_TRUE && info.subsystem == SDL_SYSWM_X11)
+    x11_fd_ = ConnectionNumber(info.info.x11.display);
 }
 
 ViewWindow::~ViewWindow() {
   SDL_DestroyWindow(window_);
   SDL_Quit();
+  if (wake_fd_ >= 0) close(wake_fd_);
+}
+
+void ViewWindow::sleep(std::int64_t at_most_ms) {
+  if (x11_fd_ < 0 || wake_fd_ < 0) {
+    SDL_Delay(static_cast<std::uint32_t>(std::min<std::int64_t>(at_most_ms, kWakePollMs)));
+    return;
+  }
+  pollfd fds[2] = {{x11_fd_, POLLIN, 0}, {wake_fd_, POLLIN, 0}};
+  if (poll(fds, 2, static_cast<int>(at_most_ms)) > 0 && (fds[1].revents & POLLIN) != 0) {
+    std::uint64_t count = 0;  // drained: a wake already taken by its flag must not spin the poll
+    static_cast<void>(read(wake_fd_, &count, sizeof count));
+  }
 }
 
 std::optional<WindowEvent> ViewWindow::next(int timeout_ms) {
   const std::int64_t deadline_ms = steadyMilliseconds() + std::max(0, timeout_ms);
   SDL_Event event;
   while (true) {
+    if (wake_requested_.exchange(false)) return WindowEvent{};  // its kind is kWake
+    if (SDL_PollEvent(&event) != 0) {
+      if (std::optional<WindowEvent> translated = translate(event)) return translated;
+      continue;
+    }
     const std::int64_t left_ms = deadline_ms - steadyMilliseconds();
-    const int got = left_ms > 0 ? SDL_WaitEventTimeout(&event, static_cast<int>(left_ms))
-                                : SDL_PollEvent(&event);
-    if (got == 0) return std::nullopt;
-    if (std::optional<WindowEvent> translated = translate(event)) return translated;
+    if (left_ms <= 0) return std::nullopt;
+    sleep(left_ms);
   }
 }
 
 std::optional<WindowEvent> ViewWindow::translate(const SDL_Event& event) {
   using Kind = WindowEvent::Kind;
   WindowEvent out;
-  if (event.type == wake_event_type_) {
-    wake_queued_.store(false);
-    out.kind = Kind::kWake;
-    return out;
-  }
   switch (event.type) {
     case SDL_KEYDOWN:
     case SDL_KEYUP:
@@ -141,10 +155,9 @@ std::optional<WindowEvent> ViewWindow::translate(const SDL_Event& event) {
 }
 
 void ViewWindow::wake() {
-  if (wake_queued_.exchange(true)) return;
-  SDL_Event event{};
-  event.type = wake_event_type_;
-  if (SDL_PushEvent(&event) != 1) wake_queued_.store(false);  // full or filtered: try next time
+  if (wake_requested_.exchange(true) || wake_fd_ < 0) return;
+  const std::uint64_t one = 1;
+  static_cast<void>(write(wake_fd_, &one, sizeof one));
 }
 
 int ViewWindow::width() const {

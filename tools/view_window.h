@@ -48,6 +48,11 @@ struct WindowEvent {
   int height = 0;
 };
 
+// Picks SDL's video driver from the environment (DISPLAY: x11, WAYLAND_DISPLAY: wayland) unless
+// SDL_VIDEODRIVER names one; throws WindowError (one line) when there is no display. The window
+// calls it; so may a caller that wants to know before it does anything slow.
+void chooseVideoDriver();
+
 class ViewWindow {
  public:
   // Opens a resizable window of width x height pixels that cannot be made smaller than
@@ -62,8 +67,19 @@ class ViewWindow {
   std::optional<WindowEvent> next(int timeout_ms);
 
   // From any thread: makes next() return a kWake event soon. Wakes that come while one is still
-  // queued are merged into it.
+  // pending are merged into it. It sets a flag and writes to an eventfd: it calls no SDL.
   void wake();
+
+  // next() does not wait in SDL_WaitEventTimeout. In SDL 2.26's X11 wait, every event pushed
+  // while it waits, whether by another thread (SDL_PushEvent) or by the wait itself dispatching
+  // the key that quits, wakes it with an XSendEvent to the window on SDL's second X connection,
+  // which the X server may process after the window's XDestroyWindow on the first: BadWindow, and
+  // Xlib ends the process with exit 1 at SDL_Quit. Instead next() takes what SDL_PollEvent has
+  // (which never arms that wake-up, so nothing is ever sent on the second connection:
+  // net.viewer_url_smoke checks it under strace), then sleeps in poll() on the X connection and
+  // wake()'s eventfd; with another video driver (no X connection to watch) it sleeps at most
+  // kWakePollMs at a time.
+  static constexpr int kWakePollMs = 2;
 
   int width() const;
   int height() const;
@@ -75,10 +91,14 @@ class ViewWindow {
 
  private:
   std::optional<WindowEvent> translate(const SDL_Event& event);
+  // Sleeps until the X connection has input or wake() is called, at most `at_most_ms` (see
+  // kWakePollMs).
+  void sleep(std::int64_t at_most_ms);
 
   SDL_Window* window_ = nullptr;
-  std::uint32_t wake_event_type_ = 0;
-  std::atomic<bool> wake_queued_{false};
+  std::atomic<bool> wake_requested_{false};
+  int wake_fd_ = -1;           // an eventfd wake() writes to (-1: none could be made)
+  int x11_fd_ = -1;            // the X connection SDL reads its events from (-1: not X11)
   float wheel_remainder_ = 0;  // trackpads scroll in fractions of a notch
 };
 

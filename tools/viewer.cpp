@@ -18,6 +18,7 @@
 #include "cli/text.h"
 #include "octopoint/progressive.h"
 #include "renderer/perspective.h"
+#include "tools/view_stream.h"
 
 namespace octopoint {
 namespace {
@@ -63,34 +64,20 @@ InteractiveConfig interactiveConfig(const ViewerOptions& options, const WalkStar
   return config;
 }
 
-// Draws the views of a chunked model as it streams in: the fine frame at the depth the view needs,
-// the coarse one a stored depth coarser; an empty frame until the head has arrived. Each render
-// thread draws from its own snapshot of the chunks held, taken under the stream's lock for a copy
-// of one byte per chunk, and draws without the lock: chunks keep arriving while it draws.
-ViewDrawFunction streamDrawer(net::ModelStream& stream, std::uint64_t point_budget) {
-  const Variant variant = InteractiveConfig{}.variant;
-  // One per render thread (FrameSource: L draws kCoarse, H kFine), kept across frames.
-  auto snapshots = std::make_shared<std::array<ProgressiveFrame, 2>>();
-  for (ProgressiveFrame& snapshot : *snapshots) snapshot.setPointBudget(point_budget);
-  return [&stream, variant, snapshots](FrameSource source, const Camera& camera, Framebuffer& frame,
-                                       const std::atomic<bool>* abort, int* depth) {
-    ProgressiveFrame& snapshot = (*snapshots)[source == FrameSource::kFine ? 1 : 0];
-    const ProgressiveModel* model = stream.snapshot(snapshot);
-    if (model == nullptr) return true;
-    ProgressiveDrawStats stats;
-    const int coarser = source == FrameSource::kCoarse ? 1 : 0;
-    const bool complete = model->draw(snapshot, camera, variant, frame, &stats, abort, coarser) ||
-                          abort == nullptr || !abort->load();
-    *depth = stats.drawn_depth;
-    return complete;
-  };
-}
-
 // A model with normals is drawn with them, so that the style keys work on every frame.
 InteractiveConfig interactiveConfig(const ViewerOptions& options, const WalkStart& walk,
                                     ViewWindow& window, const ModelView& model) {
   InteractiveConfig config = interactiveConfig(options, walk, window);
   if (model.hasNormals()) config.payload = PixelPayload::kColourNormal;
+  return config;
+}
+
+// A streamed model walks too (tools/view_stream.h); its frames carry colours only.
+InteractiveConfig streamConfig(const ViewerOptions& options, const WalkStart& walk,
+                               ViewWindow& window, net::ModelStream& stream,
+                               const std::atomic<std::uint64_t>& content) {
+  InteractiveConfig config = interactiveConfig(options, walk, window);
+  config.walk_draw = streamWalkDrawer(stream, content);
   return config;
 }
 
@@ -117,7 +104,7 @@ Viewer::Viewer(const ViewerOptions& options, const WalkStart& walk, const ModelV
                           *model, clock_, interactiveConfig(options, walk, window_, *model))
                     : std::make_unique<DualResolutionRenderer>(
                           streamDrawer(*stream, options.source.point_budget), clock_,
-                          interactiveConfig(options, walk, window_))),
+                          streamConfig(options, walk, window_, *stream, stream_content_))),
       keys_(keyTable(this)),
       resolve_(
           [this](const Framebuffer& frame, const FrameInfo& info, std::span<std::uint8_t> rgb) {
@@ -127,6 +114,8 @@ Viewer::Viewer(const ViewerOptions& options, const WalkStart& walk, const ModelV
             }
             // The palette never changes once the head is in: resolved without the stream's lock.
             if (const ProgressiveModel* chunked = stream_->model(); chunked != nullptr) {
+              smooth_shown_ = splats_ == SplatMode::kSmooth && resolveStreamSmooth(info, rgb);
+              if (smooth_shown_) return;
               // The window's pixels are sized to the frame: resolveToRgb cannot refuse them.
               static_cast<void>(resolveToRgb(frame, chunked->baseModel(), kBackground, rgb));
               return;
@@ -142,12 +131,14 @@ Viewer::Viewer(const ViewerOptions& options, const WalkStart& walk, const ModelV
     // The colour style needs no normals: setOptions cannot refuse it.
     static_cast<void>(styler_.emplace(*model_).setOptions(style));
   }
+  stream_snapshot_.setPointBudget(options.source.point_budget);
   overlay_.add([this](OverlayLines& lines) { defaultOverlay(lines); });
   overlay_.add([this](OverlayLines& lines) { walkOverlay(lines); });
   if (stream_ != nullptr) overlay_.add([this](OverlayLines& lines) { streamOverlay(lines); });
 }
 
 void Viewer::contentChanged() {
+  stream_content_.fetch_add(1);  // before the renderer hears of it: its walk frames reassemble
   renderer_->handle({clock_.nowMicroseconds(), ViewEventKind::kContentChanged});
   window_.wake();  // the overlay's byte count moved too
 }
@@ -156,14 +147,16 @@ void Viewer::followView() {
   if (stream_ == nullptr) return;
   const FrameInfo latest = renderer_->status().latest;
   if (latest.generation == 0) return;
-  const Camera camera = cameraOf(latest);
-  const bool same =
-      followed_view_ && followed_view_->yaw == camera.yaw &&
-      followed_view_->pitch == camera.pitch && followed_view_->zoom.raw() == camera.zoom.raw() &&
-      followed_view_->width == camera.width && followed_view_->height == camera.height;
+  const bool same = followed_ && followed_->view == latest.view &&
+                    followed_->width == latest.width && followed_->height == latest.height;
   if (same) return;
-  followed_view_ = camera;
-  stream_->setView(camera);
+  followed_ = latest;
+  PerspectiveView walk_view;
+  if (latest.view.walk) {
+    if (renderer_->walkView(latest, &walk_view)) stream_->setView(walk_view);
+  } else {
+    stream_->setView(cameraOf(latest));
+  }
 }
 
 void Viewer::streamOverlay(OverlayLines& lines) {
@@ -188,6 +181,12 @@ void Viewer::applyStyle(const StyleOptions& options) {
     cli::printError("octopoint-view", message.c_str());
     return;
   }
+  // Walk frames carry normals only for a style (DualResolutionRenderer::drawWalk says why).
+  ViewEvent normals;
+  normals.time_us = clock_.nowMicroseconds();
+  normals.kind = ViewEventKind::kWalkNormals;
+  normals.on = options.style != Style::kColour;
+  renderer_->handle(normals);
   resolve_again_ = true;
 }
 
@@ -217,12 +216,6 @@ void Viewer::moveLight(int azimuth_steps, int elevation_steps) {
 }
 
 void Viewer::nextSplatMode() {
-  if (model_ == nullptr) {
-    cli::printError("octopoint-view",
-                    "smooth splats: not for a streamed model yet; open a model file or an "
-                    "embedded model");
-    return;
-  }
   splats_ = splats_ == SplatMode::kBox ? SplatMode::kSmooth : SplatMode::kBox;
   resolve_again_ = true;
 }
@@ -235,11 +228,7 @@ bool Viewer::resolveSmooth(const FrameInfo& info, std::span<std::uint8_t> rgb) {
           CameraError::kNone) {
     return false;
   }
-  if (!blend_frame_ || blend_frame_->width() != info.width ||
-      blend_frame_->height() != info.height) {  // allocates on a new size only
-    blend_frame_.emplace(info.width, info.height);
-    smooth_.emplace(info.width, info.height, *model_);  // with normals where the model has them
-  }
+  fitBlend(info.width, info.height);
   blend_frame_->clear(styler_->payload());
   if (!renderSmooth(InteractiveConfig{}.variant, *level, setup, *blend_frame_, *smooth_, palette_))
     return false;
@@ -247,23 +236,51 @@ bool Viewer::resolveSmooth(const FrameInfo& info, std::span<std::uint8_t> rgb) {
   return styler_->resolve(*blend_frame_, rgb, smooth_->pixelBlend()) == StyleError::kNone;
 }
 
+void Viewer::fitBlend(int width, int height) {
+  if (blend_frame_ && blend_frame_->width() == width && blend_frame_->height() == height) return;
+  blend_frame_.emplace(width, height);
+  if (model_ != nullptr) {
+    smooth_.emplace(width, height, *model_);  // with normals where the model has them
+  } else {
+    smooth_.emplace(width, height);
+  }
+}
+
+bool Viewer::resolveStreamSmooth(const FrameInfo& info, std::span<std::uint8_t> rgb) {
+  if (info.view.walk || info.view.fill || info.depth == 0) return false;
+  fitBlend(info.width, info.height);
+  blend_frame_->clear();
+  // A snapshot of the chunks held now, as a render thread takes one: drawn without the lock.
+  const ProgressiveModel* model = stream_->snapshot(stream_snapshot_);
+  if (model == nullptr) return false;
+  palette_ = paletteOf(model->baseModel());
+  return model->drawSmooth(stream_snapshot_, cameraOf(info), InteractiveConfig{}.variant,
+                           *blend_frame_, *smooth_, palette_) &&
+         smooth_->resolveToRgb(*blend_frame_, palette_, kBackground, rgb);
+}
+
 void Viewer::resolveStyled(const Framebuffer& frame, const FrameInfo& info,
                            std::span<std::uint8_t> rgb) {
   smooth_shown_ = splats_ == SplatMode::kSmooth && resolveSmooth(info, rgb);
   if (smooth_shown_) return;
-  const Camera camera = cameraOf(info);
-  FrameSetup setup;
-  const bool styled =
-      styler_->options().style != Style::kColour && info.depth > 0 && !info.view.walk &&
-      buildFrameSetup(camera, info.depth, kDefaultFractionBits, &setup) == CameraError::kNone;
-  // The window's pixels are sized to the frame: resolveToRgb cannot refuse them.
-  if (!styled) {
-    static_cast<void>(resolveToRgb(frame, *model_, kBackground, rgb));
-    return;
+  if (styler_->options().style != Style::kColour && info.depth > 0) {
+    // A walk frame is styled as octopoint-render --eye --style styles it: with its perspective
+    // view's rotation and focal length; an orbit frame with its orthographic setup.
+    FrameSetup setup;
+    PerspectiveView view;
+    bool styled = false;
+    if (info.view.walk && renderer_->walkView(info, &view)) {
+      styler_->beginPerspectiveFrame(view.world_to_camera, view.focal_q16);
+      styled = true;
+    } else if (!info.view.walk && buildFrameSetup(cameraOf(info), info.depth, kDefaultFractionBits,
+                                                  &setup) == CameraError::kNone) {
+      styler_->beginFrame(setup);
+      styled = true;
+    }
+    if (styled && styler_->resolve(frame, rgb) == StyleError::kNone) return;
   }
-  styler_->beginFrame(setup);
-  if (styler_->resolve(frame, rgb) != StyleError::kNone)
-    static_cast<void>(resolveToRgb(frame, *model_, kBackground, rgb));
+  // The window's pixels are sized to the frame: resolveToRgb cannot refuse them.
+  static_cast<void>(resolveToRgb(frame, *model_, kBackground, rgb));
 }
 
 KeyBindings Viewer::keyTable(Viewer* viewer) {
@@ -474,7 +491,7 @@ void Viewer::defaultOverlay(OverlayLines& lines) const {
     lines.emplace_back(smooth_shown_ ? "smooth splats"
                                      : "smooth splats: off with filling or walking");
   }
-  if (styler_ && styler_->options().style != Style::kColour && !info.view.walk) {
+  if (styler_ && styler_->options().style != Style::kColour) {
     const StyleOptions& style = styler_->options();
     std::snprintf(line, sizeof line, "%s  light %.0f,%.0f",
                   std::string(styleName(style.style)).c_str(), signedDegreesOf(style.light.azimuth),
@@ -504,13 +521,6 @@ void Viewer::save() {
     return;
   }
   const FrameInfo& info = shown_info_;
-  if (info.view.walk) {
-    std::printf("saved %s (%s): --size %dx%d%s%s\n", name.c_str(),
-                info.source == FrameSource::kFine ? "H" : "L", info.width, info.height,
-                walkOptions(info.view.walker).c_str(), info.view.fill ? " --fill" : "");
-    std::fflush(stdout);
-    return;
-  }
   std::string style;
   if (styler_ && styler_->options().style != Style::kColour) {
     char text[96];
@@ -519,6 +529,14 @@ void Viewer::save() {
                   signedDegreesOf(styler_->options().light.azimuth),
                   signedDegreesOf(styler_->options().light.elevation));
     style = text;
+  }
+  if (info.view.walk) {
+    std::printf("saved %s (%s): --size %dx%d%s%s%s\n", name.c_str(),
+                info.source == FrameSource::kFine ? "H" : "L", info.width, info.height,
+                walkOptions(info.view.walker).c_str(), info.view.fill ? " --fill" : "",
+                style.c_str());
+    std::fflush(stdout);
+    return;
   }
   const char* splats = smooth_shown_ ? " --splats smooth" : "";
   std::printf("saved %s (%s): --size %dx%d --yaw %.2f --pitch %.2f --zoom %.4f --depth %d%s%s%s\n",

@@ -3,6 +3,7 @@
 
 #pragma once
 
+#include <atomic>
 #include <cstdint>
 #include <functional>
 #include <memory>
@@ -15,6 +16,7 @@
 #include "octopoint/http.h"
 #include "octopoint/interactive.h"
 #include "octopoint/model.h"
+#include "octopoint/progressive.h"
 #include "octopoint/smooth.h"
 #include "octopoint/styles.h"
 #include "tools/model_source.h"
@@ -109,12 +111,18 @@ class Viewer {
   // Draws the frame `info` describes smoothly into blend_frame_ and resolves it in the style into
   // `rgb`; false where smooth splats do not apply (hole filling, walking, no depth drawn).
   bool resolveSmooth(const FrameInfo& info, std::span<std::uint8_t> rgb);
+  // The same for a streamed model: the chunks held now, drawn smoothly at the depth the view
+  // needs (ProgressiveModel::drawSmooth), as octopoint-render --url --splats smooth draws them.
+  bool resolveStreamSmooth(const FrameInfo& info, std::span<std::uint8_t> rgb);
+  // Sizes blend_frame_ and smooth_ to the frame on screen (allocates on a new size only).
+  void fitBlend(int width, int height);
 
   const ViewerOptions options_;
   const WalkStart walk_;
   const ModelView* model_;
   net::ModelStream* stream_;
   const SteadyClock clock_;
+  std::atomic<std::uint64_t> stream_content_{0};  // chunks accepted (contentChanged)
   ViewWindow window_;  // before renderer_: its threads wake the window until they are joined
   std::unique_ptr<DualResolutionRenderer> renderer_;
   KeyBindings keys_;
@@ -127,7 +135,8 @@ class Viewer {
   std::optional<Framebuffer> blend_frame_;
   std::optional<SmoothSplats> smooth_;
   PaletteRgb palette_{};
-  bool smooth_shown_ = false;  // the frame on screen was blended
+  ProgressiveFrame stream_snapshot_;  // the chunks held, for a streamed model's smooth frame
+  bool smooth_shown_ = false;         // the frame on screen was blended
   // Turns a frame into RGB888 for the screen and for `s` (default: its palette colours).
   std::function<void(const Framebuffer&, const FrameInfo&, std::span<std::uint8_t>)> resolve_;
 
@@ -144,7 +153,7 @@ class Viewer {
   RateCounter drawn_rate_;
   RateCounter shown_rate_;
   int saved_ = 0;
-  std::optional<Camera> followed_view_;  // the view the stream fetches for
+  std::optional<FrameInfo> followed_;  // the frame whose view the stream fetches for
   // The drag under way: its motion so far (window pixels) and the turn already sent for it.
   std::int64_t drag_x_ = 0, drag_y_ = 0;
   std::int64_t drag_yaw_sent_ = 0, drag_pitch_sent_ = 0;

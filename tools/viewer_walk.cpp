@@ -20,9 +20,7 @@ WalkStart walkStart(const ViewerOptions& options, const ModelView* model) {
       options.eye || options.fov || options.walk_speed || options.near || options.collision.any();
   if (model == nullptr) {
     if (walk_options) {
-      throw cli::Error(
-          "--eye, --fov, --walk-speed, --near and the collision options: walk mode draws a model "
-          "file or an embedded model, not --url (yet)");
+      throw cli::Error("--eye, --fov, --walk-speed, --near and the collision options need a model");
     }
     return walk;
   }
@@ -69,9 +67,7 @@ WalkStart walkStart(const ViewerOptions& options, const ModelView* model) {
 
 void Viewer::toggleWalk(std::int64_t now_us) {
   if (!renderer_->canWalk()) {
-    cli::printError("octopoint-view",
-                    "walk mode: a streamed model cannot be walked through yet; open a model file "
-                    "or an embedded model");
+    cli::printError("octopoint-view", "walk mode: this model cannot be walked through");
     return;
   }
   releaseAll(now_us);

@@ -96,6 +96,8 @@ enum class ViewEventKind : std::uint8_t {
   kTurn,             // walk mode: the eye turns by turn_yaw, turn_pitch (a mouse drag)
   kResize,           // the frame becomes width x height pixels (the window was resized)
   kToggleCollision,  // walk mode: collision on/off (where the config gives the eye a radius)
+  kWalkNormals,      // walk frames carry normals from now on (`on`: config.payload, for a style)
+                     // or not (colour only, as octopoint-render --eye draws them)
   kContentChanged,   // the model has more in it (a streamed chunk arrived): the fine frame is due
                      // again, without changing the view or aborting a fine frame under way
   kQuit,             // the source has ended
@@ -111,6 +113,7 @@ struct ViewEvent {
   std::int32_t height = 0;
   std::int32_t turn_yaw = 0;    // for kTurn: in 1/65536 turn, > 0 to the right
   std::int32_t turn_pitch = 0;  // > 0 up
+  bool on = false;              // for kWalkNormals
 };
 
 class EventSource {
@@ -178,6 +181,9 @@ namespace octopoint {
 
 class PerspectiveRenderer;  // renderer/perspective_renderer.h: walk mode's frames
 class CollisionModel;       // renderer/collision.h: walk mode's collision
+struct PerspectiveView;     // renderer/perspective.h: a walk frame's view
+
+enum class FrameSource : std::uint8_t { kCoarse, kFine };  // drawn by L or by H
 
 // Walk mode's eye (renderer/perspective.h's PerspectiveCamera): where it stands, in Q.24 cube
 // edges about the cube's centre in the model's axes (x right, y down, z away), and where it looks.
@@ -198,8 +204,19 @@ struct ViewParameters {
   // culling; docs/perspective.md), and yaw, pitch, zoom and fill wait for orbit mode.
   bool walk = false;
   WalkEye walker;
+  // Walk frames carry normals (kWalkNormals: the display shows a style); colour-only otherwise.
+  bool walk_normals = false;
   bool operator==(const ViewParameters&) const = default;
 };
+
+// Draws a walk frame of a model that is not one ModelView (a chunked model streaming in:
+// tools/viewer.cpp with --url) into a cleared colour frame: `view` is the frame's
+// (DualResolutionRenderer::walkView), the coarse frame (`source` kCoarse) a stored depth coarser
+// where it can. Returns false when `abort` stopped it; sets `finest_depth` to the finest depth it
+// drew (0: nothing), which hole filling bridges by.
+using WalkDrawFunction =
+    std::function<bool(FrameSource source, const PerspectiveView& view, Framebuffer& frame,
+                       const std::atomic<bool>* abort, int* finest_depth)>;
 
 struct InteractiveConfig {
   std::int32_t width = 320;  // the initial frame size (kResize changes it), 1..kMaxViewportSide
@@ -228,9 +245,11 @@ struct InteractiveConfig {
   // What the frames carry besides depth and colour: PixelPayload::kColourNormal lets the display
   // draw them in any style (octopoint/styles.h); it needs a model with normals.
   PixelPayload payload = PixelPayload::kColour;
+  // For a renderer of whole views (ViewDrawFunction): draws its walk frames, so that it can walk
+  // (canWalk); must be safe to call from both render threads at once. Walk mode's near plane is
+  // then `near` (0: PerspectiveCamera's default).
+  WalkDrawFunction walk_draw;
 };
-
-enum class FrameSource : std::uint8_t { kCoarse, kFine };  // drawn by L or by H
 
 struct FrameInfo {
   FrameSource source = FrameSource::kCoarse;
@@ -303,8 +322,14 @@ class DualResolutionRenderer {
   // Applies one event from the event source (kQuit is the caller's business).
   void handle(const ViewEvent& event);
 
-  // Whether kToggleWalk can enter walk mode: a renderer built from a whole model.
-  bool canWalk() const { return model_ != nullptr; }
+  // Whether kToggleWalk can enter walk mode: a renderer built from a whole model, or given
+  // config.walk_draw.
+  bool canWalk() const { return model_ != nullptr || config_.walk_draw != nullptr; }
+
+  // The perspective view the walk frame `info` describes was drawn with, for the display to style
+  // it (FrameStyler::beginPerspectiveFrame); false when `info` is not a walk frame or its camera
+  // was refused (the frame is empty).
+  [[nodiscard]] bool walkView(const FrameInfo& info, PerspectiveView* view) const;
 
   // For the display, from one thread only: makes the newest complete frame the front buffer and
   // returns it (nullptr before the first frame). The front buffer is not touched by anyone until

@@ -24,9 +24,10 @@ InteractiveConfig walkConfig() {
 }
 
 // The frame of `walker` as octopoint-render --eye draws it (coarser 0), or the coarse frame; with
-// `fill`, as --eye --fill draws it.
+// `fill`, as --eye --fill draws it; with kColourNormal, as --eye --style draws it.
 Framebuffer walkFrame(const ModelView& model, const InteractiveConfig& config,
-                      const WalkEye& walker, int coarser = 0, bool fill = false) {
+                      const WalkEye& walker, int coarser = 0, bool fill = false,
+                      PixelPayload payload = PixelPayload::kColour) {
   PerspectiveCamera camera;
   camera.eye = walker.eye;
   camera.yaw = walker.yaw;
@@ -38,7 +39,7 @@ Framebuffer walkFrame(const ModelView& model, const InteractiveConfig& config,
   PerspectiveView view;
   EXPECT_EQ(buildPerspectiveView(camera, kDefaultFractionBits, &view), PerspectiveError::kNone);
   Framebuffer frame(camera.width, camera.height);
-  frame.clear();
+  frame.clear(payload);
   PerspectiveRenderer renderer(model);
   PerspectiveRenderer::Options options;
   options.coarser = coarser;
@@ -201,6 +202,39 @@ TEST_F(DualResolution, WalkModeFillsAsRenderDoes) {
   EXPECT_NE(frameChecksum(*frame), frameChecksum(walkFrame(*model_, config, filled.view.walker)));
 }
 
+// The viewer's styles in walk mode: a model with normals (config.payload kColourNormal) draws its
+// walk frames in colour only, as octopoint-render --eye does (a normal-carrying frame's coarser
+// depth code lets other leaves win some pixels), until kWalkNormals asks for normals; then the
+// fine frame is --eye --style's, and walkView gives the view the styler needs.
+TEST_F(DualResolution, WalkFramesCarryNormalsOnlyWhenAStyleAsksForThem) {
+  InteractiveConfig config = walkConfig();
+  config.payload = PixelPayload::kColourNormal;
+  DualResolutionRenderer renderer(*model_, clock_, config);
+  const FrameInfo plain = fineFrame(renderer, 0);
+  FrameInfo shown;
+  const Framebuffer* frame = renderer.acquireLatest(&shown);
+  ASSERT_NE(frame, nullptr);
+  EXPECT_EQ(frame->payload(), PixelPayload::kColour);
+  EXPECT_EQ(frameChecksum(*frame), frameChecksum(walkFrame(*model_, config, plain.view.walker)));
+  ViewEvent normals = at(0, ViewEventKind::kWalkNormals);
+  normals.on = true;
+  renderer.handle(normals);
+  const FrameInfo styled = fineFrame(renderer, 100);
+  EXPECT_TRUE(styled.view.walk_normals);
+  frame = renderer.acquireLatest(&shown);
+  ASSERT_NE(frame, nullptr);
+  EXPECT_EQ(frame->payload(), PixelPayload::kColourNormal);
+  EXPECT_EQ(frameChecksum(*frame), frameChecksum(walkFrame(*model_, config, styled.view.walker, 0,
+                                                           false, PixelPayload::kColourNormal)));
+  PerspectiveView view;
+  ASSERT_TRUE(renderer.walkView(shown, &view));
+  EXPECT_EQ(view.camera.eye, styled.view.walker.eye);
+  EXPECT_EQ(view.camera.width, config.width);
+  FrameInfo orbit = shown;
+  orbit.view.walk = false;
+  EXPECT_FALSE(renderer.walkView(orbit, &view));
+}
+
 // A renderer of whole views (a streamed model) has no model to walk through: Tab does nothing.
 TEST_F(DualResolution, AViewDrawerCannotWalk) {
   const ViewDrawFunction nothing = [](FrameSource, const Camera&, Framebuffer&,
@@ -213,6 +247,46 @@ TEST_F(DualResolution, AViewDrawerCannotWalk) {
   EXPECT_FALSE(renderer.status().walk);
   renderer.handle(at(0, ViewEventKind::kToggleWalk));
   EXPECT_FALSE(renderer.status().walk);
+}
+
+// A renderer of whole views given a walk drawer (a streamed model: tools/view_stream.h) walks: it
+// starts in walk mode, hands the drawer each frame's perspective view (walkView's), and shows what
+// the drawer drew; Tab goes to orbit mode and back.
+TEST_F(DualResolution, AViewDrawerWithAWalkDrawerWalks) {
+  const ViewDrawFunction nothing = [](FrameSource, const Camera&, Framebuffer&,
+                                      const std::atomic<bool>*, int* depth) {
+    *depth = 0;
+    return true;
+  };
+  InteractiveConfig config = walkConfig();
+  const ModelView& model = *model_;
+  std::atomic<int> drawn{0};
+  config.walk_draw = [&model, &drawn](FrameSource source, const PerspectiveView& view,
+                                      Framebuffer& frame, const std::atomic<bool>* abort,
+                                      int* finest_depth) {
+    PerspectiveRenderer renderer(model);
+    PerspectiveRenderer::Options options;
+    options.coarser = source == FrameSource::kCoarse ? 1 : 0;
+    if (!renderer.draw(view, options, frame, nullptr, abort)) return false;
+    *finest_depth = renderer.detailDepths().back();
+    drawn.fetch_add(1);
+    return true;
+  };
+  DualResolutionRenderer renderer(nothing, clock_, config);
+  EXPECT_TRUE(renderer.canWalk());
+  EXPECT_TRUE(renderer.status().walk);
+  const FrameInfo walked = fineFrame(renderer, 0);
+  EXPECT_TRUE(walked.view.walk);
+  EXPECT_GT(drawn.load(), 0);
+  FrameInfo shown;
+  const Framebuffer* frame = renderer.acquireLatest(&shown);
+  ASSERT_NE(frame, nullptr);
+  EXPECT_EQ(shown.depth, model.finestLevel().depth);
+  EXPECT_EQ(frameChecksum(*frame), frameChecksum(walkFrame(model, config, walked.view.walker)));
+  renderer.handle(at(100, ViewEventKind::kToggleWalk));
+  EXPECT_FALSE(renderer.status().walk);
+  renderer.handle(at(200, ViewEventKind::kToggleWalk));
+  EXPECT_TRUE(renderer.status().walk);
 }
 
 }  // namespace
