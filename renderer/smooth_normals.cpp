@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <bit>
 
+#include "octopoint/fixed.h"
 #include "renderer/integer_square_root.h"
 
 namespace octopoint {
@@ -49,9 +50,11 @@ DirectionQ14 unitDirection(std::int32_t x, std::int32_t y, std::int32_t z) {
   }
   const auto length =
       static_cast<std::uint32_t>(integerSquareRoot(ax * ax + ay * ay + az * az));  // >= 2^14
-  // a 2^14 / length, rounded: a 2^14 < 2^29.
+  // a 2^14 / length, rounded: a 2^14 < 2^29 (divideUnsigned: no libgcc division on a
+  // Cortex-M0+, docs/device.md; the same bits).
   const auto unit = [length](std::uint32_t a, std::int32_t sign) {
-    const auto q = static_cast<std::int32_t>(((a << 14) + length / 2) / length);
+    const auto q = static_cast<std::int32_t>(
+        divideUnsigned((std::uint64_t{a} << 14) + length / 2, length).quotient);
     return sign < 0 ? -q : q;
   };
   return {unit(ax, x), unit(ay, y), unit(az, z)};

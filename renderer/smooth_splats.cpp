@@ -83,8 +83,13 @@ class BlendWalk {
         abort_(abort),
         radius_x_(radiusOf(setup)),
         radius_y_(radius_x_),
-        inverse_x_((std::uint64_t{kKernelSteps} << 32) / static_cast<std::uint64_t>(radius_x_)),
-        inverse_y_((std::uint64_t{kKernelSteps} << 32) / static_cast<std::uint64_t>(radius_y_)),
+        // divideUnsigned: no libgcc division on a Cortex-M0+ (docs/device.md), the same bits.
+        inverse_x_(
+            divideUnsigned(std::uint64_t{kKernelSteps} << 32, static_cast<std::uint64_t>(radius_x_))
+                .quotient),
+        inverse_y_(
+            divideUnsigned(std::uint64_t{kKernelSteps} << 32, static_cast<std::uint64_t>(radius_y_))
+                .quotient),
         tolerance_(static_cast<std::uint32_t>(std::min<std::uint64_t>(
             (voxelEdgeOnScreen(setup) * kDepthToleranceVoxelEdges) >> setup.depth_shift,
             FrameView::kMaxDepthKey))),
@@ -400,7 +405,8 @@ std::size_t pixelCount(std::int32_t width, std::int32_t height) {
 class Reciprocal {
  public:
   explicit Reciprocal(std::uint32_t divisor)
-      : divisor_(divisor), inverse_(0xFFFF'FFFFU / divisor) {}
+      : divisor_(divisor),
+        inverse_(static_cast<std::uint32_t>(divideUnsigned(0xFFFF'FFFFU, divisor).quotient)) {}
   std::uint32_t divide(std::uint32_t n) const {
     auto q = static_cast<std::uint32_t>((std::uint64_t{n} * inverse_) >> 32);
     if (n - q * divisor_ >= divisor_) ++q;
@@ -421,9 +427,27 @@ std::uint32_t packRgb(std::uint32_t r, std::uint32_t g, std::uint32_t b) {
 SmoothSplats::SmoothSplats(std::int32_t width, std::int32_t height)
     : width_(validSize(width, height) ? width : 0),
       height_(validSize(width, height) ? height : 0),
-      sums_(pixelCount(width_, height_)),
-      column_weight_(static_cast<std::size_t>(width_)),
-      row_weight_(static_cast<std::size_t>(height_)) {}
+      owned_sums_(pixelCount(width_, height_)),
+      owned_column_weight_(static_cast<std::size_t>(width_)),
+      owned_row_weight_(static_cast<std::size_t>(height_)) {
+  sums_ = owned_sums_;
+  column_weight_ = owned_column_weight_;
+  row_weight_ = owned_row_weight_;
+}
+
+SmoothSplats::SmoothSplats(std::int32_t width, std::int32_t height, const Memory& memory)
+    : width_(0), height_(0) {
+  if (!validSize(width, height) || memory.sums.size() < pixelCount(width, height) ||
+      memory.column_weights.size() < static_cast<std::size_t>(width) ||
+      memory.row_weights.size() < static_cast<std::size_t>(height)) {
+    return;
+  }
+  width_ = width;
+  height_ = height;
+  sums_ = memory.sums.first(pixelCount(width, height));
+  column_weight_ = memory.column_weights.first(static_cast<std::size_t>(width));
+  row_weight_ = memory.row_weights.first(static_cast<std::size_t>(height));
+}
 
 SmoothSplats::SmoothSplats(std::int32_t width, std::int32_t height, const ModelView& model)
     : SmoothSplats(width, height) {

@@ -153,8 +153,8 @@ const char* describe(BandError error);
 // reads its own nearest depth and the leaves within the kernel's reach, which the blend's own walk
 // of the level finds whatever band it draws. `smooth` must be made for frames `setup.width` wide
 // and at least `config.band_rows` high (16 bytes a pixel of a band); `colours` is the model's
-// palette (paletteOf). Colour frames only, without hole filling (kRefused); `smooth` allocates
-// when it is made, so a device without a heap has no smooth bands (docs/device.md).
+// palette (paletteOf). Colour frames only, without hole filling (kRefused). A device without a
+// heap makes `smooth` in its own memory (SmoothSplats::Memory; docs/device.md).
 [[nodiscard]] BandError renderSmoothBands(const LevelView& level, const FrameSetup& setup,
                                           const BandConfig& config, const BandIndex& index,
                                           const Rgb565Palette& palette, const PaletteRgb& colours,

@@ -52,8 +52,8 @@ using PaletteRgb = std::array<Rgb, 256>;
 PaletteRgb paletteOf(const ModelView& model);
 
 // The blending buffers for frames of one size: kBytesPerPixel a pixel besides the frame's own 4
-// (kBytesPerPixelWithNormals where normals are blended), allocated once, at construction;
-// blending never allocates.
+// (kBytesPerPixelWithNormals where normals are blended), allocated once, at construction, or
+// the caller's (Memory); blending never allocates.
 class SmoothSplats {
  public:
   // Red, green, blue and weight sums, 32 bits each.
@@ -61,10 +61,31 @@ class SmoothSplats {
   // And x, y, z sums of the normals, 32 bits each.
   static constexpr std::size_t kBytesPerPixelWithNormals = 28;
 
+  struct Sums {
+    std::uint32_t r, g, b, weight;
+  };
+
+  // Memory the caller gives instead (a device without a heap: docs/device.md): `sums` of at least
+  // width * height entries, `column_weights` of at least width and `row_weights` of at least
+  // height. Colour frames only (no normals are blended); smaller spans make buffers that refuse
+  // every frame. The object then never allocates.
+  struct Memory {
+    std::span<Sums> sums;
+    std::span<std::uint16_t> column_weights;
+    std::span<std::uint16_t> row_weights;
+  };
+
   // For frames of width x height pixels, each 1..kMaxViewportSide (or as wide and fewer rows: the
   // bands of a band renderer, octopoint/bands.h); any other size makes buffers that refuse every
   // frame.
   SmoothSplats(std::int32_t width, std::int32_t height);
+  SmoothSplats(std::int32_t width, std::int32_t height, const Memory& memory);
+  // Not copied (the sums are large, and a copy's spans would name the original's memory); moved
+  // whole, its vectors' memory with it.
+  SmoothSplats(const SmoothSplats&) = delete;
+  SmoothSplats& operator=(const SmoothSplats&) = delete;
+  SmoothSplats(SmoothSplats&&) = default;
+  SmoothSplats& operator=(SmoothSplats&&) = default;
   explicit SmoothSplats(const FrameSetup& setup) : SmoothSplats(setup.width, setup.height) {}
   // The same, and where `model` has normals, buffers that also blend them: a frame cleared with
   // PixelPayload::kColourNormal (for the styles, octopoint/styles.h) of one of `model`'s levels
@@ -111,10 +132,6 @@ class SmoothSplats {
   std::int32_t width() const { return width_; }
   std::int32_t height() const { return height_; }
 
-  struct Sums {
-    std::uint32_t r, g, b, weight;
-  };
-
  private:
   bool fits(const FrameSetup& setup, const FrameView& frame) const;
 
@@ -123,15 +140,18 @@ class SmoothSplats {
   bool blended_ = false;         // whether the frame blends (begin's set-up had splats)
   bool blends_normals_ = false;  // and its normals (a kColourNormal frame)
   PixelRect blended_rect_;       // where the sums are kept: the box frame's drawn rectangle
-  std::vector<Sums> sums_;       // width * height; pass 3 leaves the colour packed in r
+  // width * height sums (pass 3 leaves the colour packed in r) and one leaf's weights per column
+  // and row within its reach (Q8, kept here so that a leaf of any size costs no allocation): in
+  // the owned vectors, or in the caller's Memory.
+  std::span<Sums> sums_;
+  std::span<std::uint16_t> column_weight_, row_weight_;
+  std::vector<Sums> owned_sums_;
+  std::vector<std::uint16_t> owned_column_weight_, owned_row_weight_;
   // width * height normal sums (view axes), which pass 3 makes unit vectors (Q1.14); empty for
   // a model without normals.
   std::vector<DirectionQ14> normal_sums_;
   int normal_count_ = 0;
   std::array<NormalQ14, 256> normal_palette_{};  // the model's, Q1.14
-  // One leaf's weights per column and row within its reach (Q8), kept here so that a leaf of any
-  // size costs no allocation.
-  std::vector<std::uint16_t> column_weight_, row_weight_;
 };
 
 // Draws `level` smoothly: renderLevel(variant, ...) into `frame` (cleared by the caller to

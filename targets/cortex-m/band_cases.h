@@ -106,6 +106,17 @@ inline constexpr std::array<PerspectiveCase, kPerspectiveCaseCount> kPerspective
     {kPerspectiveCameras[1], 8},
 }};
 
+// Smooth splats in bands (renderSmoothBands, docs/device.md): the RAM budget image's two
+// cameras at depth 8, zoomed in so that voxels are magnified and blended, in 3-row bands (what
+// fits 36 KB beside the blend's 16 bytes a pixel), against the host's whole smooth frame.
+inline constexpr Camera kSmoothCameras[] = {
+    makeCamera(320, 240, 0, 0, 300, 0, 0),
+    makeCamera(320, 240, 30, -20, 450, 20, -10),
+};
+inline constexpr int kSmoothCaseCount = 2;
+inline constexpr int kSmoothDepth = 8;
+inline constexpr std::int32_t kSmoothBandRows = 3;
+
 // FNV-1a over a band's RGB565 bytes: the checksum both sides compute.
 constexpr std::uint32_t kChecksumSeed = 2166136261u;
 constexpr std::uint32_t checksum(std::uint32_t hash, const std::uint8_t* bytes, std::size_t count) {

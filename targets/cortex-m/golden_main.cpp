@@ -4,8 +4,10 @@
 // each band's rows, twice: drawn by fixed_fast (footprint splats where a voxel covers more than a
 // pixel: the desktop's default picture) and by fixed_baseline (one pixel per leaf, as the paper's
 // variants draw). The device compares the bands it flushes against the set its variant draws, so a
-// pass means the device's picture is the desktop's, band for band.
+// pass means the device's picture is the desktop's, band for band. Then the perspective cases and
+// the smooth cases (band_cases.h) likewise.
 //   usage: mcu_golden OUT.h
+#include <algorithm>
 #include <cstdio>
 #include <string>
 #include <vector>
@@ -13,10 +15,33 @@
 #include "octopoint/framebuffer.h"
 #include "octopoint/models.h"
 #include "octopoint/render.h"
+#include "octopoint/smooth.h"
 #include "renderer/perspective_renderer.h"
 #include "targets/cortex-m/band_cases.h"
 
 using namespace octopoint;
+
+namespace {
+
+// Appends the checksums of a width x height RGB565 frame's bands of `band_rows` rows to `sums`
+// (one line) and counts them in `count`.
+void appendBandSums(const std::vector<std::uint8_t>& rgb, std::int32_t width, std::int32_t height,
+                    std::int32_t band_rows, std::string& sums, std::size_t& count) {
+  const std::size_t row_bytes = static_cast<std::size_t>(width) * 2;
+  sums += "    ";
+  for (std::int32_t y0 = 0; y0 < height; y0 += band_rows, ++count) {
+    const std::int32_t rows = std::min(band_rows, height - y0);
+    char hex[16];
+    std::snprintf(
+        hex, sizeof hex, "0x%08x,",
+        mcu::checksum(mcu::kChecksumSeed, rgb.data() + static_cast<std::size_t>(y0) * row_bytes,
+                      static_cast<std::size_t>(rows) * row_bytes));
+    sums += hex;
+  }
+  sums += "\n";
+}
+
+}  // namespace
 
 int main(int argc, char** argv) {
   if (argc != 2) {
@@ -62,19 +87,7 @@ int main(int argc, char** argv) {
       std::vector<std::uint8_t> rgb(frame.pixels().size() * 2);
       packedToRgb565(frame.pixels().data(), frame.pixels().size(), palette, rgb.data());
       if (splats) first += std::to_string(count) + ", ";
-      sums += "    ";
-      for (std::int32_t y0 = 0; y0 < camera.height; y0 += c.band_rows, ++count) {
-        const std::int32_t rows = std::min(c.band_rows, camera.height - y0);
-        const std::size_t at =
-            static_cast<std::size_t>(y0) * static_cast<std::size_t>(camera.width) * 2;
-        const std::size_t bytes =
-            static_cast<std::size_t>(rows) * static_cast<std::size_t>(camera.width) * 2;
-        char hex[16];
-        std::snprintf(hex, sizeof hex, "0x%08x,",
-                      mcu::checksum(mcu::kChecksumSeed, rgb.data() + at, bytes));
-        sums += hex;
-      }
-      sums += "\n";
+      appendBandSums(rgb, camera.width, camera.height, c.band_rows, sums, count);
     }
     if (splats) first += std::to_string(count) + "};\n";
     text += sums + "};\n";
@@ -101,21 +114,37 @@ int main(int argc, char** argv) {
     packedToRgb565(frame.pixels().data(), frame.pixels().size(), palette, rgb.data());
     perspective_first += std::to_string(perspective_count) + ", ";
     perspective_points += std::to_string(stats.leaves) + ", ";
-    perspective_sums += "    ";
-    for (std::int32_t y0 = 0; y0 < c.camera.height; y0 += c.band_rows, ++perspective_count) {
-      const std::int32_t rows = std::min(c.band_rows, c.camera.height - y0);
-      const std::size_t row_bytes = static_cast<std::size_t>(c.camera.width) * 2;
-      char hex[16];
-      std::snprintf(
-          hex, sizeof hex, "0x%08x,",
-          mcu::checksum(mcu::kChecksumSeed, rgb.data() + static_cast<std::size_t>(y0) * row_bytes,
-                        static_cast<std::size_t>(rows) * row_bytes));
-      perspective_sums += hex;
-    }
-    perspective_sums += "\n";
+    appendBandSums(rgb, c.camera.width, c.camera.height, c.band_rows, perspective_sums,
+                   perspective_count);
   }
   text += perspective_sums + "};\n" + perspective_first + std::to_string(perspective_count) +
           "};\n" + perspective_points + "};\n";
+  // The smooth cases: the whole frame blended (fixed_fast's box frame, then SmoothSplats) in
+  // RGB565, cut into kSmoothBandRows-row bands.
+  std::string smooth_sums = "inline constexpr std::uint32_t kGoldenSmoothBands[] = {\n";
+  std::string smooth_first = "inline constexpr std::uint32_t kGoldenSmoothFirst[] = {";
+  std::size_t smooth_count = 0;
+  const PaletteRgb colours = paletteOf(*model);
+  for (const Camera& camera : mcu::kSmoothCameras) {
+    const LevelView* level = model->levelOfDepth(mcu::kSmoothDepth);
+    FrameSetup setup;
+    Framebuffer frame(camera.width, camera.height);
+    frame.clear();
+    SmoothSplats smooth(camera.width, camera.height);
+    std::vector<std::uint8_t> rgb(frame.pixels().size() * 2);
+    if (level == nullptr ||
+        buildFrameSetup(camera, mcu::kSmoothDepth, kDefaultFractionBits, &setup) !=
+            CameraError::kNone ||
+        !renderSmooth(Variant::kFixedFast, *level, setup, frame, smooth, colours) ||
+        !smooth.resolveToRgb565(frame, palette, rgb.data())) {
+      std::fprintf(stderr, "mcu_golden: a smooth case cannot be drawn\n");
+      return 1;
+    }
+    smooth_first += std::to_string(smooth_count) + ", ";
+    appendBandSums(rgb, camera.width, camera.height, mcu::kSmoothBandRows, smooth_sums,
+                   smooth_count);
+  }
+  text += smooth_sums + "};\n" + smooth_first + std::to_string(smooth_count) + "};\n";
   text += "}  // namespace octopoint::mcu\n";
   std::FILE* out = std::fopen(argv[1], "w");
   if (out == nullptr || std::fputs(text.c_str(), out) < 0 || std::fclose(out) != 0) {

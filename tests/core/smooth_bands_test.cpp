@@ -149,5 +149,39 @@ TEST(SmoothBands, WhatDoesNotApplyIsRefused) {
   EXPECT_EQ(out.rgb.size(), std::size_t{64 * 48});  // the last call only
 }
 
+// In the caller's memory (SmoothSplats::Memory, a device without a heap): the 3-row bands of the
+// Cortex-M smooth budget image are the whole frame's blend; memory too small for the band is
+// refused like a band too high.
+TEST(SmoothBands, CallerMemoryDrawsTheSameBandsAndTooLittleIsRefused) {
+  const ModelView& model = smoothBandsModel();
+  const Rgb565Palette palette = makeRgb565Palette(model, Rgb{236, 236, 240});
+  const FrameSetup setup = smoothBandsSetup(320, 240, 300, 30, 10);
+  constexpr std::int32_t kRows = 3;
+  const std::vector<std::uint16_t> whole = wholeSmoothFrame(Variant::kFixedFast, setup, palette);
+  const BandConfig config{Variant::kFixedFast, kRows, false, Rgb{}};
+  std::vector<std::uint32_t> buffer(bandBufferWords(setup.width, config));
+  std::vector<SmoothSplats::Sums> sums(static_cast<std::size_t>(setup.width) * kRows);
+  std::vector<std::uint16_t> column_weights(static_cast<std::size_t>(setup.width));
+  std::vector<std::uint16_t> row_weights(kRows);
+  const auto draw = [&](const SmoothSplats::Memory& memory, SmoothBandsOut& out) {
+    SmoothSplats smooth(setup.width, kRows, memory);
+    return renderSmoothBands(*model.levelOfDepth(8), setup, config, BandIndex{}, palette,
+                             paletteOf(model), {buffer, {}, {}}, smooth, out.sink());
+  };
+  SmoothBandsOut out;
+  ASSERT_EQ(draw({sums, column_weights, row_weights}, out), BandError::kNone);
+  EXPECT_TRUE(out.rgb == whole);
+  const std::span<SmoothSplats::Sums> all_sums(sums);
+  const std::span<std::uint16_t> columns(column_weights), rows(row_weights);
+  for (const SmoothSplats::Memory& short_memory :
+       {SmoothSplats::Memory{all_sums.first(sums.size() - 1), columns, rows},
+        SmoothSplats::Memory{all_sums, columns.first(columns.size() - 1), rows},
+        SmoothSplats::Memory{all_sums, columns, rows.first(kRows - 1)}}) {
+    SmoothBandsOut refused;
+    EXPECT_EQ(draw(short_memory, refused), BandError::kRefused);
+    EXPECT_TRUE(refused.rgb.empty());
+  }
+}
+
 }  // namespace
 }  // namespace octopoint
