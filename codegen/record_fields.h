@@ -37,14 +37,11 @@ class RecordFields {
   // Every field: the records exactly as the file holds them.
   static constexpr RecordFields all() { return RecordFields(~0u); }
   // X, y and the return and channel only (see above); add fields with `with`.
-  static constexpr RecordFields positionOnly() { return RecordFields(0); }
+  static constexpr RecordFields xyOnly() { return RecordFields(0); }
   // What the preparer reads from a record (decodeLasRecords, PointChunk): the position, the
   // intensity and the colour.
   static constexpr RecordFields pointChunk() {
-    return positionOnly()
-        .with(RecordField::kZ)
-        .with(RecordField::kIntensity)
-        .with(RecordField::kRgb);
+    return xyOnly().with(RecordField::kZ).with(RecordField::kIntensity).with(RecordField::kRgb);
   }
 
   constexpr RecordFields with(RecordField field) const {

@@ -155,13 +155,12 @@ TEST_F(LazSelectiveTest, AskedFieldsDecodeBitForBitAsInAFullDecoding) {
       ASSERT_EQ(full.size(), 7500 * record_bytes);
       std::vector<std::pair<std::string, RecordFields>> sets = {
           {"the preparer's", RecordFields::pointChunk()},
-          {"x and y only", RecordFields::positionOnly()},
-          {"x, y and GPS time", RecordFields::positionOnly().with(RecordField::kGpsTime)}};
+          {"x and y only", RecordFields::xyOnly()},
+          {"x, y and GPS time", RecordFields::xyOnly().with(RecordField::kGpsTime)}};
       for (std::size_t i = 0; i < std::size(kSelectiveEveryField); ++i) {
         const RecordField field = kSelectiveEveryField[i];
         sets.push_back({"all but field " + std::to_string(i), RecordFields::all().without(field)});
-        sets.push_back(
-            {"x, y and field " + std::to_string(i), RecordFields::positionOnly().with(field)});
+        sets.push_back({"x, y and field " + std::to_string(i), RecordFields::xyOnly().with(field)});
       }
       for (const auto& [set_name, fields] : sets) {
         const std::size_t left_out_differ = expectAskedFieldsEqual(
