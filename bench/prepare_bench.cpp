@@ -6,9 +6,11 @@
 // OCTOPOINT_BENCH_SCAN names another. BM_PrepareStreamedLas and BM_PrepareStreamedLaz: the
 // streamed preparer on LAS and LAZ files of the procedural landscape, one thread against two;
 // BM_DecodeLandscape: reading alone, LAS against LAZ, on one thread, of point format 2 (LAZ's
-// point-wise items) and 7 (its layered items, LAS 1.4).
+// point-wise items) and 7 (its layered items, LAS 1.4); BM_DecodeLayeredFields: layered LAZ
+// decoded whole against only the fields the preparer reads (OCTOPOINT_BENCH_LAZ: a file of yours).
 #include <benchmark/benchmark.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
@@ -16,6 +18,7 @@
 #include <random>
 #include <tuple>
 
+#include "codegen/las_reader.h"
 #include "codegen/model_writer.h"
 #include "codegen/point_source.h"
 #include "codegen/prepare.h"
@@ -109,17 +112,21 @@ BENCHMARK(BM_PrepareSyntheticScan)
 // model, on one thread and on two side by side: what the second core buys. The file is written
 // once into the temporary directory and removed at exit. Reading it is in the time (the page cache
 // holds it after the first iteration, as it would after make_large_scan).
-const std::string& landscapeLas(std::size_t points, bool laz = false, int format = 2) {
-  static std::map<std::tuple<std::size_t, bool, int>, std::string> written;
-  std::string& path = written[{points, laz, format}];
+// With `varied`, every field of the records changes as in an airborne scan (GPS time, returns,
+// scan angle, classes, sources: LasLayout::varied_fields).
+const std::string& landscapeLas(std::size_t points, bool laz = false, int format = 2,
+                                bool varied = false) {
+  static std::map<std::tuple<std::size_t, bool, int, bool>, std::string> written;
+  std::string& path = written[{points, laz, format, varied}];
   if (!path.empty()) return path;
   path = (std::filesystem::temp_directory_path() /
           ("octopoint_bench_" + std::to_string(points) + "_format" + std::to_string(format) +
-           (laz ? ".laz" : ".las")))
+           (varied ? "_varied" : "") + (laz ? ".laz" : ".las")))
              .string();
   octopoint::testing::LasLayout layout;
   layout.laz = laz;
   layout.format = format;
+  layout.varied_fields = varied;
   octopoint::testing::LasWriter writer(path, layout);
   const octopoint::testing::Landscape landscape;
   for (std::size_t i = 0; i < points; ++i) writer.add(landscape.point(i));
@@ -192,6 +199,42 @@ void BM_DecodeLandscape(benchmark::State& state) {
 BENCHMARK(BM_DecodeLandscape)
     ->ArgsProduct({{10'000'000}, {0, 1}, {2, 7}})
     ->ArgNames({"points", "laz", "format"})
+    ->Unit(benchmark::kMillisecond)
+    ->MeasureProcessCPUTime()
+    ->UseRealTime();
+
+// Decoding a layered LAZ file (point format 7, every field varied) on one thread, every field
+// (`fields` 0) against the preparer's only (1: position, intensity, colour; the layers of
+// classification, flags, scan angle, user data, point source and GPS time stepped over,
+// codegen/record_fields.h). OCTOPOINT_BENCH_LAZ names another LAZ file to decode instead (its
+// points decoded as often as 4 M points would be, so that a small file times as long).
+void BM_DecodeLayeredFields(benchmark::State& state) {
+  const char* named = std::getenv("OCTOPOINT_BENCH_LAZ");
+  const std::string path =
+      named ? std::string(named)
+            : landscapeLas(static_cast<std::size_t>(state.range(0)), true, 7, true);
+  const auto source =
+      openLasSource(path, state.range(1) != 0 ? RecordFields::pointChunk() : RecordFields::all());
+  const std::uint64_t points = source->info().points;
+  const std::uint64_t rounds = std::max<std::uint64_t>(
+      1, static_cast<std::uint64_t>(state.range(0)) / std::max<std::uint64_t>(points, 1));
+  PointChunk chunk;
+  for (auto _ : state) {
+    for (std::uint64_t round = 0; round < rounds; ++round) {
+      for (std::size_t i = 0; i < source->pieceCount(); ++i) {
+        const PointRange piece = source->piece(i);
+        source->read(piece.first, piece.count, chunk);
+        benchmark::DoNotOptimize(chunk.xyz.data());
+      }
+    }
+  }
+  state.counters["M_points_per_s"] = benchmark::Counter(
+      static_cast<double>(points * rounds) * static_cast<double>(state.iterations()) / 1e6,
+      benchmark::Counter::kIsRate);
+}
+BENCHMARK(BM_DecodeLayeredFields)
+    ->ArgsProduct({{4'000'000}, {0, 1}})
+    ->ArgNames({"points", "fields"})
     ->Unit(benchmark::kMillisecond)
     ->MeasureProcessCPUTime()
     ->UseRealTime();

@@ -442,10 +442,10 @@ class LasSource final : public PointSource {
 
 }  // namespace
 
-std::unique_ptr<PointSource> openLasSource(const std::filesystem::path& path) {
+std::unique_ptr<PointSource> openLasSource(const std::filesystem::path& path, RecordFields fields) {
   auto file = std::make_unique<InputFile>(path);
   const LasHeader header = readLasHeader(*file);
-  if (header.compressed) return openLazSource(std::move(file), header);
+  if (header.compressed) return openLazSource(std::move(file), header, fields);
   return std::make_unique<LasSource>(std::move(file), header);
 }
 

@@ -17,6 +17,7 @@
 
 #include "codegen/file_io.h"
 #include "codegen/point_source.h"
+#include "codegen/record_fields.h"
 
 namespace octopoint::prepare {
 
@@ -63,7 +64,10 @@ SourceInfo lasSourceInfo(const LasHeader& header);
 // Decodes `chunk.xyz.size()` LAS records from `records` into `chunk` (already resized).
 void decodeLasRecords(const LasHeader& header, const std::uint8_t* records, PointChunk& chunk);
 
-// A LAS or LAZ file as a point source (lasSourceInfo).
-std::unique_ptr<PointSource> openLasSource(const std::filesystem::path& path);
+// A LAS or LAZ file as a point source (lasSourceInfo). LAZ of point formats 6 to 10 decodes only
+// `fields` of each record (openLazSource): by default what PointChunk carries, which is all the
+// preparer reads; RecordFields::all() for the records exactly as the file holds them.
+std::unique_ptr<PointSource> openLasSource(const std::filesystem::path& path,
+                                           RecordFields fields = RecordFields::pointChunk());
 
 }  // namespace octopoint::prepare

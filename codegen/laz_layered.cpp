@@ -16,11 +16,16 @@
 namespace octopoint::laz {
 namespace {
 
+using prepare::RecordField;
+using prepare::RecordFields;
+
 // One layer of a chunk: its bytes and the arithmetic decoder reading them. An empty layer is not
-// started: its field keeps the value of the chunk's first point.
+// started: its field keeps the value of the chunk's first point. Neither is a layer the caller does
+// not want (codegen/record_fields.h): its bytes are stepped over, its field left as it is.
 class Layer {
  public:
-  void start(std::span<const std::uint8_t> bytes) {
+  void start(std::span<const std::uint8_t> bytes, bool wanted) {
+    if (!wanted) bytes = {};
     input_.assign(bytes);
     present_ = !bytes.empty();
     if (present_) {
@@ -141,11 +146,22 @@ struct Point14Context {
 
 class Point14V3 final : public LayeredItemDecoder {
  public:
+  // The first layer (returns, x and y) is always decoded: every other layer's contexts read it.
+  explicit Point14V3(RecordFields fields)
+      : wanted_{true,
+                fields.has(RecordField::kZ),
+                fields.has(RecordField::kClassification),
+                fields.has(RecordField::kFlags),
+                fields.has(RecordField::kIntensity),
+                fields.has(RecordField::kScanAngle),
+                fields.has(RecordField::kUserData),
+                fields.has(RecordField::kPointSource),
+                fields.has(RecordField::kGpsTime)} {}
   std::size_t layerCount() const override { return kLayers; }
 
   void start(const std::uint8_t* first, std::span<const std::span<const std::uint8_t>> layers,
              std::uint32_t channel) override {
-    for (std::size_t i = 0; i < kLayers; ++i) layers_[i].start(layers[i]);
+    for (std::size_t i = 0; i < kLayers; ++i) layers_[i].start(layers[i], wanted_[i]);
     contexts_.forget();
     current_ = channel;
     contexts_[current_].reset(first);
@@ -353,6 +369,7 @@ class Point14V3 final : public LayeredItemDecoder {
     return true;
   }
 
+  std::array<bool, kLayers> wanted_;
   std::array<Layer, kLayers> layers_;
   ChannelContexts<Point14Context> contexts_;
   std::uint32_t current_ = 0;
@@ -361,13 +378,16 @@ class Point14V3 final : public LayeredItemDecoder {
 // RGB14 (colour) and RGBNIR14 (colour and near infrared, a layer each).
 class Rgb14V3 final : public LayeredItemDecoder {
  public:
-  explicit Rgb14V3(bool nir) : nir_(nir) {}
+  Rgb14V3(bool nir, RecordFields fields)
+      : nir_(nir),
+        want_rgb_(fields.has(RecordField::kRgb)),
+        want_nir_(fields.has(RecordField::kNir)) {}
   std::size_t layerCount() const override { return nir_ ? 2 : 1; }
 
   void start(const std::uint8_t* first, std::span<const std::span<const std::uint8_t>> layers,
              std::uint32_t channel) override {
-    rgb_.start(layers[0]);
-    if (nir_) nir_layer_.start(layers[1]);
+    rgb_.start(layers[0], want_rgb_);
+    if (nir_) nir_layer_.start(layers[1], want_nir_);
     std::array<std::uint8_t, 8> first_item{};
     std::memcpy(first_item.data(), first, nir_ ? 8 : 6);
     follower_.start(first_item.data(), channel);
@@ -399,6 +419,7 @@ class Rgb14V3 final : public LayeredItemDecoder {
 
  private:
   bool nir_;
+  bool want_rgb_, want_nir_;
   Layer rgb_, nir_layer_;
   ChannelFollower<RgbContext> follower_;
 };
@@ -416,10 +437,11 @@ struct WavePacketContext {
 
 class WavePacket14V3 final : public LayeredItemDecoder {
  public:
+  explicit WavePacket14V3(RecordFields fields) : wanted_(fields.has(RecordField::kWavePacket)) {}
   std::size_t layerCount() const override { return 1; }
   void start(const std::uint8_t* first, std::span<const std::span<const std::uint8_t>> layers,
              std::uint32_t channel) override {
-    layer_.start(layers[0]);
+    layer_.start(layers[0], wanted_);
     follower_.start(first, channel);
   }
   void decode(std::uint8_t* item, std::uint32_t& channel) override {
@@ -432,6 +454,7 @@ class WavePacket14V3 final : public LayeredItemDecoder {
   std::string layerName(std::size_t) const override { return "WAVEPACKET14 layer"; }
 
  private:
+  bool wanted_;
   Layer layer_;
   ChannelFollower<WavePacketContext> follower_;
 };
@@ -439,12 +462,13 @@ class WavePacket14V3 final : public LayeredItemDecoder {
 // BYTE14 (extra bytes): a layer per byte, each byte's difference from the last point's.
 class Bytes14V3 final : public LayeredItemDecoder {
  public:
-  explicit Bytes14V3(std::size_t count) : layers_(count), count_(count) {}
+  Bytes14V3(std::size_t count, RecordFields fields)
+      : layers_(count), count_(count), wanted_(fields.has(RecordField::kExtraBytes)) {}
   std::size_t layerCount() const override { return count_; }
 
   void start(const std::uint8_t* first, std::span<const std::span<const std::uint8_t>> layers,
              std::uint32_t channel) override {
-    for (std::size_t i = 0; i < count_; ++i) layers_[i].start(layers[i]);
+    for (std::size_t i = 0; i < count_; ++i) layers_[i].start(layers[i], wanted_);
     for (BytesContext& context : contexts_) context.used = false;
     current_ = channel & 3;
     reset(current_, first);
@@ -491,25 +515,26 @@ class Bytes14V3 final : public LayeredItemDecoder {
 
   std::vector<Layer> layers_;
   std::size_t count_;
+  bool wanted_;
   std::array<BytesContext, 4> contexts_;
   std::uint32_t current_ = 0;
 };
 
 }  // namespace
 
-std::unique_ptr<LayeredItemDecoder> layeredDecoder(const Item& item) {
+std::unique_ptr<LayeredItemDecoder> layeredDecoder(const Item& item, RecordFields fields) {
   if (item.version != 3) return nullptr;
   switch (item.type) {
     case ItemType::kPoint14:
-      return std::make_unique<Point14V3>();
+      return std::make_unique<Point14V3>(fields);
     case ItemType::kRgb14:
-      return std::make_unique<Rgb14V3>(false);
+      return std::make_unique<Rgb14V3>(false, fields);
     case ItemType::kRgbNir14:
-      return std::make_unique<Rgb14V3>(true);
+      return std::make_unique<Rgb14V3>(true, fields);
     case ItemType::kWavePacket14:
-      return std::make_unique<WavePacket14V3>();
+      return std::make_unique<WavePacket14V3>(fields);
     case ItemType::kByte14:
-      return item.size > 0 ? std::make_unique<Bytes14V3>(item.size) : nullptr;
+      return item.size > 0 ? std::make_unique<Bytes14V3>(item.size, fields) : nullptr;
     default:
       return nullptr;
   }

@@ -4,7 +4,8 @@
 // the layers. Each layer is an arithmetic stream of its own holding one field of every point of the
 // chunk (POINT14 has nine: the return counts with x and y, z, classification, flags, intensity,
 // scan angle, user data, point source, GPS time; RGB14 one, RGBNIR14 two, WAVEPACKET14 one, BYTE14
-// one per byte), so that a reader may leave out the layers it does not need. An empty layer means
+// one per byte), so that a reader may leave out the layers it does not need (a decoder is told
+// which, codegen/record_fields.h, and steps over the others by their sizes). An empty layer means
 // the field never changes within the chunk.
 //
 // The predictions keep four contexts, one per scanner channel: the "changed values" symbol of
@@ -17,6 +18,7 @@
 #include <string>
 
 #include "codegen/laz_pointwise.h"
+#include "codegen/record_fields.h"
 
 namespace octopoint::laz {
 
@@ -46,7 +48,9 @@ class LayeredItemDecoder {
   virtual std::string layerName(std::size_t layer) const = 0;
 };
 
-// The decoder of a layered item, or nullptr for a type or version this reader does not know.
-std::unique_ptr<LayeredItemDecoder> layeredDecoder(const Item& item);
+// The decoder of a layered item, or nullptr for a type or version this reader does not know. It
+// decodes the layers of `fields` only (codegen/record_fields.h), and always POINT14's first.
+std::unique_ptr<LayeredItemDecoder> layeredDecoder(
+    const Item& item, prepare::RecordFields fields = prepare::RecordFields::all());
 
 }  // namespace octopoint::laz

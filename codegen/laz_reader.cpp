@@ -222,15 +222,15 @@ std::vector<ChunkCube> copcChunkCubes(const InputFile& file, const LasHeader& he
 }
 
 // One thread's chunk decoder: the arithmetic decoder and an item decoder per item (point-wise),
-// or the item decoders that read the layers (layered).
+// or the item decoders that read the layers of `fields` (layered).
 class ChunkDecoder {
  public:
-  explicit ChunkDecoder(const LazLayout& layout)
+  ChunkDecoder(const LazLayout& layout, RecordFields fields)
       : layered_(layout.compressor == Compressor::kLayered) {
     std::size_t at = 0;
     for (const Item& item : layout.items) {
       if (layered_) {
-        layered_items_.push_back({laz::layeredDecoder(item), at});
+        layered_items_.push_back({laz::layeredDecoder(item, fields), at});
       } else {
         items_.push_back({laz::pointwiseDecoder(item, decoder_), at});
       }
@@ -313,7 +313,8 @@ class ChunkDecoder {
       refuse("the chunk says it has " + std::to_string(count) + " points, the chunk table " +
              std::to_string(chunk.points));
     }
-    // Every layer's size is checked against the chunk's bytes before any layer is read.
+    // Every layer's size is checked against the chunk's bytes before any layer is read, the layers
+    // to be stepped over too.
     layers_.clear();
     std::uint64_t at = head;
     for (std::size_t i = 0; i < layer_count; ++i) {
@@ -381,8 +382,8 @@ class ChunkDecoder {
 
 class LazSource final : public PointSource {
  public:
-  LazSource(std::unique_ptr<InputFile> file, const LasHeader& header)
-      : file_(std::move(file)), header_(header), info_(lasSourceInfo(header)) {
+  LazSource(std::unique_ptr<InputFile> file, const LasHeader& header, RecordFields fields)
+      : file_(std::move(file)), header_(header), info_(lasSourceInfo(header)), fields_(fields) {
     layout_ = readLaszipVlr(*file_, header_);
     chunks_ = layout_.compressor == Compressor::kPointwise
                   ? wholeFileChunk(*file_, header_)
@@ -448,7 +449,7 @@ class LazSource final : public PointSource {
         return decoder;
       }
     }
-    return std::make_unique<ChunkDecoder>(layout_);
+    return std::make_unique<ChunkDecoder>(layout_, fields_);
   }
   void giveBack(std::unique_ptr<ChunkDecoder> decoder) const {
     const std::lock_guard lock(mutex_);
@@ -458,6 +459,7 @@ class LazSource final : public PointSource {
   std::unique_ptr<InputFile> file_;
   LasHeader header_;
   SourceInfo info_;
+  RecordFields fields_;
   LazLayout layout_;
   std::vector<LazChunk> chunks_;
   std::vector<ChunkCube> cubes_;  // COPC: each chunk's cube; empty for other LAZ
@@ -467,9 +469,9 @@ class LazSource final : public PointSource {
 
 }  // namespace
 
-std::unique_ptr<PointSource> openLazSource(std::unique_ptr<InputFile> file,
-                                           const LasHeader& header) {
-  return std::make_unique<LazSource>(std::move(file), header);
+std::unique_ptr<PointSource> openLazSource(std::unique_ptr<InputFile> file, const LasHeader& header,
+                                           RecordFields fields) {
+  return std::make_unique<LazSource>(std::move(file), header, fields);
 }
 
 }  // namespace octopoint::prepare

@@ -19,6 +19,7 @@
 #include "codegen/file_io.h"
 #include "codegen/las_reader.h"
 #include "codegen/point_source.h"
+#include "codegen/record_fields.h"
 
 namespace octopoint::prepare {
 
@@ -26,8 +27,10 @@ namespace octopoint::prepare {
 // 50,000 by default.
 inline constexpr std::uint64_t kMaxLazChunkPoints = 1u << 20;
 
-// The LAZ file whose LAS header is `header` (header.compressed) as a point source.
-std::unique_ptr<PointSource> openLazSource(std::unique_ptr<InputFile> file,
-                                           const LasHeader& header);
+// The LAZ file whose LAS header is `header` (header.compressed) as a point source. Its layered
+// chunks (formats 6 to 10) decode only `fields` into PointChunk::raw (codegen/record_fields.h);
+// the fields PointChunk carries (RecordFields::pointChunk) must be among them.
+std::unique_ptr<PointSource> openLazSource(std::unique_ptr<InputFile> file, const LasHeader& header,
+                                           RecordFields fields);
 
 }  // namespace octopoint::prepare

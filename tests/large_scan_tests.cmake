@@ -4,7 +4,8 @@
 # The streamed preparer against the in-memory reference, across budgets and threads; the LAS
 # reader with every format, corner and damaged header. PCL writes the PCD/PLY files to compare with.
 add_executable(streamed_tests preparer/las_reader_test.cpp preparer/laz_coder_test.cpp
-               preparer/laz_reader_test.cpp preparer/copc_reader_test.cpp
+               preparer/laz_reader_test.cpp preparer/laz_selective_test.cpp
+               preparer/copc_reader_test.cpp
                preparer/streamed_prepare_test.cpp)
 target_link_libraries(streamed_tests PRIVATE octopoint_prepare octopoint_scan_tools
                       octopoint_test_scans pcl_common pcl_io GTest::gtest_main octopoint_warnings)

@@ -60,7 +60,7 @@ class CopcReaderTest : public ::testing::Test {
     layout.laz_chunk_points = node_points;
     const fs::path path = dir_ / name;
     testing::LasWriter writer(path, layout);
-    for (std::size_t i = 0; i < count; ++i) writer.add(landscape_.point(i));
+    writer.addLandscape(landscape_, count);
     writer.finish();
     return path;
   }

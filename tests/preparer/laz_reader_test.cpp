@@ -14,6 +14,7 @@
 #include <string>
 #include <vector>
 
+#include "codegen/las_reader.h"
 #include "codegen/model_writer.h"
 #include "codegen/point_source.h"
 #include "codegen/prepare_error.h"
@@ -43,7 +44,7 @@ class LazReaderTest : public ::testing::Test {
   fs::path write(const std::string& name, const LasLayout& layout, std::size_t count) {
     const fs::path path = dir_ / name;
     LasWriter writer(path, layout);
-    for (std::size_t i = 0; i < count; ++i) writer.add(landscape_.point(i));
+    writer.addLandscape(landscape_, count);
     writer.finish();
     return path;
   }
@@ -57,9 +58,9 @@ class LazReaderTest : public ::testing::Test {
     return {las, write(name + ".laz", layout, count)};
   }
 
-  // Every record of `path`, read piece by piece as the preparer does.
+  // Every record of `path`, read piece by piece as the preparer does, every field decoded.
   static std::vector<std::uint8_t> records(const fs::path& path, std::size_t* pieces = nullptr) {
-    const auto source = openPointSource(path);
+    const auto source = openLasSource(path, RecordFields::all());
     std::vector<std::uint8_t> all;
     PointChunk chunk;
     std::uint64_t next = 0;
@@ -168,7 +169,7 @@ TEST_F(LazReaderTest, RangesAcrossChunksReadTheSameRecords) {
     layout.laz_chunk_points = 700;
     const auto [las, laz] = twins("ranges", layout, 5000);
     const auto las_source = openPointSource(las);
-    const auto laz_source = openPointSource(laz);
+    const auto laz_source = openLasSource(laz, RecordFields::all());
     PointChunk want, got;
     std::mt19937 random(3);
     for (int i = 0; i < 40; ++i) {
@@ -266,7 +267,7 @@ class LazBadInputTest : public LazReaderTest {
     layout.laz_chunk_points = 1000;
     const fs::path path = dir_ / ("good" + std::to_string(format) + ".laz");
     LasWriter writer(path, layout);
-    for (std::size_t i = 0; i < 3000; ++i) writer.add(landscape_.point(i));
+    writer.addLandscape(landscape_, 3000);
     writer.finish();
     chunk_bytes_ = writer.lazChunkBytes();
     return path;

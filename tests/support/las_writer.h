@@ -59,7 +59,11 @@ class LasWriter {
   LasWriter(const std::filesystem::path& path, const LasLayout& layout);
   void add(const LandscapePoint&
                point);  // the landscape's metres, stored relative to the layout's origin
-  void finish();        // EVLRs, then the header's counts and bounds
+  // The landscape's points 0 to count - 1.
+  void addLandscape(const Landscape& landscape, std::uint64_t count) {
+    for (std::uint64_t i = 0; i < count; ++i) add(landscape.point(i));
+  }
+  void finish();  // EVLRs, then the header's counts and bounds
 
   static std::uint16_t recordLength(const LasLayout& layout);
   std::uint64_t pointOffset() const { return point_offset_; }
