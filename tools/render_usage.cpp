@@ -121,8 +121,10 @@ nor --file nor --url it draws the default model embedded in this binary.
   -o, --output FILE  the PNG to write (written whole or not at all); if it exists it must be a
                      regular file (a device or FIFO is refused)
   --info             print what the model holds instead of drawing it: file, format version,
-                     palette, normals, leaves and node bytes per depth, the cube's edge in metres,
-                     and the line `cube X0,Y0,Z0 EDGE`: the cube's lowest corner and edge in the
+                     palette, normals, leaves, node bytes and sample reach per depth (how
+                     wide its splats are drawn, in voxel footprints: more than 1 where the scan's
+                     samples lie farther apart than the depth's voxels; every depth is drawn
+                     with it), the cube's edge in metres, and the line `cube X0,Y0,Z0 EDGE`: the cube's lowest corner and edge in the
                      scan's units and axes (the frame --crop and --eye take)
   --list             list the embedded models and the decoder variants
   -h, --help         show this help
