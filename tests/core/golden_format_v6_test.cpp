@@ -1,8 +1,8 @@
 // Golden models of format version 6 (octopoint/model.h, docs/format.md): version 4 with each
 // level's sample reach in byte 1 of its level table row, in sixteenths of a voxel footprint.
 // Written out byte by byte with literal offsets and frozen here; the reach's rules each have a
-// refusal. Versions 1, 2 and 4 keep their goldens (golden_format_test.cpp, golden_format_v2_test.cpp,
-// golden_format_v4_test.cpp) and read as one footprint.
+// refusal. Versions 1, 2 and 4 keep their goldens (golden_format_test.cpp,
+// golden_format_v2_test.cpp, golden_format_v4_test.cpp) and read as one footprint.
 #include <gtest/gtest.h>
 
 #include <cstdint>
@@ -22,20 +22,23 @@ constexpr std::size_t kV6TableAt = 788 + 40;  // no normal palette, then the pla
 // Two levels: depth 1 (children 0 and 7 of the root, red and blue) at one footprint, and depth 2
 // (one leaf in each of them) at `fine_reach` sixteenths; a 5 km cube, placement not recorded.
 V6Bytes twoReaches(std::uint8_t fine_reach, std::uint16_t version = 6) {
-  V6Bytes image = {'O',  'C',  'T',  'P',  static_cast<std::uint8_t>(version), 0x00, 0x02, 0x00,
-                   0x00, 0x80, 0xe0, 0x37, 0x79, 0xc3, 0x11, 0x00,  // cube edge 5 km in pm
-                   0x02, 0x00, 0x00, 0x00,                          // 2 colours, no normals
-                   0xff, 0x00, 0x00, 0x00, 0x00, 0xff};             // red, blue
+  V6Bytes image = {'O',  'C',  'T',  'P',  static_cast<std::uint8_t>(version),
+                   0x00, 0x02, 0x00, 0x00, 0x80,
+                   0xe0, 0x37, 0x79, 0xc3, 0x11,
+                   0x00,                    // cube edge 5 km in pm
+                   0x02, 0x00, 0x00, 0x00,  // 2 colours, no normals
+                   0xff, 0x00, 0x00, 0x00, 0x00,
+                   0xff};       // red, blue
   image.resize(kV6TableAt, 0);  // the rest of the palette; an unrecorded placement (40 zeros)
   const V6Bytes table_and_streams = {
-      0x01, 0x10, 0x00, 0x00,        // depth 1, reach 16 (one footprint), reserved
-      0x01, 0x00, 0x00, 0x00,        // 1 node byte
-      0x02, 0x00, 0x00, 0x00,        // 2 leaves
-      0x02, fine_reach, 0x00, 0x00,  // depth 2, its reach, reserved
-      0x03, 0x00, 0x00, 0x00,        // 3 node bytes
-      0x02, 0x00, 0x00, 0x00,        // 2 leaves
-      0x81, 0x00, 0x01,              // depth 1: root, leaf colours
-      0x81, 0x01, 0x80, 0x00, 0x01,  // depth 2: root, child 0's child 0, child 7's child 7
+      0x01, 0x10,       0x00, 0x00,        // depth 1, reach 16 (one footprint), reserved
+      0x01, 0x00,       0x00, 0x00,        // 1 node byte
+      0x02, 0x00,       0x00, 0x00,        // 2 leaves
+      0x02, fine_reach, 0x00, 0x00,        // depth 2, its reach, reserved
+      0x03, 0x00,       0x00, 0x00,        // 3 node bytes
+      0x02, 0x00,       0x00, 0x00,        // 2 leaves
+      0x81, 0x00,       0x01,              // depth 1: root, leaf colours
+      0x81, 0x01,       0x80, 0x00, 0x01,  // depth 2: root, child 0's child 0, child 7's child 7
   };
   image.insert(image.end(), table_and_streams.begin(), table_and_streams.end());
   return image;

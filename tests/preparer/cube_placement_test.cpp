@@ -70,7 +70,7 @@ TEST(CubePlacement, OctAndChunkedFilesCarryThePlacement) {
   const std::optional<ProgressiveModel> progressive =
       progressiveModelFromPrefix(chunked, &chunked_issue);
   ASSERT_TRUE(progressive) << describe(chunked_issue.error);
-  EXPECT_EQ(progressive->head().format_version, chunked::kVersion5);
+  EXPECT_EQ(progressive->head().format_version, chunked::kFormatVersion);  // 7
   EXPECT_EQ(progressive->head().cube, model.cube);
 }
 

@@ -10,10 +10,9 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <opencv2/imgcodecs.hpp>
 #include <string>
 #include <vector>
-
-#include <opencv2/imgcodecs.hpp>
 
 #include "codegen/model_writer.h"
 #include "codegen/prepare.h"
@@ -110,9 +109,10 @@ TEST(StoredSampleReach, OctopointRenderDrawsTheAirborneGridWithoutItsEmptyLines)
   image[row + 1] = format::kOneSampleReachQ4;
   write();
   const int unwidened = openPerMille(coarse, renderedCover(model, kFineDepth, folder / "one.png"));
-  std::printf("airborne grid, depth %d, 640x480: reach %d/16 leaves %d.%d%% open, one footprint "
-              "%d.%d%%\n",
-              kFineDepth, stored, open / 10, open % 10, unwidened / 10, unwidened % 10);
+  std::printf(
+      "airborne grid, depth %d, 640x480: reach %d/16 leaves %d.%d%% open, one footprint "
+      "%d.%d%%\n",
+      kFineDepth, stored, open / 10, open % 10, unwidened / 10, unwidened % 10);
   EXPECT_GT(unwidened, 10);
 }
 
