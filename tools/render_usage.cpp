@@ -131,7 +131,8 @@ nor --file nor --url it draws the default model embedded in this binary.
 
 Depth auto (docs/splats.md): a voxel of depth d has an edge of e = zoom * min(W, H) / 2^d
 pixels on a WxH frame. Auto draws the coarsest stored depth with e <= 1 pixel, among the depths
-the scan samples densely; if even the finest has e > 1 pixel, the finest. Where a leaf's projected
+the scan samples densely and those the model stores a sample reach of more than one footprint
+for (--info); if even the finest has e > 1 pixel, the finest. Where a leaf's projected
 footprint (e times the rotation row's |r0|+|r1|+|r2|, up to 1.73 e when turned) is wider than a
 pixel, fixed_fast and fixed_simd cover it with a footprint splat, z-tested per pixel (the paper's
 variants set one pixel per leaf).

@@ -377,17 +377,18 @@ class ModelView {
     return reaches;
   }
 
-  int format_version_ = 0;
   std::uint64_t cube_edge_pm_ = 0;
   CubePlacement cube_{};
   int palette_count_ = 0;
   const std::uint8_t* palette_rgb_ = nullptr;  // format::kPaletteEntries x RGB888
-  bool colour_is_synthetic_ = false;
   int normal_count_ = 0;
   const std::uint8_t* normal_bytes_ = nullptr;   // .oct: normal_count_ x 3 little-endian i16
   const std::int16_t* normal_values_ = nullptr;  // embedded: normal_count_ x 3 i16
   int level_count_ = 0;
   std::array<LevelView, format::kMaxLevels> levels_{};
+  // Small fields together, where a 32-bit device's alignment would otherwise pad each.
+  std::uint16_t format_version_ = 0;
+  bool colour_is_synthetic_ = false;
   std::array<std::uint8_t, format::kMaxLevels> reaches_ = oneFootprintEach();
 #if !defined(OCTOPOINT_BARE_METAL)
   std::shared_ptr<const std::vector<SubtreeEnd>> skip_ends_;  // what levels_[i].skip point into

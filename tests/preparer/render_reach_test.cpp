@@ -18,6 +18,7 @@
 #include "codegen/prepare.h"
 #include "octopoint/camera.h"
 #include "octopoint/model.h"
+#include "renderer/level_of_detail.h"
 #include "tests/support/airborne_scans.h"
 
 namespace octopoint {
@@ -95,6 +96,14 @@ TEST(StoredSampleReach, OctopointRenderDrawsTheAirborneGridWithoutItsEmptyLines)
   EXPECT_EQ(view->sampleReachOfDepth(kCoarseDepth), kOneSampleReach);
   const std::int32_t stored = view->sampleReachOfDepth(kFineDepth);
   EXPECT_GT(stored, kOneSampleReach);  // 1 m samples under 0.88 m voxels
+
+  // Depth auto takes depth 8 where its voxels are over a pixel (1.9 at 640x480): it has 2.99 times
+  // depth 7's voxels, under the dense rule's 3, but its stored reach draws it whole.
+  Camera camera;
+  camera.width = 640;
+  camera.height = 480;
+  ASSERT_NE(autoLevel(*view, camera), nullptr);
+  EXPECT_EQ(autoLevel(*view, camera)->depth, kFineDepth);
 
   const DrawnCover coarse = renderedCover(model, kCoarseDepth, folder / "coarse.png");
   const DrawnCover fine = renderedCover(model, kFineDepth, folder / "fine.png");
