@@ -95,7 +95,8 @@ struct ChunkedIssue {
 // Fixed header:
 //   offset size field
 //   0      4    magic "OCTP"
-//   4      2    format version, 3 or 5 (5: version 3 with the cube's placement, below)
+//   4      2    format version, 3, 5 or 7 (5: version 3 with the cube's placement, below; 7:
+//                version 5 with each level's sample reach in the level table)
 //   6      1    level count L, 2..kMaxChunkedLevels
 //   7      1    flags, as in version 2: bit 1 synthetic colour (the scan had none: the palette is a
 //                depth shade); bit 0 (per-leaf normals: a normal palette after the colour palette
