@@ -224,12 +224,17 @@ std::vector<std::uint8_t> serializeLevels(const PreparedModel& model,
   putU32(out, static_cast<std::uint32_t>(base_level.leaves.size()));
   for (const Rgb8& colour : model.palette) out.insert(out.end(), colour.begin(), colour.end());
   // Level table: the base row, then one per chunked level.
+  // Each row carries its level's sample reach: the base's is one footprint (the coarsest depth,
+  // or a coarser one made of it), a chunked level's the one the preparer measured for its depth.
   out.push_back(static_cast<std::uint8_t>(base.depth));
-  out.insert(out.end(), 19, std::uint8_t{0});
+  out.push_back(0);  // region level
+  out.push_back(format::kOneSampleReachQ4);
+  out.insert(out.end(), 17, std::uint8_t{0});
   for (std::size_t j = 0; j < levels.size(); ++j) {
     out.push_back(static_cast<std::uint8_t>(levels[j].depth));
     out.push_back(static_cast<std::uint8_t>(levels[j].region_level));
-    putU16(out, 0);
+    out.push_back(model.levels[first_chunked + j].sample_reach);
+    out.push_back(0);
     putU32(out, static_cast<std::uint32_t>(levels[j].chunks.size()));
     putU32(out, crc32(records.tables[j]));
     putU64(out, records.level_offsets[j]);

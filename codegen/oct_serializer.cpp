@@ -1,4 +1,4 @@
-// The `.oct` binary image of a prepared model, in the layout of octopoint/model.h (version 4).
+// The `.oct` binary image of a prepared model, in the layout of octopoint/model.h (version 6).
 #include <cassert>
 
 #include "codegen/byte_output.h"
@@ -21,7 +21,7 @@ std::vector<std::uint8_t> serializeModel(const PreparedModel& model) {
   std::vector<std::uint8_t> out(format::kMagic, format::kMagic + sizeof format::kMagic);
   out.reserve(size);  // megabytes for a large model: no copy as it grows, on huge pages
   adviseHugePages(out.data() + out.size(), size - out.size());
-  putU16(out, format::kVersion4);
+  putU16(out, format::kVersion6);
   out.push_back(static_cast<std::uint8_t>(model.levels.size()));
   out.push_back(
       static_cast<std::uint8_t>((with_normals ? format::v2::kFlagNormals : 0) |
@@ -40,8 +40,11 @@ std::vector<std::uint8_t> serializeModel(const PreparedModel& model) {
   putCubePlacement(out, model.cube);
   for (const PreparedLevel& level : model.levels) {
     assert(level.normals.size() == (with_normals ? level.leaves.size() : 0));
+    assert(level.sample_reach >= format::kOneSampleReachQ4 &&
+           level.sample_reach <= format::kMaxSampleReachQ4);
     out.push_back(static_cast<std::uint8_t>(level.depth));
-    out.insert(out.end(), 3, std::uint8_t{0});
+    out.push_back(level.sample_reach);
+    out.insert(out.end(), 2, std::uint8_t{0});
     putU32(out, static_cast<std::uint32_t>(level.nodes.size()));
     putU32(out, static_cast<std::uint32_t>(level.leaves.size()));
   }

@@ -18,6 +18,7 @@
 #include "codegen/point_source.h"
 #include "codegen/prepare_error.h"
 #include "codegen/progress.h"
+#include "codegen/sample_reach.h"
 #include "codegen/scene_pruning.h"
 #include "codegen/streamed_prepare.h"
 #include "codegen/voxelizer.h"
@@ -193,6 +194,7 @@ PreparedModel prepareWithNormals(const Scan& full_scan, const std::string& scan_
     model.levels.push_back(storedLevel(voxels, palette, normal_palette));
   }
   pruneModel(model, options, scan_path);
+  recordSampleReaches(model);
   return model;
 }
 
@@ -222,7 +224,11 @@ PreparedModel prepareModel(const Scan& full_scan, const std::string& scan_path,
     fit.edge = std::bit_cast<double>(model.cube.edge_bits);
     model.cube = cubePlacement(fit, true);
   }
-  pruneModel(model, options, scan_path);
+  // Pruning, when asked for, changes the levels the streamed preparer measured.
+  if (!options.visibility_cameras.empty() || !options.visibility_eyes.empty()) {
+    pruneModel(model, options, scan_path);
+    recordSampleReaches(model);
+  }
   return model;
 }
 

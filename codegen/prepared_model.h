@@ -18,6 +18,9 @@ struct PreparedLevel {
   std::vector<std::uint8_t> nodes;      // depth-first child mask bytes (octopoint/model.h)
   std::vector<std::uint8_t> leaves;     // one palette index per leaf, depth-first
   std::vector<std::uint8_t> normals{};  // one normal palette index per leaf, or empty (no normals)
+  // How wide its splats are drawn, in sixteenths of a voxel footprint (format version 6's level
+  // table): measured against the next coarser level (codegen/sample_reach.h, recordSampleReaches).
+  std::uint8_t sample_reach = format::kOneSampleReachQ4;
   // What visibility pruning did (when it ran): the level before it, and the time it took.
   std::size_t voxels_before_pruning = 0;
   std::size_t bytes_before_pruning = 0;  // node bytes + colour bytes

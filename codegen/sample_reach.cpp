@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <array>
+#include <utility>
 #include <vector>
 
 #include "codegen/voxelizer.h"
@@ -136,6 +137,18 @@ std::vector<std::int32_t> measureSampleReaches(std::span<const LevelVoxels> leve
                                                levels[i - 1].depth, reaches.back()));
   }
   return reaches;
+}
+
+void recordSampleReaches(PreparedModel& model) {
+  std::vector<LevelVoxels> levels;
+  for (const PreparedLevel& level : model.levels) {
+    LevelVoxels voxels = decodeLevel(level);
+    voxels.colours = {};  // only the keys are measured
+    levels.push_back(std::move(voxels));
+  }
+  const std::vector<std::int32_t> reaches = measureSampleReaches(levels);
+  for (std::size_t i = 0; i < model.levels.size(); ++i)
+    model.levels[i].sample_reach = static_cast<std::uint8_t>(reaches[i]);
 }
 
 }  // namespace octopoint::prepare

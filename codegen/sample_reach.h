@@ -42,4 +42,8 @@ std::int32_t measureSampleReach(std::span<const std::uint64_t> keys, int depth,
 // coarsest level's is one footprint (16).
 std::vector<std::int32_t> measureSampleReaches(std::span<const LevelVoxels> levels);
 
+// Measures the reach of each of `model`'s levels (as measureSampleReaches) and records it in the
+// level (PreparedLevel::sample_reach), which the `.oct` file and the generated sources store.
+void recordSampleReaches(PreparedModel& model);
+
 }  // namespace octopoint::prepare

@@ -185,7 +185,8 @@ std::string descriptorSource(const PreparedModel& model, const EmitOptions& opti
     out << "    {" << level.depth << ", " << arrayName(model, level, "nodes") << ", "
         << level.nodes.size() << ", " << arrayName(model, level, "leaves") << ", "
         << level.leaves.size() << ", "
-        << (with_normals ? arrayName(model, level, "normals") : std::string("nullptr")) << "},\n";
+        << (with_normals ? arrayName(model, level, "normals") : std::string("nullptr")) << ", "
+        << static_cast<unsigned>(level.sample_reach) << "},\n";
   }
   const unsigned flags = (with_normals ? format::v2::kFlagNormals : 0u) |
                          (model.synthetic_colour ? format::v2::kFlagSyntheticColour : 0u);
@@ -193,7 +194,7 @@ std::string descriptorSource(const PreparedModel& model, const EmitOptions& opti
   // palette count and colours, normal count and palette, levels, the cube's placement.
   out << "};\n\n}  // namespace\n\n"
       << "extern const ::octopoint::EmbeddedModel " << model.name << " = {\n"
-      << "    \"" << model.name << "\", " << format::kVersion4 << ", " << flags << ", "
+      << "    \"" << model.name << "\", " << format::kVersion6 << ", " << flags << ", "
       << model.cube_edge_pm << "u, " << model.palette.size() << ", palette_, "
       << model.normal_palette.size() << ", " << (with_normals ? "normals_" : "nullptr") << ", "
       << model.levels.size() << ", levels_,\n"

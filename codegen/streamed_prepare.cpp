@@ -21,6 +21,7 @@
 #include "codegen/point_bins.h"
 #include "codegen/prepare_error.h"
 #include "codegen/progress.h"
+#include "codegen/sample_reach.h"
 #include "codegen/scene_pruning.h"
 #include "codegen/voxelizer.h"
 
@@ -497,6 +498,7 @@ PreparedModel prepareFromSource(const PointSource& source, const std::string& pa
       file_size_signal;  // a spill past `ulimit -f`: an error, not a kill
   PreparedModel model = StreamedPreparer(source, path, options, stream).run(local);
   pruneModel(model, options, path);
+  recordSampleReaches(model);
   local.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   if (summary) *summary = local;
   return model;

@@ -41,16 +41,22 @@ void splice(std::span<const HeldRegion> regions, int level, int region_level,
 
 // Points the levels, the embedded model and its view at the streams made.
 bool finish(AssembledModel& assembled, const ChunkedHead& head) {
+  // Version 7's reaches go with the levels (an embedded model of version 6); older heads' levels
+  // are one footprint (versions 4 and 2, which end before the reach).
+  const bool reached = head.format_version == chunked::kVersion7;
   for (std::size_t i = 0; i < assembled.nodes.size(); ++i) {
     assembled.levels.push_back(
         {static_cast<std::uint8_t>(head.levels[i].depth), assembled.nodes[i].data(),
          static_cast<std::uint32_t>(assembled.nodes[i].size()), assembled.leaves[i].data(),
-         static_cast<std::uint32_t>(assembled.leaves[i].size())});
+         static_cast<std::uint32_t>(assembled.leaves[i].size()), nullptr,
+         static_cast<std::uint8_t>(reached ? head.levels[i].sample_reach : 0)});
   }
-  const bool placed = head.format_version == chunked::kVersion5;
+  const bool placed = head.format_version != chunked::kVersion3;
   assembled.embedded =
       EmbeddedModel{"chunked model",
-                    placed ? format::kVersion4 : format::kVersion2,
+                    reached  ? format::kVersion6
+                    : placed ? format::kVersion4
+                             : format::kVersion2,
                     static_cast<std::uint8_t>(head.flags & chunked::kFlagSyntheticColour),
                     head.cube_edge_pm,
                     static_cast<std::uint16_t>(head.palette_count),

@@ -20,11 +20,11 @@ bool fail(ChunkedIssue* issue, ChunkedError error, std::uint64_t offset, int lev
 }
 
 bool hasPlacement(const std::uint8_t* p) {
-  return readU16(p + off::kVersion) == chunked::kVersion5;
+  return readU16(p + off::kVersion) != chunked::kVersion3;
 }
 
 // The head size the fixed header implies: header, palette, level table, base, the cube's placement
-// (version 5), CRC.
+// (versions 5 and 7), CRC.
 std::uint64_t impliedHeadBytes(const std::uint8_t* p) {
   return chunked::kFixedHeaderBytes + 3 * std::uint64_t{readU16(p + off::kPaletteCount)} +
          chunked::kLevelRowBytes * std::uint64_t{p[off::kLevelCount]} +
@@ -49,7 +49,15 @@ bool readLevelRows(const std::uint8_t* p, ChunkedHead& head, ChunkedIssue* issue
     level.chunks_offset = readU64(row + 12);
     if (level.depth < 1 || level.depth > format::kMaxDepth)
       return fail(issue, ChunkedError::kBadDepth, row_at, j);
-    if (readU16(row + 2) != 0) return fail(issue, ChunkedError::kBadReservedField, row_at + 2, j);
+    // Version 7 gives byte 2 a meaning, the level's sample reach; earlier versions reserve it.
+    if (head.format_version == chunked::kVersion7) {
+      if (row[2] < format::kOneSampleReachQ4 || row[2] > format::kMaxSampleReachQ4)
+        return fail(issue, ChunkedError::kBadSampleReach, row_at + 2, j);
+      level.sample_reach = row[2];
+    } else if (row[2] != 0) {
+      return fail(issue, ChunkedError::kBadReservedField, row_at + 2, j);
+    }
+    if (row[3] != 0) return fail(issue, ChunkedError::kBadReservedField, row_at + 3, j);
     if (j == 0) {
       if (level.region_level != 0 || level.chunk_count != 0 || level.table_crc != 0 ||
           level.chunks_offset != 0) {
@@ -99,7 +107,8 @@ bool looksChunked(std::span<const std::uint8_t> bytes) {
   if (bytes.size() < off::kVersion + 2 || std::memcmp(bytes.data(), format::kMagic, 4) != 0)
     return false;
   const std::uint16_t version = readU16(bytes.data() + off::kVersion);
-  return version == chunked::kVersion3 || version == chunked::kVersion5;
+  return version == chunked::kVersion3 || version == chunked::kVersion5 ||
+         version == chunked::kVersion7;
 }
 
 std::optional<std::uint64_t> chunkedHeadBytes(std::span<const std::uint8_t> bytes,
@@ -261,6 +270,8 @@ const char* describe(ChunkedError error) {
       return "chunk voxels disagree with the finer level's regions";
     case ChunkedError::kBadCubePlacement:
       return "cube placement not finite, edge not above 0, or unknown scan axes";
+    case ChunkedError::kBadSampleReach:
+      return "level sample reach outside 16..128 sixteenths of a footprint";
   }
   return "unknown error";
 }

@@ -53,7 +53,13 @@ const LevelView* autoLevel(const ModelView& model, const Camera& camera) {
     depths[i] = model.level(static_cast<int>(i)).depth;
     voxels[i] = model.level(static_cast<int>(i)).leaves.size();
   }
-  const std::size_t dense = denseDepthCount(std::span(voxels).first(count));
+  // A depth the scan samples more coarsely than its voxels, but whose reach the model stores
+  // (format version 6: more than one footprint), draws whole with it: it counts as dense.
+  std::size_t dense = denseDepthCount(std::span(voxels).first(count));
+  while (dense < count && (model.sampleReach(static_cast<int>(dense)) > kOneSampleReach ||
+                           voxels[dense] >= kDenseGrowth * voxels[dense - 1])) {
+    ++dense;
+  }
   const std::optional<int> depth = autoDepth(std::span<const int>(depths.data(), dense), camera);
   return depth ? model.levelOfDepth(*depth) : nullptr;
 }

@@ -53,8 +53,10 @@ std::optional<int> autoDepth(std::span<const int> stored_depths, const Camera& c
 // finest depth). nullopt when the camera is refused at every depth.
 std::optional<int> neededDepth(const Camera& camera);
 
-// The level of `model` that autoDepth picks among its densely sampled depths; nullptr when the
-// camera is refused at every depth.
+// The level of `model` that autoDepth picks among its densely sampled depths, and the sparser
+// ones whose stored sample reach (more than one footprint, format version 6) draws them whole:
+// the leading depths each either kDenseGrowth times its coarser neighbour's voxels or so reached.
+// nullptr when the camera is refused at every depth.
 const LevelView* autoLevel(const ModelView& model, const Camera& camera);
 
 }  // namespace octopoint

@@ -14,6 +14,15 @@ using model_bytes::readI16;
 using model_bytes::readU16;
 using model_bytes::readU32;
 
+namespace {
+
+// A version 6 level's sample reach: one to eight footprints, in sixteenths.
+bool validSampleReach(std::uint8_t reach) {
+  return reach >= format::kOneSampleReachQ4 && reach <= format::kMaxSampleReachQ4;
+}
+
+}  // namespace
+
 const char* describe(ModelError error) {
   switch (error) {
     case ModelError::kNone:
@@ -58,6 +67,8 @@ const char* describe(ModelError error) {
       return "leaf normal index outside the normal palette";
     case ModelError::kBadCubePlacement:
       return "cube placement not finite, edge not above 0, or unknown scan axes";
+    case ModelError::kBadSampleReach:
+      return "level sample reach outside 16..128 sixteenths of a footprint";
   }
   return "unknown error";
 }
@@ -230,8 +241,16 @@ bool ModelView::checkLevelTable(std::span<const std::uint8_t> head, std::size_t 
   std::uint64_t data_at = table_end;
   for (int i = 0; i < view.level_count_; ++i) {
     const std::uint8_t* row = p + table_at + format::kLevelRowBytes * static_cast<std::size_t>(i);
-    if (row[1] != 0 || row[2] != 0 || row[3] != 0) {
+    // Version 6 gives byte 1 a meaning, the level's sample reach; older versions reserve it.
+    if (view.format_version_ == format::kVersion6) {
+      if (!validSampleReach(row[1]))
+        return fail(issue, ModelError::kBadSampleReach, static_cast<std::size_t>(row - p) + 1);
+    } else if (row[1] != 0) {
       return fail(issue, ModelError::kBadReservedField, static_cast<std::size_t>(row - p) + 1);
+    }
+    if (row[2] != 0 || row[3] != 0) {
+      return fail(issue, ModelError::kBadReservedField,
+                  static_cast<std::size_t>(row - p) + (row[2] != 0 ? 2 : 3));
     }
     data_at += levelDataBytes(row, view.normal_count_ > 0);
     if (data_at > image_bytes) {
@@ -256,6 +275,8 @@ bool ModelView::readLevels(std::span<const std::uint8_t> bytes, std::size_t tabl
     const std::size_t leaf_count = readU32(row + 8);
     const std::size_t normal_bytes = with_normals ? leaf_count : 0;
     LevelView& level = view.levels_[static_cast<std::size_t>(i)];
+    if (view.format_version_ == format::kVersion6)
+      view.reaches_[static_cast<std::size_t>(i)] = row[1];
     level.depth = row[0];
     level.nodes = bytes.subspan(data_at, node_bytes);
     level.leaves = bytes.subspan(data_at + node_bytes, leaf_count);
@@ -276,9 +297,9 @@ std::size_t ModelView::readHeader(std::span<const std::uint8_t> bytes, ModelView
     case format::kVersion1:
       return readHeaderV1(bytes, view, issue);
     case format::kVersion2:
-      return readHeaderV2(bytes, view, issue, false);
     case format::kVersion4:
-      return readHeaderV2(bytes, view, issue, true);
+    case format::kVersion6:
+      return readHeaderV2(bytes, view, issue, readU16(bytes.data() + 4));
     default:
       return model_bytes::refuse(issue, ModelError::kUnsupportedVersion, 4);
   }
@@ -319,7 +340,8 @@ std::optional<ModelView> ModelView::fromBytes(std::span<const std::uint8_t> byte
 }
 
 std::optional<ModelView> ModelView::fromEmbedded(const EmbeddedModel& model, ModelIssue* issue) {
-  if (model.format_version != format::kVersion2 && model.format_version != format::kVersion4) {
+  if (model.format_version != format::kVersion2 && model.format_version != format::kVersion4 &&
+      model.format_version != format::kVersion6) {
     fail(issue, ModelError::kUnsupportedVersion, 0);
     return std::nullopt;
   }
@@ -366,6 +388,14 @@ std::optional<ModelView> ModelView::fromEmbedded(const EmbeddedModel& model, Mod
       fail(issue, ModelError::kEmptyLevel, 0, source.depth);
       return std::nullopt;
     }
+    // Version 6 sources carry the reach; older ones end before it (0: one footprint).
+    if (model.format_version == format::kVersion6 ? !validSampleReach(source.sample_reach)
+                                                  : source.sample_reach != 0) {
+      fail(issue, ModelError::kBadSampleReach, 0, source.depth);
+      return std::nullopt;
+    }
+    if (model.format_version == format::kVersion6)
+      view.reaches_[static_cast<std::size_t>(i)] = source.sample_reach;
     view.levels_[static_cast<std::size_t>(i)] =
         LevelView{source.depth,
                   {source.nodes, source.node_bytes},
@@ -407,6 +437,13 @@ NormalQ14 ModelView::normal(int index) const {
     return {normal_values_[at], normal_values_[at + 1], normal_values_[at + 2]};
   const std::uint8_t* entry = normal_bytes_ + 2 * at;
   return {readI16(entry), readI16(entry + 2), readI16(entry + 4)};
+}
+
+std::int32_t ModelView::sampleReachOfDepth(int depth) const {
+  for (int i = 0; i < level_count_; ++i) {
+    if (levels_[static_cast<std::size_t>(i)].depth == depth) return sampleReach(i);
+  }
+  return format::kOneSampleReachQ4;
 }
 
 const LevelView* ModelView::levelOfDepth(int depth) const {

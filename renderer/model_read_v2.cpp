@@ -1,6 +1,7 @@
-// The header of a version 2 or 4 `.oct` file (octopoint/model.h): the validator of those versions.
-// Version 2 widens the metric size to picometres in 64 bits and may carry normals; version 4 adds
-// the cube's placement in the scan after the normal palette.
+// The header of a version 2, 4 or 6 `.oct` file (octopoint/model.h): the validator of those
+// versions' headers. Version 2 widens the metric size to picometres in 64 bits and may carry
+// normals; version 4 adds the cube's placement in the scan after the normal palette; version 6 has
+// version 4's header (its levels' sample reach is in the level table, checked in model.cpp).
 #include "octopoint/model.h"
 #include "renderer/cube_placement.h"
 #include "renderer/model_bytes.h"
@@ -12,12 +13,13 @@ using model_bytes::readU64;
 using model_bytes::refuse;
 
 std::size_t ModelView::readHeaderV2(std::span<const std::uint8_t> bytes, ModelView& view,
-                                    ModelIssue* issue, bool with_placement) {
+                                    ModelIssue* issue, std::uint16_t version) {
   namespace v2 = format::v2;
   if (bytes.size() < v2::kFixedHeaderBytes)
     return refuse(issue, ModelError::kTruncatedHeader, bytes.size());
   const std::uint8_t* p = bytes.data();
-  view.format_version_ = with_placement ? format::kVersion4 : format::kVersion2;
+  view.format_version_ = version;
+  const bool with_placement = version != format::kVersion2;
   view.level_count_ = p[6];
   if (view.level_count_ < 1 || view.level_count_ > format::kMaxLevels) {
     return refuse(issue, ModelError::kBadLevelCount, 6);

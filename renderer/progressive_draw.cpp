@@ -114,7 +114,10 @@ bool ProgressiveModel::prepareFrame(const ProgressiveTables& tables, const Camer
   frame.splat_high = {0, 0, 0};
   for (int j = 0; j <= drawn; ++j) {
     FrameSetup& full = frame.full[static_cast<std::size_t>(j)];
-    if (buildFrameSetup(camera, levelDepth(j), kDefaultFractionBits, &full) != CameraError::kNone)
+    // Each level as wide as its samples lie apart (the reach a version 7 head stores).
+    if (buildFrameSetup(camera, levelDepth(j), kDefaultFractionBits, &full,
+                        head_.levels[static_cast<std::size_t>(j)].sample_reach) !=
+        CameraError::kNone)
       return false;
     frame.splat_low.x = std::min(frame.splat_low.x, full.splat.offset_x);
     frame.splat_low.y = std::min(frame.splat_low.y, full.splat.offset_y);

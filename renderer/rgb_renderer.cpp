@@ -35,7 +35,8 @@ DrawError RgbRenderer::draw(const ModelView& model, const Camera& camera,
       options.depth == 0 ? autoLevel(model, camera) : model.levelOfDepth(options.depth);
   if (level == nullptr) return DrawError::kNoSuchDepth;
   FrameSetup setup;
-  camera_error_ = buildFrameSetup(camera, level->depth, kDefaultFractionBits, &setup);
+  camera_error_ = buildFrameSetup(camera, level->depth, kDefaultFractionBits, &setup,
+                                  model.sampleReachOfDepth(level->depth));
   if (camera_error_ != CameraError::kNone) return DrawError::kBadCamera;
   if (rgb.size() / 3 <
       static_cast<std::size_t>(camera.width) * static_cast<std::size_t>(camera.height)) {

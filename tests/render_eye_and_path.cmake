@@ -1,6 +1,7 @@
 # octopoint-render --info, --eye/--look and --path end to end (docs/perspective.md, "Using it"):
-# - --info prints the cube's placement (`cube X0,Y0,Z0 EDGE`) of a version 4 model, and says that a
-#   version 2 file (the same model with its placement cut out) has none; --eye refuses that file;
+# - --info prints the cube's placement (`cube X0,Y0,Z0 EDGE`) and each depth's sample reach of a
+#   version 6 model, and says that a version 2 file (the same model with its placement and reaches
+#   cut out) has none; --eye refuses that file; a reach byte of 0 is refused in one line;
 # - an eye at the orbit camera's position and look, as --perspective prints them, draws the very
 #   frame --perspective draws; --near is taken with them and refused alone or beyond the camera;
 # - a path's first and last frames are the --eye frames of its first and last keys; its video is
@@ -13,24 +14,41 @@ file(MAKE_DIRECTORY ${OUT})
 include(${CMAKE_CURRENT_LIST_DIR}/render_checks.cmake)  # render_ok, render_refused, same_files
 
 set(number "-?[0-9.e+-]+")
-# --info: the embedded default model and a model file, version 4.
+# --info: the embedded default model and a model file, version 6.
 foreach(source "--model;tabletop" "--file;${MODEL_FILE}")
   render_ok(info ${source} --info)
-  if(NOT info MATCHES "format version 4" OR
+  if(NOT info MATCHES "format version 6" OR
      NOT info MATCHES "\ncube ${number},${number},${number} ${number}\n" OR
-     NOT info MATCHES "depth [0-9]+: [0-9]+ leaves")
+     NOT info MATCHES "depth [0-9]+: [0-9]+ leaves, [0-9]+ node bytes, sample reach 1.00 footprints")
     message(FATAL_ERROR "--info ${source} lacks the version, the cube or the depths:\n${info}")
   endif()
 endforeach()
 
-# The same file as version 2: the 40-byte placement after the (empty) normal palette cut out.
+# The same file as version 2: the 40-byte placement after the (empty) normal palette cut out, and
+# each level table row's sample reach (its byte 1) set to 0, the reserved byte it is there.
 file(READ ${MODEL_FILE} normal_count OFFSET 18 LIMIT 2 HEX)
 if(NOT normal_count STREQUAL "0000")
   message(FATAL_ERROR "${MODEL_FILE} has normals: the placement is not at byte 788")
 endif()
+file(READ ${MODEL_FILE} level_count OFFSET 6 LIMIT 1 HEX)
+math(EXPR level_count "0x${level_count}")
+math(EXPR levels_end "829 + 12 * ${level_count}")
 execute_process(COMMAND sh -c "{ head -c 4 \"$0\"; printf '\\002\\000'; \
-                                 tail -c +7 \"$0\" | head -c 782; tail -c +829 \"$0\"; } >\"$1\""
-                        ${MODEL_FILE} ${OUT}/version2.oct RESULT_VARIABLE status)
+                                 tail -c +7 \"$0\" | head -c 782; i=0; \
+                                 while [ $i -lt $2 ]; do row=$((829 + 12 * i)); \
+                                   tail -c +$row \"$0\" | head -c 1; printf '\\000'; \
+                                   tail -c +$((row + 2)) \"$0\" | head -c 10; i=$((i + 1)); done; \
+                                 tail -c +$3 \"$0\"; } >\"$1\""
+                        ${MODEL_FILE} ${OUT}/version2.oct ${level_count} ${levels_end}
+                RESULT_VARIABLE status)
+# A version 6 file whose first level's sample reach (byte 829: its row's byte 1) is 0: refused
+# in one line naming the reach, nothing drawn.
+execute_process(COMMAND sh -c "{ head -c 829 \"$0\"; printf '\\000'; tail -c +831 \"$0\"; } >\"$1\""
+                        ${MODEL_FILE} ${OUT}/reach0.oct)
+render_refused("sample reach outside 16..128.*byte 829" --file ${OUT}/reach0.oct -o ${OUT}/reach0.png)
+if(EXISTS ${OUT}/reach0.png)
+  message(FATAL_ERROR "a refused model left ${OUT}/reach0.png")
+endif()
 render_ok(info --file ${OUT}/version2.oct --info)
 if(NOT info MATCHES "format version 2" OR NOT info MATCHES "cube placement not recorded")
   message(FATAL_ERROR "--info of a version 2 file:\n${info}")

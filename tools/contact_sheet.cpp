@@ -79,7 +79,8 @@ cv::Mat renderContactSheet(const ModelView& model, const Camera& camera, int yaw
       FrameSetup setup;
       const CameraError error =
           drawn == nullptr ? CameraError::kOverflow
-                           : buildFrameSetup(view, drawn->depth, kDefaultFractionBits, &setup);
+                           : buildFrameSetup(view, drawn->depth, kDefaultFractionBits, &setup,
+                                             model.sampleReachOfDepth(drawn->depth));
       if (error != CameraError::kNone)
         throw std::runtime_error(std::string("camera refused: ") + describe(error));
       frame.clear(styler.payload());

@@ -45,8 +45,11 @@ std::string viewInfo(const ModelView& model) {
                             : std::string("normals none\n");
   for (int i = 0; i < model.levelCount(); ++i) {
     const LevelView& level = model.level(i);
-    out += line("depth %d: %zu leaves, %zu node bytes\n", level.depth, level.leaves.size(),
-                level.nodes.size());
+    // The reach in footprints (it is stored in sixteenths: whole ones in what the preparer writes).
+    const std::int32_t reach = model.sampleReach(i);
+    out +=
+        line("depth %d: %zu leaves, %zu node bytes, sample reach %d.%02d footprints\n", level.depth,
+             level.leaves.size(), level.nodes.size(), reach / 16, reach % 16 * 100 / 16);
   }
   return out + cubeLines(model.cubeEdgePicometres(), model.cubePlacement(), model.formatVersion());
 }

@@ -32,7 +32,7 @@ std::string chunkedIssueText(const ChunkedIssue& issue) {
 }
 
 // What a model file's first bytes must hold for its declared sizes to be checked: the largest
-// version 1, 2 or 4 header with its level table (2,454 bytes), or a chunked file's fixed header.
+// version 1, 2, 4 or 6 header with its level table (2,454 bytes), or a chunked file's fixed header.
 constexpr std::size_t kModelHeadProbe = 4096;
 
 // Refuses a file whose head (read into `bytes`, whole when the head says how long it is) declares

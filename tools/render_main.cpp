@@ -407,8 +407,10 @@ void drawSmooth(Variant variant, const LevelView& level, const FrameSetup& setup
 int renderFrame(const ModelView& model, const LevelView& level, FrameStyler& styler,
                 const std::string& model_label, const Options& options) {
   FrameSetup setup;
+  // The level's splats as wide as its samples lie apart (the reach the model stores).
   const CameraError camera_error =
-      buildFrameSetup(options.camera, level.depth, kDefaultFractionBits, &setup);
+      buildFrameSetup(options.camera, level.depth, kDefaultFractionBits, &setup,
+                      model.sampleReachOfDepth(level.depth));
   if (camera_error != CameraError::kNone)
     throw cli::Error(std::string("camera refused: ") + describe(camera_error));
 

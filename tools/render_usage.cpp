@@ -124,15 +124,18 @@ nor --file nor --url it draws the default model embedded in this binary.
   -o, --output FILE  the PNG to write (written whole or not at all); if it exists it must be a
                      regular file (a device or FIFO is refused)
   --info             print what the model holds instead of drawing it: file, format version,
-                     palette, normals, leaves and node bytes per depth, the cube's edge in metres,
-                     and the line `cube X0,Y0,Z0 EDGE`: the cube's lowest corner and edge in the
+                     palette, normals, leaves, node bytes and sample reach per depth (how
+                     wide its splats are drawn, in voxel footprints: more than 1 where the scan's
+                     samples lie farther apart than the depth's voxels; every depth is drawn
+                     with it), the cube's edge in metres, and the line `cube X0,Y0,Z0 EDGE`: the cube's lowest corner and edge in the
                      scan's units and axes (the frame --crop and --eye take)
   --list             list the embedded models and the decoder variants
   -h, --help         show this help
 
 Depth auto (docs/splats.md): a voxel of depth d has an edge of e = zoom * min(W, H) / 2^d
 pixels on a WxH frame. Auto draws the coarsest stored depth with e <= 1 pixel, among the depths
-the scan samples densely; if even the finest has e > 1 pixel, the finest. Where a leaf's projected
+the scan samples densely and those the model stores a sample reach of more than one footprint
+for (--info); if even the finest has e > 1 pixel, the finest. Where a leaf's projected
 footprint (e times the rotation row's |r0|+|r1|+|r2|, up to 1.73 e when turned) is wider than a
 pixel, fixed_fast and fixed_simd cover it with a footprint splat, z-tested per pixel (the paper's
 variants set one pixel per leaf).

@@ -127,7 +127,7 @@ const CubePlacement* walkedCube() {
   if (!web::streamOpen()) {
     if (const ModelView* model = web::embeddedModel()) cube = &model->cubePlacement();
   } else if (const ProgressiveModel* chunked = web::streamModel()) {
-    if (chunked->head().format_version == chunked::kVersion5) cube = &chunked->head().cube;
+    if (chunked->head().format_version != chunked::kVersion3) cube = &chunked->head().cube;
   }
   return cube != nullptr && cube->recorded() ? cube : nullptr;
 }

@@ -118,8 +118,8 @@ enum class CameraError : std::uint8_t {
 // samples lie farther apart than its voxels draws each leaf's splat this many sixteenths (Q4) of
 // its voxel's footprint wide (sampleReach, renderer/sample_reach.h, says how many). One footprint,
 // kOneSampleReach, is the frame every level drew before; at most kMaxSampleReach (8 footprints).
-inline constexpr std::int32_t kOneSampleReach = 16;
-inline constexpr std::int32_t kMaxSampleReach = 128;
+inline constexpr std::int32_t kOneSampleReach = format::kOneSampleReachQ4;  // 16
+inline constexpr std::int32_t kMaxSampleReach = format::kMaxSampleReachQ4;  // 128
 
 const char* describe(CameraError error);
 

@@ -60,6 +60,7 @@ enum class ChunkedError : std::uint8_t {
   kChunkLeafOutsidePalette,  // a leaf names a colour past the palette count
   kChunkDisagrees,    // the chunk's voxels do not match the regions the next level's table lists
   kBadCubePlacement,  // version 5: the cube's placement is not one a file may hold
+  kBadSampleReach,    // version 7: a level's sample reach outside 16..128 (Q4 footprints)
 };
 
 // A short, stable English description, for one-line messages.
@@ -94,7 +95,8 @@ struct ChunkedIssue {
 // Fixed header:
 //   offset size field
 //   0      4    magic "OCTP"
-//   4      2    format version, 3 or 5 (5: version 3 with the cube's placement, below)
+//   4      2    format version, 3, 5 or 7 (5: version 3 with the cube's placement, below; 7:
+//                version 5 with each level's sample reach in the level table)
 //   6      1    level count L, 2..kMaxChunkedLevels
 //   7      1    flags, as in version 2: bit 1 synthetic colour (the scan had none: the palette is a
 //                depth shade); bit 0 (per-leaf normals: a normal palette after the colour palette
@@ -108,7 +110,10 @@ struct ChunkedIssue {
 //   32     4    base node bytes
 //   36     4    base leaf count
 //   40     3 P  palette, RGB888
-//   then   20 L level table: u8 depth, u8 region level, u16 reserved 0, u32 chunk count,
+//   then   20 L level table: u8 depth, u8 region level, u8 sample reach (version 7: the level's
+//                splat reach in sixteenths of a footprint, format::kOneSampleReachQ4..
+//                kMaxSampleReachQ4, as in `.oct` version 6; earlier versions: reserved 0, one
+//                footprint), u8 reserved 0, u32 chunk count,
 //                u32 CRC-32 of the level's record table, u64 file offset of the level's first
 //                chunk. Row 0 is the base: region level, chunk count, CRC and offset 0.
 //   then        base node bytes, base leaf palette indices
@@ -138,8 +143,9 @@ struct ChunkedIssue {
 namespace octopoint::chunked {
 
 inline constexpr std::uint16_t kVersion3 = 3;
-inline constexpr std::uint16_t kVersion5 = 5;               // version 3 and the cube's placement
-inline constexpr std::uint16_t kFormatVersion = kVersion5;  // what the preparer writes
+inline constexpr std::uint16_t kVersion5 = 5;  // version 3 and the cube's placement
+inline constexpr std::uint16_t kVersion7 = 7;  // version 5 and each level's sample reach
+inline constexpr std::uint16_t kFormatVersion = kVersion7;        // what the preparer writes
 inline constexpr int kMaxChunkedLevels = format::kMaxLevels + 1;  // the base and up to 8 depths
 inline constexpr int kMaxRegionLevel = 10;                        // 30-bit Morton codes
 inline constexpr std::size_t kFixedHeaderBytes = 40;
@@ -187,12 +193,15 @@ struct ChunkedLevel {
   std::uint64_t table_offset = 0;   // file offset of the level's record table
   std::uint64_t chunks_offset = 0;  // file offset of its first chunk
   std::uint64_t chunks_end = 0;  // where its chunks end: the next level's offset, or the file's end
+  // How wide its splats are drawn, in sixteenths of a footprint: stored by version 7, one
+  // footprint in versions 3 and 5.
+  std::int32_t sample_reach = format::kOneSampleReachQ4;
 };
 
 struct ChunkedHead {
-  int format_version = 0;          // chunked::kVersion3 or kVersion5
+  int format_version = 0;          // chunked::kVersion3, kVersion5 or kVersion7
   std::uint64_t cube_edge_pm = 0;  // picometres; 0: not recorded
-  CubePlacement cube{};            // version 5; not recorded in version 3
+  CubePlacement cube{};            // versions 5 and 7; not recorded in version 3
   std::uint8_t flags = 0;          // chunked::kFlagSyntheticColour or 0
   int palette_count = 0;
   std::array<std::uint8_t, 3 * format::kPaletteEntries> palette_rgb{};  // zero past the count

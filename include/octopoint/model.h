@@ -12,7 +12,12 @@
 
 // The octopoint model format: the layouts shared by the preparer that writes them, the `.oct`
 // reader and the validators (docs/format.md explains them). All integers are little-endian. The
-// preparer writes version 4; versions 1 and 2 stay readable.
+// preparer writes version 6; versions 1, 2 and 4 stay readable.
+//
+// Version 6 (kVersion6): version 4 with each level's sample reach in its level table row: byte 1
+// of the row (the first of version 4's reserved bytes) is the reach in sixteenths of a voxel
+// footprint (Q4), kOneSampleReachQ4..kMaxSampleReachQ4 (docs/splats.md, "Samples coarser than the
+// voxel"); bytes 2 and 3 stay reserved 0. Older versions read as one footprint.
 //
 // Version 4 (kVersion4): version 2 with the cube's placement (CubePlacement, below): the same
 // fields, and after the normal palette (at 788 + 6 N) format::kCubePlacementBytes bytes, then the
@@ -51,8 +56,15 @@ namespace octopoint::format {
 inline constexpr char kMagic[4] = {'O', 'C', 'T', 'P'};
 inline constexpr std::uint16_t kVersion1 = 1;
 inline constexpr std::uint16_t kVersion2 = 2;
-inline constexpr std::uint16_t kVersion4 = 4;               // version 2 and the cube's placement
-inline constexpr std::uint16_t kFormatVersion = kVersion4;  // what the preparer writes
+inline constexpr std::uint16_t kVersion4 = 4;  // version 2 and the cube's placement
+inline constexpr std::uint16_t kVersion6 = 6;  // version 4 and each level's sample reach
+inline constexpr std::uint16_t kFormatVersion = kVersion6;  // what the preparer writes
+
+// A level's sample reach (version 6's level table, octopoint/camera.h's buildFrameSetup): how wide
+// its splats are drawn, in sixteenths of a voxel footprint (Q4): one footprint (what versions 1 to
+// 4 mean) to 8 (samples 8 voxels apart). A stored 0, or more than 8 footprints, is refused.
+inline constexpr std::uint8_t kOneSampleReachQ4 = 16;
+inline constexpr std::uint8_t kMaxSampleReachQ4 = 128;
 
 inline constexpr int kMaxDepth = 16;  // 2^16 voxels per axis: far past any range scan's detail
 inline constexpr int kMaxLevels = 8;  // streams of one scan at different depths
@@ -132,13 +144,16 @@ struct EmbeddedLevel {
   const std::uint8_t* leaves;  // palette index per leaf
   std::uint32_t leaf_count;
   const std::uint8_t* normals = nullptr;  // normal index per leaf; nullptr: no normals
+  // Version 6: the level's sample reach in sixteenths of a footprint (format::kOneSampleReachQ4..
+  // kMaxSampleReachQ4); older versions end before it and leave it 0 (one footprint).
+  std::uint8_t sample_reach = 0;
 };
 
 struct EmbeddedModel {
   const char* name;
-  // The format version the generated arrays follow (format::kVersion4, or kVersion2 for sources
-  // generated before the cube's placement); a source generated for another layout fails to
-  // compile or is refused (kUnsupportedVersion).
+  // The format version the generated arrays follow (format::kVersion6; kVersion4 for sources
+  // generated before the levels' sample reach, kVersion2 before the cube's placement); a source
+  // generated for another layout fails to compile or is refused (kUnsupportedVersion).
   std::uint16_t format_version;
   std::uint8_t flags;          // format::v2::kFlag*
   std::uint64_t cube_edge_pm;  // the model cube's edge in picometres; 0: not recorded
@@ -243,6 +258,7 @@ enum class ModelError : std::uint8_t {
   kBadNormalVector,       // a normal palette entry that is not a unit vector in Q1.14
   kNormalOutsidePalette,  // a leaf names a normal past the normal palette count
   kBadCubePlacement,      // the cube's placement is not finite, its edge not above 0, or bad axes
+  kBadSampleReach,        // version 6: a level's sample reach outside 16..128 (Q4 footprints)
 };
 
 // A short, stable English description of an error, for one-line messages.
@@ -285,8 +301,8 @@ struct NormalQ14 {
 
 class ModelView {
  public:
-  // Validates a model image in the format of model_format.h (a whole `.oct` file, version 1, 2
-  // or 4).
+  // Validates a model image in the format of model_format.h (a whole `.oct` file, version 1, 2,
+  // 4 or 6).
   // The view points into `bytes`, which must outlive it.
   [[nodiscard]] static std::optional<ModelView> fromBytes(std::span<const std::uint8_t> bytes,
                                                           ModelIssue* issue);
@@ -319,6 +335,12 @@ class ModelView {
   const LevelView& level(int i) const { return levels_[static_cast<std::size_t>(i)]; }
   // The level of exactly this depth, or nullptr.
   const LevelView* levelOfDepth(int depth) const;
+  // How wide level i's splats are drawn, in sixteenths of a voxel footprint (Q4, the sample_reach
+  // of buildFrameSetup, octopoint/camera.h): stored by version 6 (format::kOneSampleReachQ4..
+  // kMaxSampleReachQ4), one footprint (16) in older models.
+  std::int32_t sampleReach(int i) const { return reaches_[static_cast<std::size_t>(i)]; }
+  // The reach of the level of exactly this depth; one footprint when the model has no such level.
+  std::int32_t sampleReachOfDepth(int depth) const;
   const LevelView& finestLevel() const { return level(level_count_ - 1); }
 
  private:
@@ -327,9 +349,9 @@ class ModelView {
   // checks its header and returns where the level table starts, or 0 after recording the issue.
   static std::size_t readHeaderV1(std::span<const std::uint8_t> bytes, ModelView& view,
                                   ModelIssue* issue);
-  // Versions 2 and 4 (`with_placement`: 4, whose placement block follows the normal palette).
+  // Versions 2, 4 and 6 (4 and 6: the placement block follows the normal palette).
   static std::size_t readHeaderV2(std::span<const std::uint8_t> bytes, ModelView& view,
-                                  ModelIssue* issue, bool with_placement);
+                                  ModelIssue* issue, std::uint16_t version);
   // Magic and version, then the header of that version: where the level table starts, or 0.
   static std::size_t readHeader(std::span<const std::uint8_t> bytes, ModelView& view,
                                 ModelIssue* issue);
@@ -349,18 +371,25 @@ class ModelView {
   // After validation: builds every level's skip index (LevelView::skip) into one allocation the
   // view shares with its copies. A bare-metal build has no heap: its levels keep no index.
   void indexSubtrees();
+  static constexpr std::array<std::uint8_t, format::kMaxLevels> oneFootprintEach() {
+    std::array<std::uint8_t, format::kMaxLevels> reaches{};
+    reaches.fill(format::kOneSampleReachQ4);
+    return reaches;
+  }
 
-  int format_version_ = 0;
   std::uint64_t cube_edge_pm_ = 0;
   CubePlacement cube_{};
   int palette_count_ = 0;
   const std::uint8_t* palette_rgb_ = nullptr;  // format::kPaletteEntries x RGB888
-  bool colour_is_synthetic_ = false;
   int normal_count_ = 0;
   const std::uint8_t* normal_bytes_ = nullptr;   // .oct: normal_count_ x 3 little-endian i16
   const std::int16_t* normal_values_ = nullptr;  // embedded: normal_count_ x 3 i16
   int level_count_ = 0;
   std::array<LevelView, format::kMaxLevels> levels_{};
+  // Small fields together, where a 32-bit device's alignment would otherwise pad each.
+  std::uint16_t format_version_ = 0;
+  bool colour_is_synthetic_ = false;
+  std::array<std::uint8_t, format::kMaxLevels> reaches_ = oneFootprintEach();
 #if !defined(OCTOPOINT_BARE_METAL)
   std::shared_ptr<const std::vector<SubtreeEnd>> skip_ends_;  // what levels_[i].skip point into
 #endif

@@ -100,15 +100,15 @@ const ::std::int16_t normals_[765] = {
 };
 
 const ::octopoint::EmbeddedLevel levels_[3] = {
-    {6, tabletop_depth6_nodes_, 2010, tabletop_depth6_leaves_, 5433, tabletop_depth6_normals_},
-    {7, tabletop_depth7_nodes_, 7443, tabletop_depth7_leaves_, 19747, tabletop_depth7_normals_},
-    {8, tabletop_depth8_nodes_, 27190, tabletop_depth8_leaves_, 62502, tabletop_depth8_normals_},
+    {6, tabletop_depth6_nodes_, 2010, tabletop_depth6_leaves_, 5433, tabletop_depth6_normals_, 16},
+    {7, tabletop_depth7_nodes_, 7443, tabletop_depth7_leaves_, 19747, tabletop_depth7_normals_, 16},
+    {8, tabletop_depth8_nodes_, 27190, tabletop_depth8_leaves_, 62502, tabletop_depth8_normals_, 16},
 };
 
 }  // namespace
 
 extern const ::octopoint::EmbeddedModel tabletop = {
-    "tabletop", 4, 1, 699998080730u, 256, palette_, 255, normals_, 3, levels_,
+    "tabletop", 6, 1, 699998080730u, 256, palette_, 255, normals_, 3, levels_,
     // where the cube lies in the scan: its lowest corner -0.34999808669090271,-0.3279433399438858,-1.1494990587234497
     // and its edge 0.69999808073043823, in the scan's units and axes
     {{0xbfd6665e60000000u, 0xbfd4fd0610000000u, 0xbff2645920000000u}, 0x3fe6666260000000u, 1},

@@ -10,8 +10,10 @@
 #include "codegen/level_voxels.h"
 #include "codegen/model_writer.h"
 #include "codegen/prepare_error.h"
+#include "octopoint/camera.h"
 #include "octopoint/models.h"
 #include "octopoint/progressive.h"
+#include "renderer/chunked_assembly.h"
 #include "tests/support/chunked_test_support.h"
 #include "tests/support/model_images.h"
 
@@ -185,7 +187,7 @@ TEST(ChunkedWriter, TheHeadCarriesTheCubesPlacement) {
   ChunkedIssue issue;
   std::optional<ChunkedHead> head = parseChunkedHead(image, &issue);
   ASSERT_TRUE(head) << describe(issue.error);
-  EXPECT_EQ(head->format_version, 5);
+  EXPECT_EQ(head->format_version, 7);
   EXPECT_EQ(head->cube, prepared.cube);
   const std::size_t placement_at = head->head_bytes - 4 - format::kCubePlacementBytes;
   EXPECT_EQ(image[placement_at + 32], format::kScanAxesYUp);
@@ -196,6 +198,58 @@ TEST(ChunkedWriter, TheHeadCarriesTheCubesPlacement) {
   EXPECT_FALSE(head);
   EXPECT_EQ(issue.error, ChunkedError::kBadCubePlacement);
   EXPECT_EQ(issue.offset, placement_at);
+}
+
+// Version 7: each level table row carries its level's sample reach (byte 2); the base's is one
+// footprint. A model assembled from the chunks keeps them (an embedded model of version 6), and a
+// reach no file may hold is refused even under a correct CRC, at its byte.
+TEST(ChunkedWriter, EachLevelRowCarriesItsSampleReach) {
+  prepare::PreparedModel prepared = fuzzing::preparedModel(*models::defaultModel(), {6, 7});
+  prepared.levels[1].sample_reach = 48;  // depth 7: three footprints
+  Bytes image = prepare::serializeChunkedModel(prepared);
+  ChunkedIssue issue;
+  std::optional<ChunkedHead> head = parseChunkedHead(image, &issue);
+  ASSERT_TRUE(head) << describe(issue.error);
+  ASSERT_EQ(head->level_count, 3);  // a coarser base: depth 6 is over the head's budget
+  EXPECT_EQ(head->levels[0].sample_reach, kOneSampleReach);
+  EXPECT_EQ(head->levels[1].depth, 6);
+  EXPECT_EQ(head->levels[1].sample_reach, kOneSampleReach);
+  EXPECT_EQ(head->levels[2].depth, 7);
+  EXPECT_EQ(head->levels[2].sample_reach, 48);
+
+  std::optional<ProgressiveModel> model = ProgressiveModel::fromHead(image, &issue);
+  ASSERT_TRUE(model) << describe(issue.error);
+  octopoint::testing::feedTables(*model, image);
+  for (const FetchItem& item : octopoint::testing::allChunkItems(*model))
+    octopoint::testing::feed(*model, image, item);
+  const std::unique_ptr<AssembledModel> assembled = assembleChunked(*model);
+  ASSERT_TRUE(assembled->view);
+  EXPECT_EQ(assembled->view->formatVersion(), format::kVersion6);
+  EXPECT_EQ(assembled->view->sampleReachOfDepth(7), 48);
+  EXPECT_EQ(assembled->view->sampleReachOfDepth(6), kOneSampleReach);
+
+  const std::size_t row_at = chunked::kFixedHeaderBytes + 3 * prepared.palette.size() +
+                             2 * chunked::kLevelRowBytes;  // depth 7's row
+  ASSERT_EQ(image[row_at], 7);
+  for (const std::uint8_t bad : {0, 15, 129}) {
+    Bytes broken = image;
+    broken[row_at + 2] = bad;
+    octopoint::testing::reseal(broken);
+    EXPECT_FALSE(parseChunkedHead(broken, &issue));
+    EXPECT_EQ(issue.error, ChunkedError::kBadSampleReach);
+    EXPECT_EQ(issue.offset, row_at + 2);
+  }
+  Bytes reserved = image;
+  reserved[row_at + 3] = 1;
+  octopoint::testing::reseal(reserved);
+  EXPECT_FALSE(parseChunkedHead(reserved, &issue));
+  EXPECT_EQ(issue.error, ChunkedError::kBadReservedField);
+  // As version 5, the same byte is reserved.
+  Bytes as_v5 = image;
+  as_v5[chunked::offset::kVersion] = 5;
+  octopoint::testing::reseal(as_v5);
+  EXPECT_FALSE(parseChunkedHead(as_v5, &issue));
+  EXPECT_EQ(issue.error, ChunkedError::kBadReservedField);
 }
 
 }  // namespace

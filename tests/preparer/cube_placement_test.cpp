@@ -62,7 +62,7 @@ TEST(CubePlacement, OctAndChunkedFilesCarryThePlacement) {
   ModelIssue issue;
   const std::optional<ModelView> view = ModelView::fromBytes(oct, &issue);
   ASSERT_TRUE(view) << describe(issue.error);
-  EXPECT_EQ(view->formatVersion(), format::kVersion4);
+  EXPECT_EQ(view->formatVersion(), format::kFormatVersion);  // 6: version 4 and the reaches
   EXPECT_EQ(view->cubePlacement(), model.cube);
 
   const std::vector<std::uint8_t> chunked = prepare::serializeChunkedModel(model);
@@ -70,7 +70,7 @@ TEST(CubePlacement, OctAndChunkedFilesCarryThePlacement) {
   const std::optional<ProgressiveModel> progressive =
       progressiveModelFromPrefix(chunked, &chunked_issue);
   ASSERT_TRUE(progressive) << describe(chunked_issue.error);
-  EXPECT_EQ(progressive->head().format_version, chunked::kVersion5);
+  EXPECT_EQ(progressive->head().format_version, chunked::kFormatVersion);  // 7
   EXPECT_EQ(progressive->head().cube, model.cube);
 }
 

@@ -50,7 +50,7 @@ TEST(GeneratedModel, EmbeddedSourcesDecodeToTheSameLeavesAsTheOctFile) {
   EXPECT_STREQ(models::synthetic_sphere.name, "synthetic_sphere");
   EXPECT_EQ(embedded->cubeEdgePicometres(), from_file->cubeEdgePicometres());
   // Where the cube lies in the scan: recorded (version 4) and the same bits both ways.
-  EXPECT_EQ(embedded->formatVersion(), format::kVersion4);
+  EXPECT_EQ(embedded->formatVersion(), format::kVersion6);
   EXPECT_TRUE(embedded->cubePlacement().recorded());
   EXPECT_EQ(embedded->cubePlacement(), from_file->cubePlacement());
   ASSERT_EQ(embedded->paletteCount(), from_file->paletteCount());
