@@ -176,11 +176,11 @@ TEST(PerspectiveFinish, EachStyleDrawsItsFixedFrame) {
   const struct {
     Style style;
     std::uint32_t crc;
-  } expected[] = {{Style::kColour, 0xc4e96c70},
-                  {Style::kShaded, 0x7642d9b7},
-                  {Style::kLines, 0x78e983b9},
-                  {Style::kToon, 0x6d63a012},
-                  {Style::kOutlined, 0x6de1db0b}};
+  } expected[] = {{Style::kColour, 0x37a4a408},
+                  {Style::kShaded, 0x8e4375e6},
+                  {Style::kLines, 0xeff3e259},
+                  {Style::kToon, 0x03a5c725},
+                  {Style::kOutlined, 0xd426a031}};
   std::vector<std::uint32_t> crcs;
   FrameStyler styler(finishModel());
   for (const auto& e : expected) {
