@@ -11,11 +11,20 @@ namespace {
 
 constexpr std::int64_t kOneQ30 = std::int64_t{1} << 30;
 
+// A box of reach r about c holds points c + d with d.z^2 <= r^2 and |d|^2 <= (9/8) r^2 (a leaf's
+// centre lies within sqrt(3) (h + depth) of its node's: h half the node's edge, and a unit of
+// rounding per level on each axis; reach = rotatedCubeReach(h) + depth, and 3 (h + depth)^2 <=
+// (9/8) reach^2 at every level of every depth up to 16: tested). The projection's error
+// f |d.z (c.x d.z - d.x c.z)| / (c.z^2 (c.z + d.z)) is then at most f (r^2 |c.x| + (9/16) r^2 c.z)
+// / (c.z^2 (c.z - r)), as |d.x d.z| <= (d.x^2 + d.z^2) / 2: the depth's term is 9/16 of
+// affineErrorBound's, which takes |d.x d.z| <= r^2. Q.30.
+constexpr std::int64_t kDepthTermQ30 = 9 * (kOneQ30 >> 4);
+
 // The largest q = r / z (Q.30, below 1) for which every box of reach r at depth z whose centre
 // has max(|c.x|, |c.y|) <= m is within `max_error` (Q(32-F).F) of its affine map, its bound
-// f * r^2 * (m + z) / (z^2 * (z - r)) being at most g(q) = f * q^2 * spread(q) / (1 - q), with
-// spread(q) (Q.30) an upper bound of (m + z) / z. g grows with q: bisection on q, every step
-// rounded up.
+// f * r^2 * (m + (9/16) z) / (z^2 * (z - r)) being at most g(q) = f * q^2 * spread(q) / (1 - q),
+// with spread(q) (Q.30) an upper bound of (m + (9/16) z) / z. g grows with q: bisection on q,
+// every step rounded up.
 template <typename Spread>
 std::int64_t largestAffineRatio(const PerspectiveView& view, const Spread& spread_of,
                                 std::int64_t max_error) {
@@ -72,6 +81,10 @@ PerspectiveWalkTables perspectiveWalkTables(const PerspectiveView& view, int dep
     // per level and the rotation's few Q30 ulp: one unit per level).
     const std::int64_t half = std::int64_t{1} << (kPerspectiveUnitBits - 1 - level);
     tables.reach[static_cast<std::size_t>(level)] = rotatedCubeReach(half) + depth;
+    // kDepthTermQ30's premise: 3 (half + depth)^2 <= (9/8) reach^2.
+    assert(24 * (half + depth) * (half + depth) <=
+           9 * tables.reach[static_cast<std::size_t>(level)] *
+               tables.reach[static_cast<std::size_t>(level)]);
   }
   // Pixels Q(32-F).F over f Q.16, to Q2.30: shifted by 30 + 16 - F. Centred (no pan) each side is
   // (width / 2) / f exactly as (width << 15) / f would give.
@@ -96,9 +109,9 @@ PerspectiveWalkTables perspectiveWalkTables(const PerspectiveView& view, int dep
   tables.slope_x_q30 = widest(tables.left_q30, tables.right_q30);
   tables.slope_y_q30 = widest(tables.top_q30, tables.bottom_q30);
   // Bucket 0: any box that meets the frustum, whose centre has |c.x| <= s * (z + r) + r for the
-  // larger side slope s (so (m + z) / z <= s * (1 + q) + q + 1). Bucket b >= 1: a centre with
-  // max(|c.x|, |c.y|) <= z / 2^(b - 1), nearer the view's axis (spread 1 + 2^(1 - b)); never a
-  // larger depth than bucket 0's, which holds for it too.
+  // larger side slope s (spread s * (1 + q) + q + 9/16). Bucket b >= 1: a centre with
+  // max(|c.x|, |c.y|) <= z / 2^(b - 1), nearer the view's axis (spread 2^(1 - b) + 9/16); never
+  // a larger depth than bucket 0's, which holds for it too.
   const std::int64_t frustum_slope = std::max(tables.slope_x_q30, tables.slope_y_q30);
   for (int bucket = 0; bucket < PerspectiveWalkTables::kAffineBuckets; ++bucket) {
     const std::int64_t ratio = bucket == 0
@@ -108,13 +121,13 @@ PerspectiveWalkTables perspectiveWalkTables(const PerspectiveView& view, int dep
                                            const std::optional<std::int64_t> sides =
                                                mulShiftRound(frustum_slope, kOneQ30 + q, 30);
                                            if (!sides) return std::nullopt;
-                                           return *sides + q + kOneQ30 + 1;
+                                           return *sides + q + kDepthTermQ30 + 1;
                                          },
                                          max_error)
                                    : largestAffineRatio(
                                          view,
                                          [&](std::int64_t) -> std::optional<std::int64_t> {
-                                           return kOneQ30 + (kOneQ30 >> (bucket - 1));
+                                           return kDepthTermQ30 + (kOneQ30 >> (bucket - 1));
                                          },
                                          max_error);
     auto& affine_depth = tables.affine_depth[static_cast<std::size_t>(bucket)];

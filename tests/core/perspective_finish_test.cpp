@@ -176,11 +176,11 @@ TEST(PerspectiveFinish, EachStyleDrawsItsFixedFrame) {
   const struct {
     Style style;
     std::uint32_t crc;
-  } expected[] = {{Style::kColour, 0x37a4a408},
-                  {Style::kShaded, 0x8e4375e6},
-                  {Style::kLines, 0xeff3e259},
-                  {Style::kToon, 0x03a5c725},
-                  {Style::kOutlined, 0xd426a031}};
+  } expected[] = {{Style::kColour, 0x05626303},
+                  {Style::kShaded, 0x685adad0},
+                  {Style::kLines, 0xb1b14287},
+                  {Style::kToon, 0x52be46b4},
+                  {Style::kOutlined, 0xf36e59d9}};
   std::vector<std::uint32_t> crcs;
   FrameStyler styler(finishModel());
   for (const auto& e : expected) {
