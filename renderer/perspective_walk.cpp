@@ -11,6 +11,22 @@ namespace {
 
 constexpr std::int64_t kOneQ30 = std::int64_t{1} << 30;
 
+// divShiftRound(numerator, denominator, shift), the same bits, by one division (the hardware's;
+// on a Cortex-M longDivide: no helper) where numerator * 2^shift fits 63 bits, both are positive:
+// the tables run several bisections a frame and depth (and a scene's per instance), and
+// divShiftRound's loop of one quotient bit per step was most of their cost.
+std::optional<std::int64_t> divShiftRoundQuick(std::int64_t numerator, std::int64_t denominator,
+                                               int shift) {
+  if (numerator < 0 || denominator <= 0 || numerator >= (std::int64_t{1} << (62 - shift))) {
+    return divShiftRound(numerator, denominator, shift);
+  }
+  const auto d = static_cast<std::uint64_t>(denominator);
+  const UnsignedDivision division =
+      divideUnsigned(static_cast<std::uint64_t>(numerator) << shift, d);
+  // Ties toward +infinity, as divShiftRound rounds a positive quotient.
+  return static_cast<std::int64_t>(division.quotient + (2 * division.remainder >= d ? 1 : 0));
+}
+
 // A box of reach r about c holds points c + d with d.z^2 <= r^2 and |d|^2 <= (9/8) r^2 (a leaf's
 // centre lies within sqrt(3) (h + depth) of its node's: h half the node's edge, and a unit of
 // rounding per level on each axis; reach = rotatedCubeReach(h) + depth, and 3 (h + depth)^2 <=
@@ -24,7 +40,7 @@ constexpr std::int64_t kDepthTermQ30 = 9 * (kOneQ30 >> 4);
 // has max(|c.x|, |c.y|) <= m is within `max_error` (Q(32-F).F) of its affine map, its bound
 // f * r^2 * (m + (9/16) z) / (z^2 * (z - r)) being at most g(q) = f * q^2 * spread(q) / (1 - q),
 // with spread(q) (Q.30) an upper bound of (m + (9/16) z) / z. g grows with q: bisection on q,
-// every step rounded up.
+// every step rounded up (by the quick products and division: the same bits, a few times faster).
 template <typename Spread>
 std::int64_t largestAffineRatio(const PerspectiveView& view, const Spread& spread_of,
                                 std::int64_t max_error) {
@@ -33,13 +49,13 @@ std::int64_t largestAffineRatio(const PerspectiveView& view, const Spread& sprea
   const auto within = [&](std::int64_t q) {
     const std::optional<std::int64_t> spread = spread_of(q);
     if (!spread) return false;
-    const std::optional<std::int64_t> q2 = mulShiftRound(q, q, 30);
+    const std::optional<std::int64_t> q2 = mulShiftRoundQuick(q, q, 30);
     if (!q2) return false;
-    const std::optional<std::int64_t> a = mulShiftRound(view.focal_q16, *q2 + 1, 30);
+    const std::optional<std::int64_t> a = mulShiftRoundQuick(view.focal_q16, *q2 + 1, 30);
     if (!a) return false;
-    const std::optional<std::int64_t> b = mulShiftRound(*a + 1, *spread, 30);
+    const std::optional<std::int64_t> b = mulShiftRoundQuick(*a + 1, *spread, 30);
     if (!b) return false;
-    const std::optional<std::int64_t> g = divShiftRound(*b + 1, kOneQ30 - q, 30);
+    const std::optional<std::int64_t> g = divShiftRoundQuick(*b + 1, kOneQ30 - q, 30);
     return g && *g + 1 <= limit_q16;
   };
   std::int64_t low = 0, high = kOneQ30 - 1;  // within(low) holds (g(0) = 0 <= limit)
@@ -119,7 +135,7 @@ PerspectiveWalkTables perspectiveWalkTables(const PerspectiveView& view, int dep
                                          view,
                                          [&](std::int64_t q) -> std::optional<std::int64_t> {
                                            const std::optional<std::int64_t> sides =
-                                               mulShiftRound(frustum_slope, kOneQ30 + q, 30);
+                                               mulShiftRoundQuick(frustum_slope, kOneQ30 + q, 30);
                                            if (!sides) return std::nullopt;
                                            return *sides + q + kDepthTermQ30 + 1;
                                          },
@@ -137,15 +153,16 @@ PerspectiveWalkTables perspectiveWalkTables(const PerspectiveView& view, int dep
       const std::int64_t reach = tables.reach[l];
       // z >= r / q, rounded up; no depth at all when even the smallest ratio fails.
       std::int64_t depth_needed =
-          ratio == 0 ? INT64_MAX : divShiftRound(reach, ratio, 30).value_or(INT64_MAX - 1) + 1;
+          ratio == 0 ? INT64_MAX : divShiftRoundQuick(reach, ratio, 30).value_or(INT64_MAX - 1) + 1;
       if (bucket > 0) depth_needed = std::min(depth_needed, tables.affine_depth[0][l]);
       affine_depth[l] = depth_needed;
       // z / (z - reach) falls as z grows: at most its value at the least depth drawn so, rounded
       // up (1 where no depth the eye can see is that far: no subtree of the level is drawn so).
-      growth_q16[l] =
-          depth_needed >= (INT64_MAX >> 17) || depth_needed <= reach
-              ? std::int64_t{1} << 16
-              : divShiftRound(depth_needed, depth_needed - reach, 16).value_or(INT64_MAX >> 24) + 1;
+      growth_q16[l] = depth_needed >= (INT64_MAX >> 17) || depth_needed <= reach
+                          ? std::int64_t{1} << 16
+                          : divShiftRoundQuick(depth_needed, depth_needed - reach, 16)
+                                    .value_or(INT64_MAX >> 24) +
+                                1;
     }
   }
   return tables;
