@@ -12,12 +12,6 @@
 namespace octopoint {
 namespace {
 
-constexpr int kLabelHeight = 18;  // pixels above each row for its label
-
-void putLabel(cv::Mat& image, const std::string& text, cv::Point at) {
-  cv::putText(image, text, at, cv::FONT_HERSHEY_SIMPLEX, 0.45, {40, 40, 40}, 1, cv::LINE_AA);
-}
-
 struct SheetRow {
   const LevelView* level;  // nullptr: depth auto, per view
   bool fill;
@@ -47,15 +41,20 @@ std::string label(const SheetRow& row) {
 
 }  // namespace
 
+void putSheetLabel(cv::Mat& sheet, const std::string& text, int top) {
+  cv::putText(sheet, text, {4, top + kSheetLabelHeight - 5}, cv::FONT_HERSHEY_SIMPLEX, 0.45,
+              {40, 40, 40}, 1, cv::LINE_AA);
+}
+
 std::int64_t contactSheetPixels(const ModelView& model, const Camera& camera, int yaw_count) {
   const auto rows = static_cast<std::int64_t>(sheetRows(model, Style::kColour).size());
-  return rows * (camera.height + kLabelHeight) * yaw_count * std::int64_t{camera.width};
+  return rows * (camera.height + kSheetLabelHeight) * yaw_count * std::int64_t{camera.width};
 }
 
 cv::Mat renderContactSheet(const ModelView& model, const Camera& camera, int yaw_count,
                            Variant variant, const StyleOptions& style) {
   const std::vector<SheetRow> rows = sheetRows(model, style.style);
-  const int row_height = camera.height + kLabelHeight;
+  const int row_height = camera.height + kSheetLabelHeight;
   const Rgb background = style.background;
   cv::Mat sheet(static_cast<int>(rows.size()) * row_height, yaw_count * camera.width, CV_8UC3,
                 cv::Scalar(background.b, background.g, background.r));
@@ -71,7 +70,7 @@ cv::Mat renderContactSheet(const ModelView& model, const Camera& camera, int yaw
       throw std::runtime_error(describe(error));
     }
     const int top = static_cast<int>(r) * row_height;
-    putLabel(sheet, label(row), {4, top + kLabelHeight - 5});
+    putSheetLabel(sheet, label(row), top);
     for (int column = 0; column < yaw_count; ++column) {
       Camera view = camera;
       view.yaw =
@@ -96,8 +95,8 @@ cv::Mat renderContactSheet(const ModelView& model, const Camera& camera, int yaw
         throw std::runtime_error(std::string("style refused: ") + describe(style_error));
       }
       cv::cvtColor(rgb, bgr, cv::COLOR_RGB2BGR);
-      bgr.copyTo(
-          sheet(cv::Rect(column * camera.width, top + kLabelHeight, camera.width, camera.height)));
+      bgr.copyTo(sheet(
+          cv::Rect(column * camera.width, top + kSheetLabelHeight, camera.width, camera.height)));
     }
   }
   return sheet;

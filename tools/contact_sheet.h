@@ -6,6 +6,7 @@
 
 #include <cstdint>
 #include <opencv2/core.hpp>
+#include <string>
 
 #include "octopoint/camera.h"
 #include "octopoint/model.h"
@@ -13,6 +14,10 @@
 #include "octopoint/styles.h"
 
 namespace octopoint {
+
+// Pixels above each row of a sheet for its label, and the label written there (its row's top).
+inline constexpr int kSheetLabelHeight = 18;
+void putSheetLabel(cv::Mat& sheet, const std::string& text, int top);
 
 // The sheet's size in pixels (cells and labels), to check before drawing it.
 std::int64_t contactSheetPixels(const ModelView& model, const Camera& camera, int yaw_count);

@@ -16,6 +16,7 @@
 #include "renderer/perspective_depth.h"
 #include "renderer/perspective_renderer.h"
 #include "tools/camera_path.h"
+#include "tools/perspective_sheet.h"
 #include "tools/png_file.h"
 
 namespace octopoint {
@@ -118,10 +119,25 @@ std::string depthText(const PerspectiveJob& job, const PerspectiveDrawStats& sta
          ", " + std::to_string(stats.leaves) + " points drawn" + budget;
 }
 
+// The camera of --eye, looking `look`.
+PerspectiveView eyeView(const PerspectiveOptions& options, const PerspectiveJob& job,
+                        const Look& look) {
+  return scanEyeView(requireCube(job, "--eye"), *options.eye, look,
+                     options.fov.value_or(Angle::fromDegrees(kDefaultFieldOfViewDegrees)),
+                     modelNearPlane(*job.model, options.near, "--near"), job.camera.width,
+                     job.camera.height, "--eye");
+}
+
+// The camera of --perspective, the orbit camera `camera` seen in perspective.
+PerspectiveView orbitView(const PerspectiveOptions& options, const PerspectiveJob& job,
+                          const Camera& camera) {
+  return orbitPerspectiveView(camera,
+                              options.fov.value_or(Angle::fromDegrees(kDefaultFieldOfViewDegrees)),
+                              modelNearPlane(*job.model, options.near, "--near"));
+}
+
 void drawOrbit(const PerspectiveOptions& options, const PerspectiveJob& job) {
-  const PerspectiveView view = orbitPerspectiveView(
-      job.camera, options.fov.value_or(Angle::fromDegrees(kDefaultFieldOfViewDegrees)),
-      modelNearPlane(*job.model, options.near, "--near"));
+  const PerspectiveView view = orbitView(options, job, job.camera);
   cli::checkOutputFile(job.output);
   PerspectiveDrawStats stats;
   std::uint32_t pixels_q8 = kOnePixelQ8;
@@ -138,13 +154,8 @@ void drawOrbit(const PerspectiveOptions& options, const PerspectiveJob& job) {
 }
 
 void drawEye(const PerspectiveOptions& options, const PerspectiveJob& job) {
-  const ScanCube cube = requireCube(job, "--eye");
   const Look look = options.look.value_or(Look{});
-  const PerspectiveView view =
-      scanEyeView(cube, *options.eye, look,
-                  options.fov.value_or(Angle::fromDegrees(kDefaultFieldOfViewDegrees)),
-                  modelNearPlane(*job.model, options.near, "--near"), job.camera.width,
-                  job.camera.height, "--eye");
+  const PerspectiveView view = eyeView(options, job, look);
   cli::checkOutputFile(job.output);
   PerspectiveDrawStats stats;
   std::uint32_t pixels_q8 = kOnePixelQ8;
@@ -228,23 +239,15 @@ void collidePoses(const ModelView& model, const ScanCube& cube, const Perspectiv
   std::printf("%s\n", collisionSummary(cube, body, collided.stopped, poses.size()).c_str());
 }
 
-void drawPath(const PerspectiveOptions& options, const PerspectiveJob& job) {
+// The cameras of `frames` evenly spaced times along `path` (with --collide, walked with collision).
+std::vector<PerspectiveView> pathViews(const PerspectiveOptions& options, const PerspectiveJob& job,
+                                       const CameraPath& path, int frames) {
   const ScanCube cube = requireCube(job, "--path");
-  const CameraPath path = loadCameraPath(options.path);
-  const std::int64_t pixels = std::int64_t{options.frames} * job.camera.width * job.camera.height;
-  if (pixels > kMaxPathPixels) {
-    throw cli::Error("--frames " + std::to_string(options.frames) + " at --size " +
-                     std::to_string(job.camera.width) + "x" + std::to_string(job.camera.height) +
-                     " makes " + std::to_string(pixels) + " pixels of PNGs, at most " +
-                     std::to_string(kMaxPathPixels) + ": give fewer frames or a smaller --size");
-  }
   const Angle fov = options.fov        ? *options.fov
                     : path.fov_degrees ? degreesToAngle(*path.fov_degrees)
                                        : Angle::fromDegrees(kDefaultFieldOfViewDegrees);
-  // Every frame's camera first: a path that leaves what the camera holds is refused before any
-  // file is written.
   std::vector<PerspectiveView> views;
-  std::vector<PathPose> poses = samplePath(path, options.frames);
+  std::vector<PathPose> poses = samplePath(path, frames);
   if (options.collision.collide) collidePoses(*job.model, cube, options, poses);
   const std::int64_t near = modelNearPlane(*job.model, options.near, "--near");
   for (std::size_t i = 0; i < poses.size(); ++i) {
@@ -253,6 +256,21 @@ void drawPath(const PerspectiveOptions& options, const PerspectiveJob& job) {
         "--path " + cli::displayPath(options.path) + ": frame " + std::to_string(i) + " (eye " +
             scanPointText(poses[i].eye) + ")"));
   }
+  return views;
+}
+
+void drawPath(const PerspectiveOptions& options, const PerspectiveJob& job) {
+  const CameraPath path = loadCameraPath(options.path);
+  const std::int64_t pixels = std::int64_t{options.frames} * job.camera.width * job.camera.height;
+  if (pixels > kMaxPathPixels) {
+    throw cli::Error("--frames " + std::to_string(options.frames) + " at --size " +
+                     std::to_string(job.camera.width) + "x" + std::to_string(job.camera.height) +
+                     " makes " + std::to_string(pixels) + " pixels of PNGs, at most " +
+                     std::to_string(kMaxPathPixels) + ": give fewer frames or a smaller --size");
+  }
+  // Every frame's camera first: a path that leaves what the camera holds is refused before any
+  // file is written.
+  const std::vector<PerspectiveView> views = pathViews(options, job, path, options.frames);
   std::string prefix = job.output;
   if (prefix.size() > 4 && prefix.ends_with(".png")) prefix.resize(prefix.size() - 4);
   PathOutput output(prefix);
@@ -313,8 +331,10 @@ void checkPerspectiveOptions(const PerspectiveOptions& options, const OtherOptio
   if (options.frames > 0 && options.path.empty()) throw cli::Error("--frames needs --path");
   if (options.near && !options.any())
     throw cli::Error("--near needs --perspective, --eye or --path");
-  if (!options.path.empty() && options.frames == 0)
-    throw cli::Error("--path needs --frames N (1.." + std::to_string(kMaxPathFrames) + ")");
+  if (!options.path.empty() && options.frames == 0 && !other.sheet) {
+    throw cli::Error("--path needs --frames N (1.." + std::to_string(kMaxPathFrames) +
+                     ") or --sheet N");
+  }
   if (options.collision.any() && !options.collision.collide)
     throw cli::Error("--eye-radius and --eye-height need --collide");
   if (options.collision.collide && options.path.empty()) throw cli::Error("--collide needs --path");
@@ -324,9 +344,8 @@ void checkPerspectiveOptions(const PerspectiveOptions& options, const OtherOptio
                      " places the eye in the scan: --yaw, --pitch, --roll, --zoom and --pan do "
                      "not apply (turn it with --look or the path's keys)");
   }
-  if (other.sheet) {
-    throw cli::Error(std::string(options.mode()) + ": --sheet does not apply yet");
-  }
+  if (other.sheet && options.frames > 0)
+    throw cli::Error("--sheet N draws N frames of the path: --frames does not apply");
 }
 
 PerspectiveView orbitPerspectiveView(const Camera& camera, Angle fov, std::int64_t near) {
@@ -413,8 +432,34 @@ cv::Mat renderPerspectiveParts(const HeldParts& parts, int depth, const Perspect
   return frameToBgr(frame, *parts.parts.front()->view, view, background, {});
 }
 
+cv::Mat renderPerspectiveView(const PerspectiveJob& job, const PerspectiveView& view,
+                              PerspectiveDrawStats* stats) {
+  return renderView(job, view, stats);
+}
+
+std::vector<PerspectiveView> sheetViews(const PerspectiveOptions& options,
+                                        const PerspectiveJob& job, int count) {
+  if (!options.path.empty()) return pathViews(options, job, loadCameraPath(options.path), count);
+  std::vector<PerspectiveView> views;
+  for (int column = 0; column < count; ++column) {
+    const Angle turn = Angle::fromTurns16(std::int64_t{column} * Angle::kUnitsPerTurn / count);
+    if (options.orbit) {
+      Camera camera = job.camera;
+      camera.yaw = camera.yaw + turn;
+      views.push_back(orbitView(options, job, camera));
+    } else {
+      Look look = options.look.value_or(Look{});
+      look.yaw = look.yaw + turn;
+      views.push_back(eyeView(options, job, look));
+    }
+  }
+  return views;
+}
+
 void runPerspective(const PerspectiveOptions& options, const PerspectiveJob& job) {
-  if (options.orbit) {
+  if (job.sheet > 0) {
+    drawPerspectiveSheet(job, sheetViews(options, job, job.sheet));
+  } else if (options.orbit) {
     drawOrbit(options, job);
   } else if (options.eye) {
     drawEye(options, job);

@@ -8,6 +8,7 @@
 #include <opencv2/core.hpp>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "cli/arguments.h"
 #include "octopoint/camera.h"
@@ -91,6 +92,8 @@ struct PerspectiveJob {
   // coarsest when none does): coarser where voxels are smallest on screen, the far parts first.
   std::uint64_t point_budget = 0;
   PerspectiveFinish finish;  // --fill, --style
+  // --sheet N (0: none): a contact sheet of N views instead (tools/perspective_sheet.h).
+  int sheet = 0;
 };
 
 // Draws `parts` with `view` on `background` as renderPerspective draws one model: the parts one
@@ -100,6 +103,15 @@ cv::Mat renderPerspectiveParts(const HeldParts& parts, int depth, const Perspect
                                Rgb background, PerspectiveDrawStats* stats = nullptr,
                                std::uint32_t pixels_q8 = kOnePixelQ8,
                                const PerspectiveFinish& finish = {});
+
+// The frame of `view` as the job draws it (its parts, point budget, fill and style), as BGR.
+cv::Mat renderPerspectiveView(const PerspectiveJob& job, const PerspectiveView& view,
+                              PerspectiveDrawStats* stats = nullptr);
+
+// The columns of a contact sheet of `count` views: --perspective turns the orbit camera's yaw and
+// --eye the look's yaw by a turn / count a column; --path takes `count` evenly spaced frames.
+std::vector<PerspectiveView> sheetViews(const PerspectiveOptions& options,
+                                        const PerspectiveJob& job, int count);
 
 // Draws and writes what `options` asks for, prints one line saying what; cli::Error, one line,
 // leaving no file, when it cannot.

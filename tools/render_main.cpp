@@ -76,10 +76,6 @@ Light parseLight(std::string_view option, std::string_view text) {
   return light;
 }
 
-// Every image this tool writes has at most this many pixels (a frame: 64 MiB of framebuffer,
-// 48 MiB of RGB), whatever its shape; a contact sheet's cells and labels count together.
-constexpr std::int64_t kMaxOutputPixels = std::int64_t{4096} * 4096;
-
 // The view options (--yaw, --pitch, --roll, --zoom, --pan, --size): false when `args` holds
 // another option.
 bool parseViewOption(cli::ArgumentReader& args, Camera& camera) {
@@ -288,7 +284,8 @@ int renderUrlPerspective(const Options& options) {
                      kBackground,
                      {},
                      0,
-                     {options.fill, nullptr}};
+                     {options.fill, nullptr},
+                     options.sheet};
   job.parts = [&source](const PerspectiveView& view) -> const HeldParts& {
     return source.follow(view);
   };
@@ -455,7 +452,8 @@ int renderPerspectiveViews(const ModelView& model, const LevelView& level,
                      kBackground,
                      {},
                      0,
-                     {options.fill, styler}};
+                     {options.fill, styler},
+                     options.sheet};
   job.point_budget = options.fetch.point_budget;
   runPerspective(options.perspective, job);
   return 0;
@@ -484,7 +482,8 @@ int renderChunkedPerspective(const Options& options, const LoadedModel& loaded) 
                      kBackground,
                      {},
                      0,
-                     {options.fill, nullptr}};
+                     {options.fill, nullptr},
+                     options.sheet};
   if (!options.depth)
     job.parts = [&parts](const PerspectiveView&) -> const HeldParts& { return parts; };
   job.point_budget = options.fetch.point_budget;

@@ -40,8 +40,8 @@ nor --file nor --url it draws the default model embedded in this binary.
   --pan X,Y          move the picture X pixels right and Y down, each |.| <= 1e6 (default 0,0)
   --perspective      draw in perspective: the eye on the line of sight through the model's centre,
                      where the centre's depth is as large on screen as in the orthographic view
-                     of the same zoom (so a narrow --fov converges to it); --fill and --style
-                     apply, --sheet not yet (docs/perspective.md). A chunked file is
+                     of the same zoom (so a narrow --fov converges to it); --fill, --style and
+                     --sheet apply (docs/perspective.md). A chunked file is
                      the same frame as the one-file model of its depths; with --url the stream
                      follows the perspective view (nearest and largest on screen first, each
                      region only as fine as its distance asks) and each region is drawn at the
@@ -49,7 +49,7 @@ nor --file nor --url it draws the default model embedded in this binary.
   --eye X,Y,Z        draw in perspective from an eye at X,Y,Z in the scan's own units and axes
                      (the frame octopoint-prepare --crop takes; --info prints where the model's
                      cube lies in it); anywhere within 128 cube edges of the cube's centre, inside
-                     the model too. --fill and --style apply, --sheet not yet; needs a model
+                     the model too. --fill, --style and --sheet apply; needs a model
                      that records its cube's placement (prepared since format version 4)
   --look YAW,PITCH[,ROLL]
                      with --eye: where the eye looks, in degrees (default 0,0: the way the sensor
@@ -117,7 +117,10 @@ nor --file nor --url it draws the default model embedded in this binary.
   --sheet N          a contact sheet instead: N yaw angles (1..36) in columns; rows: depth auto,
                      then each depth of the model unfilled and filled, in --style; then, for a
                      model with normals, depth auto in each other style; the whole sheet may
-                     have at most 16777216 pixels
+                     have at most 16777216 pixels. In perspective: --perspective turns the
+                     orbit's yaw, --eye the look's yaw by a turn / N a column, --path takes N
+                     evenly spaced frames of the path (instead of --frames); rows: depth by
+                     distance, then each stored depth everywhere, filled and styled as asked
   -o, --output FILE  the PNG to write (written whole or not at all); if it exists it must be a
                      regular file (a device or FIFO is refused)
   --info             print what the model holds instead of drawing it: file, format version,
