@@ -9,7 +9,8 @@
 // per point, and for the table's edge the subtrees culled and the points per covered pixel.
 // Against the perspective PCL/Eigen peer (bench/pcl_perspective_peer.h), at the table's edge: the
 // finest depth's leaves (62,502) drawn by ours at that depth and by distance, and by the peer in
-// float and in double; ns_per_leaf divides every frame by those same leaves.
+// float and in double; ns_per_leaf divides every frame by those same leaves. And the walk's tables
+// of one depth for that view (walk_tables), which every frame makes per stored depth.
 #include <benchmark/benchmark.h>
 
 #include <chrono>
@@ -163,6 +164,23 @@ void tableEdgePeer(benchmark::State& state, int width, int height) {
   state.counters["covered_pixels"] = covered;
 }
 
+// The walk's tables of one depth (perspectiveWalkTables: its thresholds' bisections), made once
+// per frame and stored depth, and by a scene per instance in view and depth.
+void walkTables(benchmark::State& state, int width, int height) {
+  PerspectiveView view;
+  if (buildPerspectiveView(tableEdgeCamera(width, height), kDefaultFractionBits, &view) !=
+      PerspectiveError::kNone) {
+    state.SkipWithError("camera refused");
+    return;
+  }
+  const int depth = model().finestLevel().depth;
+  for (auto _ : state) {
+    PerspectiveWalkTables tables =
+        perspectiveWalkTables(view, depth, std::int64_t{1} << (kDefaultFractionBits - 2));
+    benchmark::DoNotOptimize(tables);
+  }
+}
+
 }  // namespace
 
 void registerAll() {
@@ -187,6 +205,8 @@ void registerAll() {
           ->UseManualTime()
           ->Unit(benchmark::kMicrosecond);
     }
+    benchmark::RegisterBenchmark(("perspective/table_edge/" + size + "/walk_tables").c_str(),
+                                 walkTables, width, height);
     const std::string peer = "perspective/table_edge/" + size + "/peer/";
     const int finest = model().finestLevel().depth;
     for (const auto& [name, depth] :

@@ -11,26 +11,51 @@ namespace {
 
 constexpr std::int64_t kOneQ30 = std::int64_t{1} << 30;
 
-// The largest q = r / z (Q.30, below 1) for which every box of reach r at depth z that meets the
-// frustum is within `max_error` (Q(32-F).F) of its affine map. Such a box's centre has
-// |c.x| <= s * (z + r) + r with s the larger side slope, so its bound f * r^2 * (m + z) /
-// (z^2 * (z - r)) is at most g(q) = f * q^2 * (s * (1 + q) + q + 1) / (1 - q), which grows with q:
-// bisection on q, every step rounded up.
-std::int64_t largestAffineRatio(const PerspectiveView& view, std::int64_t slope_q30,
+// divShiftRound(numerator, denominator, shift), the same bits, by one division (the hardware's;
+// on a Cortex-M longDivide: no helper) where numerator * 2^shift fits 63 bits, both are positive:
+// the tables run several bisections a frame and depth (and a scene's per instance), and
+// divShiftRound's loop of one quotient bit per step was most of their cost.
+std::optional<std::int64_t> divShiftRoundQuick(std::int64_t numerator, std::int64_t denominator,
+                                               int shift) {
+  if (numerator < 0 || denominator <= 0 || numerator >= (std::int64_t{1} << (62 - shift))) {
+    return divShiftRound(numerator, denominator, shift);
+  }
+  const auto d = static_cast<std::uint64_t>(denominator);
+  const UnsignedDivision division =
+      divideUnsigned(static_cast<std::uint64_t>(numerator) << shift, d);
+  // Ties toward +infinity, as divShiftRound rounds a positive quotient.
+  return static_cast<std::int64_t>(division.quotient + (2 * division.remainder >= d ? 1 : 0));
+}
+
+// A box of reach r about c holds points c + d with d.z^2 <= r^2 and |d|^2 <= (9/8) r^2 (a leaf's
+// centre lies within sqrt(3) (h + depth) of its node's: h half the node's edge, and a unit of
+// rounding per level on each axis; reach = rotatedCubeReach(h) + depth, and 3 (h + depth)^2 <=
+// (9/8) reach^2 at every level of every depth up to 16: tested). The projection's error
+// f |d.z (c.x d.z - d.x c.z)| / (c.z^2 (c.z + d.z)) is then at most f (r^2 |c.x| + (9/16) r^2 c.z)
+// / (c.z^2 (c.z - r)), as |d.x d.z| <= (d.x^2 + d.z^2) / 2: the depth's term is 9/16 of
+// affineErrorBound's, which takes |d.x d.z| <= r^2. Q.30.
+constexpr std::int64_t kDepthTermQ30 = 9 * (kOneQ30 >> 4);
+
+// The largest q = r / z (Q.30, below 1) for which every box of reach r at depth z whose centre
+// has max(|c.x|, |c.y|) <= m is within `max_error` (Q(32-F).F) of its affine map, its bound
+// f * r^2 * (m + (9/16) z) / (z^2 * (z - r)) being at most g(q) = f * q^2 * spread(q) / (1 - q),
+// with spread(q) (Q.30) an upper bound of (m + (9/16) z) / z. g grows with q: bisection on q,
+// every step rounded up (by the quick products and division: the same bits, a few times faster).
+template <typename Spread>
+std::int64_t largestAffineRatio(const PerspectiveView& view, const Spread& spread_of,
                                 std::int64_t max_error) {
   const int f = view.fraction_bits;
   const std::int64_t limit_q16 = f >= 16 ? max_error >> (f - 16) : max_error << (16 - f);
   const auto within = [&](std::int64_t q) {
-    const std::optional<std::int64_t> sides = mulShiftRound(slope_q30, kOneQ30 + q, 30);
-    if (!sides) return false;
-    const std::int64_t spread = *sides + q + kOneQ30 + 1;  // Q.30
-    const std::optional<std::int64_t> q2 = mulShiftRound(q, q, 30);
+    const std::optional<std::int64_t> spread = spread_of(q);
+    if (!spread) return false;
+    const std::optional<std::int64_t> q2 = mulShiftRoundQuick(q, q, 30);
     if (!q2) return false;
-    const std::optional<std::int64_t> a = mulShiftRound(view.focal_q16, *q2 + 1, 30);
+    const std::optional<std::int64_t> a = mulShiftRoundQuick(view.focal_q16, *q2 + 1, 30);
     if (!a) return false;
-    const std::optional<std::int64_t> b = mulShiftRound(*a + 1, spread, 30);
+    const std::optional<std::int64_t> b = mulShiftRoundQuick(*a + 1, *spread, 30);
     if (!b) return false;
-    const std::optional<std::int64_t> g = divShiftRound(*b + 1, kOneQ30 - q, 30);
+    const std::optional<std::int64_t> g = divShiftRoundQuick(*b + 1, kOneQ30 - q, 30);
     return g && *g + 1 <= limit_q16;
   };
   std::int64_t low = 0, high = kOneQ30 - 1;  // within(low) holds (g(0) = 0 <= limit)
@@ -72,6 +97,10 @@ PerspectiveWalkTables perspectiveWalkTables(const PerspectiveView& view, int dep
     // per level and the rotation's few Q30 ulp: one unit per level).
     const std::int64_t half = std::int64_t{1} << (kPerspectiveUnitBits - 1 - level);
     tables.reach[static_cast<std::size_t>(level)] = rotatedCubeReach(half) + depth;
+    // kDepthTermQ30's premise: 3 (half + depth)^2 <= (9/8) reach^2.
+    assert(24 * (half + depth) * (half + depth) <=
+           9 * tables.reach[static_cast<std::size_t>(level)] *
+               tables.reach[static_cast<std::size_t>(level)]);
   }
   // Pixels Q(32-F).F over f Q.16, to Q2.30: shifted by 30 + 16 - F. Centred (no pan) each side is
   // (width / 2) / f exactly as (width << 15) / f would give.
@@ -95,20 +124,46 @@ PerspectiveWalkTables perspectiveWalkTables(const PerspectiveView& view, int dep
   };
   tables.slope_x_q30 = widest(tables.left_q30, tables.right_q30);
   tables.slope_y_q30 = widest(tables.top_q30, tables.bottom_q30);
-  const std::int64_t ratio =
-      largestAffineRatio(view, std::max(tables.slope_x_q30, tables.slope_y_q30), max_error);
-  for (int level = 0; level <= depth; ++level) {
-    const std::int64_t reach = tables.reach[static_cast<std::size_t>(level)];
-    // z >= r / q, rounded up; no depth at all when even the smallest ratio fails.
-    const std::int64_t depth_needed =
-        ratio == 0 ? INT64_MAX : divShiftRound(reach, ratio, 30).value_or(INT64_MAX - 1) + 1;
-    tables.affine_depth[static_cast<std::size_t>(level)] = depth_needed;
-    // z / (z - reach) falls as z grows: at most its value at the least depth drawn so, rounded
-    // up (1 where no depth the eye can see is that far: no subtree of the level is drawn so).
-    tables.growth_q16[static_cast<std::size_t>(level)] =
-        depth_needed >= (INT64_MAX >> 17) || depth_needed <= reach
-            ? std::int64_t{1} << 16
-            : divShiftRound(depth_needed, depth_needed - reach, 16).value_or(INT64_MAX >> 24) + 1;
+  // Bucket 0: any box that meets the frustum, whose centre has |c.x| <= s * (z + r) + r for the
+  // larger side slope s (spread s * (1 + q) + q + 9/16). Bucket b >= 1: a centre with
+  // max(|c.x|, |c.y|) <= z / 2^(b - 1), nearer the view's axis (spread 2^(1 - b) + 9/16); never
+  // a larger depth than bucket 0's, which holds for it too.
+  const std::int64_t frustum_slope = std::max(tables.slope_x_q30, tables.slope_y_q30);
+  for (int bucket = 0; bucket < PerspectiveWalkTables::kAffineBuckets; ++bucket) {
+    const std::int64_t ratio = bucket == 0
+                                   ? largestAffineRatio(
+                                         view,
+                                         [&](std::int64_t q) -> std::optional<std::int64_t> {
+                                           const std::optional<std::int64_t> sides =
+                                               mulShiftRoundQuick(frustum_slope, kOneQ30 + q, 30);
+                                           if (!sides) return std::nullopt;
+                                           return *sides + q + kDepthTermQ30 + 1;
+                                         },
+                                         max_error)
+                                   : largestAffineRatio(
+                                         view,
+                                         [&](std::int64_t) -> std::optional<std::int64_t> {
+                                           return kDepthTermQ30 + (kOneQ30 >> (bucket - 1));
+                                         },
+                                         max_error);
+    auto& affine_depth = tables.affine_depth[static_cast<std::size_t>(bucket)];
+    auto& growth_q16 = tables.growth_q16[static_cast<std::size_t>(bucket)];
+    for (int level = 0; level <= depth; ++level) {
+      const auto l = static_cast<std::size_t>(level);
+      const std::int64_t reach = tables.reach[l];
+      // z >= r / q, rounded up; no depth at all when even the smallest ratio fails.
+      std::int64_t depth_needed =
+          ratio == 0 ? INT64_MAX : divShiftRoundQuick(reach, ratio, 30).value_or(INT64_MAX - 1) + 1;
+      if (bucket > 0) depth_needed = std::min(depth_needed, tables.affine_depth[0][l]);
+      affine_depth[l] = depth_needed;
+      // z / (z - reach) falls as z grows: at most its value at the least depth drawn so, rounded
+      // up (1 where no depth the eye can see is that far: no subtree of the level is drawn so).
+      growth_q16[l] = depth_needed >= (INT64_MAX >> 17) || depth_needed <= reach
+                          ? std::int64_t{1} << 16
+                          : divShiftRoundQuick(depth_needed, depth_needed - reach, 16)
+                                    .value_or(INT64_MAX >> 24) +
+                                1;
+    }
   }
   return tables;
 }

@@ -8,6 +8,7 @@
 // tree index, draws only the parts of the frame detail by distance gives its depth, and passes
 // over subtrees the sink finds hidden (occlusion culling).
 
+#include <algorithm>
 #include <array>
 #include <atomic>
 #include <cstddef>
@@ -87,14 +88,18 @@ struct PerspectiveWalkTables {
   std::int64_t slope_x_q30 = 0;
   std::int64_t slope_y_q30 = 0;
   std::int64_t max_error = 0;  // Q(32-F).F pixels
-  // A node of level l whose camera-space depth is at least affine_depth[l] is within max_error of
-  // its affine map wherever it meets the frustum (see perspectiveWalkTables): one comparison per
-  // node instead of affineErrorBound's divisions.
-  std::array<std::int64_t, kMaxRenderDepth + 1> affine_depth{};
+  // A node of level l whose camera-space depth is at least affine_depth[b][l] is within max_error
+  // of its affine map wherever it meets the frustum (b = 0), or where its centre lies within
+  // max(|c.x|, |c.y|) <= c.z / 2^(b - 1) of the view's axis (b = 1 .. kAffineBuckets - 1: the
+  // error bound grows with that distance, so nearer the axis a subtree qualifies nearer the eye
+  // and draws more leaves from one map); see perspectiveWalkTables. One comparison per node and
+  // bucket instead of affineErrorBound's divisions.
+  static constexpr int kAffineBuckets = 5;
+  std::array<std::array<std::int64_t, kMaxRenderDepth + 1>, kAffineBuckets> affine_depth{};
   // How much larger than the affine map's voxel a voxel of a subtree drawn from it (a node of
-  // level l, depth >= affine_depth[l]) may be on screen: z / (z - reach) at its worst, Q.16
+  // level l, depth >= affine_depth[b][l]) may be on screen: z / (z - reach) at its worst, Q.16
   // rounded up, so that no subtree divides for it.
-  std::array<std::int64_t, kMaxRenderDepth + 1> growth_q16{};
+  std::array<std::array<std::int64_t, kMaxRenderDepth + 1>, kAffineBuckets> growth_q16{};
   int depth = 0;
 };
 
@@ -202,23 +207,44 @@ class PerspectiveWalk {
     if (!state.committed && parts_.detail.node(level, centre.z, state) == DetailVerdict::kOthers) {
       return Step::kPass;
     }
-    if (state.committed && centre.z >= tables_.affine_depth[static_cast<std::size_t>(level)] &&
+    const auto l = static_cast<std::size_t>(level);
+    if (state.committed && centre.z >= tables_.affine_depth[kNearestBucket][l] &&
         centre.z - reach >= view_.camera.near) {
-      if (affineAtInto(view_, centre, &affine)) return Step::kAffine;
+      const int bucket = affineBucket(centre);
+      if (centre.z >= tables_.affine_depth[static_cast<std::size_t>(bucket)][l] &&
+          affineAtInto(view_, centre, &affine)) {
+        affine_bucket_ = bucket;
+        return Step::kAffine;
+      }
     }
     return Step::kDescend;
+  }
+
+  // The bucket of tables_.affine_depth a node at `c` (c.z > 0) takes: the most lenient whose
+  // bound on max(|c.x|, |c.y|) / c.z it meets, 0 (the frustum's) where none.
+  static constexpr std::size_t kNearestBucket = PerspectiveWalkTables::kAffineBuckets - 1;
+  static int affineBucket(const CameraPoint& c) {
+    const std::int64_t off_axis = std::max(c.x < 0 ? -c.x : c.x, c.y < 0 ? -c.y : c.y);
+    for (int bucket = PerspectiveWalkTables::kAffineBuckets - 1; bucket > 0; --bucket) {
+      if (off_axis <= c.z >> (bucket - 1)) return bucket;
+    }
+    return 0;
   }
 
   // A node in stream order, its mask byte at node_.
   void visit(int level, const CameraPoint& centre, DetailState state) {
     if (level == tables_.depth) {
       if (state.committed || parts_.detail.drawsLeaf(level, centre.z, state)) {
-        if (const std::optional<ScreenPoint> p = project(view_, centre)) {
-          AffineProjection affine;
-          const Point3<std::int64_t> half = affineAtInto(view_, centre, &affine)
-                                                ? voxelHalfExtent(cubeShadow(affine), tables_.depth)
-                                                : Point3<std::int64_t>{};
-          sink_(PerspectiveLeaf{leaf_, p->x, p->y, p->z, half.x, half.y});
+        // The map at the leaf gives its splat's extent and its position (its centre: within half
+        // a unit in the last place plus f * 2^-31 pixel of the exact projection, as project's);
+        // where no map fits (an axis vector past int64), project alone, and no extent.
+        AffineProjection affine;
+        if (affineAtInto(view_, centre, &affine)) {
+          const Point3<std::int64_t> half = voxelHalfExtent(cubeShadow(affine), tables_.depth);
+          sink_(PerspectiveLeaf{leaf_, affine.centre.x, affine.centre.y, affine.centre.z, half.x,
+                                half.y});
+        } else if (const std::optional<ScreenPoint> p = project(view_, centre)) {
+          sink_(PerspectiveLeaf{leaf_, p->x, p->y, p->z, 0, 0});
         }
       }
       ++leaf_;
@@ -332,7 +358,9 @@ class PerspectiveWalk {
     // crack.
     shadow_ = cubeShadow(affine);
     const Point3<std::int64_t> half = voxelHalfExtent(shadow_, tables_.depth);
-    const std::int64_t growth_q16 = tables_.growth_q16[static_cast<std::size_t>(level)];
+    const std::int64_t growth_q16 =
+        tables_
+            .growth_q16[static_cast<std::size_t>(affine_bucket_)][static_cast<std::size_t>(level)];
     half_ = {(half.x * growth_q16 >> 16) + 1, (half.y * growth_q16 >> 16) + 1, 0};
     const AffineSubtree subtree =
         affineSubtree(level, {affine.centre.x, affine.centre.y, affine.centre.z});
@@ -486,6 +514,7 @@ class PerspectiveWalk {
   Point3<std::int64_t> half_{};  // voxelHalfExtent of that subtree, widened for its nearest voxels
   Point3<std::int64_t> shadow_{};  // its map's cube shadow (cubeShadow)
   int affine_level_ = 0;           // its root's level
+  int affine_bucket_ = 0;          // the bucket of tables_.affine_depth it qualified by (judge)
 };
 
 }  // namespace octopoint

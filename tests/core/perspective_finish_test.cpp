@@ -176,11 +176,11 @@ TEST(PerspectiveFinish, EachStyleDrawsItsFixedFrame) {
   const struct {
     Style style;
     std::uint32_t crc;
-  } expected[] = {{Style::kColour, 0xc4e96c70},
-                  {Style::kShaded, 0x7642d9b7},
-                  {Style::kLines, 0x78e983b9},
-                  {Style::kToon, 0x6d63a012},
-                  {Style::kOutlined, 0x6de1db0b}};
+  } expected[] = {{Style::kColour, 0x05626303},
+                  {Style::kShaded, 0x685adad0},
+                  {Style::kLines, 0xb1b14287},
+                  {Style::kToon, 0x52be46b4},
+                  {Style::kOutlined, 0xf36e59d9}};
   std::vector<std::uint32_t> crcs;
   FrameStyler styler(finishModel());
   for (const auto& e : expected) {
