@@ -4,6 +4,9 @@
 #include "octopoint/models.h"
 #include "targets/cortex-m/semihosting.h"
 
+extern "C" std::uint32_t __data_start[],
+    __stack_bottom[];  // targets/cortex-m/sections.ld: RAM's start, static end
+
 namespace octopoint::mcu {
 
 GoldenSink::GoldenSink(int case_number, Variant variant, std::int32_t width)
@@ -60,6 +63,20 @@ void report(const char* label, std::uint64_t value) {
   print(" ");
   printUnsigned(value);
   print("\n");
+}
+
+int finishBudgetReport(std::uint32_t setup_stack, int failures) {
+  report("stack high-water bytes (set-up: model validation, index)", setup_stack);
+  report("stack high-water bytes", stackHighWater());
+  report("stack region bytes", stackBytes());
+  const auto static_bytes =
+      static_cast<std::uint32_t>(reinterpret_cast<std::uintptr_t>(__stack_bottom) -
+                                 reinterpret_cast<std::uintptr_t>(__data_start));
+  report("ram static bytes (.data + .bss)", static_bytes);
+  report("ram peak bytes (static + stack high-water)", static_bytes + stackHighWater());
+  report("ram linked bytes (static + stack region)", static_bytes + stackBytes());
+  report("failures", static_cast<std::uint64_t>(failures));
+  return failures == 0 && stackHighWater() < stackBytes() ? 0 : 1;
 }
 
 }  // namespace octopoint::mcu

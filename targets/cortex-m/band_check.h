@@ -45,4 +45,9 @@ const ModelView& defaultModel();
 // Prints "label value\n".
 void report(const char* label, std::uint64_t value);
 
+// The end of a RAM budget image's report: the stack's high-water marks (`setup_stack` before the
+// frames), its region, the static RAM and the peak and linked totals, and `failures`; returns the
+// program's status: 0 when nothing failed and the stack stayed inside its region.
+int finishBudgetReport(std::uint32_t setup_stack, int failures);
+
 }  // namespace octopoint::mcu

@@ -18,9 +18,6 @@
 using namespace octopoint;
 using namespace octopoint::mcu;
 
-extern "C" std::uint32_t __data_start[],
-    __stack_bottom[];  // targets/cortex-m/sections.ld: RAM's start, static end
-
 namespace {
 
 constexpr std::int32_t kWidth = 320;
@@ -88,15 +85,5 @@ int octopoint::mcu::programMain() {
   report("ram palettes bytes (rgb565, rgb)", sizeof palette + sizeof colours);
   report("ram frame setup bytes", sizeof setup);
   report("ram model view bytes", sizeof(ModelView));
-  report("stack high-water bytes (set-up: model validation, index)", setup_stack);
-  report("stack high-water bytes", stackHighWater());
-  report("stack region bytes", stackBytes());
-  const auto static_bytes =
-      static_cast<std::uint32_t>(reinterpret_cast<std::uintptr_t>(__stack_bottom) -
-                                 reinterpret_cast<std::uintptr_t>(__data_start));
-  report("ram static bytes (.data + .bss)", static_bytes);
-  report("ram peak bytes (static + stack high-water)", static_bytes + stackHighWater());
-  report("ram linked bytes (static + stack region)", static_bytes + stackBytes());
-  report("failures", static_cast<std::uint64_t>(failures));
-  return failures == 0 && stackHighWater() < stackBytes() ? 0 : 1;
+  return finishBudgetReport(setup_stack, failures);
 }
