@@ -19,10 +19,12 @@ std::optional<bool> edgeFitsAPixel(const Camera& camera, int depth) {
 
 }  // namespace
 
-std::size_t denseDepthCount(std::span<const std::uint64_t> voxels_per_depth) {
+std::size_t denseDepthCount(std::span<const std::uint64_t> voxels_per_depth,
+                            std::span<const std::int32_t> sample_reaches) {
   std::size_t kept = std::min<std::size_t>(1, voxels_per_depth.size());
   while (kept < voxels_per_depth.size() &&
-         voxels_per_depth[kept] >= kDenseGrowth * voxels_per_depth[kept - 1]) {  // counts < 2^62
+         ((kept < sample_reaches.size() && sample_reaches[kept] > kOneSampleReach) ||
+          voxels_per_depth[kept] >= kDenseGrowth * voxels_per_depth[kept - 1])) {  // < 2^62
     ++kept;
   }
   return kept;
@@ -55,11 +57,10 @@ const LevelView* autoLevel(const ModelView& model, const Camera& camera) {
   }
   // A depth the scan samples more coarsely than its voxels, but whose reach the model stores
   // (format version 6: more than one footprint), draws whole with it: it counts as dense.
-  std::size_t dense = denseDepthCount(std::span(voxels).first(count));
-  while (dense < count && (model.sampleReach(static_cast<int>(dense)) > kOneSampleReach ||
-                           voxels[dense] >= kDenseGrowth * voxels[dense - 1])) {
-    ++dense;
-  }
+  std::array<std::int32_t, format::kMaxLevels> reaches{};
+  for (std::size_t i = 0; i < count; ++i) reaches[i] = model.sampleReach(static_cast<int>(i));
+  const std::size_t dense =
+      denseDepthCount(std::span(voxels).first(count), std::span(reaches).first(count));
   const std::optional<int> depth = autoDepth(std::span<const int>(depths.data(), dense), camera);
   return depth ? model.levelOfDepth(*depth) : nullptr;
 }

@@ -41,8 +41,11 @@ inline constexpr std::uint64_t kDenseGrowth = 3;
 
 // For the voxel counts of ascending stored depths, how many leading depths are densely sampled: up
 // to (excluding) the first whose count is below kDenseGrowth times the previous one's; at least one
-// when there is any.
-std::size_t denseDepthCount(std::span<const std::uint64_t> voxels_per_depth);
+// when there is any. With `sample_reaches` (Q4 footprints, one per depth, as format version 6 and
+// chunked version 7 store them): a depth whose samples lie farther apart than its voxels but whose
+// stored reach (more than one footprint) draws it whole counts as well.
+std::size_t denseDepthCount(std::span<const std::uint64_t> voxels_per_depth,
+                            std::span<const std::int32_t> sample_reaches = {});
 
 // The depth to draw among `stored_depths` (strictly ascending, each 1..format::kMaxDepth) for
 // `camera`, by the rule above; nullopt when the camera is refused at every one of them.

@@ -10,6 +10,7 @@
 // for bit the frame of the whole-model stream of that depth (positions are sums of the same vectors
 // in any order).
 #include <algorithm>
+#include <array>
 #include <cstdlib>
 
 #include "octopoint/progressive.h"
@@ -86,12 +87,17 @@ std::optional<int> ProgressiveModel::wantedDepth(const Camera& camera) const {
 }
 
 // Depth by projected size over the depths the scan samples densely (renderer/level_of_detail.h,
-// denseDepthCount): the known levels' voxel counts say which those are; a level whose table is not
+// denseDepthCount): the known levels' voxel counts and stored reaches say which those are, as for
+// a one-file model (autoLevel); a level whose table is not
 // known yet may be dense, so it stays a candidate until its table says otherwise.
 std::optional<int> ProgressiveModel::wantedDepth(const ProgressiveTables& tables,
                                                  const Camera& camera) const {
   const auto known = static_cast<std::size_t>(tables.known_levels);
-  const std::size_t dense = denseDepthCount(std::span(tables.points).first(known));
+  // The head's reaches (version 7; one footprint before), as autoLevel takes a model's.
+  std::array<std::int32_t, chunked::kMaxChunkedLevels> reaches{};
+  for (std::size_t j = 0; j < known; ++j) reaches[j] = head_.levels[j].sample_reach;
+  const std::size_t dense =
+      denseDepthCount(std::span(tables.points).first(known), std::span(reaches).first(known));
   const std::size_t candidates =
       dense < known && !every_stored_depth_ ? dense : static_cast<std::size_t>(head_.level_count);
   std::array<int, chunked::kMaxChunkedLevels> depths{};

@@ -70,8 +70,8 @@ levelTable() {  # levelTable FILE: the offset of a .oct's level table (docs/form
   version=$(od -An -tu2 -j4 -N2 "$1" | tr -d ' ')
   if [ "$version" = 1 ]; then
     echo 784
-  else  # version 2: 788 bytes, then 6 per normal palette entry; version 4: the cube's placement
-    echo $((788 + 6 * $(od -An -tu2 -j18 -N2 "$1" | tr -d ' ') + (version == 4 ? 40 : 0)))
+  else  # version 2: 788 bytes, then 6 per normal palette entry; versions 4 and 6: the placement
+    echo $((788 + 6 * $(od -An -tu2 -j18 -N2 "$1" | tr -d ' ') + (version >= 4 ? 40 : 0)))
   fi
 }
 patchBytes "$I1/huge_level.oct" $(($(levelTable "$IN/good.oct") + 4)) '\377\377\377\377'

@@ -75,8 +75,8 @@ TEST(MetricSize, TheGeneratedSourcesRecordThePicometresToo) {
   const std::vector<prepare::OutputFile> files =
       prepare::emitSources(prepare::prepareModel(spanScan(5000.0f), "far.pcd", options));
   ASSERT_GE(files.size(), 2u);
-  // Version 2, flags 2 (the scan has no colour: its palette is a made-up shade), 5 km.
-  EXPECT_NE(files[1].contents.find("\"far\", 4, 2, 5000000000000000u,"), std::string::npos)
+  // Version 6, flags 2 (the scan has no colour: its palette is a made-up shade), 5 km.
+  EXPECT_NE(files[1].contents.find("\"far\", 6, 2, 5000000000000000u,"), std::string::npos)
       << files[1].contents;
 }
 

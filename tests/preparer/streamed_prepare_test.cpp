@@ -30,6 +30,7 @@
 #include "codegen/palette.h"
 #include "codegen/point_source.h"
 #include "codegen/prepare.h"
+#include "codegen/sample_reach.h"
 #include "codegen/scan_header_check.h"
 #include "codegen/scan_loader.h"
 #include "codegen/voxelizer.h"
@@ -40,7 +41,8 @@ namespace {
 
 namespace fs = std::filesystem;
 
-// The preparer as it was before it streamed, kept here as the oracle.
+// The preparer as it was before it streamed, kept here as the oracle (with the sample reaches it
+// measures since).
 std::vector<std::uint8_t> referenceImage(const Scan& full_scan, const PrepareOptions& options) {
   const Scan scan = modelPoints(full_scan, "reference", options);
   const CubeFit fit = fitCube(scan.positions, "reference");
@@ -65,6 +67,8 @@ std::vector<std::uint8_t> referenceImage(const Scan& full_scan, const PrepareOpt
     for (const Rgb8& colour : set.colours) level.leaves.push_back(palette.indexOf(colour));
     model.levels.push_back(std::move(level));
   }
+  // Each level's sample reach, as the preparer measures it (format version 6).
+  recordSampleReaches(model);
   return serializeModel(model);
 }
 

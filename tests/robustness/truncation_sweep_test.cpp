@@ -61,9 +61,9 @@ TEST(TruncationSweep, TheWholeDefaultModelValidates) {
 
 TEST(TruncationSweep, EveryPrefixOfTheDefaultModelIsRefused) {
   const std::vector<std::uint8_t>& image = truncatedModelSource();
-  // Version 4: 788 header bytes, 6 per normal palette entry (count at byte 18), the cube's
+  // Version 6: 788 header bytes, 6 per normal palette entry (count at byte 18), the cube's
   // placement (40), 12 per level row.
-  ASSERT_EQ(image[4], 4);
+  ASSERT_EQ(image[4], 6);
   const std::size_t normal_count = image[18] | std::size_t{image[19]} << 8;
   const std::size_t table_end = 788 + 6 * normal_count + 40 + 12 * std::size_t{image[6]};
   GrowingPrefix buffer(image);
