@@ -145,7 +145,14 @@ int drawPerspectiveCases() {
   report("perspective occlusion tiles bytes (24-row band, 320 wide)",
          occlusionTileCount(320, 24, kPerspectiveTileShift) * sizeof(OcclusionTile));
   report("perspective walk tables bytes per level", sizeof(PerspectiveWalkTables));
-  static std::array<PerspectiveWalkTables, format::kMaxLevels> tables;
+  // One per level of the default model (depths 6, 7 and 8), not format::kMaxLevels: with five
+  // affine thresholds a table is 704 bytes larger, and the M0+'s RAM holds the arena beside them.
+  constexpr std::size_t kTableLevels = 3;
+  static std::array<PerspectiveWalkTables, kTableLevels> tables;
+  if (static_cast<std::size_t>(model.levelCount()) > kTableLevels) {
+    print("the walk tables do not fit their storage\n");
+    return 1;
+  }
   int failures = 0;
   for (int i = 0; i < kPerspectiveCaseCount; ++i) {
     const PerspectiveCase& c = kPerspectiveCases[static_cast<std::size_t>(i)];
