@@ -145,7 +145,7 @@ void drawOrbit(const PerspectiveOptions& options, const PerspectiveJob& job) {
   // Where the eye is in the scan, so that --eye can take the view from here.
   std::string eye;
   if (const std::optional<ScanCube> cube = scanCube(job.model->cubePlacement())) {
-    eye = ", eye " + scanPointText(scanPointOf(*cube, view.camera.eye)) + " looking " +
+    eye = ", eye " + eyeText(*cube, view.camera.eye) + " looking " +
           lookText(view.camera.yaw, view.camera.pitch, view.camera.roll);
   }
   std::printf("%s: %s, perspective%s -> %s (%dx%d)\n", job.label.c_str(),

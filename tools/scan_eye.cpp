@@ -33,6 +33,24 @@ std::vector<std::string_view> splitCommas(std::string_view option, std::string_v
   return pieces;
 }
 
+// modelPointOf's arithmetic on one axis (the others do not enter it): the model coordinate, in
+// Q.24 cube edges, of a scan point whose coordinate on `axis` is `value`; nullopt beyond the
+// camera's reach.
+std::optional<std::int64_t> modelCoordinate(const ScanCube& cube, std::size_t axis, double value) {
+  double edges = (value - cube.corner[axis]) / cube.edge - 0.5;
+  if (cube.y_up && axis > 0) edges = -edges;
+  if (!(std::fabs(edges) <= static_cast<double>(kMaxEyeDistance))) return std::nullopt;
+  return std::llround(edges * static_cast<double>(kPerspectiveUnit));
+}
+
+// `value` rounded to `decimals` decimals, as reading that decimal back gives it.
+double withDecimals(double value, int decimals) {
+  char text[400];  // %f of the largest double takes 309 digits
+  std::snprintf(text, sizeof text, "%.*f", decimals, value);
+  const double rounded = std::strtod(text, nullptr);
+  return rounded == 0 ? 0.0 : rounded;  // "0", not "-0" (-0.3 to no decimals)
+}
+
 }  // namespace
 
 std::optional<ScanCube> scanCube(const CubePlacement& placement) {
@@ -143,6 +161,25 @@ PerspectiveView scanEyeView(const ScanCube& cube, const ScanPoint& eye, const Lo
 
 std::string scanPointText(const ScanPoint& point) {
   return cli::realText(point[0]) + "," + cli::realText(point[1]) + "," + cli::realText(point[2]);
+}
+
+std::string eyeText(const ScanCube& cube, const ModelPoint& point) {
+  const ScanPoint scan = scanPointOf(cube, point);
+  const std::array<std::int64_t, 3> model = {point.x, point.y, point.z};
+  std::string text;
+  for (std::size_t axis = 0; axis < 3; ++axis) {
+    double shortest = scan[axis];  // the double itself reads back as itself
+    for (int decimals = 0; decimals <= 17; ++decimals) {
+      const double candidate = withDecimals(scan[axis], decimals);
+      if (modelCoordinate(cube, axis, candidate) == model[axis]) {
+        shortest = candidate;
+        break;
+      }
+    }
+    if (axis > 0) text += ',';
+    text += cli::realText(shortest);
+  }
+  return text;
 }
 
 std::string degreesText(Angle angle) {

@@ -62,6 +62,10 @@ PerspectiveView scanEyeView(const ScanCube& cube, const ScanPoint& eye, const Lo
 
 // "X,Y,Z" with the digits that give the same numbers back, and an angle in degrees likewise.
 std::string scanPointText(const ScanPoint& point);
+// "X,Y,Z" of a model point in the scan: each coordinate with the fewest decimals that
+// --eye (modelPointOf) reads back as the very same model point: 0.05,0.1,-0.45 rather than
+// 0.05000000000223892,0.0999999859662672,-0.45000000204890966.
+std::string eyeText(const ScanCube& cube, const ModelPoint& point);
 std::string degreesText(Angle angle);
 
 }  // namespace octopoint

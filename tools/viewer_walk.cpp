@@ -137,9 +137,9 @@ std::string Viewer::collisionText() const {
 std::string Viewer::walkOptions(const WalkEye& walker) const {
   if (!walk_.cube) return " (walk mode; the model records no placement for --eye)";
   // degreesText: what --look reads back as the very same angles.
-  return " --eye " + scanPointText(scanPointOf(*walk_.cube, walker.eye)) + " --look " +
-         degreesText(walker.yaw) + "," + degreesText(walker.pitch) + "," +
-         degreesText(walker.roll) + " --fov " + degreesText(walk_.fov);
+  return " --eye " + eyeText(*walk_.cube, walker.eye) + " --look " + degreesText(walker.yaw) + "," +
+         degreesText(walker.pitch) + "," + degreesText(walker.roll) + " --fov " +
+         degreesText(walk_.fov);
 }
 
 }  // namespace octopoint

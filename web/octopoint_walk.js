@@ -58,13 +58,33 @@ window.octopointWalk = function (Module) {
   function roundAway(x) {
     return x < 0 ? -Math.round(-x) : Math.round(x);
   }
-  // tools/scan_eye.cpp's modelPointOf: a point in the scan's units to Q.24 cube edges about the
-  // cube's centre; null when more than 128 cube edges away on some axis.
+  // tools/scan_eye.cpp's modelCoordinate: a coordinate in the scan's units to Q.24 cube edges
+  // about the cube's centre; null when more than 128 cube edges away.
+  function modelCoordinate(axis, value) {
+    let edges = (value - cube.corner[axis]) / cube.edge - 0.5;
+    if (cube.yUp && axis > 0) edges = -edges;
+    return Math.abs(edges) <= 128 ? roundAway(edges * kUnit) : null;
+  }
+  // And modelPointOf: a point in the scan's units to a model point; null if too far.
   function modelPoint(scan) {
-    let edges = [0, 1, 2].map((axis) => (scan[axis] - cube.corner[axis]) / cube.edge - 0.5);
-    if (cube.yUp) edges = [edges[0], -edges[1], -edges[2]];
-    if (!edges.every((e) => Math.abs(e) <= 128)) return null;
-    return edges.map((e) => roundAway(e * kUnit));
+    const point = [0, 1, 2].map((axis) => modelCoordinate(axis, scan[axis]));
+    return point.includes(null) ? null : point;
+  }
+  // tools/scan_eye.cpp's eyeText: each coordinate with the fewest decimals that modelPoint reads
+  // back as this model point, written as cli::realText writes it.
+  function eyeText(model) {
+    return scanPoint(model).map((value, axis) => {
+      let shortest = value;
+      for (let decimals = 0; decimals <= 17; ++decimals) {
+        const candidate = Number(value.toFixed(decimals));
+        if (modelCoordinate(axis, candidate) === model[axis]) {
+          shortest = candidate;
+          break;
+        }
+      }
+      return shortest !== 0 && Math.abs(shortest) < 1e-6 ?
+          shortest.toExponential().replace(/e([+-])(\d)$/, 'e$10$2') : String(shortest);
+    }).join(',');
   }
   // And scanPointOf: back to the scan's units.
   function scanPoint(model) {
@@ -207,9 +227,8 @@ window.octopointWalk = function (Module) {
   // octopoint-render reads them, the speed in scan units a second, and the points that frame drew.
   walk.state = function () {
     const w = words(api.state(), 13);
-    const eye = scanPoint([int64(w[0], w[1]), int64(w[2], w[3]), int64(w[4], w[5])]);
     return {
-      eye: eye.map(String).join(','),
+      eye: eyeText([int64(w[0], w[1]), int64(w[2], w[3]), int64(w[4], w[5])]),
       look: [w[6], w[7], w[8]].map(degreesText).join(','),
       fov: w[9],
       fovText: degreesText(w[9]),
