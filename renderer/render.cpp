@@ -69,6 +69,7 @@ bool renderLevel(Variant variant, const LevelView& level, const FrameSetup& setu
   if (checkRender(level, setup, frame) != RenderError::kNone)
     return false;  // refused, nothing drawn
   switch (variant) {
+#ifndef OCTOPOINT_FIXED_FAST_ONLY
     case Variant::kFixedBaseline:
       return renderFixedBaseline(level, setup, frame, abort);
     case Variant::kFixedLeafCall:
@@ -85,6 +86,18 @@ bool renderLevel(Variant variant, const LevelView& level, const FrameSetup& setu
       return renderFixedDelta(level, setup, frame, abort);
     case Variant::kFixedSimd:
       return renderFixedSimd(level, setup, frame, abort);
+#else  // the web page (web/CMakeLists.txt) draws fixed_fast only: the other decoders are left out
+    case Variant::kFixedFast:
+    case Variant::kFixedSimd:  // fixed_fast's frame where there is no AVX2, as in a browser
+      return renderFixedFast(level, setup, frame, abort);
+    case Variant::kFixedBaseline:
+    case Variant::kFixedLeafCall:
+    case Variant::kFixedUnrolled:
+    case Variant::kFixedSetBits:
+    case Variant::kFixedClipped:
+    case Variant::kFixedDelta:
+      return false;
+#endif
 #ifndef OCTOPOINT_INTEGER_ONLY
     case Variant::kFloatBaseline:
       return renderFloatBaseline(level, setup, frame, abort);

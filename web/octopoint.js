@@ -169,6 +169,8 @@
       if (stream !== null) {
         report(streamWords() + why, streamProblem !== '');
         stream.pump();  // the view the module's order follows is this draw's
+      } else if (document.body.classList.contains('without-model')) {
+        report(why, false);  // no model opened yet: what to do, not an error
       } else {
         report('draw refused: ' + why, true);
       }
