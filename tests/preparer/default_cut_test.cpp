@@ -35,7 +35,8 @@ struct PreparedAirborne {
 };
 
 // The scan prepared as octopoint-prepare does without --depths, or with `depths` given.
-PreparedAirborne prepareAirborneScan(AirborneSampling sampling, const std::vector<int>& depths = {}) {
+PreparedAirborne prepareAirborneScan(AirborneSampling sampling,
+                                     const std::vector<int>& depths = {}) {
   prepare::PrepareOptions options;
   options.name = "airborne";
   options.depths = depths.empty() ? prepare::defaultDepths() : depths;
@@ -52,9 +53,8 @@ PreparedAirborne prepareAirborneScan(AirborneSampling sampling, const std::vecto
   return model;
 }
 
-// The voxel-count rule alone, on the default range's levels: the depths the cut kept before.
-std::vector<int> countRuleDepths(AirborneSampling sampling) {
-  const PreparedAirborne all = prepareAirborneScan(sampling, prepare::defaultDepths());
+// The voxel-count rule alone (the cut before), on all of the default range's levels.
+std::vector<int> countRuleDepths(const PreparedAirborne& all) {
   std::vector<std::size_t> counts;
   for (const prepare::PreparedLevel& level : all.prepared.levels)
     counts.push_back(level.leaves.size());
@@ -86,17 +86,43 @@ int autoEmptyPerMille(const PreparedAirborne& model, int width, int height, bool
                                      model.view->sampleReachOfDepth(level->depth), smooth));
 }
 
+// Why the cap (kMaxKeptSampleReach): the scans prepared at every default depth, each depth's
+// voxels, bytes and measured reach, and which depths the cut leaves out. Past the cap a depth's
+// voxels are the scan's samples again (the grid's depth 10 holds the 22,500 points its depth 8
+// does), drawn as wide: bytes without detail.
+void expectCutAtTheCap(const PreparedAirborne& all, std::size_t kept, const char* name) {
+  std::vector<prepare::LevelVoxels> levels;
+  for (const prepare::PreparedLevel& level : all.prepared.levels)
+    levels.push_back(prepare::decodeLevel(level));
+  std::int32_t coarse_reach = kOneSampleReach;
+  for (std::size_t i = 1; i < levels.size(); ++i) {
+    const prepare::MeasuredReach reach = prepare::measureReach(
+        levels[i].keys, levels[i].depth, levels[i - 1].keys, levels[i - 1].depth, coarse_reach);
+    const prepare::PreparedLevel& level = all.prepared.levels[i];
+    std::printf("%s depth %d: %zu voxels, %zu bytes, reach %d/16%s%s\n", name, level.depth,
+                level.leaves.size(), level.nodes.size() + level.leaves.size(), reach.reach,
+                reach.whole_in_every_view ? "" : " (not whole)", i < kept ? "" : ", left out");
+    if (i == kept) {
+      EXPECT_TRUE(reach.reach > prepare::kMaxKeptSampleReach || !reach.whole_in_every_view)
+          << name << " depth " << level.depth;
+    }
+    coarse_reach = reach.reach;
+  }
+}
+
 void expectFinerDepthsKeptAndWhole(AirborneSampling sampling, const std::vector<int>& expected,
                                    int limit_per_mille, const char* name) {
   const PreparedAirborne model = prepareAirborneScan(sampling);
   ASSERT_TRUE(model.view.has_value());
-  const std::vector<int> before = countRuleDepths(sampling);
+  const PreparedAirborne all = prepareAirborneScan(sampling, prepare::defaultDepths());
+  const std::vector<int> before = countRuleDepths(all);
   const PreparedAirborne cut_before = prepareAirborneScan(sampling, before);
   std::printf("%s: default cut keeps %s (%s bytes), the voxel-count rule %s (%s bytes)\n", name,
               prepare::describeDepths(model.depths).c_str(), bytesOf(model).c_str(),
               prepare::describeDepths(before).c_str(), bytesOf(cut_before).c_str());
   EXPECT_EQ(model.depths, expected) << name;
   EXPECT_LT(before.size(), expected.size()) << "the count rule alone keeps these depths too";
+  expectCutAtTheCap(all, model.depths.size(), name);
   for (std::size_t i = 0; i < model.depths.size(); ++i) {
     std::printf("  depth %d: %zu voxels, reach %d/16\n", model.depths[i],
                 model.prepared.levels[i].leaves.size(), model.view->sampleReach(int(i)));
@@ -120,37 +146,6 @@ TEST(DefaultDepthCut, KeepsTheGridScanDepthsItsReachDrawsWhole) {
 
 TEST(DefaultDepthCut, KeepsTheIrregularScanDepthsItsReachDrawsWhole) {
   expectFinerDepthsKeptAndWhole(AirborneSampling::kIrregular, {6, 7, 8}, 30, "irregular");
-}
-
-// Why the cap (kMaxKeptSampleReach): the scans prepared at every default depth, each depth's
-// voxels, bytes and measured reach, and which depths the cut leaves out. Past the cap a depth's
-// voxels are the scan's samples again (the grid's depth 10 holds the 22,500 points its depth 8
-// does), drawn as wide: bytes without detail.
-void expectCutAtTheCap(AirborneSampling sampling, std::size_t kept, const char* name) {
-  const PreparedAirborne all = prepareAirborneScan(sampling, prepare::defaultDepths());
-  std::vector<prepare::LevelVoxels> levels;
-  for (const prepare::PreparedLevel& level : all.prepared.levels)
-    levels.push_back(prepare::decodeLevel(level));
-  std::int32_t coarse_reach = kOneSampleReach;
-  for (std::size_t i = 1; i < levels.size(); ++i) {
-    const prepare::MeasuredReach reach =
-        prepare::measureReach(levels[i].keys, levels[i].depth, levels[i - 1].keys,
-                              levels[i - 1].depth, coarse_reach);
-    const prepare::PreparedLevel& level = all.prepared.levels[i];
-    std::printf("%s depth %d: %zu voxels, %zu bytes, reach %d/16%s%s\n", name, level.depth,
-                level.leaves.size(), level.nodes.size() + level.leaves.size(), reach.reach,
-                reach.whole_in_every_view ? "" : " (not whole)", i < kept ? "" : ", left out");
-    if (i == kept) {
-      EXPECT_TRUE(reach.reach > prepare::kMaxKeptSampleReach || !reach.whole_in_every_view)
-          << name << " depth " << level.depth;
-    }
-    coarse_reach = reach.reach;
-  }
-}
-
-TEST(DefaultDepthCut, LeavesOutTheFirstDepthPastTheCap) {
-  expectCutAtTheCap(AirborneSampling::kGrid, 4, "grid");
-  expectCutAtTheCap(AirborneSampling::kIrregular, 3, "irregular");
 }
 
 // The densely sampled real scans keep the cut they had: the default model's scan (cropped and

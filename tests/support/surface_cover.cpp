@@ -19,8 +19,9 @@ std::vector<bool> levelCover(const ModelView& model, const LevelView& level, con
   frame.clear();
   const PaletteRgb palette = paletteOf(model);
   SmoothSplats blender(setup);
-  const bool drawn = smooth ? renderSmooth(Variant::kFixedFast, level, setup, frame, blender, palette)
-                            : renderLevel(Variant::kFixedFast, level, setup, frame);
+  const bool drawn = smooth
+                         ? renderSmooth(Variant::kFixedFast, level, setup, frame, blender, palette)
+                         : renderLevel(Variant::kFixedFast, level, setup, frame);
   if (!drawn) return {};
   if (!ppm_path.empty()) {
     std::vector<std::uint8_t> rgb(static_cast<std::size_t>(camera.width * camera.height) * 3);
