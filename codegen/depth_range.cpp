@@ -2,7 +2,9 @@
 
 #include <algorithm>
 #include <optional>
+#include <utility>
 
+#include "codegen/sample_reach.h"
 #include "octopoint/model.h"
 #include "renderer/level_of_detail.h"
 
@@ -17,6 +19,37 @@ std::vector<int> defaultDepths() {
 std::size_t denseDepthCount(std::span<const std::size_t> voxels_per_depth) {
   const std::vector<std::uint64_t> counts(voxels_per_depth.begin(), voxels_per_depth.end());
   return octopoint::denseDepthCount(counts);  // the renderer's depth auto cuts at the same depth
+}
+
+std::size_t drawableDepthCount(
+    std::span<const int> depths, std::span<const std::size_t> voxels_per_depth,
+    const std::function<std::vector<std::uint64_t>(std::size_t)>& keys_of,
+    std::vector<std::int32_t>* kept_reaches) {
+  if (kept_reaches != nullptr) kept_reaches->assign(1, kOneSampleReach);
+  if (depths.empty()) return 0;
+  // Finer than kMaxMeasuredDepth a reach is not measured (one footprint): the counts alone decide,
+  // and no keys are decoded.
+  const auto measured = [&](std::size_t i) { return depths[i] <= kMaxMeasuredDepth; };
+  std::vector<std::uint64_t> coarse;
+  if (measured(0)) coarse = keys_of(0);
+  std::int32_t coarse_reach = kOneSampleReach;  // the coarsest depth's (measureSampleReaches)
+  std::size_t kept = 1;
+  for (; kept < depths.size(); ++kept) {
+    const bool dense = voxels_per_depth[kept] >= kDenseGrowth * voxels_per_depth[kept - 1];
+    MeasuredReach reach;
+    std::vector<std::uint64_t> keys;
+    if (measured(kept)) {
+      keys = keys_of(kept);
+      reach = measureReach(keys, depths[kept], coarse, depths[kept - 1], coarse_reach);
+    }
+    const bool reached = reach.reach > kOneSampleReach && reach.reach <= kMaxKeptSampleReach &&
+                         reach.whole_in_every_view;
+    if (!dense && !reached) break;
+    if (kept_reaches != nullptr) kept_reaches->push_back(reach.reach);
+    coarse = std::move(keys);
+    coarse_reach = reach.reach;
+  }
+  return kept;
 }
 
 std::vector<int> neededDepthRange(std::span<const Camera> cameras) {

@@ -28,12 +28,20 @@ Rgb8 unpack(std::uint32_t c) {
 PreparedModel assembleModel(std::vector<EncodedLevel> levels, const CubeFit& fit,
                             const PrepareOptions& options, const std::string& path,
                             unsigned threads) {
-  // Depths finer than the scan samples densely are left out when asked (codegen/depth_range.h).
+  // Depths finer than the scan samples, which their sample reach does not draw whole, are left
+  // out when asked (codegen/depth_range.h, drawableDepthCount).
   std::vector<int> sparse_depths;
+  std::vector<std::int32_t> reaches;  // measured by the cut, when it ran
   if (options.stop_at_sparse_depth) {
+    std::vector<int> depths;
     std::vector<std::size_t> counts;
-    for (const EncodedLevel& level : levels) counts.push_back(level.leaves);
-    const std::size_t dense = denseDepthCount(counts);
+    for (const EncodedLevel& level : levels) {
+      depths.push_back(level.depth);
+      counts.push_back(level.leaves);
+    }
+    const std::size_t dense = drawableDepthCount(
+        depths, counts,
+        [&](std::size_t i) { return decodeLeafKeys(levels[i].nodes, levels[i].depth); }, &reaches);
     for (std::size_t i = dense; i < levels.size(); ++i) sparse_depths.push_back(levels[i].depth);
     levels.resize(dense);
   }
@@ -52,9 +60,12 @@ PreparedModel assembleModel(std::vector<EncodedLevel> levels, const CubeFit& fit
   model.cube = cubePlacement(fit, options.axes == ScanAxes::kYUp);
   model.palette = palette.colours();
   model.sparse_depths_dropped = sparse_depths;
+  model.sample_reaches_measured = !reaches.empty();
   for (EncodedLevel& encoded : levels) {
     PreparedLevel level;
     level.depth = encoded.depth;
+    if (!reaches.empty())
+      level.sample_reach = static_cast<std::uint8_t>(reaches[model.levels.size()]);
     level.nodes = std::move(encoded.nodes);
     level.leaves.reserve(encoded.leaves);
     adviseHugePages(level.leaves.data(), encoded.leaves);

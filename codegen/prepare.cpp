@@ -7,6 +7,7 @@
 #include <cmath>
 #include <cstdio>
 #include <optional>
+#include <utility>
 
 #include "cli/real_numbers.h"
 #include "cli/text.h"
@@ -81,10 +82,20 @@ Rgb8 toGrey(const Rgb8& c) {
 int estimateScanNormals(Scan& scan, const std::string& scan_path, const PrepareOptions& options,
                         unsigned threads) {
   const CubeFit scan_fit = fitCube(scan.positions, scan_path);
-  // The finest depth the model will keep (the same rule as voxelizeDepths', on the same counts).
+  // The finest depth the model will keep (the same cut as voxelizeDepths', on the same voxels:
+  // turning the scan mirrors them, which changes neither a count nor a reach).
+  std::vector<std::vector<std::uint64_t>> keys;
   std::vector<std::size_t> counts;
-  for (int depth : options.depths) counts.push_back(occupiedVoxels(scan, scan_fit, depth));
-  const std::size_t kept = options.stop_at_sparse_depth ? denseDepthCount(counts) : counts.size();
+  for (int depth : options.depths) {
+    keys.push_back(occupiedVoxelKeys(scan, scan_fit, depth));
+    counts.push_back(keys.back().size());
+  }
+  const std::size_t kept =
+      options.stop_at_sparse_depth
+          ? drawableDepthCount(options.depths, counts,
+                               [&](std::size_t i) { return std::move(keys[i]); })
+          : counts.size();
+  keys = {};
   const int finest = options.depths[kept - 1];
   NormalOptions normal_options = *options.normals;
   normal_options.threads = threads;
@@ -98,11 +109,13 @@ int estimateScanNormals(Scan& scan, const std::string& scan_path, const PrepareO
   return normal_options.neighbours;
 }
 
-// The scan voxelized at each depth; the depths finer than the scan samples densely left out
-// (into `sparse_depths`) when the options say so; grey when they say so.
+// The scan voxelized at each depth; the depths the default cut leaves out (drawableDepthCount:
+// finer than the scan samples, and not drawn whole by their sample reach) left out (into
+// `sparse_depths`, the kept depths' reaches the cut measured into `cut_reaches`) when the options
+// say so; grey when they say so.
 std::vector<VoxelSet> voxelizeDepths(const Scan& scan, const CubeFit& fit,
-                                     const PrepareOptions& options,
-                                     std::vector<int>& sparse_depths) {
+                                     const PrepareOptions& options, std::vector<int>& sparse_depths,
+                                     std::vector<std::int32_t>& cut_reaches) {
   std::vector<VoxelSet> voxel_sets;
   Progress progress("voxelizing", options.depths.size());
   for (int depth : options.depths) {
@@ -112,7 +125,8 @@ std::vector<VoxelSet> voxelizeDepths(const Scan& scan, const CubeFit& fit,
   if (options.stop_at_sparse_depth) {
     std::vector<std::size_t> counts;
     for (const VoxelSet& voxels : voxel_sets) counts.push_back(voxels.keys.size());
-    const std::size_t dense = denseDepthCount(counts);
+    const std::size_t dense = drawableDepthCount(
+        options.depths, counts, [&](std::size_t i) { return voxel_sets[i].keys; }, &cut_reaches);
     for (std::size_t i = dense; i < voxel_sets.size(); ++i)
       sparse_depths.push_back(voxel_sets[i].depth);
     voxel_sets.resize(dense);
@@ -169,7 +183,8 @@ PreparedModel prepareWithNormals(const Scan& full_scan, const std::string& scan_
   turnAxes(scan, options.axes);
   const CubeFit fit = fitCube(scan.positions, scan_path);
   std::vector<int> sparse_depths;
-  std::vector<VoxelSet> voxel_sets = voxelizeDepths(scan, fit, options, sparse_depths);
+  std::vector<std::int32_t> cut_reaches;
+  std::vector<VoxelSet> voxel_sets = voxelizeDepths(scan, fit, options, sparse_depths, cut_reaches);
   // The palette comes from all voxels, before pruning: pruning then changes no voxel's colour
   // index, so pruned and unpruned models draw the same pixels at every sampled view.
   const Palette palette = Palette::build(voxel_sets.back().colours, options.palette_colours);
@@ -192,7 +207,11 @@ PreparedModel prepareWithNormals(const Scan& full_scan, const std::string& scan_
   }
   for (VoxelSet& voxels : voxel_sets) {
     model.levels.push_back(storedLevel(voxels, palette, normal_palette));
+    if (!cut_reaches.empty())
+      model.levels.back().sample_reach =
+          static_cast<std::uint8_t>(cut_reaches[model.levels.size() - 1]);
   }
+  model.sample_reaches_measured = !cut_reaches.empty();
   pruneModel(model, options, scan_path);
   recordSampleReaches(model);
   return model;

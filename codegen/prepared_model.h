@@ -45,6 +45,9 @@ struct PreparedModel {
   double normal_error_max_deg = 0;
   std::vector<PreparedLevel> levels;       // depths strictly ascending
   std::vector<int> sparse_depths_dropped;  // asked for, but finer than the scan samples densely
+  // The levels' sample_reach measured on these levels already (the default depth cut measures
+  // them): recordSampleReaches need not measure again. Pruning, which changes levels, clears it.
+  bool sample_reaches_measured = false;
 };
 
 }  // namespace octopoint::prepare

@@ -72,10 +72,10 @@ constexpr int kDistanceCap = 2 * kMaxSampleGap;
 
 }  // namespace
 
-std::int32_t measureSampleReach(std::span<const std::uint64_t> keys, int depth,
-                                std::span<const std::uint64_t> coarse_keys, int coarse_depth,
-                                std::int32_t coarse_reach) {
-  if (depth > kMaxMeasuredDepth || coarse_depth >= depth || depth - coarse_depth > 6) return 16;
+MeasuredReach measureReach(std::span<const std::uint64_t> keys, int depth,
+                           std::span<const std::uint64_t> coarse_keys, int coarse_depth,
+                           std::int32_t coarse_reach) {
+  if (depth > kMaxMeasuredDepth || coarse_depth >= depth || depth - coarse_depth > 6) return {};
   // Cells of half a fine voxel: a coarse voxel is 2^scale of them, its half 2^(scale - 1).
   const int scale = depth + 1 - coarse_depth;
   const int coarse_widening = (coarse_reach / 16 - 1) << (scale - 1);
@@ -117,15 +117,29 @@ std::int32_t measureSampleReach(std::span<const std::uint64_t> keys, int depth,
   // 8.4% open at depth 8 seen from above, 0.3% seen from the front), which is hole filling's job,
   // not a reason to blur every view.
   const std::uint64_t most = std::max({surface[0], surface[1], surface[2]});
+  const auto broad = [&](std::size_t axis) {
+    return surface[axis] != 0 && 2 * surface[axis] >= most;
+  };
+  const auto whole = [&](std::size_t axis, int reach) {
+    return missed[axis][static_cast<std::size_t>(reach)] * 1000 <=
+           surface[axis] * kHoleShareLimitPerMille;
+  };
   for (int reach = 1; reach <= kMaxSampleGap; ++reach) {
+    bool some_view = false, every_view = true;
     for (std::size_t axis = 0; axis < 3; ++axis) {
-      if (surface[axis] == 0 || 2 * surface[axis] < most) continue;
-      if (missed[axis][static_cast<std::size_t>(reach)] * 1000 <=
-          surface[axis] * kHoleShareLimitPerMille)
-        return 16 * reach;
+      if (!broad(axis)) continue;
+      some_view = some_view || whole(axis, reach);
+      every_view = every_view && whole(axis, reach);
     }
+    if (some_view) return {.reach = 16 * reach, .whole_in_every_view = every_view};
   }
-  return 16 * kMaxSampleGap;
+  return {.reach = 16 * kMaxSampleGap, .whole_in_every_view = false};
+}
+
+std::int32_t measureSampleReach(std::span<const std::uint64_t> keys, int depth,
+                                std::span<const std::uint64_t> coarse_keys, int coarse_depth,
+                                std::int32_t coarse_reach) {
+  return measureReach(keys, depth, coarse_keys, coarse_depth, coarse_reach).reach;
 }
 
 std::vector<std::int32_t> measureSampleReaches(std::span<const LevelVoxels> levels) {
@@ -140,6 +154,7 @@ std::vector<std::int32_t> measureSampleReaches(std::span<const LevelVoxels> leve
 }
 
 void recordSampleReaches(PreparedModel& model) {
+  if (model.sample_reaches_measured) return;
   std::vector<LevelVoxels> levels;
   for (const PreparedLevel& level : model.levels) {
     LevelVoxels voxels = decodeLevel(level);
@@ -149,6 +164,7 @@ void recordSampleReaches(PreparedModel& model) {
   const std::vector<std::int32_t> reaches = measureSampleReaches(levels);
   for (std::size_t i = 0; i < model.levels.size(); ++i)
     model.levels[i].sample_reach = static_cast<std::uint8_t>(reaches[i]);
+  model.sample_reaches_measured = true;
 }
 
 }  // namespace octopoint::prepare

@@ -31,9 +31,24 @@ inline constexpr std::uint64_t kHoleShareLimitPerMille = 10;
 // Views of 2^(depth + 1) cells a side: finer levels are not measured (reach one footprint).
 inline constexpr int kMaxMeasuredDepth = 11;
 
+// What measuring a level found: its reach, and whether that reach leaves at most
+// kHoleShareLimitPerMille of the surface open in every view that sees much of it (the ones
+// judged), not only in one. The default depth cut (codegen/depth_range.h) keeps a depth past the
+// voxel-count rule only when it does: the default model's depth 9 (a Kinect scan) measures a reach
+// of 2, whole seen from the front but not from above; an airborne scan's ground is seen broadly
+// by one view only. False when no reach up to kMaxSampleGap makes any view whole (the reach is then
+// kMaxSampleGap footprints).
+struct MeasuredReach {
+  std::int32_t reach = 16;
+  bool whole_in_every_view = true;
+};
+
 // The reach (16, 32, .. 16 kMaxSampleGap: Q4 voxel footprints) the voxels `keys` (Morton keys of
 // `depth`, codegen/voxelizer.h, ascending) need against the surface of `coarse_keys` (of
-// `coarse_depth` < depth) drawn with `coarse_reach`; 16 when depth > kMaxMeasuredDepth.
+// `coarse_depth` < depth) drawn with `coarse_reach`; 16 (whole) when depth > kMaxMeasuredDepth.
+MeasuredReach measureReach(std::span<const std::uint64_t> keys, int depth,
+                           std::span<const std::uint64_t> coarse_keys, int coarse_depth,
+                           std::int32_t coarse_reach);
 std::int32_t measureSampleReach(std::span<const std::uint64_t> keys, int depth,
                                 std::span<const std::uint64_t> coarse_keys, int coarse_depth,
                                 std::int32_t coarse_reach);
@@ -43,7 +58,8 @@ std::int32_t measureSampleReach(std::span<const std::uint64_t> keys, int depth,
 std::vector<std::int32_t> measureSampleReaches(std::span<const LevelVoxels> levels);
 
 // Measures the reach of each of `model`'s levels (as measureSampleReaches) and records it in the
-// level (PreparedLevel::sample_reach), which the `.oct` file and the generated sources store.
+// level (PreparedLevel::sample_reach), which the `.oct` file and the generated sources store;
+// nothing when they are measured already (PreparedModel::sample_reaches_measured).
 void recordSampleReaches(PreparedModel& model);
 
 }  // namespace octopoint::prepare

@@ -128,6 +128,7 @@ void pruneModel(PreparedModel& model, const PrepareOptions& options, const std::
     level.pruning_seconds = secondsSince(start) + eye_seconds;
   }
   if (!options.visibility_eyes.empty()) keepDenseDepths(model, flags);
+  model.sample_reaches_measured = false;  // on the levels as they were
   for (std::size_t k = 0; k < model.levels.size(); ++k) {
     const auto start = std::chrono::steady_clock::now();
     keepFlagged(model.levels[k], keys[k], flags[k], path);

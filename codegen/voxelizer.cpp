@@ -96,7 +96,7 @@ std::array<std::uint32_t, 3> mortonDecode(std::uint64_t key, int depth) {
   return xyz;
 }
 
-std::size_t occupiedVoxels(const Scan& scan, const CubeFit& fit, int depth) {
+std::vector<std::uint64_t> occupiedVoxelKeys(const Scan& scan, const CubeFit& fit, int depth) {
   std::vector<std::uint64_t> keys;
   keys.reserve(scan.positions.size());
   for (const auto& p : scan.positions) {
@@ -105,7 +105,8 @@ std::size_t occupiedVoxels(const Scan& scan, const CubeFit& fit, int depth) {
                              voxelIndex(p[2], fit.origin[2], fit.edge, depth), depth));
   }
   std::sort(keys.begin(), keys.end());
-  return static_cast<std::size_t>(std::unique(keys.begin(), keys.end()) - keys.begin());
+  keys.erase(std::unique(keys.begin(), keys.end()), keys.end());
+  return keys;
 }
 
 VoxelSet voxelize(const Scan& scan, const CubeFit& fit, int depth) {

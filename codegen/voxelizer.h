@@ -48,7 +48,7 @@ struct VoxelSet {
 
 VoxelSet voxelize(const Scan& scan, const CubeFit& fit, int depth);
 
-// How many voxels of the 2^depth grid the scan's points occupy.
-std::size_t occupiedVoxels(const Scan& scan, const CubeFit& fit, int depth);
+// The voxels of the 2^depth grid the scan's points occupy: their Morton keys, ascending, unique.
+std::vector<std::uint64_t> occupiedVoxelKeys(const Scan& scan, const CubeFit& fit, int depth);
 
 }  // namespace octopoint::prepare

@@ -68,8 +68,11 @@ loaded whole through PCL. The output is the same byte for byte whatever --memory
   --depths LIST         comma-separated octree depths, strictly ascending, each 1..16, at most 8
                         of them, or a range A..B (default 6..10, cut where the scan stops
                         sampling densely: a depth with fewer than 3x the voxels of the depth
-                        before is left out with all finer ones, docs/splats.md): depth d cuts
-                        the fitted cube into 2^d voxels per axis
+                        before is left out with all finer ones, unless its measured sample
+                        reach, at most 4 voxel footprints, draws it whole from every side that
+                        sees much of it, as on airborne scans sampled more coarsely than the
+                        voxel; docs/splats.md): depth d cuts the fitted cube into 2^d voxels
+                        per axis; an explicit list or range is kept whole
   --colours N           palette size, 1..256 (default 256)
   --crop X0,Y0,Z0,X1,Y1,Z1
                         keep only the points inside this box (scan units, inclusive) before
@@ -521,9 +524,10 @@ int run(int argc, char** argv) {
   if (!model.sparse_depths_dropped.empty()) {
     std::printf(
         "  left out depths %s: finer than the scan samples densely (under %zux the voxels of the "
-        "depth "
-        "before); the renderer splats the finest depth kept\n",
-        describeDepths(model.sparse_depths_dropped).c_str(), kDenseGrowth);
+        "depth before) and not drawn whole by a sample reach of at most %d footprints; the "
+        "renderer splats the finest depth kept\n",
+        describeDepths(model.sparse_depths_dropped).c_str(), kDenseGrowth,
+        kMaxKeptSampleReach / 16);
   }
   printLevels(model, options);
   if (args->chunked) printChunkedLayout(layout, nesting_added);

@@ -49,7 +49,7 @@ Errors measure(const Surface& surface, prepare::Scan scan) {
   prepare::NormalOptions options;
   options.neighbours = prepare::neighboursForDensity(
       static_cast<double>(scan.positions.size()) /
-      static_cast<double>(prepare::occupiedVoxels(scan, fit, kDepth)));
+      static_cast<double>(prepare::occupiedVoxelKeys(scan, fit, kDepth).size()));
   scan.normals = prepare::estimateNormals(scan, voxel, options, "synthetic");
   const prepare::VoxelSet voxels = prepare::voxelize(scan, fit, kDepth);
   const prepare::NormalPalette palette =

@@ -12,7 +12,6 @@
 #include <cstdlib>
 #include <cstring>
 #include <filesystem>
-#include <fstream>
 #include <string>
 #include <vector>
 
@@ -21,11 +20,9 @@
 #include "codegen/model_writer.h"
 #include "codegen/prepare.h"
 #include "octopoint/camera.h"
-#include "octopoint/framebuffer.h"
 #include "octopoint/model.h"
-#include "octopoint/render.h"
-#include "octopoint/smooth.h"
 #include "tests/support/airborne_scans.h"
+#include "tests/support/surface_cover.h"
 
 namespace octopoint {
 namespace {
@@ -67,68 +64,16 @@ std::int32_t measuredReach(const AirborneModel& model, int depth) {
   return kOneSampleReach;
 }
 
-// Which pixels a level covers: its box frame, or its smooth frame (blended outline).
+// Which pixels a level covers: its box frame, or its smooth frame (blended outline); the frame is
+// written as `picture`.ppm into OCTOPOINT_SAMPLE_REACH_PICTURES when that is set.
 std::vector<bool> coverage(const ModelView& model, int depth, const Camera& camera,
-                           std::int32_t reach, bool smooth, const char* picture) {
-  const LevelView& level = *model.levelOfDepth(depth);
-  FrameSetup setup;
-  EXPECT_EQ(buildFrameSetup(camera, depth, kDefaultFractionBits, &setup, reach),
-            CameraError::kNone);
-  Framebuffer frame(setup);
-  frame.clear();
-  const PaletteRgb palette = paletteOf(model);
-  SmoothSplats blender(setup);
-  if (smooth) {
-    EXPECT_TRUE(renderSmooth(Variant::kFixedFast, level, setup, frame, blender, palette));
-  } else {
-    EXPECT_TRUE(renderLevel(Variant::kFixedFast, level, setup, frame));
-  }
-  if (const char* folder = std::getenv("OCTOPOINT_SAMPLE_REACH_PICTURES");
-      folder != nullptr && picture != nullptr) {
-    std::vector<std::uint8_t> rgb(static_cast<std::size_t>(camera.width * camera.height) * 3);
-    const bool resolved = smooth ? blender.resolveToRgb(frame, palette, Rgb{255, 255, 255}, rgb)
-                                 : resolveToRgb(frame, model, Rgb{255, 255, 255}, rgb);
-    EXPECT_TRUE(resolved);
-    std::ofstream out(std::string(folder) + "/" + picture + ".ppm", std::ios::binary);
-    out << "P6\n" << camera.width << ' ' << camera.height << "\n255\n";
-    out.write(reinterpret_cast<const char*>(rgb.data()), static_cast<std::streamsize>(rgb.size()));
-  }
-  std::vector<bool> covered;
-  covered.reserve(frame.pixels().size());
-  for (const std::uint32_t word : frame.pixels()) covered.push_back(word != Framebuffer::kEmpty);
+                           std::int32_t reach, bool smooth, const std::string& picture) {
+  const char* folder = std::getenv("OCTOPOINT_SAMPLE_REACH_PICTURES");
+  const std::vector<bool> covered = testing::levelCover(
+      model, *model.levelOfDepth(depth), camera, reach, smooth,
+      folder != nullptr ? std::string(folder) + "/" + picture + ".ppm" : std::string());
+  EXPECT_FALSE(covered.empty()) << picture;
   return covered;
-}
-
-// The reference surface: the coarsest depth's cover, less a border as wide as its voxel (whose
-// cubes reach past the ground's edge by up to one).
-std::vector<bool> referenceSurface(const ModelView& model, const Camera& camera) {
-  const std::vector<bool> coarse =
-      coverage(model, kReferenceDepth, camera, kOneSampleReach, false, nullptr);
-  const int border = (std::min(camera.width, camera.height) >> kReferenceDepth) + 1;
-  std::vector<bool> inside(coarse.size(), false);
-  for (int y = border; y < camera.height - border; ++y) {
-    for (int x = border; x < camera.width - border; ++x) {
-      bool all = true;
-      for (int dy = -border; dy <= border && all; dy += border) {
-        for (int dx = -border; dx <= border && all; dx += border) {
-          all = coarse[static_cast<std::size_t>((y + dy) * camera.width + x + dx)];
-        }
-      }
-      inside[static_cast<std::size_t>(y * camera.width + x)] = all;
-    }
-  }
-  return inside;
-}
-
-// Per mille of the reference surface left empty.
-int emptyPerMille(const std::vector<bool>& reference, const std::vector<bool>& drawn) {
-  std::size_t surface = 0, empty = 0;
-  for (std::size_t i = 0; i < reference.size(); ++i) {
-    if (!reference[i]) continue;
-    ++surface;
-    if (!drawn[i]) ++empty;
-  }
-  return surface == 0 ? 1000 : static_cast<int>(empty * 1000 / surface);
 }
 
 Camera airborneCamera(int width, int height) {
@@ -145,15 +90,16 @@ void expectHoleFree(AirborneSampling sampling, int limit_per_mille, const char* 
     const std::int32_t reach = measuredReach(model, depth);
     for (const auto& [width, height] : {std::pair{480, 360}, {640, 480}, {1280, 960}}) {
       const Camera camera = airborneCamera(width, height);
-      const std::vector<bool> reference = referenceSurface(*model.view, camera);
+      const std::vector<bool> reference =
+          testing::referenceSurface(*model.view, kReferenceDepth, camera);
       for (const bool smooth : {false, true}) {
         const std::string picture = std::string(name) + "_d" + std::to_string(depth) + "_" +
                                     std::to_string(width) + (smooth ? "_smooth" : "_box");
-        const int before =
-            emptyPerMille(reference, coverage(*model.view, depth, camera, kOneSampleReach, smooth,
-                                              (picture + "_unwidened").c_str()));
-        const int after = emptyPerMille(
-            reference, coverage(*model.view, depth, camera, reach, smooth, picture.c_str()));
+        const int before = testing::emptyPerMille(
+            reference,
+            coverage(*model.view, depth, camera, kOneSampleReach, smooth, picture + "_unwidened"));
+        const int after = testing::emptyPerMille(
+            reference, coverage(*model.view, depth, camera, reach, smooth, picture));
         std::printf("%s depth %d %dx%d %s: reach %d/16, empty %d.%d%% -> %d.%d%%\n", name, depth,
                     width, height, smooth ? "smooth" : "box", reach, before / 10, before % 10,
                     after / 10, after % 10);
