@@ -70,10 +70,11 @@ std::vector<std::uint32_t> membershipOrder(std::uint32_t instances,
   std::vector<std::uint32_t> order(instances);
   std::iota(order.begin(), order.end(), 0u);
   std::stable_sort(order.begin(), order.end(), [&](std::uint32_t a, std::uint32_t b) {
-    return std::lexicographical_compare(bits.begin() + static_cast<std::ptrdiff_t>(a * words),
-                                        bits.begin() + static_cast<std::ptrdiff_t>((a + 1) * words),
-                                        bits.begin() + static_cast<std::ptrdiff_t>(b * words),
-                                        bits.begin() + static_cast<std::ptrdiff_t>((b + 1) * words));
+    return std::lexicographical_compare(
+        bits.begin() + static_cast<std::ptrdiff_t>(a * words),
+        bits.begin() + static_cast<std::ptrdiff_t>((a + 1) * words),
+        bits.begin() + static_cast<std::ptrdiff_t>(b * words),
+        bits.begin() + static_cast<std::ptrdiff_t>((b + 1) * words));
   });
   return order;
 }
