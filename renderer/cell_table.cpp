@@ -129,9 +129,9 @@ const char* describe(CellTableError error) {
     case CellTableError::kTrailingBytes:
       return "bytes after a cell's runs";
     case CellTableError::kBadOrder:
-      return "its instance order malformed (an id unknown, missing or twice)";
+      return "with its instance order malformed (an id unknown, missing or twice)";
     case CellTableError::kBadReference:
-      return "a cell referring to no earlier cell, or a chain of differences too long";
+      return "with a cell referring to no earlier cell, or a chain of differences too long";
   }
   return "unknown error";
 }
