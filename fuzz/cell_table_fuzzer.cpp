@@ -1,7 +1,9 @@
 // libFuzzer harness for cell tables (renderer/cell_table.h, docs/city.md "Visibility cells"): any
 // bytes either parse, for a scene of the instance count their header names, or are refused with a
-// reason; a table that parses decodes every cell into sorted ids below that count, never more
-// than it, and finds a cell (or none) for any eye, under ASan and UBSan.
+// reason; a table that parses (OCTCELL2 or OCTCELL1) decodes every cell, twice (the scratch bits
+// left clear), into distinct ids below that count, never more than its largest set, the same both
+// times, and finds a cell (or none) for any eye, under ASan and UBSan.
+#include <algorithm>
 #include <cstddef>
 #include <cstdint>
 #include <cstdlib>
@@ -21,12 +23,23 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     if (describe(error) == nullptr) std::abort();
     return 0;
   }
-  std::vector<std::uint32_t> ids(instances);
-  for (std::uint32_t cell = 0; cell < table.grid().cellCount(); ++cell) {
-    const std::size_t count = table.decode(cell, ids);
-    if (count > instances || count > table.largestSet()) std::abort();
-    for (std::size_t k = 0; k < count; ++k)
-      if (ids[k] >= instances || (k > 0 && ids[k] <= ids[k - 1])) std::abort();
+  if (table.largestSet() > instances) std::abort();
+  std::vector<std::uint32_t> ids(table.largestSet()), again(table.largestSet());
+  std::vector<std::uint8_t> seen(instances);
+  for (int pass = 0; pass < 2; ++pass) {
+    for (std::uint32_t cell = 0; cell < table.grid().cellCount(); ++cell) {
+      const std::size_t count = table.decode(cell, ids);
+      if (count > ids.size()) std::abort();
+      for (std::size_t k = 0; k < count; ++k) {
+        if (ids[k] >= instances || seen[ids[k]] != 0) std::abort();
+        seen[ids[k]] = 1;
+      }
+      for (std::size_t k = 0; k < count; ++k) seen[ids[k]] = 0;
+      if (pass == 1 && (table.decode(cell, again) != count ||
+                        !std::equal(ids.begin(), ids.begin() + static_cast<std::ptrdiff_t>(count),
+                                    again.begin())))
+        std::abort();
+    }
   }
   const CellGrid& g = table.grid();
   for (const Point3<std::int64_t> eye :

@@ -191,7 +191,9 @@ void writeSceneSeeds(const fs::path& dir) {
                   R"(32768, -8], [0, 0, 0, -17592186044416, 1, 8]]})"));
 }
 
-// Cell tables (renderer/cell_table.h): a small grid of two layers, sets empty, short and whole.
+// Cell tables (renderer/cell_table.h): a small grid of two layers, sets empty, short, whole and
+// near their neighbours' (so that OCTCELL2 codes some as differences, in a reordered table), and
+// the same in OCTCELL1.
 void writeCellTableSeeds(const fs::path& dir) {
   fs::create_directories(dir);
   octopoint::CellGrid grid;
@@ -207,8 +209,15 @@ void writeCellTableSeeds(const fs::path& dir) {
   sets[0] = {0, 1, 2, 7, 299};
   for (std::uint32_t i = 0; i < 300; i += 2) sets[5].push_back(i);
   for (std::uint32_t i = 0; i < 300; ++i) sets[11].push_back(i);
-  const std::vector<std::uint8_t> bytes = octopoint::encodeCellTable(grid, sets);
-  write(dir / "small.cells", bytes);
+  for (std::uint32_t i = 1; i < 300; i += 2) sets[4].push_back(i);
+  sets[3] = sets[4];
+  sets[3].push_back(298);  // sorted: 298 is even, after 297
+  std::swap(sets[3][sets[3].size() - 1], sets[3][sets[3].size() - 2]);
+  for (std::uint32_t i = 0; i < 300; i += 3) sets[6].push_back(i);
+  sets[9] = sets[6];
+  sets[9].erase(sets[9].begin() + 10);
+  write(dir / "small.cells", octopoint::encodeCellTable(grid, sets));
+  write(dir / "small_v1.cells", octopoint::encodeCellTable(grid, sets, {true, false, false}));
 }
 
 int main(int argc, char** argv) {

@@ -1,70 +1,107 @@
 #include "renderer/cell_table.h"
 
 #include <algorithm>
+#include <bit>
 #include <cstring>
 
 #include "octopoint/scene.h"
+#include "renderer/cell_table_bytes.h"
 
 namespace octopoint {
 namespace {
 
-constexpr char kMagic[8] = {'O', 'C', 'T', 'C', 'E', 'L', 'L', '1'};
-constexpr std::size_t kHeaderBytes = 8 + 4 * 4 + 3 * 8;
+using cell_bytes::kHeaderBytes;
+using cell_bytes::readLe;
+using cell_bytes::readVarint;
 
-std::uint64_t readLe(const std::uint8_t* at, int bytes) {
-  std::uint64_t value = 0;
-  for (int i = bytes - 1; i >= 0; --i) value = value << 8 | at[i];
-  return value;
-}
+// A cell's head: its run count and, when it is a difference, how many cells back its reference is
+// (0: none). An empty cell (no bytes) has no runs and no reference.
+struct CellHead {
+  std::uint32_t runs = 0, back = 0;
+};
 
-void writeLe(std::vector<std::uint8_t>& out, std::uint64_t value, int bytes) {
-  for (int i = 0; i < bytes; ++i) out.push_back(static_cast<std::uint8_t>(value >> (8 * i)));
-}
-
-void writeVarint(std::vector<std::uint8_t>& out, std::uint32_t value) {
-  while (value >= 0x80) {
-    out.push_back(static_cast<std::uint8_t>(value | 0x80));
-    value >>= 7;
+CellTableError readHead(const std::uint8_t*& at, const std::uint8_t* end, bool references,
+                        std::uint32_t cell, CellHead* head) {
+  *head = {};
+  if (at == end) return CellTableError::kNone;
+  std::uint32_t h = 0;
+  if (!readVarint(at, end, &h)) return CellTableError::kBadRun;
+  if (!references) {  // OCTCELL1: the run count alone
+    head->runs = h;
+    return CellTableError::kNone;
   }
-  out.push_back(static_cast<std::uint8_t>(value));
+  head->runs = h >> 1;
+  if ((h & 1u) == 0) return CellTableError::kNone;
+  if (!readVarint(at, end, &head->back)) return CellTableError::kBadRun;
+  return head->back >= 1 && head->back <= cell ? CellTableError::kNone
+                                               : CellTableError::kBadReference;
 }
 
-// A LEB128 varint of at most 5 bytes and 32 bits from [*at, end); false when it is not one.
-bool readVarint(const std::uint8_t*& at, const std::uint8_t* end, std::uint32_t* value) {
-  std::uint64_t v = 0;
-  for (int shift = 0; shift < 35; shift += 7) {
-    if (at == end) return false;
-    const std::uint8_t byte = *at++;
-    v |= std::uint64_t{byte & 0x7fu} << shift;
-    if ((byte & 0x80) == 0) {
-      if (v > 0xffffffffu) return false;
-      *value = static_cast<std::uint32_t>(v);
-      return true;
-    }
-  }
-  return false;
-}
-
-// Walks one cell's runs, calling `take(first, length)`; kNone when they are well formed and every
-// id is below `instances`, with *count the ids.
+// Walks `runs` runs of ranks, calling `take(first, length)`; kNone when they are well formed, every
+// rank below `instances` and no byte left, with *count the ranks.
 template <typename Take>
-CellTableError walkRuns(const std::uint8_t* at, const std::uint8_t* end, std::uint32_t instances,
-                        std::size_t* count, Take take) {
-  std::uint32_t runs = 0;
+CellTableError walkRuns(const std::uint8_t* at, const std::uint8_t* end, std::uint32_t runs,
+                        std::uint32_t instances, std::uint64_t* count, Take take) {
   *count = 0;
-  if (at == end) return CellTableError::kNone;  // an empty cell may hold no bytes at all
-  if (!readVarint(at, end, &runs)) return CellTableError::kBadRun;
-  std::uint64_t next = 0;  // the first id the next run may start at
+  std::uint64_t next = 0;  // the first rank the next run may start at
   for (std::uint32_t r = 0; r < runs; ++r) {
     std::uint32_t gap = 0, length = 0;
     if (!readVarint(at, end, &gap) || !readVarint(at, end, &length)) return CellTableError::kBadRun;
     const std::uint64_t first = next + gap, last = first + length;  // 64 bits: no overflow
     if (last >= instances) return CellTableError::kBadRun;
     take(static_cast<std::uint32_t>(first), length + std::uint64_t{1});
-    *count += length + std::size_t{1};
+    *count += length + std::uint64_t{1};
     next = last + 1;
   }
   return at == end ? CellTableError::kNone : CellTableError::kTrailingBytes;
+}
+
+// The order's runs of ids into `order` (rank -> id): kNone when every id below `instances` comes
+// exactly once and no byte is left. No bytes: the ids' own order.
+CellTableError readOrder(const std::uint8_t* at, const std::uint8_t* end, std::uint32_t instances,
+                         std::vector<std::uint32_t>* order) {
+  order->clear();
+  if (at == end) {
+    for (std::uint32_t id = 0; id < instances; ++id) order->push_back(id);
+    return CellTableError::kNone;
+  }
+  std::vector<bool> seen(instances);
+  std::uint32_t runs = 0;
+  if (!readVarint(at, end, &runs)) return CellTableError::kBadOrder;
+  std::int64_t next = 0;  // the previous run's end
+  for (std::uint32_t r = 0; r < runs; ++r) {
+    std::uint32_t step = 0, length = 0;
+    if (!readVarint(at, end, &step) || !readVarint(at, end, &length))
+      return CellTableError::kBadOrder;
+    const std::int64_t first = next + cell_bytes::unzigzag(step);
+    const std::int64_t last = first + length;  // |values| < 2^34: no overflow
+    if (first < 0 || last >= instances) return CellTableError::kBadOrder;
+    for (std::int64_t id = first; id <= last; ++id) {  // at most `instances` ids, or refused
+      if (seen[static_cast<std::size_t>(id)]) return CellTableError::kBadOrder;
+      seen[static_cast<std::size_t>(id)] = true;
+      order->push_back(static_cast<std::uint32_t>(id));
+    }
+    next = last + 1;
+  }
+  return at == end && order->size() == instances ? CellTableError::kNone
+                                                 : CellTableError::kBadOrder;
+}
+
+// Toggles ranks [first, first + length) in `bits`; widens [*low, *high] to the words touched.
+void toggle(std::uint64_t* bits, std::uint32_t first, std::uint64_t length, std::size_t* low,
+            std::size_t* high) {
+  const std::uint64_t end = first + length;  // at most the instance count
+  std::size_t word = first >> 6;
+  const std::size_t last_word = static_cast<std::size_t>((end - 1) >> 6);
+  *low = std::min(*low, word);
+  *high = std::max(*high, last_word);
+  for (; word <= last_word; ++word) {
+    const std::uint64_t from = std::max<std::uint64_t>(first, std::uint64_t{word} << 6);
+    const std::uint64_t to = std::min<std::uint64_t>(end, (std::uint64_t{word} + 1) << 6);
+    const std::uint64_t width = to - from;  // 1..64 bits
+    const std::uint64_t mask = width == 64 ? ~std::uint64_t{0} : ((std::uint64_t{1} << width) - 1);
+    bits[word] ^= mask << (from & 63);
+  }
 }
 
 }  // namespace
@@ -78,7 +115,7 @@ const char* describe(CellTableError error) {
     case CellTableError::kTruncated:
       return "truncated";
     case CellTableError::kBadMagic:
-      return "not a cell table (no OCTCELL1 magic)";
+      return "not a cell table (no OCTCELL2 or OCTCELL1 magic)";
     case CellTableError::kWrongScene:
       return "made for a scene of another instance count";
     case CellTableError::kBadGrid:
@@ -91,6 +128,10 @@ const char* describe(CellTableError error) {
       return "a cell's runs malformed or naming an unknown instance";
     case CellTableError::kTrailingBytes:
       return "bytes after a cell's runs";
+    case CellTableError::kBadOrder:
+      return "with its instance order malformed (an id unknown, missing or twice)";
+    case CellTableError::kBadReference:
+      return "with a cell referring to no earlier cell, or a chain of differences too long";
   }
   return "unknown error";
 }
@@ -104,7 +145,9 @@ CellTable CellTable::parse(std::span<const std::uint8_t> bytes, std::uint32_t sc
   };
   if (bytes.size() > kMaxCellTableBytes) return fail(CellTableError::kTooLarge);
   if (bytes.size() < kHeaderBytes) return fail(CellTableError::kTruncated);
-  if (std::memcmp(bytes.data(), kMagic, 8) != 0) return fail(CellTableError::kBadMagic);
+  const bool version2 = std::memcmp(bytes.data(), cell_bytes::kMagic2, 8) == 0;
+  if (!version2 && std::memcmp(bytes.data(), cell_bytes::kMagic1, 8) != 0)
+    return fail(CellTableError::kBadMagic);
   const std::uint8_t* p = bytes.data();
   CellGrid& g = table.grid_;
   g.instances = static_cast<std::uint32_t>(readLe(p + 8, 4));
@@ -129,14 +172,26 @@ CellTable CellTable::parse(std::span<const std::uint8_t> bytes, std::uint32_t sc
     return fail(CellTableError::kBadGrid);
   }
   const std::size_t cells = g.cellCount();
-  const std::size_t offsets_at = kHeaderBytes + 8 * (std::size_t{g.ny} + 1);
-  const std::size_t payload_at = offsets_at + 4 * (cells + 1);
-  if (bytes.size() < payload_at) return fail(CellTableError::kTruncated);
+  const std::size_t layers_end = kHeaderBytes + 8 * (std::size_t{g.ny} + 1);
+  if (bytes.size() < layers_end + (version2 ? 4 : 0)) return fail(CellTableError::kTruncated);
   for (std::uint32_t k = 0; k <= g.ny; ++k) {
     g.y.push_back(static_cast<std::int64_t>(readLe(p + kHeaderBytes + 8 * k, 8)));
     if (!within(g.y.back())) return fail(CellTableError::kBadGrid);
     if (k > 0 && g.y[k] <= g.y[k - 1]) return fail(CellTableError::kBadLayers);
   }
+  std::size_t offsets_at = layers_end;
+  if (version2) {
+    const std::uint64_t order_bytes = readLe(p + layers_end, 4);
+    if (bytes.size() - layers_end - 4 < order_bytes) return fail(CellTableError::kTruncated);
+    const std::uint8_t* order = p + layers_end + 4;
+    const CellTableError why = readOrder(order, order + order_bytes, g.instances, &table.order_);
+    if (why != CellTableError::kNone) return fail(why);
+    offsets_at = layers_end + 4 + static_cast<std::size_t>(order_bytes);
+  } else {
+    static_cast<void>(readOrder(p, p, g.instances, &table.order_));  // the ids' own order
+  }
+  const std::size_t payload_at = offsets_at + 4 * (cells + 1);
+  if (bytes.size() < payload_at) return fail(CellTableError::kTruncated);
   const std::size_t payload = bytes.size() - payload_at;
   std::uint64_t previous = 0;
   for (std::size_t i = 0; i <= cells; ++i) {
@@ -150,15 +205,29 @@ CellTable CellTable::parse(std::span<const std::uint8_t> bytes, std::uint32_t sc
   table.bytes_.assign(bytes.begin(), bytes.end());
   table.offsets_at_ = offsets_at;
   table.payload_at_ = payload_at;
+  table.references_ = version2;
+  // Per cell its chain's length and a bound on its set: its reference's bound plus its own ranks.
+  std::vector<std::uint8_t> chain(cells);
+  std::vector<std::uint32_t> bound(cells);
   for (std::uint32_t c = 0; c < cells; ++c) {
     const std::uint8_t* at = table.bytes_.data() + payload_at + table.offset(c);
     const std::uint8_t* end = table.bytes_.data() + payload_at + table.offset(c + 1);
-    std::size_t count = 0;
-    const CellTableError why =
-        walkRuns(at, end, g.instances, &count, [](std::uint32_t, std::uint64_t) {});
+    CellHead head;
+    CellTableError why = readHead(at, end, version2, c, &head);
     if (why != CellTableError::kNone) return fail(why);
-    table.largest_ = std::max(table.largest_, count);
+    std::uint64_t count = 0;
+    why = walkRuns(at, end, head.runs, g.instances, &count, [](std::uint32_t, std::uint64_t) {});
+    if (why != CellTableError::kNone) return fail(why);
+    chain[c] = 1;
+    if (head.back != 0) {
+      if (chain[c - head.back] >= kMaxCellChain) return fail(CellTableError::kBadReference);
+      chain[c] = static_cast<std::uint8_t>(chain[c - head.back] + 1);
+      count += bound[c - head.back];
+    }
+    bound[c] = static_cast<std::uint32_t>(std::min<std::uint64_t>(count, g.instances));
+    table.largest_ = std::max<std::size_t>(table.largest_, bound[c]);
   }
+  table.scratch_.assign((std::size_t{g.instances} + 63) / 64, 0);
   *error = CellTableError::kNone;
   return table;
 }
@@ -182,50 +251,51 @@ std::int64_t CellTable::cellAt(const Point3<std::int64_t>& eye) const {
 
 std::size_t CellTable::decode(std::uint32_t cell, std::span<std::uint32_t> out) const {
   if (cell >= grid_.cellCount()) return 0;
-  const std::uint8_t* at = bytes_.data() + payload_at_ + offset(cell);
-  const std::uint8_t* end = bytes_.data() + payload_at_ + offset(cell + 1);
-  std::size_t count = 0, written = 0;
-  // Validated on parse: the runs are well formed and hold at most grid_.instances distinct ids.
-  static_cast<void>(
-      walkRuns(at, end, grid_.instances, &count, [&](std::uint32_t first, std::uint64_t length) {
-        for (std::uint64_t k = 0; k < length && written < out.size(); ++k)
-          out[written++] = first + static_cast<std::uint32_t>(k);
-      }));
-  return written;
-}
-
-std::vector<std::uint8_t> encodeCellTable(const CellGrid& grid,
-                                          const std::vector<std::vector<std::uint32_t>>& sets) {
-  std::vector<std::uint8_t> payload;
-  std::vector<std::uint32_t> offsets{0};
-  for (const std::vector<std::uint32_t>& set : sets) {
-    std::vector<std::pair<std::uint32_t, std::uint32_t>> runs;  // first, length - 1
-    for (const std::uint32_t id : set) {
-      if (!runs.empty() && runs.back().first + runs.back().second + 1 == id) {
-        ++runs.back().second;
-      } else {
-        runs.push_back({id, 0});
-      }
-    }
-    if (!runs.empty()) {
-      writeVarint(payload, static_cast<std::uint32_t>(runs.size()));
-      std::uint32_t next = 0;
-      for (const auto& [first, extra] : runs) {
-        writeVarint(payload, first - next);
-        writeVarint(payload, extra);
-        next = first + extra + 1;
-      }
-    }
-    offsets.push_back(static_cast<std::uint32_t>(payload.size()));
+  // The chain: the cell, the cell it refers to, and so on (validated on parse: each earlier, at
+  // most kMaxCellChain long, every run well formed and below the instance count).
+  std::uint32_t chain[kMaxCellChain];
+  int length = 0;
+  for (std::uint32_t c = cell;;) {
+    chain[length++] = c;
+    const std::uint8_t* at = bytes_.data() + payload_at_ + offset(c);
+    CellHead head;
+    static_cast<void>(
+        readHead(at, bytes_.data() + payload_at_ + offset(c + 1), references_, c, &head));
+    if (head.back == 0 || length == kMaxCellChain) break;
+    c -= head.back;
   }
-  std::vector<std::uint8_t> out(kMagic, kMagic + 8);
-  for (const std::uint32_t v : {grid.instances, grid.nx, grid.nz, grid.ny}) writeLe(out, v, 4);
-  for (const std::int64_t v : {grid.origin_x, grid.origin_z, grid.edge})
-    writeLe(out, static_cast<std::uint64_t>(v), 8);
-  for (const std::int64_t v : grid.y) writeLe(out, static_cast<std::uint64_t>(v), 8);
-  for (const std::uint32_t v : offsets) writeLe(out, v, 4);
-  out.insert(out.end(), payload.begin(), payload.end());
-  return out;
+  std::size_t written = 0;
+  std::uint64_t count = 0;
+  const auto runsOf = [&](std::uint32_t c, auto take) {
+    const std::uint8_t* at = bytes_.data() + payload_at_ + offset(c);
+    const std::uint8_t* end = bytes_.data() + payload_at_ + offset(c + 1);
+    CellHead head;
+    static_cast<void>(readHead(at, end, references_, c, &head));
+    static_cast<void>(walkRuns(at, end, head.runs, grid_.instances, &count, take));
+  };
+  if (length == 1) {  // its own runs: the ranks straight out
+    runsOf(cell, [&](std::uint32_t first, std::uint64_t run) {
+      for (std::uint64_t k = 0; k < run && written < out.size(); ++k)
+        out[written++] = order_[first + k];
+    });
+    return written;
+  }
+  // A difference: toggle every chain cell's runs in the scratch bits, then read them (clearing).
+  std::size_t low = scratch_.size(), high = 0;
+  for (int k = 0; k < length; ++k) {
+    runsOf(chain[k], [&](std::uint32_t first, std::uint64_t run) {
+      toggle(scratch_.data(), first, run, &low, &high);
+    });
+  }
+  for (std::size_t word = low; word <= high && word < scratch_.size(); ++word) {
+    std::uint64_t bits = scratch_[word];
+    scratch_[word] = 0;
+    while (bits != 0 && written < out.size()) {
+      out[written++] = order_[word * 64 + static_cast<std::size_t>(std::countr_zero(bits))];
+      bits &= bits - 1;
+    }
+  }
+  return written;
 }
 
 }  // namespace octopoint

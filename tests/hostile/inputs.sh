@@ -236,10 +236,25 @@ printf '{"models": ["good.oct"], "instances": [[0, 0, 0, 0, 0, 0]]}' >"$IN/one_s
 printf 'OCTCELL1\001\000\000\000' >"$I3/short.cells"
 head -c 200 /dev/zero | tr '\0' 'x' >"$I3/magic.cells"
 { printf 'OCTCELL1\002\000\000\000'; head -c 200 /dev/zero; } >"$I3/other_scene.cells"
+# OCTCELL2 of one cell over the one instance: an order naming instance 1 too, then a cell that
+# refers to a cell before the first.
+cells2_head() {
+  printf 'OCTCELL2\001\000\000\000\001\000\000\000\001\000\000\000\001\000\000\000'
+  head -c 16 /dev/zero
+  printf '\000\000\000\001\000\000\000\000\000\000\000\377\377\377\377\377'
+  head -c 8 /dev/zero
+}
+{ cells2_head; printf '\003\000\000\000\001\000\001'; head -c 8 /dev/zero; } >"$I3/bad_order.cells"
+{ cells2_head; printf '\000\000\000\000\000\000\000\000\002\000\000\000\001\001'; } \
+  >"$I3/bad_reference.cells"
 refuse 3 q:cells_truncated "short.cells: cell table truncated" "$RENDER" --city "$IN/one_scene.json" \
   --cells "$I3/short.cells" --eye 0,0,-2 -o "$W/work/out/x.png"
-refuse 3 cells_bad_magic "no OCTCELL1 magic" "$RENDER" --city "$IN/one_scene.json" \
+refuse 3 cells_bad_magic "no OCTCELL2 or OCTCELL1 magic" "$RENDER" --city "$IN/one_scene.json" \
   --cells "$I3/magic.cells" --eye 0,0,-2 -o "$W/work/out/x.png"
+refuse 3 cells_bad_order "instance order malformed" "$RENDER" --city "$IN/one_scene.json" \
+  --cells "$I3/bad_order.cells" --eye 0,0,-2 -o "$W/work/out/x.png"
+refuse 3 cells_bad_reference "referring to no earlier cell" "$RENDER" --city "$IN/one_scene.json" \
+  --cells "$I3/bad_reference.cells" --eye 0,0,-2 -o "$W/work/out/x.png"
 refuse 3 cells_other_scene "made for a scene of another instance count" "$RENDER" \
   --city "$IN/one_scene.json" --cells "$I3/other_scene.cells" --eye 0,0,-2 -o "$W/work/out/x.png"
 refuse 3 cells_directory "is a directory" "$RENDER" --city "$IN/one_scene.json" --cells "$I3/directory" \
