@@ -10,8 +10,9 @@ namespace {
 constexpr std::uint32_t kEmpty = FrameView::kEmpty;
 
 // out[i * stride] = the largest of in[(i - r) * stride .. (i + r) * stride], kEmpty where that
-// window leaves [0, n); `out` may be `in` (the line is read whole before it is written): van Herk's and Gil and Werman's running maxima, three comparisons a word
-// whatever r. `prefix` and `suffix`: n words each.
+// window leaves [0, n); `out` may be `in` (the line is read whole before it is written): van Herk's
+// and Gil and Werman's running maxima, three comparisons a word whatever r. `prefix` and `suffix`:
+// n words each.
 void maxFilter(const std::uint32_t* in, std::size_t stride, std::int32_t n, int r,
                std::uint32_t* out, std::uint32_t* prefix, std::uint32_t* suffix) {
   const std::int32_t block = 2 * r + 1;
@@ -44,15 +45,16 @@ int erosionRadius(const OcclusionSampling& sampling) {
   // At a face's corner (tan x = tan y = 1) a turn of d radians moves the image by up to
   // d (1 + x^2 + y^2) = 3 d in the image plane, whose pixels are 2 / face wide; 10% more for
   // the angle's second order, and one pixel for the grid.
-  const double angle = std::asin(std::min(
-      1.0, static_cast<double>(sampling.eps) / static_cast<double>(sampling.near)));
+  const double angle = std::asin(
+      std::min(1.0, static_cast<double>(sampling.eps) / static_cast<double>(sampling.near)));
   return static_cast<int>(std::ceil(angle * 1.5 * sampling.face * 1.1)) + 1;
 }
 
 void occlusionMap(std::span<const std::uint32_t> words, std::int32_t width, std::int32_t height,
                   std::uint32_t near_key, std::int64_t eps, int rho, std::span<std::uint32_t> map,
                   std::vector<std::uint32_t>& scratch) {
-  const std::size_t w = static_cast<std::size_t>(width), pixels = w * static_cast<std::size_t>(height);
+  const std::size_t w = static_cast<std::size_t>(width),
+                    pixels = w * static_cast<std::size_t>(height);
   scratch.resize(pixels + 2 * static_cast<std::size_t>(std::max(width, height)));
   std::uint32_t* const open = scratch.data();  // near pixels and cracks emptied
   // The palette byte of a map word is set: a point at the map's own depth writes (the surface the

@@ -1,6 +1,8 @@
 // The eroded occlusion map's sets (tools/cell_occlusion.h): an instance hidden from a sample but
 // seen from an eye within eps of it is in the sample's set, by the erosion (past a wall's edge) and
 // by the crack rule (through the gap between two walls that touch as seen from the sample).
+#include "tools/cell_occlusion.h"
+
 #include <gtest/gtest.h>
 
 #include <array>
@@ -8,7 +10,6 @@
 
 #include "renderer/scene_renderer.h"
 #include "tests/support/synthetic_levels.h"
-#include "tools/cell_occlusion.h"
 
 namespace octopoint {
 namespace {
@@ -36,7 +37,7 @@ const ModelView& wallModel() {
                                       level.leaves.data(),
                                       static_cast<std::uint32_t>(level.leaves.size()),
                                       nullptr};
-  static const EmbeddedModel model{"wall", format::kVersion2, 0, 0,       2, palette.data(),
+  static const EmbeddedModel model{"wall", format::kVersion2, 0, 0,        2, palette.data(),
                                    0,      nullptr,           1, &embedded};
   static const ModelView view = [] {
     ModelIssue issue;
@@ -119,7 +120,7 @@ TEST(CellOcclusion, TheMapErodesNearPixelsAndCracks) {
   std::vector<std::uint32_t> map(8), scratch;
   occlusionMap(words, 8, 1, 500, 0, 0, map, scratch);
   EXPECT_EQ(map[0], FrameView::kEmpty);  // nearer than the near key
-  EXPECT_EQ(map[1], words[1] | 0xFF);  // a point at the map's depth writes
+  EXPECT_EQ(map[1], words[1] | 0xFF);    // a point at the map's depth writes
   EXPECT_EQ(map[4], words[4] | 0xFF);
   occlusionMap(words, 8, 1, 500, kEdge / 10, 0, map, scratch);
   EXPECT_EQ(map[2], words[2] | 0xFF);
