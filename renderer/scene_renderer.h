@@ -77,6 +77,17 @@ class SceneRenderer {
   // instance i that submitted a point, its subtrees not all passed over by the frustum or the
   // occlusion tiles (the caller's memory, at least instanceCount() bytes); empty to stop.
   void setSubmittedMarks(std::span<std::uint8_t> marks);
+  // For computing the cells from an occlusion depth map (tools/cell_occlusion.h): sets marks[i]
+  // to 1 for each instance i in view with a point that writes a pixel of a z-buffer holding
+  // `depth_map` (words of a PixelPayload::kColour frame of the view's size, row-major): a word
+  // smaller than the map's there. Each instance is tested against the map alone, never against
+  // the others (a nearer instance's pixels do not hide a farther one's here: the map stands for
+  // all occlusion). `work` (the map's size) is the z-buffer drawn into, restored to the map after
+  // each instance; `marks` at least instanceCount() bytes. Returns the instances drawn. Allocates
+  // nothing after the first call of its size. False-free: an instance left unmarked writes no
+  // pixel (the box test and the walk's culling against the map's tiles are exact bounds).
+  std::size_t markWriters(const PerspectiveView& view, std::span<const std::uint32_t> depth_map,
+                          std::span<std::uint32_t> work, std::span<std::uint8_t> marks);
 
  private:
   struct Slot {

@@ -1,10 +1,12 @@
 #include "tools/cell_build.h"
 
 #include <algorithm>
+#include <cmath>
 #include <random>
 
 #include "octopoint/framebuffer.h"
 #include "renderer/scene_renderer.h"
+#include "tools/cell_occlusion.h"
 
 namespace octopoint {
 namespace {
@@ -97,17 +99,64 @@ void orInto(std::span<std::uint8_t> into, std::span<const std::uint8_t> marks) {
   for (std::size_t i = 0; i < into.size(); ++i) into[i] |= marks[i];
 }
 
-}  // namespace
+// The sub-boxes of a cell's layer box (n x n across, m up) whose half-diagonal is at most eps,
+// fewest first: their centres cover the box within eps.
+struct Cover {
+  std::int64_t across = 1, up = 1;
+};
+Cover coverOf(std::int64_t edge, std::int64_t height, std::int64_t eps) {
+  Cover best{kMaxCellsPerAxis, 1};
+  const double e = static_cast<double>(eps);
+  for (std::int64_t up = 1; up <= 4096; ++up) {
+    const double half_up = static_cast<double>(height) / static_cast<double>(up) / 2;
+    const double room = e * e - half_up * half_up;  // for the two horizontal halves, squared
+    if (room <= 0) continue;
+    // The sub-box's edge across: at most 2 sqrt(room / 2), less a unit for the rounding below.
+    const double across_edge = 2 * std::sqrt(room / 2) - 1;
+    if (across_edge < 1) continue;
+    const auto across =
+        static_cast<std::int64_t>(std::ceil(static_cast<double>(edge) / across_edge));
+    if (across * across * up < best.across * best.across * best.up) best = {across, up};
+    if (best.across == 1) break;
+  }
+  return best;
+}
 
-CellBuild buildCells(std::span<const ModelView* const> models,
-                     std::span<const SceneInstance> instances, const CellBuildOptions& options) {
-  CellBuild build;
-  SceneError error;
-  SceneRenderer renderer(models, instances, &error);
-  if (error != SceneError::kNone || !gridOf(instances, options, &build.grid)) return {};
-  const CellGrid& g = build.grid;
-  const std::size_t n = instances.size(), cells = g.cellCount();
-  std::vector<std::uint8_t> seen(cells * n);  // per cell, per instance
+void sampleCovering(const CellGrid& g, const CellBuildOptions& options, SceneRenderer& renderer,
+                    std::vector<std::uint8_t>& seen, CellBuild* build) {
+  const std::size_t n = g.instances;
+  OcclusionSampler sampler(renderer, {options.eps, options.near_occluder, options.face});
+  build->side = sampler.side();
+  build->rho = sampler.rho();
+  for (std::size_t cell = 0; cell < g.cellCount(); ++cell) {
+    const std::int64_t x = static_cast<std::int64_t>(cell % g.nx);
+    const std::int64_t z = static_cast<std::int64_t>(cell / g.nx % g.nz);
+    const std::size_t layer = cell / (std::size_t{g.nx} * g.nz);
+    const std::int64_t height = g.y[layer + 1] - g.y[layer];
+    const Cover cover = coverOf(g.edge, height, options.eps);
+    std::uint8_t* const row = seen.data() + cell * n;
+    for (std::int64_t k = 0; k < cover.up; ++k) {
+      for (std::int64_t j = 0; j < cover.across; ++j) {
+        for (std::int64_t i = 0; i < cover.across; ++i) {
+          const Point3<std::int64_t> eye{
+              g.origin_x + x * g.edge + (2 * i + 1) * g.edge / (2 * cover.across),
+              g.y[layer] + (2 * k + 1) * height / (2 * cover.up),
+              g.origin_z + z * g.edge + (2 * j + 1) * g.edge / (2 * cover.across)};
+          sampler.look(eye, &build->frames);
+          ++build->samples;
+          const std::span<const std::uint8_t> marks = sampler.marks();
+          for (std::size_t m = 0; m < n; ++m) row[m] |= marks[m];
+        }
+      }
+    }
+  }
+}
+
+// The first way: the lattice on the layers' bounds and seeded points inside each cell, an
+// instance seen when it submitted a point (widened afterwards by the neighbours' sets).
+void sampleLattice(const CellGrid& g, const CellBuildOptions& options, SceneRenderer& renderer,
+                   std::vector<std::uint8_t>& seen, CellBuild* build) {
+  const std::size_t n = g.instances, cells = g.cellCount();
   const auto row = [&](std::size_t cell) {
     return std::span<std::uint8_t>(seen).subspan(cell * n, n);
   };
@@ -115,14 +164,15 @@ CellBuild buildCells(std::span<const ModelView* const> models,
     return static_cast<std::size_t>((layer * g.nz + z) * g.nx + x);
   };
   SampleViews views(renderer, options.face, n);
+  build->side = options.face;
   // The lattice on the layers' bounds: the cells' corners, each every touching cell's, and their
   // centres.
   for (std::int64_t k = 0; k <= g.ny; ++k) {
     const std::int64_t y = g.y[static_cast<std::size_t>(k)];
     for (std::int64_t j = 0; j <= g.nz; ++j) {
       for (std::int64_t i = 0; i <= g.nx; ++i) {
-        views.look({g.origin_x + i * g.edge, y, g.origin_z + j * g.edge}, &build.frames);
-        ++build.samples;
+        views.look({g.origin_x + i * g.edge, y, g.origin_z + j * g.edge}, &build->frames);
+        ++build->samples;
         for (std::int64_t layer = k - 1; layer <= k; ++layer) {
           for (std::int64_t z = j - 1; z <= j; ++z) {
             for (std::int64_t x = i - 1; x <= i; ++x) {
@@ -133,8 +183,8 @@ CellBuild buildCells(std::span<const ModelView* const> models,
         }
         if (i == g.nx || j == g.nz) continue;
         views.look({g.origin_x + i * g.edge + g.edge / 2, y, g.origin_z + j * g.edge + g.edge / 2},
-                   &build.frames);
-        ++build.samples;
+                   &build->frames);
+        ++build->samples;
         for (std::int64_t layer = k - 1; layer <= k; ++layer)
           if (layer >= 0 && layer < g.ny) orInto(row(cellIndex(i, j, layer)), views.marks());
       }
@@ -154,10 +204,35 @@ CellBuild buildCells(std::span<const ModelView* const> models,
           g.y[layer] + static_cast<std::int64_t>(random() % static_cast<std::uint64_t>(height)),
           g.origin_z + z * g.edge +
               static_cast<std::int64_t>(random() % static_cast<std::uint64_t>(g.edge))};
-      views.look(eye, &build.frames);
-      ++build.samples;
+      views.look(eye, &build->frames);
+      ++build->samples;
       orInto(row(cell), views.marks());
     }
+  }
+}
+}  // namespace
+
+CellBuild buildCells(std::span<const ModelView* const> models,
+                     std::span<const SceneInstance> instances, const CellBuildOptions& options) {
+  CellBuild build;
+  SceneError error;
+  SceneRenderer renderer(models, instances, &error);
+  if (error != SceneError::kNone || !gridOf(instances, options, &build.grid)) return {};
+  if (options.eps > 0 && !erosionFits({options.eps, options.near_occluder, options.face}))
+    return {};
+  const CellGrid& g = build.grid;
+  const std::size_t n = instances.size(), cells = g.cellCount();
+  std::vector<std::uint8_t> seen(cells * n);  // per cell, per instance
+  const auto row = [&](std::size_t cell) {
+    return std::span<std::uint8_t>(seen).subspan(cell * n, n);
+  };
+  const auto cellIndex = [&](std::int64_t x, std::int64_t z, std::int64_t layer) {
+    return static_cast<std::size_t>((layer * g.nz + z) * g.nx + x);
+  };
+  if (options.eps > 0) {
+    sampleCovering(g, options, renderer, seen, &build);
+  } else {
+    sampleLattice(g, options, renderer, seen, &build);
   }
   // The margin: instances whose (turned) cube comes within `margin` of the cell's box.
   for (std::size_t i = 0; i < n; ++i) {
@@ -185,7 +260,7 @@ CellBuild buildCells(std::span<const ModelView* const> models,
     const std::int64_t z = static_cast<std::int64_t>(cell / g.nx % g.nz);
     const std::int64_t layer = static_cast<std::int64_t>(cell / (std::size_t{g.nx} * g.nz));
     std::copy(row(cell).begin(), row(cell).end(), widened.begin());
-    for (std::int64_t dz = -1; options.neighbours && dz <= 1; ++dz) {
+    for (std::int64_t dz = -1; options.neighbours && options.eps == 0 && dz <= 1; ++dz) {
       for (std::int64_t dx = -1; dx <= 1; ++dx) {
         if (x + dx < 0 || x + dx >= g.nx || z + dz < 0 || z + dz >= g.nz) continue;
         orInto(widened, row(cellIndex(x + dx, z + dz, layer)));

@@ -13,6 +13,9 @@
 //    is never lost to a sample inside it), then the union of the cell and its eight neighbours in
 //    its layer (what a point between samples sees, one of them saw).
 // Cost: (samples) x 6 frames of face x face pixels; memory a byte per cell and instance. Host side.
+// With CellBuildOptions::eps above 0 the sets come from eroded occlusion maps instead
+// (tools/cell_occlusion.h): conservative for every eye in the cell by construction, without the
+// neighbours' union.
 
 #include <cstdint>
 #include <span>
@@ -36,12 +39,20 @@ struct CellBuildOptions {
   std::uint32_t seed = 1;
   std::int64_t margin = kPerspectiveUnit / 2;  // Q.24 scene edges
   bool neighbours = true;                      // widen by the eight neighbours' sets
+  // Above 0: the eroded occlusion maps instead (tools/cell_occlusion.h): samples covering each
+  // cell's layer box so that every point of it lies within `eps` (Q.24 scene edges) of one, each
+  // standing for the eyes within eps of it; surfaces nearer than `near_occluder` do not occlude;
+  // `face` pixels a cube face without its border; no lattice, no seeded points, no neighbours.
+  std::int64_t eps = 0;
+  std::int64_t near_occluder = 0;
 };
 
 struct CellBuild {
   CellGrid grid;
   std::vector<std::vector<std::uint32_t>> sets;  // per cell, sorted
   std::uint64_t samples = 0, frames = 0;
+  int side = 0;  // pixels of a frame's side (a face with the erosion's border)
+  int rho = 0;   // the erosion's radius in pixels (0: none)
 };
 
 // Empty grid (nx 0) when the options are out of their limits (an edge below 1/64 scene edge, layers

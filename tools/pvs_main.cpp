@@ -14,6 +14,7 @@
 #include "cli/run_tool.h"
 #include "cli/text.h"
 #include "tools/cell_build.h"
+#include "tools/cell_occlusion.h"
 #include "tools/scene_file.h"
 
 namespace {
@@ -23,6 +24,7 @@ using namespace octopoint;
 constexpr const char* kUsage =
     R"(usage: octopoint-pvs SCENE.json -o CELLS [--cell EDGES] [--layers Y0,Y1,...] [--face PX]
                      [--samples N] [--seed N] [--margin EDGES] [--no-neighbours]
+                     [--eps EDGES --near-occluder EDGES]
 
 Computes a scene's visibility cells (docs/city.md): a grid of view cells over the instances'
 extent in x and z and the layers of height the eye may take, and per cell the instances visible
@@ -43,6 +45,15 @@ sets. octopoint-render --city SCENE.json --cells CELLS draws only the eye's cell
   --seed N           their seed, 0..10^9 (default 1)
   --margin EDGES     instances whose cube comes this near a cell are in its set (default 0.5)
   --no-neighbours    do not widen a set by its neighbours' (for measuring what that buys)
+
+Eroded occlusion maps (conservative by construction, tighter; docs/city.md):
+  --eps EDGES        sample each cell's layer box so that every point of it lies within EDGES
+                     of a sample, and let each sample stand for every eye within EDGES of it:
+                     per cube face an occlusion map in which surfaces nearer than the near
+                     occluder distance and depth cracks are empty, eroded by asin(EDGES / NEAR);
+                     an instance with a point nearer than the map is in the set. No lattice,
+                     seeded points or neighbours then; --face is the face without its border.
+  --near-occluder EDGES  surfaces nearer than this do not occlude (needs --eps; above it)
 )";
 
 // A decimal number of scene edges to Q.24, within +-limit scene edges; cli::Error otherwise.
@@ -90,6 +101,11 @@ int run(int argc, char** argv) {
     } else if (args.is("--margin")) {
       options.margin = edgesOption("--margin", args.value(), 64);
       if (options.margin < 0) throw cli::Error("--margin: negative");
+    } else if (args.is("--eps")) {
+      options.eps = edgesOption("--eps", args.value(), 64);
+      if (options.eps <= 0) throw cli::Error("--eps: not above 0");
+    } else if (args.is("--near-occluder")) {
+      options.near_occluder = edgesOption("--near-occluder", args.value(), 1024);
     } else if (args.is("--no-neighbours")) {
       args.noValue();
       options.neighbours = false;
@@ -101,6 +117,14 @@ int run(int argc, char** argv) {
   }
   if (scene_path.empty()) throw cli::Error("no scene given: octopoint-pvs SCENE.json -o CELLS");
   if (output.empty()) throw cli::Error("no output given: use -o CELLS");
+  if ((options.eps > 0) != (options.near_occluder != 0))
+    throw cli::Error("--eps and --near-occluder go together");
+  if (options.eps > 0 && options.near_occluder <= options.eps)
+    throw cli::Error("--near-occluder: not above --eps");
+  if (!erosionFits({options.eps, options.near_occluder, options.face}))
+    throw cli::Error(
+        "--eps: its erosion would widen a face past 120 degrees: give a larger "
+        "--near-occluder (eps / near at most about 0.2)");
   cli::checkOutputFile(output);
   const std::unique_ptr<LoadedScene> scene = loadScene(scene_path);
   const auto start = std::chrono::steady_clock::now();
@@ -120,11 +144,13 @@ int run(int argc, char** argv) {
     largest = std::max(largest, set.size());
   }
   std::printf(
-      "%s: %u x %u cells x %u layers, %llu samples (%llu frames of %dx%d) in %.1f s: sets of %.0f "
+      "%s: %u x %u cells x %u layers, %llu samples (%llu frames of %dx%d, erosion %d px) in %.1f "
+      "s: "
+      "sets of %.0f "
       "of %zu instances on average, largest %zu; %zu bytes -> %s\n",
       scene->label.c_str(), build.grid.nx, build.grid.nz, build.grid.ny,
       static_cast<unsigned long long>(build.samples), static_cast<unsigned long long>(build.frames),
-      options.face, options.face, seconds,
+      build.side, build.side, build.rho, seconds,
       static_cast<double>(total) / static_cast<double>(build.sets.size()), scene->instances.size(),
       largest, bytes.size(), output.c_str());
   return 0;

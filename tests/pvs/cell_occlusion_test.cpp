@@ -1,0 +1,133 @@
+// The eroded occlusion map's sets (tools/cell_occlusion.h): an instance hidden from a sample but
+// seen from an eye within eps of it is in the sample's set, by the erosion (past a wall's edge) and
+// by the crack rule (through the gap between two walls that touch as seen from the sample).
+#include "tools/cell_occlusion.h"
+
+#include <gtest/gtest.h>
+
+#include <array>
+#include <vector>
+
+#include "renderer/scene_renderer.h"
+#include "tests/support/synthetic_levels.h"
+
+namespace octopoint {
+namespace {
+
+using testing_support::encodeLevel;
+using testing_support::mortonKey;
+using testing_support::SyntheticLevel;
+
+constexpr std::int64_t kEdge = kPerspectiveUnit;  // one scene edge, Q.24
+
+// A wall a quarter of the model cube wide (centred) and its whole height, facing z, two voxels of
+// depth 6 thick at z = 0.
+const ModelView& wallModel() {
+  static const SyntheticLevel level = [] {
+    std::vector<std::uint64_t> keys;
+    for (std::uint32_t i = 24; i < 40; ++i)
+      for (std::uint32_t j = 0; j < 64; ++j)
+        for (std::uint32_t k = 31; k <= 32; ++k) keys.push_back(mortonKey(i, j, k, 6));
+    return encodeLevel(std::move(keys), 6, [](std::uint64_t) { return std::uint8_t{1}; });
+  }();
+  static const std::array<std::uint8_t, 768> palette{};
+  static const EmbeddedLevel embedded{6,
+                                      level.nodes.data(),
+                                      static_cast<std::uint32_t>(level.nodes.size()),
+                                      level.leaves.data(),
+                                      static_cast<std::uint32_t>(level.leaves.size()),
+                                      nullptr};
+  static const EmbeddedModel model{"wall", format::kVersion2, 0, 0,        2, palette.data(),
+                                   0,      nullptr,           1, &embedded};
+  static const ModelView view = [] {
+    ModelIssue issue;
+    return *ModelView::fromEmbedded(model, &issue);
+  }();
+  return view;
+}
+
+// Seen from the eye at the origin looking along +z: wall A (an edge wide, 4 tall, 2 edges away,
+// its right edge at x/z = 1/8); far F (an eighth of an edge wide, 16 edges away, at x/z = 3/32:
+// behind A); wall B (2 edges wide, 8 tall, 4 edges away, its left edge at x/z = 0.12: just behind
+// A's right edge). Around F the walls reach farther than the erosion's window (12 pixels of a
+// 64-pixel face: 3/8 in x/z): what lets F in is the erosion past A's edge, or with B the crack.
+const SceneInstance kWallA{0, {{-kEdge / 4, 0, 2 * kEdge}, Angle{}, 2}};
+const SceneInstance kFar{0, {{3 * kEdge / 2, 0, 16 * kEdge}, Angle{}, -1}};
+const SceneInstance kWallB{0, {{kEdge * 37 / 25, 0, 4 * kEdge}, Angle{}, 3}};
+
+// Whether `far` changes a 128-pixel frame seen from `eye` (looking along +z, 90 degrees).
+bool farSeen(std::vector<SceneInstance> instances, const Point3<std::int64_t>& eye) {
+  const ModelView* models[] = {&wallModel()};
+  PerspectiveCamera camera;
+  camera.eye = eye;
+  camera.fov = Angle::fromDegrees(90);
+  camera.width = camera.height = 128;
+  PerspectiveView view;
+  EXPECT_EQ(buildPerspectiveView(camera, kDefaultFractionBits, &view), PerspectiveError::kNone);
+  std::vector<std::uint32_t> words[2];
+  for (int with = 0; with < 2; ++with) {
+    if (with == 0) instances.pop_back();  // the far instance is last
+    SceneError error;
+    SceneRenderer renderer(models, instances, &error);
+    Framebuffer frame(128, 128);
+    frame.clear();
+    EXPECT_TRUE(renderer.draw(view, frame));
+    words[with].assign(frame.pixels().begin(), frame.pixels().end());
+    if (with == 0) instances.push_back(kFar);
+  }
+  return words[0] != words[1];
+}
+
+// Whether the sample at the origin puts the far instance (the last) in its set.
+bool farInSet(const std::vector<SceneInstance>& instances, std::int64_t eps) {
+  const ModelView* models[] = {&wallModel()};
+  SceneError error;
+  SceneRenderer renderer(models, instances, &error);
+  EXPECT_EQ(error, SceneError::kNone);
+  OcclusionSampler sampler(renderer, {eps, kEdge, 64});
+  std::uint64_t frames = 0;
+  sampler.look({0, 0, 0}, &frames);
+  EXPECT_EQ(frames, 12u);
+  EXPECT_EQ(sampler.marks()[0], 1);  // wall A is seen whatever the erosion
+  return sampler.marks().back() != 0;
+}
+
+TEST(CellOcclusion, AnInstancePastAWallsEdgeFromAnEyeWithinEpsIsInTheSet) {
+  const std::vector<SceneInstance> scene = {kWallA, kFar};
+  // The geometry: hidden from the sample, seen from an eye a tenth of an edge to the right.
+  EXPECT_FALSE(farSeen(scene, {0, 0, 0}));
+  EXPECT_TRUE(farSeen(scene, {kEdge / 10, 0, 0}));
+  EXPECT_TRUE(farInSet(scene, kEdge / 10));
+  EXPECT_FALSE(farInSet(scene, 0));  // without erosion: the sample's own view, which misses it
+}
+
+TEST(CellOcclusion, AnInstanceThroughTheGapBetweenTouchingWallsIsInTheSet) {
+  // Walls A and B touch as the sample sees them, but B is twice as far: from an eye a tenth of
+  // an edge to the right a gap opens between them, through which F shows. The erosion alone
+  // (the farthest of A's and B's depths around F's pixels) would call F hidden; the crack between
+  // them is what lets it in.
+  const std::vector<SceneInstance> scene = {kWallA, kWallB, kFar};
+  EXPECT_FALSE(farSeen(scene, {0, 0, 0}));
+  EXPECT_TRUE(farSeen(scene, {kEdge / 10, 0, 0}));
+  EXPECT_TRUE(farInSet(scene, kEdge / 10));
+}
+
+TEST(CellOcclusion, TheMapErodesNearPixelsAndCracks) {
+  // 8 x 1 words: keys 100 (near), then 1000 x 3, then 2000 x 4 (a crack at 3|4).
+  std::vector<std::uint32_t> words;
+  for (const std::uint32_t key : {100u, 1000u, 1000u, 1000u, 2000u, 2000u, 2000u, 2000u})
+    words.push_back(FrameView::pack(key, 0));
+  std::vector<std::uint32_t> map(8), scratch;
+  occlusionMap(words, 8, 1, 500, 0, 0, map, scratch);
+  EXPECT_EQ(map[0], FrameView::kEmpty);  // nearer than the near key
+  EXPECT_EQ(map[1], words[1] | 0xFF);    // a point at the map's depth writes
+  EXPECT_EQ(map[4], words[4] | 0xFF);
+  occlusionMap(words, 8, 1, 500, kEdge / 10, 0, map, scratch);
+  EXPECT_EQ(map[2], words[2] | 0xFF);
+  EXPECT_EQ(map[3], FrameView::kEmpty);  // both sides of the crack
+  EXPECT_EQ(map[4], FrameView::kEmpty);
+  EXPECT_EQ(map[5], words[5] | 0xFF);
+}
+
+}  // namespace
+}  // namespace octopoint

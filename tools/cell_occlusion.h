@@ -1,0 +1,73 @@
+#pragma once
+// The instances one sample point stands for, by an eroded occlusion map (docs/city.md, "Visibility
+// cells"; after Wonka, Wimmer and Schmalstieg 2000, "Visibility preprocessing with occluder fusion
+// for urban walkthroughs"). A sample e stands for every eye within `eps` of it. From e the scene is
+// drawn to the six faces of a cube (each widened by a border, so that every direction lies at least
+// the erosion's radius inside some face); per face, the occlusion map:
+//  - every pixel whose surface is nearer than `near` (camera-space z) is empty: near occluders do
+//    not occlude (from an eye eps away they move by up to eps / near radians, unbounded in pixels);
+//  - a crack: both pixels of every pair of 4-neighbours whose depths differ by more than
+//    kLeastGap / eps of the nearer's are empty: a gap between two surfaces at different depths that
+//    touch from e opens from an eye eps away (by eps times the depth jump over the depth);
+//  - then the farthest word over a square window of `rho` pixels around each pixel, rho covering
+//    asin(eps / near) at the faces' corners (+1 pixel for the grid), and empty where the window
+//    leaves the face.
+// Every instance with a point nearer than the map at its pixel (tested alone, not against the
+// others: SceneRenderer::markWriters) is in the sample's set. Why that is conservative for every
+// eye within eps: docs/city.md. eps 0: no erosion, no cracks (the map is the nearest surface
+// beyond `near`): the sample's own view. Host side; the frames are sized once.
+
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include "octopoint/framebuffer.h"
+#include "renderer/scene_renderer.h"
+
+namespace octopoint {
+
+// The narrowest gap the crack rule looks for, Q.24 scene edges: 1/512 scene edge, 6 cm in the
+// generated city, a voxel of its buildings' finest depth (9): narrower gaps the splats close.
+inline constexpr std::int64_t kLeastGap = kPerspectiveUnit / 512;
+
+struct OcclusionSampling {
+  std::int64_t eps = 0;   // Q.24 scene edges: the eyes a sample stands for
+  std::int64_t near = 0;  // Q.24 scene edges: surfaces nearer do not occlude; > eps
+  int face = 128;         // pixels of a cube face's side, without the border
+};
+
+// The erosion's radius in pixels for `sampling` (0 when eps is 0).
+int erosionRadius(const OcclusionSampling& sampling);
+// Whether the face widened by the erosion's border stays within the camera's field of view (120
+// degrees: a border of at most about a third of the face each way, eps / near up to about 0.2).
+bool erosionFits(const OcclusionSampling& sampling);
+
+// The occlusion map of a face's words (width x height, row-major, PixelPayload::kColour) into
+// `map`: near pixels and cracks empty, then the farthest word within `rho` (empty where the window
+// leaves the face). `near_key`: the depth key of the near distance; `eps`: for the crack rule
+// (0: no cracks). `scratch`: any vector, resized once.
+void occlusionMap(std::span<const std::uint32_t> words, std::int32_t width, std::int32_t height,
+                  std::uint32_t near_key, std::int64_t eps, int rho, std::span<std::uint32_t> map,
+                  std::vector<std::uint32_t>& scratch);
+
+class OcclusionSampler {
+ public:
+  OcclusionSampler(SceneRenderer& renderer, const OcclusionSampling& sampling);
+
+  // The instances sample `eye` stands for: marks() after it (1 per instance in the set).
+  void look(const Point3<std::int64_t>& eye, std::uint64_t* frames);
+  std::span<const std::uint8_t> marks() const { return marks_; }
+  int side() const { return side_; }  // pixels of a widened face
+  int rho() const { return rho_; }
+
+ private:
+  SceneRenderer& renderer_;
+  OcclusionSampling sampling_;
+  int rho_ = 0, side_ = 0;
+  Angle fov_;
+  Framebuffer frame_;
+  std::vector<std::uint32_t> map_, work_, scratch_;
+  std::vector<std::uint8_t> marks_;
+};
+
+}  // namespace octopoint
