@@ -33,9 +33,8 @@ std::vector<std::string_view> splitCommas(std::string_view option, std::string_v
   return pieces;
 }
 
-// modelPointOf's arithmetic on one axis (the others do not enter it): the model coordinate, in
-// Q.24 cube edges, of a scan point whose coordinate on `axis` is `value`; nullopt beyond the
-// camera's reach.
+// The model coordinate, in Q.24 cube edges, of a scan point whose coordinate on `axis` is `value`
+// (the other axes do not enter it); nullopt beyond the camera's reach, and for NaN.
 std::optional<std::int64_t> modelCoordinate(const ScanCube& cube, std::size_t axis, double value) {
   double edges = (value - cube.corner[axis]) / cube.edge - 0.5;
   if (cube.y_up && axis > 0) edges = -edges;
@@ -82,26 +81,23 @@ Look parseLook(std::string_view option, std::string_view text) {
 }
 
 ModelPoint modelPointOf(const ScanCube& cube, const ScanPoint& point, std::string_view option) {
-  std::array<double, 3> edges{};  // cube edges from the centre, in the model's axes
-  for (std::size_t axis = 0; axis < 3; ++axis)
-    edges[axis] = (point[axis] - cube.corner[axis]) / cube.edge - 0.5;
-  if (cube.y_up) edges = {edges[0], -edges[1], -edges[2]};
-  constexpr double kLimit = static_cast<double>(kMaxEyeDistance);
+  std::array<std::int64_t, 3> model{};
   for (std::size_t axis = 0; axis < 3; ++axis) {
-    // Not `> kLimit`: a NaN (from an infinite edge ratio) is refused too.
-    if (!(std::fabs(edges[axis]) <= kLimit)) {
+    const std::optional<std::int64_t> coordinate = modelCoordinate(cube, axis, point[axis]);
+    if (!coordinate) {
+      // Beyond the camera's reach, or NaN (from an infinite edge ratio).
+      const double edges = std::fabs((point[axis] - cube.corner[axis]) / cube.edge - 0.5);
       char text[320];
       std::snprintf(text, sizeof text,
                     ": the eye is %.3g cube edges from the model's centre along %c; the camera "
                     "holds at most %d (the cube: %s %s)",
-                    std::fabs(edges[axis]), "xyz"[axis], static_cast<int>(kMaxEyeDistance),
+                    edges, "xyz"[axis], static_cast<int>(kMaxEyeDistance),
                     scanPointText(cube.corner).c_str(), cli::realText(cube.edge).c_str());
       throw cli::Error(std::string(option) + text);
     }
+    model[axis] = *coordinate;
   }
-  const auto unit = static_cast<double>(kPerspectiveUnit);
-  return {std::llround(edges[0] * unit), std::llround(edges[1] * unit),
-          std::llround(edges[2] * unit)};
+  return {model[0], model[1], model[2]};
 }
 
 ScanPoint scanPointOf(const ScanCube& cube, const ModelPoint& point) {
