@@ -35,7 +35,8 @@ std::size_t drawableDepthCount(
   std::int32_t coarse_reach = kOneSampleReach;  // the coarsest depth's (measureSampleReaches)
   std::size_t kept = 1;
   for (; kept < depths.size(); ++kept) {
-    const bool dense = voxels_per_depth[kept] >= kDenseGrowth * voxels_per_depth[kept - 1];
+    const bool dense =
+        octopoint::sampledDensely(voxels_per_depth[kept], voxels_per_depth[kept - 1]);
     MeasuredReach reach;
     std::vector<std::uint64_t> keys;
     if (measured(kept)) {

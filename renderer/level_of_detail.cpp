@@ -24,7 +24,7 @@ std::size_t denseDepthCount(std::span<const std::uint64_t> voxels_per_depth,
   std::size_t kept = std::min<std::size_t>(1, voxels_per_depth.size());
   while (kept < voxels_per_depth.size() &&
          ((kept < sample_reaches.size() && sample_reaches[kept] > kOneSampleReach) ||
-          voxels_per_depth[kept] >= kDenseGrowth * voxels_per_depth[kept - 1])) {  // < 2^62
+          sampledDensely(voxels_per_depth[kept], voxels_per_depth[kept - 1]))) {
     ++kept;
   }
   return kept;

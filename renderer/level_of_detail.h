@@ -39,6 +39,12 @@ namespace octopoint {
 // told to) and the renderer's are this one.
 inline constexpr std::uint64_t kDenseGrowth = 3;
 
+// The rule for one depth: `finer` voxels against its coarser neighbour's `coarser` (each below
+// 2^62, so the product does not overflow).
+constexpr bool sampledDensely(std::uint64_t finer, std::uint64_t coarser) {
+  return finer >= kDenseGrowth * coarser;
+}
+
 // For the voxel counts of ascending stored depths, how many leading depths are densely sampled: up
 // to (excluding) the first whose count is below kDenseGrowth times the previous one's; at least one
 // when there is any. With `sample_reaches` (Q4 footprints, one per depth, as format version 6 and
