@@ -25,17 +25,18 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   }
   if (table.largestSet() > instances) std::abort();
   std::vector<std::uint32_t> ids(table.largestSet()), again(table.largestSet());
+  CellTable::Scratch scratch = table.scratch();
   std::vector<std::uint8_t> seen(instances);
   for (int pass = 0; pass < 2; ++pass) {
     for (std::uint32_t cell = 0; cell < table.grid().cellCount(); ++cell) {
-      const std::size_t count = table.decode(cell, ids);
+      const std::size_t count = table.decode(cell, ids, scratch);
       if (count > ids.size()) std::abort();
       for (std::size_t k = 0; k < count; ++k) {
         if (ids[k] >= instances || seen[ids[k]] != 0) std::abort();
         seen[ids[k]] = 1;
       }
       for (std::size_t k = 0; k < count; ++k) seen[ids[k]] = 0;
-      if (pass == 1 && (table.decode(cell, again) != count ||
+      if (pass == 1 && (table.decode(cell, again, scratch) != count ||
                         !std::equal(ids.begin(), ids.begin() + static_cast<std::ptrdiff_t>(count),
                                     again.begin())))
         std::abort();

@@ -41,9 +41,10 @@ CellTable parseOrThrow(const std::vector<std::uint8_t>& bytes, std::uint32_t ins
 
 std::vector<std::vector<std::uint32_t>> setsOf(const CellTable& table) {
   std::vector<std::uint32_t> ids(table.grid().instances);
+  CellTable::Scratch scratch = table.scratch();
   std::vector<std::vector<std::uint32_t>> sets;
   for (std::uint32_t cell = 0; cell < table.grid().cellCount(); ++cell) {
-    const std::size_t count = table.decode(cell, ids);
+    const std::size_t count = table.decode(cell, ids, scratch);
     sets.emplace_back(ids.begin(), ids.begin() + static_cast<std::ptrdiff_t>(count));
     std::sort(sets.back().begin(), sets.back().end());
   }
@@ -78,10 +79,11 @@ int run(int argc, char** argv) {
   const CellTable table = parseOrThrow(bytes, instances, input);
   if (decodes > 0) {  // nothing else decoded: the count is decode's alone
     std::vector<std::uint32_t> ids(table.largestSet());
+    CellTable::Scratch scratch = table.scratch();
     std::uint64_t sum = 0;
     for (int k = 0; k < decodes; ++k)
       for (std::uint32_t cell = 0; cell < table.grid().cellCount(); ++cell)
-        sum += table.decode(cell, ids);
+        sum += table.decode(cell, ids, scratch);
     std::printf("decoded %d x %u cells: %llu ids\n", decodes, table.grid().cellCount(),
                 static_cast<unsigned long long>(sum));
     return 0;

@@ -160,7 +160,8 @@ class Frames {
         cut_(cut),
         all_(320, 240),
         with_(320, 240),
-        visible_(scene.instances.size()) {
+        visible_(scene.instances.size()),
+        scratch_(cells.scratch()) {
     SceneError error;
     renderer_.emplace(scene.models, scene.instances, &error);
     if (error != SceneError::kNone) throw cli::Error(scene.label + ": " + describe(error));
@@ -187,7 +188,8 @@ class Frames {
     renderer_->clearVisibleSet();
     drawOne(view, all_, &result.passed_all, &result.points_all, &result.seconds_all);
     const std::int64_t cell = cells_.cellAt(pose.eye);
-    std::size_t count = cell < 0 ? 0 : cells_.decode(static_cast<std::uint32_t>(cell), visible_);
+    std::size_t count =
+        cell < 0 ? 0 : cells_.decode(static_cast<std::uint32_t>(cell), visible_, scratch_);
     if (cut_ && count > 0) dropNearest(pose.eye, count);
     if (cell >= 0) renderer_->setVisibleSet(std::span<const std::uint32_t>(visible_).first(count));
     drawOne(view, with_, &result.passed_cells, &result.points_cells, &result.seconds_cells);
@@ -232,6 +234,7 @@ class Frames {
   std::optional<SceneRenderer> renderer_;
   Framebuffer all_, with_;
   std::vector<std::uint32_t> visible_;
+  CellTable::Scratch scratch_;
 };
 
 int run(int argc, char** argv) {

@@ -56,15 +56,22 @@ CellTableError walkRuns(const std::uint8_t* at, const std::uint8_t* end, std::ui
   return at == end ? CellTableError::kNone : CellTableError::kTrailingBytes;
 }
 
+// The ids' own order: rank k is id k (OCTCELL1's, and OCTCELL2's without order bytes).
+std::vector<std::uint32_t> identityOrder(std::uint32_t instances) {
+  std::vector<std::uint32_t> order(instances);
+  for (std::uint32_t id = 0; id < instances; ++id) order[id] = id;
+  return order;
+}
+
 // The order's runs of ids into `order` (rank -> id): kNone when every id below `instances` comes
 // exactly once and no byte is left. No bytes: the ids' own order.
 CellTableError readOrder(const std::uint8_t* at, const std::uint8_t* end, std::uint32_t instances,
                          std::vector<std::uint32_t>* order) {
-  order->clear();
   if (at == end) {
-    for (std::uint32_t id = 0; id < instances; ++id) order->push_back(id);
+    *order = identityOrder(instances);
     return CellTableError::kNone;
   }
+  order->clear();
   std::vector<bool> seen(instances);
   std::uint32_t runs = 0;
   if (!readVarint(at, end, &runs)) return CellTableError::kBadOrder;
@@ -188,7 +195,7 @@ CellTable CellTable::parse(std::span<const std::uint8_t> bytes, std::uint32_t sc
     if (why != CellTableError::kNone) return fail(why);
     offsets_at = layers_end + 4 + static_cast<std::size_t>(order_bytes);
   } else {
-    static_cast<void>(readOrder(p, p, g.instances, &table.order_));  // the ids' own order
+    table.order_ = identityOrder(g.instances);
   }
   const std::size_t payload_at = offsets_at + 4 * (cells + 1);
   if (bytes.size() < payload_at) return fail(CellTableError::kTruncated);
@@ -227,7 +234,6 @@ CellTable CellTable::parse(std::span<const std::uint8_t> bytes, std::uint32_t sc
     bound[c] = static_cast<std::uint32_t>(std::min<std::uint64_t>(count, g.instances));
     table.largest_ = std::max<std::size_t>(table.largest_, bound[c]);
   }
-  table.scratch_.assign((std::size_t{g.instances} + 63) / 64, 0);
   *error = CellTableError::kNone;
   return table;
 }
@@ -249,50 +255,59 @@ std::int64_t CellTable::cellAt(const Point3<std::int64_t>& eye) const {
   return (layer * grid_.nz + z) * grid_.nx + x;
 }
 
-std::size_t CellTable::decode(std::uint32_t cell, std::span<std::uint32_t> out) const {
+CellTable::Scratch CellTable::scratch() const {
+  return {std::vector<std::uint64_t>((std::size_t{grid_.instances} + 63) / 64, 0)};
+}
+
+std::size_t CellTable::decode(std::uint32_t cell, std::span<std::uint32_t> out,
+                              Scratch& scratch) const {
   if (cell >= grid_.cellCount()) return 0;
+  if (scratch.bits.size() != (std::size_t{grid_.instances} + 63) / 64) return 0;
   // The chain: the cell, the cell it refers to, and so on (validated on parse: each earlier, at
-  // most kMaxCellChain long, every run well formed and below the instance count).
-  std::uint32_t chain[kMaxCellChain];
+  // most kMaxCellChain long, every run well formed and below the instance count), each with its
+  // runs' bytes (after its head) and their count.
+  struct Link {
+    const std::uint8_t *at, *end;
+    std::uint32_t runs;
+  };
+  Link chain[kMaxCellChain];
   int length = 0;
   for (std::uint32_t c = cell;;) {
-    chain[length++] = c;
-    const std::uint8_t* at = bytes_.data() + payload_at_ + offset(c);
+    Link& link = chain[length++];
+    link.at = bytes_.data() + payload_at_ + offset(c);
+    link.end = bytes_.data() + payload_at_ + offset(c + 1);
     CellHead head;
-    static_cast<void>(
-        readHead(at, bytes_.data() + payload_at_ + offset(c + 1), references_, c, &head));
+    static_cast<void>(readHead(link.at, link.end, references_, c, &head));
+    link.runs = head.runs;
     if (head.back == 0 || length == kMaxCellChain) break;
     c -= head.back;
   }
   std::size_t written = 0;
   std::uint64_t count = 0;
-  const auto runsOf = [&](std::uint32_t c, auto take) {
-    const std::uint8_t* at = bytes_.data() + payload_at_ + offset(c);
-    const std::uint8_t* end = bytes_.data() + payload_at_ + offset(c + 1);
-    CellHead head;
-    static_cast<void>(readHead(at, end, references_, c, &head));
-    static_cast<void>(walkRuns(at, end, head.runs, grid_.instances, &count, take));
+  const auto runsOf = [&](const Link& link, auto take) {
+    static_cast<void>(walkRuns(link.at, link.end, link.runs, grid_.instances, &count, take));
   };
   if (length == 1) {  // its own runs: the ranks straight out
-    runsOf(cell, [&](std::uint32_t first, std::uint64_t run) {
+    runsOf(chain[0], [&](std::uint32_t first, std::uint64_t run) {
       for (std::uint64_t k = 0; k < run && written < out.size(); ++k)
         out[written++] = order_[first + k];
     });
     return written;
   }
   // A difference: toggle every chain cell's runs in the scratch bits, then read them (clearing).
-  std::size_t low = scratch_.size(), high = 0;
+  std::vector<std::uint64_t>& bits = scratch.bits;
+  std::size_t low = bits.size(), high = 0;
   for (int k = 0; k < length; ++k) {
     runsOf(chain[k], [&](std::uint32_t first, std::uint64_t run) {
-      toggle(scratch_.data(), first, run, &low, &high);
+      toggle(bits.data(), first, run, &low, &high);
     });
   }
-  for (std::size_t word = low; word <= high && word < scratch_.size(); ++word) {
-    std::uint64_t bits = scratch_[word];
-    scratch_[word] = 0;
-    while (bits != 0 && written < out.size()) {
-      out[written++] = order_[word * 64 + static_cast<std::size_t>(std::countr_zero(bits))];
-      bits &= bits - 1;
+  for (std::size_t word = low; word <= high && word < bits.size(); ++word) {
+    std::uint64_t set = bits[word];
+    bits[word] = 0;
+    while (set != 0 && written < out.size()) {
+      out[written++] = order_[word * 64 + static_cast<std::size_t>(std::countr_zero(set))];
+      set &= set - 1;
     }
   }
   return written;

@@ -80,11 +80,17 @@ class CellTable {
   std::size_t bytes() const { return bytes_.size(); }
   // The cell holding `eye` (Q.24 scene edges), or -1 outside the grid.
   std::int64_t cellAt(const Point3<std::int64_t>& eye) const;
+  // Decoding's work space for this table: a bit per rank, all clear between decodes. Each thread
+  // that decodes holds its own, made once, so that decoding allocates nothing.
+  struct Scratch {
+    std::vector<std::uint64_t> bits;
+  };
+  Scratch scratch() const;
   // Cell `cell`'s ids, distinct, in the table's order (not sorted), into `out`: their count, at
-  // most out.size() (room for largestSet() holds every set). No allocation: the scratch bits are
-  // the table's own, sized on parse, so one table decodes on one thread at a time. Work: the runs
-  // of at most kMaxCellChain cells and, for a cell coded as a difference, a pass over its words.
-  std::size_t decode(std::uint32_t cell, std::span<std::uint32_t> out) const;
+  // most out.size() (room for largestSet() holds every set); 0 with a scratch made for another
+  // table. Work: the runs of at most kMaxCellChain cells and, for a cell coded as a difference, a
+  // pass over its words.
+  std::size_t decode(std::uint32_t cell, std::span<std::uint32_t> out, Scratch& scratch) const;
   // At least the largest set of any cell, at most the instance count.
   std::size_t largestSet() const { return largest_; }
 
@@ -94,7 +100,6 @@ class CellTable {
   std::vector<std::uint32_t> order_;  // rank -> id
   bool references_ = false;           // OCTCELL2: cells may be differences
   std::size_t offsets_at_ = 0, payload_at_ = 0, largest_ = 0;
-  mutable std::vector<std::uint64_t> scratch_;  // a bit per rank, all clear between decodes
   std::uint32_t offset(std::uint32_t i) const;
 };
 

@@ -71,6 +71,7 @@ class CityFrames {
     if (why != CellTableError::kNone)
       throw cli::Error(cli::displayPath(cells) + ": cell table " + describe(why));
     visible_.resize(cells_->largestSet());
+    scratch_ = cells_->scratch();
   }
 
   cv::Mat draw(const PerspectiveView& view, Rgb background, SceneDrawStats* stats) {
@@ -82,7 +83,8 @@ class CityFrames {
       if (cell < 0) {
         renderer_->clearVisibleSet();
       } else {
-        const std::size_t count = cells_->decode(static_cast<std::uint32_t>(cell), visible_);
+        const std::size_t count =
+            cells_->decode(static_cast<std::uint32_t>(cell), visible_, scratch_);
         renderer_->setVisibleSet(std::span<const std::uint32_t>(visible_).first(count));
       }
     }
@@ -101,6 +103,7 @@ class CityFrames {
   std::optional<SceneRenderer> renderer_;
   std::optional<CellTable> cells_;
   std::vector<std::uint32_t> visible_;  // the eye's cell's set, room for the largest
+  CellTable::Scratch scratch_;          // decoding's bits, sized once
   Framebuffer frame_{1, 1};
 };
 

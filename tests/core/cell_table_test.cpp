@@ -9,6 +9,7 @@
 #include <cstdint>
 #include <numeric>
 #include <random>
+#include <thread>
 #include <vector>
 
 #include "renderer/cell_table_bytes.h"
@@ -44,12 +45,16 @@ std::vector<std::vector<std::uint32_t>> smallSets() {
 
 constexpr CellTableEncoding kVersion1{true, false, false};
 
-// Every cell's set, sorted (decode gives them in the table's order).
-std::vector<std::vector<std::uint32_t>> decodedSets(const CellTable& table) {
+// Every cell's set, sorted (decode gives them in the table's order), decoded with `scratch` (else
+// a scratch of its own).
+std::vector<std::vector<std::uint32_t>> decodedSets(const CellTable& table,
+                                                    CellTable::Scratch* scratch = nullptr) {
+  CellTable::Scratch own = table.scratch();
+  if (scratch == nullptr) scratch = &own;
   std::vector<std::uint32_t> out(table.largestSet());
   std::vector<std::vector<std::uint32_t>> sets;
   for (std::uint32_t cell = 0; cell < table.grid().cellCount(); ++cell) {
-    const std::size_t count = table.decode(cell, out);
+    const std::size_t count = table.decode(cell, out, *scratch);
     sets.emplace_back(out.begin(), out.begin() + static_cast<std::ptrdiff_t>(count));
     std::sort(sets.back().begin(), sets.back().end());
   }
@@ -196,16 +201,20 @@ TEST(CellTable, Version2DecodesDifferencesAndOrder) {
   ASSERT_EQ(error, CellTableError::kNone) << describe(error);
   const std::vector<std::vector<std::uint32_t>> expected = {
       {0, 8, 9}, {3, 8, 9}, {0, 1, 2, 4, 5, 6, 7}, {}, {7}};
-  // Twice, in another order: the scratch bits are left clear by every decode.
-  EXPECT_EQ(decodedSets(table), expected);
+  // Twice, in another order, with one scratch: its bits are left clear by every decode.
+  CellTable::Scratch scratch = table.scratch();
+  EXPECT_EQ(decodedSets(table, &scratch), expected);
   std::vector<std::uint32_t> out(10);
-  EXPECT_EQ(table.decode(1, out), 3u);
-  EXPECT_EQ(table.decode(2, out), 7u);
-  EXPECT_EQ(decodedSets(table), expected);
+  EXPECT_EQ(table.decode(1, out, scratch), 3u);
+  EXPECT_EQ(table.decode(2, out, scratch), 7u);
+  EXPECT_EQ(decodedSets(table, &scratch), expected);
   // A buffer shorter than the set: filled, never past.
   std::vector<std::uint32_t> two(2);
-  EXPECT_EQ(table.decode(2, two), 2u);
-  EXPECT_EQ(decodedSets(table), expected);
+  EXPECT_EQ(table.decode(2, two, scratch), 2u);
+  EXPECT_EQ(decodedSets(table, &scratch), expected);
+  // A scratch made for a table of another instance count: nothing decoded.
+  CellTable::Scratch wrong{std::vector<std::uint64_t>(2)};
+  EXPECT_EQ(table.decode(2, out, wrong), 0u);
 }
 
 TEST(CellTable, Version2RefusesMalformedOrderAndReferences) {
@@ -255,18 +264,23 @@ TEST(CellTable, Version2RefusesMalformedOrderAndReferences) {
             CellTableError::kBadReference);
 }
 
-TEST(CellTable, OrderAndDifferencesMakeScatteredSetsSmall) {
-  // 4096 instances whose ids are shuffled; each cell of a 16 x 16 grid sees a square of a 64 x 64
-  // plan of them around it: coherent in space, scattered in ids.
-  constexpr std::uint32_t kSide = 64, kCells = 16;
-  std::vector<std::uint32_t> id_at(kSide * kSide);
-  std::iota(id_at.begin(), id_at.end(), 0u);
-  std::shuffle(id_at.begin(), id_at.end(), std::mt19937(7));
+// 4096 instances whose ids are shuffled; each cell of a 16 x 16 grid sees a square of a 64 x 64
+// plan of them around it: coherent in space, scattered in ids.
+constexpr std::uint32_t kSide = 64, kCells = 16;
+
+CellGrid scatteredGrid() {
   CellGrid grid = smallGrid();
   grid.instances = kSide * kSide;
   grid.nx = grid.nz = kCells;
   grid.ny = 1;
   grid.y = {-kEdge, 0};
+  return grid;
+}
+
+std::vector<std::vector<std::uint32_t>> scatteredSets() {
+  std::vector<std::uint32_t> id_at(kSide * kSide);
+  std::iota(id_at.begin(), id_at.end(), 0u);
+  std::shuffle(id_at.begin(), id_at.end(), std::mt19937(7));
   std::vector<std::vector<std::uint32_t>> sets(kCells * kCells);
   for (std::uint32_t cz = 0; cz < kCells; ++cz) {
     for (std::uint32_t cx = 0; cx < kCells; ++cx) {
@@ -278,6 +292,12 @@ TEST(CellTable, OrderAndDifferencesMakeScatteredSetsSmall) {
       std::sort(set.begin(), set.end());
     }
   }
+  return sets;
+}
+
+TEST(CellTable, OrderAndDifferencesMakeScatteredSetsSmall) {
+  const CellGrid grid = scatteredGrid();
+  const std::vector<std::vector<std::uint32_t>> sets = scatteredSets();
   const std::size_t v1 = encodeCellTable(grid, sets, kVersion1).size();
   const std::vector<std::uint8_t> both = encodeCellTable(grid, sets);
   const std::size_t order_only = encodeCellTable(grid, sets, {false, true, false}).size();
@@ -289,6 +309,22 @@ TEST(CellTable, OrderAndDifferencesMakeScatteredSetsSmall) {
   const CellTable table = CellTable::parse(both, grid.instances, &error);
   ASSERT_EQ(error, CellTableError::kNone) << describe(error);
   EXPECT_EQ(decodedSets(table), sets);
+}
+
+TEST(CellTable, TwoThreadsDecodeOneTableEachWithItsScratch) {
+  const std::vector<std::vector<std::uint32_t>> sets = scatteredSets();
+  CellTableError error;
+  const CellTable table =
+      CellTable::parse(encodeCellTable(scatteredGrid(), sets), kSide * kSide, &error);
+  ASSERT_EQ(error, CellTableError::kNone) << describe(error);
+  std::vector<std::vector<std::uint32_t>> first, second;
+  std::thread other([&] {
+    for (int round = 0; round < 10; ++round) second = decodedSets(table);
+  });
+  for (int round = 0; round < 10; ++round) first = decodedSets(table);
+  other.join();
+  EXPECT_EQ(first, sets);
+  EXPECT_EQ(second, sets);
 }
 
 }  // namespace
