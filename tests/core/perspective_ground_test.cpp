@@ -110,8 +110,8 @@ TEST(PerspectiveGroundTest, EveryLeafNearTheEyeIsWithinHalfAPixelOnALargeFrame) 
         for (const int pitch : {-10, -35}) {
           SCOPED_TRACE("height " + std::to_string(height) + ", fov " + std::to_string(fov) +
                        ", yaw " + std::to_string(yaw) + ", pitch " + std::to_string(pitch));
-          PerspectiveCamera camera = perspectiveCameraOf({x, top - height, z}, yaw, pitch, fov,
-                                                         2560, 1920);
+          PerspectiveCamera camera =
+              perspectiveCameraOf({x, top - height, z}, yaw, pitch, fov, 2560, 1920);
           camera.near = nearPlaneForDepth(kGroundDepth);
           PerspectiveView view;
           ASSERT_EQ(buildPerspectiveView(camera, kDefaultFractionBits, &view),
