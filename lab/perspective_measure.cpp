@@ -69,14 +69,21 @@ class ExactVoxels {
     for (int row = 0; row < 3; ++row)
       c[row] = m_[row][0] * d[0] + m_[row][1] * d[1] + m_[row][2] * d[2];
     ++out.leaves;
+    const double half = kUnit * std::ldexp(1.0, -(depth + 1));
     if (c[2] > 0) {
       const Projected exact = exactProjection(camera_, c[0], c[1], c[2]);
-      out.max_position_px =
-          std::max({out.max_position_px, std::abs(x - exact.x), std::abs(y - exact.y)});
+      const double error = std::max(std::abs(x - exact.x), std::abs(y - exact.y));
+      out.max_position_all_px = std::max(out.max_position_all_px, error);
+      // The splat's reach: sqrt(3) half edges at the centre's depth, less than 0.87 of an edge.
+      const double reach = focalOf(camera_) * 1.74 * half / c[2];
+      if (exact.x >= -reach && exact.y >= -reach && exact.x <= camera_.width + reach &&
+          exact.y <= camera_.height + reach) {
+        out.max_position_px = std::max(out.max_position_px, error);
+      }
     } else {
       out.max_position_px = INFINITY;  // a voxel behind the eye was drawn
+      out.max_position_all_px = INFINITY;
     }
-    const double half = kUnit * std::ldexp(1.0, -(depth + 1));
     std::array<Vec2, 8> corners{};
     for (unsigned k = 0; k < 8; ++k) {
       const double s[3] = {(k & 4) ? half : -half, (k & 2) ? half : -half, (k & 1) ? half : -half};

@@ -15,7 +15,12 @@ struct PerspectiveMeasurement {
   // Every leaf the frame's walks hand over (the voxels the frame draws, of whichever stored depth
   // detail by distance chose), against the double-precision projection of its centre.
   std::uint64_t leaves = 0;
-  double max_position_px = 0;  // the largest |x| or |y| difference, pixels
+  // The largest |x| or |y| difference, pixels, of a leaf that draws: one whose splat (within
+  // sqrt(3) half voxels of its centre) reaches the screen. The walk passes over subtrees, not
+  // leaves, so it also hands over leaves wholly off the screen, which draw nothing: counted in
+  // max_position_all_px (every leaf handed over).
+  double max_position_px = 0;
+  double max_position_all_px = 0;
   // The same voxels drawn with the double-precision projection of their 8 corners (each covers the
   // pixels whose centres lie in the corners' convex hull): the silhouette. A voxel that reaches
   // behind the near plane is left out of it (counted in near_voxels).

@@ -29,7 +29,8 @@ Draws the perspective view from the eye as octopoint-render --eye draws it (deta
 occlusion culling) and measures, per frame size, one CSV row on stdout (docs/perspective.md,
 "Walk-through views"):
   leaves             the voxels the frame's walks hand over
-  max_position_px    the largest distance of one from its centre's double-precision projection
+  max_position_px    the largest distance of one whose splat reaches the screen from its
+                     centre's double-precision projection
   silhouette_pixels  the pixels the same voxels cover drawn in double precision (each the convex
                      hull of its 8 projected corners, a pixel where its centre lies inside)
   empty_share        the share of those the frame leaves empty (docs/tradeoff.md's metric)
@@ -44,6 +45,8 @@ occlusion culling) and measures, per frame size, one CSV row on stdout (docs/per
   orthographic_depth, orthographic_leaves   its depth and leaves
   per_point_ratio    the view's time per point (culled) over the orthographic frame's per leaf
   depths             the stored depths the view chose among
+  max_position_all_px  max_position_px over every leaf handed over, those wholly off the screen
+                     (which draw nothing) included
 
   --model NAME        an embedded model (default: the default model)
   --file M.oct        a model file (not chunked)
@@ -141,7 +144,7 @@ int run(int argc, char** argv) {
       "width,height,leaves,max_position_px,silhouette_pixels,empty_share,near_voxels,"
       "covered_pixels,points_unculled,points_culled,per_pixel_unculled,per_pixel_culled,"
       "perspective_ms,orthographic_ms,time_ratio,orthographic_depth,orthographic_leaves,"
-      "per_point_ratio,depths\n");
+      "per_point_ratio,depths,max_position_all_px\n");
   for (const cli::FrameSize& size : options.sizes) {
     const PerspectiveView view = scanEyeView(*cube, eye, options.look, options.fov,
                                              modelNearPlane(model, options.near, "--near"),
@@ -166,7 +169,8 @@ int run(int argc, char** argv) {
       depths.append(std::to_string(depth));
     }
     std::printf(
-        "%d,%d,%llu,%.4f,%llu,%.5f,%llu,%llu,%llu,%llu,%.3f,%.3f,%.3f,%.3f,%.2f,%d,%llu,%.2f,%s\n",
+        "%d,%d,%llu,%.4f,%llu,%.5f,%llu,%llu,%llu,%llu,%.3f,%.3f,%.3f,%.3f,%.2f,%d,%llu,%.2f,%s,"
+        "%.4f\n",
         size.width, size.height, static_cast<unsigned long long>(m.leaves), m.max_position_px,
         static_cast<unsigned long long>(m.silhouette_pixels), m.emptyShare(),
         static_cast<unsigned long long>(m.near_voxels),
@@ -175,7 +179,7 @@ int run(int argc, char** argv) {
         static_cast<unsigned long long>(m.points_culled), per_pixel(m.points_unculled),
         per_pixel(m.points_culled), m.perspective_ms, m.orthographic_ms, time_ratio,
         m.orthographic_depth, static_cast<unsigned long long>(m.orthographic_leaves),
-        per_point_ratio, depths.c_str());
+        per_point_ratio, depths.c_str(), m.max_position_all_px);
     std::fflush(stdout);
     if (!options.pictures.empty()) {
       std::vector<std::uint8_t> empty(silhouette.size());

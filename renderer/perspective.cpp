@@ -52,6 +52,15 @@ std::int64_t nearPlaneFloor(std::int64_t focal_q16, std::int32_t width, std::int
   return 4 * ((focal_q16 >> 16) + 1 + (std::max(width, height) + 1) / 2);
 }
 
+int walkFractionBits(std::int64_t focal_q16, std::int32_t width, std::int32_t height,
+                     std::int64_t near) {
+  // f (Q.16) rounded up, plus half the larger side, times 68: below 2^24 for every frame.
+  const std::int64_t need = 68 * ((focal_q16 >> 16) + 1 + (std::max(width, height) + 1) / 2);
+  int bits = 0;
+  while (bits < kMaxWalkBits && (near << bits) < need) ++bits;
+  return bits;
+}
+
 const char* describe(PerspectiveError error) {
   switch (error) {
     case PerspectiveError::kNone:
@@ -103,6 +112,7 @@ PerspectiveError buildPerspectiveView(const PerspectiveCamera& camera, int fract
   if (!focal) return PerspectiveError::kBadFieldOfView;  // unreachable for 10..120 degrees
   built.focal_q16 = *focal;
   built.camera.near = std::max(camera.near, nearPlaneFloor(*focal, camera.width, camera.height));
+  built.walk_bits = walkFractionBits(*focal, camera.width, camera.height, built.camera.near);
   built.centre_x = std::int64_t{camera.width} << (fraction_bits - 1);
   built.centre_y = std::int64_t{camera.height} << (fraction_bits - 1);
   *view = built;
@@ -151,7 +161,10 @@ PerspectiveError orbitPerspective(const Camera& camera, Angle fov, int fraction_
   return PerspectiveError::kNone;
 }
 
-CameraPoint toCameraSpace(const PerspectiveView& view, const ModelPoint& point) {
+namespace {
+
+// The camera-space position of `point` rounded once to 2^-bits units (bits 0..kMaxWalkBits).
+CameraPoint rotateAboutEye(const PerspectiveView& view, const ModelPoint& point, int bits) {
   // |point| <= one cube edge and |eye| <= 128 edges: |d| < 2^31.1, each product below 2^61.1,
   // each sum of three below 2^62.7.
   assert(magnitude(point.x) <= kPerspectiveUnit && magnitude(point.y) <= kPerspectiveUnit &&
@@ -161,9 +174,19 @@ CameraPoint toCameraSpace(const PerspectiveView& view, const ModelPoint& point) 
   std::int64_t c[3];
   for (int row = 0; row < 3; ++row) {
     const auto& m = view.world_to_camera.m_q30[row];
-    c[row] = roundShiftRight(m[0] * d[0] + m[1] * d[1] + m[2] * d[2], 30);
+    c[row] = roundShiftRight(m[0] * d[0] + m[1] * d[1] + m[2] * d[2], 30 - bits);
   }
   return {c[0], c[1], c[2]};
+}
+
+}  // namespace
+
+CameraPoint toCameraSpace(const PerspectiveView& view, const ModelPoint& point) {
+  return rotateAboutEye(view, point, 0);
+}
+
+CameraPoint toWalkSpace(const PerspectiveView& view, const ModelPoint& point) {
+  return rotateAboutEye(view, point, view.walk_bits);
 }
 
 std::optional<ScreenPoint> project(const PerspectiveView& view, const CameraPoint& point) {

@@ -112,6 +112,11 @@ struct PerspectiveView {
   // (renderer/scene_renderer.h) draws a model scaled by 2^s with depth_shift + s of the scene's
   // own, so that every instance's keys measure the same distance in one z-buffer.
   int depth_shift = kPerspectiveDepthShift;
+  // The walk (renderer/perspective_walk.h) carries camera-space positions in Q.(24 + walk_bits)
+  // cube edges, so that the rounding of its per-level child offsets, up to half a Q.(24 +
+  // walk_bits) unit per addition, stays below 1/8 pixel (walkFractionBits). 0 where the
+  // Q.24 unit is fine enough (most views: their frames are those of a walk in Q.24).
+  int walk_bits = 0;
 };
 
 // The least near plane a view keeps, Q.24 cube edges: 4 (f + max(W, H) / 2) units for the focal
@@ -121,6 +126,20 @@ struct PerspectiveView {
 // nearer plane to it: a 1 km cube's unit is 60 micrometres, and at a few thousand units from the
 // eye the rounding of the eye and the points alone would move them by a pixel and more.
 std::int64_t nearPlaneFloor(std::int64_t focal_q16, std::int32_t width, std::int32_t height);
+
+// The least number of sub-unit bits S (0..kMaxWalkBits) with which the walk's rounding stays below
+// 1/8 pixel at the near plane `near` (Q.24 cube edges): a leaf of depth 16 is the root's rounding
+// plus 16 child offsets, each within half a Q.(24 + S) unit per axis, 17 / 2^(S + 1) units in
+// all, which move its projection by at most (f + max(W, H) / 2) / near pixels per unit (as
+// nearPlaneFloor's): 68 (f + max(W, H) / 2) <= near * 2^S. Without them (S = 0), near a large
+// model's near plane a leaf could be 2 pixels off (f / near grows with the frame).
+inline constexpr int kMaxWalkBits = 8;
+int walkFractionBits(std::int64_t focal_q16, std::int32_t width, std::int32_t height,
+                     std::int64_t near);
+
+// The camera-space position of a model point in the walk's units, Q.(24 + view.walk_bits): as
+// toCameraSpace, rounded once to that unit.
+CameraPoint toWalkSpace(const PerspectiveView& view, const ModelPoint& point);
 
 [[nodiscard]] PerspectiveError buildPerspectiveView(const PerspectiveCamera& camera,
                                                     int fraction_bits, PerspectiveView* view);

@@ -81,13 +81,13 @@ PerspectiveWalkTables perspectiveWalkTables(const PerspectiveView& view, int dep
   const auto& m = view.world_to_camera.m_q30;
   for (int level = 0; level < depth; ++level) {
     // A child of a node of `level` lies 2^-(level+2) cube edges = 2^(22-level) units from it along
-    // each model axis: the rotated sum in Q1.30, shifted to units once.
+    // each model axis: the rotated sum in Q1.30, shifted once to the walk's units, Q.(24 + S).
     for (unsigned k = 0; k < 8; ++k) {
       const std::int64_t s[3] = {(k & 4) ? 1 : -1, (k & 2) ? 1 : -1, (k & 1) ? 1 : -1};
       std::int64_t c[3];
       for (int row = 0; row < 3; ++row) {
         c[row] = roundShiftRight(m[row][0] * s[0] + m[row][1] * s[1] + m[row][2] * s[2],
-                                 30 - (kPerspectiveUnitBits - 2 - level));
+                                 30 - (kPerspectiveUnitBits - 2 - level + view.walk_bits));
       }
       tables.child_offset[static_cast<std::size_t>(level)][k] = {c[0], c[1], c[2]};
     }

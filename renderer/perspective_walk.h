@@ -70,10 +70,11 @@ struct AffineSubtree {
   std::int64_t half_x = 0, half_y = 0;
 };
 
-// Per-frame tables of the walk: each level's child offsets in camera space, each level's reach,
+// Per-frame tables of the walk: each level's child offsets in camera space (the walk's units,
+// Q.(24 + view.walk_bits) cube edges), each level's reach (Q.24),
 // the frustum's side slopes. Built once per frame and level depth (about 1.6 KB).
 struct PerspectiveWalkTables {
-  std::array<std::array<CameraPoint, 8>, kMaxRenderDepth> child_offset{};
+  std::array<std::array<CameraPoint, 8>, kMaxRenderDepth> child_offset{};  // Q.(24 + walk_bits)
   std::array<std::int64_t, kMaxRenderDepth + 1> reach{};  // a node of level l: Q.24 cube edges
   // The frustum's side planes, Q2.30 slopes: the screen spans x from -left * z to right * z and y
   // from -top * z to bottom * z (left = centre_x / f, right = (width - centre_x) / f, ...: the
@@ -179,8 +180,9 @@ class PerspectiveWalk {
         node_(level.nodes.data()) {}
 
   bool run() {
-    // The root's centre is the model's origin.
-    const CameraPoint root = toCameraSpace(view_, ModelPoint{0, 0, 0});
+    // The root's centre is the model's origin. The walk's centres are Q.(24 + walk_bits) (fine);
+    // every test and projection takes them rounded to Q.24 (unit).
+    const CameraPoint root = toWalkSpace(view_, ModelPoint{0, 0, 0});
     if (parts_.index != nullptr && parts_.index->bottom >= 0) {
       visitIndexed(0, 0, root, ModelPoint{0, 0, 0}, parts_.detail.start());
     } else {
@@ -200,8 +202,9 @@ class PerspectiveWalk {
 
   // What to do at an inner node: pass over it (aborted, outside the frustum, or drawn by another
   // depth), draw it from its affine map (`affine`), or descend.
-  Step judge(int level, const CameraPoint& centre, DetailState& state, AffineProjection& affine) {
+  Step judge(int level, const CameraPoint& fine, DetailState& state, AffineProjection& affine) {
     if (abort_ != nullptr && abort_->load(std::memory_order_relaxed)) aborted_ = true;
+    const CameraPoint centre = unit(fine);
     const std::int64_t reach = tables_.reach[static_cast<std::size_t>(level)];
     if (aborted_ || outsideFrustum(centre, reach)) return Step::kPass;
     if (!state.committed && parts_.detail.node(level, centre.z, state) == DetailVerdict::kOthers) {
@@ -220,6 +223,15 @@ class PerspectiveWalk {
     return Step::kDescend;
   }
 
+  // A walk position, Q.(24 + walk_bits), rounded to Q.24 (ties toward +infinity, as
+  // roundShiftRight): the same point where walk_bits is 0.
+  CameraPoint unit(const CameraPoint& fine) const {
+    const int bits = view_.walk_bits;
+    if (bits == 0) return fine;
+    return {roundShiftRight(fine.x, bits), roundShiftRight(fine.y, bits),
+            roundShiftRight(fine.z, bits)};
+  }
+
   // The bucket of tables_.affine_depth a node at `c` (c.z > 0) takes: the most lenient whose
   // bound on max(|c.x|, |c.y|) / c.z it meets, 0 (the frustum's) where none.
   static constexpr std::size_t kNearestBucket = PerspectiveWalkTables::kAffineBuckets - 1;
@@ -231,23 +243,10 @@ class PerspectiveWalk {
     return 0;
   }
 
-  // A node in stream order, its mask byte at node_.
+  // A node in stream order, its mask byte at node_; `centre` in the walk's units.
   void visit(int level, const CameraPoint& centre, DetailState state) {
     if (level == tables_.depth) {
-      if (state.committed || parts_.detail.drawsLeaf(level, centre.z, state)) {
-        // The map at the leaf gives its splat's extent and its position (its centre: within half
-        // a unit in the last place plus f * 2^-31 pixel of the exact projection, as project's);
-        // where no map fits (an axis vector past int64), project alone, and no extent.
-        AffineProjection affine;
-        if (affineAtInto(view_, centre, &affine)) {
-          const Point3<std::int64_t> half = voxelHalfExtent(cubeShadow(affine), tables_.depth);
-          sink_(PerspectiveLeaf{leaf_, affine.centre.x, affine.centre.y, affine.centre.z, half.x,
-                                half.y});
-        } else if (const std::optional<ScreenPoint> p = project(view_, centre)) {
-          sink_(PerspectiveLeaf{leaf_, p->x, p->y, p->z, 0, 0});
-        }
-      }
-      ++leaf_;
+      leaf(unit(centre), state);
       return;
     }
     const std::uint8_t mask = *node_++;
@@ -269,6 +268,24 @@ class PerspectiveWalk {
         visit(level + 1, {centre.x + o.x, centre.y + o.y, centre.z + o.z}, state);
       }
     }
+  }
+
+  // A leaf met in stream order, its centre in Q.24.
+  void leaf(const CameraPoint& centre, DetailState& state) {
+    if (state.committed || parts_.detail.drawsLeaf(tables_.depth, centre.z, state)) {
+      // The map at the leaf gives its splat's extent and its position (its centre: within half
+      // a unit in the last place plus f * 2^-31 pixel of the exact projection, as project's);
+      // where no map fits (an axis vector past int64), project alone, and no extent.
+      AffineProjection affine;
+      if (affineAtInto(view_, centre, &affine)) {
+        const Point3<std::int64_t> half = voxelHalfExtent(cubeShadow(affine), tables_.depth);
+        sink_(PerspectiveLeaf{leaf_, affine.centre.x, affine.centre.y, affine.centre.z, half.x,
+                              half.y});
+      } else if (const std::optional<ScreenPoint> p = project(view_, centre)) {
+        sink_(PerspectiveLeaf{leaf_, p->x, p->y, p->z, 0, 0});
+      }
+    }
+    ++leaf_;
   }
 
   // A node above the index's bottom, by its index entry: its children nearest the eye first.
@@ -524,7 +541,9 @@ namespace octopoint {
 // Draws `level` into `frame` (cleared by the caller): each leaf covers the pixels whose centres lie
 // within its voxel's projected extent (padded by the rounding), or its one pixel where that
 // extent holds no pixel centre; its position is within `max_error` plus depth / 2 units in the
-// last place of its exact projection. False when aborted. A frame cleared with
+// last place of its exact projection, plus what its camera-space centre's rounding moves it: half
+// a Q.24 unit (at most 1/8 pixel, nearPlaneFloor) and the walk's sums (at most 1/8 pixel,
+// walkFractionBits). False when aborted. A frame cleared with
 // PixelPayload::kColourNormal takes each leaf's normal index and the depth code of
 // renderer/perspective_depth.h (false, nothing drawn, for a level without normals).
 bool drawPerspective(const LevelView& level, const PerspectiveView& view,
