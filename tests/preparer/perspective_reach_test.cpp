@@ -40,8 +40,8 @@ struct PerspectiveAirborne {
 // at a slant (or off the axis from above) the walls it left out, and the ground under a roof
 // seen through them, are holes of the scan itself, which the coarsest depth's stacked cubes
 // cover and no finer depth does (with the roofs, depth 7, whose samples are denser than its
-// voxels, leaves 2% of that surface empty from above and 5% at a slant); the holes measured here
-// are those of the sampling alone.
+// voxels, leaves 2 to 3% of that surface empty from above and 5 to 6% at a slant); the holes
+// measured here are those of the sampling alone.
 PerspectiveAirborne preparePerspectiveAirborne(AirborneSampling sampling) {
   prepare::PrepareOptions options;
   options.name = "airborne";
@@ -81,7 +81,8 @@ struct GroundView {
   const char* name;
   int pitch;
 };
-constexpr GroundView kViews[] = {{"from above", 0}, {"45 degrees down", 45}, {"30 degrees down", 60}};
+constexpr GroundView kViews[] = {
+    {"from above", 0}, {"45 degrees down", 45}, {"30 degrees down", 60}};
 
 PerspectiveView groundView(const GroundView& v, int width, int height, int finest_depth) {
   Camera camera;
