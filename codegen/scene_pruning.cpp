@@ -7,6 +7,7 @@
 #include "codegen/eye_visibility.h"
 #include "codegen/octree_encoder.h"
 #include "codegen/prepare_error.h"
+#include "codegen/sample_reach.h"
 #include "codegen/visibility.h"
 #include "renderer/level_of_detail.h"
 #include "tools/scan_eye.h"
@@ -128,7 +129,11 @@ void pruneModel(PreparedModel& model, const PrepareOptions& options, const std::
     level.pruning_seconds = secondsSince(start) + eye_seconds;
   }
   if (!options.visibility_eyes.empty()) keepDenseDepths(model, flags);
-  model.sample_reaches_measured = false;  // on the levels as they were
+  // The reaches are the scan's sampling, measured on the levels as they were: what pruning leaves
+  // out no eye sees, and measured on what is left, an eye-pruned level's missing back looked like
+  // samples lying farther apart, which widened every splat of its perspective frames (and so
+  // changed the frames the pruning keeps the same).
+  recordSampleReaches(model);
   for (std::size_t k = 0; k < model.levels.size(); ++k) {
     const auto start = std::chrono::steady_clock::now();
     keepFlagged(model.levels[k], keys[k], flags[k], path);

@@ -232,7 +232,11 @@ HeldParts assembleHeldParts(const ProgressiveModel& model) {
          model.levelDepth(static_cast<int>(drawable)) <= kMaxRenderDepth) {
     ++drawable;
   }
-  held_parts.detail_count = denseDepthCount(std::span(voxels).first(drawable));
+  // With the stored sample reaches (version 7; one footprint before): as a whole model's frame.
+  std::array<std::int32_t, chunked::kMaxChunkedLevels> reaches{};
+  for (std::size_t i = 0; i < drawable; ++i) reaches[i] = model.head().levels[i].sample_reach;
+  held_parts.detail_count =
+      denseDepthCount(std::span(voxels).first(drawable), std::span(reaches).first(drawable));
   for (std::size_t i = 0; i < held_parts.detail_count; ++i)
     held_parts.detail_depths[i] = model.levelDepth(static_cast<int>(i));
   // A level past the densely sampled ones is never drawn: the finest dense level's part holds

@@ -68,7 +68,11 @@ std::size_t PerspectiveFetchOrder::order(const ProgressiveModel& model, const Pe
       const CameraPoint c = toCameraSpace(view, regionCentre(record.region, region_level));
       const std::int64_t nearest = c.z - reach;
       if (detail.ask(nearest) < level) continue;  // coarser depths are fine enough all over it
-      const bool invisible = outsideFrustumSides(tables, c, reach, view.camera.near);
+      // Widened by the level's splat margin (its sample reach), as the walk's frustum test.
+      const bool invisible = outsideFrustumSides(
+          tables, c,
+          reach + perspectiveSplatMargin(depths[at], model.head().levels[at].sample_reach),
+          view.camera.near);
       if (invisible && !include_invisible) continue;
       // Nearest depth in 1/2^20 cube edge, 0 for a region the eye is in, at most 2^32 - 1 (the
       // eye lies within 128 cube edges: 2^31 of them).

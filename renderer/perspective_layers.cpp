@@ -11,14 +11,19 @@ PerspectiveLayers perspectiveLayers(const ModelView& model, const PerspectiveVie
                                     std::span<PerspectiveWalkTables> tables, int coarser,
                                     std::span<const int> detail_depths, std::uint32_t pixels_q8) {
   // The levels this build draws: a prefix, the levels being ascending.
+  // A depth sampled more coarsely than its voxels whose stored reach draws it whole counts as
+  // dense, as depth auto counts it (autoLevel).
   std::array<std::uint64_t, format::kMaxLevels> voxels{};
+  std::array<std::int32_t, format::kMaxLevels> reaches{};
   std::size_t drawable = 0;
   while (drawable < static_cast<std::size_t>(model.levelCount()) &&
          model.level(static_cast<int>(drawable)).depth <= kMaxRenderDepth) {
     voxels[drawable] = model.level(static_cast<int>(drawable)).leaves.size();
+    reaches[drawable] = model.sampleReach(static_cast<int>(drawable));
     ++drawable;
   }
-  std::size_t first = 0, count = denseDepthCount(std::span(voxels).first(drawable));
+  std::size_t first = 0, count = denseDepthCount(std::span(voxels).first(drawable),
+                                                 std::span(reaches).first(drawable));
   if (!detail_depths.empty()) {
     // The model holds a prefix of these depths: detail by distance over all of them, capped.
     count = std::min(drawable, detail_depths.size());
@@ -41,7 +46,9 @@ PerspectiveLayers perspectiveLayers(const ModelView& model, const PerspectiveVie
   for (std::size_t i = 0; i < count; ++i) {
     const std::size_t k = first + i;
     const LevelView& level = model.level(static_cast<int>(k));
-    tables[k] = perspectiveWalkTables(view, level.depth, max_error);
+    // Each depth's splats widened by its stored sample reach (docs/splats.md).
+    tables[k] =
+        perspectiveWalkTables(view, level.depth, max_error, model.sampleReach(static_cast<int>(k)));
     const UpperTreeIndex* index =
         k < indexes.size() && indexes[k].bottom >= 0 ? &indexes[k] : nullptr;
     result.layer[i] = {&level, &tables[k], index};

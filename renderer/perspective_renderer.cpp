@@ -10,15 +10,18 @@ namespace octopoint {
 PerspectiveRenderer::PerspectiveRenderer(const ModelView& model, std::span<const int> detail_depths)
     : model_(model) {
   std::array<std::uint64_t, format::kMaxLevels> voxels{};
+  std::array<std::int32_t, format::kMaxLevels> reaches{};
   for (int i = 0; i < model.levelCount(); ++i) {
     const LevelView& level = model.level(i);
     if (level.depth > kMaxRenderDepth) break;  // ascending: every later one is deeper too
     depths_[count_] = level.depth;
     level_of_[count_] = i;
     voxels[count_] = level.leaves.size();
+    reaches[count_] = model.sampleReach(i);
     ++count_;
   }
-  dense_ = denseDepthCount(std::span(voxels).first(count_));
+  // With the stored sample reaches: a depth they draw whole counts as dense (perspectiveLayers).
+  dense_ = denseDepthCount(std::span(voxels).first(count_), std::span(reaches).first(count_));
   if (!detail_depths.empty()) {
     detail_count_ = std::min(detail_depths.size(), detail_depths_.size());
     std::copy_n(detail_depths.begin(), detail_count_, detail_depths_.begin());

@@ -72,12 +72,24 @@ std::int64_t largestAffineRatio(const PerspectiveView& view, const Spread& sprea
 
 }  // namespace
 
+std::int64_t perspectiveSplatMargin(int depth, std::int32_t sample_reach) {
+  if (sample_reach == kOneSampleReach) return 0;
+  // A widened splat is the shadow of the leaf's cube grown reach / 16 times (the subtree's growth
+  // and the padding a little more): the reach of that whole grown cube bounds what lies beyond
+  // the leaf's own, with room for both.
+  const std::int64_t leaf_half = std::int64_t{1} << (kPerspectiveUnitBits - 1 - depth);
+  return rotatedCubeReach((leaf_half * sample_reach + 15) >> 4) + 1;
+}
+
 PerspectiveWalkTables perspectiveWalkTables(const PerspectiveView& view, int depth,
-                                            std::int64_t max_error) {
+                                            std::int64_t max_error, std::int32_t sample_reach) {
   assert(depth >= 1 && depth <= kMaxRenderDepth && max_error >= 0);
+  assert(sample_reach >= kOneSampleReach && sample_reach <= kMaxSampleReach);
   PerspectiveWalkTables tables;
   tables.depth = depth;
   tables.max_error = max_error;
+  tables.sample_reach = sample_reach;
+  tables.splat_margin = perspectiveSplatMargin(depth, sample_reach);
   const auto& m = view.world_to_camera.m_q30;
   for (int level = 0; level < depth; ++level) {
     // A child of a node of `level` lies 2^-(level+2) cube edges = 2^(22-level) units from it along

@@ -102,7 +102,29 @@ struct PerspectiveWalkTables {
   // rounded up, so that no subtree divides for it.
   std::array<std::array<std::int64_t, kMaxRenderDepth + 1>, kAffineBuckets> growth_q16{};
   int depth = 0;
+  // The level's sample reach (Q4 footprints, kOneSampleReach..kMaxSampleReach; docs/splats.md,
+  // "Samples coarser than the voxel"): every leaf's splat half extents are widened by it
+  // (widenedHalfExtent), as buildFrameSetup widens the orthographic splat, so that a level whose
+  // samples lie farther apart than its voxels draws whole.
+  std::int32_t sample_reach = kOneSampleReach;
+  // How far a widened splat may reach beyond the leaf's own voxel, in camera space (Q.24 cube
+  // edges): the frustum and band tests widen every node's box by it, so that a leaf whose voxel
+  // lies outside but whose splat reaches in is still drawn. 0 at one footprint.
+  std::int64_t splat_margin = 0;
 };
+
+// A leaf's splat half extents (Q(32-F).F) widened by the sample reach `reach` (Q4) and rounded
+// up, as buildFrameSetup does: the same half at one footprint. Half extents past 2^55 (a voxel at
+// the eye, millions of pixels wide) are taken as 2^55, so that the product fits.
+inline constexpr std::int64_t kWidestWidenedHalf = std::int64_t{1} << 55;
+inline Point3<std::int64_t> widenedHalfExtent(const Point3<std::int64_t>& half,
+                                              std::int32_t reach) {
+  if (reach == kOneSampleReach) return half;
+  const auto widen = [reach](std::int64_t h) {
+    return (std::min(h, kWidestWidenedHalf) * reach + 15) >> 4;
+  };
+  return {widen(half.x), widen(half.y), half.z};
+}
 
 // Whether the box of centre `c` and half extent `reach` (camera units) lies wholly behind the near
 // plane `near` or beyond one of the frustum's side planes; conservative by a unit (the products
@@ -130,9 +152,15 @@ inline bool outsideFrustumSides(const PerspectiveWalkTables& tables, const Camer
          (bottom && c.y - reach > *bottom + 1) || (top && c.y + reach < -*top - 1);
 }
 
-// `max_error` in Q(32-F).F pixels, >= 0; depth 1..kMaxRenderDepth.
+// PerspectiveWalkTables::splat_margin of a level of `depth` (1..kMaxRenderDepth) whose sample
+// reach is `sample_reach` (Q4): 0 at one footprint.
+std::int64_t perspectiveSplatMargin(int depth, std::int32_t sample_reach);
+
+// `max_error` in Q(32-F).F pixels, >= 0; depth 1..kMaxRenderDepth; `sample_reach` the level's
+// (Q4, kOneSampleReach..kMaxSampleReach; ModelView::sampleReach).
 PerspectiveWalkTables perspectiveWalkTables(const PerspectiveView& view, int depth,
-                                            std::int64_t max_error);
+                                            std::int64_t max_error,
+                                            std::int32_t sample_reach = kOneSampleReach);
 
 // The rows of one band of a frame, as the eye sees them: every point drawn into the band has a
 // camera-space y / z within [top_q30, bottom_q30] (Q.30; the band's rows widened by a margin, so
@@ -206,7 +234,7 @@ class PerspectiveWalk {
     if (abort_ != nullptr && abort_->load(std::memory_order_relaxed)) aborted_ = true;
     const CameraPoint centre = unit(fine);
     const std::int64_t reach = tables_.reach[static_cast<std::size_t>(level)];
-    if (aborted_ || outsideFrustum(centre, reach)) return Step::kPass;
+    if (aborted_ || outsideFrustum(centre, reach + tables_.splat_margin)) return Step::kPass;
     if (!state.committed && parts_.detail.node(level, centre.z, state) == DetailVerdict::kOthers) {
       return Step::kPass;
     }
@@ -278,7 +306,8 @@ class PerspectiveWalk {
       // where no map fits (an axis vector past int64), project alone, and no extent.
       AffineProjection affine;
       if (affineAtInto(view_, centre, &affine)) {
-        const Point3<std::int64_t> half = voxelHalfExtent(cubeShadow(affine), tables_.depth);
+        const Point3<std::int64_t> half = widenedHalfExtent(
+            voxelHalfExtent(cubeShadow(affine), tables_.depth), tables_.sample_reach);
         sink_(PerspectiveLeaf{leaf_, affine.centre.x, affine.centre.y, affine.centre.z, half.x,
                               half.y});
       } else if (const std::optional<ScreenPoint> p = project(view_, centre)) {
@@ -372,9 +401,10 @@ class PerspectiveWalk {
                   const UpperTreeNode* indexed = nullptr, const ModelPoint& model_centre = {}) {
     // The map's voxel is the size at the centre's depth; nearer voxels of the subtree are larger,
     // by up to z / (z - reach) (growth_q16): widened by that much, the subtree's splats leave no
-    // crack.
+    // crack. The sample reach widens them first (widenedHalfExtent).
     shadow_ = cubeShadow(affine);
-    const Point3<std::int64_t> half = voxelHalfExtent(shadow_, tables_.depth);
+    const Point3<std::int64_t> half =
+        widenedHalfExtent(voxelHalfExtent(shadow_, tables_.depth), tables_.sample_reach);
     const std::int64_t growth_q16 =
         tables_
             .growth_q16[static_cast<std::size_t>(affine_bucket_)][static_cast<std::size_t>(level)];

@@ -84,9 +84,12 @@ void sharePalette(LoadedScene& scene) {
       std::vector<std::uint8_t>& leaves = model.leaves[static_cast<std::size_t>(i)];
       leaves.resize(level.leaves.size());
       for (std::size_t k = 0; k < leaves.size(); ++k) leaves[k] = map[level.leaves[k]];
+      // The level's sample reach goes with it: the scene draws its splats as wide as the model
+      // alone does.
       model.levels.push_back({static_cast<std::uint8_t>(level.depth), level.nodes.data(),
                               static_cast<std::uint32_t>(level.nodes.size()), leaves.data(),
-                              static_cast<std::uint32_t>(leaves.size())});
+                              static_cast<std::uint32_t>(leaves.size()), nullptr,
+                              static_cast<std::uint8_t>(source.sampleReach(i))});
     }
   }
   for (const std::unique_ptr<SceneModel>& owned : scene.owned) {
@@ -99,7 +102,7 @@ void sharePalette(LoadedScene& scene) {
     const ModelView& source = sourceView(model);
     model.embedded =
         EmbeddedModel{"scene model",
-                      format::kVersion4,
+                      format::kVersion6,
                       static_cast<std::uint8_t>(
                           source.colourIsSynthetic() ? format::v2::kFlagSyntheticColour : 0),
                       source.cubeEdgePicometres(),
