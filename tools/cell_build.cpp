@@ -142,7 +142,7 @@ void sampleCovering(const CellGrid& g, const CellBuildOptions& options, SceneRen
               g.origin_x + x * g.edge + (2 * i + 1) * g.edge / (2 * cover.across),
               g.y[layer] + (2 * k + 1) * height / (2 * cover.up),
               g.origin_z + z * g.edge + (2 * j + 1) * g.edge / (2 * cover.across)};
-          sampler.look(eye, &build->frames);
+          sampler.look(eye, &build->frames, {g.y[layer], g.y[layer + 1]});
           ++build->samples;
           const std::span<const std::uint8_t> marks = sampler.marks();
           for (std::size_t m = 0; m < n; ++m) row[m] |= marks[m];
@@ -150,6 +150,7 @@ void sampleCovering(const CellGrid& g, const CellBuildOptions& options, SceneRen
       }
     }
   }
+  build->maps = sampler.stats();
 }
 
 // The first way: the lattice on the layers' bounds and seeded points inside each cell, an

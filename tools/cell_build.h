@@ -25,6 +25,7 @@
 #include "octopoint/scene.h"
 #include "renderer/cell_table.h"
 #include "renderer/perspective.h"
+#include "tools/cell_occlusion.h"
 
 namespace octopoint {
 
@@ -51,8 +52,9 @@ struct CellBuild {
   CellGrid grid;
   std::vector<std::vector<std::uint32_t>> sets;  // per cell, sorted
   std::uint64_t samples = 0, frames = 0;
-  int side = 0;  // pixels of a frame's side (a face with the erosion's border)
-  int rho = 0;   // the erosion's radius in pixels (0: none)
+  int side = 0;         // pixels of a frame's side (a face with the erosion's border)
+  int rho = 0;          // the erosion's radius in pixels (0: none)
+  OcclusionStats maps;  // the eroded maps' pixels and enclosed samples (eps above 0)
 };
 
 // Empty grid (nx 0) when the options are out of their limits (an edge below 1/64 scene edge, layers

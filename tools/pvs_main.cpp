@@ -153,6 +153,16 @@ int run(int argc, char** argv) {
       build.side, build.side, build.rho, seconds,
       static_cast<double>(total) / static_cast<double>(build.sets.size()), scene->instances.size(),
       largest, bytes.size(), output.c_str());
+  if (options.eps > 0 && build.maps.pixels > 0) {
+    const auto share = [&](std::uint64_t n) {
+      return 100.0 * static_cast<double>(n) / static_cast<double>(build.maps.pixels);
+    };
+    std::printf(
+        "maps: %.1f%% of pixels near, %.1f%% cracks, %.1f%% empty after the erosion; %llu "
+        "samples enclosed\n",
+        share(build.maps.near), share(build.maps.cracks), share(build.maps.open),
+        static_cast<unsigned long long>(build.maps.enclosed));
+  }
   return 0;
 }
 
