@@ -46,6 +46,7 @@ struct CellBuildOptions {
   // `face` pixels a cube face without its border; no lattice, no seeded points, no neighbours.
   std::int64_t eps = 0;
   std::int64_t near_occluder = 0;
+  int near_steps = 1;  // maps at near_occluder times 1, 2, 4, ...: the set is what all let in
 };
 
 struct CellBuild {

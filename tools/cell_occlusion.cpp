@@ -172,7 +172,8 @@ OcclusionSampler::OcclusionSampler(SceneRenderer& renderer, const OcclusionSampl
       faces_(6, Framebuffer(side_, side_)),
       map_(static_cast<std::size_t>(side_) * static_cast<std::size_t>(side_)),
       work_(map_.size()),
-      marks_(renderer.instanceCount()) {}
+      marks_(renderer.instanceCount()),
+      step_marks_(renderer.instanceCount()) {}
 
 namespace {
 
@@ -209,8 +210,6 @@ bool nearSurfaceInSlab(const FrameView& frame, const PerspectiveView& view, int 
 void OcclusionSampler::look(const Point3<std::int64_t>& eye, std::uint64_t* frames,
                             const EyeSlab& slab) {
   std::fill(marks_.begin(), marks_.end(), std::uint8_t{0});
-  const std::uint64_t near_key =
-      static_cast<std::uint64_t>(sampling_.near) >> renderer_.depthShift();
   // The six faces first: whether the sample stands only for eyes no walk reaches.
   bool enclosed = slab.top <= slab.bottom, seen[6] = {};
   for (int k = 0; k < 6; ++k) {
@@ -241,22 +240,33 @@ void OcclusionSampler::look(const Point3<std::int64_t>& eye, std::uint64_t* fram
     ++stats_.enclosed;
     return;
   }
-  for (int k = 0; k < 6; ++k) {
-    if (!seen[k]) continue;
-    const Framebuffer& frame = faces_[static_cast<std::size_t>(k)];
-    occlusionMap(frame.pixels(), side_, side_,
-                 static_cast<std::uint32_t>(std::min<std::uint64_t>(near_key, kEmpty >> 8)),
-                 sampling_.eps, sampling_.face, rho_, map_, scratch_);
-    for (std::size_t i = 0; i < map_.size(); ++i) {
-      const std::uint32_t word = frame.pixels()[i];
-      const bool near = FrameView::depthKeyOf(word) < near_key && word != kEmpty;
-      stats_.pixels += 1;
-      stats_.near += near ? 1 : 0;
-      stats_.cracks += !near && word != kEmpty && scratch_[i] == kEmpty ? 1 : 0;
-      stats_.open += map_[i] == kEmpty ? 1 : 0;
+  // Per near distance (near, 2 near, 4 near, ...: each with its own, narrower, erosion) the
+  // instances that write a pixel of some face's map; in the sample's set those every distance
+  // lets in (each distance's set alone holds every instance seen from an eye within eps).
+  for (int step = 0; step < std::max(1, sampling_.near_steps); ++step) {
+    const OcclusionSampling at{sampling_.eps, sampling_.near << step, sampling_.face, 1};
+    const int rho = step == 0 ? rho_ : erosionRadius(at);
+    const std::uint32_t near_key = static_cast<std::uint32_t>(std::min<std::uint64_t>(
+        static_cast<std::uint64_t>(at.near) >> renderer_.depthShift(), kEmpty >> 8));
+    std::fill(step_marks_.begin(), step_marks_.end(), std::uint8_t{0});
+    for (int k = 0; k < 6; ++k) {
+      if (!seen[k]) continue;
+      const Framebuffer& frame = faces_[static_cast<std::size_t>(k)];
+      occlusionMap(frame.pixels(), side_, side_, near_key, sampling_.eps, sampling_.face, rho, map_,
+                   scratch_);
+      for (std::size_t i = 0; step == 0 && i < map_.size(); ++i) {
+        const std::uint32_t word = frame.pixels()[i];
+        const bool near = FrameView::depthKeyOf(word) < near_key && word != kEmpty;
+        stats_.pixels += 1;
+        stats_.near += near ? 1 : 0;
+        stats_.cracks += !near && word != kEmpty && scratch_[i] == kEmpty ? 1 : 0;
+        stats_.open += map_[i] == kEmpty ? 1 : 0;
+      }
+      static_cast<void>(renderer_.markWriters(views_[k], map_, work_, step_marks_));
+      ++*frames;
     }
-    static_cast<void>(renderer_.markWriters(views_[k], map_, work_, marks_));
-    ++*frames;
+    for (std::size_t i = 0; i < marks_.size(); ++i)
+      marks_[i] = step == 0 ? step_marks_[i] : marks_[i] & step_marks_[i];
   }
 }
 

@@ -37,6 +37,10 @@ struct OcclusionSampling {
   std::int64_t eps = 0;   // Q.24 scene edges: the eyes a sample stands for
   std::int64_t near = 0;  // Q.24 scene edges: surfaces nearer do not occlude; > eps
   int face = 128;         // pixels of a cube face's side, without the border
+  // Maps at near, 2 near, ... 2^(steps - 1) near, each eroded by its own radius: a sample's set
+  // is what every one of them lets in (near walls occlude in the first, the far city's small
+  // gaps stay open in the last).
+  int near_steps = 1;
 };
 
 // The erosion's radius in pixels for `sampling` (0 when eps is 0).
@@ -91,7 +95,7 @@ class OcclusionSampler {
   PerspectiveView views_[6];
   std::vector<std::uint32_t> map_, work_, scratch_;
   OcclusionStats stats_;
-  std::vector<std::uint8_t> marks_;
+  std::vector<std::uint8_t> marks_, step_marks_;
 };
 
 }  // namespace octopoint
