@@ -125,7 +125,8 @@ Cover coverOf(std::int64_t edge, std::int64_t height, std::int64_t eps) {
 void sampleCovering(const CellGrid& g, const CellBuildOptions& options, SceneRenderer& renderer,
                     std::vector<std::uint8_t>& seen, CellBuild* build) {
   const std::size_t n = g.instances;
-  OcclusionSampler sampler(renderer, {options.eps, options.near_occluder, options.face});
+  OcclusionSampler sampler(renderer,
+                           {options.eps, options.near_occluder, options.face, options.near_steps});
   build->side = sampler.side();
   build->rho = sampler.rho();
   for (std::size_t cell = 0; cell < g.cellCount(); ++cell) {
@@ -142,7 +143,7 @@ void sampleCovering(const CellGrid& g, const CellBuildOptions& options, SceneRen
               g.origin_x + x * g.edge + (2 * i + 1) * g.edge / (2 * cover.across),
               g.y[layer] + (2 * k + 1) * height / (2 * cover.up),
               g.origin_z + z * g.edge + (2 * j + 1) * g.edge / (2 * cover.across)};
-          sampler.look(eye, &build->frames);
+          sampler.look(eye, &build->frames, {g.y[layer], g.y[layer + 1]});
           ++build->samples;
           const std::span<const std::uint8_t> marks = sampler.marks();
           for (std::size_t m = 0; m < n; ++m) row[m] |= marks[m];
@@ -150,6 +151,7 @@ void sampleCovering(const CellGrid& g, const CellBuildOptions& options, SceneRen
       }
     }
   }
+  build->maps = sampler.stats();
 }
 
 // The first way: the lattice on the layers' bounds and seeded points inside each cell, an

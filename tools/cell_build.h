@@ -25,6 +25,7 @@
 #include "octopoint/scene.h"
 #include "renderer/cell_table.h"
 #include "renderer/perspective.h"
+#include "tools/cell_occlusion.h"
 
 namespace octopoint {
 
@@ -45,14 +46,16 @@ struct CellBuildOptions {
   // `face` pixels a cube face without its border; no lattice, no seeded points, no neighbours.
   std::int64_t eps = 0;
   std::int64_t near_occluder = 0;
+  int near_steps = 1;  // maps at near_occluder times 1, 2, 4, ...: the set is what all let in
 };
 
 struct CellBuild {
   CellGrid grid;
   std::vector<std::vector<std::uint32_t>> sets;  // per cell, sorted
   std::uint64_t samples = 0, frames = 0;
-  int side = 0;  // pixels of a frame's side (a face with the erosion's border)
-  int rho = 0;   // the erosion's radius in pixels (0: none)
+  int side = 0;         // pixels of a frame's side (a face with the erosion's border)
+  int rho = 0;          // the erosion's radius in pixels (0: none)
+  OcclusionStats maps;  // the eroded maps' pixels and enclosed samples (eps above 0)
 };
 
 // Empty grid (nx 0) when the options are out of their limits (an edge below 1/64 scene edge, layers

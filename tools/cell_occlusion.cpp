@@ -31,11 +31,66 @@ void maxFilter(const std::uint32_t* in, std::size_t stride, std::int32_t n, int 
   }
 }
 
-// Whether depth keys a and b of neighbouring pixels differ by more than kLeastGap / eps of the
-// nearer: a crack (keys below 2^24, eps below 2^31: the products fit 64 bits).
-bool crack(std::uint32_t a, std::uint32_t b, std::int64_t eps) {
-  const std::uint64_t nearer = std::min(a, b), jump = std::max(a, b) - nearer;
-  return jump * static_cast<std::uint64_t>(eps) > nearer * static_cast<std::uint64_t>(kLeastGap);
+// A slanted surface's splats stray from it by up to about half its depth step between
+// neighbouring pixels: that share (Q16) of the step |w_a - w_b| is tolerated too. A jump between
+// two surfaces of step s each is still a crack when it exceeds about s / 3.
+constexpr std::int64_t kSlopeShare = std::int64_t{1} << 14;
+
+// 1 / depth of a word, Q40 of one over its depth key (keys 1..2^24: 2^16..2^40, well apart
+// between neighbouring keys at every depth the maps hold). On a plane seen in perspective 1/z
+// is affine in the pixel's coordinates, so its second difference along a line is 0 but for the
+// voxels' rounding.
+std::int64_t inverseDepth(std::uint32_t word) {
+  return (std::int64_t{1} << 40) /
+         static_cast<std::int64_t>(std::max<std::uint32_t>(1, FrameView::depthKeyOf(word)));
+}
+
+// Empties both words of every crack along one line of n words (`stride` apart) of `words` in
+// `open`. Between neighbours a (at i) and b (at i + 1), with w = 1/z (inverseDepth), the line
+// through the two words before b extrapolated to b misses it by d_b = 2 w_a - w_(i-1) - w_b,
+// the line through the two after a extrapolated to a by d_a = w_a - 2 w_b + w_(i+2). Where the
+// two lines cross within [i, i + 1] (d_a and d_b of opposite signs, or either within the
+// tolerance) the surfaces meet there: one plane, or two meeting at a crease (a building's
+// corner), with no gap between them. Otherwise the surfaces jump by at least min(|d_a|, |d_b|)
+// in 1/z, which from an eye eps to the side opens by eps times that jump (radians): a crack
+// where that exceeds the tolerance, `tolerance` (Q16) times the farther word's 1/z. With a
+// neighbour missing (the line's end, an empty word) the one line there is tested alone; with
+// both missing, the jump w_a - w_b itself.
+// The crack rule's tolerance, Q16 of the farther word's 1/z: the jump that opens by kLeastGap
+// from an eye eps away (kLeastGap / eps), plus the voxels' rounding: the detail by distance draws
+// voxels up to a pixel wide (docs/perspective.md), 2 / face of their depth in x/z units, so a
+// splat's depth strays from its surface's by up to half that, and a second difference sums three.
+std::int64_t crackTolerance(std::int64_t eps, int face) {
+  const std::int64_t gap = (kLeastGap << 16) / std::max<std::int64_t>(1, eps);
+  return std::min<std::int64_t>(std::int64_t{1} << 16, gap + (std::int64_t{3} << 16) / face);
+}
+
+void crackLine(const std::uint32_t* words, std::size_t stride, std::int32_t n,
+               std::int64_t tolerance, std::uint32_t* open) {
+  const auto at = [&](std::int32_t i) { return words[static_cast<std::size_t>(i) * stride]; };
+  for (std::int32_t i = 0; i + 1 < n; ++i) {
+    if (at(i) == kEmpty || at(i + 1) == kEmpty) continue;
+    const std::int64_t wa = inverseDepth(at(i)), wb = inverseDepth(at(i + 1));
+    // Q40 1/key times Q16: below 2^56.
+    const std::int64_t limit =
+        (std::min(wa, wb) * tolerance >> 16) + (std::abs(wa - wb) * kSlopeShare >> 16);
+    const bool left = i >= 1 && at(i - 1) != kEmpty, right = i + 2 < n && at(i + 2) != kEmpty;
+    const std::int64_t d_b = left ? 2 * wa - inverseDepth(at(i - 1)) - wb : 0;
+    const std::int64_t d_a = right ? wa - 2 * wb + inverseDepth(at(i + 2)) : 0;
+    bool crack;
+    if (left && right) {
+      crack = ((d_a > 0 && d_b > 0) || (d_a < 0 && d_b < 0)) &&
+              std::min(std::abs(d_a), std::abs(d_b)) > limit;
+    } else if (left || right) {
+      crack = std::abs(left ? d_b : d_a) > limit;
+    } else {
+      crack = std::abs(wa - wb) > limit;
+    }
+    if (crack) {
+      open[static_cast<std::size_t>(i) * stride] = kEmpty;
+      open[static_cast<std::size_t>(i + 1) * stride] = kEmpty;
+    }
+  }
 }
 
 }  // namespace
@@ -51,8 +106,8 @@ int erosionRadius(const OcclusionSampling& sampling) {
 }
 
 void occlusionMap(std::span<const std::uint32_t> words, std::int32_t width, std::int32_t height,
-                  std::uint32_t near_key, std::int64_t eps, int rho, std::span<std::uint32_t> map,
-                  std::vector<std::uint32_t>& scratch) {
+                  std::uint32_t near_key, std::int64_t eps, int face, int rho,
+                  std::span<std::uint32_t> map, std::vector<std::uint32_t>& scratch) {
   const std::size_t w = static_cast<std::size_t>(width),
                     pixels = w * static_cast<std::size_t>(height);
   scratch.resize(pixels + 2 * static_cast<std::size_t>(std::max(width, height)));
@@ -62,21 +117,13 @@ void occlusionMap(std::span<const std::uint32_t> words, std::int32_t width, std:
   for (std::size_t i = 0; i < pixels; ++i)
     open[i] = FrameView::depthKeyOf(words[i]) < near_key ? kEmpty : words[i] | 0xFF;
   if (eps > 0) {
+    const std::int64_t tolerance = crackTolerance(eps, face);
     for (std::int32_t y = 0; y < height; ++y) {
-      for (std::int32_t x = 0; x < width; ++x) {
-        const std::size_t i = static_cast<std::size_t>(y) * w + static_cast<std::size_t>(x);
-        const std::uint32_t key = FrameView::depthKeyOf(words[i]);
-        if (words[i] == kEmpty) continue;
-        if (x + 1 < width && words[i + 1] != kEmpty &&
-            crack(key, FrameView::depthKeyOf(words[i + 1]), eps)) {
-          open[i] = open[i + 1] = kEmpty;
-        }
-        if (y + 1 < height && words[i + w] != kEmpty &&
-            crack(key, FrameView::depthKeyOf(words[i + w]), eps)) {
-          open[i] = open[i + w] = kEmpty;
-        }
-      }
+      const std::size_t row = static_cast<std::size_t>(y) * w;
+      crackLine(words.data() + row, 1, width, tolerance, open + row);
     }
+    for (std::int32_t x = 0; x < width; ++x)
+      crackLine(words.data() + x, w, height, tolerance, open + x);
   }
   if (rho == 0) {
     std::copy(open, open + pixels, map.begin());
@@ -122,34 +169,104 @@ OcclusionSampler::OcclusionSampler(SceneRenderer& renderer, const OcclusionSampl
       rho_(erosionRadius(sampling)),
       side_(sideOf(sampling, rho_)),
       fov_(fovOf(sampling.face, side_)),
-      frame_(side_, side_),
+      faces_(6, Framebuffer(side_, side_)),
       map_(static_cast<std::size_t>(side_) * static_cast<std::size_t>(side_)),
       work_(map_.size()),
-      marks_(renderer.instanceCount()) {}
+      marks_(renderer.instanceCount()),
+      step_marks_(renderer.instanceCount()) {}
 
-void OcclusionSampler::look(const Point3<std::int64_t>& eye, std::uint64_t* frames) {
+namespace {
+
+constexpr int kFaces[6][2] = {{0, 0}, {90, 0}, {180, 0}, {270, 0}, {0, 90}, {0, -90}};
+
+// Whether some surface drawn in a face (camera `view`) lies within `eps` of the eye and within the
+// slab's heights (y down), every pixel's point taken at its depth key's nearer end (host side,
+// double: a test of where to sample, not a frame).
+bool nearSurfaceInSlab(const FrameView& frame, const PerspectiveView& view, int pitch,
+                       std::int64_t eps, const EyeSlab& slab, int depth_shift) {
+  const double f = static_cast<double>(frame.width()) /
+                   (2 * std::tan(view.camera.fov.turns16() * std::numbers::pi / 65536));
+  const double e = static_cast<double>(eps), eye_y = static_cast<double>(view.camera.eye.y);
+  for (std::int32_t py = 0; py < frame.height(); ++py) {
+    for (std::int32_t px = 0; px < frame.width(); ++px) {
+      const std::uint32_t word = frame.pixelAt(px, py);
+      if (word == FrameView::kEmpty) continue;
+      const double z = std::ldexp(static_cast<double>(FrameView::depthKeyOf(word)), depth_shift);
+      const double cx = (px + 0.5 - frame.width() / 2.0) / f * z,
+                   cy = (py + 0.5 - frame.height() / 2.0) / f * z;
+      if (cx * cx + cy * cy + z * z > e * e) continue;
+      // y down: a face looking up (pitch 90) sees y falling with depth; its image's y is the
+      // world's z, whatever its sign, so the slab test takes the depth alone.
+      const double y = pitch == 0 ? eye_y + cy : pitch > 0 ? eye_y - z : eye_y + z;
+      if (y >= static_cast<double>(slab.top) - 1 && y <= static_cast<double>(slab.bottom) + 1)
+        return true;
+    }
+  }
+  return false;
+}
+
+}  // namespace
+
+void OcclusionSampler::look(const Point3<std::int64_t>& eye, std::uint64_t* frames,
+                            const EyeSlab& slab) {
   std::fill(marks_.begin(), marks_.end(), std::uint8_t{0});
-  static constexpr int kFaces[6][2] = {{0, 0}, {90, 0}, {180, 0}, {270, 0}, {0, 90}, {0, -90}};
-  const std::uint64_t near_key =
-      static_cast<std::uint64_t>(sampling_.near) >> renderer_.depthShift();
-  for (const auto& [yaw, pitch] : kFaces) {
+  // The six faces first: whether the sample stands only for eyes no walk reaches.
+  bool enclosed = slab.top <= slab.bottom, seen[6] = {};
+  for (int k = 0; k < 6; ++k) {
     PerspectiveCamera camera;
     camera.eye = eye;
-    camera.yaw = Angle::fromDegrees(yaw);
-    camera.pitch = Angle::fromDegrees(pitch);
+    camera.yaw = Angle::fromDegrees(kFaces[k][0]);
+    camera.pitch = Angle::fromDegrees(kFaces[k][1]);
     camera.fov = fov_;
     camera.width = side_;
     camera.height = side_;
-    PerspectiveView view;
-    if (buildPerspectiveView(camera, kDefaultFractionBits, &view) != PerspectiveError::kNone)
-      continue;  // an eye beyond the camera's reach: the margin's instances stand for it
-    frame_.clear();
-    static_cast<void>(renderer_.draw(view, frame_));
-    occlusionMap(frame_.pixels(), side_, side_,
-                 static_cast<std::uint32_t>(std::min<std::uint64_t>(near_key, kEmpty >> 8)),
-                 sampling_.eps, rho_, map_, scratch_);
-    static_cast<void>(renderer_.markWriters(view, map_, work_, marks_));
-    *frames += 2;
+    seen[k] =
+        buildPerspectiveView(camera, kDefaultFractionBits, &views_[k]) == PerspectiveError::kNone;
+    if (!seen[k]) {  // an eye beyond the camera's reach: the margin's instances stand for it
+      enclosed = false;
+      continue;
+    }
+    Framebuffer& frame = faces_[static_cast<std::size_t>(k)];
+    frame.clear();
+    static_cast<void>(renderer_.draw(views_[k], frame));
+    ++*frames;
+    if (!enclosed) continue;
+    const auto pixels = frame.pixels();
+    enclosed = std::find(pixels.begin(), pixels.end(), FrameView::kEmpty) == pixels.end() &&
+               !nearSurfaceInSlab(frame, views_[k], kFaces[k][1], sampling_.eps, slab,
+                                  renderer_.depthShift());
+  }
+  if (enclosed) {
+    ++stats_.enclosed;
+    return;
+  }
+  // Per near distance (near, 2 near, 4 near, ...: each with its own, narrower, erosion) the
+  // instances that write a pixel of some face's map; in the sample's set those every distance
+  // lets in (each distance's set alone holds every instance seen from an eye within eps).
+  for (int step = 0; step < std::max(1, sampling_.near_steps); ++step) {
+    const OcclusionSampling at{sampling_.eps, sampling_.near << step, sampling_.face, 1};
+    const int rho = step == 0 ? rho_ : erosionRadius(at);
+    const std::uint32_t near_key = static_cast<std::uint32_t>(std::min<std::uint64_t>(
+        static_cast<std::uint64_t>(at.near) >> renderer_.depthShift(), kEmpty >> 8));
+    std::fill(step_marks_.begin(), step_marks_.end(), std::uint8_t{0});
+    for (int k = 0; k < 6; ++k) {
+      if (!seen[k]) continue;
+      const Framebuffer& frame = faces_[static_cast<std::size_t>(k)];
+      occlusionMap(frame.pixels(), side_, side_, near_key, sampling_.eps, sampling_.face, rho, map_,
+                   scratch_);
+      for (std::size_t i = 0; step == 0 && i < map_.size(); ++i) {
+        const std::uint32_t word = frame.pixels()[i];
+        const bool near = FrameView::depthKeyOf(word) < near_key && word != kEmpty;
+        stats_.pixels += 1;
+        stats_.near += near ? 1 : 0;
+        stats_.cracks += !near && word != kEmpty && scratch_[i] == kEmpty ? 1 : 0;
+        stats_.open += map_[i] == kEmpty ? 1 : 0;
+      }
+      static_cast<void>(renderer_.markWriters(views_[k], map_, work_, step_marks_));
+      ++*frames;
+    }
+    for (std::size_t i = 0; i < marks_.size(); ++i)
+      marks_[i] = step == 0 ? step_marks_[i] : marks_[i] & step_marks_[i];
   }
 }
 

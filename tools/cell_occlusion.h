@@ -6,9 +6,12 @@
 // the erosion's radius inside some face); per face, the occlusion map:
 //  - every pixel whose surface is nearer than `near` (camera-space z) is empty: near occluders do
 //    not occlude (from an eye eps away they move by up to eps / near radians, unbounded in pixels);
-//  - a crack: both pixels of every pair of 4-neighbours whose depths differ by more than
-//    kLeastGap / eps of the nearer's are empty: a gap between two surfaces at different depths that
-//    touch from e opens from an eye eps away (by eps times the depth jump over the depth);
+//  - a crack: both pixels of every pair of 4-neighbours between which the surface jumps: where
+//    the lines through 1/z of the two pixels before and the two after (1/z is affine across a
+//    plane in screen space) do not cross between them, and miss each other there by more than
+//    kLeastGap / eps of 1/z (plus the voxels' rounding): a gap between two surfaces at different
+//    depths that touch from e opens from an eye eps away (by eps times the jump in 1/z, radians),
+//    while a slanted plane, or two meeting at a crease, stays closed;
 //  - then the farthest word over a square window of `rho` pixels around each pixel, rho covering
 //    asin(eps / near) at the faces' corners (+1 pixel for the grid), and empty where the window
 //    leaves the face.
@@ -34,6 +37,10 @@ struct OcclusionSampling {
   std::int64_t eps = 0;   // Q.24 scene edges: the eyes a sample stands for
   std::int64_t near = 0;  // Q.24 scene edges: surfaces nearer do not occlude; > eps
   int face = 128;         // pixels of a cube face's side, without the border
+  // Maps at near, 2 near, ... 2^(steps - 1) near, each eroded by its own radius: a sample's set
+  // is what every one of them lets in (near walls occlude in the first, the far city's small
+  // gaps stay open in the last).
+  int near_steps = 1;
 };
 
 // The erosion's radius in pixels for `sampling` (0 when eps is 0).
@@ -45,18 +52,37 @@ bool erosionFits(const OcclusionSampling& sampling);
 // The occlusion map of a face's words (width x height, row-major, PixelPayload::kColour) into
 // `map`: near pixels and cracks empty, then the farthest word within `rho` (empty where the window
 // leaves the face). `near_key`: the depth key of the near distance; `eps`: for the crack rule
-// (0: no cracks). `scratch`: any vector, resized once.
+// (0: no cracks); `face`: pixels of the face's side without its border (the voxels' rounding).
+// `scratch`: any vector, resized once; after the call its first width x height words are the
+// map before the erosion.
 void occlusionMap(std::span<const std::uint32_t> words, std::int32_t width, std::int32_t height,
-                  std::uint32_t near_key, std::int64_t eps, int rho, std::span<std::uint32_t> map,
-                  std::vector<std::uint32_t>& scratch);
+                  std::uint32_t near_key, std::int64_t eps, int face, int rho,
+                  std::span<std::uint32_t> map, std::vector<std::uint32_t>& scratch);
+
+// The heights (Q.24 scene edges, y down: top <= bottom) of the eyes a sample stands for; none
+// (top > bottom) by default.
+struct EyeSlab {
+  std::int64_t top = 1, bottom = 0;
+};
+
+// What the maps held, summed over the samples looked from: pixels of the faces, those emptied as
+// near, as cracks (and not near), and empty in the map after the erosion; samples enclosed.
+struct OcclusionStats {
+  std::uint64_t pixels = 0, near = 0, cracks = 0, open = 0, enclosed = 0;
+};
 
 class OcclusionSampler {
  public:
   OcclusionSampler(SceneRenderer& renderer, const OcclusionSampling& sampling);
 
-  // The instances sample `eye` stands for: marks() after it (1 per instance in the set).
-  void look(const Point3<std::int64_t>& eye, std::uint64_t* frames);
+  // The instances sample `eye` stands for: marks() after it (1 per instance in the set). With a
+  // slab, a sample is **enclosed** and stands for no eye (its marks all 0) when every pixel of
+  // its six faces holds a surface (it is shut in: inside a building, which the walk's collision
+  // never enters) and no surface lies within eps of it at the slab's heights (so every eye it
+  // stands for there is shut in with it).
+  void look(const Point3<std::int64_t>& eye, std::uint64_t* frames, const EyeSlab& slab = {});
   std::span<const std::uint8_t> marks() const { return marks_; }
+  const OcclusionStats& stats() const { return stats_; }
   int side() const { return side_; }  // pixels of a widened face
   int rho() const { return rho_; }
 
@@ -65,9 +91,11 @@ class OcclusionSampler {
   OcclusionSampling sampling_;
   int rho_ = 0, side_ = 0;
   Angle fov_;
-  Framebuffer frame_;
+  std::vector<Framebuffer> faces_;
+  PerspectiveView views_[6];
   std::vector<std::uint32_t> map_, work_, scratch_;
-  std::vector<std::uint8_t> marks_;
+  OcclusionStats stats_;
+  std::vector<std::uint8_t> marks_, step_marks_;
 };
 
 }  // namespace octopoint

@@ -24,7 +24,7 @@ using namespace octopoint;
 constexpr const char* kUsage =
     R"(usage: octopoint-pvs SCENE.json -o CELLS [--cell EDGES] [--layers Y0,Y1,...] [--face PX]
                      [--samples N] [--seed N] [--margin EDGES] [--no-neighbours]
-                     [--eps EDGES --near-occluder EDGES]
+                     [--eps EDGES --near-occluder EDGES [--near-steps N]]
 
 Computes a scene's visibility cells (docs/city.md): a grid of view cells over the instances'
 extent in x and z and the layers of height the eye may take, and per cell the instances visible
@@ -54,6 +54,11 @@ Eroded occlusion maps (conservative by construction, tighter; docs/city.md):
                      an instance with a point nearer than the map is in the set. No lattice,
                      seeded points or neighbours then; --face is the face without its border.
   --near-occluder EDGES  surfaces nearer than this do not occlude (needs --eps; above it)
+  --near-steps N     maps at the near occluder distance times 1, 2, 4, ... 2^(N-1), each with
+                     its own erosion (narrower the farther): an instance is in a sample's set
+                     when every one of them lets it in; 1..8 (default 1). Samples shut in
+                     (every direction meets a surface, none within EDGES at the layer's
+                     heights: inside a building) stand for no eye.
 )";
 
 // A decimal number of scene edges to Q.24, within +-limit scene edges; cli::Error otherwise.
@@ -106,6 +111,8 @@ int run(int argc, char** argv) {
       if (options.eps <= 0) throw cli::Error("--eps: not above 0");
     } else if (args.is("--near-occluder")) {
       options.near_occluder = edgesOption("--near-occluder", args.value(), 1024);
+    } else if (args.is("--near-steps")) {
+      options.near_steps = cli::parseInt(args.name(), args.value(), 1, 8);
     } else if (args.is("--no-neighbours")) {
       args.noValue();
       options.neighbours = false;
@@ -153,6 +160,16 @@ int run(int argc, char** argv) {
       build.side, build.side, build.rho, seconds,
       static_cast<double>(total) / static_cast<double>(build.sets.size()), scene->instances.size(),
       largest, bytes.size(), output.c_str());
+  if (options.eps > 0 && build.maps.pixels > 0) {
+    const auto share = [&](std::uint64_t n) {
+      return 100.0 * static_cast<double>(n) / static_cast<double>(build.maps.pixels);
+    };
+    std::printf(
+        "maps: %.1f%% of pixels near, %.1f%% cracks, %.1f%% empty after the erosion; %llu "
+        "samples enclosed\n",
+        share(build.maps.near), share(build.maps.cracks), share(build.maps.open),
+        static_cast<unsigned long long>(build.maps.enclosed));
+  }
   return 0;
 }
 
