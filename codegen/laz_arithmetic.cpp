@@ -37,8 +37,8 @@ void BitModel::update() {
 
 SymbolModel::SymbolModel(std::uint32_t symbols, bool for_decoding)
     : symbols_(std::clamp(symbols, 2u, kMaxSymbols)) {
-  distribution.resize(symbols_ + 1);
-  distribution[symbols_] = kPastLastSymbol;
+  distribution.resize(symbols_ + 2);
+  distribution[symbols_] = distribution[symbols_ + 1] = kPastLastSymbol;
   counts.resize(symbols_);
   if (for_decoding) {
     // At least twice as many entries as symbols (2^12 for 2048 symbols: Q15 quantiles >> 3), and
@@ -76,33 +76,39 @@ void SymbolModel::update() {
   std::uint32_t* out = distribution.data();
   const std::uint32_t* in = counts.data();
   std::uint32_t sum = 0;
-  if (table.empty()) {
-    for (std::uint32_t s = 0; s < symbols; ++s) {
-      out[s] = (scale * sum) >> (31 - kSymbolModelShift);  // Q15
-      sum += in[s];
-    }
-  } else {
-    // Entry t names the symbol whose interval holds quantile t << shift: the last symbol s whose
-    // distribution[s] is at most it. Each symbol's first entry is the first at or above its
-    // distribution; the entries before it, from the last symbol's first on, are the last
-    // symbol's. Written with the distribution, in one pass.
-    std::uint16_t* entries = table.data();
-    const std::uint32_t shift = table_shift;
-    const std::uint32_t round_up = (1u << shift) - 1;
-    std::uint32_t entry = 0;  // the first entry not written yet
-    for (std::uint32_t s = 0; s < symbols; ++s) {
-      const std::uint32_t at = (scale * sum) >> (31 - kSymbolModelShift);  // Q15, at most 2^15
-      out[s] = at;
-      sum += in[s];
-      const std::uint32_t first = (at + round_up) >> shift;  // within the table: 2^15 >> shift
-      const auto below = static_cast<std::uint16_t>(s - 1);  // s = 0 has first = 0: none
-      for (; entry < first; ++entry) entries[entry] = below;
-    }
-    const auto size = static_cast<std::uint32_t>(table.size());
-    for (; entry < size; ++entry) entries[entry] = static_cast<std::uint16_t>(symbols - 1);
+  for (std::uint32_t s = 0; s < symbols; ++s) {
+    out[s] = (scale * sum) >> (31 - kSymbolModelShift);  // Q15, at most 2^15
+    sum += in[s];
   }
+  if (!table.empty()) writeTable();
   cycle_ = std::min((5 * cycle_) >> 2, (symbols + 6) << 3);
   until_update = cycle_;
+}
+
+void SymbolModel::writeTable() {
+  // Entry t names the symbol whose interval holds quantile t << shift: the last symbol s whose
+  // distribution[s] is at most it. Each symbol's first entry is the first at or above its
+  // distribution; the entries before it, from the symbol before's first on, are the symbol
+  // before's (a symbol of no width has none).
+  const std::uint32_t* at = distribution.data();
+  const std::uint32_t symbols = symbols_;
+  const std::uint32_t shift = table_shift;
+  const std::uint32_t round_up = (1u << shift) - 1;
+  const auto size = static_cast<std::uint32_t>(table.size());
+  Entry* entries = table.data();
+  std::uint32_t entry = 0;  // the first entry not written yet
+  for (std::uint32_t s = 1; s <= symbols; ++s) {
+    // within the table: a distribution is at most 2^15, and 2^15 >> shift < size
+    const std::uint32_t first = s < symbols ? (at[s] + round_up) >> shift : size;
+    if (entry < first) {
+      // the bounds past the last symbol are kPastLastSymbol, 0xffff as 16 bits
+      const Entry below{static_cast<std::uint16_t>(s - 1), static_cast<std::uint16_t>(at[s - 1]),
+                        static_cast<std::uint16_t>(at[s]), static_cast<std::uint16_t>(at[s + 1])};
+      do {
+        entries[entry] = below;
+      } while (++entry < first);
+    }
+  }
 }
 
 void ArithmeticDecoder::attach(ByteInput& input) {

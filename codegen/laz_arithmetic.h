@@ -54,6 +54,17 @@ class BitModel {
 // is found is the same either way, so the format does not care.
 class SymbolModel {
  public:
+  // A decoder table entry: the symbol at the entry's quantile and the bounds (Q15) of its
+  // interval and of the next one's, so that a lookup and one step up read one entry and no
+  // distribution (each load waits for the one before: they are most of a symbol's time). Past the
+  // last symbol a bound is 0xffff, above every quantile.
+  struct Entry {
+    std::uint16_t symbol;
+    std::uint16_t low;   // distribution[symbol]
+    std::uint16_t high;  // distribution[symbol + 1]
+    std::uint16_t next;  // distribution[symbol + 2]
+  };
+
   explicit SymbolModel(std::uint32_t symbols, bool for_decoding = true);
   // A model that has coded nothing since its last reset is left as it is: most of a chunk's models
   // (the integer compressor's wide correctors) never code a symbol, and a reset costs a table.
@@ -61,18 +72,20 @@ class SymbolModel {
   void update();
   std::uint32_t symbols() const { return symbols_; }
 
-  // Q15 cumulative: distribution[s] = P(< s); distribution[symbols] is kPastLastSymbol, so that a
-  // decoder's upward step stops at the last symbol without a test of its own.
+  // Q15 cumulative: distribution[s] = P(< s); distribution[symbols] and distribution[symbols + 1]
+  // are kPastLastSymbol, so that a decoder's upward step stops at the last symbol without a test
+  // of its own.
   std::vector<std::uint32_t> distribution;
   std::vector<std::uint32_t> counts;
-  // Decoder: table[t] = the symbol at Q15 quantile t << table_shift, for every quantile a decoder
-  // can meet (kMaxQuantile), so that a lookup needs no bound of its own.
-  std::vector<std::uint16_t> table;
+  // Decoder: table[t] is the symbol at Q15 quantile t << table_shift, for every quantile a
+  // decoder can meet (kMaxQuantile), so that a lookup needs no bound of its own.
+  std::vector<Entry> table;
   std::uint32_t table_shift = 0;
   std::uint32_t until_update = 0;
 
  private:
   void initialise();
+  void writeTable();
 
   std::uint32_t symbols_;
   std::uint32_t total_ = 0;
@@ -189,21 +202,28 @@ __attribute__((always_inline)) inline std::uint32_t ArithmeticDecoder::decodeBit
 
 __attribute__((always_inline)) inline std::uint32_t ArithmeticDecoder::decodeSymbol(
     SymbolModel& model) {
-  const std::uint32_t* distribution = model.distribution.data();
   const std::uint32_t whole = length_;
   length_ >>= kSymbolModelShift;
   // The value as a Q15 quantile of the interval: distribution[s] * length_ <= value_ exactly when
   // distribution[s] <= quantile, so the symbol is the last s with distribution[s] <= quantile.
   // The quantile is at most kMaxQuantile, which the table covers.
   const std::uint32_t quantile = value_ / length_;
-  std::uint32_t symbol = model.table[quantile >> model.table_shift];
+  const SymbolModel::Entry entry = model.table[quantile >> model.table_shift];
   // The entry spans symbols: one step up is common enough to be taken without a branch, more rare.
-  symbol += distribution[symbol + 1] <= quantile;
-  while (distribution[symbol + 1] <= quantile) ++symbol;
-  const std::uint32_t low = distribution[symbol] * length_;
+  const bool up = entry.high <= quantile;
+  std::uint32_t symbol = entry.symbol + static_cast<std::uint32_t>(up);
+  std::uint32_t bottom = up ? entry.high : entry.low;
+  std::uint32_t top = up ? entry.next : entry.high;
+  if (top <= quantile) [[unlikely]] {
+    do {
+      ++symbol;
+      bottom = top;
+      top = model.distribution[symbol + 1];
+    } while (top <= quantile);
+  }
+  const std::uint32_t low = bottom * length_;
   // The last symbol takes the rest of the interval, up to its end.
-  const std::uint32_t high =
-      symbol + 1 == model.symbols() ? whole : distribution[symbol + 1] * length_;
+  const std::uint32_t high = symbol + 1 == model.symbols() ? whole : top * length_;
   value_ -= low;
   length_ = high - low;
   if (length_ < kMinLength) renormalise();
