@@ -7,7 +7,9 @@
 // streamed preparer on LAS and LAZ files of the procedural landscape, one thread against two;
 // BM_DecodeLandscape: reading alone, LAS against LAZ, on one thread, of point format 2 (LAZ's
 // point-wise items) and 7 (its layered items, LAS 1.4); BM_DecodeLayeredFields: layered LAZ
-// decoded whole against only the fields the preparer reads (OCTOPOINT_BENCH_LAZ: a file of yours).
+// decoded whole against only the fields the preparer reads (OCTOPOINT_BENCH_LAZ: a file of yours);
+// BM_DecodeLazFile: the file OCTOPOINT_BENCH_LAZ decoded once per iteration, the driver that
+// valgrind --tool=callgrind counts a decoded point's instructions with (docs/preparer.md).
 #include <benchmark/benchmark.h>
 
 #include <algorithm>
@@ -235,6 +237,40 @@ void BM_DecodeLayeredFields(benchmark::State& state) {
 BENCHMARK(BM_DecodeLayeredFields)
     ->ArgsProduct({{4'000'000}, {0, 1}})
     ->ArgNames({"points", "fields"})
+    ->Unit(benchmark::kMillisecond)
+    ->MeasureProcessCPUTime()
+    ->UseRealTime();
+
+// The LAZ (or LAS) file OCTOPOINT_BENCH_LAZ decoded once per iteration on one thread, every field
+// (`fields` 0) or the preparer's (1), without writing anything first: one iteration of it under
+// callgrind counts the instructions of a decoded point (its total over the file's points; opening
+// the file and the benchmark's own are a few million of them).
+//   OCTOPOINT_BENCH_LAZ=F.laz valgrind --tool=callgrind prepare_bench
+//     --benchmark_filter=BM_DecodeLazFile/fields:1 --benchmark_min_time=0.01
+void BM_DecodeLazFile(benchmark::State& state) {
+  const char* named = std::getenv("OCTOPOINT_BENCH_LAZ");
+  if (!named) {
+    state.SkipWithError("OCTOPOINT_BENCH_LAZ names no file");
+    return;
+  }
+  const auto source =
+      openLasSource(named, state.range(0) != 0 ? RecordFields::pointChunk() : RecordFields::all());
+  const std::uint64_t points = source->info().points;
+  PointChunk chunk;
+  for (auto _ : state) {
+    for (std::size_t i = 0; i < source->pieceCount(); ++i) {
+      const PointRange piece = source->piece(i);
+      source->read(piece.first, piece.count, chunk);
+      benchmark::DoNotOptimize(chunk.xyz.data());
+    }
+  }
+  state.counters["M_points_per_s"] = benchmark::Counter(
+      static_cast<double>(points) * static_cast<double>(state.iterations()) / 1e6,
+      benchmark::Counter::kIsRate);
+}
+BENCHMARK(BM_DecodeLazFile)
+    ->ArgsProduct({{0, 1}})
+    ->ArgNames({"fields"})
     ->Unit(benchmark::kMillisecond)
     ->MeasureProcessCPUTime()
     ->UseRealTime();

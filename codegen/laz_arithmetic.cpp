@@ -37,20 +37,27 @@ void BitModel::update() {
 
 SymbolModel::SymbolModel(std::uint32_t symbols, bool for_decoding)
     : symbols_(std::clamp(symbols, 2u, kMaxSymbols)) {
-  distribution.resize(symbols_ + 1);
-  distribution[symbols_] = kPastLastSymbol;
+  distribution.resize(symbols_ + 2);
+  distribution[symbols_] = distribution[symbols_ + 1] = kPastLastSymbol;
   counts.resize(symbols_);
   if (for_decoding) {
-    // At least twice as many entries as symbols (2^12 for 2048 symbols: Q15 quantiles >> 3).
+    // At least twice as many entries as symbols (2^12 for 2048 symbols: Q15 quantiles >> 3), and
+    // the few past 2^15 that a quantile may reach (kMaxQuantile).
     const int table_bits = std::bit_width(symbols_ - 1) + 1;
     table_shift = static_cast<std::uint32_t>(kSymbolModelShift - table_bits);
-    table_last = (1u << table_bits) - 1;
-    table.resize(table_last + 2);  // the last slot only counts (update)
+    table.resize((kMaxQuantile >> table_shift) + 1);
   }
-  reset();
+  initialise();
 }
 
 void SymbolModel::reset() {
+  // Untouched since its reset: its cycle is still the first and not a symbol of it has passed (a
+  // cycle only grows, so no later state looks like this).
+  if (until_update == cycle_ && cycle_ == (symbols_ + 6) >> 1) return;
+  initialise();
+}
+
+void SymbolModel::initialise() {
   total_ = 0;
   cycle_ = symbols_;
   std::fill(counts.begin(), counts.end(), 1u);
@@ -65,25 +72,43 @@ void SymbolModel::update() {
     for (std::uint32_t& count : counts) total_ += (count = (count + 1) >> 1);
   }
   const std::uint32_t scale = 0x80000000u / total_;  // Q31 / total
+  const std::uint32_t symbols = symbols_;
+  std::uint32_t* out = distribution.data();
+  const std::uint32_t* in = counts.data();
   std::uint32_t sum = 0;
-  for (std::uint32_t s = 0; s < symbols_; ++s) {
-    distribution[s] = (scale * sum) >> (31 - kSymbolModelShift);  // Q15
-    sum += counts[s];
+  for (std::uint32_t s = 0; s < symbols; ++s) {
+    out[s] = (scale * sum) >> (31 - kSymbolModelShift);  // Q15, at most 2^15
+    sum += in[s];
   }
-  if (!table.empty()) {
-    // Entry t names the symbol whose interval holds quantile t << shift: the number of symbols
-    // s >= 1 whose distribution[s] is at most it, counted without a branch (each symbol marks the
-    // first entry it is at or below, a running sum adds the marks; one slot past the last entry
-    // takes the marks of symbols that lie above every entry).
-    std::fill(table.begin(), table.end(), std::uint16_t{0});
-    const std::uint32_t round_up = (1u << table_shift) - 1;
-    for (std::uint32_t s = 1; s < symbols_; ++s)
-      ++table[(distribution[s] + round_up) >> table_shift];
-    std::uint16_t symbols_below = 0;
-    for (std::uint32_t t = 0; t <= table_last; ++t) table[t] = symbols_below += table[t];
-  }
-  cycle_ = std::min((5 * cycle_) >> 2, (symbols_ + 6) << 3);
+  if (!table.empty()) writeTable();
+  cycle_ = std::min((5 * cycle_) >> 2, (symbols + 6) << 3);
   until_update = cycle_;
+}
+
+void SymbolModel::writeTable() {
+  // Entry t names the symbol whose interval holds quantile t << shift: the last symbol s whose
+  // distribution[s] is at most it. Each symbol's first entry is the first at or above its
+  // distribution; the entries before it, from the symbol before's first on, are the symbol
+  // before's (a symbol of no width has none).
+  const std::uint32_t* at = distribution.data();
+  const std::uint32_t symbols = symbols_;
+  const std::uint32_t shift = table_shift;
+  const std::uint32_t round_up = (1u << shift) - 1;
+  const auto size = static_cast<std::uint32_t>(table.size());
+  Entry* entries = table.data();
+  std::uint32_t entry = 0;  // the first entry not written yet
+  for (std::uint32_t s = 1; s <= symbols; ++s) {
+    // within the table: a distribution is at most 2^15, and 2^15 >> shift < size
+    const std::uint32_t first = s < symbols ? (at[s] + round_up) >> shift : size;
+    if (entry < first) {
+      // the bounds past the last symbol are kPastLastSymbol, 0xffff as 16 bits
+      const Entry below{static_cast<std::uint16_t>(s - 1), static_cast<std::uint16_t>(at[s - 1]),
+                        static_cast<std::uint16_t>(at[s]), static_cast<std::uint16_t>(at[s + 1])};
+      do {
+        entries[entry] = below;
+      } while (++entry < first);
+    }
+  }
 }
 
 void ArithmeticDecoder::attach(ByteInput& input) {
@@ -97,24 +122,16 @@ void ArithmeticDecoder::start() {
   length_ = kMaxLength;
   value_ = 0;
   for (int i = 0; i < 4; ++i) value_ = (value_ << 8) | nextByte();
-}
-
-std::uint8_t ArithmeticDecoder::refill() {
-  const std::span<const std::uint8_t> window =
-      input_ ? input_->more() : std::span<const std::uint8_t>{};
-  if (window.empty()) {
-    ++overrun_;
-    return 0;
+  // An encoder's code starts below 2^32 - 1: a value at the top is a corrupt stream. It is kept
+  // below the interval's end, as decodeSymbol's table lookup needs (kMaxQuantile).
+  if (value_ >= length_) {
+    failed_ = true;
+    value_ = length_ - 1;
   }
-  next_ = window.data();
-  end_ = next_ + window.size();
-  return *next_++;
 }
 
-std::uint32_t ArithmeticDecoder::readWideBits(int bits) {
-  // Wider values come as a low 16-bit half and the rest.
-  const std::uint32_t low = readBits(16);
-  return (readBits(bits - 16) << 16) | low;
+std::span<const std::uint8_t> ArithmeticDecoder::nextWindow(ByteInput* input) {
+  return input ? input->more() : std::span<const std::uint8_t>{};
 }
 
 void ArithmeticEncoder::start() {

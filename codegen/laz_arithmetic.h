@@ -54,21 +54,39 @@ class BitModel {
 // is found is the same either way, so the format does not care.
 class SymbolModel {
  public:
+  // A decoder table entry: the symbol at the entry's quantile and the bounds (Q15) of its
+  // interval and of the next one's, so that a lookup and one step up read one entry and no
+  // distribution (each load waits for the one before: they are most of a symbol's time). Past the
+  // last symbol a bound is 0xffff, above every quantile.
+  struct Entry {
+    std::uint16_t symbol;
+    std::uint16_t low;   // distribution[symbol]
+    std::uint16_t high;  // distribution[symbol + 1]
+    std::uint16_t next;  // distribution[symbol + 2]
+  };
+
   explicit SymbolModel(std::uint32_t symbols, bool for_decoding = true);
+  // A model that has coded nothing since its last reset is left as it is: most of a chunk's models
+  // (the integer compressor's wide correctors) never code a symbol, and a reset costs a table.
   void reset();
   void update();
   std::uint32_t symbols() const { return symbols_; }
 
-  // Q15 cumulative: distribution[s] = P(< s); distribution[symbols] is kPastLastSymbol, so that a
-  // decoder's upward step stops at the last symbol without a test of its own.
+  // Q15 cumulative: distribution[s] = P(< s); distribution[symbols] and distribution[symbols + 1]
+  // are kPastLastSymbol, so that a decoder's upward step stops at the last symbol without a test
+  // of its own.
   std::vector<std::uint32_t> distribution;
   std::vector<std::uint32_t> counts;
-  std::vector<std::uint16_t> table;  // decoder: table[q] = the symbol at Q15 quantile q << shift
+  // Decoder: table[t] is the symbol at Q15 quantile t << table_shift, for every quantile a
+  // decoder can meet (kMaxQuantile), so that a lookup needs no bound of its own.
+  std::vector<Entry> table;
   std::uint32_t table_shift = 0;
-  std::uint32_t table_last = 0;  // a quantile past the table takes this, its last entry
   std::uint32_t until_update = 0;
 
  private:
+  void initialise();
+  void writeTable();
+
   std::uint32_t symbols_;
   std::uint32_t total_ = 0;
   std::uint32_t cycle_ = 0;
@@ -98,16 +116,26 @@ class MemoryInput final : public ByteInput {
   std::span<const std::uint8_t> bytes_;
 };
 
+// The quantile of the code value in its interval, value / (length >> 15), is below 2^15 + 64:
+// the decoder keeps value < length (start() makes it so, and every step keeps it), and
+// length >> 15 is at least 2^9, so value / (length >> 15) < 2^15 + 2^15 / 2^9.
+inline constexpr std::uint32_t kMaxQuantile = (1u << kSymbolModelShift) + 63;
+
+// A decoder is a value: an item decoder copies it into a local variable for a point's fields and
+// back after them, so that the code value, the interval and the input cursor stay in registers
+// (the record bytes it stores could otherwise be the decoder's, as far as the compiler knows). For
+// that, nothing on the decoding path takes the decoder's address: the input is refilled through
+// a static function.
 class ArithmeticDecoder {
  public:
   // Reads from `input` from now on; raw bytes may be taken (rawByte) before start().
   void attach(ByteInput& input);
   // Starts the arithmetic code: reads its first four bytes.
   void start();
-  // decodeBit and decodeSymbol are inline (below): they are most of a point's decoding.
+  // decodeBit, decodeSymbol and readBits are inline (below): they are most of a point's decoding.
   std::uint32_t decodeBit(BitModel& model);
   std::uint32_t decodeSymbol(SymbolModel& model);
-  std::uint32_t readBits(int bits);  // 1 to 32 raw bits; inline up to 19
+  std::uint32_t readBits(int bits);  // 1 to 32 raw bits
   std::uint32_t readInt() { return readBits(32); }
   // Zero bytes read past the end of the input; a valid stream needs none.
   std::uint64_t overrun() const { return overrun_; }
@@ -118,30 +146,46 @@ class ArithmeticDecoder {
   std::uint8_t rawByte() { return nextByte(); }
 
  private:
-  std::uint8_t nextByte() {
-    if (next_ == end_) [[unlikely]]
-      return refill();
+  static std::span<const std::uint8_t> nextWindow(ByteInput* input);
+  __attribute__((always_inline)) std::uint8_t nextByte() {
+    if (next_ == end_) [[unlikely]] {
+      const std::span<const std::uint8_t> window = nextWindow(input_);
+      if (window.empty()) {
+        ++overrun_;
+        return 0;
+      }
+      next_ = window.data();
+      end_ = next_ + window.size();
+    }
     return *next_++;
   }
-  std::uint8_t refill();
-  std::uint32_t readWideBits(int bits);  // 20 to 32 raw bits
-  void renormalise() {
+  // The interval is at least 1 wide after every step (a symbol's at least 2^9, a bit's at least
+  // 1, raw bits' at least 2^5), so a renormalisation takes at most three bytes.
+  __attribute__((always_inline)) void renormalise() {
+    if (end_ - next_ >= 3) [[likely]] {  // no test for each byte
+      do {
+        value_ = (value_ << 8) | *next_++;
+        length_ <<= 8;
+      } while (length_ < kMinLength);
+      return;
+    }
     do {
       value_ = (value_ << 8) | nextByte();
       length_ <<= 8;
     } while (length_ < kMinLength);
   }
+  std::uint32_t readNarrowBits(int bits);  // 1 to 19
 
-  ByteInput* input_ = nullptr;
-  const std::uint8_t* next_ = nullptr;
-  const std::uint8_t* end_ = nullptr;
   std::uint32_t value_ = 0;
   std::uint32_t length_ = kMaxLength;
+  const std::uint8_t* next_ = nullptr;
+  const std::uint8_t* end_ = nullptr;
+  ByteInput* input_ = nullptr;
   std::uint64_t overrun_ = 0;
   bool failed_ = false;
 };
 
-inline std::uint32_t ArithmeticDecoder::decodeBit(BitModel& model) {
+__attribute__((always_inline)) inline std::uint32_t ArithmeticDecoder::decodeBit(BitModel& model) {
   const std::uint32_t split = model.probability_0 * (length_ >> kBitModelShift);
   const std::uint32_t bit = value_ >= split;
   if (bit == 0) {
@@ -156,21 +200,30 @@ inline std::uint32_t ArithmeticDecoder::decodeBit(BitModel& model) {
   return bit;
 }
 
-inline std::uint32_t ArithmeticDecoder::decodeSymbol(SymbolModel& model) {
-  const std::uint32_t* distribution = model.distribution.data();
+__attribute__((always_inline)) inline std::uint32_t ArithmeticDecoder::decodeSymbol(
+    SymbolModel& model) {
   const std::uint32_t whole = length_;
   length_ >>= kSymbolModelShift;
   // The value as a Q15 quantile of the interval: distribution[s] * length_ <= value_ exactly when
   // distribution[s] <= quantile, so the symbol is the last s with distribution[s] <= quantile.
+  // The quantile is at most kMaxQuantile, which the table covers.
   const std::uint32_t quantile = value_ / length_;
-  std::uint32_t symbol = model.table[std::min(quantile >> model.table_shift, model.table_last)];
+  const SymbolModel::Entry entry = model.table[quantile >> model.table_shift];
   // The entry spans symbols: one step up is common enough to be taken without a branch, more rare.
-  symbol += distribution[symbol + 1] <= quantile;
-  while (distribution[symbol + 1] <= quantile) ++symbol;
-  const std::uint32_t low = distribution[symbol] * length_;
+  const bool up = entry.high <= quantile;
+  std::uint32_t symbol = entry.symbol + static_cast<std::uint32_t>(up);
+  std::uint32_t bottom = up ? entry.high : entry.low;
+  std::uint32_t top = up ? entry.next : entry.high;
+  if (top <= quantile) [[unlikely]] {
+    do {
+      ++symbol;
+      bottom = top;
+      top = model.distribution[symbol + 1];
+    } while (top <= quantile);
+  }
+  const std::uint32_t low = bottom * length_;
   // The last symbol takes the rest of the interval, up to its end.
-  const std::uint32_t high =
-      symbol + 1 == model.symbols() ? whole : distribution[symbol + 1] * length_;
+  const std::uint32_t high = symbol + 1 == model.symbols() ? whole : top * length_;
   value_ -= low;
   length_ = high - low;
   if (length_ < kMinLength) renormalise();
@@ -179,8 +232,7 @@ inline std::uint32_t ArithmeticDecoder::decodeSymbol(SymbolModel& model) {
   return symbol;
 }
 
-inline std::uint32_t ArithmeticDecoder::readBits(int bits) {
-  if (bits > 19) return readWideBits(bits);
+__attribute__((always_inline)) inline std::uint32_t ArithmeticDecoder::readNarrowBits(int bits) {
   length_ >>= bits;
   std::uint32_t value = value_ / length_;
   value_ -= length_ * value;
@@ -190,6 +242,13 @@ inline std::uint32_t ArithmeticDecoder::readBits(int bits) {
     value &= (1u << bits) - 1;
   }
   return value;
+}
+
+__attribute__((always_inline)) inline std::uint32_t ArithmeticDecoder::readBits(int bits) {
+  if (bits <= 19) return readNarrowBits(bits);
+  // Wider values come as a low 16-bit half and the rest.
+  const std::uint32_t low = readNarrowBits(16);
+  return (readNarrowBits(bits - 16) << 16) | low;
 }
 
 // The encoder: the exact inverse of ArithmeticDecoder, writing to a byte vector.

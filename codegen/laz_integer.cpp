@@ -26,39 +26,6 @@ void IntegerModels::reset() {
   k_ = 0;
 }
 
-std::int32_t IntegerModels::decode(ArithmeticDecoder& decoder, std::int32_t prediction,
-                                   std::uint32_t context) {
-  k_ = decoder.decodeSymbol(k_models_[context]);
-  std::uint32_t corrector;  // two's complement
-  if (k_ == 0) {
-    corrector = decoder.decodeBit(zero_or_one_);
-  } else if (k_ < 32) {
-    SymbolModel& model = corrector_[k_ - 1];
-    std::uint32_t c;
-    if (k_ <= kHighBits) {
-      c = decoder.decodeSymbol(model);
-    } else {
-      const int low_bits = static_cast<int>(k_) - kHighBits;
-      c = decoder.decodeSymbol(model) << low_bits;
-      c |= decoder.readBits(low_bits);
-    }
-    // c in [0, 2^(k-1)) stands for [-(2^k - 1), -2^(k-1)], c in [2^(k-1), 2^k) for [2^(k-1)+1, 2^k]
-    const std::uint32_t half = 1u << (k_ - 1);
-    corrector = c >= half ? c + 1 : c - ((half << 1) - 1);
-  } else {
-    corrector = static_cast<std::uint32_t>(corrector_min_);
-  }
-  std::uint32_t value = static_cast<std::uint32_t>(prediction) + corrector;
-  if (corrector_range_ != 0) {  // fold into [0, range) as the encoder unfolded it
-    if (static_cast<std::int32_t>(value) < 0) {
-      value += corrector_range_;
-    } else if (value >= corrector_range_) {
-      value -= corrector_range_;
-    }
-  }
-  return static_cast<std::int32_t>(value);
-}
-
 void IntegerModels::encode(ArithmeticEncoder& encoder, std::int32_t prediction, std::int32_t value,
                            std::uint32_t context) {
   std::int32_t corrector = static_cast<std::int32_t>(static_cast<std::uint32_t>(value) -

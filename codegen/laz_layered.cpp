@@ -168,7 +168,9 @@ class Point14V3 final : public LayeredItemDecoder {
   }
 
   void decode(std::uint8_t* item, std::uint32_t& channel) override {
-    ArithmeticDecoder& xy = layers_[kXy].decoder();
+    // Each layer's decoder is copied into a local variable while it decodes, and back: so its
+    // state stays in registers (codegen/laz_arithmetic.h).
+    ArithmeticDecoder xy = layers_[kXy].decoder();
     Point14Context* c = &contexts_[current_];
     std::uint32_t last_number = c->last[kReturns] & 15u;
     std::uint32_t last_count = c->last[kReturns] >> 4;
@@ -226,11 +228,14 @@ class Point14V3 final : public LayeredItemDecoder {
     store(last + kY, static_cast<std::int32_t>(load<std::uint32_t>(last + kY) +
                                                static_cast<std::uint32_t>(dy)));
     c->y_median[m].add(dy);
+    layers_[kXy].decoder() = xy;
 
     if (layers_[kZLayer].present()) {
       k = (c->dx.k() + c->dy.k()) / 2;
-      const std::int32_t z = c->z.decode(layers_[kZLayer].decoder(), c->last_z[level],
-                                         single + (k < 18 ? evenBelow(k) : 18));
+      ArithmeticDecoder d = layers_[kZLayer].decoder();
+      const std::int32_t z =
+          c->z.decode(d, c->last_z[level], single + (k < 18 ? evenBelow(k) : 18));
+      layers_[kZLayer].decoder() = d;
       store(last + kZ, z);
       c->last_z[level] = z;
     }
@@ -249,8 +254,10 @@ class Point14V3 final : public LayeredItemDecoder {
     }
     if (layers_[kIntensityLayer].present()) {
       const std::uint32_t context = (position << 1) | gps_changed;
-      c->last_intensity[context] = static_cast<std::uint16_t>(c->intensity.decode(
-          layers_[kIntensityLayer].decoder(), c->last_intensity[context], position));
+      ArithmeticDecoder d = layers_[kIntensityLayer].decoder();
+      c->last_intensity[context] =
+          static_cast<std::uint16_t>(c->intensity.decode(d, c->last_intensity[context], position));
+      layers_[kIntensityLayer].decoder() = d;
       store(last + kIntensity, c->last_intensity[context]);
     }
     if (layers_[kScanAngleLayer].present() && scan_angle_changed) {
@@ -268,9 +275,11 @@ class Point14V3 final : public LayeredItemDecoder {
                 layers_[kSourceLayer].decoder(), load<std::uint16_t>(last + kSourceId14), 0)));
     }
     if (layers_[kGpsLayer].present() && gps_changed) {
+      ArithmeticDecoder d = layers_[kGpsLayer].decoder();
       for (int switches = 0; switches < kMaxSwitches; ++switches) {
-        if (decodeTime(*c)) break;
+        if (decodeTime(d, *c)) break;
       }
+      layers_[kGpsLayer].decoder() = d;
       store(last + kGpsTime14, c->gps_times[c->gps_last]);
     }
     std::memcpy(item, last, kPoint14Bytes);
@@ -310,8 +319,7 @@ class Point14V3 final : public LayeredItemDecoder {
   }
 
   // A whole new time in a new sequence: its high 32 bits predicted by the current one's.
-  void fullTime(Point14Context& c) {
-    ArithmeticDecoder& d = layers_[kGpsLayer].decoder();
+  __attribute__((always_inline)) static void fullTime(ArithmeticDecoder& d, Point14Context& c) {
     c.gps_next = (c.gps_next + 1) & 3;
     const auto high = static_cast<std::uint32_t>(
         c.gps.decode(d, static_cast<std::int32_t>(c.gps_times[c.gps_last] >> 32), 8));
@@ -322,8 +330,7 @@ class Point14V3 final : public LayeredItemDecoder {
   }
 
   // One step of the time's code; false when it switched sequences and the time is still to come.
-  bool decodeTime(Point14Context& c) {
-    ArithmeticDecoder& d = layers_[kGpsLayer].decoder();
+  __attribute__((always_inline)) static bool decodeTime(ArithmeticDecoder& d, Point14Context& c) {
     std::int32_t& last_diff = c.gps_diff[c.gps_last];
     if (last_diff == 0) {
       const std::uint32_t multi = d.decodeSymbol(c.gps_zero_diff);
@@ -332,7 +339,7 @@ class Point14V3 final : public LayeredItemDecoder {
         c.gps_times[c.gps_last] += static_cast<std::uint64_t>(std::int64_t{last_diff});
         c.gps_extreme[c.gps_last] = 0;
       } else if (multi == 1) {
-        fullTime(c);
+        fullTime(d, c);
       } else {
         c.gps_last = (c.gps_last + multi - 1) & 3;
         return false;
@@ -361,7 +368,7 @@ class Point14V3 final : public LayeredItemDecoder {
         }
       }
     } else if (multi == kMultiCodeFull) {
-      fullTime(c);
+      fullTime(d, c);
     } else {
       c.gps_last = (c.gps_last + multi - kMultiCodeFull) & 3;
       return false;

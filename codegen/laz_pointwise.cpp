@@ -43,7 +43,7 @@ std::int32_t mulWrapping(std::int32_t a, std::int32_t b) {
 // return level.
 class Point10V2 final : public ItemDecoder {
  public:
-  explicit Point10V2(ArithmeticDecoder& decoder) : d_(decoder) {}
+  explicit Point10V2(ArithmeticDecoder& decoder) : shared_(decoder) {}
 
   void start(const std::uint8_t* first) override {
     for (auto& m : x_median_) m.reset();
@@ -65,48 +65,49 @@ class Point10V2 final : public ItemDecoder {
   }
 
   void decode(std::uint8_t* item) override {
+    ArithmeticDecoder d = shared_;  // in registers for the point (codegen/laz_arithmetic.h)
     std::uint8_t* last = last_.data();
-    const std::uint32_t changed = d_.decodeSymbol(changed_);
-    if (changed & 32) last[kFlags] = flags_.decode(d_, last[kFlags]);
+    const std::uint32_t changed = d.decodeSymbol(changed_);
+    if (changed & 32) last[kFlags] = flags_.decode(d, last[kFlags]);
     const std::uint32_t number = returnNumber(last[kFlags]);
     const std::uint32_t count = returnCount(last[kFlags]);
     const std::uint32_t m = kReturnContext[count][number];
     const std::uint32_t level = returnLevel(count, number);
     if (changed & 16) {
       last_intensity_[m] =
-          static_cast<std::uint16_t>(intensity_.decode(d_, last_intensity_[m], m < 3 ? m : 3));
+          static_cast<std::uint16_t>(intensity_.decode(d, last_intensity_[m], m < 3 ? m : 3));
     }
     // A point with nothing changed keeps the last point's intensity, whatever its context's.
     if (changed) store<std::uint16_t>(&last[kIntensity], last_intensity_[m]);
-    if (changed & 8) last[kClass] = classes_.decode(d_, last[kClass]);
+    if (changed & 8) last[kClass] = classes_.decode(d, last[kClass]);
     if (changed & 4) {
-      const std::uint32_t delta = d_.decodeSymbol(scan_angle_[scanDirection(last[kFlags])]);
+      const std::uint32_t delta = d.decodeSymbol(scan_angle_[scanDirection(last[kFlags])]);
       last[kScanAngle] = foldByte(static_cast<std::int32_t>(delta) + last[kScanAngle]);
     }
-    if (changed & 2) last[kUserData] = user_data_.decode(d_, last[kUserData]);
+    if (changed & 2) last[kUserData] = user_data_.decode(d, last[kUserData]);
     if (changed & 1) {
       store<std::uint16_t>(&last[kSourceId], static_cast<std::uint16_t>(source_id_.decode(
-                                                 d_, load<std::uint16_t>(&last[kSourceId]), 0)));
+                                                 d, load<std::uint16_t>(&last[kSourceId]), 0)));
     }
     const std::uint32_t single = count == 1;
-    const std::int32_t dx = dx_.decode(d_, x_median_[m].get(), single);
+    const std::int32_t dx = dx_.decode(d, x_median_[m].get(), single);
     store(&last[kX], addWrapping(load<std::int32_t>(&last[kX]), dx));
     x_median_[m].add(dx);
     std::uint32_t k = dx_.k();
     const std::int32_t dy =
-        dy_.decode(d_, y_median_[m].get(), single + (k < 20 ? evenBelow(k) : 20));
+        dy_.decode(d, y_median_[m].get(), single + (k < 20 ? evenBelow(k) : 20));
     store(&last[kY], addWrapping(load<std::int32_t>(&last[kY]), dy));
     y_median_[m].add(dy);
     k = (dx_.k() + dy_.k()) / 2;
-    const std::int32_t z =
-        z_.decode(d_, last_height_[level], single + (k < 18 ? evenBelow(k) : 18));
+    const std::int32_t z = z_.decode(d, last_height_[level], single + (k < 18 ? evenBelow(k) : 18));
     store(&last[kZ], z);
     last_height_[level] = z;
     std::memcpy(item, last, kPoint10Bytes);
+    shared_ = d;
   }
 
  private:
-  ArithmeticDecoder& d_;
+  ArithmeticDecoder& shared_;  // the chunk's decoder, copied in and out by decode()
   std::array<std::uint8_t, kPoint10Bytes> last_{};
   std::array<Median5, 16> x_median_, y_median_;
   std::array<std::uint16_t, 16> last_intensity_{};
@@ -123,7 +124,7 @@ class Point10V2 final : public ItemDecoder {
 // z, the other fields after the coordinates.
 class Point10V1 final : public ItemDecoder {
  public:
-  explicit Point10V1(ArithmeticDecoder& decoder) : d_(decoder) {}
+  explicit Point10V1(ArithmeticDecoder& decoder) : shared_(decoder) {}
 
   void start(const std::uint8_t* first) override {
     x_diffs_ = {};
@@ -143,33 +144,35 @@ class Point10V1 final : public ItemDecoder {
   }
 
   void decode(std::uint8_t* item) override {
+    ArithmeticDecoder d = shared_;  // in registers for the point (codegen/laz_arithmetic.h)
     std::uint8_t* last = last_.data();
-    const std::int32_t dx = dx_.decode(d_, median3(x_diffs_), 0);
+    const std::int32_t dx = dx_.decode(d, median3(x_diffs_), 0);
     store(&last[kX], addWrapping(load<std::int32_t>(&last[kX]), dx));
     std::uint32_t k = dx_.k();
-    const std::int32_t dy = dy_.decode(d_, median3(y_diffs_), k < 19 ? k : 19);
+    const std::int32_t dy = dy_.decode(d, median3(y_diffs_), k < 19 ? k : 19);
     store(&last[kY], addWrapping(load<std::int32_t>(&last[kY]), dy));
     k = (k + dy_.k()) / 2;
-    store(&last[kZ], z_.decode(d_, load<std::int32_t>(&last[kZ]), k < 19 ? k : 19));
-    const std::uint32_t changed = d_.decodeSymbol(changed_);
+    store(&last[kZ], z_.decode(d, load<std::int32_t>(&last[kZ]), k < 19 ? k : 19));
+    const std::uint32_t changed = d.decodeSymbol(changed_);
     if (changed & 32) {
       store<std::uint16_t>(&last[kIntensity], static_cast<std::uint16_t>(intensity_.decode(
-                                                  d_, load<std::uint16_t>(&last[kIntensity]), 0)));
+                                                  d, load<std::uint16_t>(&last[kIntensity]), 0)));
     }
-    if (changed & 16) last[kFlags] = flags_.decode(d_, last[kFlags]);
-    if (changed & 8) last[kClass] = classes_.decode(d_, last[kClass]);
+    if (changed & 16) last[kFlags] = flags_.decode(d, last[kFlags]);
+    if (changed & 8) last[kClass] = classes_.decode(d, last[kClass]);
     if (changed & 4) {
-      last[kScanAngle] = static_cast<std::uint8_t>(scan_angle_.decode(d_, last[kScanAngle], k < 3));
+      last[kScanAngle] = static_cast<std::uint8_t>(scan_angle_.decode(d, last[kScanAngle], k < 3));
     }
-    if (changed & 2) last[kUserData] = user_data_.decode(d_, last[kUserData]);
+    if (changed & 2) last[kUserData] = user_data_.decode(d, last[kUserData]);
     if (changed & 1) {
       store<std::uint16_t>(&last[kSourceId], static_cast<std::uint16_t>(source_id_.decode(
-                                                 d_, load<std::uint16_t>(&last[kSourceId]), 0)));
+                                                 d, load<std::uint16_t>(&last[kSourceId]), 0)));
     }
     x_diffs_[next_] = dx;
     y_diffs_[next_] = dy;
     next_ = next_ == 2 ? 0 : next_ + 1;
     std::memcpy(item, last, kPoint10Bytes);
+    shared_ = d;
   }
 
  private:
@@ -178,7 +181,7 @@ class Point10V1 final : public ItemDecoder {
     return v[0] < v[2] ? v[0] : v[1] < v[2] ? v[2] : v[1];
   }
 
-  ArithmeticDecoder& d_;
+  ArithmeticDecoder& shared_;  // the chunk's decoder, copied in and out by decode()
   std::array<std::uint8_t, kPoint10Bytes> last_{};
   std::array<std::int32_t, 3> x_diffs_{}, y_diffs_{};
   std::size_t next_ = 0;
@@ -192,7 +195,7 @@ class Point10V1 final : public ItemDecoder {
 // predicted by a multiple of its last difference.
 class GpsTime11V2 final : public ItemDecoder {
  public:
-  explicit GpsTime11V2(ArithmeticDecoder& decoder) : d_(decoder) {}
+  explicit GpsTime11V2(ArithmeticDecoder& decoder) : shared_(decoder) {}
 
   void start(const std::uint8_t* first) override {
     last_ = next_ = 0;
@@ -205,12 +208,14 @@ class GpsTime11V2 final : public ItemDecoder {
   }
 
   void decode(std::uint8_t* item) override {
+    ArithmeticDecoder d = shared_;  // in registers for the point (codegen/laz_arithmetic.h)
     // A switch to another sequence re-reads with that sequence's state; an encoder switches at
     // most once per point, so a stream asking for more is corrupt (and must not loop forever).
     for (int switches = 0; switches < kMaxSwitches; ++switches) {
-      if (decodeStep()) break;
+      if (decodeStep(d)) break;
     }
     store(item, times_[last_]);
+    shared_ = d;
   }
 
  private:
@@ -231,56 +236,56 @@ class GpsTime11V2 final : public ItemDecoder {
   }
 
   // A whole new time in a new sequence: its high 32 bits predicted by the current one's.
-  void fullTime() {
+  __attribute__((always_inline)) void fullTime(ArithmeticDecoder& d) {
     next_ = (next_ + 1) & 3;
     const auto high = static_cast<std::uint32_t>(
-        time_.decode(d_, static_cast<std::int32_t>(times_[last_] >> 32), 8));
-    times_[next_] = (static_cast<std::uint64_t>(high) << 32) | d_.readInt();
+        time_.decode(d, static_cast<std::int32_t>(times_[last_] >> 32), 8));
+    times_[next_] = (static_cast<std::uint64_t>(high) << 32) | d.readInt();
     last_ = next_;
     diff_[last_] = 0;
     extreme_[last_] = 0;
   }
 
   // One decoding step; false when the stream switched sequences and the point is still to come.
-  bool decodeStep() {
+  __attribute__((always_inline)) bool decodeStep(ArithmeticDecoder& d) {
     std::int32_t& last_diff = diff_[last_];
     if (last_diff == 0) {
-      const std::uint32_t multi = d_.decodeSymbol(zero_diff_);
+      const std::uint32_t multi = d.decodeSymbol(zero_diff_);
       if (multi == 1) {
-        last_diff = time_.decode(d_, 0, 0);
+        last_diff = time_.decode(d, 0, 0);
         times_[last_] += static_cast<std::uint64_t>(static_cast<std::int64_t>(last_diff));
         extreme_[last_] = 0;
       } else if (multi == 2) {
-        fullTime();
+        fullTime(d);
       } else if (multi > 2) {
         last_ = (last_ + multi - 2) & 3;
         return false;
       }
       return true;
     }
-    const std::uint32_t multi = d_.decodeSymbol(multi_);
+    const std::uint32_t multi = d.decodeSymbol(multi_);
     if (multi == 1) {
       times_[last_] +=
-          static_cast<std::uint64_t>(static_cast<std::int64_t>(time_.decode(d_, last_diff, 1)));
+          static_cast<std::uint64_t>(static_cast<std::int64_t>(time_.decode(d, last_diff, 1)));
       extreme_[last_] = 0;
     } else if (multi < kMultiUnchanged) {
       if (multi == 0) {
-        addDiff(time_.decode(d_, 0, 7), true);
+        addDiff(time_.decode(d, 0, 7), true);
       } else if (multi < static_cast<std::uint32_t>(kMulti)) {
         const std::int32_t prediction = mulWrapping(static_cast<std::int32_t>(multi), last_diff);
-        addDiff(time_.decode(d_, prediction, multi < 10 ? 2 : 3), false);
+        addDiff(time_.decode(d, prediction, multi < 10 ? 2 : 3), false);
       } else if (multi == static_cast<std::uint32_t>(kMulti)) {
-        addDiff(time_.decode(d_, mulWrapping(kMulti, last_diff), 4), true);
+        addDiff(time_.decode(d, mulWrapping(kMulti, last_diff), 4), true);
       } else {
         const std::int32_t negative = kMulti - static_cast<std::int32_t>(multi);
         if (negative > kMultiMinus) {
-          addDiff(time_.decode(d_, mulWrapping(negative, last_diff), 5), false);
+          addDiff(time_.decode(d, mulWrapping(negative, last_diff), 5), false);
         } else {
-          addDiff(time_.decode(d_, mulWrapping(kMultiMinus, last_diff), 6), true);
+          addDiff(time_.decode(d, mulWrapping(kMultiMinus, last_diff), 6), true);
         }
       }
     } else if (multi == kMultiCodeFull) {
-      fullTime();
+      fullTime(d);
     } else if (multi > kMultiCodeFull) {
       last_ = (last_ + multi - kMultiCodeFull) & 3;
       return false;
@@ -288,7 +293,7 @@ class GpsTime11V2 final : public ItemDecoder {
     return true;
   }
 
-  ArithmeticDecoder& d_;
+  ArithmeticDecoder& shared_;  // the chunk's decoder, copied in and out by decode()
   std::uint32_t last_ = 0;
   std::uint32_t next_ = 0;
   std::array<std::uint64_t, 4> times_{};
@@ -302,7 +307,7 @@ class GpsTime11V2 final : public ItemDecoder {
 // GPSTIME11 version 1: one sequence.
 class GpsTime11V1 final : public ItemDecoder {
  public:
-  explicit GpsTime11V1(ArithmeticDecoder& decoder) : d_(decoder) {}
+  explicit GpsTime11V1(ArithmeticDecoder& decoder) : shared_(decoder) {}
 
   void start(const std::uint8_t* first) override {
     diff_ = 0;
@@ -314,36 +319,38 @@ class GpsTime11V1 final : public ItemDecoder {
   }
 
   void decode(std::uint8_t* item) override {
+    ArithmeticDecoder d = shared_;  // in registers for the point (codegen/laz_arithmetic.h)
     if (diff_ == 0) {
-      const std::uint32_t multi = d_.decodeSymbol(zero_diff_);
+      const std::uint32_t multi = d.decodeSymbol(zero_diff_);
       if (multi == 1) {
-        diff_ = time_.decode(d_, 0, 0);
+        diff_ = time_.decode(d, 0, 0);
         add(diff_);
       } else if (multi == 2) {
-        readWhole();
+        readWhole(d);
       }
     } else {
-      const std::uint32_t multi = d_.decodeSymbol(multi_);
+      const std::uint32_t multi = d.decodeSymbol(multi_);
       if (multi < kMultiMax - 2) {
         std::int32_t diff;
         if (multi == 1) {
-          diff = time_.decode(d_, diff_, 1);
+          diff = time_.decode(d, diff_, 1);
           diff_ = diff;
           extreme_ = 0;
         } else if (multi == 0) {
-          diff = time_.decode(d_, diff_ / 4, 2);
+          diff = time_.decode(d, diff_ / 4, 2);
           noteExtreme(diff);
         } else {
           const std::uint32_t context = multi < 10 ? 3 : multi < 50 ? 4 : 5;
-          diff = time_.decode(d_, mulWrapping(static_cast<std::int32_t>(multi), diff_), context);
+          diff = time_.decode(d, mulWrapping(static_cast<std::int32_t>(multi), diff_), context);
           if (multi == kMultiMax - 3) noteExtreme(diff);
         }
         add(diff);
       } else if (multi < kMultiMax - 1) {
-        readWhole();
+        readWhole(d);
       }
     }
     store(item, time_bits_);
+    shared_ = d;
   }
 
  private:
@@ -356,12 +363,12 @@ class GpsTime11V1 final : public ItemDecoder {
       extreme_ = 0;
     }
   }
-  void readWhole() {
-    const std::uint64_t low = d_.readInt();
-    time_bits_ = (std::uint64_t{d_.readInt()} << 32) | low;
+  __attribute__((always_inline)) void readWhole(ArithmeticDecoder& d) {
+    const std::uint64_t low = d.readInt();
+    time_bits_ = (std::uint64_t{d.readInt()} << 32) | low;
   }
 
-  ArithmeticDecoder& d_;
+  ArithmeticDecoder& shared_;  // the chunk's decoder, copied in and out by decode()
   std::uint64_t time_bits_ = 0;
   std::int32_t diff_ = 0;
   std::int32_t extreme_ = 0;
@@ -373,7 +380,7 @@ class GpsTime11V1 final : public ItemDecoder {
 // RGB12 version 2: the colour predicted from the last point's (decodeRgb).
 class Rgb12V2 final : public ItemDecoder {
  public:
-  explicit Rgb12V2(ArithmeticDecoder& decoder) : d_(decoder) {}
+  explicit Rgb12V2(ArithmeticDecoder& decoder) : shared_(decoder) {}
 
   void start(const std::uint8_t* first) override {
     models_.reset();
@@ -381,12 +388,14 @@ class Rgb12V2 final : public ItemDecoder {
   }
 
   void decode(std::uint8_t* item) override {
-    decodeRgb(d_, models_, last_.data(), last_.data());
+    ArithmeticDecoder d = shared_;  // in registers for the point (codegen/laz_arithmetic.h)
+    decodeRgb(d, models_, last_.data(), last_.data());
     std::memcpy(item, last_.data(), 6);
+    shared_ = d;
   }
 
  private:
-  ArithmeticDecoder& d_;
+  ArithmeticDecoder& shared_;  // the chunk's decoder, copied in and out by decode()
   std::array<std::uint8_t, 6> last_{};
   RgbModels models_;
 };
@@ -394,7 +403,7 @@ class Rgb12V2 final : public ItemDecoder {
 // RGB12 version 1: each changed byte through one integer compressor, a context per byte.
 class Rgb12V1 final : public ItemDecoder {
  public:
-  explicit Rgb12V1(ArithmeticDecoder& decoder) : d_(decoder) {}
+  explicit Rgb12V1(ArithmeticDecoder& decoder) : shared_(decoder) {}
 
   void start(const std::uint8_t* first) override {
     used_.reset();
@@ -403,26 +412,28 @@ class Rgb12V1 final : public ItemDecoder {
   }
 
   void decode(std::uint8_t* item) override {
-    const std::uint32_t used = d_.decodeSymbol(used_);
+    ArithmeticDecoder d = shared_;  // in registers for the point (codegen/laz_arithmetic.h)
+    const std::uint32_t used = d.decodeSymbol(used_);
     for (std::uint32_t c = 0; c < 3; ++c) {
       const std::uint32_t low_bit = 1u << (2 * c);
       const std::uint32_t high_bit = low_bit << 1;
       std::uint32_t value =
           (used & low_bit)
-              ? static_cast<std::uint32_t>(bytes_.decode(d_, last_[c] & 0xff, 2 * c)) & 0xffffu
+              ? static_cast<std::uint32_t>(bytes_.decode(d, last_[c] & 0xff, 2 * c)) & 0xffffu
               : last_[c] & 0xffu;
       value |=
           (used & high_bit)
-              ? (static_cast<std::uint32_t>(bytes_.decode(d_, last_[c] >> 8, 2 * c + 1)) & 0xffffu)
+              ? (static_cast<std::uint32_t>(bytes_.decode(d, last_[c] >> 8, 2 * c + 1)) & 0xffffu)
                     << 8
               : last_[c] & 0xff00u;
       last_[c] = static_cast<std::uint16_t>(value);
       store(item + 2 * c, last_[c]);
     }
+    shared_ = d;
   }
 
  private:
-  ArithmeticDecoder& d_;
+  ArithmeticDecoder& shared_;  // the chunk's decoder, copied in and out by decode()
   std::array<std::uint16_t, 3> last_{};
   SymbolModel used_{64};
   IntegerModels bytes_{8, 6};
@@ -431,7 +442,7 @@ class Rgb12V1 final : public ItemDecoder {
 // WAVEPACKET13 version 1: the packet predicted from the last point's (decodeWavePacket).
 class WavePacket13V1 final : public ItemDecoder {
  public:
-  explicit WavePacket13V1(ArithmeticDecoder& decoder) : d_(decoder) {}
+  explicit WavePacket13V1(ArithmeticDecoder& decoder) : shared_(decoder) {}
 
   void start(const std::uint8_t* first) override {
     models_.reset();
@@ -439,12 +450,14 @@ class WavePacket13V1 final : public ItemDecoder {
   }
 
   void decode(std::uint8_t* item) override {
-    decodeWavePacket(d_, models_, last_.data(), last_.data());
+    ArithmeticDecoder d = shared_;  // in registers for the point (codegen/laz_arithmetic.h)
+    decodeWavePacket(d, models_, last_.data(), last_.data());
     std::memcpy(item, last_.data(), last_.size());
+    shared_ = d;
   }
 
  private:
-  ArithmeticDecoder& d_;
+  ArithmeticDecoder& shared_;  // the chunk's decoder, copied in and out by decode()
   std::array<std::uint8_t, kWavePacketBytes> last_{};
   WavePacketModels models_;
 };
@@ -453,7 +466,7 @@ class WavePacket13V1 final : public ItemDecoder {
 class BytesV2 final : public ItemDecoder {
  public:
   BytesV2(ArithmeticDecoder& decoder, std::size_t count)
-      : d_(decoder), last_(count), models_(count, SymbolModel(256)) {}
+      : shared_(decoder), last_(count), models_(count, SymbolModel(256)) {}
 
   void start(const std::uint8_t* first) override {
     for (auto& model : models_) model.reset();
@@ -461,14 +474,16 @@ class BytesV2 final : public ItemDecoder {
   }
 
   void decode(std::uint8_t* item) override {
+    ArithmeticDecoder d = shared_;  // in registers for the point (codegen/laz_arithmetic.h)
     for (std::size_t i = 0; i < last_.size(); ++i) {
-      last_[i] = foldByte(last_[i] + static_cast<std::int32_t>(d_.decodeSymbol(models_[i])));
+      last_[i] = foldByte(last_[i] + static_cast<std::int32_t>(d.decodeSymbol(models_[i])));
     }
     std::memcpy(item, last_.data(), last_.size());
+    shared_ = d;
   }
 
  private:
-  ArithmeticDecoder& d_;
+  ArithmeticDecoder& shared_;  // the chunk's decoder, copied in and out by decode()
   std::vector<std::uint8_t> last_;
   std::vector<SymbolModel> models_;
 };
@@ -477,7 +492,7 @@ class BytesV2 final : public ItemDecoder {
 class BytesV1 final : public ItemDecoder {
  public:
   BytesV1(ArithmeticDecoder& decoder, std::size_t count)
-      : d_(decoder), last_(count), bytes_(8, static_cast<std::uint32_t>(count)) {}
+      : shared_(decoder), last_(count), bytes_(8, static_cast<std::uint32_t>(count)) {}
 
   void start(const std::uint8_t* first) override {
     bytes_.reset();
@@ -485,15 +500,17 @@ class BytesV1 final : public ItemDecoder {
   }
 
   void decode(std::uint8_t* item) override {
+    ArithmeticDecoder d = shared_;  // in registers for the point (codegen/laz_arithmetic.h)
     for (std::size_t i = 0; i < last_.size(); ++i) {
       last_[i] =
-          static_cast<std::uint8_t>(bytes_.decode(d_, last_[i], static_cast<std::uint32_t>(i)));
+          static_cast<std::uint8_t>(bytes_.decode(d, last_[i], static_cast<std::uint32_t>(i)));
     }
     std::memcpy(item, last_.data(), last_.size());
+    shared_ = d;
   }
 
  private:
-  ArithmeticDecoder& d_;
+  ArithmeticDecoder& shared_;  // the chunk's decoder, copied in and out by decode()
   std::vector<std::uint8_t> last_;
   IntegerModels bytes_;
 };

@@ -17,8 +17,9 @@ void RgbModels::reset() {
 
 // Which of the six colour bytes changed, then each changed byte as a difference, green and blue
 // predicted from red's change (the channels of a colour tend to move together).
-void decodeRgb(ArithmeticDecoder& d, RgbModels& models, const std::uint8_t* last_bytes,
+void decodeRgb(ArithmeticDecoder& shared, RgbModels& models, const std::uint8_t* last_bytes,
                std::uint8_t* out) {
+  ArithmeticDecoder d = shared;  // in registers for the colour (codegen/laz_arithmetic.h)
   std::array<std::uint16_t, 3> last{};
   for (std::size_t c = 0; c < 3; ++c) last[c] = load<std::uint16_t>(last_bytes + 2 * c);
   const auto symbol = [&](std::size_t byte) {
@@ -52,6 +53,7 @@ void decodeRgb(ArithmeticDecoder& d, RgbModels& models, const std::uint8_t* last
     rgb[1] = rgb[2] = rgb[0];
   }
   for (std::size_t c = 0; c < 3; ++c) store(out + 2 * c, static_cast<std::uint16_t>(rgb[c]));
+  shared = d;
 }
 
 void WavePacketModels::reset() {
@@ -67,8 +69,9 @@ void WavePacketModels::reset() {
 
 // The descriptor index, the offset of the waveform (same, following the last packet, a
 // difference, or whole), and the packet's size, return point and direction.
-void decodeWavePacket(ArithmeticDecoder& d, WavePacketModels& models, const std::uint8_t* last,
+void decodeWavePacket(ArithmeticDecoder& shared, WavePacketModels& models, const std::uint8_t* last,
                       std::uint8_t* out) {
+  ArithmeticDecoder d = shared;  // in registers for the packet (codegen/laz_arithmetic.h)
   std::array<std::uint8_t, kWavePacketBytes> next{};
   next[0] = static_cast<std::uint8_t>(d.decodeSymbol(models.index));
   std::uint64_t offset = load<std::uint64_t>(last + 1);
@@ -91,6 +94,7 @@ void decodeWavePacket(ArithmeticDecoder& d, WavePacketModels& models, const std:
     store(next.data() + at, models.xyz.decode(d, load<std::int32_t>(last + at), axis));
   }
   std::memcpy(out, next.data(), next.size());
+  shared = d;
 }
 
 }  // namespace octopoint::laz
