@@ -24,6 +24,7 @@
 #include "renderer/perspective.h"
 #include "renderer/perspective_depth.h"
 #include "renderer/perspective_detail.h"
+#include "renderer/perspective_extent.h"
 #include "renderer/upper_tree_index.h"
 
 namespace octopoint {
@@ -42,23 +43,6 @@ struct PerspectiveLeaf {
   std::int64_t half_x = 0;
   std::int64_t half_y = 0;
 };
-
-// The sum of an affine map's axis vectors' magnitudes, per axis: the extent of the shadow of a
-// cube of edge 1 (screen x and y in Q(32-F).F, depth in Q.24).
-inline Point3<std::int64_t> cubeShadow(const AffineProjection& affine) {
-  const auto& a = affine.axis;
-  const auto sum = [](std::int64_t p, std::int64_t q, std::int64_t r) {
-    return (p < 0 ? -p : p) + (q < 0 ? -q : q) + (r < 0 ? -r : r);
-  };
-  return {sum(a[0].x, a[1].x, a[2].x), sum(a[0].y, a[1].y, a[2].y), sum(a[0].z, a[1].z, a[2].z)};
-}
-
-// Half the projected extent of a voxel of `depth` under an affine map whose cube's shadow is
-// `shadow`, per screen axis: the shadow over 2^(depth + 1), rounded up.
-inline Point3<std::int64_t> voxelHalfExtent(const Point3<std::int64_t>& shadow, int depth) {
-  const std::int64_t round_up = (std::int64_t{1} << (depth + 1)) - 1;
-  return {(shadow.x + round_up) >> (depth + 1), (shadow.y + round_up) >> (depth + 1), 0};
-}
 
 // A subtree the walk draws from one affine map, announced to a sink that has enterAffine (and
 // leaveAffine, called when its last leaf was handed over): every leaf it hands over meanwhile
@@ -112,19 +96,6 @@ struct PerspectiveWalkTables {
   // lies outside but whose splat reaches in is still drawn. 0 at one footprint.
   std::int64_t splat_margin = 0;
 };
-
-// A leaf's splat half extents (Q(32-F).F) widened by the sample reach `reach` (Q4) and rounded
-// up, as buildFrameSetup does: the same half at one footprint. Half extents past 2^55 (a voxel at
-// the eye, millions of pixels wide) are taken as 2^55, so that the product fits.
-inline constexpr std::int64_t kWidestWidenedHalf = std::int64_t{1} << 55;
-inline Point3<std::int64_t> widenedHalfExtent(const Point3<std::int64_t>& half,
-                                              std::int32_t reach) {
-  if (reach == kOneSampleReach) return half;
-  const auto widen = [reach](std::int64_t h) {
-    return (std::min(h, kWidestWidenedHalf) * reach + 15) >> 4;
-  };
-  return {widen(half.x), widen(half.y), half.z};
-}
 
 // Whether the box of centre `c` and half extent `reach` (camera units) lies wholly behind the near
 // plane `near` or beyond one of the frustum's side planes; conservative by a unit (the products
