@@ -179,6 +179,23 @@ BENCHMARK(BM_PrepareStreamedLaz)
     ->MeasureProcessCPUTime()
     ->UseRealTime();
 
+// Reads every piece of `source` in order into one PointChunk per iteration; counts `points` a
+// pass as M_points_per_s.
+template <typename Source>
+void decodeEveryPiece(benchmark::State& state, Source& source, std::uint64_t points) {
+  PointChunk chunk;
+  for (auto _ : state) {
+    for (std::size_t i = 0; i < source.pieceCount(); ++i) {
+      const PointRange piece = source.piece(i);
+      source.read(piece.first, piece.count, chunk);
+      benchmark::DoNotOptimize(chunk.xyz.data());
+    }
+  }
+  state.counters["M_points_per_s"] = benchmark::Counter(
+      static_cast<double>(points) * static_cast<double>(state.iterations()) / 1e6,
+      benchmark::Counter::kIsRate);
+}
+
 // Decoding alone on one thread, every piece in order into PointChunk (doubles, colour,
 // intensity), as a pass reads them: LAZ points per second per core, and LAS beside it.
 void BM_DecodeLandscape(benchmark::State& state) {
@@ -186,17 +203,7 @@ void BM_DecodeLandscape(benchmark::State& state) {
   const std::string& path =
       landscapeLas(points, state.range(1) != 0, static_cast<int>(state.range(2)));
   const auto source = openPointSource(path);
-  PointChunk chunk;
-  for (auto _ : state) {
-    for (std::size_t i = 0; i < source->pieceCount(); ++i) {
-      const PointRange piece = source->piece(i);
-      source->read(piece.first, piece.count, chunk);
-      benchmark::DoNotOptimize(chunk.xyz.data());
-    }
-  }
-  state.counters["M_points_per_s"] = benchmark::Counter(
-      static_cast<double>(points) * static_cast<double>(state.iterations()) / 1e6,
-      benchmark::Counter::kIsRate);
+  decodeEveryPiece(state, *source, points);
 }
 BENCHMARK(BM_DecodeLandscape)
     ->ArgsProduct({{10'000'000}, {0, 1}, {2, 7}})
@@ -256,17 +263,7 @@ void BM_DecodeLazFile(benchmark::State& state) {
   const auto source =
       openLasSource(named, state.range(0) != 0 ? RecordFields::pointChunk() : RecordFields::all());
   const std::uint64_t points = source->info().points;
-  PointChunk chunk;
-  for (auto _ : state) {
-    for (std::size_t i = 0; i < source->pieceCount(); ++i) {
-      const PointRange piece = source->piece(i);
-      source->read(piece.first, piece.count, chunk);
-      benchmark::DoNotOptimize(chunk.xyz.data());
-    }
-  }
-  state.counters["M_points_per_s"] = benchmark::Counter(
-      static_cast<double>(points) * static_cast<double>(state.iterations()) / 1e6,
-      benchmark::Counter::kIsRate);
+  decodeEveryPiece(state, *source, points);
 }
 BENCHMARK(BM_DecodeLazFile)
     ->ArgsProduct({{0, 1}})
