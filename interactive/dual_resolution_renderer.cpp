@@ -354,8 +354,13 @@ bool DualResolutionRenderer::draw(Slot& slot, Worker& worker, const std::atomic<
   }
   // The zoom is clamped, so the camera always fits; a refused camera would leave the frame empty.
   const LevelView* level = levelFor(slot.info.source, camera);
-  if (level != nullptr &&
-      buildFrameSetup(camera, level->depth, kDefaultFractionBits, &setup) == CameraError::kNone) {
+  // The level's splats as wide as its samples lie apart (the reach its model stores; levels given
+  // without their model draw one footprint).
+  const std::int32_t reach = model_ != nullptr && level != nullptr
+                                 ? model_->sampleReachOfDepth(level->depth)
+                                 : kOneSampleReach;
+  if (level != nullptr && buildFrameSetup(camera, level->depth, kDefaultFractionBits, &setup,
+                                          reach) == CameraError::kNone) {
     slot.info.depth = level->depth;
     if (!render_(*level, setup, slot.frame, abort)) return false;
     // A refused fill cannot happen (fitBuffers made the filler as wide as the frame).

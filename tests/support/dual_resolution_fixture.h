@@ -89,9 +89,11 @@ class DualResolution : public ::testing::Test {
   }
 
   // The frame the renderer should show for `view` at `width` x `height`, drawn directly with the
-  // renderer's default variant (with splats where voxels are larger than a pixel).
+  // renderer's default variant (with splats where voxels are larger than a pixel, `sample_reach`
+  // footprints wide, Q4).
   Framebuffer directRender(const LevelView& level, const ViewParameters& view,
-                           std::int32_t width = 320, std::int32_t height = 240) const {
+                           std::int32_t width = 320, std::int32_t height = 240,
+                           std::int32_t sample_reach = kOneSampleReach) const {
     Camera camera;
     camera.yaw = view.yaw;
     camera.pitch = view.pitch;
@@ -99,7 +101,7 @@ class DualResolution : public ::testing::Test {
     camera.width = width;
     camera.height = height;
     FrameSetup setup;
-    EXPECT_EQ(buildFrameSetup(camera, level.depth, kDefaultFractionBits, &setup),
+    EXPECT_EQ(buildFrameSetup(camera, level.depth, kDefaultFractionBits, &setup, sample_reach),
               CameraError::kNone);
     Framebuffer frame(camera.width, camera.height);
     frame.clear();
