@@ -134,7 +134,9 @@ int drawWith(Variant variant, std::int32_t yaw_millidegrees, std::int32_t pitch_
   const LevelView* level = autoLevel(web.model, camera);
   if (level == nullptr) return fail(describe(CameraError::kOverflow));
   FrameSetup setup;
-  if (const CameraError error = buildFrameSetup(camera, level->depth, kDefaultFractionBits, &setup);
+  // The level's splats as wide as its samples lie apart, as octopoint-render draws them.
+  if (const CameraError error = buildFrameSetup(camera, level->depth, kDefaultFractionBits, &setup,
+                                                web.model.sampleReachOfDepth(level->depth));
       error != CameraError::kNone) {
     return fail(describe(error));
   }
