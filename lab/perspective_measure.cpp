@@ -62,12 +62,7 @@ class ExactVoxels {
   // A voxel of `depth` centred on `centre` (Q.24 cube edges) that the walk handed over at
   // (`x`, `y`) pixels.
   void add(const ModelPoint& centre, int depth, double x, double y, PerspectiveMeasurement& out) {
-    const double d[3] = {static_cast<double>(centre.x - camera_.eye.x),
-                         static_cast<double>(centre.y - camera_.eye.y),
-                         static_cast<double>(centre.z - camera_.eye.z)};
-    double c[3];
-    for (int row = 0; row < 3; ++row)
-      c[row] = m_[row][0] * d[0] + m_[row][1] * d[1] + m_[row][2] * d[2];
+    const Vector3 c = exactCameraSpace(m_, camera_.eye, centre);
     ++out.leaves;
     const double half = kUnit * std::ldexp(1.0, -(depth + 1));
     if (c[2] > 0) {
@@ -86,10 +81,9 @@ class ExactVoxels {
     }
     std::array<Vec2, 8> corners{};
     for (unsigned k = 0; k < 8; ++k) {
-      const double s[3] = {(k & 4) ? half : -half, (k & 2) ? half : -half, (k & 1) ? half : -half};
-      double p[3];
-      for (int row = 0; row < 3; ++row)
-        p[row] = c[row] + m_[row][0] * s[0] + m_[row][1] * s[1] + m_[row][2] * s[2];
+      const Vector3 s =
+          rotated(m_, {(k & 4) ? half : -half, (k & 2) ? half : -half, (k & 1) ? half : -half});
+      const Vector3 p{c[0] + s[0], c[1] + s[1], c[2] + s[2]};
       if (!(p[2] > near_)) {
         ++out.near_voxels;
         return;

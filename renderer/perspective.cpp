@@ -43,19 +43,25 @@ std::int64_t divideRounded(std::int64_t numerator, std::int64_t denominator) {
   return negative ? -magnitude : magnitude;
 }
 
+// f rounded up to whole pixels plus half the larger side (pixels, f from Q.16): the most a unit's
+// rounding in camera space, scaled by 1 + |c.x| / c.z, can move a screen position, per unit of 1/z.
+std::int64_t focalAndHalfSide(std::int64_t focal_q16, std::int32_t width, std::int32_t height) {
+  return (focal_q16 >> 16) + 1 + (std::max(width, height) + 1) / 2;
+}
+
 }  // namespace
 
 std::int64_t nearPlaneFloor(std::int64_t focal_q16, std::int32_t width, std::int32_t height) {
   // Rounding a camera-space coordinate to the unit moves x = f * c.x / c.z by at most
   // f * (1/2) * (1 + |c.x| / c.z) / c.z pixels, and |c.x| / c.z <= (W / 2) / f on the screen:
   // (f + W / 2) / (2 z), at most 1/8 pixel from z = 4 (f + max(W, H) / 2) units on. f <= 2^16.
-  return 4 * ((focal_q16 >> 16) + 1 + (std::max(width, height) + 1) / 2);
+  return 4 * focalAndHalfSide(focal_q16, width, height);
 }
 
 int walkFractionBits(std::int64_t focal_q16, std::int32_t width, std::int32_t height,
                      std::int64_t near) {
   // f (Q.16) rounded up, plus half the larger side, times 68: below 2^24 for every frame.
-  const std::int64_t need = 68 * ((focal_q16 >> 16) + 1 + (std::max(width, height) + 1) / 2);
+  const std::int64_t need = 68 * focalAndHalfSide(focal_q16, width, height);
   int bits = 0;
   while (bits < kMaxWalkBits && (near << bits) < need) ++bits;
   return bits;

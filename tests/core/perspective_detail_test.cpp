@@ -71,16 +71,10 @@ std::vector<GridVoxel> gridVoxelsOf(const LevelView& level) {
 std::array<double, 3> cameraCentreOf(const PerspectiveCamera& camera, const GridVoxel& v,
                                      int depth) {
   const double edge = kUnit / static_cast<double>(std::int64_t{1} << depth);
-  const double p[3] = {(static_cast<double>(v.x) + 0.5) * edge - kUnit / 2,
-                       (static_cast<double>(v.y) + 0.5) * edge - kUnit / 2,
-                       (static_cast<double>(v.z) + 0.5) * edge - kUnit / 2};
-  const double d[3] = {p[0] - static_cast<double>(camera.eye.x),
-                       p[1] - static_cast<double>(camera.eye.y),
-                       p[2] - static_cast<double>(camera.eye.z)};
-  const Matrix m = worldToCamera(camera);
-  std::array<double, 3> c{};
-  for (int row = 0; row < 3; ++row) c[row] = m[row][0] * d[0] + m[row][1] * d[1] + m[row][2] * d[2];
-  return c;
+  return exactCameraSpace(worldToCamera(camera), camera.eye,
+                          Vector3{(static_cast<double>(v.x) + 0.5) * edge - kUnit / 2,
+                                  (static_cast<double>(v.y) + 0.5) * edge - kUnit / 2,
+                                  (static_cast<double>(v.z) + 0.5) * edge - kUnit / 2});
 }
 
 struct DetailView {

@@ -73,12 +73,7 @@ GroundResult walkGround(const Ground& ground, const PerspectiveView& view) {
   auto check = [&](const PerspectiveLeaf& leaf) {
     ASSERT_LT(leaf.index, ground.centres.size());
     const ModelPoint& p = ground.centres[leaf.index];
-    const double d[3] = {static_cast<double>(p.x - camera.eye.x),
-                         static_cast<double>(p.y - camera.eye.y),
-                         static_cast<double>(p.z - camera.eye.z)};
-    double c[3];
-    for (int row = 0; row < 3; ++row)
-      c[row] = m[row][0] * d[0] + m[row][1] * d[1] + m[row][2] * d[2];
+    const Vector3 c = exactCameraSpace(m, camera.eye, p);
     ASSERT_GT(c[2], 0) << "leaf " << leaf.index << " behind the eye was drawn";
     const Projected exact = exactProjection(camera, c[0], c[1], c[2]);
     // Only a leaf whose splat (within sqrt(3) half voxels of its centre) reaches the screen draws.

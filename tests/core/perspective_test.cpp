@@ -124,12 +124,10 @@ TEST(PerspectiveCamera, CameraSpaceIsTheRotatedOffsetFromTheEye) {
     for (int i = 0; i < 2000; ++i) {
       const ModelPoint p{in_cube(random), in_cube(random), in_cube(random)};
       const CameraPoint c = toCameraSpace(view, p);
-      const double d[3] = {static_cast<double>(p.x - eye.x), static_cast<double>(p.y - eye.y),
-                           static_cast<double>(p.z - eye.z)};
+      const Vector3 exact = exactCameraSpace(m, eye, p);
       const std::int64_t got[3] = {c.x, c.y, c.z};
       for (int row = 0; row < 3; ++row) {
-        const double exact = m[row][0] * d[0] + m[row][1] * d[1] + m[row][2] * d[2];
-        ASSERT_LE(std::abs(static_cast<double>(got[row]) - exact), 8.0)
+        ASSERT_LE(std::abs(static_cast<double>(got[row]) - exact[row]), 8.0)
             << "eye " << eye.x << "," << eye.y << "," << eye.z << " row " << row;
       }
     }
@@ -171,9 +169,8 @@ TEST(PerspectiveCamera, AffineMapStaysWithinTheStatedBound) {
           const std::int64_t d[3] = {k < 8 ? ((k & 4) ? half : -half) : inside(random),
                                      k < 8 ? ((k & 2) ? half : -half) : inside(random),
                                      k < 8 ? ((k & 1) ? half : -half) : inside(random)};
-          double dc[3];
-          for (int row = 0; row < 3; ++row)
-            dc[row] = m[row][0] * d[0] + m[row][1] * d[1] + m[row][2] * d[2];
+          const Vector3 dc = rotated(
+              m, {static_cast<double>(d[0]), static_cast<double>(d[1]), static_cast<double>(d[2])});
           const Projected exact =
               exactProjection(camera, static_cast<double>(c.x) + dc[0],
                               static_cast<double>(c.y) + dc[1], static_cast<double>(c.z) + dc[2]);

@@ -109,11 +109,7 @@ TEST_F(PerspectiveWalkTest, EveryLeafInViewIsDrawnWithinHalfAPixelOfItsExactProj
         ASSERT_LT(leaf.index, leaves.size());
         drawn[leaf.index] = true;
         const ModelPoint& p = leaves[leaf.index];
-        const double d[3] = {static_cast<double>(p.x - v.eye.x), static_cast<double>(p.y - v.eye.y),
-                             static_cast<double>(p.z - v.eye.z)};
-        double c[3];
-        for (int row = 0; row < 3; ++row)
-          c[row] = m[row][0] * d[0] + m[row][1] * d[1] + m[row][2] * d[2];
+        const Vector3 c = exactCameraSpace(m, v.eye, p);
         ASSERT_GT(c[2], 0) << "leaf " << leaf.index << " behind the eye was drawn";
         const Projected exact = exactProjection(camera, c[0], c[1], c[2]);
         // A leaf whose splat (its voxel's projection, within sqrt(3) half edges of its centre)
@@ -134,12 +130,7 @@ TEST_F(PerspectiveWalkTest, EveryLeafInViewIsDrawnWithinHalfAPixelOfItsExactProj
       // handed over.
       std::size_t in_view = 0;
       for (std::size_t i = 0; i < leaves.size(); ++i) {
-        const ModelPoint& p = leaves[i];
-        const double d[3] = {static_cast<double>(p.x - v.eye.x), static_cast<double>(p.y - v.eye.y),
-                             static_cast<double>(p.z - v.eye.z)};
-        double c[3];
-        for (int row = 0; row < 3; ++row)
-          c[row] = m[row][0] * d[0] + m[row][1] * d[1] + m[row][2] * d[2];
+        const Vector3 c = exactCameraSpace(m, v.eye, leaves[i]);
         if (c[2] < static_cast<double>(view.camera.near) + kUnit / 256) continue;
         const Projected exact = exactProjection(camera, c[0], c[1], c[2]);
         if (exact.x < 0 || exact.y < 0 || exact.x >= camera.width || exact.y >= camera.height)

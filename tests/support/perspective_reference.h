@@ -55,6 +55,31 @@ inline Matrix worldToCamera(const PerspectiveCamera& camera) {
   return multiply(rz, multiply(rx, ry));
 }
 
+using Vector3 = std::array<double, 3>;
+
+inline Vector3 rotated(const Matrix& m, const Vector3& d) {
+  Vector3 out{};
+  for (int row = 0; row < 3; ++row)
+    out[row] = m[row][0] * d[0] + m[row][1] * d[1] + m[row][2] * d[2];
+  return out;
+}
+
+// A point of the model (Q.24 cube edges) in camera space (units), without the integer code's
+// rounding; `world_to_camera` is worldToCamera(camera), made once per camera by the caller.
+inline Vector3 exactCameraSpace(const Matrix& world_to_camera, const ModelPoint& eye,
+                                const Vector3& point) {
+  return rotated(world_to_camera,
+                 {point[0] - static_cast<double>(eye.x), point[1] - static_cast<double>(eye.y),
+                  point[2] - static_cast<double>(eye.z)});
+}
+
+inline Vector3 exactCameraSpace(const Matrix& world_to_camera, const ModelPoint& eye,
+                                const ModelPoint& point) {
+  return rotated(world_to_camera,
+                 {static_cast<double>(point.x - eye.x), static_cast<double>(point.y - eye.y),
+                  static_cast<double>(point.z - eye.z)});
+}
+
 inline double focalOf(const PerspectiveCamera& camera) {
   // The view halves the angle in whole units, as the integer code does.
   const double half = (camera.fov.turns16() / 2) * 2 * kPi / Angle::kUnitsPerTurn;
