@@ -86,6 +86,9 @@ DualResolutionRenderer::DualResolutionRenderer(const ModelView* model, const Lev
     }
   } else if (!config.walk_draw) {
     base_view_.walk = false;  // walk mode needs the whole model, or a walk drawer
+  } else if (config.walk_world != nullptr && config.walk_radius > 0) {
+    collision_world_ = config.walk_world;
+    collide_ = true;
   }
   status_.walk = base_view_.walk;
   status_.walk_speed = walk_speed_;
@@ -159,6 +162,11 @@ void DualResolutionRenderer::toggleWalk(std::int64_t time_us) {
   status_.walk = base_view_.walk;
 }
 
+WalkCollision DualResolutionRenderer::walkCollision() const {
+  if (!collide_) return {};
+  return {collision_.get(), collision_world_, {config_.walk_radius, config_.walk_eye_height}};
+}
+
 ViewParameters DualResolutionRenderer::viewAt(std::int64_t time_us) const {
   ViewParameters view = base_view_;
   for (int k = 0; k < kNavigationKeyCount; ++k) {
@@ -166,9 +174,7 @@ ViewParameters DualResolutionRenderer::viewAt(std::int64_t time_us) const {
     if (key.held) {
       view = moved(view, static_cast<NavigationKey>(k),
                    std::max<std::int64_t>(0, time_us - key.since_us), config_.degrees_per_second,
-                   walk_speed_,
-                   WalkCollision{collide_ ? collision_.get() : nullptr,
-                                 {config_.walk_radius, config_.walk_eye_height}});
+                   walk_speed_, walkCollision());
     }
   }
   return view;
@@ -201,9 +207,7 @@ void DualResolutionRenderer::handle(const ViewEvent& event) {
         if (!key.held) return;
         base_view_ =
             moved(base_view_, event.key, std::max<std::int64_t>(0, event.time_us - key.since_us),
-                  config_.degrees_per_second, walk_speed_,
-                  WalkCollision{collide_ ? collision_.get() : nullptr,
-                                {config_.walk_radius, config_.walk_eye_height}});
+                  config_.degrees_per_second, walk_speed_, walkCollision());
         key.held = false;
         changeView();
         break;
@@ -253,7 +257,7 @@ void DualResolutionRenderer::handle(const ViewEvent& event) {
         changeView();
         break;
       case ViewEventKind::kToggleWalk:
-        if (!canWalk()) return;
+        if (!canWalk() || config_.walk_only) return;
         toggleWalk(event.time_us);
         coarse_once_ = true;
         changeView();
@@ -277,7 +281,7 @@ void DualResolutionRenderer::handle(const ViewEvent& event) {
         break;
       }
       case ViewEventKind::kToggleCollision:
-        if (collision_ == nullptr) return;
+        if (collision_ == nullptr && collision_world_ == nullptr) return;
         foldMotion(event.time_us);  // the walk so far as it was made
         collide_ = !collide_;
         status_.walk_collision = collide_;

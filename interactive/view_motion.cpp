@@ -49,12 +49,16 @@ WalkEye walked(WalkEye walker, NavigationKey key, std::int64_t held_us, std::int
       return walker;
   }
   const ModelPoint to = walkedEye(walker.eye, walker.yaw, step, walkDistance(held_us, speed));
-  if (collision.model == nullptr) {
+  ModelPoint moved = to;
+  if (collision.world != nullptr) {
+    moved = moveWithCollision(*collision.world, collision.body, walker.eye, to).eye;
+  } else if (collision.model != nullptr) {
+    const CollisionInstance instance{collision.model, {}};
+    moved = moveWithCollision({&instance, 1}, collision.body, walker.eye, to).eye;
+  } else {
     walker.eye = to;
     return walker;
   }
-  const CollisionInstance instance{collision.model, {}};
-  const ModelPoint moved = moveWithCollision({&instance, 1}, collision.body, walker.eye, to).eye;
   walker.eye = withinReach(moved);
   return walker;
 }

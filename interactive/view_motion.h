@@ -12,9 +12,10 @@
 
 namespace octopoint {
 
-// Walk mode's collision, when on: the model and the eye's body.
+// Walk mode's collision, when on: what the eye collides with and its body.
 struct WalkCollision {
-  const CollisionModel* model = nullptr;  // nullptr: off
+  const CollisionModel* model = nullptr;  // a whole model, at the identity
+  const CollisionWorld* world = nullptr;  // or any world (a scene's instances); both null: off
   WalkBody body;
 };
 

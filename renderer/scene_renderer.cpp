@@ -88,7 +88,7 @@ bool SceneRenderer::layersOf(const PerspectiveView& view, const SceneInstance& i
   if (instanceView(view, instance.transform, depth_shift_, model_view) != PerspectiveError::kNone)
     return false;  // turned, its eye lies beyond the camera's reach
   *layers = perspectiveLayers(*models_[instance.model], *model_view, 0,
-                              renderers_[instance.model]->upperTreeIndexes(), tables_);
+                              renderers_[instance.model]->upperTreeIndexes(), tables_, coarser_);
   return true;
 }
 

@@ -73,6 +73,9 @@ class SceneRenderer {
   void setVisibleSet(std::span<const std::uint32_t> ids);
   // Back to every instance.
   void clearVisibleSet();
+  // Detail by distance from now on: each instance `coarser` stored depths coarser than its
+  // distance asks, 0..8 (the viewer's coarse frames: 1; PerspectiveRenderer::Options::coarser).
+  void setCoarser(int coarser) { coarser_ = coarser < 0 ? 0 : (coarser > 8 ? 8 : coarser); }
   // For computing the cells (tools/cell_build.h): from now on draw sets marks[i] to 1 for each
   // instance i that submitted a point, its subtrees not all passed over by the frustum or the
   // occlusion tiles (the caller's memory, at least instanceCount() bytes); empty to stop.
@@ -112,6 +115,7 @@ class SceneRenderer {
   int depth_shift_ = kPerspectiveDepthShift;
   int largest_scale_ = 0;
   bool valid_ = false;
+  int coarser_ = 0;                         // setCoarser's
   bool restricted_ = false;                 // only visible_ is drawn
   std::span<const std::uint32_t> visible_;  // setVisibleSet's ids
   std::span<std::uint8_t> marks_;           // setSubmittedMarks's

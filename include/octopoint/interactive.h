@@ -181,6 +181,8 @@ namespace octopoint {
 
 class PerspectiveRenderer;  // renderer/perspective_renderer.h: walk mode's frames
 class CollisionModel;       // renderer/collision.h: walk mode's collision
+class CollisionWorld;       // renderer/collision.h: what a walk drawer's eye collides with
+struct WalkCollision;       // interactive/view_motion.h
 struct PerspectiveView;     // renderer/perspective.h: a walk frame's view
 
 enum class FrameSource : std::uint8_t { kCoarse, kFine };  // drawn by L or by H
@@ -249,6 +251,13 @@ struct InteractiveConfig {
   // (canWalk); must be safe to call from both render threads at once. Walk mode's near plane is
   // then `near` (0: PerspectiveCamera's default).
   WalkDrawFunction walk_draw;
+  // With walk_draw: what walk mode's eye collides with (a scene's instances,
+  // renderer/scene_collision.h; the caller's, outliving the renderer), with walk_radius as for a
+  // model. nullptr: no collision.
+  const CollisionWorld* walk_world = nullptr;
+  // There is no orbit view (a scene: octopoint-view --city): the renderer stays in walk mode and
+  // kToggleWalk does nothing; initial_view.walk must be set.
+  bool walk_only = false;
 };
 
 struct FrameInfo {
@@ -368,6 +377,7 @@ class DualResolutionRenderer {
   bool anyKeyHeld() const;     // the mouse button of a drag included
   bool movingKeyHeld() const;  // a key whose motion goes on with time (not the drag)
   ViewParameters viewAt(std::int64_t time_us) const;  // base view plus the held keys' motion
+  WalkCollision walkCollision() const;  // what the walk collides with now (nothing when off)
   // Makes the held keys' motion up to `time_us` part of the base view (they move on from there):
   // before what changes how they move (a turn, the speed, the mode).
   void foldMotion(std::int64_t time_us);
@@ -408,9 +418,10 @@ class DualResolutionRenderer {
   ViewParameters base_view_;
   std::int64_t walk_speed_;  // Q.24 cube edges per second
   std::unique_ptr<const CollisionModel>
-      collision_;         // with config_.walk_radius, when it can be made
-  bool collide_ = false;  // collision on (toggled)
-  std::int32_t width_;    // the size of the frames drawn from now on
+      collision_;  // with config_.walk_radius, when it can be made
+  const CollisionWorld* collision_world_ = nullptr;  // config_.walk_world, with walk_radius
+  bool collide_ = false;                             // collision on (toggled)
+  std::int32_t width_;                               // the size of the frames drawn from now on
   std::int32_t height_;
   std::uint64_t view_version_ = 1;
   bool coarse_once_ = false;    // one coarse frame after a step change
