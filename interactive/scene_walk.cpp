@@ -6,7 +6,7 @@ namespace octopoint {
 
 SceneWalk::SceneWalk(std::span<const ModelView* const> models,
                      std::span<const SceneInstance> instances, SceneError* error)
-    : collision_(models, instances, error) {
+    : collision_(models, instances, error), first_model_(models.empty() ? nullptr : models[0]) {
   if (*error != SceneError::kNone) return;
   for (std::unique_ptr<SceneRenderer>& renderer : renderers_) {
     renderer = std::make_unique<SceneRenderer>(models, instances, error);

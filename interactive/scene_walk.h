@@ -34,6 +34,8 @@ class SceneWalk {
   static ViewDrawFunction noOrbitView();
 
   const SceneCollision& collision() const { return collision_; }
+  // The scene's first model (a scene file's models share one palette: tools/scene_file.h).
+  const ModelView& firstModel() const { return *first_model_; }
 
  private:
   bool draw(FrameSource source, const PerspectiveView& view, Framebuffer& frame,
@@ -42,6 +44,7 @@ class SceneWalk {
   std::array<std::unique_ptr<SceneRenderer>, 2> renderers_;  // coarse, fine: one per thread
   SceneCollision collision_;
   int finest_depth_ = 0;  // the deepest level of any model
+  const ModelView* first_model_ = nullptr;
 };
 
 }  // namespace octopoint

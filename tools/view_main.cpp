@@ -24,6 +24,7 @@
 #include "octopoint/progressive.h"
 #include "renderer/chunked_assembly.h"
 #include "tools/model_source.h"
+#include "tools/scene_file.h"
 #include "tools/view_window.h"
 #include "tools/viewer.h"
 
@@ -32,8 +33,8 @@ namespace {
 using namespace octopoint;
 
 constexpr const char* kUsage =
-    R"(usage: octopoint-view [--model NAME | --file M.oct | --url URL [--point-budget N]] )"
-    R"([--size WxH] [--scale N]
+    R"(usage: octopoint-view [--model NAME | --file M.oct | --url URL [--point-budget N] | )"
+    R"(--city SCENE.json] [--size WxH] [--scale N]
                      [--speed DEG] [--eye X,Y,Z [--look YAW,PITCH[,ROLL]]] [--fov DEG] [--near D]
                      [--walk-speed S] [--eye-radius R] [--eye-height H]
 
@@ -54,6 +55,12 @@ perspective (docs/perspective.md, "The viewer's walk mode").
                  or zooming asks for what the new view needs (docs/streaming.md). The window opens
                  once the model's head is in (at most 30 s); walk mode fetches for the walk's
                  view, and draws what is held as octopoint-render --url --eye does
+  --city SCENE.json  walk through a scene of many models (octopoint-render --city's file;
+                 docs/city.md): walk mode only, from --eye (required, in scene edges, within 128
+                 of the scene's origin), each instance at the depth its distance asks for, nearer
+                 instances hiding farther ones; the eye collides with the instances (n turns it
+                 off; --eye-radius default 1/128 scene edge) and --eye-height keeps it above the
+                 ground; --walk-speed and --near in scene edges
   --point-budget N  with --url: draw at most about N points a frame, 1..2^40 (default: no
                  budget). When the view's visible chunks hold more at the depth it needs, those
                  largest on screen, then nearest, keep it and the rest are drawn one depth
@@ -101,6 +108,8 @@ ViewerOptions parseOptions(int argc, char** argv) {
     if (args.is("-h") || args.is("--help")) {
       std::cout << kUsage << Viewer::keyTable(nullptr).helpText() << kUsageEnd;
       std::exit(0);
+    } else if (args.is("--city")) {
+      options.city = args.value();
     } else if (parseModelSourceOption(args, options.source)) {
       continue;
     } else if (args.is("--size")) {
@@ -132,6 +141,9 @@ ViewerOptions parseOptions(int argc, char** argv) {
     }
   }
   checkOneModelSource(options.source);
+  if (!options.city.empty() && (!options.source.model_name.empty() ||
+                                !options.source.model_file.empty() || !options.source.url.empty()))
+    throw cli::Error("give one of --model, --file, --url and --city");
   if (options.source.point_budget > 0 && options.source.url.empty())
     throw cli::Error("--point-budget needs --url");
   if (options.look && !options.eye) throw cli::Error("--look needs --eye");
@@ -190,6 +202,24 @@ int run(int argc, char** argv) {
     viewer.run();
     stream.onAccepted({});
     stream.stop();
+    return 0;
+  }
+  if (!options.city.empty()) {
+    const WalkStart walk = cityWalkStart(options);  // a bad eye refused before the scene is read
+    const std::unique_ptr<LoadedScene> scene = loadScene(options.city);
+    SceneError error;
+    SceneWalk scene_walk(scene->models, scene->instances, &error);
+    if (error != SceneError::kNone) throw cli::Error(scene->label + ": " + describe(error));
+    WalkStart start = walk;
+    if (const std::optional<std::size_t> model = scene_walk.collision().unindexedModel()) {
+      const std::string why = scene->label + ": model " + std::to_string(*model) +
+                              "'s finest level is too large to collide with";
+      if (options.collision.any()) throw cli::Error(why);
+      cli::printError("octopoint-view", (why + ": walking without collision").c_str());
+      start.body = {};
+    }
+    Viewer viewer(options, start, nullptr, nullptr, &scene_walk);
+    viewer.run();
     return 0;
   }
   const std::unique_ptr<LoadedModel> loaded =

@@ -81,6 +81,12 @@ InteractiveConfig streamConfig(const ViewerOptions& options, const WalkStart& wa
   return config;
 }
 
+// A scene walks only (interactive/scene_walk.h); its frames carry colours only.
+InteractiveConfig sceneConfig(const ViewerOptions& options, const WalkStart& walk,
+                              ViewWindow& window, SceneWalk& scene) {
+  return scene.configure(interactiveConfig(options, walk, window));
+}
+
 constexpr int kLightStepDegrees = 15;
 
 }  // namespace
@@ -92,24 +98,32 @@ std::string shortNumber(double value) {
 }
 
 Viewer::Viewer(const ViewerOptions& options, const WalkStart& walk, const ModelView* model,
-               net::ModelStream* stream)
+               net::ModelStream* stream, SceneWalk* scene)
     : options_(options),
       walk_(walk),
       model_(model),
       stream_(stream),
+      scene_(scene),
       window_(kWindowTitle, options.width * options.scale, options.height * options.scale,
               kMinFrameSide * options.scale, kMinFrameSide * options.scale),
-      renderer_(model != nullptr
-                    ? std::make_unique<DualResolutionRenderer>(
-                          *model, clock_, interactiveConfig(options, walk, window_, *model))
-                    : std::make_unique<DualResolutionRenderer>(
-                          streamDrawer(*stream, options.source.point_budget), clock_,
-                          streamConfig(options, walk, window_, *stream, stream_content_))),
+      renderer_(
+          model != nullptr ? std::make_unique<DualResolutionRenderer>(
+                                 *model, clock_, interactiveConfig(options, walk, window_, *model))
+          : stream != nullptr
+              ? std::make_unique<DualResolutionRenderer>(
+                    streamDrawer(*stream, options.source.point_budget), clock_,
+                    streamConfig(options, walk, window_, *stream, stream_content_))
+              : std::make_unique<DualResolutionRenderer>(
+                    SceneWalk::noOrbitView(), clock_, sceneConfig(options, walk, window_, *scene))),
       keys_(keyTable(this)),
       resolve_(
           [this](const Framebuffer& frame, const FrameInfo& info, std::span<std::uint8_t> rgb) {
             if (model_ != nullptr) {
               resolveStyled(frame, info, rgb);
+              return;
+            }
+            if (scene_ != nullptr) {  // every model of a scene holds its palette
+              static_cast<void>(resolveToRgb(frame, scene_->firstModel(), kBackground, rgb));
               return;
             }
             // The palette never changes once the head is in: resolved without the stream's lock.

@@ -13,6 +13,7 @@
 #include <string>
 #include <utility>
 
+#include "interactive/scene_walk.h"
 #include "octopoint/http.h"
 #include "octopoint/interactive.h"
 #include "octopoint/model.h"
@@ -49,6 +50,7 @@ struct ViewerOptions {
   // --eye-radius and --eye-height (docs/perspective.md, "Collision"): walk mode's collision.
   CollisionOptions collision;
   std::optional<double> near;
+  std::string city;  // --city SCENE.json: walk a scene of many models (docs/city.md)
 };
 
 // What the viewer's walk mode needs of the model: where its cube lies in the scan, the eye to
@@ -63,15 +65,18 @@ struct WalkStart {
   std::int64_t near = 0;  // 0: no model (--url)
 };
 WalkStart walkStart(const ViewerOptions& options, const ModelView* model);
+// The same for a scene (--city): in scene edges, --eye required (a scene has no orbit view).
+WalkStart cityWalkStart(const ViewerOptions& options);
 
 // A short number for the overlay, "%.4g" (the save line gives them exactly).
 std::string shortNumber(double value);
 
 class Viewer {
  public:
-  // Shows `model`, or, when `model` is null, the chunked model `stream` brings in.
+  // Shows `model`; or, when `model` is null, the chunked model `stream` brings in; or, when both
+  // are null, walks `scene` (which must outlive the viewer).
   Viewer(const ViewerOptions& options, const WalkStart& walk, const ModelView* model,
-         net::ModelStream* stream);
+         net::ModelStream* stream, SceneWalk* scene = nullptr);
   // From the stream's thread: more of the model arrived.
   void contentChanged();
   // Shows the window until the user quits.
@@ -121,6 +126,7 @@ class Viewer {
   const WalkStart walk_;
   const ModelView* model_;
   net::ModelStream* stream_;
+  SceneWalk* scene_;
   const SteadyClock clock_;
   std::atomic<std::uint64_t> stream_content_{0};  // chunks accepted (contentChanged)
   ViewWindow window_;  // before renderer_: its threads wake the window until they are joined

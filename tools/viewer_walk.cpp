@@ -1,6 +1,7 @@
 // octopoint-view's walk mode (tools/viewer.h): its start options, Tab, the mouse drag that turns
 // the eye, and what the overlay and `p` say of the eye.
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <string>
@@ -13,26 +14,11 @@
 
 namespace octopoint {
 
-WalkStart walkStart(const ViewerOptions& options, const ModelView* model) {
-  WalkStart walk;
-  if (options.look && !options.eye) throw cli::Error("--look needs --eye");
-  const bool walk_options =
-      options.eye || options.fov || options.walk_speed || options.near || options.collision.any();
-  if (model == nullptr) {
-    if (walk_options) {
-      throw cli::Error("--eye, --fov, --walk-speed, --near and the collision options need a model");
-    }
-    return walk;
-  }
-  walk.fov = options.fov.value_or(Angle::fromDegrees(60));
-  walk.near = modelNearPlane(*model, options.near, "--near");
-  walk.cube = scanCube(model->cubePlacement());
-  if (!walk.cube && (options.eye || options.walk_speed)) {
-    throw cli::Error(std::string(options.eye ? "--eye" : "--walk-speed") +
-                     " needs where the model's cube lies in the scan, which format version " +
-                     std::to_string(model->formatVersion()) +
-                     " does not record: prepare the scan again with octopoint-prepare");
-  }
+namespace {
+
+// The start eye, the speed and the collision body from the options, in walk.cube's units (set by
+// the caller with the field of view and the near plane).
+void startWalk(const ViewerOptions& options, WalkStart& walk) {
   if (options.eye) {
     const Look look = options.look.value_or(Look{});
     // Refuses, in one line, an eye or a field of view the camera cannot draw.
@@ -54,14 +40,58 @@ WalkStart walkStart(const ViewerOptions& options, const ModelView* model) {
     }
     walk.speed = static_cast<std::int64_t>(q24);
   }
+  walk.body = walkBodyOf(*walk.cube, options.collision);
+}
+
+}  // namespace
+
+WalkStart walkStart(const ViewerOptions& options, const ModelView* model) {
+  WalkStart walk;
+  if (options.look && !options.eye) throw cli::Error("--look needs --eye");
+  const bool walk_options =
+      options.eye || options.fov || options.walk_speed || options.near || options.collision.any();
+  if (model == nullptr) {
+    if (walk_options) {
+      throw cli::Error("--eye, --fov, --walk-speed, --near and the collision options need a model");
+    }
+    return walk;
+  }
+  walk.fov = options.fov.value_or(Angle::fromDegrees(60));
+  walk.near = modelNearPlane(*model, options.near, "--near");
+  walk.cube = scanCube(model->cubePlacement());
   if (walk.cube) {
-    walk.body = walkBodyOf(*walk.cube, options.collision);
-  } else if (options.collision.eye_radius || options.collision.eye_height) {
+    startWalk(options, walk);
+    return walk;
+  }
+  if (options.eye || options.walk_speed) {
+    throw cli::Error(std::string(options.eye ? "--eye" : "--walk-speed") +
+                     " needs where the model's cube lies in the scan, which format version " +
+                     std::to_string(model->formatVersion()) +
+                     " does not record: prepare the scan again with octopoint-prepare");
+  }
+  if (options.collision.eye_radius || options.collision.eye_height) {
     throw cli::Error(
         "--eye-radius and --eye-height need where the model's cube lies in the scan, "
         "which format version " +
         std::to_string(model->formatVersion()) + " does not record");
   }
+  return walk;
+}
+
+WalkStart cityWalkStart(const ViewerOptions& options) {
+  if (!options.eye) {
+    throw cli::Error(
+        "--city needs --eye X,Y,Z: where the walk starts, in scene edges (a scene has no orbit "
+        "view; docs/city.md)");
+  }
+  WalkStart walk;
+  walk.fov = options.fov.value_or(Angle::fromDegrees(60));
+  walk.cube = kSceneUnits;
+  // The near plane in Q.24 scene edges: at least one unit.
+  walk.near = options.near ? std::max<std::int64_t>(
+                                 1, std::llround(std::ldexp(*options.near, kPerspectiveUnitBits)))
+                           : PerspectiveCamera{}.near;
+  startWalk(options, walk);
   return walk;
 }
 
@@ -117,7 +147,8 @@ void Viewer::walkOverlay(OverlayLines& lines) const {
     const ScanPoint eye = scanPointOf(*walk_.cube, walker.eye);
     lines.push_back("eye " + shortNumber(eye[0]) + "," + shortNumber(eye[1]) + "," +
                     shortNumber(eye[2]) + "  look " + look);
-    lines.push_back("speed " + shortNumber(speed_edges * walk_.cube->edge) + " units/s" +
+    const char* units = scene_ != nullptr ? " scene edges/s" : " units/s";
+    lines.push_back("speed " + shortNumber(speed_edges * walk_.cube->edge) + units +
                     collisionText());
   } else {  // a model that records no placement: cube edges about its centre
     const auto edges = [](std::int64_t q24) {
@@ -137,9 +168,10 @@ std::string Viewer::collisionText() const {
 std::string Viewer::walkOptions(const WalkEye& walker) const {
   if (!walk_.cube) return " (walk mode; the model records no placement for --eye)";
   // degreesText: what --look reads back as the very same angles.
-  return " --eye " + eyeText(*walk_.cube, walker.eye) + " --look " + degreesText(walker.yaw) + "," +
-         degreesText(walker.pitch) + "," + degreesText(walker.roll) + " --fov " +
-         degreesText(walk_.fov);
+  const std::string city = scene_ != nullptr ? " --city " + options_.city : "";
+  return city + " --eye " + eyeText(*walk_.cube, walker.eye) + " --look " +
+         degreesText(walker.yaw) + "," + degreesText(walker.pitch) + "," +
+         degreesText(walker.roll) + " --fov " + degreesText(walk_.fov);
 }
 
 }  // namespace octopoint

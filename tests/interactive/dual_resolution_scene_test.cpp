@@ -64,7 +64,7 @@ TEST_F(DualResolution, ASceneWalksItsFramesAreTheSceneRenderersAndItHasNoOrbitVi
   config.initial_view.walker.yaw = Angle::fromDegrees(-60);  // the left table in view too
   DualResolutionRenderer renderer(SceneWalk::noOrbitView(), clock_, config);
   EXPECT_TRUE(renderer.status().walk);
-  EXPECT_FALSE(renderer.status().walk_collision);  // no radius
+  EXPECT_FALSE(renderer.status().walk_collision);                                    // no radius
   ScriptedTimeline timeline({at(0, ViewEventKind::kPress, NavigationKey::kPitchUp),  // forward
                              at(500, ViewEventKind::kRelease, NavigationKey::kPitchUp),
                              at(600, ViewEventKind::kToggleWalk)},
