@@ -5,12 +5,14 @@
 namespace octopoint {
 
 SceneWalk::SceneWalk(std::span<const ModelView* const> models,
-                     std::span<const SceneInstance> instances, SceneError* error)
+                     std::span<const SceneInstance> instances, SceneError* error,
+                     const CellTable* cells)
     : collision_(models, instances, error), first_model_(models.empty() ? nullptr : models[0]) {
   if (*error != SceneError::kNone) return;
-  for (std::unique_ptr<SceneRenderer>& renderer : renderers_) {
-    renderer = std::make_unique<SceneRenderer>(models, instances, error);
+  for (std::size_t i = 0; i < renderers_.size(); ++i) {
+    renderers_[i] = std::make_unique<SceneRenderer>(models, instances, error);
     if (*error != SceneError::kNone) return;
+    if (cells != nullptr) cells_[i] = std::make_unique<SceneCells>(*cells);
   }
   renderers_[0]->setCoarser(1);  // the coarse thread's frames, as a model's walk draws them
   for (const ModelView* model : models)
@@ -40,6 +42,9 @@ bool SceneWalk::draw(FrameSource source, const PerspectiveView& view, Framebuffe
   // Each render thread draws with its own renderer: its order, tables and tiles are its own.
   const bool coarse = source == FrameSource::kCoarse;
   SceneRenderer& renderer = *renderers_[coarse ? 0 : 1];
+  if (const std::unique_ptr<SceneCells>& cells = cells_[coarse ? 0 : 1]) {
+    cells->apply(renderer, view.camera.eye);
+  }
   if (!renderer.draw(view, frame, nullptr, abort)) {
     *finest_depth = 0;
     return abort == nullptr || !abort->load();  // a refused scene draws nothing, not aborted

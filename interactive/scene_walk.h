@@ -10,6 +10,7 @@
 
 #include "octopoint/interactive.h"
 #include "octopoint/scene.h"
+#include "renderer/scene_cells.h"
 #include "renderer/scene_collision.h"
 #include "renderer/scene_renderer.h"
 
@@ -18,8 +19,10 @@ namespace octopoint {
 class SceneWalk {
  public:
   // The models (each must outlive this) and the instances; `*error` says why a scene is refused.
+  // With `cells` (validated for these instances; must outlive this), each frame draws only what
+  // the eye's cell sees (renderer/scene_cells.h).
   SceneWalk(std::span<const ModelView* const> models, std::span<const SceneInstance> instances,
-            SceneError* error);
+            SceneError* error, const CellTable* cells = nullptr);
   SceneWalk(const SceneWalk&) = delete;
   SceneWalk& operator=(const SceneWalk&) = delete;
 
@@ -42,6 +45,7 @@ class SceneWalk {
             const std::atomic<bool>* abort, int* finest_depth);
 
   std::array<std::unique_ptr<SceneRenderer>, 2> renderers_;  // coarse, fine: one per thread
+  std::array<std::unique_ptr<SceneCells>, 2> cells_;         // theirs, with a cell table
   SceneCollision collision_;
   int finest_depth_ = 0;  // the deepest level of any model
   const ModelView* first_model_ = nullptr;

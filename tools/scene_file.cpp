@@ -141,4 +141,14 @@ std::unique_ptr<LoadedScene> loadScene(const std::string& path) {
   return scene;
 }
 
+CellTable loadCellTable(const std::string& path, const LoadedScene& scene) {
+  CellTableError why;
+  CellTable table =
+      CellTable::parse(cli::readInputBytes(path, cli::InputKind{"cell table", kMaxCellTableBytes}),
+                       static_cast<std::uint32_t>(scene.instances.size()), &why);
+  if (why != CellTableError::kNone)
+    throw cli::Error(cli::displayPath(path) + ": cell table " + describe(why));
+  return table;
+}
+
 }  // namespace octopoint

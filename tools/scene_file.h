@@ -11,6 +11,7 @@
 
 #include "octopoint/model.h"
 #include "octopoint/scene.h"
+#include "renderer/cell_table.h"
 #include "tools/scene_text.h"
 
 namespace octopoint {
@@ -32,5 +33,9 @@ struct LoadedScene {
 
 // Reads the scene file and its models; a cli::Error, one line, when any of it is refused.
 std::unique_ptr<LoadedScene> loadScene(const std::string& path);
+
+// Reads the scene's visibility cells (octopoint-pvs, renderer/cell_table.h: at most 64 MiB),
+// validated against its instances; a cli::Error, one line, when they are refused.
+CellTable loadCellTable(const std::string& path, const LoadedScene& scene);
 
 }  // namespace octopoint

@@ -10,7 +10,7 @@
 #include "cli/output_file.h"
 #include "cli/text.h"
 #include "octopoint/framebuffer.h"
-#include "renderer/cell_table.h"
+#include "renderer/scene_cells.h"
 #include "renderer/scene_collision.h"
 #include "renderer/scene_renderer.h"
 #include "tools/camera_path.h"
@@ -55,9 +55,6 @@ PerspectiveView cityView(const ScanPoint& eye, const Look& look, Angle fov, cons
   return view;
 }
 
-// A cell table: up to 64 MiB (renderer/cell_table.h).
-constexpr cli::InputKind kCellTableInput{"cell table", kMaxCellTableBytes};
-
 class CityFrames {
  public:
   CityFrames(const LoadedScene& scene, const std::string& cells) : scene_(scene) {
@@ -65,29 +62,15 @@ class CityFrames {
     renderer_.emplace(scene.models, scene.instances, &error);
     if (error != SceneError::kNone) throw cli::Error(scene.label + ": " + describe(error));
     if (cells.empty()) return;
-    CellTableError why;
-    cells_ = CellTable::parse(cli::readInputBytes(cells, kCellTableInput),
-                              static_cast<std::uint32_t>(scene.instances.size()), &why);
-    if (why != CellTableError::kNone)
-      throw cli::Error(cli::displayPath(cells) + ": cell table " + describe(why));
-    visible_.resize(cells_->largestSet());
-    scratch_ = cells_->scratch();
+    table_.emplace(loadCellTable(cells, scene));
+    cells_.emplace(*table_);
   }
 
   cv::Mat draw(const PerspectiveView& view, Rgb background, SceneDrawStats* stats) {
     if (frame_.width() != view.camera.width || frame_.height() != view.camera.height)
       frame_ = Framebuffer(view.camera.width, view.camera.height);
     frame_.clear();
-    if (cells_) {  // only the eye's cell's set; outside the grid, everything
-      const std::int64_t cell = cells_->cellAt(view.camera.eye);
-      if (cell < 0) {
-        renderer_->clearVisibleSet();
-      } else {
-        const std::size_t count =
-            cells_->decode(static_cast<std::uint32_t>(cell), visible_, scratch_);
-        renderer_->setVisibleSet(std::span<const std::uint32_t>(visible_).first(count));
-      }
-    }
+    if (cells_) cells_->apply(*renderer_, view.camera.eye);
     static_cast<void>(renderer_->draw(view, frame_, stats));  // no abort flag: it completes
     cv::Mat rgb(view.camera.height, view.camera.width, CV_8UC3);
     // Every model holds the scene's palette (tools/scene_file.h): the first one's resolves.
@@ -101,9 +84,8 @@ class CityFrames {
  private:
   const LoadedScene& scene_;
   std::optional<SceneRenderer> renderer_;
-  std::optional<CellTable> cells_;
-  std::vector<std::uint32_t> visible_;  // the eye's cell's set, room for the largest
-  CellTable::Scratch scratch_;          // decoding's bits, sized once
+  std::optional<CellTable> table_;
+  std::optional<SceneCells> cells_;  // only the eye's cell's set is drawn
   Framebuffer frame_{1, 1};
 };
 

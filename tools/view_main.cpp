@@ -34,7 +34,7 @@ using namespace octopoint;
 
 constexpr const char* kUsage =
     R"(usage: octopoint-view [--model NAME | --file M.oct | --url URL [--point-budget N] | )"
-    R"(--city SCENE.json] [--size WxH] [--scale N]
+    R"(--city SCENE.json [--cells CELLS]] [--size WxH] [--scale N]
                      [--speed DEG] [--eye X,Y,Z [--look YAW,PITCH[,ROLL]]] [--fov DEG] [--near D]
                      [--walk-speed S] [--eye-radius R] [--eye-height H]
 
@@ -61,6 +61,9 @@ perspective (docs/perspective.md, "The viewer's walk mode").
                  instances hiding farther ones; the eye collides with the instances (n turns it
                  off; --eye-radius default 1/128 scene edge) and --eye-height keeps it above the
                  ground; --walk-speed and --near in scene edges
+  --cells CELLS  with --city: the scene's visibility cells (octopoint-pvs, docs/city.md): each
+                 frame draws only the instances the eye's cell sees (all of them when the eye
+                 lies outside the cells' grid), as octopoint-render --city --cells does
   --point-budget N  with --url: draw at most about N points a frame, 1..2^40 (default: no
                  budget). When the view's visible chunks hold more at the depth it needs, those
                  largest on screen, then nearest, keep it and the rest are drawn one depth
@@ -110,6 +113,8 @@ ViewerOptions parseOptions(int argc, char** argv) {
       std::exit(0);
     } else if (args.is("--city")) {
       options.city = args.value();
+    } else if (args.is("--cells")) {
+      options.cells = args.value();
     } else if (parseModelSourceOption(args, options.source)) {
       continue;
     } else if (args.is("--size")) {
@@ -144,6 +149,7 @@ ViewerOptions parseOptions(int argc, char** argv) {
   if (!options.city.empty() && (!options.source.model_name.empty() ||
                                 !options.source.model_file.empty() || !options.source.url.empty()))
     throw cli::Error("give one of --model, --file, --url and --city");
+  if (!options.cells.empty() && options.city.empty()) throw cli::Error("--cells needs --city");
   if (options.source.point_budget > 0 && options.source.url.empty())
     throw cli::Error("--point-budget needs --url");
   if (options.look && !options.eye) throw cli::Error("--look needs --eye");
@@ -207,8 +213,10 @@ int run(int argc, char** argv) {
   if (!options.city.empty()) {
     const WalkStart walk = cityWalkStart(options);  // a bad eye refused before the scene is read
     const std::unique_ptr<LoadedScene> scene = loadScene(options.city);
+    std::optional<CellTable> cells;
+    if (!options.cells.empty()) cells.emplace(loadCellTable(options.cells, *scene));
     SceneError error;
-    SceneWalk scene_walk(scene->models, scene->instances, &error);
+    SceneWalk scene_walk(scene->models, scene->instances, &error, cells ? &*cells : nullptr);
     if (error != SceneError::kNone) throw cli::Error(scene->label + ": " + describe(error));
     WalkStart start = walk;
     if (const std::optional<std::size_t> model = scene_walk.collision().unindexedModel()) {

@@ -50,7 +50,8 @@ struct ViewerOptions {
   // --eye-radius and --eye-height (docs/perspective.md, "Collision"): walk mode's collision.
   CollisionOptions collision;
   std::optional<double> near;
-  std::string city;  // --city SCENE.json: walk a scene of many models (docs/city.md)
+  std::string city;   // --city SCENE.json: walk a scene of many models (docs/city.md)
+  std::string cells;  // --cells CELLS: with --city, its visibility cells
 };
 
 // What the viewer's walk mode needs of the model: where its cube lies in the scan, the eye to

@@ -168,7 +168,9 @@ std::string Viewer::collisionText() const {
 std::string Viewer::walkOptions(const WalkEye& walker) const {
   if (!walk_.cube) return " (walk mode; the model records no placement for --eye)";
   // degreesText: what --look reads back as the very same angles.
-  const std::string city = scene_ != nullptr ? " --city " + options_.city : "";
+  std::string city;
+  if (scene_ != nullptr) city = " --city " + options_.city;
+  if (!options_.cells.empty()) city += " --cells " + options_.cells;
   return city + " --eye " + eyeText(*walk_.cube, walker.eye) + " --look " +
          degreesText(walker.yaw) + "," + degreesText(walker.pitch) + "," +
          degreesText(walker.roll) + " --fov " + degreesText(walk_.fov);

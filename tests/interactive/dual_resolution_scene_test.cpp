@@ -31,10 +31,12 @@ InteractiveConfig sceneConfig(std::int64_t radius) {
   return config;
 }
 
-// The frame SceneRenderer draws of `walker`, as octopoint-render --city --eye draws it.
+// The frame SceneRenderer draws of `walker`, as octopoint-render --city --eye draws it (with
+// `visible`, only those instances, as --cells draws a cell's set).
 std::uint32_t sceneFrameChecksum(std::span<const ModelView* const> models,
                                  std::span<const SceneInstance> instances,
-                                 const InteractiveConfig& config, const WalkEye& walker) {
+                                 const InteractiveConfig& config, const WalkEye& walker,
+                                 std::span<const std::uint32_t> visible = {}) {
   PerspectiveCamera camera;
   camera.eye = walker.eye;
   camera.yaw = walker.yaw;
@@ -48,6 +50,7 @@ std::uint32_t sceneFrameChecksum(std::span<const ModelView* const> models,
   SceneError error;
   SceneRenderer renderer(models, instances, &error);
   EXPECT_EQ(error, SceneError::kNone);
+  if (!visible.empty()) renderer.setVisibleSet(visible);
   Framebuffer frame(camera.width, camera.height);
   frame.clear();
   EXPECT_TRUE(renderer.draw(view, frame));
@@ -82,6 +85,36 @@ TEST_F(DualResolution, ASceneWalksItsFramesAreTheSceneRenderersAndItHasNoOrbitVi
   Framebuffer empty(config.width, config.height);
   empty.clear();
   EXPECT_NE(expected, frameChecksum(empty)) << "the view shows the scene";
+}
+
+TEST_F(DualResolution, ASceneWalkedWithCellsDrawsOnlyTheEyesCellsSet) {
+  const ModelView* models[] = {&*model_};
+  const std::vector<SceneInstance> instances = threeTables();
+  // One cell around the three tables whose set leaves the right one (2) out.
+  CellGrid grid;
+  grid.instances = 3;
+  grid.nx = grid.nz = grid.ny = 1;
+  grid.origin_x = grid.origin_z = -4 * kEdge;
+  grid.edge = 8 * kEdge;
+  grid.y = {-4 * kEdge, 4 * kEdge};
+  const std::vector<std::uint32_t> set = {0, 1};
+  CellTableError why;
+  const CellTable cells = CellTable::parse(encodeCellTable(grid, {set}), 3, &why);
+  ASSERT_EQ(why, CellTableError::kNone);
+  SceneError error;
+  SceneWalk walk(models, instances, &error, &cells);
+  ASSERT_EQ(error, SceneError::kNone);
+  InteractiveConfig config = walk.configure(sceneConfig(0));
+  config.initial_view.walker.yaw = Angle::fromDegrees(60);  // the right table in view
+  DualResolutionRenderer renderer(SceneWalk::noOrbitView(), clock_, config);
+  const FrameInfo info = fineFrame(renderer, 0);
+  FrameInfo shown;
+  const Framebuffer* frame = renderer.acquireLatest(&shown);
+  ASSERT_NE(frame, nullptr);
+  const WalkEye& walker = info.view.walker;
+  EXPECT_EQ(frameChecksum(*frame), sceneFrameChecksum(models, instances, config, walker, set));
+  EXPECT_NE(frameChecksum(*frame), sceneFrameChecksum(models, instances, config, walker))
+      << "the right table, left out of the cell's set, is in view";
 }
 
 TEST_F(DualResolution, InASceneSinkingOntoATableStopsThereUntilCollisionIsTurnedOff) {
