@@ -37,21 +37,12 @@ std::uint32_t sceneFrameChecksum(std::span<const ModelView* const> models,
                                  std::span<const SceneInstance> instances,
                                  const InteractiveConfig& config, const WalkEye& walker,
                                  std::span<const std::uint32_t> visible = {}) {
-  PerspectiveCamera camera;
-  camera.eye = walker.eye;
-  camera.yaw = walker.yaw;
-  camera.pitch = walker.pitch;
-  camera.roll = walker.roll;
-  camera.fov = config.fov;
-  camera.width = config.width;
-  camera.height = config.height;
-  PerspectiveView view;
-  EXPECT_EQ(buildPerspectiveView(camera, kDefaultFractionBits, &view), PerspectiveError::kNone);
+  const PerspectiveView view = walkViewOf(config, walker);
   SceneError error;
   SceneRenderer renderer(models, instances, &error);
   EXPECT_EQ(error, SceneError::kNone);
   if (!visible.empty()) renderer.setVisibleSet(visible);
-  Framebuffer frame(camera.width, camera.height);
+  Framebuffer frame(config.width, config.height);
   frame.clear();
   EXPECT_TRUE(renderer.draw(view, frame));
   return frameChecksum(frame);

@@ -28,17 +28,8 @@ InteractiveConfig walkConfig() {
 Framebuffer walkFrame(const ModelView& model, const InteractiveConfig& config,
                       const WalkEye& walker, int coarser = 0, bool fill = false,
                       PixelPayload payload = PixelPayload::kColour) {
-  PerspectiveCamera camera;
-  camera.eye = walker.eye;
-  camera.yaw = walker.yaw;
-  camera.pitch = walker.pitch;
-  camera.roll = walker.roll;
-  camera.fov = config.fov;
-  camera.width = config.width;
-  camera.height = config.height;
-  PerspectiveView view;
-  EXPECT_EQ(buildPerspectiveView(camera, kDefaultFractionBits, &view), PerspectiveError::kNone);
-  Framebuffer frame(camera.width, camera.height);
+  const PerspectiveView view = walkViewOf(config, walker);
+  Framebuffer frame(config.width, config.height);
   frame.clear(payload);
   PerspectiveRenderer renderer(model);
   PerspectiveRenderer::Options options;

@@ -13,10 +13,27 @@
 
 #include "octopoint/interactive.h"
 #include "octopoint/models.h"
+#include "renderer/perspective.h"
 
 namespace octopoint::dual_resolution_testing {
 
 using std::chrono::milliseconds;
+
+// The perspective view a walk frame of `walker` is drawn with at the config's size and field of
+// view (the camera's default near plane).
+inline PerspectiveView walkViewOf(const InteractiveConfig& config, const WalkEye& walker) {
+  PerspectiveCamera camera;
+  camera.eye = walker.eye;
+  camera.yaw = walker.yaw;
+  camera.pitch = walker.pitch;
+  camera.roll = walker.roll;
+  camera.fov = config.fov;
+  camera.width = config.width;
+  camera.height = config.height;
+  PerspectiveView view;
+  EXPECT_EQ(buildPerspectiveView(camera, kDefaultFractionBits, &view), PerspectiveError::kNone);
+  return view;
+}
 inline constexpr milliseconds kPatience{20000};  // generous: ThreadSanitizer slows everything down
 
 inline std::int64_t processCpuMicroseconds() {
