@@ -12,6 +12,7 @@
 #include "octopoint/smooth.h"
 #include "renderer/bit_scan.h"
 #include "renderer/decode_algorithms.h"
+#include "renderer/smooth_normalise.h"
 #include "renderer/smooth_normals.h"
 #include "renderer/subtree_clip.h"
 
@@ -398,30 +399,6 @@ std::size_t pixelCount(std::int32_t width, std::int32_t height) {
   return static_cast<std::size_t>(width) * static_cast<std::size_t>(height);
 }
 
-// Division of any 32-bit n by one divisor d >= 1, one division for several quotients (a pixel's
-// three colours): with inverse = floor((2^32 - 1) / d), q = floor(n inverse / 2^32) is floor(n /
-// d) or one less (d inverse >= 2^32 - d, so n / d - n inverse / 2^32 <= n / 2^32 < 1, and
-// n inverse / 2^32 < n / d), and one compare of the remainder corrects it: exactly n / d.
-class Reciprocal {
- public:
-  explicit Reciprocal(std::uint32_t divisor)
-      : divisor_(divisor),
-        inverse_(static_cast<std::uint32_t>(divideUnsigned(0xFFFF'FFFFU, divisor).quotient)) {}
-  std::uint32_t divide(std::uint32_t n) const {
-    auto q = static_cast<std::uint32_t>((std::uint64_t{n} * inverse_) >> 32);
-    if (n - q * divisor_ >= divisor_) ++q;
-    return q;
-  }
-
- private:
-  std::uint32_t divisor_;
-  std::uint32_t inverse_;
-};
-
-std::uint32_t packRgb(std::uint32_t r, std::uint32_t g, std::uint32_t b) {
-  return r << 16 | g << 8 | b;
-}
-
 }  // namespace
 
 SmoothSplats::SmoothSplats(std::int32_t width, std::int32_t height)
@@ -517,8 +494,15 @@ bool SmoothSplats::finish(FrameView& frame) {
   const PixelRect& rect = blended_rect_;
   const auto width = static_cast<std::size_t>(width_);
   std::uint32_t* const words = frame.pixelsToDraw(rect);
+  const bool avx2 = simdDecoderAvailable();
   for (std::int32_t y = rect.y_begin; y < rect.y_end; ++y) {
     const std::size_t row = static_cast<std::size_t>(y) * width;
+    if (!blends_normals_) {
+      const std::size_t at = row + static_cast<std::size_t>(rect.x_begin);
+      normaliseRun(words + at, sums_.data() + at,
+                   static_cast<std::size_t>(rect.x_end - rect.x_begin), kCoverWeight, avx2);
+      continue;
+    }
     for (std::int32_t x = rect.x_begin; x < rect.x_end; ++x) {
       std::uint32_t& word = words[row + static_cast<std::size_t>(x)];
       if (word == FrameView::kEmpty) continue;
@@ -527,14 +511,9 @@ bool SmoothSplats::finish(FrameView& frame) {
         word = FrameView::kEmpty;
         continue;
       }
-      const std::uint32_t half = sum.weight / 2;  // rounded to nearest
-      const Reciprocal weight(sum.weight);
-      sum.r = packRgb(weight.divide(sum.r + half), weight.divide(sum.g + half),
-                      weight.divide(sum.b + half));
-      if (blends_normals_) {
-        DirectionQ14& n = normal_sums_[row + static_cast<std::size_t>(x)];
-        n = unitDirection(n.x, n.y, n.z);
-      }
+      sum.r = blendedColour(sum);
+      DirectionQ14& n = normal_sums_[row + static_cast<std::size_t>(x)];
+      n = unitDirection(n.x, n.y, n.z);
     }
   }
   return true;
