@@ -59,7 +59,7 @@ __attribute__((target("avx2"))) std::size_t normaliseAvx2(std::uint32_t* words,
                                                           std::size_t count,
                                                           std::uint32_t cover_weight) {
   const __m256i empty = _mm256_set1_epi32(-1);
-  const __m256i to_lanes = _mm256_setr_epi32(0, 2, 4, 6, 1, 3, 5, 7);  // pixel order -> lanes
+  const __m256i to_lanes = _mm256_setr_epi32(0, 2, 4, 6, 1, 3, 5, 7);   // pixel order -> lanes
   const __m256i to_pixels = _mm256_setr_epi32(0, 4, 1, 5, 2, 6, 3, 7);  // and back
   // Below cover_weight, unsigned: max(w, cover - 1) == cover - 1.
   const __m256i below = _mm256_set1_epi32(static_cast<int>(cover_weight - 1));
