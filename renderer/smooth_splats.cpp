@@ -163,8 +163,19 @@ class BlendWalk {
   }
 
   void add(const Vec3& p, const std::uint8_t* leaf_at) {
-    const Span columns = weigh(p.x, radius_x_, inverse_x_, setup_.width, column_weight_);
+    Span columns = weigh(p.x, radius_x_, inverse_x_, setup_.width, column_weight_);
     if (columns.begin >= columns.end) return;
+#ifdef OCTOPOINT_SMOOTH_SSE2
+    // The vector steps take whole groups of four: a reach of 4k + 1 .. 4k + 3 columns is widened
+    // to the right, inside the frame, by columns of weight 0 (they add nothing), rather than
+    // leaving one to three columns of every row to the scalar loop.
+    const std::int32_t whole = (columns.end - columns.begin + 3) & ~3;
+    if (whole >= 4 && columns.begin + whole <= setup_.width) {
+      std::fill(column_weight_ + (columns.end - columns.begin), column_weight_ + whole,
+                std::uint16_t{0});
+      columns.end = columns.begin + whole;
+    }
+#endif
     const Span rows = weigh(p.y, radius_y_, inverse_y_, setup_.height, row_weight_);
     const auto width = static_cast<std::size_t>(setup_.width);
     const std::size_t first =
