@@ -12,6 +12,7 @@
 #include "octopoint/smooth.h"
 #include "renderer/bit_scan.h"
 #include "renderer/decode_algorithms.h"
+#include "renderer/smooth_normalise.h"
 #include "renderer/smooth_normals.h"
 #include "renderer/subtree_clip.h"
 
@@ -153,17 +154,32 @@ class BlendWalk {
     const std::int64_t last = (at + radius - half - 1) >> f;
     const auto begin = static_cast<std::int32_t>(std::max<std::int64_t>(first, 0));
     const auto end = static_cast<std::int32_t>(std::min<std::int64_t>(last + 1, size));
-    for (std::int32_t i = begin; i < end; ++i) {
-      const std::int64_t offset = (std::int64_t{i} << f) + half - at;
-      const auto distance = static_cast<std::uint64_t>(offset < 0 ? -offset : offset);  // < radius
-      weight[i - begin] = kKernel[static_cast<std::size_t>((distance * inverse) >> 32)];
+    // |offset| inverse, offset = c - at (< radius), by one addition a column: offset inverse
+    // grows by 2^F inverse (below 2^41 in magnitude: inverse <= 2^40 / radius, radius >= 2^F).
+    const auto step = static_cast<std::int64_t>(inverse) << f;
+    std::int64_t product =
+        ((std::int64_t{begin} << f) + half - at) * static_cast<std::int64_t>(inverse);
+    for (std::int32_t i = begin; i < end; ++i, product += step) {
+      const auto distance = static_cast<std::uint64_t>(product < 0 ? -product : product);
+      weight[i - begin] = kKernel[static_cast<std::size_t>(distance >> 32)];
     }
     return {begin, end};
   }
 
   void add(const Vec3& p, const std::uint8_t* leaf_at) {
-    const Span columns = weigh(p.x, radius_x_, inverse_x_, setup_.width, column_weight_);
+    Span columns = weigh(p.x, radius_x_, inverse_x_, setup_.width, column_weight_);
     if (columns.begin >= columns.end) return;
+#ifdef OCTOPOINT_SMOOTH_SSE2
+    // The vector steps take whole groups of four: a reach of 4k + 1 .. 4k + 3 columns is widened
+    // to the right, inside the frame, by columns of weight 0 (they add nothing), rather than
+    // leaving one to three columns of every row to the scalar loop.
+    const std::int32_t whole = (columns.end - columns.begin + 3) & ~3;
+    if (whole >= 4 && columns.begin + whole <= setup_.width) {
+      std::fill(column_weight_ + (columns.end - columns.begin), column_weight_ + whole,
+                std::uint16_t{0});
+      columns.end = columns.begin + whole;
+    }
+#endif
     const Span rows = weigh(p.y, radius_y_, inverse_y_, setup_.height, row_weight_);
     const auto width = static_cast<std::size_t>(setup_.width);
     const std::size_t first =
@@ -330,10 +346,14 @@ class BlendWalk {
   __attribute__((target("avx2"))) static std::size_t addVectorsAvx2(const LeafReach& leaf) {
     const Sse2Leaf vectors(leaf);
     const __m256i colour = _mm256_broadcastsi128_si256(vectors.colour);
-    const __m256i flip = _mm256_set1_epi32(static_cast<int>(0x8000'0000U));
-    const __m256i key = _mm256_broadcastsi128_si256(vectors.key);
-    const __m256i limit = _mm256_broadcastsi128_si256(vectors.limit);
-    const __m256i empty = _mm256_set1_epi32(-1);
+    // The depth test on the words themselves: a word is within the tolerance where it lies in
+    // [lowest << 8, highest << 8 | 255], the depth keys [key - tolerance, key + tolerance] clipped
+    // to [0, kMaxDepthKey] (so kEmpty, depth 2^24 - 1, is outside): one unsigned compare of the
+    // word minus the first against the range's length, addScalar's test and its kEmpty test.
+    const std::uint32_t lowest = leaf.key > leaf.tolerance ? leaf.key - leaf.tolerance : 0;
+    const std::uint32_t highest = std::min(leaf.key + leaf.tolerance, FrameView::kMaxDepthKey);
+    const __m256i first = _mm256_set1_epi32(static_cast<int>(lowest << 8));
+    const __m256i length = _mm256_set1_epi32(static_cast<int>((highest - lowest) << 8 | 255));
     // Pixels 2k and 2k + 1's weights, each in the four lanes of its half.
     const __m256i pair[4] = {
         _mm256_setr_epi32(0, 0, 0, 0, 1, 1, 1, 1), _mm256_setr_epi32(2, 2, 2, 2, 3, 3, 3, 3),
@@ -345,16 +365,14 @@ class BlendWalk {
       const std::uint32_t* const words = leaf.words + r * leaf.stride;
       SmoothSplats::Sums* const sums = leaf.sums + r * leaf.stride;
       for (std::size_t i = 0; i < eights; i += 8) {
-        const __m256i word = _mm256_loadu_si256(reinterpret_cast<const __m256i*>(words + i));
-        const __m256i distance = _mm256_sub_epi32(key, _mm256_srli_epi32(word, 8));
-        const __m256i outside =
-            _mm256_or_si256(_mm256_cmpgt_epi32(_mm256_xor_si256(distance, flip), limit),
-                            _mm256_cmpeq_epi32(word, empty));
-        if (_mm256_movemask_epi8(outside) == -1) continue;
+        const __m256i from = _mm256_sub_epi32(
+            _mm256_loadu_si256(reinterpret_cast<const __m256i*>(words + i)), first);
+        const __m256i inside = _mm256_cmpeq_epi32(_mm256_min_epu32(from, length), from);
+        if (_mm256_testz_si256(inside, inside)) continue;
         const __m256i columns = _mm256_cvtepu16_epi32(
             _mm_loadu_si128(reinterpret_cast<const __m128i*>(leaf.column_weight + i)));
-        const __m256i weight = _mm256_andnot_si256(
-            outside, _mm256_srli_epi32(_mm256_madd_epi16(columns, rows), kProductShift));
+        const __m256i weight = _mm256_and_si256(
+            inside, _mm256_srli_epi32(_mm256_madd_epi16(columns, rows), kProductShift));
         auto* sum = reinterpret_cast<__m256i*>(sums + i);
         for (int k = 0; k < 4; ++k) {
           const __m256i weights = _mm256_permutevar8x32_epi32(weight, pair[k]);
@@ -396,30 +414,6 @@ bool validSize(std::int32_t width, std::int32_t height) {
 
 std::size_t pixelCount(std::int32_t width, std::int32_t height) {
   return static_cast<std::size_t>(width) * static_cast<std::size_t>(height);
-}
-
-// Division of any 32-bit n by one divisor d >= 1, one division for several quotients (a pixel's
-// three colours): with inverse = floor((2^32 - 1) / d), q = floor(n inverse / 2^32) is floor(n /
-// d) or one less (d inverse >= 2^32 - d, so n / d - n inverse / 2^32 <= n / 2^32 < 1, and
-// n inverse / 2^32 < n / d), and one compare of the remainder corrects it: exactly n / d.
-class Reciprocal {
- public:
-  explicit Reciprocal(std::uint32_t divisor)
-      : divisor_(divisor),
-        inverse_(static_cast<std::uint32_t>(divideUnsigned(0xFFFF'FFFFU, divisor).quotient)) {}
-  std::uint32_t divide(std::uint32_t n) const {
-    auto q = static_cast<std::uint32_t>((std::uint64_t{n} * inverse_) >> 32);
-    if (n - q * divisor_ >= divisor_) ++q;
-    return q;
-  }
-
- private:
-  std::uint32_t divisor_;
-  std::uint32_t inverse_;
-};
-
-std::uint32_t packRgb(std::uint32_t r, std::uint32_t g, std::uint32_t b) {
-  return r << 16 | g << 8 | b;
 }
 
 }  // namespace
@@ -517,8 +511,15 @@ bool SmoothSplats::finish(FrameView& frame) {
   const PixelRect& rect = blended_rect_;
   const auto width = static_cast<std::size_t>(width_);
   std::uint32_t* const words = frame.pixelsToDraw(rect);
+  const bool avx2 = simdDecoderAvailable();
   for (std::int32_t y = rect.y_begin; y < rect.y_end; ++y) {
     const std::size_t row = static_cast<std::size_t>(y) * width;
+    if (!blends_normals_) {
+      const std::size_t at = row + static_cast<std::size_t>(rect.x_begin);
+      normaliseRun(words + at, sums_.data() + at,
+                   static_cast<std::size_t>(rect.x_end - rect.x_begin), kCoverWeight, avx2);
+      continue;
+    }
     for (std::int32_t x = rect.x_begin; x < rect.x_end; ++x) {
       std::uint32_t& word = words[row + static_cast<std::size_t>(x)];
       if (word == FrameView::kEmpty) continue;
@@ -527,14 +528,9 @@ bool SmoothSplats::finish(FrameView& frame) {
         word = FrameView::kEmpty;
         continue;
       }
-      const std::uint32_t half = sum.weight / 2;  // rounded to nearest
-      const Reciprocal weight(sum.weight);
-      sum.r = packRgb(weight.divide(sum.r + half), weight.divide(sum.g + half),
-                      weight.divide(sum.b + half));
-      if (blends_normals_) {
-        DirectionQ14& n = normal_sums_[row + static_cast<std::size_t>(x)];
-        n = unitDirection(n.x, n.y, n.z);
-      }
+      sum.r = blendedColour(sum);
+      DirectionQ14& n = normal_sums_[row + static_cast<std::size_t>(x)];
+      n = unitDirection(n.x, n.y, n.z);
     }
   }
   return true;
