@@ -50,6 +50,7 @@ struct CellBuildOptions {
   // The eroded maps' ground plane (OcclusionSampling::ground): y = ground_y, Q.24, y down.
   bool ground = false;
   std::int64_t ground_y = 0;
+  bool radii = false;  // OcclusionSampling::radii: the erosion narrower towards a face's centre
 };
 
 struct CellBuild {

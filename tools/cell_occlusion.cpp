@@ -102,6 +102,85 @@ void crackLine(const std::uint32_t* words, std::size_t stride, std::int32_t n,
 
 }  // namespace
 
+namespace {
+
+// map[i] = the largest of `open` over the square of radius[i] pixels around pixel i, kEmpty where
+// it leaves the face: a sparse table of the maxima over squares of 2^k pixels (k up to
+// log2(2 rho + 1): levelsOf), each window the maximum of four such squares at its corners.
+// `levels`: levelsOf(rho) x width x height words.
+int levelsOf(int rho) {
+  int top = 0;
+  while ((2 << top) <= 2 * rho + 1) ++top;
+  return top + 1;
+}
+
+void variableMax(const std::uint32_t* open, std::int32_t width, std::int32_t height,
+                 std::span<const std::uint8_t> radius, int rho, std::uint32_t* map,
+                 std::uint32_t* levels) {
+  const std::size_t w = static_cast<std::size_t>(width),
+                    pixels = w * static_cast<std::size_t>(height);
+  const int top = levelsOf(rho) - 1;
+  std::copy(open, open + pixels, levels);
+  for (int k = 1; k <= top; ++k) {
+    const std::uint32_t* below = levels + pixels * static_cast<std::size_t>(k - 1);
+    std::uint32_t* level = levels + pixels * static_cast<std::size_t>(k);
+    const std::int32_t half = 1 << (k - 1);
+    for (std::int32_t y = 0; y + 2 * half <= height; ++y) {
+      for (std::int32_t x = 0; x + 2 * half <= width; ++x) {
+        const std::size_t i = static_cast<std::size_t>(y) * w + static_cast<std::size_t>(x);
+        const std::size_t down = static_cast<std::size_t>(half) * w;
+        level[i] =
+            std::max(std::max(below[i], below[i + static_cast<std::size_t>(half)]),
+                     std::max(below[i + down], below[i + down + static_cast<std::size_t>(half)]));
+      }
+    }
+  }
+  for (std::int32_t y = 0; y < height; ++y) {
+    for (std::int32_t x = 0; x < width; ++x) {
+      const std::size_t i = static_cast<std::size_t>(y) * w + static_cast<std::size_t>(x);
+      const std::int32_t r = radius[i];
+      if (x - r < 0 || y - r < 0 || x + r >= width || y + r >= height) {
+        map[i] = kEmpty;
+        continue;
+      }
+      int k = 0;
+      while ((2 << k) <= 2 * r + 1) ++k;
+      const std::int32_t far = 2 * r + 1 - (1 << k);  // the corner squares' offset
+      const std::uint32_t* level = levels + pixels * static_cast<std::size_t>(k);
+      const auto at = [&](std::int32_t px, std::int32_t py) {
+        return level[static_cast<std::size_t>(py) * w + static_cast<std::size_t>(px)];
+      };
+      map[i] = std::max(std::max(at(x - r, y - r), at(x - r + far, y - r)),
+                        std::max(at(x - r, y - r + far), at(x - r + far, y - r + far)));
+    }
+  }
+}
+
+}  // namespace
+
+void erosionRadii(const OcclusionSampling& sampling, int side, std::span<std::uint8_t> radius) {
+  const int rho = erosionRadius(sampling);
+  const double angle = rho == 0 ? 0
+                                : std::asin(std::min(1.0, static_cast<double>(sampling.eps) /
+                                                              static_cast<double>(sampling.near)));
+  const double unit = 2.0 / sampling.face;  // a pixel in x/z (tan) units
+  for (int py = 0; py < side; ++py) {
+    for (int px = 0; px < side; ++px) {
+      const double x = (px + 0.5 - side / 2.0) * unit, y = (py + 0.5 - side / 2.0) * unit;
+      // A turn of d radians about a direction at tan t from the axis moves its image by up to
+      // d (1 + t^2) (x/z units); t taken at the window's far side (once around), 10% more for
+      // the second order, one pixel for the grid; at most rho (the face's corner, whose border
+      // the face has).
+      const double t = std::sqrt(x * x + y * y);
+      const double first = angle * (1 + t * t) * 1.1;
+      const double reach = angle * (1 + (t + first) * (t + first)) * 1.1;
+      const int r = rho == 0 ? 0 : static_cast<int>(std::ceil(reach / unit)) + 1;
+      radius[static_cast<std::size_t>(py) * static_cast<std::size_t>(side) +
+             static_cast<std::size_t>(px)] = static_cast<std::uint8_t>(std::min(r, rho));
+    }
+  }
+}
+
 int erosionRadius(const OcclusionSampling& sampling) {
   if (sampling.eps <= 0) return 0;
   // At a face's corner (tan x = tan y = 1) a turn of d radians moves the image by up to
@@ -115,10 +194,12 @@ int erosionRadius(const OcclusionSampling& sampling) {
 void occlusionMap(std::span<const std::uint32_t> words, std::int32_t width, std::int32_t height,
                   std::uint32_t near_key, std::int64_t eps, int face, int rho,
                   std::span<std::uint32_t> map, std::vector<std::uint32_t>& scratch,
-                  std::span<const std::uint8_t> ground) {
+                  std::span<const std::uint8_t> ground, std::span<const std::uint8_t> radius) {
   const std::size_t w = static_cast<std::size_t>(width),
                     pixels = w * static_cast<std::size_t>(height);
-  scratch.resize(pixels + 2 * static_cast<std::size_t>(std::max(width, height)));
+  const std::size_t lines = 2 * static_cast<std::size_t>(std::max(width, height));
+  scratch.resize(pixels + lines +
+                 (radius.empty() ? 0 : pixels * static_cast<std::size_t>(levelsOf(rho))));
   std::uint32_t* const open = scratch.data();  // near pixels and cracks emptied
   // The palette byte of a map word is set: a point at the map's own depth writes (the surface the
   // map holds there is seen, so its instance is in the set). The ground, near or far, is below
@@ -143,6 +224,8 @@ void occlusionMap(std::span<const std::uint32_t> words, std::int32_t width, std:
   }
   if (rho == 0) {
     std::copy(open, open + pixels, map.begin());
+  } else if (!radius.empty()) {
+    variableMax(open, width, height, radius, rho, map.data(), open + pixels + lines);
   } else {
     std::uint32_t* const prefix = open + pixels;
     std::uint32_t* const suffix = prefix + std::max(width, height);
@@ -225,6 +308,13 @@ OcclusionSampler::OcclusionSampler(SceneRenderer& renderer, const OcclusionSampl
       marks_(renderer.instanceCount()),
       step_marks_(renderer.instanceCount()) {
   for (auto& mask : ground_) mask.resize(sampling.ground ? map_.size() : 0);
+  for (int step = 0; sampling.radii && step < std::clamp(sampling.near_steps, 1, kMaxNearSteps);
+       ++step) {
+    OcclusionSampling at = sampling;
+    at.near = sampling.near << step;
+    radii_[step].resize(map_.size());
+    erosionRadii(at, side_, radii_[step]);
+  }
 }
 
 namespace {
@@ -309,7 +399,7 @@ void OcclusionSampler::look(const Point3<std::int64_t>& eye, std::uint64_t* fram
       if (!seen[k]) continue;
       const Framebuffer& frame = faces_[static_cast<std::size_t>(k)];
       occlusionMap(frame.pixels(), side_, side_, near_key, sampling_.eps, sampling_.face, rho, map_,
-                   scratch_, ground_[k]);
+                   scratch_, ground_[k], radii_[step]);
       for (std::size_t i = 0; step == 0 && i < map_.size(); ++i) {
         const std::uint32_t word = frame.pixels()[i];
         const bool on_ground = !ground_[k].empty() && ground_[k][i] != 0;

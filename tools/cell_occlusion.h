@@ -52,6 +52,9 @@ struct OcclusionSampling {
   // Q.24 scene edges: the edge of the ground's finest voxels (a splat's depth strays from the
   // plane by up to one): 1/512 scene edge in the generated city.
   std::int64_t ground_voxel = kLeastGap;
+  // The erosion's radius per pixel (erosionRadii: narrower towards the face's centre) rather
+  // than the corner's everywhere.
+  bool radii = false;
 };
 
 // The erosion's radius in pixels for `sampling` (0 when eps is 0).
@@ -71,7 +74,15 @@ inline constexpr std::uint32_t kGroundWord = 0;  // below every word: never a wi
 void occlusionMap(std::span<const std::uint32_t> words, std::int32_t width, std::int32_t height,
                   std::uint32_t near_key, std::int64_t eps, int face, int rho,
                   std::span<std::uint32_t> map, std::vector<std::uint32_t>& scratch,
-                  std::span<const std::uint8_t> ground = {});
+                  std::span<const std::uint8_t> ground = {},
+                  std::span<const std::uint8_t> radius = {});
+
+// Per pixel of a widened face (side x side), the erosion's radius there, at most
+// erosionRadius(sampling): a turn of asin(eps / near) moves a direction's image by a factor
+// 1 + t^2 (t: its x/z offset from the face's axis), 3 at the face's corner, 1 at its centre, so
+// the window need only be that wide around each pixel (`radius` for occlusionMap; empty: the
+// corner's radius everywhere).
+void erosionRadii(const OcclusionSampling& sampling, int side, std::span<std::uint8_t> radius);
 
 // The pixels of a face (camera `view`, whose pitch is 0 or +-90 degrees) whose surface lies on
 // the plane y = ground_y (Q.24, y down), into `mask` (1 each): the pixel's point, its depth key's
@@ -122,6 +133,7 @@ class OcclusionSampler {
   std::vector<std::uint32_t> map_, work_, scratch_;
   OcclusionStats stats_;
   std::vector<std::uint8_t> marks_, step_marks_, ground_[6];
+  std::vector<std::uint8_t> radii_[kMaxNearSteps];  // per near step: erosionRadii
 };
 
 }  // namespace octopoint

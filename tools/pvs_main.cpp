@@ -24,7 +24,7 @@ using namespace octopoint;
 constexpr const char* kUsage =
     R"(usage: octopoint-pvs SCENE.json -o CELLS [--cell EDGES] [--layers Y0,Y1,...] [--face PX]
                      [--samples N] [--seed N] [--margin EDGES] [--no-neighbours]
-                     [--eps EDGES --near-occluder EDGES [--near-steps N] [--ground Y]]
+                     [--eps EDGES --near-occluder EDGES [--near-steps N] [--ground Y] [--radii]]
 
 Computes a scene's visibility cells (docs/city.md): a grid of view cells over the instances'
 extent in x and z and the layers of height the eye may take, and per cell the instances visible
@@ -62,6 +62,8 @@ Eroded occlusion maps (conservative by construction, tighter; docs/city.md):
   --ground Y         the scene's ground is the plane y = Y (scene edges, y down; the generated
                      city's: 0), every layer above it and no instance below it: pixels on it
                      are no holes in the maps, near or far (needs --eps)
+  --radii            erode each pixel by its own radius: asin(EDGES / NEAR) moves an image
+                     by 1 + t^2 of it at x/z offset t, a third of the face corner's at its centre
 )";
 
 // A decimal number of scene edges to Q.24, within +-limit scene edges; cli::Error otherwise.
@@ -119,6 +121,9 @@ int run(int argc, char** argv) {
     } else if (args.is("--ground")) {
       options.ground = true;
       options.ground_y = edgesOption("--ground", args.value(), 128);
+    } else if (args.is("--radii")) {
+      args.noValue();
+      options.radii = true;
     } else if (args.is("--no-neighbours")) {
       args.noValue();
       options.neighbours = false;
@@ -133,6 +138,7 @@ int run(int argc, char** argv) {
   if ((options.eps > 0) != (options.near_occluder != 0))
     throw cli::Error("--eps and --near-occluder go together");
   if (options.ground && options.eps == 0) throw cli::Error("--ground: needs --eps");
+  if (options.radii && options.eps == 0) throw cli::Error("--radii: needs --eps");
   if (options.ground && options.y.back() >= options.ground_y)
     throw cli::Error("--ground: the layers reach down to it (every eye must be above it)");
   if (options.eps > 0 && options.near_occluder <= options.eps)

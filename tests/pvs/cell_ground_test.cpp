@@ -26,15 +26,14 @@ const ModelView& modelOf(const char* name, std::vector<std::uint64_t> keys, int 
   auto* level = new SyntheticLevel(
       encodeLevel(std::move(keys), depth, [](std::uint64_t) { return std::uint8_t{1}; }));
   static const std::array<std::uint8_t, 768> palette{};
-  auto* embedded =
-      new EmbeddedLevel{static_cast<std::uint8_t>(depth),
-                        level->nodes.data(),
-                        static_cast<std::uint32_t>(level->nodes.size()),
-                        level->leaves.data(),
-                        static_cast<std::uint32_t>(level->leaves.size()),
-                        nullptr};
-  auto* model = new EmbeddedModel{name, format::kVersion2, 0, 0,        2, palette.data(),
-                                  0,    nullptr,           1, embedded};
+  auto* embedded = new EmbeddedLevel{static_cast<std::uint8_t>(depth),
+                                     level->nodes.data(),
+                                     static_cast<std::uint32_t>(level->nodes.size()),
+                                     level->leaves.data(),
+                                     static_cast<std::uint32_t>(level->leaves.size()),
+                                     nullptr};
+  auto* model =
+      new EmbeddedModel{name, format::kVersion2, 0, 0, 2, palette.data(), 0, nullptr, 1, embedded};
   ModelIssue issue;
   return *new ModelView(*ModelView::fromEmbedded(*model, &issue));
 }
@@ -105,7 +104,7 @@ bool lastSeen(std::vector<SceneInstance> instances, const Point3<std::int64_t>& 
 // The sample at the origin's marks, eps 1/6 edge, near 3/2 edges, with or without the ground.
 constexpr std::int64_t kEps = kEdge / 6;
 std::vector<std::uint8_t> marksOf(const std::vector<SceneInstance>& instances, bool ground,
-                                  OcclusionStats* stats = nullptr) {
+                                  OcclusionStats* stats = nullptr, bool radii = false) {
   const ModelView* models[] = {&wall(), &plate()};
   SceneError error;
   SceneRenderer renderer(models, instances, &error);
@@ -114,6 +113,7 @@ std::vector<std::uint8_t> marksOf(const std::vector<SceneInstance>& instances, b
   sampling.ground = ground;
   sampling.ground_y = kGround;
   sampling.ground_voxel = kEdge / 8;
+  sampling.radii = radii;
   OcclusionSampler sampler(renderer, sampling);
   std::uint64_t frames = 0;
   sampler.look({0, 0, 0}, &frames);
@@ -132,6 +132,7 @@ TEST(CellGround, TheGroundHidesNothingBesideAWall) {
   EXPECT_EQ(marks[0], 1);
   EXPECT_EQ(marks[1], 1);
   EXPECT_EQ(marks.back(), 1);
+  EXPECT_EQ(marksOf(scene, true, nullptr, true).back(), 1);  // each pixel's own radius
 }
 
 TEST(CellGround, AWallOnTheGroundHidesWhatIsBehindItOnlyWithTheGround) {
@@ -143,6 +144,31 @@ TEST(CellGround, AWallOnTheGroundHidesWhatIsBehindItOnlyWithTheGround) {
   // Without the ground its near pixels empty every window that reaches below the wall's base.
   EXPECT_EQ(marksOf(scene, false).back(), 1);
   EXPECT_EQ(marksOf(scene, true).back(), 0);
+  EXPECT_EQ(marksOf(scene, true, nullptr, true).back(), 0);
+}
+
+TEST(CellGround, RadiiAllTheCornersAreTheConstantErosion) {
+  // Random words with some empty: every pixel's radius rho gives the running maxima's map; the
+  // radii shrink towards the face's centre and never pass rho.
+  const OcclusionSampling sampling{kEdge / 10, kEdge, 32};
+  const int rho = erosionRadius(sampling), side = 32 + 2 * (rho + 1);
+  const std::size_t pixels = static_cast<std::size_t>(side * side);
+  std::vector<std::uint32_t> words(pixels);
+  std::uint32_t state = 12345;
+  for (auto& word : words) {
+    state = state * 1103515245u + 12345u;
+    word = (state >> 28) == 0 ? FrameView::kEmpty : FrameView::pack(1000 + (state >> 20), 0);
+  }
+  std::vector<std::uint8_t> radius(pixels, static_cast<std::uint8_t>(rho));
+  std::vector<std::uint32_t> constant(pixels), variable(pixels), scratch;
+  occlusionMap(words, side, side, 0, 0, 32, rho, constant, scratch);
+  occlusionMap(words, side, side, 0, 0, 32, rho, variable, scratch, {}, radius);
+  EXPECT_EQ(constant, variable);
+  erosionRadii(sampling, side, radius);
+  const std::size_t centre = static_cast<std::size_t>(side / 2 * side + side / 2);
+  EXPECT_LT(radius[centre], rho / 2 + 2);
+  EXPECT_EQ(radius[static_cast<std::size_t>(rho + 1) * static_cast<std::size_t>(side + 1)], rho);
+  for (const std::uint8_t r : radius) EXPECT_LE(r, rho);
 }
 
 TEST(CellGround, AWindowOfGroundAloneKeepsThePixelsOwnWord) {
