@@ -125,8 +125,11 @@ Cover coverOf(std::int64_t edge, std::int64_t height, std::int64_t eps) {
 void sampleCovering(const CellGrid& g, const CellBuildOptions& options, SceneRenderer& renderer,
                     std::vector<std::uint8_t>& seen, CellBuild* build) {
   const std::size_t n = g.instances;
-  OcclusionSampler sampler(renderer,
-                           {options.eps, options.near_occluder, options.face, options.near_steps});
+  OcclusionSampling sampling{options.eps, options.near_occluder, options.face, options.near_steps};
+  sampling.ground = options.ground;
+  sampling.ground_y = options.ground_y;
+  sampling.radii = options.radii;
+  OcclusionSampler sampler(renderer, sampling);
   build->side = sampler.side();
   build->rho = sampler.rho();
   for (std::size_t cell = 0; cell < g.cellCount(); ++cell) {

@@ -47,6 +47,10 @@ struct CellBuildOptions {
   std::int64_t eps = 0;
   std::int64_t near_occluder = 0;
   int near_steps = 1;  // maps at near_occluder times 1, 2, 4, ...: the set is what all let in
+  // The eroded maps' ground plane (OcclusionSampling::ground): y = ground_y, Q.24, y down.
+  bool ground = false;
+  std::int64_t ground_y = 0;
+  bool radii = false;  // OcclusionSampling::radii: the erosion narrower towards a face's centre
 };
 
 struct CellBuild {

@@ -65,11 +65,18 @@ std::int64_t crackTolerance(std::int64_t eps, int face) {
   return std::min<std::int64_t>(std::int64_t{1} << 16, gap + (std::int64_t{3} << 16) / face);
 }
 
+// `ground`: null, or the line's ground flags (`stride` apart): two neighbours both on the ground
+// plane are no crack (a gap between them leads below the ground, where nothing is seen from
+// above it; the coarse voxels of a near ground would otherwise step in 1/z like cracks).
 void crackLine(const std::uint32_t* words, std::size_t stride, std::int32_t n,
-               std::int64_t tolerance, std::uint32_t* open) {
+               std::int64_t tolerance, std::uint32_t* open, const std::uint8_t* ground) {
   const auto at = [&](std::int32_t i) { return words[static_cast<std::size_t>(i) * stride]; };
   for (std::int32_t i = 0; i + 1 < n; ++i) {
     if (at(i) == kEmpty || at(i + 1) == kEmpty) continue;
+    if (ground != nullptr && ground[static_cast<std::size_t>(i) * stride] != 0 &&
+        ground[static_cast<std::size_t>(i + 1) * stride] != 0) {
+      continue;
+    }
     const std::int64_t wa = inverseDepth(at(i)), wb = inverseDepth(at(i + 1));
     // Q40 1/key times Q16: below 2^56.
     const std::int64_t limit =
@@ -95,6 +102,85 @@ void crackLine(const std::uint32_t* words, std::size_t stride, std::int32_t n,
 
 }  // namespace
 
+namespace {
+
+// map[i] = the largest of `open` over the square of radius[i] pixels around pixel i, kEmpty where
+// it leaves the face: a sparse table of the maxima over squares of 2^k pixels (k up to
+// log2(2 rho + 1): levelsOf), each window the maximum of four such squares at its corners.
+// `levels`: levelsOf(rho) x width x height words.
+int levelsOf(int rho) {
+  int top = 0;
+  while ((2 << top) <= 2 * rho + 1) ++top;
+  return top + 1;
+}
+
+void variableMax(const std::uint32_t* open, std::int32_t width, std::int32_t height,
+                 std::span<const std::uint8_t> radius, int rho, std::uint32_t* map,
+                 std::uint32_t* levels) {
+  const std::size_t w = static_cast<std::size_t>(width),
+                    pixels = w * static_cast<std::size_t>(height);
+  const int top = levelsOf(rho) - 1;
+  std::copy(open, open + pixels, levels);
+  for (int k = 1; k <= top; ++k) {
+    const std::uint32_t* below = levels + pixels * static_cast<std::size_t>(k - 1);
+    std::uint32_t* level = levels + pixels * static_cast<std::size_t>(k);
+    const std::int32_t half = 1 << (k - 1);
+    for (std::int32_t y = 0; y + 2 * half <= height; ++y) {
+      for (std::int32_t x = 0; x + 2 * half <= width; ++x) {
+        const std::size_t i = static_cast<std::size_t>(y) * w + static_cast<std::size_t>(x);
+        const std::size_t down = static_cast<std::size_t>(half) * w;
+        level[i] =
+            std::max(std::max(below[i], below[i + static_cast<std::size_t>(half)]),
+                     std::max(below[i + down], below[i + down + static_cast<std::size_t>(half)]));
+      }
+    }
+  }
+  for (std::int32_t y = 0; y < height; ++y) {
+    for (std::int32_t x = 0; x < width; ++x) {
+      const std::size_t i = static_cast<std::size_t>(y) * w + static_cast<std::size_t>(x);
+      const std::int32_t r = radius[i];
+      if (x - r < 0 || y - r < 0 || x + r >= width || y + r >= height) {
+        map[i] = kEmpty;
+        continue;
+      }
+      int k = 0;
+      while ((2 << k) <= 2 * r + 1) ++k;
+      const std::int32_t far = 2 * r + 1 - (1 << k);  // the corner squares' offset
+      const std::uint32_t* level = levels + pixels * static_cast<std::size_t>(k);
+      const auto at = [&](std::int32_t px, std::int32_t py) {
+        return level[static_cast<std::size_t>(py) * w + static_cast<std::size_t>(px)];
+      };
+      map[i] = std::max(std::max(at(x - r, y - r), at(x - r + far, y - r)),
+                        std::max(at(x - r, y - r + far), at(x - r + far, y - r + far)));
+    }
+  }
+}
+
+}  // namespace
+
+void erosionRadii(const OcclusionSampling& sampling, int side, std::span<std::uint8_t> radius) {
+  const int rho = erosionRadius(sampling);
+  const double angle = rho == 0 ? 0
+                                : std::asin(std::min(1.0, static_cast<double>(sampling.eps) /
+                                                              static_cast<double>(sampling.near)));
+  const double unit = 2.0 / sampling.face;  // a pixel in x/z (tan) units
+  for (int py = 0; py < side; ++py) {
+    for (int px = 0; px < side; ++px) {
+      const double x = (px + 0.5 - side / 2.0) * unit, y = (py + 0.5 - side / 2.0) * unit;
+      // A turn of d radians about a direction at tan t from the axis moves its image by up to
+      // d (1 + t^2) (x/z units); t taken at the window's far side (once around), 10% more for
+      // the second order, one pixel for the grid; at most rho (the face's corner, whose border
+      // the face has).
+      const double t = std::sqrt(x * x + y * y);
+      const double first = angle * (1 + t * t) * 1.1;
+      const double reach = angle * (1 + (t + first) * (t + first)) * 1.1;
+      const int r = rho == 0 ? 0 : static_cast<int>(std::ceil(reach / unit)) + 1;
+      radius[static_cast<std::size_t>(py) * static_cast<std::size_t>(side) +
+             static_cast<std::size_t>(px)] = static_cast<std::uint8_t>(std::min(r, rho));
+    }
+  }
+}
+
 int erosionRadius(const OcclusionSampling& sampling) {
   if (sampling.eps <= 0) return 0;
   // At a face's corner (tan x = tan y = 1) a turn of d radians moves the image by up to
@@ -107,38 +193,85 @@ int erosionRadius(const OcclusionSampling& sampling) {
 
 void occlusionMap(std::span<const std::uint32_t> words, std::int32_t width, std::int32_t height,
                   std::uint32_t near_key, std::int64_t eps, int face, int rho,
-                  std::span<std::uint32_t> map, std::vector<std::uint32_t>& scratch) {
+                  std::span<std::uint32_t> map, std::vector<std::uint32_t>& scratch,
+                  std::span<const std::uint8_t> ground, std::span<const std::uint8_t> radius) {
   const std::size_t w = static_cast<std::size_t>(width),
                     pixels = w * static_cast<std::size_t>(height);
-  scratch.resize(pixels + 2 * static_cast<std::size_t>(std::max(width, height)));
+  const std::size_t lines = 2 * static_cast<std::size_t>(std::max(width, height));
+  scratch.resize(pixels + lines +
+                 (radius.empty() ? 0 : pixels * static_cast<std::size_t>(levelsOf(rho))));
   std::uint32_t* const open = scratch.data();  // near pixels and cracks emptied
   // The palette byte of a map word is set: a point at the map's own depth writes (the surface the
-  // map holds there is seen, so its instance is in the set).
-  for (std::size_t i = 0; i < pixels; ++i)
-    open[i] = FrameView::depthKeyOf(words[i]) < near_key ? kEmpty : words[i] | 0xFF;
+  // map holds there is seen, so its instance is in the set). The ground, near or far, is below
+  // every word: no window's farthest (a crack on it still empties it, below).
+  const bool has_ground = !ground.empty();
+  for (std::size_t i = 0; i < pixels; ++i) {
+    open[i] = has_ground && ground[i] != 0 && words[i] != kEmpty ? kGroundWord
+              : FrameView::depthKeyOf(words[i]) < near_key       ? kEmpty
+                                                                 : words[i] | 0xFF;
+  }
   if (eps > 0) {
     const std::int64_t tolerance = crackTolerance(eps, face);
     for (std::int32_t y = 0; y < height; ++y) {
       const std::size_t row = static_cast<std::size_t>(y) * w;
-      crackLine(words.data() + row, 1, width, tolerance, open + row);
+      crackLine(words.data() + row, 1, width, tolerance, open + row,
+                has_ground ? ground.data() + row : nullptr);
     }
-    for (std::int32_t x = 0; x < width; ++x)
-      crackLine(words.data() + x, w, height, tolerance, open + x);
+    for (std::int32_t x = 0; x < width; ++x) {
+      crackLine(words.data() + x, w, height, tolerance, open + x,
+                has_ground ? ground.data() + x : nullptr);
+    }
   }
   if (rho == 0) {
     std::copy(open, open + pixels, map.begin());
-    return;
+  } else if (!radius.empty()) {
+    variableMax(open, width, height, radius, rho, map.data(), open + pixels + lines);
+  } else {
+    std::uint32_t* const prefix = open + pixels;
+    std::uint32_t* const suffix = prefix + std::max(width, height);
+    for (std::int32_t y = 0; y < height; ++y) {  // rows into the map, then its columns in place
+      maxFilter(open + static_cast<std::size_t>(y) * w, 1, width, rho,
+                map.data() + static_cast<std::size_t>(y) * w, prefix, suffix);
+    }
+    // The columns in place: each filter reads its whole line before it writes.
+    for (std::int32_t x = 0; x < width; ++x) {
+      std::uint32_t* const column = map.data() + x;
+      maxFilter(column, w, height, rho, column, prefix, suffix);
+    }
   }
-  std::uint32_t* const prefix = open + pixels;
-  std::uint32_t* const suffix = prefix + std::max(width, height);
-  for (std::int32_t y = 0; y < height; ++y) {  // rows into the map, then its columns in place
-    maxFilter(open + static_cast<std::size_t>(y) * w, 1, width, rho,
-              map.data() + static_cast<std::size_t>(y) * w, prefix, suffix);
+  // A window of ground alone: the pixel's own word (a point behind it is below the ground).
+  if (has_ground) {
+    for (std::size_t i = 0; i < pixels; ++i)
+      if (map[i] == kGroundWord) map[i] = words[i] | 0xFF;
   }
-  // The columns in place: each filter reads its whole line before it writes.
-  for (std::int32_t x = 0; x < width; ++x) {
-    std::uint32_t* const column = map.data() + x;
-    maxFilter(column, w, height, rho, column, prefix, suffix);
+}
+
+void groundMask(const FrameView& frame, const PerspectiveView& view, int face,
+                std::int64_t ground_y, std::int64_t voxel, int depth_shift,
+                std::span<std::uint8_t> mask) {
+  const double pitch = view.camera.pitch.turns16() >= 32768
+                           ? view.camera.pitch.turns16() - 65536.0
+                           : static_cast<double>(view.camera.pitch.turns16());
+  const double f = static_cast<double>(frame.width()) /
+                   (2 * std::tan(view.camera.fov.turns16() * std::numbers::pi / 65536));
+  const double below = static_cast<double>(ground_y - view.camera.eye.y);  // y down: > 0
+  const double step = std::ldexp(1.0, depth_shift);
+  for (std::int32_t py = 0; py < frame.height(); ++py) {
+    // The y of a point at depth z along this row: eye + slope z (the face looking down: every
+    // ray's y grows as its depth; up: falls, so no ground).
+    const double slope = pitch == 0  ? (py + 0.5 - frame.height() / 2.0) / f
+                         : pitch < 0 ? 1.0
+                                     : -1.0;
+    for (std::int32_t px = 0; px < frame.width(); ++px) {
+      const std::size_t i = static_cast<std::size_t>(py) * static_cast<std::size_t>(frame.width()) +
+                            static_cast<std::size_t>(px);
+      const std::uint32_t word = frame.pixelAt(px, py);
+      mask[i] = 0;
+      if (word == FrameView::kEmpty || slope <= 0 || below <= 0) continue;
+      const double z = std::ldexp(static_cast<double>(FrameView::depthKeyOf(word)), depth_shift);
+      const double tolerance = z / face + static_cast<double>(voxel) + step * slope;
+      mask[i] = std::abs(slope * z - below) <= tolerance ? 1 : 0;
+    }
   }
 }
 
@@ -173,7 +306,16 @@ OcclusionSampler::OcclusionSampler(SceneRenderer& renderer, const OcclusionSampl
       map_(static_cast<std::size_t>(side_) * static_cast<std::size_t>(side_)),
       work_(map_.size()),
       marks_(renderer.instanceCount()),
-      step_marks_(renderer.instanceCount()) {}
+      step_marks_(renderer.instanceCount()) {
+  for (auto& mask : ground_) mask.resize(sampling.ground ? map_.size() : 0);
+  for (int step = 0; sampling.radii && step < std::clamp(sampling.near_steps, 1, kMaxNearSteps);
+       ++step) {
+    OcclusionSampling at = sampling;
+    at.near = sampling.near << step;
+    radii_[step].resize(map_.size());
+    erosionRadii(at, side_, radii_[step]);
+  }
+}
 
 namespace {
 
@@ -230,6 +372,10 @@ void OcclusionSampler::look(const Point3<std::int64_t>& eye, std::uint64_t* fram
     frame.clear();
     static_cast<void>(renderer_.draw(views_[k], frame));
     ++*frames;
+    if (sampling_.ground) {
+      groundMask(frame, views_[k], sampling_.face, sampling_.ground_y, sampling_.ground_voxel,
+                 renderer_.depthShift(), ground_[k]);
+    }
     if (!enclosed) continue;
     const auto pixels = frame.pixels();
     enclosed = std::find(pixels.begin(), pixels.end(), FrameView::kEmpty) == pixels.end() &&
@@ -243,7 +389,7 @@ void OcclusionSampler::look(const Point3<std::int64_t>& eye, std::uint64_t* fram
   // Per near distance (near, 2 near, 4 near, ...: each with its own, narrower, erosion) the
   // instances that write a pixel of some face's map; in the sample's set those every distance
   // lets in (each distance's set alone holds every instance seen from an eye within eps).
-  for (int step = 0; step < std::max(1, sampling_.near_steps); ++step) {
+  for (int step = 0; step < std::clamp(sampling_.near_steps, 1, kMaxNearSteps); ++step) {
     const OcclusionSampling at{sampling_.eps, sampling_.near << step, sampling_.face, 1};
     const int rho = step == 0 ? rho_ : erosionRadius(at);
     const std::uint32_t near_key = static_cast<std::uint32_t>(std::min<std::uint64_t>(
@@ -253,15 +399,18 @@ void OcclusionSampler::look(const Point3<std::int64_t>& eye, std::uint64_t* fram
       if (!seen[k]) continue;
       const Framebuffer& frame = faces_[static_cast<std::size_t>(k)];
       occlusionMap(frame.pixels(), side_, side_, near_key, sampling_.eps, sampling_.face, rho, map_,
-                   scratch_);
+                   scratch_, ground_[k], radii_[step]);
       for (std::size_t i = 0; step == 0 && i < map_.size(); ++i) {
         const std::uint32_t word = frame.pixels()[i];
-        const bool near = FrameView::depthKeyOf(word) < near_key && word != kEmpty;
+        const bool on_ground = !ground_[k].empty() && ground_[k][i] != 0;
+        const bool near = FrameView::depthKeyOf(word) < near_key && word != kEmpty && !on_ground;
         stats_.pixels += 1;
         stats_.near += near ? 1 : 0;
         stats_.cracks += !near && word != kEmpty && scratch_[i] == kEmpty ? 1 : 0;
+        stats_.ground += scratch_[i] == kGroundWord ? 1 : 0;
         stats_.open += map_[i] == kEmpty ? 1 : 0;
       }
+      for (const std::uint32_t word : map_) stats_.open_steps[step] += word == kEmpty ? 1 : 0;
       static_cast<void>(renderer_.markWriters(views_[k], map_, work_, step_marks_));
       ++*frames;
     }

@@ -14,7 +14,11 @@
 //    while a slanted plane, or two meeting at a crease, stays closed;
 //  - then the farthest word over a square window of `rho` pixels around each pixel, rho covering
 //    asin(eps / near) at the faces' corners (+1 pixel for the grid), and empty where the window
-//    leaves the face.
+//    leaves the face;
+//  - with a ground plane (OcclusionSampling::ground): a pixel whose surface lies on it (and is no
+//    crack) is neither near nor a candidate for the farthest word: a point behind the ground as
+//    seen from e is below it, where no segment from an eye above it to a point above it passes
+//    (docs/city.md); a window of ground alone keeps the pixel's own word.
 // Every instance with a point nearer than the map at its pixel (tested alone, not against the
 // others: SceneRenderer::markWriters) is in the sample's set. Why that is conservative for every
 // eye within eps: docs/city.md. eps 0: no erosion, no cracks (the map is the nearest surface
@@ -41,6 +45,16 @@ struct OcclusionSampling {
   // is what every one of them lets in (near walls occlude in the first, the far city's small
   // gaps stay open in the last).
   int near_steps = 1;
+  // The scene's ground: the plane y = ground_y (Q.24 scene edges, y down), every eye above it and
+  // no instance's point below it (the generated city's street and pavement tiles at y = 0).
+  bool ground = false;
+  std::int64_t ground_y = 0;
+  // Q.24 scene edges: the edge of the ground's finest voxels (a splat's depth strays from the
+  // plane by up to one): 1/512 scene edge in the generated city.
+  std::int64_t ground_voxel = kLeastGap;
+  // The erosion's radius per pixel (erosionRadii: narrower towards the face's centre) rather
+  // than the corner's everywhere.
+  bool radii = false;
 };
 
 // The erosion's radius in pixels for `sampling` (0 when eps is 0).
@@ -54,10 +68,30 @@ bool erosionFits(const OcclusionSampling& sampling);
 // leaves the face). `near_key`: the depth key of the near distance; `eps`: for the crack rule
 // (0: no cracks); `face`: pixels of the face's side without its border (the voxels' rounding).
 // `scratch`: any vector, resized once; after the call its first width x height words are the
-// map before the erosion.
+// map before the erosion (ground pixels kGroundWord). `ground`: empty, or width x height flags,
+// 1 where the pixel's surface is the ground plane (groundMask).
+inline constexpr std::uint32_t kGroundWord = 0;  // below every word: never a window's farthest
 void occlusionMap(std::span<const std::uint32_t> words, std::int32_t width, std::int32_t height,
                   std::uint32_t near_key, std::int64_t eps, int face, int rho,
-                  std::span<std::uint32_t> map, std::vector<std::uint32_t>& scratch);
+                  std::span<std::uint32_t> map, std::vector<std::uint32_t>& scratch,
+                  std::span<const std::uint8_t> ground = {},
+                  std::span<const std::uint8_t> radius = {});
+
+// Per pixel of a widened face (side x side), the erosion's radius there, at most
+// erosionRadius(sampling): a turn of asin(eps / near) moves a direction's image by a factor
+// 1 + t^2 (t: its x/z offset from the face's axis), 3 at the face's corner, 1 at its centre, so
+// the window need only be that wide around each pixel (`radius` for occlusionMap; empty: the
+// corner's radius everywhere).
+void erosionRadii(const OcclusionSampling& sampling, int side, std::span<std::uint8_t> radius);
+
+// The pixels of a face (camera `view`, whose pitch is 0 or +-90 degrees) whose surface lies on
+// the plane y = ground_y (Q.24, y down), into `mask` (1 each): the pixel's point, its depth key's
+// nearer end along its ray, within the voxels' rounding of the plane (half a face pixel at its
+// depth, plus the ground's finest voxel `voxel` and a depth key's step). Host side (double):
+// where the map's maximum looks, not a frame.
+void groundMask(const FrameView& frame, const PerspectiveView& view, int face,
+                std::int64_t ground_y, std::int64_t voxel, int depth_shift,
+                std::span<std::uint8_t> mask);
 
 // The heights (Q.24 scene edges, y down: top <= bottom) of the eyes a sample stands for; none
 // (top > bottom) by default.
@@ -66,9 +100,12 @@ struct EyeSlab {
 };
 
 // What the maps held, summed over the samples looked from: pixels of the faces, those emptied as
-// near, as cracks (and not near), and empty in the map after the erosion; samples enclosed.
+// near, as cracks (and not near), on the ground plane (and no crack), and empty in the map after
+// the erosion (the first near step's map; `open_steps`: each step's); samples enclosed.
+inline constexpr int kMaxNearSteps = 8;
 struct OcclusionStats {
-  std::uint64_t pixels = 0, near = 0, cracks = 0, open = 0, enclosed = 0;
+  std::uint64_t pixels = 0, near = 0, cracks = 0, ground = 0, open = 0, enclosed = 0;
+  std::uint64_t open_steps[kMaxNearSteps] = {};
 };
 
 class OcclusionSampler {
@@ -95,7 +132,8 @@ class OcclusionSampler {
   PerspectiveView views_[6];
   std::vector<std::uint32_t> map_, work_, scratch_;
   OcclusionStats stats_;
-  std::vector<std::uint8_t> marks_, step_marks_;
+  std::vector<std::uint8_t> marks_, step_marks_, ground_[6];
+  std::vector<std::uint8_t> radii_[kMaxNearSteps];  // per near step: erosionRadii
 };
 
 }  // namespace octopoint

@@ -24,7 +24,7 @@ using namespace octopoint;
 constexpr const char* kUsage =
     R"(usage: octopoint-pvs SCENE.json -o CELLS [--cell EDGES] [--layers Y0,Y1,...] [--face PX]
                      [--samples N] [--seed N] [--margin EDGES] [--no-neighbours]
-                     [--eps EDGES --near-occluder EDGES [--near-steps N]]
+                     [--eps EDGES --near-occluder EDGES [--near-steps N] [--ground Y] [--radii]]
 
 Computes a scene's visibility cells (docs/city.md): a grid of view cells over the instances'
 extent in x and z and the layers of height the eye may take, and per cell the instances visible
@@ -59,6 +59,11 @@ Eroded occlusion maps (conservative by construction, tighter; docs/city.md):
                      when every one of them lets it in; 1..8 (default 1). Samples shut in
                      (every direction meets a surface, none within EDGES at the layer's
                      heights: inside a building) stand for no eye.
+  --ground Y         the scene's ground is the plane y = Y (scene edges, y down; the generated
+                     city's: 0), every layer above it and no instance below it: pixels on it
+                     are no holes in the maps, near or far (needs --eps)
+  --radii            erode each pixel by its own radius: asin(EDGES / NEAR) moves an image
+                     by 1 + t^2 of it at x/z offset t, a third of the face corner's at its centre
 )";
 
 // A decimal number of scene edges to Q.24, within +-limit scene edges; cli::Error otherwise.
@@ -113,6 +118,12 @@ int run(int argc, char** argv) {
       options.near_occluder = edgesOption("--near-occluder", args.value(), 1024);
     } else if (args.is("--near-steps")) {
       options.near_steps = cli::parseInt(args.name(), args.value(), 1, 8);
+    } else if (args.is("--ground")) {
+      options.ground = true;
+      options.ground_y = edgesOption("--ground", args.value(), 128);
+    } else if (args.is("--radii")) {
+      args.noValue();
+      options.radii = true;
     } else if (args.is("--no-neighbours")) {
       args.noValue();
       options.neighbours = false;
@@ -126,6 +137,10 @@ int run(int argc, char** argv) {
   if (output.empty()) throw cli::Error("no output given: use -o CELLS");
   if ((options.eps > 0) != (options.near_occluder != 0))
     throw cli::Error("--eps and --near-occluder go together");
+  if (options.ground && options.eps == 0) throw cli::Error("--ground: needs --eps");
+  if (options.radii && options.eps == 0) throw cli::Error("--radii: needs --eps");
+  if (options.ground && options.y.back() >= options.ground_y)
+    throw cli::Error("--ground: the layers reach down to it (every eye must be above it)");
   if (options.eps > 0 && options.near_occluder <= options.eps)
     throw cli::Error("--near-occluder: not above --eps");
   if (!erosionFits({options.eps, options.near_occluder, options.face}))
@@ -165,10 +180,17 @@ int run(int argc, char** argv) {
       return 100.0 * static_cast<double>(n) / static_cast<double>(build.maps.pixels);
     };
     std::printf(
-        "maps: %.1f%% of pixels near, %.1f%% cracks, %.1f%% empty after the erosion; %llu "
-        "samples enclosed\n",
-        share(build.maps.near), share(build.maps.cracks), share(build.maps.open),
-        static_cast<unsigned long long>(build.maps.enclosed));
+        "maps: %.1f%% of pixels near, %.1f%% cracks, %.1f%% ground, %.1f%% empty after the "
+        "erosion; %llu samples enclosed\n",
+        share(build.maps.near), share(build.maps.cracks), share(build.maps.ground),
+        share(build.maps.open), static_cast<unsigned long long>(build.maps.enclosed));
+    std::printf("maps empty after the erosion, per near step:");
+    for (int step = 0; step < options.near_steps; ++step) {
+      std::printf(
+          " %.1f%% (near %.3g edges)", share(build.maps.open_steps[step]),
+          std::ldexp(static_cast<double>(options.near_occluder << step), -kPerspectiveUnitBits));
+    }
+    std::printf("\n");
   }
   return 0;
 }

@@ -81,12 +81,14 @@ bool farSeen(std::vector<SceneInstance> instances, const Point3<std::int64_t>& e
 }
 
 // Whether the sample at the origin puts the far instance (the last) in its set.
-bool farInSet(const std::vector<SceneInstance>& instances, std::int64_t eps) {
+bool farInSet(const std::vector<SceneInstance>& instances, std::int64_t eps, bool radii = false) {
   const ModelView* models[] = {&wallModel()};
   SceneError error;
   SceneRenderer renderer(models, instances, &error);
   EXPECT_EQ(error, SceneError::kNone);
-  OcclusionSampler sampler(renderer, {eps, kEdge, 64});
+  OcclusionSampling sampling{eps, kEdge, 64};
+  sampling.radii = radii;
+  OcclusionSampler sampler(renderer, sampling);
   std::uint64_t frames = 0;
   sampler.look({0, 0, 0}, &frames);
   EXPECT_EQ(frames, 12u);
@@ -100,6 +102,7 @@ TEST(CellOcclusion, AnInstancePastAWallsEdgeFromAnEyeWithinEpsIsInTheSet) {
   EXPECT_FALSE(farSeen(scene, {0, 0, 0}));
   EXPECT_TRUE(farSeen(scene, {kEdge / 10, 0, 0}));
   EXPECT_TRUE(farInSet(scene, kEdge / 10));
+  EXPECT_TRUE(farInSet(scene, kEdge / 10, true));  // each pixel's own radius
   EXPECT_FALSE(farInSet(scene, 0));  // without erosion: the sample's own view, which misses it
 }
 
@@ -112,6 +115,7 @@ TEST(CellOcclusion, AnInstanceThroughTheGapBetweenTouchingWallsIsInTheSet) {
   EXPECT_FALSE(farSeen(scene, {0, 0, 0}));
   EXPECT_TRUE(farSeen(scene, {kEdge / 10, 0, 0}));
   EXPECT_TRUE(farInSet(scene, kEdge / 10));
+  EXPECT_TRUE(farInSet(scene, kEdge / 10, true));
 }
 
 TEST(CellOcclusion, TheMapErodesNearPixelsAndCracks) {
