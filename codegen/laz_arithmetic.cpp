@@ -60,7 +60,7 @@ void SymbolModel::reset() {
 void SymbolModel::initialise() {
   total_ = 0;
   cycle_ = symbols_;
-  std::fill(counts.begin(), counts.end(), 1u);
+  std::fill(counts.begin(), counts.end(), std::uint16_t{1});
   update();
   until_update = cycle_ = (symbols_ + 6) >> 1;
 }
@@ -69,15 +69,18 @@ void SymbolModel::update() {
   total_ += cycle_;
   if (total_ > kSymbolModelMaxCount) {  // halve, so that the model keeps following the data
     total_ = 0;
-    for (std::uint32_t& count : counts) total_ += (count = (count + 1) >> 1);
+    for (std::uint16_t& count : counts) {
+      count = static_cast<std::uint16_t>((count + 1) >> 1);
+      total_ += count;
+    }
   }
   const std::uint32_t scale = 0x80000000u / total_;  // Q31 / total
   const std::uint32_t symbols = symbols_;
-  std::uint32_t* out = distribution.data();
-  const std::uint32_t* in = counts.data();
+  std::uint16_t* out = distribution.data();
+  const std::uint16_t* in = counts.data();
   std::uint32_t sum = 0;
   for (std::uint32_t s = 0; s < symbols; ++s) {
-    out[s] = (scale * sum) >> (31 - kSymbolModelShift);  // Q15, at most 2^15
+    out[s] = static_cast<std::uint16_t>((scale * sum) >> (31 - kSymbolModelShift));  // Q15, <= 2^15
     sum += in[s];
   }
   if (!table.empty()) writeTable();
@@ -90,7 +93,7 @@ void SymbolModel::writeTable() {
   // distribution[s] is at most it. Each symbol's first entry is the first at or above its
   // distribution; the entries before it, from the symbol before's first on, are the symbol
   // before's (a symbol of no width has none).
-  const std::uint32_t* at = distribution.data();
+  const std::uint16_t* at = distribution.data();
   const std::uint32_t symbols = symbols_;
   const std::uint32_t shift = table_shift;
   const std::uint32_t round_up = (1u << shift) - 1;
@@ -101,9 +104,8 @@ void SymbolModel::writeTable() {
     // within the table: a distribution is at most 2^15, and 2^15 >> shift < size
     const std::uint32_t first = s < symbols ? (at[s] + round_up) >> shift : size;
     if (entry < first) {
-      // the bounds past the last symbol are kPastLastSymbol, 0xffff as 16 bits
-      const Entry below{static_cast<std::uint16_t>(s - 1), static_cast<std::uint16_t>(at[s - 1]),
-                        static_cast<std::uint16_t>(at[s]), static_cast<std::uint16_t>(at[s + 1])};
+      // the bounds past the last symbol are kPastLastSymbol
+      const Entry below{static_cast<std::uint16_t>(s - 1), at[s - 1], at[s], at[s + 1]};
       do {
         entries[entry] = below;
       } while (++entry < first);

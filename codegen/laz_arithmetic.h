@@ -74,9 +74,11 @@ class SymbolModel {
 
   // Q15 cumulative: distribution[s] = P(< s); distribution[symbols] and distribution[symbols + 1]
   // are kPastLastSymbol, so that a decoder's upward step stops at the last symbol without a test
-  // of its own.
-  std::vector<std::uint32_t> distribution;
-  std::vector<std::uint32_t> counts;
+  // of its own. 16 bits are enough for both: a distribution is at most 2^15, and a count at most
+  // 2^15 + (2048 + 6) * 8 (the counts are halved when their sum passes 2^15 at an update, and an
+  // update comes after at most (symbols + 6) * 8 symbols).
+  std::vector<std::uint16_t> distribution;
+  std::vector<std::uint16_t> counts;
   // Decoder: table[t] is the symbol at Q15 quantile t << table_shift, for every quantile a
   // decoder can meet (kMaxQuantile), so that a lookup needs no bound of its own.
   std::vector<Entry> table;
@@ -92,7 +94,7 @@ class SymbolModel {
   std::uint32_t cycle_ = 0;
 };
 
-inline constexpr std::uint32_t kPastLastSymbol = 0xffffffffu;
+inline constexpr std::uint16_t kPastLastSymbol = 0xffff;  // above every quantile (kMaxQuantile)
 
 // Where a decoder takes its bytes from: windows handed out one after another, empty at the end.
 class ByteInput {
