@@ -11,6 +11,7 @@
 #include <algorithm>
 #include <array>
 #include <atomic>
+#include <concepts>
 #include <cstddef>
 #include <cstdint>
 #include <optional>
@@ -197,6 +198,17 @@ class PerspectiveWalk {
     sink.drawn(subtree);
   };
 
+  // A sink that takes the leaves of a subtree drawn from one affine map in 32 bits where its
+  // positions fit: after enterAffine, narrowAffine() says whether every position of the subtree
+  // (its centre plus any sum of its screen vectors, all within the AffineSubtree's reaches of
+  // it) lies in [0, 2^31) on each axis, and then its leaves come as narrowLeaf(index, x, y, z)
+  // (Q(32-F).F, depth Q.24), with the AffineSubtree's half extents: on a Cortex-M0+ each 64-bit
+  // operation of the walk and the plot is several instructions or a library call.
+  static constexpr bool kSinkNarrows = requires(Sink & sink) {
+    { sink.narrowAffine() } -> std::same_as<bool>;
+    sink.narrowLeaf(std::size_t{0}, std::int32_t{0}, std::int32_t{0}, std::int32_t{0});
+  };
+
   enum class Step : std::uint8_t { kPass, kAffine, kDescend };
 
   // What to do at an inner node: pass over it (aborted, outside the frustum, or drawn by another
@@ -380,8 +392,8 @@ class PerspectiveWalk {
         tables_
             .growth_q16[static_cast<std::size_t>(affine_bucket_)][static_cast<std::size_t>(level)];
     half_ = {(half.x * growth_q16 >> 16) + 1, (half.y * growth_q16 >> 16) + 1, 0};
-    const AffineSubtree subtree =
-        affineSubtree(level, {affine.centre.x, affine.centre.y, affine.centre.z});
+    const AffineSubtree subtree = affineSubtree(
+        level, Point3<std::int64_t>{affine.centre.x, affine.centre.y, affine.centre.z});
     if constexpr (kSinkCulls) {
       if (parts_.cull && sink_.hidden(subtree)) return false;
     }
@@ -390,46 +402,85 @@ class PerspectiveWalk {
     const Point3<std::int64_t> down = sub(neg(a[0]), a[1]), up = add(neg(a[0]), a[1]);
     const Point3<std::int64_t> sums[4] = {sub(down, a[2]), add(down, a[2]), sub(up, a[2]),
                                           add(up, a[2])};
-    for (int m = level; m < tables_.depth; ++m) {
-      // roundShiftRight, with the half added once per level (the sums are far below 2^62).
-      const int shift = m + 2;
-      const std::int64_t round = std::int64_t{1} << (shift - 1);
-      auto& offsets = screen_offset_[static_cast<std::size_t>(m)];
-      for (unsigned k = 0; k < 4; ++k) {
-        const std::int64_t x = (sums[k].x + round) >> shift, y = (sums[k].y + round) >> shift,
-                           z = (sums[k].z + round) >> shift;
-        offsets[k] = {x, y, z};
-        offsets[7 - k] = {-x, -y, -z};
-      }
-    }
     if constexpr (requires { sink_.enterAffine(subtree); }) sink_.enterAffine(subtree);
-    if constexpr (kSinkCulls) {
-      if (parts_.cull) {
-        affine_level_ = level;
-        if (indexed != nullptr) {
-          visitAffineIndexed(level, *indexed, subtree.centre, model_centre);
-        } else {
-          visitAffine<true>(level, mask, subtree.centre);
-        }
-        // A subtree below the grandparents' level has no grandparent that says where it drew.
-        if (level + 2 > tables_.depth) sink_.drawn(subtree);
-      } else {
-        visitAffine<false>(level, mask, subtree.centre);
-      }
+    bool narrow = false;
+    if constexpr (kSinkNarrows) narrow = sink_.narrowAffine();
+    if (narrow) {
+      fillScreenOffsets(level, sums, narrow_offset_);
+      walkAffine<std::int32_t>(level, mask, indexed, subtree, model_centre);
     } else {
-      static_cast<void>(model_centre);
-      visitAffine<false>(level, mask, subtree.centre);
+      fillScreenOffsets(level, sums, screen_offset_);
+      walkAffine<std::int64_t>(level, mask, indexed, subtree, model_centre);
     }
     if constexpr (requires { sink_.leaveAffine(); }) sink_.leaveAffine();
     return true;
   }
 
+  // Per level m from `level` down, the eight screen vectors of drawAffine: each sum rounded once
+  // (roundShiftRight, with the half added once per level: the sums are far below 2^62), into
+  // `offsets`: int64, or int32 where the sink said every position of the subtree fits (then
+  // each vector does too: it is the difference of two of them, both in [0, 2^31)).
+  template <typename Int>
+  void fillScreenOffsets(int level, const Point3<std::int64_t> (&sums)[4],
+                         std::array<std::array<Point3<Int>, 8>, kMaxRenderDepth>& offsets) {
+    for (int m = level; m < tables_.depth; ++m) {
+      const int shift = m + 2;
+      const std::int64_t round = std::int64_t{1} << (shift - 1);
+      auto& level_offsets = offsets[static_cast<std::size_t>(m)];
+      for (unsigned k = 0; k < 4; ++k) {
+        const auto x = static_cast<Int>((sums[k].x + round) >> shift);
+        const auto y = static_cast<Int>((sums[k].y + round) >> shift);
+        const auto z = static_cast<Int>((sums[k].z + round) >> shift);
+        level_offsets[k] = {x, y, z};
+        level_offsets[7 - k] = {static_cast<Int>(-x), static_cast<Int>(-y), static_cast<Int>(-z)};
+      }
+    }
+  }
+
+  // The walk below drawAffine's node, its positions in Int (int64, or int32 where they fit:
+  // sums of the same vectors, so the same leaves either way).
+  template <typename Int>
+  void walkAffine(int level, std::uint8_t mask, const UpperTreeNode* indexed,
+                  const AffineSubtree& subtree, const ModelPoint& model_centre) {
+    const Point3<Int> centre{static_cast<Int>(subtree.centre.x), static_cast<Int>(subtree.centre.y),
+                             static_cast<Int>(subtree.centre.z)};
+    if constexpr (kSinkCulls) {
+      if (parts_.cull) {
+        affine_level_ = level;
+        if (indexed != nullptr) {
+          visitAffineIndexed<Int>(level, *indexed, centre, model_centre);
+        } else {
+          visitAffine<true>(level, mask, centre);
+        }
+        // A subtree below the grandparents' level has no grandparent that says where it drew.
+        if (level + 2 > tables_.depth) sink_.drawn(subtree);
+      } else {
+        visitAffine<false>(level, mask, centre);
+      }
+    } else {
+      static_cast<void>(indexed);
+      static_cast<void>(subtree);
+      static_cast<void>(model_centre);
+      visitAffine<false>(level, mask, centre);
+    }
+  }
+
+  template <typename Int>
+  const std::array<Point3<Int>, 8>& screenOffsets(int level) const {
+    if constexpr (sizeof(Int) == sizeof(std::int32_t)) {
+      return narrow_offset_[static_cast<std::size_t>(level)];
+    } else {
+      return screen_offset_[static_cast<std::size_t>(level)];
+    }
+  }
+
   // Where the leaves of a node of `level` at screen position `p` inside the subtree being drawn
   // from its map lie, and their splats: within the sum of the levels' largest vectors of p, the
   // cube's shadow over 2^(m+2) for m from `level`, each rounded (half a unit, counted as one).
-  AffineSubtree affineSubtree(int level, const Point3<std::int64_t>& p) const {
+  template <typename Int>
+  AffineSubtree affineSubtree(int level, const Point3<Int>& p) const {
     const std::int64_t levels = tables_.depth - level;
-    return {p,
+    return {{p.x, p.y, p.z},
             (shadow_.x >> (level + 1)) + levels,
             (shadow_.y >> (level + 1)) + levels,
             (shadow_.z >> (level + 1)) + levels,
@@ -441,13 +492,17 @@ class PerspectiveWalk {
   // iteration over them, and a leaf parent hands its leaves over in one loop (no call per leaf).
   // kCull: each leaves' grandparent (below the subtree's root) is first asked whether it is
   // hidden, and says where it drew.
-  template <bool kCull>
-  void visitAffine(int level, unsigned mask, const Point3<std::int64_t>& p) {
-    const auto& offsets = screen_offset_[static_cast<std::size_t>(level)];
+  template <bool kCull, typename Int>
+  void visitAffine(int level, unsigned mask, const Point3<Int>& p) {
+    const auto& offsets = screenOffsets<Int>(level);
     if (level + 1 == tables_.depth) {
       for (unsigned bits = mask; bits != 0; bits &= bits - 1) {
-        const Point3<std::int64_t>& d = offsets[lowestChild(bits)];
-        sink_(PerspectiveLeaf{leaf_++, p.x + d.x, p.y + d.y, p.z + d.z, half_.x, half_.y});
+        const Point3<Int>& d = offsets[lowestChild(bits)];
+        if constexpr (sizeof(Int) == sizeof(std::int32_t)) {
+          sink_.narrowLeaf(leaf_++, p.x + d.x, p.y + d.y, p.z + d.z);
+        } else {
+          sink_(PerspectiveLeaf{leaf_++, p.x + d.x, p.y + d.y, p.z + d.z, half_.x, half_.y});
+        }
       }
       return;
     }
@@ -475,7 +530,8 @@ class PerspectiveWalk {
   // A node of a subtree drawn from its affine map, above the index's bottom: asked whether it is
   // hidden (below the subtree's root), then its children nearest the eye first (as
   // visitIndexed), down to the bottom, from where the stream is read in order.
-  void visitAffineIndexed(int level, const UpperTreeNode& node, const Point3<std::int64_t>& p,
+  template <typename Int>
+  void visitAffineIndexed(int level, const UpperTreeNode& node, const Point3<Int>& p,
                           const ModelPoint& model_centre) {
     if (level != affine_level_ && sink_.hidden(affineSubtree(level, p))) return;
     const unsigned mask = nodes_[node.node];
@@ -486,12 +542,12 @@ class PerspectiveWalk {
       return;
     }
     const unsigned eye_octant = eyeOctant(model_centre);
-    const auto& offsets = screen_offset_[static_cast<std::size_t>(level)];
+    const auto& offsets = screenOffsets<Int>(level);
     for (unsigned order = 0; order < 8; ++order) {
       const unsigned k = eye_octant ^ order;
       if (!(mask & (1u << k))) continue;
-      visitAffineIndexed(level + 1, parts_.index->entries[childEntry(node, mask, k)],
-                         add(p, offsets[k]), childCentre(model_centre, level, k));
+      visitAffineIndexed<Int>(level + 1, parts_.index->entries[childEntry(node, mask, k)],
+                              add(p, offsets[k]), childCentre(model_centre, level, k));
     }
   }
 
@@ -510,8 +566,9 @@ class PerspectiveWalk {
     return {centre.x + ((k & 4) ? step : -step), centre.y + ((k & 2) ? step : -step),
             centre.z + ((k & 1) ? step : -step)};
   }
-  static Point3<std::int64_t> add(const Point3<std::int64_t>& a, const Point3<std::int64_t>& b) {
-    return {a.x + b.x, a.y + b.y, a.z + b.z};
+  template <typename Int>
+  static Point3<Int> add(const Point3<Int>& a, const Point3<Int>& b) {
+    return {static_cast<Int>(a.x + b.x), static_cast<Int>(a.y + b.y), static_cast<Int>(a.z + b.z)};
   }
   static Point3<std::int64_t> sub(const Point3<std::int64_t>& a, const Point3<std::int64_t>& b) {
     return {a.x - b.x, a.y - b.y, a.z - b.z};
@@ -527,8 +584,13 @@ class PerspectiveWalk {
   const std::uint8_t* node_;
   std::size_t leaf_ = 0;
   bool aborted_ = false;
-  // The screen vectors of the subtree drawn from its affine map: Q(32-F).F, depth in Q.24.
-  std::array<std::array<Point3<std::int64_t>, 8>, kMaxRenderDepth> screen_offset_{};
+  // The screen vectors of the subtree drawn from its affine map: Q(32-F).F, depth in Q.24; int64,
+  // or int32 where the sink says the subtree's positions fit (narrowAffine). One storage: a
+  // walk lives on a device's stack.
+  union {
+    std::array<std::array<Point3<std::int64_t>, 8>, kMaxRenderDepth> screen_offset_{};
+    std::array<std::array<Point3<std::int32_t>, 8>, kMaxRenderDepth> narrow_offset_;
+  };
   Point3<std::int64_t> half_{};  // voxelHalfExtent of that subtree, widened for its nearest voxels
   Point3<std::int64_t> shadow_{};  // its map's cube shadow (cubeShadow)
   int affine_level_ = 0;           // its root's level
