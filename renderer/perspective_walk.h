@@ -326,11 +326,14 @@ class PerspectiveWalk {
                                           add(up, a[2])};
     if constexpr (requires { sink_.enterAffine(subtree); }) sink_.enterAffine(subtree);
     bool narrow = false;
-    if constexpr (kSinkNarrows) narrow = sink_.narrowAffine();
-    if (narrow) {
-      fillScreenOffsets(level, sums, narrow_offset_);
-      walkAffine<std::int32_t>(level, mask, indexed, subtree, model_centre);
-    } else {
+    if constexpr (kSinkNarrows) {
+      narrow = sink_.narrowAffine();
+      if (narrow) {
+        fillScreenOffsets(level, sums, narrow_offset_);
+        walkAffine<std::int32_t>(level, mask, indexed, subtree, model_centre);
+      }
+    }
+    if (!narrow) {
       fillScreenOffsets(level, sums, screen_offset_);
       walkAffine<std::int64_t>(level, mask, indexed, subtree, model_centre);
     }
