@@ -246,8 +246,43 @@ class PerspectivePlot {
     // leaf takes the four-corner path, without the test per leaf which path (a coin toss where
     // spans of two and three pixels mix).
     corners_ = unchecked_ && high_x_ - low_x_ < one && high_y_ - low_y_ < one;
+    // In 32 bits (narrowLeaf) where every position of the subtree and every span bound lies in
+    // [0, 2^31): unchecked_ puts x and y, each +- reach and half extent, within [0, W << F) and
+    // [0, H << F), below 2^31 where the frame's Q(32-F).F sides are (all but F > 18 on the largest
+    // frames); the depth takes z + reach_z below 2^31 too (Q.24: 128 cube edges).
+    narrow_ = unchecked_ && (std::int64_t{width_} << fraction_bits_) <= INT32_MAX &&
+              (std::int64_t{height_} << fraction_bits_) <= INT32_MAX &&
+              z + subtree.reach_z <= INT32_MAX;
+    if (narrow_) {
+      low_x32_ = static_cast<std::int32_t>(low_x_);
+      high_x32_ = static_cast<std::int32_t>(high_x_);
+      low_y32_ = static_cast<std::int32_t>(low_y_);
+      high_y32_ = static_cast<std::int32_t>(high_y_);
+    }
   }
-  void leaveAffine() { unchecked_ = corners_ = in_affine_ = false; }
+  void leaveAffine() { unchecked_ = corners_ = narrow_ = in_affine_ = false; }
+  bool narrowAffine() const { return narrow_; }
+
+  // operator()'s unchecked path in 32 bits, for a leaf of a subtree narrowAffine holds for (its
+  // half extents the subtree's): the same shifts of the same values, so the same pixels and word.
+  __attribute__((always_inline)) void narrowLeaf(std::size_t index, std::int32_t x, std::int32_t y,
+                                                 std::int32_t z) {
+    ++leaves_;
+    const std::uint32_t word =
+        kPayload == PixelPayload::kColour
+            ? FrameView::pack(static_cast<std::uint32_t>(z) >> depth_shift_, colours_[index])
+            : wordOf(z, payloadOf(index));
+    const auto f = static_cast<int>(fraction_bits_);
+    std::int32_t first_x = (x + low_x32_) >> f, last_x = (x + high_x32_) >> f;
+    if (last_x < first_x) first_x = last_x = x >> f;
+    std::int32_t first_y = (y + low_y32_) >> f, last_y = (y + high_y32_) >> f;
+    if (last_y < first_y) first_y = last_y = y >> f;
+    if (corners_) {
+      corners(first_x, last_x, first_y, last_y, word);
+    } else {
+      fill(first_x, last_x, first_y, last_y, word);
+    }
+  }
 
   // Inlined into the walk's leaf loop: a call per leaf, its leaf passed through memory, was a
   // fifth of a frame's instructions (callgrind).
@@ -340,8 +375,9 @@ class PerspectivePlot {
   // pixels, most of them where a voxel is about a pixel, write their four corners, and up to 3 x 3
   // their nine (a pixel twice where the splat is narrower: the min is the same): the loops,
   // vectorised for long rows, cost some 15 instructions per pixel of such short ones (callgrind).
-  void fill(std::int64_t first_x, std::int64_t last_x, std::int64_t first_y, std::int64_t last_y,
-            std::uint32_t word) {
+  // Int: int64, or int32 from narrowLeaf (the loops' counters in one register on a Cortex-M).
+  template <typename Int>
+  void fill(Int first_x, Int last_x, Int first_y, Int last_y, std::uint32_t word) {
     const std::size_t width = row_stride_;
     if (last_x - first_x <= 1 && last_y - first_y <= 1) {
       corners(first_x, last_x, first_y, last_y, word);
@@ -350,9 +386,9 @@ class PerspectivePlot {
     if (last_x - first_x <= 2 && last_y - first_y <= 2) {
       // Up to 3 x 3 (voxels of about two pixels, padded): the middle column and row are the
       // first's next, clamped to the last.
-      const std::int64_t middle_x = std::min(first_x + 1, last_x);
-      const std::int64_t rows[3] = {first_y, std::min(first_y + 1, last_y), last_y};
-      for (const std::int64_t y : rows) {
+      const Int middle_x = std::min<Int>(first_x + 1, last_x);
+      const Int rows[3] = {first_y, std::min<Int>(first_y + 1, last_y), last_y};
+      for (const Int y : rows) {
         std::uint32_t* const row = pixels_ + static_cast<std::size_t>(y) * width;
         row[first_x] = std::min(row[first_x], word);
         row[middle_x] = std::min(row[middle_x], word);
@@ -360,15 +396,15 @@ class PerspectivePlot {
       }
       return;
     }
-    for (std::int64_t y = first_y; y <= last_y; ++y) {
+    for (Int y = first_y; y <= last_y; ++y) {
       std::uint32_t* const row = pixels_ + static_cast<std::size_t>(y) * width;
-      for (std::int64_t x = first_x; x <= last_x; ++x) row[x] = std::min(row[x], word);
+      for (Int x = first_x; x <= last_x; ++x) row[x] = std::min(row[x], word);
     }
   }
 
   // A splat of at most 2 x 2 pixels: its four corners (a pixel twice where it is narrower).
-  __attribute__((always_inline)) void corners(std::int64_t first_x, std::int64_t last_x,
-                                              std::int64_t first_y, std::int64_t last_y,
+  template <typename Int>
+  __attribute__((always_inline)) void corners(Int first_x, Int last_x, Int first_y, Int last_y,
                                               std::uint32_t word) {
     std::uint32_t* const top = pixels_ + static_cast<std::size_t>(first_y) * row_stride_;
     std::uint32_t* const bottom = pixels_ + static_cast<std::size_t>(last_y) * row_stride_;
@@ -390,7 +426,9 @@ class PerspectivePlot {
   std::int64_t depth_shift_;  // PerspectiveView::depth_shift
   bool unchecked_ = false;
   bool corners_ = false;  // unchecked_, and no span of the subtree wider than 2 x 2 pixels
+  bool narrow_ = false;   // unchecked_, and the subtree's positions within 32 bits (enterAffine)
   std::int64_t low_x_ = 0, high_x_ = 0, low_y_ = 0, high_y_ = 0;
+  std::int32_t low_x32_ = 0, high_x32_ = 0, low_y32_ = 0, high_y32_ = 0;  // the same, narrow_
   OcclusionTiles* occlusion_;
   bool in_affine_ = false;  // inside enterAffine .. leaveAffine: the walk marks its tiles
   std::uint64_t leaves_ = 0;

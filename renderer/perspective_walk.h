@@ -11,6 +11,7 @@
 #include <algorithm>
 #include <array>
 #include <atomic>
+#include <concepts>
 #include <cstddef>
 #include <cstdint>
 #include <optional>
@@ -25,6 +26,7 @@
 #include "renderer/perspective_depth.h"
 #include "renderer/perspective_detail.h"
 #include "renderer/perspective_extent.h"
+#include "renderer/perspective_walk_tables.h"
 #include "renderer/upper_tree_index.h"
 
 namespace octopoint {
@@ -53,85 +55,6 @@ struct AffineSubtree {
   std::int64_t reach_x = 0, reach_y = 0, reach_z = 0;
   std::int64_t half_x = 0, half_y = 0;
 };
-
-// Per-frame tables of the walk: each level's child offsets in camera space (the walk's units,
-// Q.(24 + view.walk_bits) cube edges), each level's reach (Q.24),
-// the frustum's side slopes. Built once per frame and level depth (about 1.6 KB).
-struct PerspectiveWalkTables {
-  std::array<std::array<CameraPoint, 8>, kMaxRenderDepth> child_offset{};  // Q.(24 + walk_bits)
-  std::array<std::int64_t, kMaxRenderDepth + 1> reach{};  // a node of level l: Q.24 cube edges
-  // The frustum's side planes, Q2.30 slopes: the screen spans x from -left * z to right * z and y
-  // from -top * z to bottom * z (left = centre_x / f, right = (width - centre_x) / f, ...: the
-  // pan moves the principal point, so they differ, and one is negative when it leaves the
-  // screen); INT64_MAX where a slope does not fit (that side is not tested).
-  std::int64_t left_q30 = 0, right_q30 = 0, top_q30 = 0, bottom_q30 = 0;
-  // Their significantBits (63 for INT64_MAX), so that the frustum test counts only the depth's
-  // bits per node (counting is most of a product's cost where the product itself is one
-  // instruction: callgrind).
-  int left_bits = 0, right_bits = 0, top_bits = 0, bottom_bits = 0;
-  // The largest |x / z| and |y / z| on the screen (for the affine error bound).
-  std::int64_t slope_x_q30 = 0;
-  std::int64_t slope_y_q30 = 0;
-  std::int64_t max_error = 0;  // Q(32-F).F pixels
-  // A node of level l whose camera-space depth is at least affine_depth[b][l] is within max_error
-  // of its affine map wherever it meets the frustum (b = 0), or where its centre lies within
-  // max(|c.x|, |c.y|) <= c.z / 2^(b - 1) of the view's axis (b = 1 .. kAffineBuckets - 1: the
-  // error bound grows with that distance, so nearer the axis a subtree qualifies nearer the eye
-  // and draws more leaves from one map); see perspectiveWalkTables. One comparison per node and
-  // bucket instead of affineErrorBound's divisions.
-  static constexpr int kAffineBuckets = 5;
-  std::array<std::array<std::int64_t, kMaxRenderDepth + 1>, kAffineBuckets> affine_depth{};
-  // How much larger than the affine map's voxel a voxel of a subtree drawn from it (a node of
-  // level l, depth >= affine_depth[b][l]) may be on screen: z / (z - reach) at its worst, Q.16
-  // rounded up, so that no subtree divides for it.
-  std::array<std::array<std::int64_t, kMaxRenderDepth + 1>, kAffineBuckets> growth_q16{};
-  int depth = 0;
-  // The level's sample reach (Q4 footprints, kOneSampleReach..kMaxSampleReach; docs/splats.md,
-  // "Samples coarser than the voxel"): every leaf's splat half extents are widened by it
-  // (widenedHalfExtent), as buildFrameSetup widens the orthographic splat, so that a level whose
-  // samples lie farther apart than its voxels draws whole.
-  std::int32_t sample_reach = kOneSampleReach;
-  // How far a widened splat may reach beyond the leaf's own voxel, in camera space (Q.24 cube
-  // edges): the frustum and band tests widen every node's box by it, so that a leaf whose voxel
-  // lies outside but whose splat reaches in is still drawn. 0 at one footprint.
-  std::int64_t splat_margin = 0;
-};
-
-// Whether the box of centre `c` and half extent `reach` (camera units) lies wholly behind the near
-// plane `near` or beyond one of the frustum's side planes; conservative by a unit (the products
-// round to nearest). A side's extent at depth z is its slope times z: within the box widest at its
-// far depth for a positive slope, at its nearest depth in front of the near plane for a negative.
-inline bool outsideFrustumSides(const PerspectiveWalkTables& tables, const CameraPoint& c,
-                                std::int64_t reach, std::int64_t near) {
-  const std::int64_t far_z = c.z + reach;
-  if (far_z < near) return true;
-  const std::int64_t near_z = c.z - reach > near ? c.z - reach : near;
-  const int far_bits = significantBits(far_z), near_bits = significantBits(near_z);
-  // mulShiftRoundQuick(slope >= 0 ? far_z : near_z, slope, 30), the slope's bits counted once a
-  // frame: the same bits.
-  const auto extent = [&](std::int64_t slope_q30, int slope_bits) -> std::optional<std::int64_t> {
-    const std::int64_t z = slope_q30 >= 0 ? far_z : near_z;
-    if ((slope_q30 >= 0 ? far_bits : near_bits) + slope_bits <= 62)
-      return mulShiftRoundSmall(z, slope_q30, 30);
-    return mulShiftRound(z, slope_q30, 30);
-  };
-  const std::optional<std::int64_t> left = extent(tables.left_q30, tables.left_bits);
-  const std::optional<std::int64_t> right = extent(tables.right_q30, tables.right_bits);
-  const std::optional<std::int64_t> top = extent(tables.top_q30, tables.top_bits);
-  const std::optional<std::int64_t> bottom = extent(tables.bottom_q30, tables.bottom_bits);
-  return (right && c.x - reach > *right + 1) || (left && c.x + reach < -*left - 1) ||
-         (bottom && c.y - reach > *bottom + 1) || (top && c.y + reach < -*top - 1);
-}
-
-// PerspectiveWalkTables::splat_margin of a level of `depth` (1..kMaxRenderDepth) whose sample
-// reach is `sample_reach` (Q4): 0 at one footprint.
-std::int64_t perspectiveSplatMargin(int depth, std::int32_t sample_reach);
-
-// `max_error` in Q(32-F).F pixels, >= 0; depth 1..kMaxRenderDepth; `sample_reach` the level's
-// (Q4, kOneSampleReach..kMaxSampleReach; ModelView::sampleReach).
-PerspectiveWalkTables perspectiveWalkTables(const PerspectiveView& view, int depth,
-                                            std::int64_t max_error,
-                                            std::int32_t sample_reach = kOneSampleReach);
 
 // The rows of one band of a frame, as the eye sees them: every point drawn into the band has a
 // camera-space y / z within [top_q30, bottom_q30] (Q.30; the band's rows widened by a margin, so
@@ -195,6 +118,17 @@ class PerspectiveWalk {
   static constexpr bool kSinkCulls = requires(Sink & sink, const AffineSubtree& subtree) {
     sink.hidden(subtree);
     sink.drawn(subtree);
+  };
+
+  // A sink that takes the leaves of a subtree drawn from one affine map in 32 bits where its
+  // positions fit: after enterAffine, narrowAffine() says whether every position of the subtree
+  // (its centre plus any sum of its screen vectors, all within the AffineSubtree's reaches of
+  // it) lies in [0, 2^31) on each axis, and then its leaves come as narrowLeaf(index, x, y, z)
+  // (Q(32-F).F, depth Q.24), with the AffineSubtree's half extents: on a Cortex-M0+ each 64-bit
+  // operation of the walk and the plot is several instructions or a library call.
+  static constexpr bool kSinkNarrows = requires(Sink & sink) {
+    { sink.narrowAffine() } -> std::same_as<bool>;
+    sink.narrowLeaf(std::size_t{0}, std::int32_t{0}, std::int32_t{0}, std::int32_t{0});
   };
 
   enum class Step : std::uint8_t { kPass, kAffine, kDescend };
@@ -380,8 +314,8 @@ class PerspectiveWalk {
         tables_
             .growth_q16[static_cast<std::size_t>(affine_bucket_)][static_cast<std::size_t>(level)];
     half_ = {(half.x * growth_q16 >> 16) + 1, (half.y * growth_q16 >> 16) + 1, 0};
-    const AffineSubtree subtree =
-        affineSubtree(level, {affine.centre.x, affine.centre.y, affine.centre.z});
+    const AffineSubtree subtree = affineSubtree(
+        level, Point3<std::int64_t>{affine.centre.x, affine.centre.y, affine.centre.z});
     if constexpr (kSinkCulls) {
       if (parts_.cull && sink_.hidden(subtree)) return false;
     }
@@ -390,46 +324,88 @@ class PerspectiveWalk {
     const Point3<std::int64_t> down = sub(neg(a[0]), a[1]), up = add(neg(a[0]), a[1]);
     const Point3<std::int64_t> sums[4] = {sub(down, a[2]), add(down, a[2]), sub(up, a[2]),
                                           add(up, a[2])};
-    for (int m = level; m < tables_.depth; ++m) {
-      // roundShiftRight, with the half added once per level (the sums are far below 2^62).
-      const int shift = m + 2;
-      const std::int64_t round = std::int64_t{1} << (shift - 1);
-      auto& offsets = screen_offset_[static_cast<std::size_t>(m)];
-      for (unsigned k = 0; k < 4; ++k) {
-        const std::int64_t x = (sums[k].x + round) >> shift, y = (sums[k].y + round) >> shift,
-                           z = (sums[k].z + round) >> shift;
-        offsets[k] = {x, y, z};
-        offsets[7 - k] = {-x, -y, -z};
+    if constexpr (requires { sink_.enterAffine(subtree); }) sink_.enterAffine(subtree);
+    bool narrow = false;
+    if constexpr (kSinkNarrows) {
+      narrow = sink_.narrowAffine();
+      if (narrow) {
+        fillScreenOffsets(level, sums, narrow_offset_);
+        walkAffine<std::int32_t>(level, mask, indexed, subtree, model_centre);
       }
     }
-    if constexpr (requires { sink_.enterAffine(subtree); }) sink_.enterAffine(subtree);
-    if constexpr (kSinkCulls) {
-      if (parts_.cull) {
-        affine_level_ = level;
-        if (indexed != nullptr) {
-          visitAffineIndexed(level, *indexed, subtree.centre, model_centre);
-        } else {
-          visitAffine<true>(level, mask, subtree.centre);
-        }
-        // A subtree below the grandparents' level has no grandparent that says where it drew.
-        if (level + 2 > tables_.depth) sink_.drawn(subtree);
-      } else {
-        visitAffine<false>(level, mask, subtree.centre);
-      }
-    } else {
-      static_cast<void>(model_centre);
-      visitAffine<false>(level, mask, subtree.centre);
+    if (!narrow) {
+      fillScreenOffsets(level, sums, screen_offset_);
+      walkAffine<std::int64_t>(level, mask, indexed, subtree, model_centre);
     }
     if constexpr (requires { sink_.leaveAffine(); }) sink_.leaveAffine();
     return true;
   }
 
+  // Per level m from `level` down, the eight screen vectors of drawAffine: each sum rounded once
+  // (roundShiftRight, with the half added once per level: the sums are far below 2^62), into
+  // `offsets`: int64, or int32 where the sink said every position of the subtree fits (then
+  // each vector does too: it is the difference of two of them, both in [0, 2^31)).
+  template <typename Int>
+  void fillScreenOffsets(int level, const Point3<std::int64_t> (&sums)[4],
+                         std::array<std::array<Point3<Int>, 8>, kMaxRenderDepth>& offsets) {
+    for (int m = level; m < tables_.depth; ++m) {
+      const int shift = m + 2;
+      const std::int64_t round = std::int64_t{1} << (shift - 1);
+      auto& level_offsets = offsets[static_cast<std::size_t>(m)];
+      for (unsigned k = 0; k < 4; ++k) {
+        const auto x = static_cast<Int>((sums[k].x + round) >> shift);
+        const auto y = static_cast<Int>((sums[k].y + round) >> shift);
+        const auto z = static_cast<Int>((sums[k].z + round) >> shift);
+        level_offsets[k] = {x, y, z};
+        level_offsets[7 - k] = {static_cast<Int>(-x), static_cast<Int>(-y), static_cast<Int>(-z)};
+      }
+    }
+  }
+
+  // The walk below drawAffine's node, its positions in Int (int64, or int32 where they fit:
+  // sums of the same vectors, so the same leaves either way).
+  template <typename Int>
+  void walkAffine(int level, std::uint8_t mask, const UpperTreeNode* indexed,
+                  const AffineSubtree& subtree, const ModelPoint& model_centre) {
+    const Point3<Int> centre{static_cast<Int>(subtree.centre.x), static_cast<Int>(subtree.centre.y),
+                             static_cast<Int>(subtree.centre.z)};
+    if constexpr (kSinkCulls) {
+      if (parts_.cull) {
+        affine_level_ = level;
+        if (indexed != nullptr) {
+          visitAffineIndexed<Int>(level, *indexed, centre, model_centre);
+        } else {
+          visitAffine<true>(level, mask, centre);
+        }
+        // A subtree below the grandparents' level has no grandparent that says where it drew.
+        if (level + 2 > tables_.depth) sink_.drawn(subtree);
+      } else {
+        visitAffine<false>(level, mask, centre);
+      }
+    } else {
+      static_cast<void>(indexed);
+      static_cast<void>(subtree);
+      static_cast<void>(model_centre);
+      visitAffine<false>(level, mask, centre);
+    }
+  }
+
+  template <typename Int>
+  const std::array<Point3<Int>, 8>& screenOffsets(int level) const {
+    if constexpr (sizeof(Int) == sizeof(std::int32_t)) {
+      return narrow_offset_[static_cast<std::size_t>(level)];
+    } else {
+      return screen_offset_[static_cast<std::size_t>(level)];
+    }
+  }
+
   // Where the leaves of a node of `level` at screen position `p` inside the subtree being drawn
   // from its map lie, and their splats: within the sum of the levels' largest vectors of p, the
   // cube's shadow over 2^(m+2) for m from `level`, each rounded (half a unit, counted as one).
-  AffineSubtree affineSubtree(int level, const Point3<std::int64_t>& p) const {
+  template <typename Int>
+  AffineSubtree affineSubtree(int level, const Point3<Int>& p) const {
     const std::int64_t levels = tables_.depth - level;
-    return {p,
+    return {{p.x, p.y, p.z},
             (shadow_.x >> (level + 1)) + levels,
             (shadow_.y >> (level + 1)) + levels,
             (shadow_.z >> (level + 1)) + levels,
@@ -441,13 +417,17 @@ class PerspectiveWalk {
   // iteration over them, and a leaf parent hands its leaves over in one loop (no call per leaf).
   // kCull: each leaves' grandparent (below the subtree's root) is first asked whether it is
   // hidden, and says where it drew.
-  template <bool kCull>
-  void visitAffine(int level, unsigned mask, const Point3<std::int64_t>& p) {
-    const auto& offsets = screen_offset_[static_cast<std::size_t>(level)];
+  template <bool kCull, typename Int>
+  void visitAffine(int level, unsigned mask, const Point3<Int>& p) {
+    const auto& offsets = screenOffsets<Int>(level);
     if (level + 1 == tables_.depth) {
       for (unsigned bits = mask; bits != 0; bits &= bits - 1) {
-        const Point3<std::int64_t>& d = offsets[lowestChild(bits)];
-        sink_(PerspectiveLeaf{leaf_++, p.x + d.x, p.y + d.y, p.z + d.z, half_.x, half_.y});
+        const Point3<Int>& d = offsets[lowestChild(bits)];
+        if constexpr (sizeof(Int) == sizeof(std::int32_t)) {
+          sink_.narrowLeaf(leaf_++, p.x + d.x, p.y + d.y, p.z + d.z);
+        } else {
+          sink_(PerspectiveLeaf{leaf_++, p.x + d.x, p.y + d.y, p.z + d.z, half_.x, half_.y});
+        }
       }
       return;
     }
@@ -475,7 +455,8 @@ class PerspectiveWalk {
   // A node of a subtree drawn from its affine map, above the index's bottom: asked whether it is
   // hidden (below the subtree's root), then its children nearest the eye first (as
   // visitIndexed), down to the bottom, from where the stream is read in order.
-  void visitAffineIndexed(int level, const UpperTreeNode& node, const Point3<std::int64_t>& p,
+  template <typename Int>
+  void visitAffineIndexed(int level, const UpperTreeNode& node, const Point3<Int>& p,
                           const ModelPoint& model_centre) {
     if (level != affine_level_ && sink_.hidden(affineSubtree(level, p))) return;
     const unsigned mask = nodes_[node.node];
@@ -486,12 +467,12 @@ class PerspectiveWalk {
       return;
     }
     const unsigned eye_octant = eyeOctant(model_centre);
-    const auto& offsets = screen_offset_[static_cast<std::size_t>(level)];
+    const auto& offsets = screenOffsets<Int>(level);
     for (unsigned order = 0; order < 8; ++order) {
       const unsigned k = eye_octant ^ order;
       if (!(mask & (1u << k))) continue;
-      visitAffineIndexed(level + 1, parts_.index->entries[childEntry(node, mask, k)],
-                         add(p, offsets[k]), childCentre(model_centre, level, k));
+      visitAffineIndexed<Int>(level + 1, parts_.index->entries[childEntry(node, mask, k)],
+                              add(p, offsets[k]), childCentre(model_centre, level, k));
     }
   }
 
@@ -510,8 +491,9 @@ class PerspectiveWalk {
     return {centre.x + ((k & 4) ? step : -step), centre.y + ((k & 2) ? step : -step),
             centre.z + ((k & 1) ? step : -step)};
   }
-  static Point3<std::int64_t> add(const Point3<std::int64_t>& a, const Point3<std::int64_t>& b) {
-    return {a.x + b.x, a.y + b.y, a.z + b.z};
+  template <typename Int>
+  static Point3<Int> add(const Point3<Int>& a, const Point3<Int>& b) {
+    return {static_cast<Int>(a.x + b.x), static_cast<Int>(a.y + b.y), static_cast<Int>(a.z + b.z)};
   }
   static Point3<std::int64_t> sub(const Point3<std::int64_t>& a, const Point3<std::int64_t>& b) {
     return {a.x - b.x, a.y - b.y, a.z - b.z};
@@ -527,8 +509,13 @@ class PerspectiveWalk {
   const std::uint8_t* node_;
   std::size_t leaf_ = 0;
   bool aborted_ = false;
-  // The screen vectors of the subtree drawn from its affine map: Q(32-F).F, depth in Q.24.
-  std::array<std::array<Point3<std::int64_t>, 8>, kMaxRenderDepth> screen_offset_{};
+  // The screen vectors of the subtree drawn from its affine map: Q(32-F).F, depth in Q.24; int64,
+  // or int32 where the sink says the subtree's positions fit (narrowAffine). One storage: a
+  // walk lives on a device's stack.
+  union {
+    std::array<std::array<Point3<std::int64_t>, 8>, kMaxRenderDepth> screen_offset_{};
+    std::array<std::array<Point3<std::int32_t>, 8>, kMaxRenderDepth> narrow_offset_;
+  };
   Point3<std::int64_t> half_{};  // voxelHalfExtent of that subtree, widened for its nearest voxels
   Point3<std::int64_t> shadow_{};  // its map's cube shadow (cubeShadow)
   int affine_level_ = 0;           // its root's level

@@ -87,6 +87,40 @@ constexpr UnsignedDivision longDivide(uint64_t n, uint64_t d) {
 // d < 2^32, and doubling it may carry out of the word, which then certainly exceeds d (the
 // subtraction, taken modulo 2^32, is still exact: the true difference is below d).
 constexpr uint32_t divideWordInto(uint32_t word, uint32_t d, uint32_t& remainder) {
+#if defined(__ARM_ARCH_6M__)
+  // The same steps in Thumb-1, unrolled, the quotient's bits entering `word` at the bottom as
+  // above: the word's top bit shifts out into the carry (adds), into the doubled remainder
+  // (adcs), whose own carry out means it exceeds d; 4 to 6 instructions a step where GCC's loop
+  // takes 12 (the loop counter and the carry's test and shift in C++).
+  if (!std::is_constant_evaluated()) {
+    uint32_t r = remainder;
+    // Written out 32 times (not .rept: GCC sizes inline assembly by its lines, and its own
+    // branches around a .rept went out of range).
+#define OCTOPOINT_DIVIDE_STEP \
+  "adds %[w], %[w], %[w]\n\t" \
+  "adcs %[r], %[r], %[r]\n\t" \
+  "bcs 1f\n\t"                \
+  "cmp %[r], %[d]\n\t"        \
+  "bcc 2f\n"                  \
+  "1:\n\t"                    \
+  "subs %[r], %[r], %[d]\n\t" \
+  "adds %[w], #1\n"           \
+  "2:\n\t"
+#define OCTOPOINT_DIVIDE_STEPS_4 \
+  OCTOPOINT_DIVIDE_STEP OCTOPOINT_DIVIDE_STEP OCTOPOINT_DIVIDE_STEP OCTOPOINT_DIVIDE_STEP
+    asm(".syntax unified\n\t"  // GCC hands inline assembly to Thumb-1 in divided syntax
+        OCTOPOINT_DIVIDE_STEPS_4 OCTOPOINT_DIVIDE_STEPS_4 OCTOPOINT_DIVIDE_STEPS_4
+            OCTOPOINT_DIVIDE_STEPS_4 OCTOPOINT_DIVIDE_STEPS_4 OCTOPOINT_DIVIDE_STEPS_4
+                OCTOPOINT_DIVIDE_STEPS_4 OCTOPOINT_DIVIDE_STEPS_4
+        : [w] "+l"(word), [r] "+l"(r)
+        : [d] "l"(d)
+        : "cc");
+#undef OCTOPOINT_DIVIDE_STEPS_4
+#undef OCTOPOINT_DIVIDE_STEP
+    remainder = r;
+    return word;
+  }
+#endif
   for (int step = 0; step < 32; ++step) {
     const bool carry = (remainder >> 31) != 0;
     remainder = (remainder << 1) | (word >> 31);

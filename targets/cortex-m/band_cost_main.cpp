@@ -4,6 +4,9 @@
 // counts exactly one frame's instructions:
 //   valgrind --tool=callgrind --collect-atstart=no --toggle-collect='*drawFrame*'
 //            mcu_band_cost ROWS INDEX_LEVEL [portrait]     (ROWS 0: the whole frame in one walk)
+// or a perspective case of band_cases.h drawn in bands (renderPerspectiveBands, detail by distance,
+// the upper tree indexes built before), to see where the device's instructions go by function:
+//            mcu_band_cost perspective CASE [cull]
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
@@ -11,6 +14,8 @@
 
 #include "octopoint/bands.h"
 #include "octopoint/models.h"
+#include "renderer/perspective_bands.h"
+#include "renderer/perspective_layers.h"
 #include "targets/cortex-m/band_cases.h"
 
 using namespace octopoint;
@@ -41,9 +46,60 @@ void flush(void*, std::int32_t, std::int32_t, std::span<const std::uint8_t> rgb5
          BandError::kNone;
 }
 
+[[gnu::noinline]] bool drawPerspectiveFrame(const mcu::PerspectiveCase& c, const ModelView& model,
+                                            std::span<const UpperTreeIndex> indexes,
+                                            std::span<PerspectiveWalkTables> tables,
+                                            const Rgb565Palette& palette,
+                                            std::vector<std::uint32_t>& buffer,
+                                            std::span<OcclusionTile> tiles,
+                                            PerspectiveDrawStats* stats) {
+  PerspectiveView view;
+  if (buildPerspectiveView(c.camera, kDefaultFractionBits, &view) != PerspectiveError::kNone)
+    return false;
+  const PerspectiveLayers layers = perspectiveLayers(model, view, 0, indexes, tables);
+  if (layers.count == 0) return false;
+  const PerspectiveBandFrame frame{layers.layers(), &layers.detail, &view, tiles, 3};
+  BandSink sink;
+  sink.flush = flush;
+  return renderPerspectiveBands(frame, c.band_rows, palette, {buffer, {}, {}}, sink, stats) ==
+         BandError::kNone;
+}
+
+int perspectiveMain(int index, bool cull) {
+  if (index < 0 || index >= mcu::kPerspectiveCaseCount) return 2;
+  const mcu::PerspectiveCase& c = mcu::kPerspectiveCases[static_cast<std::size_t>(index)];
+  ModelIssue issue;
+  const std::optional<ModelView> model = ModelView::fromEmbedded(*models::defaultModel(), &issue);
+  if (!model) return 1;
+  std::vector<UpperTreeIndex> indexes(format::kMaxLevels);
+  std::vector<std::vector<UpperTreeNode>> nodes(format::kMaxLevels);
+  for (int i = 0; i < model->levelCount() && model->level(i).depth <= kMaxRenderDepth; ++i) {
+    const auto l = static_cast<std::size_t>(i);
+    nodes[l].resize(upperTreeEntries(model->level(i)));
+    indexes[l] = buildUpperTreeIndex(model->level(i), nodes[l]);
+  }
+  std::vector<PerspectiveWalkTables> tables(format::kMaxLevels);
+  const Rgb565Palette palette = makeRgb565Palette(*model, mcu::kBackground);
+  std::vector<std::uint32_t> buffer(static_cast<std::size_t>(c.camera.width) *
+                                    static_cast<std::size_t>(c.band_rows));
+  std::vector<OcclusionTile> tiles(occlusionTileCount(c.camera.width, c.band_rows, 3));
+  PerspectiveDrawStats stats;
+  if (!drawPerspectiveFrame(c, *model, indexes, tables, palette, buffer,
+                            cull ? std::span(tiles) : std::span<OcclusionTile>(), &stats)) {
+    std::fprintf(stderr, "mcu_band_cost: the perspective frame was refused\n");
+    return 1;
+  }
+  std::printf("points handed over: %llu, hidden subtrees: %llu\n",
+              static_cast<unsigned long long>(stats.leaves),
+              static_cast<unsigned long long>(stats.hidden_subtrees));
+  return static_cast<int>(checksum_sink & 0);
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
+  if (argc >= 3 && std::strcmp(argv[1], "perspective") == 0)
+    return perspectiveMain(std::atoi(argv[2]), argc > 3 && std::strcmp(argv[3], "cull") == 0);
   if (argc < 3) {
     std::fprintf(stderr, "usage: mcu_band_cost ROWS INDEX_LEVEL [portrait]\n");
     return 2;
