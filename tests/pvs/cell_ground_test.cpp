@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "renderer/scene_renderer.h"
+#include "tests/support/perspective_reference.h"
 #include "tests/support/synthetic_levels.h"
 #include "tools/cell_occlusion.h"
 
@@ -79,12 +80,10 @@ const SceneInstance kBeside{0, {{29 * kEdge / 10, kGround - kEdge / 4, 6 * kEdge
 std::vector<std::uint32_t> frameFrom(const std::vector<SceneInstance>& instances,
                                      const Point3<std::int64_t>& eye) {
   const ModelView* models[] = {&wall(), &plate()};
-  PerspectiveCamera camera;
-  camera.eye = eye;
-  camera.fov = Angle::fromDegrees(90);
-  camera.width = camera.height = 128;
   PerspectiveView view;
-  EXPECT_EQ(buildPerspectiveView(camera, kDefaultFractionBits, &view), PerspectiveError::kNone);
+  EXPECT_EQ(buildPerspectiveView(perspectiveCameraOf(eye, 0, 0, 90, 128, 128), kDefaultFractionBits,
+                                 &view),
+            PerspectiveError::kNone);
   SceneError error;
   SceneRenderer renderer(models, instances, &error);
   EXPECT_EQ(error, SceneError::kNone);

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "renderer/scene_renderer.h"
+#include "tests/support/perspective_reference.h"
 #include "tests/support/synthetic_levels.h"
 
 namespace octopoint {
@@ -60,12 +61,10 @@ const SceneInstance kWallB{0, {{kEdge * 37 / 25, 0, 4 * kEdge}, Angle{}, 3}};
 // Whether `far` changes a 128-pixel frame seen from `eye` (looking along +z, 90 degrees).
 bool farSeen(std::vector<SceneInstance> instances, const Point3<std::int64_t>& eye) {
   const ModelView* models[] = {&wallModel()};
-  PerspectiveCamera camera;
-  camera.eye = eye;
-  camera.fov = Angle::fromDegrees(90);
-  camera.width = camera.height = 128;
   PerspectiveView view;
-  EXPECT_EQ(buildPerspectiveView(camera, kDefaultFractionBits, &view), PerspectiveError::kNone);
+  EXPECT_EQ(buildPerspectiveView(perspectiveCameraOf(eye, 0, 0, 90, 128, 128), kDefaultFractionBits,
+                                 &view),
+            PerspectiveError::kNone);
   std::vector<std::uint32_t> words[2];
   for (int with = 0; with < 2; ++with) {
     if (with == 0) instances.pop_back();  // the far instance is last
