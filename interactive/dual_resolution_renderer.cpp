@@ -80,7 +80,8 @@ DualResolutionRenderer::DualResolutionRenderer(const ModelView* model, const Lev
     fine_worker_.perspective = std::make_unique<PerspectiveRenderer>(*model_);
     if (config.walk_radius > 0) {
       if (std::optional<CollisionModel> collision = CollisionModel::of(*model_)) {
-        collision_ = std::make_unique<const CollisionModel>(std::move(*collision));
+        collision_ = std::make_unique<const ModelCollision>(std::move(*collision));
+        collision_world_ = collision_.get();
         collide_ = true;
       }
     }
@@ -164,7 +165,7 @@ void DualResolutionRenderer::toggleWalk(std::int64_t time_us) {
 
 WalkCollision DualResolutionRenderer::walkCollision() const {
   if (!collide_) return {};
-  return {collision_.get(), collision_world_, {config_.walk_radius, config_.walk_eye_height}};
+  return {collision_world_, {config_.walk_radius, config_.walk_eye_height}};
 }
 
 ViewParameters DualResolutionRenderer::viewAt(std::int64_t time_us) const {
@@ -281,7 +282,7 @@ void DualResolutionRenderer::handle(const ViewEvent& event) {
         break;
       }
       case ViewEventKind::kToggleCollision:
-        if (collision_ == nullptr && collision_world_ == nullptr) return;
+        if (collision_world_ == nullptr) return;
         foldMotion(event.time_us);  // the walk so far as it was made
         collide_ = !collide_;
         status_.walk_collision = collide_;

@@ -49,16 +49,11 @@ WalkEye walked(WalkEye walker, NavigationKey key, std::int64_t held_us, std::int
       return walker;
   }
   const ModelPoint to = walkedEye(walker.eye, walker.yaw, step, walkDistance(held_us, speed));
-  ModelPoint moved = to;
-  if (collision.world != nullptr) {
-    moved = moveWithCollision(*collision.world, collision.body, walker.eye, to).eye;
-  } else if (collision.model != nullptr) {
-    const CollisionInstance instance{collision.model, {}};
-    moved = moveWithCollision({&instance, 1}, collision.body, walker.eye, to).eye;
-  } else {
+  if (collision.world == nullptr) {
     walker.eye = to;
     return walker;
   }
+  const ModelPoint moved = moveWithCollision(*collision.world, collision.body, walker.eye, to).eye;
   walker.eye = withinReach(moved);
   return walker;
 }

@@ -14,8 +14,7 @@ namespace octopoint {
 
 // Walk mode's collision, when on: what the eye collides with and its body.
 struct WalkCollision {
-  const CollisionModel* model = nullptr;  // a whole model, at the identity
-  const CollisionWorld* world = nullptr;  // or any world (a scene's instances); both null: off
+  const CollisionWorld* world = nullptr;  // a model's or a scene's instances; nullptr: off
   WalkBody body;
 };
 

@@ -15,6 +15,7 @@
 #include <cstdint>
 #include <optional>
 #include <span>
+#include <utility>
 #include <vector>
 
 #include "octopoint/fixed.h"
@@ -116,6 +117,22 @@ class CollisionInstances final : public CollisionWorld {
 
  private:
   std::span<const CollisionInstance> instances_;
+};
+
+// One whole model at the identity, owned: walk mode's world for the viewer's model (the same
+// answers as CollisionInstances of that one instance).
+class ModelCollision final : public CollisionWorld {
+ public:
+  explicit ModelCollision(CollisionModel model) : model_(std::move(model)) {}
+  ModelCollision(const ModelCollision&) = delete;
+  ModelCollision& operator=(const ModelCollision&) = delete;
+  bool meets(const CollisionSphere& sphere) const override {
+    const CollisionInstance instance{&model_, {}};
+    return sphereMeets({&instance, 1}, sphere);
+  }
+
+ private:
+  CollisionModel model_;
 };
 
 // The same for one instance.

@@ -180,10 +180,11 @@ class ScriptedTimeline final : public EventSource {
 namespace octopoint {
 
 class PerspectiveRenderer;  // renderer/perspective_renderer.h: walk mode's frames
-class CollisionModel;       // renderer/collision.h: walk mode's collision
-class CollisionWorld;       // renderer/collision.h: what a walk drawer's eye collides with
-struct WalkCollision;       // interactive/view_motion.h
-struct PerspectiveView;     // renderer/perspective.h: a walk frame's view
+class CollisionWorld;       // renderer/collision.h: what walk mode's eye collides with
+class ModelCollision;       // renderer/collision.h: a whole model as one
+
+struct WalkCollision;    // interactive/view_motion.h
+struct PerspectiveView;  // renderer/perspective.h: a walk frame's view
 
 enum class FrameSource : std::uint8_t { kCoarse, kFine };  // drawn by L or by H
 
@@ -417,11 +418,12 @@ class DualResolutionRenderer {
   std::array<HeldKey, kNavigationKeyCount> held_{};
   ViewParameters base_view_;
   std::int64_t walk_speed_;  // Q.24 cube edges per second
-  std::unique_ptr<const CollisionModel>
-      collision_;  // with config_.walk_radius, when it can be made
-  const CollisionWorld* collision_world_ = nullptr;  // config_.walk_world, with walk_radius
-  bool collide_ = false;                             // collision on (toggled)
-  std::int32_t width_;                               // the size of the frames drawn from now on
+  // With config_.walk_radius: what the walk collides with, the whole model's finest level (when
+  // it can be indexed) or config_.walk_world.
+  std::unique_ptr<const ModelCollision> collision_;
+  const CollisionWorld* collision_world_ = nullptr;
+  bool collide_ = false;  // collision on (toggled)
+  std::int32_t width_;    // the size of the frames drawn from now on
   std::int32_t height_;
   std::uint64_t view_version_ = 1;
   bool coarse_once_ = false;    // one coarse frame after a step change
