@@ -2,7 +2,7 @@
 # models"): the scan prepared with --chunked and as one file of the same depths (the chunked file's
 # base included) draws the same PNG, byte for byte, from an orbit camera in perspective and
 # from an eye at the cube's corner looking in; and, orthographic, with smooth splats
-# (docs/splats.md: the progressive model blends what it holds), which differ from box splats.
+# (docs/splats.md: the progressive model blends what it holds), which differ from box splats; --info states the same sample reach for each depth of both.
 # usage: cmake -DRENDER=... -DPREPARE=... -DSCAN=sphere.pcd -DOUT=DIR -P this
 file(REMOVE_RECURSE ${OUT})
 file(MAKE_DIRECTORY ${OUT}/one ${OUT}/chunked)
@@ -29,6 +29,19 @@ if(NOT info MATCHES "\ncube ([-0-9.e+]+),([-0-9.e+]+),([-0-9.e+]+) ")
 endif()
 set(corner "${CMAKE_MATCH_1},${CMAKE_MATCH_2},${CMAKE_MATCH_3}")
 run(ignored ${PREPARE} ${SCAN} -o ${OUT}/one --name m --depths ${depths})
+# Each depth's sample reach, as the chunked file and the one file state it: the same.
+function(sample_reaches output_variable text)
+  string(REGEX MATCHALL "\ndepth [0-9]+[^\n]*sample reach [0-9.]+" lines "${text}")
+  string(REGEX REPLACE "\ndepth ([0-9]+)[^;]*sample reach ([0-9.]+)" "\\1:\\2" reaches "${lines}")
+  set(${output_variable} "${reaches}" PARENT_SCOPE)
+endfunction()
+run(one_info ${RENDER} --file ${OUT}/one/m.oct --info)
+sample_reaches(chunked_reaches "${info}")
+sample_reaches(one_reaches "${one_info}")
+if(NOT chunked_reaches STREQUAL one_reaches OR chunked_reaches STREQUAL "")
+  message(FATAL_ERROR "the sample reaches differ: chunked '${chunked_reaches}', one file "
+                      "'${one_reaches}'")
+endif()
 
 foreach(view "orbit;--perspective;--yaw;30;--pitch;15;--zoom;2"
              "eye;--eye;${corner};--look;45,-35;--fov;90")

@@ -14,6 +14,12 @@ std::string line(const char* format, auto... values) {
   return text;
 }
 
+// How wide a level's splats are drawn, in footprints (stored in sixteenths, Q4: whole ones in what
+// the preparer writes), the same words for every kind of model.
+std::string reachText(std::int32_t reach) {
+  return line("sample reach %d.%02d footprints", reach / 16, reach % 16 * 100 / 16);
+}
+
 // The metric size and the placement: the lines every kind of model shares.
 std::string cubeLines(std::uint64_t edge_pm, const CubePlacement& placement, int version) {
   std::string out;
@@ -45,11 +51,9 @@ std::string viewInfo(const ModelView& model) {
                             : std::string("normals none\n");
   for (int i = 0; i < model.levelCount(); ++i) {
     const LevelView& level = model.level(i);
-    // The reach in footprints (it is stored in sixteenths: whole ones in what the preparer writes).
-    const std::int32_t reach = model.sampleReach(i);
-    out +=
-        line("depth %d: %zu leaves, %zu node bytes, sample reach %d.%02d footprints\n", level.depth,
-             level.leaves.size(), level.nodes.size(), reach / 16, reach % 16 * 100 / 16);
+    out += line("depth %d: %zu leaves, %zu node bytes, ", level.depth, level.leaves.size(),
+                level.nodes.size()) +
+           reachText(model.sampleReach(i)) + "\n";
   }
   return out + cubeLines(model.cubeEdgePicometres(), model.cubePlacement(), model.formatVersion());
 }
@@ -63,13 +67,15 @@ std::string chunkedInfo(const ProgressiveModel& model) {
               (head.flags & chunked::kFlagSyntheticColour) != 0
                   ? " (a depth shade: the scan had no colour)"
                   : "");
-  out += line("depth %d (base): %zu leaves\n", head.levels[0].depth, head.base_leaves.size());
+  out += line("depth %d (base): %zu leaves, ", head.levels[0].depth, head.base_leaves.size()) +
+         reachText(head.levels[0].sample_reach) + "\n";
   for (int level = 1; level < model.levelCount(); ++level) {
     unsigned long long leaves = 0;
     for (std::uint32_t i = 0; i < model.chunkCount(level); ++i)
       leaves += model.record(level, i).points;
-    out += line("depth %d: %llu leaves in %u chunks\n", model.levelDepth(level), leaves,
-                model.chunkCount(level));
+    out += line("depth %d: %llu leaves in %u chunks, ", model.levelDepth(level), leaves,
+                model.chunkCount(level)) +
+           reachText(head.levels[static_cast<std::size_t>(level)].sample_reach) + "\n";
   }
   return out + cubeLines(head.cube_edge_pm, head.cube, head.format_version);
 }

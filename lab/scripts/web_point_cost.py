@@ -11,7 +11,8 @@ usage: lab/scripts/web_point_cost.py [ROUNDS [DRAWS]]
 Points per frame are varied at a fixed splat size: the default model's scan (as docs/streaming.md
 prepares it, depths 6..8) thinned by space (lab/scripts/thinned_scan.py: whole depth-4 cells of the
 same cube kept, fractions 1/4 to 1), each prepared --chunked; a model whose depth auto would not
-draw depth 8 (too thin to count as densely sampled) is left out. ROUNDS times (default 3), each
+draw depth 8 (too thin to count as densely sampled), or whose depth 8 stores a sample reach over one
+footprint (wider splats), is left out. ROUNDS times (default 3), each
 round: the native benchmark (the fastest of 10 repetitions); in one tab of headless Chromium
 (web/test/devtools.py, the DevTools pipe) the page from octopoint-serve, its embedded model drawn at
 320x240 and 1280x960; then each thinned model streamed into the same tab until its view is
@@ -103,6 +104,14 @@ def thinned_models(work):
                    "--pitch", "10", "--size", "640x480", "-o", os.path.join(work, "check.png"))
         if ", depth 8," not in said:
             print("web_point_cost: fraction %g left out (%s)" % (fraction, said.strip()))
+            continue
+        # A depth whose measured sample reach is over one footprint draws wider splats
+        # (docs/splats.md): its frame costs more a point, and is left out of a fit at one size.
+        info = run(os.path.join(TOOLS, "octopoint-render"), "--file", model, "--info")
+        reach = re.search(r"^depth 8: .*sample reach (\S+) footprints$", info, re.M).group(1)
+        if reach != "1.00":
+            print("web_point_cost: fraction %g left out (its depth 8 has a sample reach of %s "
+                  "footprints)" % (fraction, reach))
             continue
         models[fraction] = model
     return models
