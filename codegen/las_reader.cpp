@@ -399,7 +399,7 @@ std::optional<double> snapped(double stated, double scale, double offset) {
 }
 
 // The header's box snapped to the records' grid, when it is one: every axis low <= high and
-// inside the int32 grid (a header of zeros is a box too: the preparer checks it at the end).
+// inside the int32 grid (a header of zeros is one of no volume, which the preparer does not try).
 std::optional<HeaderBox> headerBox(const LasHeader& header) {
   HeaderBox box;
   for (std::size_t axis = 0; axis < 3; ++axis) {

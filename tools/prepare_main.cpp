@@ -118,8 +118,8 @@ loaded whole through PCL. The output is the same byte for byte whatever --memory
                         deleted as soon as they are made, so nothing is left behind. A LAZ
                         scan is decoded once: in one pass binned on its header's box (checked
                         against the points: a box that lies costs a second decoding), or,
-                        with --crop, kept there for the second pass (24 to 34 bytes a point)
-                        when the disk has room for twice that
+                        with --crop or no box in the header, kept there for the second pass
+                        (24 to 34 bytes a point) when the disk has room for twice that
   --progress            show progress on stderr (phase, points done, points/s, time left) even
                         when stderr is not a terminal; on a terminal it shows by itself for
                         steps longer than a second
