@@ -10,6 +10,7 @@
 #include <cmath>
 #include <cstring>
 #include <limits>
+#include <optional>
 #include <sstream>
 #include <string_view>
 #include <vector>
@@ -230,6 +231,8 @@ LasHeader readFixedHeader(const InputFile& file, std::vector<std::uint8_t>& head
   for (std::size_t axis = 0; axis < 3; ++axis) {
     header.scale[axis] = readLittle<double>(&head[131 + 8 * axis]);
     header.offset[axis] = readLittle<double>(&head[155 + 8 * axis]);
+    header.stated_high[axis] = readLittle<double>(&head[179 + 16 * axis]);
+    header.stated_low[axis] = readLittle<double>(&head[187 + 16 * axis]);
   }
   const std::uint64_t legacy_count = readLittle<std::uint32_t>(&head[107]);
   header.point_count = legacy_count;
@@ -381,8 +384,40 @@ LasHeader readLasHeader(const InputFile& file) {
   return header;
 }
 
+namespace {
+
+// The coordinate of the record nearest to `stated` on its axis's grid (int32 * scale + offset),
+// or nullopt past the int32 range or not a number. A writer that took the box from its points
+// before rounding them to the grid (to nearest) gives the extreme records' coordinates too.
+std::optional<double> snapped(double stated, double scale, double offset) {
+  const double raw = std::round((stated - offset) / scale);
+  if (!(raw >= std::numeric_limits<std::int32_t>::min() &&
+        raw <= std::numeric_limits<std::int32_t>::max())) {
+    return std::nullopt;
+  }
+  return lasCoordinate(static_cast<std::int32_t>(raw), scale, offset);
+}
+
+// The header's box snapped to the records' grid, when it is one: every axis low <= high and
+// inside the int32 grid (a header of zeros is one of no volume, which the preparer does not try).
+std::optional<HeaderBox> headerBox(const LasHeader& header) {
+  HeaderBox box;
+  for (std::size_t axis = 0; axis < 3; ++axis) {
+    const auto low = snapped(header.stated_low[axis], header.scale[axis], header.offset[axis]);
+    const auto high = snapped(header.stated_high[axis], header.scale[axis], header.offset[axis]);
+    if (!low || !high || *low > *high) return std::nullopt;
+    box.low[axis] = *low;
+    box.high[axis] = *high;
+  }
+  return box;
+}
+
+}  // namespace
+
 SourceInfo lasSourceInfo(const LasHeader& header) {
   SourceInfo info;
+  info.header_box = headerBox(header);
+  info.intensity_16bit = true;
   info.points = header.point_count;
   info.payload = header.rgb_offset ? PointPayload::kRgb : PointPayload::kIntensity;
   info.shading = header.rgb_offset ? ScanShading::kColour : ScanShading::kIntensity;
@@ -403,7 +438,7 @@ void decodeLasRecords(const LasHeader& header, const std::uint8_t* records, Poin
   for (std::size_t i = 0; i < chunk.xyz.size(); ++i, record += stride) {
     for (std::size_t axis = 0; axis < 3; ++axis) {
       const auto raw = readLittle<std::int32_t>(record + 4 * axis);
-      chunk.xyz[i][axis] = static_cast<double>(raw) * header.scale[axis] + header.offset[axis];
+      chunk.xyz[i][axis] = lasCoordinate(raw, header.scale[axis], header.offset[axis]);
     }
     chunk.intensity[i] = readLittle<std::uint16_t>(record + 12);
     if (header.rgb_offset) {

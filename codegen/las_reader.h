@@ -40,6 +40,10 @@ struct LasHeader {
   std::uint64_t point_offset = 0;  // the first point record
   std::array<double, 3> scale{};
   std::array<double, 3> offset{};
+  // The header's "max and min X, Y, Z": the extent of the points' coordinates, as written (the
+  // LAS specification says actual; a writer may leave them 0 or loose).
+  std::array<double, 3> stated_low{};
+  std::array<double, 3> stated_high{};
   std::uint32_t vlr_count = 0;
   std::uint32_t evlr_count = 0;
   std::uint16_t rgb_offset = 0;  // byte of red in the record; 0 when the format has no colour
@@ -60,6 +64,13 @@ LasHeader readLasHeader(const InputFile& file);
 // What a LAS (or LAZ) file's points carry: payload kRgb with colour_bits_detected (and the
 // intensity beside it) for formats with colour, else kIntensity.
 SourceInfo lasSourceInfo(const LasHeader& header);
+
+// A record's coordinate: its int32 times the scale plus the offset, in double. The one expression
+// for points and for the header's box (lasSourceInfo), so that a box snapped to the records' grid
+// is exactly the coordinates its corners' points decode to.
+inline double lasCoordinate(std::int32_t raw, double scale, double offset) {
+  return static_cast<double>(raw) * scale + offset;
+}
 
 // Decodes `chunk.xyz.size()` LAS records from `records` into `chunk` (already resized).
 void decodeLasRecords(const LasHeader& header, const std::uint8_t* records, PointChunk& chunk);

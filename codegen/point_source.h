@@ -13,6 +13,7 @@
 #include <filesystem>
 #include <limits>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -26,6 +27,12 @@ enum class PointPayload {
   kRgb,        // a colour per point (8-bit, or 16-bit for LAS: see colour_bits_detected)
   kIntensity,  // an intensity per point, shown as grey (codegen/intensity_grey.h)
   kNone,       // nothing: the voxels get a depth shade
+};
+
+// The box a file's header says its points fill (LAS: min and max x, y, z), in scan units.
+struct HeaderBox {
+  std::array<double, 3> low{};
+  std::array<double, 3> high{};
 };
 
 struct SourceInfo {
@@ -48,7 +55,12 @@ struct SourceInfo {
   // LAZ: a chunk decodes only by running its arithmetic code again, so the preparer keeps pass 1's
   // decoded points for pass 2 (codegen/decoded_points.h) rather than decode every chunk twice.
   bool compressed = false;
-  std::string format;  // for the summary line, e.g. "LAS 1.4, point format 7"
+  // LAS and LAZ: the header's box, snapped to the records' coordinate grid (nullopt when it is no
+  // box). The preparer bins in its first pass on the cube this box gives and checks it against
+  // the points' own bounds at the end (codegen/streamed_prepare.h); it is never taken on trust.
+  std::optional<HeaderBox> header_box;
+  bool intensity_16bit = false;  // every intensity an integer 0..65535 (LAS): counted exactly
+  std::string format;            // for the summary line, e.g. "LAS 1.4, point format 7"
 };
 
 // One chunk of consecutive records, decoded. Positions are in scan units; a non-finite one marks a

@@ -19,6 +19,7 @@
 #include "codegen/model_assembly.h"
 #include "codegen/parallel.h"
 #include "codegen/point_bins.h"
+#include "codegen/point_tally.h"
 #include "codegen/prepare_error.h"
 #include "codegen/progress.h"
 #include "codegen/sample_reach.h"
@@ -38,41 +39,6 @@ constexpr std::size_t kMinBinPoints = 1024;
 // A worker voxelizing a bin holds per point: the point, a sort buffer, and its key.
 constexpr std::uint64_t kBytesPerBinPoint = 2 * sizeof(BinnedPoint) + sizeof(std::uint64_t);
 
-// The points that go into the model, turned into its axes: finite (the caller checks), inside
-// the crop box (compared in the scan's own axes, as cropScan does), y-up turned by 180 degrees
-// about x.
-class PointFilter {
- public:
-  PointFilter(const std::optional<CropBox>& crop, ScanAxes axes, bool float_coordinates)
-      : crop_(crop.has_value()), axes_(axes) {
-    if (!crop) return;
-    for (std::size_t axis = 0; axis < 3; ++axis) {  // float scans see the box as cropScan does
-      low_[axis] = float_coordinates ? static_cast<float>(crop->low[axis]) : crop->low[axis];
-      high_[axis] = float_coordinates ? static_cast<float>(crop->high[axis]) : crop->high[axis];
-    }
-  }
-
-  bool keep(std::array<double, 3>& p) const {
-    if (crop_) {
-      for (std::size_t axis = 0; axis < 3; ++axis) {
-        if (!(p[axis] >= low_[axis] && p[axis] <= high_[axis])) return false;
-      }
-    }
-    if (axes_ == ScanAxes::kYUp) p = {p[0], -p[1], -p[2]};  // a rotation: no mirror image
-    return true;
-  }
-
- private:
-  bool crop_;
-  ScanAxes axes_;
-  std::array<double, 3> low_{};
-  std::array<double, 3> high_{};
-};
-
-bool isFinite(const std::array<double, 3>& p) {
-  return std::isfinite(p[0]) && std::isfinite(p[1]) && std::isfinite(p[2]);
-}
-
 // Where spill files go: --temp-dir, else $TMPDIR, else /tmp.
 fs::path temporaryDirectory(const fs::path& requested) {
   const char* from_environment = std::getenv("TMPDIR");
@@ -90,27 +56,17 @@ void checkDirectory(const fs::path& directory) {
   }
 }
 
-// What pass 1 learns, per worker and then merged.
-struct FirstPass {
-  Bounds bounds;
-  IntensityPercentiles intensity;
-  std::uint16_t brightest_channel = 0;  // the largest colour channel value in the file
-  std::uint64_t finite = 0;
+// A point's colour binned as 8-bit when no channel of its chunk passes 255 and the file's choice
+// was not yet known (one pass): bit 24 of the payload, above the colour's 0xRRGGBB.
+constexpr std::uint32_t kEightBitMark = 1u << 24;
 
-  void merge(const FirstPass& other) {
-    bounds.merge(other.bounds);
-    intensity.merge(other.intensity);
-    brightest_channel = std::max(brightest_channel, other.brightest_channel);
-    finite += other.finite;
+bool sameFit(const CubeFit& a, const CubeFit& b) {  // bit for bit: the cube the model records
+  for (std::size_t axis = 0; axis < 3; ++axis) {
+    if (std::bit_cast<std::uint64_t>(a.origin[axis]) !=
+        std::bit_cast<std::uint64_t>(b.origin[axis]))
+      return false;
   }
-};
-
-[[noreturn]] void failAbsurd(const std::string& path, const std::array<double, 3>& p,
-                             std::size_t axis, double limit, std::uint64_t index) {
-  std::ostringstream what;
-  what << "absurd coordinate "
-       << "xyz"[axis] << " = " << cli::realText(p[axis]) << ", beyond +-" << cli::realText(limit);
-  throw PrepareError(path + ": " + what.str() + " (point " + std::to_string(index) + ")");
+  return std::bit_cast<std::uint64_t>(a.edge) == std::bit_cast<std::uint64_t>(b.edge);
 }
 
 // Times the phases one after another into a PrepareSummary.
@@ -154,9 +110,16 @@ class StreamedPreparer {
         points_read_ += source.piece(i).count;
       }
     }
+    // One pass when the header states a box whose cube can be assumed: no crop (the box bounds
+    // the points, not the points kept), a payload the pass can bin before it knows the file
+    // (16-bit intensities counted exactly, or colour).
+    if (stream.header_box && !options.crop && info_.header_box && info_.intensity_16bit &&
+        info_.payload != PointPayload::kNone && !pieces_.empty()) {
+      assumed_ = assumedFit();
+    }
     // Room for the decoded copy and as much again for the bins' spills, else (also when no
     // temporary file can be made: a scan that fits the budget needs none) decode twice.
-    if (info_.compressed && stream.decode_once && !pieces_.empty() &&
+    if (!assumed_ && info_.compressed && stream.decode_once && !pieces_.empty() &&
         freeDiskBytes(temp_dir_) / 2 >= DecodedPoints::bytesFor(info_, points_read_)) {
       try {
         decoded_ = std::make_unique<DecodedPoints>(temp_dir_, source_.pieceCount());
@@ -169,12 +132,22 @@ class StreamedPreparer {
   PreparedModel run(PrepareSummary& summary) {
     PhaseClock clock(summary.phase_seconds);
     if (!options_.crop) checkDisk(info_.points);  // every point may be kept: say so before reading
-    firstPass();
-    clock.next();
-    checkDisk(first_.bounds.count);
-    fit_ = fitCube(first_.bounds, path_);
-    chooseColouring(summary);
-    std::vector<BinContents> bins = secondPass();
+    std::vector<BinContents> bins;
+    summary.source_passes = 1;
+    if (assumed_) {
+      clock.next();  // no pass of its own for the bounds: the binning pass takes them
+      bins = binOnHeaderBox(summary);
+    } else {
+      firstPass();
+      clock.next();
+    }
+    if (!binned_) {
+      if (!decoded_) ++summary.source_passes;  // else pass 2 reads pass 1's decoded copy
+      checkDisk(first_.bounds.count);
+      fit_ = fitCube(first_.bounds, path_);
+      chooseColouring(summary);
+      bins = secondPass();
+    }
     if (decoded_) summary.decoded_kept_bytes = decoded_->bytesWritten();
     decoded_.reset();  // its disk space, before the bins are voxelized
     clock.next();
@@ -195,7 +168,7 @@ class StreamedPreparer {
     summary.pieces = source_.pieceCount();
     summary.bytes_read = source_.bytesRead();
     summary.model_points = first_.bounds.count;
-    summary.spilled_bytes = spilled_bytes_.load() + spill_.bytesWritten();
+    summary.spilled_bytes = spilled_bytes_.load() + spill_->bytesWritten();
     summary.threads = threads_;
     PreparedModel model = assembleModel(std::move(levels), fit_, options_, path_, threads_);
     model.synthetic_colour = summary.shading == ScanShading::kNone && !options_.greyscale;
@@ -245,30 +218,12 @@ class StreamedPreparer {
         [&] { progress.update(done.load()); });
   }
 
-  void firstPass() {
-    std::vector<FirstPass> workers(threads_);
-    const bool count_intensity = info_.payload == PointPayload::kIntensity || info_.has_intensity;
-    readAllPoints("pass 1 of 3, bounds", false,
-                  [&](PointChunk& chunk, std::uint64_t first, unsigned worker) {
-                    FirstPass& state = workers[worker];
-                    for (std::size_t i = 0; i < chunk.xyz.size(); ++i) {
-                      std::array<double, 3>& p = chunk.xyz[i];
-                      if (!isFinite(p)) continue;
-                      for (std::size_t axis = 0; axis < 3; ++axis) {
-                        if (std::fabs(p[axis]) > info_.coordinate_limit) {
-                          failAbsurd(path_, p, axis, info_.coordinate_limit, first + i);
-                        }
-                      }
-                      ++state.finite;
-                      if (count_intensity) state.intensity.addCoarse(chunk.intensity[i]);
-                      if (info_.colour_bits_detected) {
-                        for (std::uint16_t channel : chunk.rgb[i]) {
-                          state.brightest_channel = std::max(state.brightest_channel, channel);
-                        }
-                      }
-                      if (filter_.keep(p)) state.bounds.add(p);
-                    }
-                  });
+  bool coarseIntensity() const {  // the first of the two intensity passes
+    return !intensity_known_ && (info_.payload == PointPayload::kIntensity || info_.has_intensity);
+  }
+
+  // The workers' tallies merged into first_, and the pass's refusals.
+  void mergeTallies(std::vector<PointTally>& workers) {
     for (std::size_t w = 1; w < workers.size(); ++w) workers[0].merge(workers[w]);
     first_ = std::move(workers[0]);
     if (pieces_.empty()) {  // not one piece met the crop box
@@ -283,7 +238,93 @@ class StreamedPreparer {
       throw PrepareError(path_ + ": no point of the " + std::to_string(first_.finite) +
                          " points lies inside the crop box");
     }
+  }
+
+  void firstPass() {
+    std::vector<PointTally> workers(threads_);
+    readAllPoints("pass 1 of 3, bounds", false,
+                  [&](PointChunk& chunk, std::uint64_t first, unsigned worker) {
+                    workers[worker].add(chunk, first, info_, filter_, coarseIntensity(), path_);
+                  });
+    mergeTallies(workers);
     first_.intensity.finishCoarse();
+  }
+
+  // The cube of the header's box, in the model's axes (the box's corners turned as the points
+  // are); nullopt when it spans no volume (a header of zeros).
+  std::optional<CubeFit> assumedFit() const {
+    Bounds box;
+    for (std::array<double, 3> corner : {info_.header_box->low, info_.header_box->high}) {
+      filter_.keep(corner);  // no crop here: it only turns the axes
+      box.add(corner);
+    }
+    try {
+      return fitCube(box, path_);
+    } catch (const PrepareError&) {
+      return std::nullopt;
+    }
+  }
+
+  // The one pass: bins every point on the header box's cube while tallying what pass 1 would
+  // have; the bins when the cube from the points' own bounds, and the colouring, are what was
+  // assumed (binned_), else nothing (the points are binned again on their own cube, from the
+  // tally, so a box that lies costs a second reading, never a different model).
+  std::vector<BinContents> binOnHeaderBox(PrepareSummary& summary) {
+    using Payload = VoxelColouring::Payload;
+    fit_ = *assumed_;
+    // Assumed: the colours are not all 0 (else the intensity is shown, binned otherwise).
+    const Payload assumed_payload =
+        info_.payload == PointPayload::kRgb ? Payload::kRgb : Payload::kIntensity;
+    colouring_.payload = assumed_payload;
+    startBinning(points_read_);
+    std::vector<PointTally> workers(threads_);
+    const bool count_intensity = info_.payload == PointPayload::kIntensity || info_.has_intensity;
+    for (PointTally& tally : workers) {
+      if (count_intensity) tally.exact_intensity.start();
+    }
+    intensity_known_ = true;
+    std::atomic<bool> marked{false};
+    readAllPoints("pass 1 of 2, binning", false,
+                  [&](PointChunk& chunk, std::uint64_t first, unsigned worker) {
+                    const std::uint16_t brightest =
+                        workers[worker].add(chunk, first, info_, filter_, coarseIntensity(), path_);
+                    // Colours no channel of which passes 255 are binned as 8-bit, marked; once the
+                    // file's choice is known, a marked colour is made what it would give.
+                    const bool eight_bit = assumed_payload == Payload::kRgb && brightest <= 255;
+                    if (eight_bit) marked = true;
+                    binChunk(chunk, *spillers_[worker], eight_bit ? 0 : 8,
+                             eight_bit ? kEightBitMark : 0, nullptr);
+                  });
+    mergeTallies(workers);
+    const CubeFit fit = fitCube(first_.bounds, path_);
+    chooseColouring(summary);
+    if (sameFit(fit, *assumed_) && colouring_.payload == assumed_payload) {
+      binned_ = true;
+      marked_ = marked;
+      return finishBinning();
+    }
+    summary.header_box_note = wrongBoxNote(fit);
+    spillers_.clear();
+    spilled_bytes_ += spill_->bytesWritten();
+    spill_ = std::make_unique<SpillFile>(temp_dir_);  // the wrong bins' disk, given back
+    return {};
+  }
+
+  // Why the header's box was not taken, for the summary.
+  std::string wrongBoxNote(const CubeFit& fit) const {
+    std::ostringstream note;
+    note << "the header's box";
+    if (!sameFit(fit, *assumed_)) {
+      const Bounds& b = first_.bounds;
+      note << " is not the points' (x " << cli::realText(b.low[0]) << " to "
+           << cli::realText(b.high[0]) << ", y " << cli::realText(b.low[1]) << " to "
+           << cli::realText(b.high[1]) << ", z " << cli::realText(b.low[2]) << " to "
+           << cli::realText(b.high[2]) << " in the model's axes)";
+    } else {
+      note << " held, but every colour channel is 0";
+    }
+    note << ": binned again";
+    return note.str();
   }
 
   // Decides what the voxels' colours come from, now that every colour has been seen once.
@@ -309,14 +350,19 @@ class StreamedPreparer {
       colouring_.near_z = voxelIndex(first_.bounds.low[2], fit_.origin[2], fit_.edge, finest());
       colouring_.far_z = voxelIndex(first_.bounds.high[2], fit_.origin[2], fit_.edge, finest());
     }
+    if (intensity_known_) colouring_.intensity = first_.exact_intensity.range();
   }
 
-  std::uint32_t payloadOf(const PointChunk& chunk, std::size_t i) const {
+  // Point i's payload: its colour, each channel shifted right by `shift` (8 for 16-bit colour),
+  // with `mark`; or its intensity's bits.
+  std::uint32_t payloadOf(const PointChunk& chunk, std::size_t i, int shift,
+                          std::uint32_t mark) const {
     switch (colouring_.payload) {
       case VoxelColouring::Payload::kRgb: {
         const auto& c = chunk.rgb[i];
-        return std::uint32_t(c[0] >> colour_shift_ & 0xffu) << 16 |
-               std::uint32_t(c[1] >> colour_shift_ & 0xffu) << 8 | (c[2] >> colour_shift_ & 0xffu);
+        return (std::uint32_t(c[0] >> shift & 0xffu) << 16 |
+                std::uint32_t(c[1] >> shift & 0xffu) << 8 | (c[2] >> shift & 0xffu)) |
+               mark;
       }
       case VoxelColouring::Payload::kIntensity:
         return std::bit_cast<std::uint32_t>(chunk.intensity[i]);
@@ -326,47 +372,71 @@ class StreamedPreparer {
     return 0;
   }
 
-  std::vector<BinContents> secondPass() {
+  // A marked colour (binned as 8-bit before the file's choice was known) as the file's choice
+  // makes it: the same 8-bit colour, or 0 for 16-bit colour (no channel of it passed 255).
+  std::uint32_t unmarked(std::uint32_t payload) const {
+    if (!(payload & kEightBitMark)) return payload;
+    return colour_shift_ ? 0 : payload & ~kEightBitMark;
+  }
+
+  // Each thread's spiller, each buffer up to `points` (the budget's share at most): memory not
+  // written is never touched, so only what the points fill counts, however unevenly the threads
+  // share them.
+  void startBinning(std::uint64_t points) {
     bin_level_ = std::min(kBinLevel, finest());
     const std::size_t bin_count = std::size_t{1} << (3 * bin_level_);
     const int bin_shift = 3 * (finest() - bin_level_);
-    // Each thread's buffer can take every point (up to the budget): memory not written is never
-    // touched, so only what the points fill counts, however unevenly the threads share them.
-    const std::uint64_t capacity = std::min<std::uint64_t>(buffer_points_, first_.bounds.count);
+    const std::uint64_t capacity = std::min<std::uint64_t>(buffer_points_, points);
     for (unsigned w = 0; w < threads_; ++w) {
-      spillers_.push_back(std::make_unique<BinSpiller>(bin_shift, bin_count, capacity, spill_));
+      spillers_.push_back(std::make_unique<BinSpiller>(bin_shift, bin_count, capacity, *spill_));
     }
-    const bool fine_intensity = colouring_.payload == VoxelColouring::Payload::kIntensity;
+  }
+
+  std::vector<BinContents> finishBinning() {
+    std::vector<BinContents> bins(std::size_t{1} << (3 * bin_level_));
+    parallelFor(threads_, spillers_.size(),
+                [&](std::size_t i, unsigned) { spillers_[i]->groupTail(); });
+    for (auto& spiller : spillers_) spiller->finish(true, bins);
+    return bins;
+  }
+
+  // Bins the finite points of `chunk` that the filter keeps, on fit_; counts every finite
+  // intensity into `intensity` when given.
+  void binChunk(PointChunk& chunk, BinSpiller& spiller, int shift, std::uint32_t mark,
+                IntensityPercentiles* intensity) const {
+    const int depth = finest();
+    const double cells = std::ldexp(1.0, depth);
+    for (std::size_t i = 0; i < chunk.xyz.size(); ++i) {
+      std::array<double, 3>& p = chunk.xyz[i];
+      if (!isFinite(p)) continue;
+      if (intensity) intensity->addFine(chunk.intensity[i]);
+      if (!filter_.keep(p)) continue;
+      const std::uint64_t key =
+          mortonKey(voxelIndexIn(p[0], fit_.origin[0], fit_.edge, cells),
+                    voxelIndexIn(p[1], fit_.origin[1], fit_.edge, cells),
+                    voxelIndexIn(p[2], fit_.origin[2], fit_.edge, cells), depth);
+      spiller.add(BinnedPoint::make(key, payloadOf(chunk, i, shift, mark)));
+    }
+  }
+
+  std::vector<BinContents> secondPass() {
+    startBinning(first_.bounds.count);
+    const bool fine_intensity =
+        colouring_.payload == VoxelColouring::Payload::kIntensity && !intensity_known_;
     std::vector<IntensityPercentiles> intensities;
     for (unsigned w = 0; fine_intensity && w < threads_; ++w) {
       intensities.push_back(first_.intensity.forFinePass());
     }
-    const int depth = finest();
-    const double cells = std::ldexp(1.0, depth);
     readAllPoints("pass 2 of 3, binning", true,
                   [&](PointChunk& chunk, std::uint64_t, unsigned worker) {
-                    BinSpiller& spiller = *spillers_[worker];
-                    for (std::size_t i = 0; i < chunk.xyz.size(); ++i) {
-                      std::array<double, 3>& p = chunk.xyz[i];
-                      if (!isFinite(p)) continue;
-                      if (fine_intensity) intensities[worker].addFine(chunk.intensity[i]);
-                      if (!filter_.keep(p)) continue;
-                      const std::uint64_t key =
-                          mortonKey(voxelIndexIn(p[0], fit_.origin[0], fit_.edge, cells),
-                                    voxelIndexIn(p[1], fit_.origin[1], fit_.edge, cells),
-                                    voxelIndexIn(p[2], fit_.origin[2], fit_.edge, cells), depth);
-                      spiller.add(BinnedPoint::make(key, payloadOf(chunk, i)));
-                    }
+                    binChunk(chunk, *spillers_[worker], colour_shift_, 0,
+                             fine_intensity ? &intensities[worker] : nullptr);
                   });
     if (fine_intensity) {
       for (const IntensityPercentiles& partial : intensities) first_.intensity.merge(partial);
       colouring_.intensity = first_.intensity.range();
     }
-    std::vector<BinContents> bins(bin_count);
-    parallelFor(threads_, spillers_.size(),
-                [&](std::size_t i, unsigned) { spillers_[i]->groupTail(); });
-    for (auto& spiller : spillers_) spiller->finish(true, bins);
-    return bins;
+    return finishBinning();
   }
 
   // The node of the bin at `level` with key `prefix`, from its points.
@@ -375,6 +445,9 @@ class StreamedPreparer {
     if (bin.count <= bin_points_) {
       const std::span<BinnedPoint> points = buffers.points.resize(bin.count);
       gatherBin(bin, points);
+      if (marked_) {
+        for (BinnedPoint& p : points) p.payload = unmarked(p.payload);
+      }
       return voxelizeNode(points, level, colouring_, buffers, store);
     }
     buffers.points.resize(bin_points_);
@@ -383,7 +456,9 @@ class StreamedPreparer {
       NodeResult node;
       node.levels.resize(options_.depths.size());
       forEachBlock(bin, buffers.points.span(), [&](std::span<const BinnedPoint> block) {
-        for (const BinnedPoint& p : block) node.sum.add(colouring_.pointColour(p.payload));
+        for (const BinnedPoint& p : block) {
+          node.sum.add(colouring_.pointColour(marked_ ? unmarked(p.payload) : p.payload));
+        }
       });
       return node;
     }
@@ -428,7 +503,8 @@ class StreamedPreparer {
     }
     colour_stores_.resize(threads_);  // kept until the model is assembled
     std::atomic<std::uint64_t> done{0};
-    Progress progress("pass 3 of 3, voxelizing", first_.bounds.count, "points");
+    Progress progress(binned_ ? "pass 2 of 2, voxelizing" : "pass 3 of 3, voxelizing",
+                      first_.bounds.count, "points");
     parallelFor(
         threads_, occupied.size(),
         [&](std::size_t i, unsigned worker) {
@@ -467,12 +543,16 @@ class StreamedPreparer {
   fs::path temp_dir_;
   std::uint64_t buffer_points_ = 0;  // per thread, pass 2
   std::uint64_t bin_points_ = 0;     // per thread, voxelizing
-  FirstPass first_;
+  PointTally first_;                 // what the pass that takes the bounds learned
   CubeFit fit_;
   VoxelColouring colouring_;
   int colour_shift_ = 0;  // 8 for 16-bit colour channels
   int bin_level_ = 0;
-  SpillFile spill_{temp_dir_};
+  std::unique_ptr<SpillFile> spill_ = std::make_unique<SpillFile>(temp_dir_);
+  std::optional<CubeFit> assumed_;  // the header box's cube, when the first pass bins on it
+  bool binned_ = false;             // the first pass's bins are the model's (the box held)
+  bool intensity_known_ = false;    // counted exactly in the first pass
+  bool marked_ = false;  // some colours binned as 8-bit before the file's choice was known
   std::vector<std::unique_ptr<BinSpiller>> spillers_;
   std::vector<ColourStore> colour_stores_;  // per thread: the voxels' colours
   std::vector<PointChunk> chunks_;          // per thread: the records being read

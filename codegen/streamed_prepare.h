@@ -7,6 +7,11 @@
 //   pass 2  read every point again (a compressed file's from pass 1's decoded copy on disk,
 //           codegen/decoded_points.h): its Morton key at the finest depth, binned by the key's top
 //           digits into buffers that go to a temporary file as they fill (--memory)
+//   or one pass, when a LAS or LAZ header states a box and nothing is cropped: pass 2's binning
+//           on the cube of the header's box, while tallying what pass 1 would have; when the
+//           points' own bounds give another cube (a header that lies, or loose), or every colour
+//           is 0, the bins are dropped and pass 2 runs on the tally: a second reading, never a
+//           different model
 //   bins    each bin, a node of the octree, sorted and voxelized on its own (in parallel); a bin
 //           too large for a thread's share of the budget is binned again, one level deeper
 //   join    the bins' subtrees joined into each depth's stream, the palette made from the finest
@@ -36,9 +41,13 @@ struct StreamOptions {
   std::uint64_t memory_bytes = kDefaultMemoryBytes;
   unsigned threads = 0;            // 0: every core
   std::filesystem::path temp_dir;  // empty: the system's temporary directory (TMPDIR, else /tmp)
-  // A compressed source's points decoded once, in pass 1, and read back from a temporary file in
-  // pass 2 (when the disk has room for them: else decoded twice). False: decoded in each pass.
+  // When the bounds take a pass of their own (a crop; no header box): a compressed source's
+  // points decoded once, in pass 1, and read back from a temporary file in pass 2 (when the disk
+  // has room for them: else decoded twice). False: decoded in each pass.
   bool decode_once = true;
+  // One pass on the header's box when the source states one (SourceInfo::header_box). False: the
+  // bounds are always taken in a pass of their own.
+  bool header_box = true;
 };
 
 // What the run saw, for octopoint-prepare's summary.
@@ -56,6 +65,8 @@ struct PrepareSummary {
   std::string colour_note;  // e.g. "16-bit LAS colour"; empty if nothing to say
   std::uint64_t spilled_bytes = 0;
   std::uint64_t decoded_kept_bytes = 0;  // pass 1's decoded points kept on disk for pass 2
+  unsigned source_passes = 0;   // how often the source was read (a LAZ chunk decoded): 1 or 2
+  std::string header_box_note;  // why the header's box was tried and not taken; empty if it held
   unsigned threads = 0;
   double seconds = 0;
   // Wall time of: pass 1 (bounds), pass 2 (binning), voxelizing the bins, palette and leaves.

@@ -5,7 +5,7 @@
 # reader with every format, corner and damaged header. PCL writes the PCD/PLY files to compare with.
 add_executable(streamed_tests preparer/las_reader_test.cpp preparer/laz_coder_test.cpp
                preparer/laz_reader_test.cpp preparer/laz_selective_test.cpp
-               preparer/copc_reader_test.cpp
+               preparer/copc_reader_test.cpp preparer/header_box_test.cpp
                preparer/streamed_prepare_test.cpp)
 target_link_libraries(streamed_tests PRIVATE octopoint_prepare octopoint_scan_tools
                       octopoint_test_scans pcl_common pcl_io GTest::gtest_main octopoint_warnings)

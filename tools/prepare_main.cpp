@@ -116,7 +116,9 @@ loaded whole through PCL. The output is the same byte for byte whatever --memory
                         --normals' estimation (PCL, OpenMP) takes at most one per core
   --temp-dir DIR        where the temporary files go (default: $TMPDIR, else /tmp); they are
                         deleted as soon as they are made, so nothing is left behind. A LAZ
-                        scan's points are decoded once and kept there for the second pass
+                        scan is decoded once: in one pass binned on its header's box (checked
+                        against the points: a box that lies costs a second decoding), or,
+                        with --crop or no box in the header, kept there for the second pass
                         (24 to 34 bytes a point) when the disk has room for twice that
   --progress            show progress on stderr (phase, points done, points/s, time left) even
                         when stderr is not a terminal; on a terminal it shows by itself for
@@ -343,11 +345,15 @@ void checkOutputs(const Arguments& args, const octopoint::prepare::PrepareOption
   for (const std::string& name : names) octopoint::cli::checkOutputFile(directory / name);
 }
 
-// ", decoded once (N MB kept on disk for pass 2)" when a compressed scan's points were kept.
-std::string decodedOnce(const octopoint::prepare::PrepareSummary& summary) {
-  if (summary.decoded_kept_bytes == 0) return "";
-  return ", decoded once (" + std::to_string(summary.decoded_kept_bytes >> 20) +
-         " MB kept on disk for pass 2)";
+// How often the points were read: ", decoded once (N MB kept on disk for pass 2)" when a
+// compressed scan's points were kept; ", read once, binned on the header's box" when a LAS or
+// LAZ header's box held (codegen/streamed_prepare.h).
+std::string readOnce(const octopoint::prepare::PrepareSummary& summary) {
+  if (summary.decoded_kept_bytes != 0) {
+    return ", decoded once (" + std::to_string(summary.decoded_kept_bytes >> 20) +
+           " MB kept on disk for pass 2)";
+  }
+  return summary.source_passes == 1 ? ", read once, binned on the header's box" : "";
 }
 
 // One line on how a streamed scan was read.
@@ -365,8 +371,9 @@ std::string describeStream(const octopoint::prepare::SourceInfo& info,
       static_cast<unsigned long long>(summary.points_in_file), summary.threads, summary.seconds,
       static_cast<double>(summary.points_in_file) / summary.seconds / 1e6, phase[0], phase[1],
       phase[2], phase[3], static_cast<unsigned long long>(stream.memory_bytes >> 20),
-      static_cast<unsigned long long>(summary.spilled_bytes >> 20), decodedOnce(summary).c_str());
+      static_cast<unsigned long long>(summary.spilled_bytes >> 20), readOnce(summary).c_str());
   std::string text = line;
+  if (!summary.header_box_note.empty()) text += "  " + summary.header_box_note + "\n";
   if (summary.pieces_read < summary.pieces) {  // COPC: the crop met only some nodes
     std::snprintf(line, sizeof line,
                   "  the crop met %zu of the %zu COPC nodes: %llu points read and decoded\n",

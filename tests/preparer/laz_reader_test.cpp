@@ -42,11 +42,7 @@ class LazReaderTest : public ::testing::Test {
   void TearDown() override { fs::remove_all(dir_); }
 
   fs::path write(const std::string& name, const LasLayout& layout, std::size_t count) {
-    const fs::path path = dir_ / name;
-    LasWriter writer(path, layout);
-    writer.addLandscape(landscape_, count);
-    writer.finish();
-    return path;
+    return testing::writeLandscapeScan(dir_ / name, layout, landscape_, count);
   }
 
   // The LAS and the LAZ file of the same points and layout.

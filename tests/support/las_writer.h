@@ -94,4 +94,14 @@ class LasWriter {
   std::vector<std::uint8_t> copc_pages_;    // the hierarchy pages, the first EVLR's payload
 };
 
+// The landscape's points 0 to count - 1 written to `path` as `layout` says; returns `path`.
+inline std::filesystem::path writeLandscapeScan(const std::filesystem::path& path,
+                                                const LasLayout& layout, const Landscape& landscape,
+                                                std::uint64_t count) {
+  LasWriter writer(path, layout);
+  writer.addLandscape(landscape, count);
+  writer.finish();
+  return path;
+}
+
 }  // namespace octopoint::testing
