@@ -108,8 +108,8 @@ void pruneModel(PreparedModel& model, const PrepareOptions& options, const std::
   // The reaches are the scan's sampling, measured on the levels as they are: what pruning leaves
   // out no eye sees, and measured on what is left, an eye-pruned level's missing back looked like
   // samples lying farther apart, which widened every splat of its perspective frames (and so
-  // changed the frames the pruning keeps the same). Measured first, so that the eyes are judged
-  // with the splats the pruned model will draw.
+  // changed the frames the pruning keeps the same). Measured first, so that the eyes and the
+  // orthographic views are judged with the splats the pruned model will draw.
   recordSampleReaches(model);
   std::vector<std::vector<std::uint8_t>> flags(model.levels.size());
   double eye_seconds = 0;
@@ -133,7 +133,7 @@ void pruneModel(PreparedModel& model, const PrepareOptions& options, const std::
     if (flags[k].empty()) flags[k].assign(keys[k].size(), 0);
     if (!options.visibility_cameras.empty()) {
       const std::vector<std::uint8_t> seen =
-          visibleVoxels(keys[k], level.depth, options.visibility_cameras);
+          visibleVoxels(keys[k], level.depth, options.visibility_cameras, level.sample_reach);
       for (std::size_t i = 0; i < seen.size(); ++i) flags[k][i] |= seen[i];
     }
     level.voxels_before_pruning = level.leaves.size();
