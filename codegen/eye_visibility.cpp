@@ -1,6 +1,7 @@
 #include "codegen/eye_visibility.h"
 
 #include <algorithm>
+#include <cassert>
 #include <limits>
 #include <thread>
 
@@ -82,8 +83,13 @@ struct FrameLevels {
 // One view's frames: for each run of levels and key kind, the nearest keys, then the winners.
 class EyeJudge {
  public:
-  EyeJudge(std::span<const LevelView> levels, std::span<const FrameLevels> frames, bool normals)
-      : levels_(levels), frames_(frames), normals_(normals), tables_(levels.size()) {}
+  EyeJudge(std::span<const LevelView> levels, std::span<const std::int32_t> reaches,
+           std::span<const FrameLevels> frames, bool normals)
+      : levels_(levels),
+        reaches_(reaches),
+        frames_(frames),
+        normals_(normals),
+        tables_(levels.size()) {}
 
   void judge(const PerspectiveView& view, std::vector<std::vector<std::uint8_t>>& visible) {
     // A quarter pixel, as the renderer's perspectiveLayers takes it.
@@ -92,7 +98,9 @@ class EyeJudge {
       std::array<int, format::kMaxLevels> depths{};
       for (std::size_t i = 0; i < frame.count; ++i) {
         const LevelView& level = levels_[frame.first + i];
-        tables_[frame.first + i] = perspectiveWalkTables(view, level.depth, max_error);
+        // Each level's splats as wide as the renderer draws them (its stored sample reach).
+        tables_[frame.first + i] =
+            perspectiveWalkTables(view, level.depth, max_error, reaches_[frame.first + i]);
         depths[i] = level.depth;
       }
       const PerspectiveDetail detail =
@@ -127,6 +135,7 @@ class EyeJudge {
 
  private:
   std::span<const LevelView> levels_;
+  std::span<const std::int32_t> reaches_;  // Q4 footprints, one per level
   std::span<const FrameLevels> frames_;
   bool normals_;
   std::vector<PerspectiveWalkTables> tables_;  // by level, for the view being judged
@@ -136,10 +145,13 @@ class EyeJudge {
 }  // namespace
 
 std::vector<std::vector<std::uint8_t>> visibleFromEyes(std::span<const LevelView> levels,
+                                                       std::span<const std::int32_t> sample_reaches,
                                                        std::span<const PerspectiveView> views) {
+  assert(sample_reaches.size() == levels.size());
   std::vector<std::vector<std::uint8_t>> visible;
   for (const LevelView& level : levels) visible.emplace_back(level.leaves.size(), 0);
-  // The levels the renderer draws (ascending: a prefix), the densely sampled ones together.
+  // The levels the renderer draws (ascending: a prefix), the densely sampled ones together,
+  // counted as the renderer counts them: a depth its reach draws whole is dense too.
   std::size_t drawable = 0;
   std::vector<std::uint64_t> counts;
   while (drawable < levels.size() && levels[drawable].depth <= kMaxRenderDepth) {
@@ -148,7 +160,7 @@ std::vector<std::vector<std::uint8_t>> visibleFromEyes(std::span<const LevelView
   }
   for (std::size_t i = drawable; i < levels.size(); ++i) visible[i].assign(visible[i].size(), 1);
   if (drawable == 0 || views.empty()) return visible;
-  std::vector<FrameLevels> frames = {{0, denseDepthCount(counts)}};
+  std::vector<FrameLevels> frames = {{0, denseDepthCount(counts, sample_reaches.first(drawable))}};
   for (std::size_t i = frames[0].count; i < drawable; ++i) frames.push_back({i, 1});
   const bool normals = std::all_of(levels.begin(), levels.end(), [](const LevelView& level) {
     return !level.leaves.empty() && level.normals.size() == level.leaves.size();
@@ -157,7 +169,8 @@ std::vector<std::vector<std::uint8_t>> visibleFromEyes(std::span<const LevelView
   const unsigned threads = std::clamp(std::thread::hardware_concurrency(), 1u, kMaxThreads);
   std::vector<std::vector<std::vector<std::uint8_t>>> seen(threads, visible);
   std::vector<EyeJudge> judges;
-  for (unsigned t = 0; t < threads; ++t) judges.emplace_back(levels, frames, normals);
+  for (unsigned t = 0; t < threads; ++t)
+    judges.emplace_back(levels, sample_reaches, frames, normals);
   Progress progress("pruning for the eyes", views.size());
   parallelFor(threads, views.size(), [&](std::size_t view, unsigned thread) {
     judges[thread].judge(views[view], seen[thread]);

@@ -55,21 +55,25 @@ void keepAtLeast(std::vector<std::uint8_t>& flags, std::size_t wanted) {
   }
 }
 
-// Keeps the renderer's densely sampled depths what they were unpruned: each dense depth at least
-// kDenseGrowth times its coarser neighbour's kept voxels, and the first sparse depth (if any)
-// below that.
+// Keeps the renderer's densely sampled depths what they were unpruned (counted with the stored
+// reaches, which pruning leaves as they are): each dense depth at one footprint at least
+// kDenseGrowth times its coarser neighbour's kept voxels (a depth whose reach draws it whole is
+// dense whatever its count), and the first sparse depth (if any) below that.
 void keepDenseDepths(const PreparedModel& model, std::vector<std::vector<std::uint8_t>>& flags) {
   // A depth no eye draws (too coarse for all of them) keeps one voxel: a model's depths are not
   // empty, and it is hidden or not drawn in every eye's frame.
   for (std::vector<std::uint8_t>& level : flags) keepAtLeast(level, 1);
   std::vector<std::uint64_t> counts;
+  std::vector<std::int32_t> reaches;
   for (const PreparedLevel& level : model.levels) {
     if (level.depth > kMaxRenderDepth) break;
     counts.push_back(level.leaves.size());
+    reaches.push_back(level.sample_reach);
   }
-  const std::size_t dense = denseDepthCount(counts);
-  for (std::size_t i = 1; i < dense; ++i)
-    keepAtLeast(flags[i], kDenseGrowth * countOf(flags[i - 1]));
+  const std::size_t dense = denseDepthCount(counts, reaches);
+  for (std::size_t i = 1; i < dense; ++i) {
+    if (reaches[i] == kOneSampleReach) keepAtLeast(flags[i], kDenseGrowth * countOf(flags[i - 1]));
+  }
   if (dense < counts.size()) {
     const std::size_t sparse = countOf(flags[dense]);
     keepAtLeast(flags[dense - 1], sparse / kDenseGrowth + 1);
@@ -101,15 +105,24 @@ void pruneModel(PreparedModel& model, const PrepareOptions& options, const std::
   if (model.levels.empty() ||
       (options.visibility_cameras.empty() && options.visibility_eyes.empty()))
     return;
+  // The reaches are the scan's sampling, measured on the levels as they are: what pruning leaves
+  // out no eye sees, and measured on what is left, an eye-pruned level's missing back looked like
+  // samples lying farther apart, which widened every splat of its perspective frames (and so
+  // changed the frames the pruning keeps the same). Measured first, so that the eyes and the
+  // orthographic views are judged with the splats the pruned model will draw.
+  recordSampleReaches(model);
   std::vector<std::vector<std::uint8_t>> flags(model.levels.size());
   double eye_seconds = 0;
   if (!options.visibility_eyes.empty()) {
     const auto start = std::chrono::steady_clock::now();
     const std::vector<PerspectiveView> views = eyeViews(model, options, path);
     std::vector<LevelView> levels;
-    for (const PreparedLevel& level : model.levels)
+    std::vector<std::int32_t> reaches;
+    for (const PreparedLevel& level : model.levels) {
       levels.push_back({level.depth, level.nodes, level.leaves, level.normals, {}});
-    flags = visibleFromEyes(levels, views);
+      reaches.push_back(level.sample_reach);
+    }
+    flags = visibleFromEyes(levels, reaches, views);
     eye_seconds = secondsSince(start) / static_cast<double>(model.levels.size());
   }
   std::vector<std::vector<std::uint64_t>> keys;
@@ -120,7 +133,7 @@ void pruneModel(PreparedModel& model, const PrepareOptions& options, const std::
     if (flags[k].empty()) flags[k].assign(keys[k].size(), 0);
     if (!options.visibility_cameras.empty()) {
       const std::vector<std::uint8_t> seen =
-          visibleVoxels(keys[k], level.depth, options.visibility_cameras);
+          visibleVoxels(keys[k], level.depth, options.visibility_cameras, level.sample_reach);
       for (std::size_t i = 0; i < seen.size(); ++i) flags[k][i] |= seen[i];
     }
     level.voxels_before_pruning = level.leaves.size();
@@ -129,11 +142,6 @@ void pruneModel(PreparedModel& model, const PrepareOptions& options, const std::
     level.pruning_seconds = secondsSince(start) + eye_seconds;
   }
   if (!options.visibility_eyes.empty()) keepDenseDepths(model, flags);
-  // The reaches are the scan's sampling, measured on the levels as they were: what pruning leaves
-  // out no eye sees, and measured on what is left, an eye-pruned level's missing back looked like
-  // samples lying farther apart, which widened every splat of its perspective frames (and so
-  // changed the frames the pruning keeps the same).
-  recordSampleReaches(model);
   for (std::size_t k = 0; k < model.levels.size(); ++k) {
     const auto start = std::chrono::steady_clock::now();
     keepFlagged(model.levels[k], keys[k], flags[k], path);

@@ -87,12 +87,14 @@ void markWinners(const LevelView& level, const FrameSetup& setup,
 }  // namespace
 
 std::vector<std::uint8_t> visibleVoxels(std::span<const std::uint64_t> sorted_keys, int depth,
-                                        std::span<const Camera> cameras) {
+                                        std::span<const Camera> cameras,
+                                        std::int32_t sample_reach) {
   // Checked here, built again per view by the workers: a set-up is 1.6 KB, and a scene may have
   // 200,000 views (codegen/scene_views.h).
   for (std::size_t i = 0; i < cameras.size(); ++i) {
     FrameSetup setup;
-    const CameraError error = buildFrameSetup(cameras[i], depth, kDefaultFractionBits, &setup);
+    const CameraError error =
+        buildFrameSetup(cameras[i], depth, kDefaultFractionBits, &setup, sample_reach);
     if (error != CameraError::kNone) {
       throw PrepareError("scene view " + std::to_string(i) + " at depth " + std::to_string(depth) +
                          ": " + describe(error));
@@ -110,8 +112,8 @@ std::vector<std::uint8_t> visibleVoxels(std::span<const std::uint64_t> sorted_ke
   Progress progress("pruning depth " + std::to_string(depth), cameras.size());
   parallelFor(threads, cameras.size(), [&](std::size_t view, unsigned thread) {
     // Every camera was accepted above, before any thread started.
-    if (buildFrameSetup(cameras[view], depth, kDefaultFractionBits, &setups[thread]) !=
-        CameraError::kNone)
+    if (buildFrameSetup(cameras[view], depth, kDefaultFractionBits, &setups[thread],
+                        sample_reach) != CameraError::kNone)
       return;
     markWinners(level, setups[thread], nearest[thread], visible[thread]);
     if (thread == 0) progress.update(view);

@@ -15,9 +15,12 @@
 namespace octopoint::prepare {
 
 // For the voxels `sorted_keys` (Morton keys at `depth`, ascending, as codegen/voxelizer.h makes
-// them): 1 for each voxel visible from some camera, else 0. Uses up to two threads. Throws
-// PrepareError when a camera is refused at this depth (a zoom too large to fit 32 bits).
+// them): 1 for each voxel visible from some camera, else 0, the splats widened by the level's
+// stored `sample_reach` (Q4, kOneSampleReach..kMaxSampleReach) as the renderer widens them
+// (buildFrameSetup). Uses up to two threads. Throws PrepareError when a camera is refused at this
+// depth (a zoom too large to fit 32 bits).
 std::vector<std::uint8_t> visibleVoxels(std::span<const std::uint64_t> sorted_keys, int depth,
-                                        std::span<const Camera> cameras);
+                                        std::span<const Camera> cameras,
+                                        std::int32_t sample_reach = kOneSampleReach);
 
 }  // namespace octopoint::prepare

@@ -46,7 +46,11 @@ class SweepDrawer {
     const bool after = config == Config::kAfter || config == Config::kAfterSmooth;
     const LevelView* level = after ? autoLevel(after_, camera) : &before_.finestLevel();
     if (level == nullptr) throw cli::Error("depth auto: the camera is refused at every depth");
-    const CameraError error = buildFrameSetup(camera, level->depth, kDefaultFractionBits, &setup_);
+    // The after model's splats widened by the depth's stored sample reach, as octopoint-render
+    // draws them (depth auto chose the depth counting that reach).
+    const CameraError error =
+        buildFrameSetup(camera, level->depth, kDefaultFractionBits, &setup_,
+                        after ? after_.sampleReachOfDepth(level->depth) : kOneSampleReach);
     if (error != CameraError::kNone) throw cli::Error(std::string("camera: ") + describe(error));
     if (!after) setup_.splat = SplatFootprint{};  // one pixel per leaf, as before
     if (config == Config::kAfterSmooth) {
@@ -65,9 +69,10 @@ class SweepDrawer {
     for (Config config : {Config::kBefore, Config::kAfter}) {
       const LevelView* level =
           config == Config::kAfter ? autoLevel(after_, camera) : &before_.finestLevel();
-      CameraError error =
-          level == nullptr ? CameraError::kOverflow
-                           : buildFrameSetup(camera, level->depth, kDefaultFractionBits, &setup_);
+      CameraError error = level == nullptr
+                              ? CameraError::kOverflow
+                              : buildFrameSetup(camera, level->depth, kDefaultFractionBits, &setup_,
+                                                model(config).sampleReachOfDepth(level->depth));
       std::string what = configName(config);
       if (error == CameraError::kNone) {
         error = buildFrameSetup(coverCamera(camera), model(config).finestLevel().depth,
