@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cassert>
+#include <tuple>
 
 #include "renderer/perspective_splat.h"
 
@@ -218,6 +219,8 @@ class PerspectivePlot {
     }
     return false;
   }
+  // Whether none of the subtree's leaves writes a pixel of this frame (or band).
+  bool offScreen(const AffineSubtree& subtree) const { return pixelsOf(subtree).empty(); }
   // The subtree's leaves may have written their pixels.
   void drawn(const AffineSubtree& subtree) {
     const PixelBox box = pixelsOf(subtree);
@@ -233,33 +236,45 @@ class PerspectivePlot {
     high_x_ = half_x - mid;
     low_y_ = -half_y - mid + one - 1;
     high_y_ = half_y - mid;
+    enterPart(subtree);
+  }
+  // A part of the subtree entered (a node of it: every leaf of the part within `part`'s reaches
+  // of its centre): whether its leaves may come unchecked_, corners_ and narrow_ (narrowLeaf),
+  // which it returns; enterAffine's subtree is its own first part. A part entered inside a
+  // clipped subtree is left by leavePart, which restores the subtree's flags.
+  bool enterPart(const AffineSubtree& part) {
+    saved_ = {unchecked_, corners_, narrow_};
+    const std::int64_t one = std::int64_t{1} << fraction_bits_;
+    const std::int64_t half_x = part.half_x + padding_, half_y = part.half_y + padding_;
     // Every leaf's splat (p +- half, or p's own pixel) on the screen, its depth key below the
     // largest: each is within the reaches of the centre.
-    const std::int64_t x = subtree.centre.x, y = subtree.centre.y, z = subtree.centre.z;
-    const std::int64_t margin_x = subtree.reach_x + half_x + one;
-    const std::int64_t margin_y = subtree.reach_y + half_y + one;
+    const std::int64_t x = part.centre.x, y = part.centre.y, z = part.centre.z;
+    const std::int64_t margin_x = part.reach_x + half_x + one;
+    const std::int64_t margin_y = part.reach_y + half_y + one;
     unchecked_ = x - margin_x >= 0 && x + margin_x < (std::int64_t{width_} << fraction_bits_) &&
                  y - margin_y >= 0 && y + margin_y < (std::int64_t{height_} << fraction_bits_) &&
-                 z - subtree.reach_z >= 0 &&
-                 (z + subtree.reach_z) >> depth_shift_ <= FrameView::kMaxDepthKey;
+                 z - part.reach_z >= 0 &&
+                 (z + part.reach_z) >> depth_shift_ <= FrameView::kMaxDepthKey;
     // Where high - low < 1 pixel, no leaf's span is more than two pixels on that axis: then every
     // leaf takes the four-corner path, without the test per leaf which path (a coin toss where
     // spans of two and three pixels mix).
     corners_ = unchecked_ && high_x_ - low_x_ < one && high_y_ - low_y_ < one;
-    // In 32 bits (narrowLeaf) where every position of the subtree and every span bound lies in
+    // In 32 bits (narrowLeaf) where every position of the part and every span bound lies in
     // [0, 2^31): unchecked_ puts x and y, each +- reach and half extent, within [0, W << F) and
     // [0, H << F), below 2^31 where the frame's Q(32-F).F sides are (all but F > 18 on the largest
     // frames); the depth takes z + reach_z below 2^31 too (Q.24: 128 cube edges).
     narrow_ = unchecked_ && (std::int64_t{width_} << fraction_bits_) <= INT32_MAX &&
               (std::int64_t{height_} << fraction_bits_) <= INT32_MAX &&
-              z + subtree.reach_z <= INT32_MAX;
+              z + part.reach_z <= INT32_MAX;
     if (narrow_) {
       low_x32_ = static_cast<std::int32_t>(low_x_);
       high_x32_ = static_cast<std::int32_t>(high_x_);
       low_y32_ = static_cast<std::int32_t>(low_y_);
       high_y32_ = static_cast<std::int32_t>(high_y_);
     }
+    return narrow_;
   }
+  void leavePart() { std::tie(unchecked_, corners_, narrow_) = saved_; }
   void leaveAffine() { unchecked_ = corners_ = narrow_ = in_affine_ = false; }
   bool narrowAffine() const { return narrow_; }
 
@@ -427,6 +442,7 @@ class PerspectivePlot {
   bool unchecked_ = false;
   bool corners_ = false;  // unchecked_, and no span of the subtree wider than 2 x 2 pixels
   bool narrow_ = false;   // unchecked_, and the subtree's positions within 32 bits (enterAffine)
+  std::tuple<bool, bool, bool> saved_{};  // the three above as enterPart found them
   std::int64_t low_x_ = 0, high_x_ = 0, low_y_ = 0, high_y_ = 0;
   std::int32_t low_x32_ = 0, high_x32_ = 0, low_y32_ = 0, high_y32_ = 0;  // the same, narrow_
   OcclusionTiles* occlusion_;

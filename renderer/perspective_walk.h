@@ -26,61 +26,11 @@
 #include "renderer/perspective_depth.h"
 #include "renderer/perspective_detail.h"
 #include "renderer/perspective_extent.h"
+#include "renderer/perspective_walk_parts.h"
 #include "renderer/perspective_walk_tables.h"
 #include "renderer/upper_tree_index.h"
 
 namespace octopoint {
-
-// A leaf as the walk hands it over: its index in the level's leaf stream (and payload: palette
-// index, and normal index << 8 when the level has normals and the walk reads them), its screen
-// position in Q(32-F).F pixels (int64: a leaf may lie far off the screen) and its camera-space
-// depth in Q.24 cube edges.
-struct PerspectiveLeaf {
-  std::size_t index = 0;
-  std::int64_t x = 0;
-  std::int64_t y = 0;
-  std::int64_t z = 0;
-  // Half the voxel's projected extent per screen axis, Q(32-F).F: from the affine map of the
-  // subtree it was drawn with, or at the leaf itself (0 when even that cannot be had).
-  std::int64_t half_x = 0;
-  std::int64_t half_y = 0;
-};
-
-// A subtree the walk draws from one affine map, announced to a sink that has enterAffine (and
-// leaveAffine, called when its last leaf was handed over): every leaf it hands over meanwhile
-// lies within `reach_x`, `reach_y` (Q(32-F).F) and `reach_z` (Q.24) of `centre`, and has the
-// half extents `half_x`, `half_y`. A sink may then drop what it checks per leaf.
-struct AffineSubtree {
-  Point3<std::int64_t> centre;
-  std::int64_t reach_x = 0, reach_y = 0, reach_z = 0;
-  std::int64_t half_x = 0, half_y = 0;
-};
-
-// The rows of one band of a frame, as the eye sees them: every point drawn into the band has a
-// camera-space y / z within [top_q30, bottom_q30] (Q.30; the band's rows widened by a margin, so
-// that a subtree passed over writes nothing into them).
-struct PerspectiveBand {
-  std::int64_t top_q30 = 0;
-  std::int64_t bottom_q30 = 0;
-};
-
-// What a walk may use besides its level's stream, each optional.
-struct PerspectiveWalkParts {
-  // Random access to the stream's upper levels: above its bottom the walk visits a node's children
-  // nearest the eye first (so that occlusion culling finds the near surfaces drawn first) and
-  // passes over a subtree without reading its bytes.
-  const UpperTreeIndex* index = nullptr;
-  // Detail by distance: this walk draws only the parts of the frame its depth is chosen for
-  // (DetailPass::detail null: all of it).
-  DetailPass detail;
-  // Occlusion culling: the sink has hidden(const AffineSubtree&) and drawn(const AffineSubtree&);
-  // subtrees drawn from an affine map, and their leaves' grandparents, are asked whether they
-  // are hidden before they are drawn, and say where they drew.
-  bool cull = false;
-  // A band of the frame's rows (renderer/perspective_bands.h): subtrees wholly above or below it
-  // as the eye sees it are passed over too. Null: the whole frame.
-  const PerspectiveBand* band = nullptr;
-};
 
 // Calls sink(const PerspectiveLeaf&) for every leaf in front of the near plane whose subtree
 // meets the frustum (and that parts.detail gives this depth), in stream order below the index's
@@ -126,9 +76,21 @@ class PerspectiveWalk {
   // it) lies in [0, 2^31) on each axis, and then its leaves come as narrowLeaf(index, x, y, z)
   // (Q(32-F).F, depth Q.24), with the AffineSubtree's half extents: on a Cortex-M0+ each 64-bit
   // operation of the walk and the plot is several instructions or a library call.
-  static constexpr bool kSinkNarrows = requires(Sink & sink) {
+  // Such a sink also takes a part of a clipped subtree (a node of it, its AffineSubtree) in 32
+  // bits: enterPart says whether it may (as narrowAffine), leavePart restores the subtree's.
+  static constexpr bool kSinkNarrows = requires(Sink & sink, const AffineSubtree& part) {
     { sink.narrowAffine() } -> std::same_as<bool>;
     sink.narrowLeaf(std::size_t{0}, std::int32_t{0}, std::int32_t{0}, std::int32_t{0});
+    { sink.enterPart(part) } -> std::same_as<bool>;
+    sink.leavePart();
+  };
+
+  // A sink that says whether a part of a subtree drawn from one affine map writes nothing on its
+  // screen (offScreen(const AffineSubtree&): every leaf of it within the reaches of its centre,
+  // and each leaf's splat, lies off the screen): in a band the walk passes over those parts of a
+  // subtree that straddles the band's edge, instead of handing their leaves over to be clipped.
+  static constexpr bool kSinkClips = requires(Sink & sink, const AffineSubtree& subtree) {
+    { sink.offScreen(subtree) } -> std::same_as<bool>;
   };
 
   enum class Step : std::uint8_t { kPass, kAffine, kDescend };
@@ -205,7 +167,8 @@ class PerspectiveWalk {
 
   // A leaf met in stream order, its centre in Q.24.
   void leaf(const CameraPoint& centre, DetailState& state) {
-    if (state.committed || parts_.detail.drawsLeaf(tables_.depth, centre.z, state)) {
+    if ((state.committed || parts_.detail.drawsLeaf(tables_.depth, centre.z, state)) &&
+        !leafOutsideBand(centre)) {
       // The map at the leaf gives its splat's extent and its position (its centre: within half
       // a unit in the last place plus f * 2^-31 pixel of the exact projection, as project's);
       // where no map fits (an axis vector past int64), project alone, and no extent.
@@ -220,6 +183,17 @@ class PerspectiveWalk {
       }
     }
     ++leaf_;
+  }
+
+  // In a band, a leaf whose box (with its splat's margin) the eye sees wholly above or below the
+  // band is passed over before its projection (three divisions), as judge passes over a node:
+  // a leaf parent that straddles the band's edge hands over only the leaves that may reach it.
+  // The whole frame projects every leaf of a leaf parent that meets the frustum (its count of
+  // points handed over is unchanged).
+  bool leafOutsideBand(const CameraPoint& centre) const {
+    return parts_.band != nullptr &&
+           outsideBand(centre, tables_.reach[static_cast<std::size_t>(tables_.depth)] +
+                                   tables_.splat_margin);
   }
 
   // A node above the index's bottom, by its index entry: its children nearest the eye first.
@@ -264,9 +238,11 @@ class PerspectiveWalk {
   // Wholly behind the near plane, or wholly beyond one of the four side planes: every point of
   // the box has x >= centre.x - reach and z <= centre.z + reach, so centre.x - reach >
   // slope * (centre.z + reach) puts it right of the plane x = slope * z whatever its z.
+  // In a band the band's two products come first: most nodes a band judges lie inside the frame
+  // and outside the band, and then the sides' four are not made.
   bool outsideFrustum(const CameraPoint& c, std::int64_t reach) const {
-    return outsideFrustumSides(tables_, c, reach, view_.camera.near) ||
-           (parts_.band != nullptr && outsideBand(c, reach));
+    return (parts_.band != nullptr && outsideBand(c, reach)) ||
+           outsideFrustumSides(tables_, c, reach, view_.camera.near);
   }
 
   // Wholly above the band (every point has y < top * z: y <= c.y + reach, and top * z is at
@@ -282,6 +258,10 @@ class PerspectiveWalk {
   }
 
   void skipChildren(int level, std::uint8_t mask) {
+    if (level + 1 == tables_.depth) {  // a leaf parent: its leaves have no bytes of their own
+      leaf_ += static_cast<std::size_t>(childCount(mask));
+      return;
+    }
     for (unsigned k = 0; k < 8; ++k) {
       if (mask & (1u << k)) skipNode(level + 1);
     }
@@ -318,6 +298,10 @@ class PerspectiveWalk {
         level, Point3<std::int64_t>{affine.centre.x, affine.centre.y, affine.centre.z});
     if constexpr (kSinkCulls) {
       if (parts_.cull && sink_.hidden(subtree)) return false;
+    }
+    if constexpr (kSinkClips) {
+      // In a band: a subtree the eye's box test let through may still write nothing in it.
+      if (parts_.band != nullptr && sink_.offScreen(subtree)) return false;
     }
     const auto& a = affine.axis;
     // Children 0 to 3 (x's sign -): -a0 -+ a1 -+ a2.
@@ -369,9 +353,9 @@ class PerspectiveWalk {
                   const AffineSubtree& subtree, const ModelPoint& model_centre) {
     const Point3<Int> centre{static_cast<Int>(subtree.centre.x), static_cast<Int>(subtree.centre.y),
                              static_cast<Int>(subtree.centre.z)};
+    affine_level_ = level;
     if constexpr (kSinkCulls) {
       if (parts_.cull) {
-        affine_level_ = level;
         if (indexed != nullptr) {
           visitAffineIndexed<Int>(level, *indexed, centre, model_centre);
         } else {
@@ -390,9 +374,9 @@ class PerspectiveWalk {
     }
   }
 
-  template <typename Int>
-  const std::array<Point3<Int>, 8>& screenOffsets(int level) const {
-    if constexpr (sizeof(Int) == sizeof(std::int32_t)) {
+  template <typename Offset>
+  const std::array<Point3<Offset>, 8>& screenOffsets(int level) const {
+    if constexpr (sizeof(Offset) == sizeof(std::int32_t)) {
       return narrow_offset_[static_cast<std::size_t>(level)];
     } else {
       return screen_offset_[static_cast<std::size_t>(level)];
@@ -416,15 +400,37 @@ class PerspectiveWalk {
   // A node of a subtree drawn from its affine map, at `p`, its children `mask`: set-bit
   // iteration over them, and a leaf parent hands its leaves over in one loop (no call per leaf).
   // kCull: each leaves' grandparent (below the subtree's root) is first asked whether it is
-  // hidden, and says where it drew.
-  template <bool kCull, typename Int>
+  // hidden, and says where it drew. Positions in Int, the level's vectors read as Offset (int64
+  // vectors read as int32 in a part of a clipped subtree that is narrow: below).
+  template <bool kCull, typename Int, typename Offset = Int>
   void visitAffine(int level, unsigned mask, const Point3<Int>& p) {
-    const auto& offsets = screenOffsets<Int>(level);
+    if constexpr (kSinkClips && kSinkNarrows && sizeof(Int) == sizeof(std::int64_t)) {
+      // In a band, a subtree drawn in 64 bits is one the plot clips (but for frames too large
+      // for narrowAffine). Below its root (drawAffine asked for that), a node that writes
+      // nothing in the band is passed over, its leaves not handed over; a node whose leaves all
+      // lie within the band is drawn as narrowAffine's subtrees are (its positions and vectors,
+      // within its reach of it, fit 32 bits as theirs do: the same sums, so the same leaves).
+      if (parts_.band != nullptr && level != affine_level_) {
+        const AffineSubtree node = affineSubtree(level, p);
+        if (sink_.offScreen(node)) {
+          skipChildren(level, static_cast<std::uint8_t>(mask));
+          return;
+        }
+        const bool narrow = sink_.enterPart(node);
+        if (narrow) {
+          visitAffine<kCull, std::int32_t, std::int64_t>(level, mask, narrowed(p));
+        }
+        sink_.leavePart();
+        if (narrow) return;
+      }
+    }
+    const auto& offsets = screenOffsets<Offset>(level);
     if (level + 1 == tables_.depth) {
       for (unsigned bits = mask; bits != 0; bits &= bits - 1) {
-        const Point3<Int>& d = offsets[lowestChild(bits)];
+        const Point3<Offset>& d = offsets[lowestChild(bits)];
         if constexpr (sizeof(Int) == sizeof(std::int32_t)) {
-          sink_.narrowLeaf(leaf_++, p.x + d.x, p.y + d.y, p.z + d.z);
+          sink_.narrowLeaf(leaf_++, p.x + static_cast<Int>(d.x), p.y + static_cast<Int>(d.y),
+                           p.z + static_cast<Int>(d.z));
         } else {
           sink_(PerspectiveLeaf{leaf_++, p.x + d.x, p.y + d.y, p.z + d.z, half_.x, half_.y});
         }
@@ -440,7 +446,8 @@ class PerspectiveWalk {
         }
         for (unsigned bits = mask; bits != 0; bits &= bits - 1) {
           const unsigned child_mask = *node_++;
-          visitAffine<kCull>(level + 1, child_mask, add(p, offsets[lowestChild(bits)]));
+          visitAffine<kCull, Int, Offset>(level + 1, child_mask,
+                                          add(p, offsets[lowestChild(bits)]));
         }
         sink_.drawn(node);
         return;
@@ -448,7 +455,7 @@ class PerspectiveWalk {
     }
     for (unsigned bits = mask; bits != 0; bits &= bits - 1) {
       const unsigned child_mask = *node_++;
-      visitAffine<kCull>(level + 1, child_mask, add(p, offsets[lowestChild(bits)]));
+      visitAffine<kCull, Int, Offset>(level + 1, child_mask, add(p, offsets[lowestChild(bits)]));
     }
   }
 
@@ -491,9 +498,16 @@ class PerspectiveWalk {
     return {centre.x + ((k & 4) ? step : -step), centre.y + ((k & 2) ? step : -step),
             centre.z + ((k & 1) ? step : -step)};
   }
-  template <typename Int>
-  static Point3<Int> add(const Point3<Int>& a, const Point3<Int>& b) {
-    return {static_cast<Int>(a.x + b.x), static_cast<Int>(a.y + b.y), static_cast<Int>(a.z + b.z)};
+  // a + b in a's type (b's vectors fit it: int64 vectors of a narrow part read as int32).
+  template <typename Int, typename Offset>
+  static Point3<Int> add(const Point3<Int>& a, const Point3<Offset>& b) {
+    return {static_cast<Int>(a.x + static_cast<Int>(b.x)),
+            static_cast<Int>(a.y + static_cast<Int>(b.y)),
+            static_cast<Int>(a.z + static_cast<Int>(b.z))};
+  }
+  static Point3<std::int32_t> narrowed(const Point3<std::int64_t>& p) {
+    return {static_cast<std::int32_t>(p.x), static_cast<std::int32_t>(p.y),
+            static_cast<std::int32_t>(p.z)};
   }
   static Point3<std::int64_t> sub(const Point3<std::int64_t>& a, const Point3<std::int64_t>& b) {
     return {a.x - b.x, a.y - b.y, a.z - b.z};
