@@ -129,6 +129,7 @@ void sampleCovering(const CellGrid& g, const CellBuildOptions& options, SceneRen
   sampling.ground = options.ground;
   sampling.ground_y = options.ground_y;
   sampling.radii = options.radii;
+  sampling.depth_windows = options.depth_windows;
   OcclusionSampler sampler(renderer, sampling);
   build->side = sampler.side();
   build->rho = sampler.rho();
