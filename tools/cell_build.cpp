@@ -129,6 +129,7 @@ void sampleCovering(const CellGrid& g, const CellBuildOptions& options, SceneRen
   sampling.ground = options.ground;
   sampling.ground_y = options.ground_y;
   sampling.radii = options.radii;
+  sampling.depth_windows = options.depth_windows;
   OcclusionSampler sampler(renderer, sampling);
   build->side = sampler.side();
   build->rho = sampler.rho();
@@ -223,8 +224,9 @@ CellBuild buildCells(std::span<const ModelView* const> models,
   SceneError error;
   SceneRenderer renderer(models, instances, &error);
   if (error != SceneError::kNone || !gridOf(instances, options, &build.grid)) return {};
-  if (options.eps > 0 && !erosionFits({options.eps, options.near_occluder, options.face}))
-    return {};
+  OcclusionSampling fitting{options.eps, options.near_occluder, options.face};
+  fitting.depth_windows = options.depth_windows;
+  if (options.eps > 0 && !erosionFits(fitting)) return {};
   const CellGrid& g = build.grid;
   const std::size_t n = instances.size(), cells = g.cellCount();
   std::vector<std::uint8_t> seen(cells * n);  // per cell, per instance

@@ -51,6 +51,8 @@ struct CellBuildOptions {
   bool ground = false;
   std::int64_t ground_y = 0;
   bool radii = false;  // OcclusionSampling::radii: the erosion narrower towards a face's centre
+  // OcclusionSampling::depth_windows: each window sized by the nearest depth in it.
+  bool depth_windows = false;
 };
 
 struct CellBuild {

@@ -1,6 +1,7 @@
 #include "tools/cell_occlusion.h"
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <numbers>
 
@@ -104,76 +105,183 @@ void crackLine(const std::uint32_t* words, std::size_t stride, std::int32_t n,
 
 namespace {
 
-// map[i] = the largest of `open` over the square of radius[i] pixels around pixel i, kEmpty where
-// it leaves the face: a sparse table of the maxima over squares of 2^k pixels (k up to
-// log2(2 rho + 1): levelsOf), each window the maximum of four such squares at its corners.
-// `levels`: levelsOf(rho) x width x height words.
+// Sparse tables of the maxima (and minima) over squares of 2^k pixels, k up to log2(2 rho + 1)
+// (levelsOf): a square window of any radius up to rho is the largest (smallest) of four such
+// squares at its corners.
 int levelsOf(int rho) {
   int top = 0;
   while ((2 << top) <= 2 * rho + 1) ++top;
   return top + 1;
 }
 
-void variableMax(const std::uint32_t* open, std::int32_t width, std::int32_t height,
-                 std::span<const std::uint8_t> radius, int rho, std::uint32_t* map,
-                 std::uint32_t* levels) {
+// `levels`: levelsOf(rho) x width x height words, level 0 `in`, level k the `pick` (max or min)
+// of four squares of level k - 1.
+template <typename Pick>
+void buildLevels(const std::uint32_t* in, std::int32_t width, std::int32_t height, int rho,
+                 std::uint32_t* levels, Pick pick) {
   const std::size_t w = static_cast<std::size_t>(width),
                     pixels = w * static_cast<std::size_t>(height);
-  const int top = levelsOf(rho) - 1;
-  std::copy(open, open + pixels, levels);
-  for (int k = 1; k <= top; ++k) {
+  std::copy(in, in + pixels, levels);
+  for (int k = 1; k < levelsOf(rho); ++k) {
     const std::uint32_t* below = levels + pixels * static_cast<std::size_t>(k - 1);
     std::uint32_t* level = levels + pixels * static_cast<std::size_t>(k);
-    const std::int32_t half = 1 << (k - 1);
-    for (std::int32_t y = 0; y + 2 * half <= height; ++y) {
-      for (std::int32_t x = 0; x + 2 * half <= width; ++x) {
+    const std::size_t half = std::size_t{1} << (k - 1), down = half * w;
+    for (std::int32_t y = 0; y + 2 * static_cast<std::int32_t>(half) <= height; ++y) {
+      for (std::int32_t x = 0; x + 2 * static_cast<std::int32_t>(half) <= width; ++x) {
         const std::size_t i = static_cast<std::size_t>(y) * w + static_cast<std::size_t>(x);
-        const std::size_t down = static_cast<std::size_t>(half) * w;
         level[i] =
-            std::max(std::max(below[i], below[i + static_cast<std::size_t>(half)]),
-                     std::max(below[i + down], below[i + down + static_cast<std::size_t>(half)]));
+            pick(pick(below[i], below[i + half]), pick(below[i + down], below[i + down + half]));
       }
-    }
-  }
-  for (std::int32_t y = 0; y < height; ++y) {
-    for (std::int32_t x = 0; x < width; ++x) {
-      const std::size_t i = static_cast<std::size_t>(y) * w + static_cast<std::size_t>(x);
-      const std::int32_t r = radius[i];
-      if (x - r < 0 || y - r < 0 || x + r >= width || y + r >= height) {
-        map[i] = kEmpty;
-        continue;
-      }
-      int k = 0;
-      while ((2 << k) <= 2 * r + 1) ++k;
-      const std::int32_t far = 2 * r + 1 - (1 << k);  // the corner squares' offset
-      const std::uint32_t* level = levels + pixels * static_cast<std::size_t>(k);
-      const auto at = [&](std::int32_t px, std::int32_t py) {
-        return level[static_cast<std::size_t>(py) * w + static_cast<std::size_t>(px)];
-      };
-      map[i] = std::max(std::max(at(x - r, y - r), at(x - r + far, y - r)),
-                        std::max(at(x - r, y - r + far), at(x - r + far, y - r + far)));
     }
   }
 }
 
+// The `pick` of the square of radius r around (x, y) (inside the frame) from buildLevels' table.
+template <typename Pick>
+std::uint32_t windowOf(const std::uint32_t* levels, std::int32_t width, std::int32_t height,
+                       std::int32_t x, std::int32_t y, std::int32_t r, Pick pick) {
+  int k = 0;
+  while ((2 << k) <= 2 * r + 1) ++k;
+  const std::int32_t far = 2 * r + 1 - (1 << k);  // the corner squares' offset
+  const std::size_t w = static_cast<std::size_t>(width);
+  const std::uint32_t* level =
+      levels + w * static_cast<std::size_t>(height) * static_cast<std::size_t>(k);
+  const auto at = [&](std::int32_t px, std::int32_t py) {
+    return level[static_cast<std::size_t>(py) * w + static_cast<std::size_t>(px)];
+  };
+  return pick(pick(at(x - r, y - r), at(x - r + far, y - r)),
+              pick(at(x - r, y - r + far), at(x - r + far, y - r + far)));
+}
+
+constexpr auto kMax = [](std::uint32_t a, std::uint32_t b) { return std::max(a, b); };
+constexpr auto kMin = [](std::uint32_t a, std::uint32_t b) { return std::min(a, b); };
+
+bool leaves(std::int32_t x, std::int32_t y, std::int32_t r, std::int32_t width,
+            std::int32_t height) {
+  return x - r < 0 || y - r < 0 || x + r >= width || y + r >= height;
+}
+
+// map[i] = the largest of `open` over the square of radius[i] pixels around pixel i, kEmpty where
+// it leaves the face. `levels`: levelsOf(rho) x width x height words.
+void variableMax(const std::uint32_t* open, std::int32_t width, std::int32_t height,
+                 std::span<const std::uint8_t> radius, int rho, std::uint32_t* map,
+                 std::uint32_t* levels) {
+  buildLevels(open, width, height, rho, levels, kMax);
+  for (std::int32_t y = 0; y < height; ++y) {
+    for (std::int32_t x = 0; x < width; ++x) {
+      const std::size_t i = static_cast<std::size_t>(y) * static_cast<std::size_t>(width) +
+                            static_cast<std::size_t>(x);
+      const std::int32_t r = radius[i];
+      map[i] =
+          leaves(x, y, r, width, height) ? kEmpty : windowOf(levels, width, height, x, y, r, kMax);
+    }
+  }
+}
+
+// map[i] = the largest of `open` over the square around pixel i whose radius r is the least
+// fixed point of r = depth.radius(i, nearest key within r) (ground pixels no surface: radius 1
+// where only ground is near), kEmpty where the window holds an empty word or leaves the face.
+// Growing r only brings nearer surfaces in, so r rises to the fixed point, or past the widest
+// window the frame holds (then the pixel is empty).
+// `nearest`: width x height words (`open` with the ground's words kEmpty); `levels`: twice
+// levelsOf(depth.widest()) x width x height words.
+void depthMax(const std::uint32_t* open, std::uint32_t* nearest, std::int32_t width,
+              std::int32_t height, const DepthWindows& depth, std::uint32_t* map,
+              std::uint32_t* levels) {
+  const std::size_t pixels = static_cast<std::size_t>(width) * static_cast<std::size_t>(height);
+  for (std::size_t i = 0; i < pixels; ++i) nearest[i] = open[i] == kGroundWord ? kEmpty : open[i];
+  std::uint32_t* const farthest = levels;
+  std::uint32_t* const closest =
+      levels + pixels * static_cast<std::size_t>(levelsOf(depth.widest()));
+  buildLevels(open, width, height, depth.widest(), farthest, kMax);
+  buildLevels(nearest, width, height, depth.widest(), closest, kMin);
+  const auto radiusOf = [&](std::size_t i, std::uint32_t word) {
+    return word == kEmpty ? 1 : depth.radius(i, FrameView::depthKeyOf(word));
+  };
+  for (std::int32_t y = 0; y < height; ++y) {
+    for (std::int32_t x = 0; x < width; ++x) {
+      const std::size_t i = static_cast<std::size_t>(y) * static_cast<std::size_t>(width) +
+                            static_cast<std::size_t>(x);
+      std::uint32_t word = open[i];
+      for (std::int32_t r = radiusOf(i, nearest[i]); word != kEmpty;) {
+        if (leaves(x, y, r, width, height)) {
+          word = kEmpty;
+          break;
+        }
+        word = windowOf(farthest, width, height, x, y, r, kMax);
+        if (word == kEmpty) break;
+        const std::int32_t need = radiusOf(i, windowOf(closest, width, height, x, y, r, kMin));
+        if (need <= r) break;
+        r = need;
+      }
+      map[i] = word;
+    }
+  }
+}
+
+// How far (x/z units) a turn of `angle` radians moves the image of a direction at x/z offset t
+// from a face's axis: d (1 + t^2) to first order; t taken at the move's far side (once around),
+// 10% more for the second order.
+double reachOf(double angle, double t) {
+  const double first = angle * (1 + t * t) * 1.1;
+  return angle * (1 + (t + first) * (t + first)) * 1.1;
+}
+
+// The x/z offset of a widened face's pixel (px, py) from its axis (`unit`: a pixel in x/z).
+double offsetOf(int px, int py, int side, double unit) {
+  const double x = (px + 0.5 - side / 2.0) * unit, y = (py + 0.5 - side / 2.0) * unit;
+  return std::sqrt(x * x + y * y);
+}
+
+double erosionAngle(std::int64_t eps, double distance) {
+  return std::asin(std::min(1.0, static_cast<double>(eps) / std::max(1.0, distance)));
+}
+
+// A depth key's bucket for DepthWindows: keys below 256 each their own, then 256 a power of two.
+std::size_t bucketOf(std::uint32_t key) {
+  if (key < 256) return key;
+  const int shift = std::bit_width(key) - 9;
+  return 256 + static_cast<std::size_t>(shift) * 256 + ((key >> shift) & 255);
+}
+
+std::uint32_t nearestKeyOf(std::size_t bucket) {
+  if (bucket < 256) return static_cast<std::uint32_t>(bucket);
+  const std::size_t shift = (bucket - 256) / 256;
+  return static_cast<std::uint32_t>((256 + (bucket & 255)) << shift);
+}
+
 }  // namespace
+
+DepthWindows::DepthWindows(const OcclusionSampling& sampling, int side, int depth_shift)
+    : widest_(sampling.eps > 0 ? (side - 1) / 2 : 0),
+      unit_(2.0 / sampling.face),
+      angle_(bucketOf(FrameView::kEmpty >> 8) + 1),
+      offset_(static_cast<std::size_t>(side) * static_cast<std::size_t>(side)) {
+  for (std::size_t b = 0; b < angle_.size(); ++b)
+    angle_[b] = erosionAngle(sampling.eps, std::ldexp(nearestKeyOf(b), depth_shift));
+  for (int py = 0; py < side; ++py) {
+    for (int px = 0; px < side; ++px) {
+      offset_[static_cast<std::size_t>(py) * static_cast<std::size_t>(side) +
+              static_cast<std::size_t>(px)] = offsetOf(px, py, side, unit_);
+    }
+  }
+}
+
+int DepthWindows::radius(std::size_t pixel, std::uint32_t key) const {
+  if (widest_ == 0) return 0;
+  const double reach = reachOf(angle_[bucketOf(key)], offset_[pixel]);
+  return std::min(widest_ + 1, static_cast<int>(std::ceil(reach / unit_)) + 1);
+}
 
 void erosionRadii(const OcclusionSampling& sampling, int side, std::span<std::uint8_t> radius) {
   const int rho = erosionRadius(sampling);
-  const double angle = rho == 0 ? 0
-                                : std::asin(std::min(1.0, static_cast<double>(sampling.eps) /
-                                                              static_cast<double>(sampling.near)));
+  const double angle =
+      rho == 0 ? 0 : erosionAngle(sampling.eps, static_cast<double>(sampling.near));
   const double unit = 2.0 / sampling.face;  // a pixel in x/z (tan) units
   for (int py = 0; py < side; ++py) {
     for (int px = 0; px < side; ++px) {
-      const double x = (px + 0.5 - side / 2.0) * unit, y = (py + 0.5 - side / 2.0) * unit;
-      // A turn of d radians about a direction at tan t from the axis moves its image by up to
-      // d (1 + t^2) (x/z units); t taken at the window's far side (once around), 10% more for
-      // the second order, one pixel for the grid; at most rho (the face's corner, whose border
-      // the face has).
-      const double t = std::sqrt(x * x + y * y);
-      const double first = angle * (1 + t * t) * 1.1;
-      const double reach = angle * (1 + (t + first) * (t + first)) * 1.1;
+      // One pixel for the grid; at most rho (the face's corner, whose border the face has).
+      const double reach = reachOf(angle, offsetOf(px, py, side, unit));
       const int r = rho == 0 ? 0 : static_cast<int>(std::ceil(reach / unit)) + 1;
       radius[static_cast<std::size_t>(py) * static_cast<std::size_t>(side) +
              static_cast<std::size_t>(px)] = static_cast<std::uint8_t>(std::min(r, rho));
@@ -186,20 +294,23 @@ int erosionRadius(const OcclusionSampling& sampling) {
   // At a face's corner (tan x = tan y = 1) a turn of d radians moves the image by up to
   // d (1 + x^2 + y^2) = 3 d in the image plane, whose pixels are 2 / face wide; 10% more for
   // the angle's second order, and one pixel for the grid.
-  const double angle = std::asin(
-      std::min(1.0, static_cast<double>(sampling.eps) / static_cast<double>(sampling.near)));
+  const double angle = erosionAngle(sampling.eps, static_cast<double>(sampling.near));
   return static_cast<int>(std::ceil(angle * 1.5 * sampling.face * 1.1)) + 1;
 }
 
 void occlusionMap(std::span<const std::uint32_t> words, std::int32_t width, std::int32_t height,
                   std::uint32_t near_key, std::int64_t eps, int face, int rho,
                   std::span<std::uint32_t> map, std::vector<std::uint32_t>& scratch,
-                  std::span<const std::uint8_t> ground, std::span<const std::uint8_t> radius) {
+                  std::span<const std::uint8_t> ground, std::span<const std::uint8_t> radius,
+                  const DepthWindows* depth) {
   const std::size_t w = static_cast<std::size_t>(width),
                     pixels = w * static_cast<std::size_t>(height);
   const std::size_t lines = 2 * static_cast<std::size_t>(std::max(width, height));
-  scratch.resize(pixels + lines +
-                 (radius.empty() ? 0 : pixels * static_cast<std::size_t>(levelsOf(rho))));
+  const std::size_t tables = depth != nullptr
+                                 ? 1 + 2 * static_cast<std::size_t>(levelsOf(depth->widest()))
+                             : radius.empty() ? 0
+                                              : static_cast<std::size_t>(levelsOf(rho));
+  scratch.resize(pixels + lines + pixels * tables);
   std::uint32_t* const open = scratch.data();  // near pixels and cracks emptied
   // The palette byte of a map word is set: a point at the map's own depth writes (the surface the
   // map holds there is seen, so its instance is in the set). The ground, near or far, is below
@@ -224,6 +335,9 @@ void occlusionMap(std::span<const std::uint32_t> words, std::int32_t width, std:
   }
   if (rho == 0) {
     std::copy(open, open + pixels, map.begin());
+  } else if (depth != nullptr) {
+    depthMax(open, open + pixels + lines, width, height, *depth, map.data(),
+             open + 2 * pixels + lines);
   } else if (!radius.empty()) {
     variableMax(open, width, height, radius, rho, map.data(), open + pixels + lines);
   } else {
@@ -288,18 +402,30 @@ Angle fovOf(int face, int side) {
   return Angle::fromMilliDegrees(static_cast<std::int64_t>(std::ceil(degrees * 1000)));
 }
 
+bool fits(const OcclusionSampling& sampling, int rho) {
+  return fovOf(sampling.face, sideOf(sampling, rho)).turns16() <= Angle::fromDegrees(120).turns16();
+}
+
+// The border's radius: rho. With depth windows, at most what fits in 120 degrees (a window
+// wider than the frame holds leaves it: that pixel is empty), so that the near distance may be
+// below 5 eps.
+int borderOf(const OcclusionSampling& sampling) {
+  int rho = erosionRadius(sampling);
+  while (sampling.depth_windows && rho > 1 && !fits(sampling, rho)) --rho;
+  return rho;
+}
+
 }  // namespace
 
 bool erosionFits(const OcclusionSampling& sampling) {
   if (sampling.eps > 0 && sampling.near <= sampling.eps) return false;
-  const int side = sideOf(sampling, erosionRadius(sampling));
-  return fovOf(sampling.face, side).turns16() <= Angle::fromDegrees(120).turns16();
+  return fits(sampling, borderOf(sampling));
 }
 
 OcclusionSampler::OcclusionSampler(SceneRenderer& renderer, const OcclusionSampling& sampling)
     : renderer_(renderer),
       sampling_(sampling),
-      rho_(erosionRadius(sampling)),
+      rho_(borderOf(sampling)),
       side_(sideOf(sampling, rho_)),
       fov_(fovOf(sampling.face, side_)),
       faces_(6, Framebuffer(side_, side_)),
@@ -308,6 +434,10 @@ OcclusionSampler::OcclusionSampler(SceneRenderer& renderer, const OcclusionSampl
       marks_(renderer.instanceCount()),
       step_marks_(renderer.instanceCount()) {
   for (auto& mask : ground_) mask.resize(sampling.ground ? map_.size() : 0);
+  if (sampling.depth_windows && rho_ > 0) {
+    depth_.emplace(sampling, side_, renderer.depthShift());
+    return;
+  }
   for (int step = 0; sampling.radii && step < std::clamp(sampling.near_steps, 1, kMaxNearSteps);
        ++step) {
     OcclusionSampling at = sampling;
@@ -399,7 +529,7 @@ void OcclusionSampler::look(const Point3<std::int64_t>& eye, std::uint64_t* fram
       if (!seen[k]) continue;
       const Framebuffer& frame = faces_[static_cast<std::size_t>(k)];
       occlusionMap(frame.pixels(), side_, side_, near_key, sampling_.eps, sampling_.face, rho, map_,
-                   scratch_, ground_[k], radii_[step]);
+                   scratch_, ground_[k], radii_[step], depth_ ? &*depth_ : nullptr);
       for (std::size_t i = 0; step == 0 && i < map_.size(); ++i) {
         const std::uint32_t word = frame.pixels()[i];
         const bool on_ground = !ground_[k].empty() && ground_[k][i] != 0;

@@ -15,6 +15,18 @@
 //  - then the farthest word over a square window of `rho` pixels around each pixel, rho covering
 //    asin(eps / near) at the faces' corners (+1 pixel for the grid), and empty where the window
 //    leaves the face;
+//  - or (OcclusionSampling::depth_windows) a window sized by the depths inside it: the smallest
+//    radius r whose window's nearest surface, at depth d, needs no more than r (asin(eps / d) at
+//    that pixel's offset from the face's axis): an occluder at depth d is eroded by eps at its own
+//    depth (Wonka et al.'s object-space erosion), not at the nearest depth one may have. Why it is
+//    as conservative: the segment from an eye e' within eps to a point P behind the map leaves
+//    the ball of radius d about e once and then only moves away from e (its distance from e is
+//    convex along it and already grown past eps), at distance t within asin(eps / t) <=
+//    asin(eps / d) of P's direction: inside the window. There it is in front of every surface of
+//    the window (all at least d away) and at P behind the one on P's ray, so it crosses the
+//    window's cap of surfaces, which has no crack: P is hidden from e'. The ground's pixels are no
+//    surfaces for d (the segment never passes behind one: it stays above the plane); a window of
+//    ground alone is sized 1. docs/city.md has the whole argument;
 //  - with a ground plane (OcclusionSampling::ground): a pixel whose surface lies on it (and is no
 //    crack) is neither near nor a candidate for the farthest word: a point behind the ground as
 //    seen from e is below it, where no segment from an eye above it to a point above it passes
@@ -25,6 +37,7 @@
 // beyond `near`): the sample's own view. Host side; the frames are sized once.
 
 #include <cstdint>
+#include <optional>
 #include <span>
 #include <vector>
 
@@ -55,13 +68,37 @@ struct OcclusionSampling {
   // The erosion's radius per pixel (erosionRadii: narrower towards the face's centre) rather
   // than the corner's everywhere.
   bool radii = false;
+  // Each pixel's window sized by the nearest depth in it (DepthWindows): supersedes `radii`. The
+  // border then fits 120 degrees whatever near is (a window wider than the frame: empty), so
+  // near may be nearly eps (a wall across the street occludes where its windows fit).
+  bool depth_windows = false;
 };
 
 // The erosion's radius in pixels for `sampling` (0 when eps is 0).
 int erosionRadius(const OcclusionSampling& sampling);
 // Whether the face widened by the erosion's border stays within the camera's field of view (120
-// degrees: a border of at most about a third of the face each way, eps / near up to about 0.2).
+// degrees: a border of at most about a third of the face each way, eps / near up to about 0.2;
+// with depth windows the border is cut to fit, so only near > eps is asked).
 bool erosionFits(const OcclusionSampling& sampling);
+
+// The erosion's radius by depth for a widened face (side x side pixels): per pixel, the window a
+// nearest surface at depth key k needs, ceil(reach / pixel) + 1 with reach the image's move under
+// a turn of asin(eps / z) (z = k << depth_shift, the key's nearer end: the turn is never
+// underestimated) at that pixel's offset from the face's axis, as erosionRadii.
+// Depths are read in buckets of a 256th of a key (the bucket's nearest key: a wider window).
+class DepthWindows {
+ public:
+  DepthWindows(const OcclusionSampling& sampling, int side, int depth_shift);
+  // At most widest() + 1 (a window that leaves the frame wherever it is centred).
+  int radius(std::size_t pixel, std::uint32_t key) const;
+  int widest() const { return widest_; }  // the widest window a frame holds: (side - 1) / 2
+
+ private:
+  int widest_ = 0;
+  double unit_ = 1;             // a pixel in x/z units
+  std::vector<double> angle_;   // per depth bucket: asin(eps / z) at its nearest key, radians
+  std::vector<double> offset_;  // per pixel: its x/z offset from the face's axis
+};
 
 // The occlusion map of a face's words (width x height, row-major, PixelPayload::kColour) into
 // `map`: near pixels and cracks empty, then the farthest word within `rho` (empty where the window
@@ -69,13 +106,15 @@ bool erosionFits(const OcclusionSampling& sampling);
 // (0: no cracks); `face`: pixels of the face's side without its border (the voxels' rounding).
 // `scratch`: any vector, resized once; after the call its first width x height words are the
 // map before the erosion (ground pixels kGroundWord). `ground`: empty, or width x height flags,
-// 1 where the pixel's surface is the ground plane (groundMask).
+// 1 where the pixel's surface is the ground plane (groundMask). `radius`: empty, or per pixel its
+// window's radius (erosionRadii); `depth`: null, or each window sized by the depths in it (then
+// `radius` is not read).
 inline constexpr std::uint32_t kGroundWord = 0;  // below every word: never a window's farthest
 void occlusionMap(std::span<const std::uint32_t> words, std::int32_t width, std::int32_t height,
                   std::uint32_t near_key, std::int64_t eps, int face, int rho,
                   std::span<std::uint32_t> map, std::vector<std::uint32_t>& scratch,
                   std::span<const std::uint8_t> ground = {},
-                  std::span<const std::uint8_t> radius = {});
+                  std::span<const std::uint8_t> radius = {}, const DepthWindows* depth = nullptr);
 
 // Per pixel of a widened face (side x side), the erosion's radius there, at most
 // erosionRadius(sampling): a turn of asin(eps / near) moves a direction's image by a factor
@@ -134,6 +173,7 @@ class OcclusionSampler {
   OcclusionStats stats_;
   std::vector<std::uint8_t> marks_, step_marks_, ground_[6];
   std::vector<std::uint8_t> radii_[kMaxNearSteps];  // per near step: erosionRadii
+  std::optional<DepthWindows> depth_;               // with depth_windows
 };
 
 }  // namespace octopoint

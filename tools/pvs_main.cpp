@@ -24,7 +24,8 @@ using namespace octopoint;
 constexpr const char* kUsage =
     R"(usage: octopoint-pvs SCENE.json -o CELLS [--cell EDGES] [--layers Y0,Y1,...] [--face PX]
                      [--samples N] [--seed N] [--margin EDGES] [--no-neighbours]
-                     [--eps EDGES --near-occluder EDGES [--near-steps N] [--ground Y] [--radii]]
+                     [--eps EDGES --near-occluder EDGES [--near-steps N] [--ground Y] [--radii]
+                      [--depth-windows]]
 
 Computes a scene's visibility cells (docs/city.md): a grid of view cells over the instances'
 extent in x and z and the layers of height the eye may take, and per cell the instances visible
@@ -64,6 +65,11 @@ Eroded occlusion maps (conservative by construction, tighter; docs/city.md):
                      are no holes in the maps, near or far (needs --eps)
   --radii            erode each pixel by its own radius: asin(EDGES / NEAR) moves an image
                      by 1 + t^2 of it at x/z offset t, a third of the face corner's at its centre
+  --depth-windows    size each pixel's window by the nearest surface in it, at depth D:
+                     asin(EDGES / D) rather than asin(EDGES / NEAR), at that pixel's offset
+                     (an occluder eroded at its own depth; supersedes --radii). The border
+                     is then cut to fit 120 degrees (a window wider: empty), so the near
+                     occluder distance may be anything above --eps
 )";
 
 // A decimal number of scene edges to Q.24, within +-limit scene edges; cli::Error otherwise.
@@ -124,6 +130,9 @@ int run(int argc, char** argv) {
     } else if (args.is("--radii")) {
       args.noValue();
       options.radii = true;
+    } else if (args.is("--depth-windows")) {
+      args.noValue();
+      options.depth_windows = true;
     } else if (args.is("--no-neighbours")) {
       args.noValue();
       options.neighbours = false;
@@ -139,11 +148,14 @@ int run(int argc, char** argv) {
     throw cli::Error("--eps and --near-occluder go together");
   if (options.ground && options.eps == 0) throw cli::Error("--ground: needs --eps");
   if (options.radii && options.eps == 0) throw cli::Error("--radii: needs --eps");
+  if (options.depth_windows && options.eps == 0) throw cli::Error("--depth-windows: needs --eps");
   if (options.ground && options.y.back() >= options.ground_y)
     throw cli::Error("--ground: the layers reach down to it (every eye must be above it)");
   if (options.eps > 0 && options.near_occluder <= options.eps)
     throw cli::Error("--near-occluder: not above --eps");
-  if (!erosionFits({options.eps, options.near_occluder, options.face}))
+  OcclusionSampling fitting{options.eps, options.near_occluder, options.face};
+  fitting.depth_windows = options.depth_windows;
+  if (!erosionFits(fitting))
     throw cli::Error(
         "--eps: its erosion would widen a face past 120 degrees: give a larger "
         "--near-occluder (eps / near at most about 0.2)");

@@ -103,7 +103,8 @@ bool lastSeen(std::vector<SceneInstance> instances, const Point3<std::int64_t>& 
 // The sample at the origin's marks, eps 1/6 edge, near 3/2 edges, with or without the ground.
 constexpr std::int64_t kEps = kEdge / 6;
 std::vector<std::uint8_t> marksOf(const std::vector<SceneInstance>& instances, bool ground,
-                                  OcclusionStats* stats = nullptr, bool radii = false) {
+                                  OcclusionStats* stats = nullptr, bool radii = false,
+                                  bool depth_windows = false) {
   const ModelView* models[] = {&wall(), &plate()};
   SceneError error;
   SceneRenderer renderer(models, instances, &error);
@@ -113,6 +114,7 @@ std::vector<std::uint8_t> marksOf(const std::vector<SceneInstance>& instances, b
   sampling.ground_y = kGround;
   sampling.ground_voxel = kEdge / 8;
   sampling.radii = radii;
+  sampling.depth_windows = depth_windows;
   OcclusionSampler sampler(renderer, sampling);
   std::uint64_t frames = 0;
   sampler.look({0, 0, 0}, &frames);
@@ -131,7 +133,8 @@ TEST(CellGround, TheGroundHidesNothingBesideAWall) {
   EXPECT_EQ(marks[0], 1);
   EXPECT_EQ(marks[1], 1);
   EXPECT_EQ(marks.back(), 1);
-  EXPECT_EQ(marksOf(scene, true, nullptr, true).back(), 1);  // each pixel's own radius
+  EXPECT_EQ(marksOf(scene, true, nullptr, true).back(), 1);         // each pixel's own radius
+  EXPECT_EQ(marksOf(scene, true, nullptr, false, true).back(), 1);  // sized by depth
 }
 
 TEST(CellGround, AWallOnTheGroundHidesWhatIsBehindItOnlyWithTheGround) {
@@ -144,6 +147,7 @@ TEST(CellGround, AWallOnTheGroundHidesWhatIsBehindItOnlyWithTheGround) {
   EXPECT_EQ(marksOf(scene, false).back(), 1);
   EXPECT_EQ(marksOf(scene, true).back(), 0);
   EXPECT_EQ(marksOf(scene, true, nullptr, true).back(), 0);
+  EXPECT_EQ(marksOf(scene, true, nullptr, false, true).back(), 0);
 }
 
 TEST(CellGround, RadiiAllTheCornersAreTheConstantErosion) {

@@ -60,6 +60,7 @@ const SceneInstance kWallB{0, {{kEdge * 37 / 25, 0, 4 * kEdge}, Angle{}, 3}};
 
 // Whether `far` changes a 128-pixel frame seen from `eye` (looking along +z, 90 degrees).
 bool farSeen(std::vector<SceneInstance> instances, const Point3<std::int64_t>& eye) {
+  const SceneInstance far = instances.back();
   const ModelView* models[] = {&wallModel()};
   PerspectiveView view;
   EXPECT_EQ(buildPerspectiveView(perspectiveCameraOf(eye, 0, 0, 90, 128, 128), kDefaultFractionBits,
@@ -74,19 +75,25 @@ bool farSeen(std::vector<SceneInstance> instances, const Point3<std::int64_t>& e
     frame.clear();
     EXPECT_TRUE(renderer.draw(view, frame));
     words[with].assign(frame.pixels().begin(), frame.pixels().end());
-    if (with == 0) instances.push_back(kFar);
+    if (with == 0) instances.push_back(far);
   }
   return words[0] != words[1];
 }
 
+// The erosion's window: the face corner's radius everywhere, each pixel's own for the near
+// distance (OcclusionSampling::radii), or sized by the depths in it (depth_windows).
+enum class Window { kCorner, kRadii, kDepth };
+
 // Whether the sample at the origin puts the far instance (the last) in its set.
-bool farInSet(const std::vector<SceneInstance>& instances, std::int64_t eps, bool radii = false) {
+bool farInSet(const std::vector<SceneInstance>& instances, std::int64_t eps,
+              Window window = Window::kCorner) {
   const ModelView* models[] = {&wallModel()};
   SceneError error;
   SceneRenderer renderer(models, instances, &error);
   EXPECT_EQ(error, SceneError::kNone);
   OcclusionSampling sampling{eps, kEdge, 64};
-  sampling.radii = radii;
+  sampling.radii = window == Window::kRadii;
+  sampling.depth_windows = window == Window::kDepth;
   OcclusionSampler sampler(renderer, sampling);
   std::uint64_t frames = 0;
   sampler.look({0, 0, 0}, &frames);
@@ -101,7 +108,8 @@ TEST(CellOcclusion, AnInstancePastAWallsEdgeFromAnEyeWithinEpsIsInTheSet) {
   EXPECT_FALSE(farSeen(scene, {0, 0, 0}));
   EXPECT_TRUE(farSeen(scene, {kEdge / 10, 0, 0}));
   EXPECT_TRUE(farInSet(scene, kEdge / 10));
-  EXPECT_TRUE(farInSet(scene, kEdge / 10, true));  // each pixel's own radius
+  EXPECT_TRUE(farInSet(scene, kEdge / 10, Window::kRadii));  // each pixel's own radius
+  EXPECT_TRUE(farInSet(scene, kEdge / 10, Window::kDepth));  // sized by wall A's depth
   EXPECT_FALSE(farInSet(scene, 0));  // without erosion: the sample's own view, which misses it
 }
 
@@ -114,7 +122,84 @@ TEST(CellOcclusion, AnInstanceThroughTheGapBetweenTouchingWallsIsInTheSet) {
   EXPECT_FALSE(farSeen(scene, {0, 0, 0}));
   EXPECT_TRUE(farSeen(scene, {kEdge / 10, 0, 0}));
   EXPECT_TRUE(farInSet(scene, kEdge / 10));
-  EXPECT_TRUE(farInSet(scene, kEdge / 10, true));
+  EXPECT_TRUE(farInSet(scene, kEdge / 10, Window::kRadii));
+  EXPECT_TRUE(farInSet(scene, kEdge / 10, Window::kDepth));
+}
+
+// A far wall W (2 edges wide, 8 tall, 8 edges ahead: 4 pixels either side of the axis on a
+// 64-pixel face) and a small instance behind its middle, 12 edges ahead, hidden from every eye
+// within eps (1/10 edge). The window for the near distance (1 edge) is 5 pixels at the face's
+// centre (12 at its corner): it reaches past W into the sky, and lets the instance in. Sized by
+// W's own depth, asin(eps / 7.9 edges), it is 2 pixels: all W, and the instance is out.
+const SceneInstance kFarWall{0, {{0, 0, 8 * kEdge}, Angle{}, 3}};
+const SceneInstance kBehind{0, {{0, 0, 12 * kEdge}, Angle{}, -1}};
+
+TEST(CellOcclusion, AFarWallHidesWhatIsBehindItOnlyWithDepthWindows) {
+  const std::vector<SceneInstance> scene = {kFarWall, kBehind};
+  constexpr std::int64_t kEps = kEdge / 10;
+  for (const Point3<std::int64_t>& eye :
+       {Point3<std::int64_t>{0, 0, 0}, {kEps, 0, 0}, {-kEps, 0, 0}, {0, kEps, 0}, {0, -kEps, 0}}) {
+    EXPECT_FALSE(farSeen(scene, eye));
+  }
+  EXPECT_TRUE(farInSet(scene, kEps, Window::kCorner));
+  EXPECT_TRUE(farInSet(scene, kEps, Window::kRadii));
+  EXPECT_FALSE(farInSet(scene, kEps, Window::kDepth));
+  EXPECT_FALSE(farInSet(scene, 0));  // the sample's own view
+}
+
+TEST(CellOcclusion, DepthWindowsNarrowWithDepth) {
+  // At the near distance a depth window is the pixel's radius for it where that is below the
+  // corner's rho (which caps the radii, not the depth windows); at 8 times that distance at most
+  // half of it (and a pixel for the rounding).
+  OcclusionSampling sampling{kEdge / 10, kEdge, 64};
+  const int rho = erosionRadius(sampling), side = 64 + 2 * (rho + 1), shift = 8;
+  std::vector<std::uint8_t> radius(static_cast<std::size_t>(side * side));
+  erosionRadii(sampling, side, radius);
+  const DepthWindows depth(sampling, side, shift);
+  EXPECT_EQ(depth.widest(), (side - 1) / 2);
+  const auto near_key = static_cast<std::uint32_t>(kEdge >> shift);
+  for (int py = 0; py < side; ++py) {
+    for (int px = 0; px < side; ++px) {
+      const std::size_t i = static_cast<std::size_t>(py * side + px);
+      EXPECT_GE(depth.radius(i, near_key), radius[i]);
+      if (radius[i] < rho) {
+        EXPECT_EQ(depth.radius(i, near_key), radius[i]);
+      }
+      EXPECT_LE(depth.radius(i, 8 * near_key), radius[i] / 2 + 1);
+    }
+  }
+  // Far away, at the centre: the grid's pixel and the reach's rounding up.
+  EXPECT_EQ(depth.radius(static_cast<std::size_t>(side / 2 * side + side / 2), 64 * near_key), 2);
+  // Within eps: wider than the frame.
+  EXPECT_EQ(depth.radius(0, static_cast<std::uint32_t>((kEdge / 20) >> shift)), depth.widest() + 1);
+}
+
+TEST(CellOcclusion, ANearSurfaceInADepthWindowWidensIt) {
+  // Far words (64 edges: a window of 2 pixels at the centre) around pixel p, a word half an edge
+  // away 2 pixels to its right (asin(eps / d) needs 9 there) and sky 7 pixels to its right: the
+  // window grows to take in the sky, and p is empty; without the near word, or with it on the
+  // ground (no surface for the window's size), p keeps the far word. No cracks (eps 0 for them).
+  const OcclusionSampling sampling{kEdge / 10, kEdge, 64};
+  const int rho = erosionRadius(sampling), side = 64 + 2 * (rho + 1), shift = 8;
+  const DepthWindows depth(sampling, side, shift);
+  const std::size_t pixels = static_cast<std::size_t>(side * side);
+  const std::size_t p = static_cast<std::size_t>(side / 2 * side + side / 2);
+  const std::uint32_t far = FrameView::pack(static_cast<std::uint32_t>((64 * kEdge) >> shift), 0);
+  const std::uint32_t near = FrameView::pack(static_cast<std::uint32_t>((kEdge / 2) >> shift), 0);
+  ASSERT_EQ(depth.radius(p, FrameView::depthKeyOf(far)), 2);
+  ASSERT_GE(depth.radius(p, FrameView::depthKeyOf(near)), 8);
+  std::vector<std::uint32_t> words(pixels, far), map(pixels), scratch;
+  words[p + 7] = FrameView::kEmpty;
+  const auto mapAtP = [&](std::span<const std::uint8_t> ground) {
+    occlusionMap(words, side, side, 0, 0, 64, rho, map, scratch, ground, {}, &depth);
+    return map[p];
+  };
+  EXPECT_EQ(mapAtP({}), far | 0xFF);
+  words[p + 2] = near;
+  EXPECT_EQ(mapAtP({}), FrameView::kEmpty);
+  std::vector<std::uint8_t> ground(pixels, 0);
+  ground[p + 2] = 1;
+  EXPECT_EQ(mapAtP(ground), far | 0xFF);
 }
 
 TEST(CellOcclusion, TheMapErodesNearPixelsAndCracks) {
