@@ -298,17 +298,27 @@ int run(int argc, char** argv) {
                 100 * culled / positions, 100 * frustum / positions, positions);
   }
   double worst = 0, sum = 0;
-  std::size_t done = 0;
+  std::size_t done = 0, above = 0;
+  Pose worst_pose{};
   while (done < static_cast<std::size_t>(walk)) {
     for (const Pose& pose : streets.walk(random, std::min<std::size_t>(100, walk - done))) {
       const double differing = frames.draw(pose).differing;
-      worst = std::max(worst, differing);
+      if (differing > worst) worst = differing, worst_pose = pose;
+      above += differing > 0.001;
       sum += differing;
       ++done;
     }
   }
-  std::printf("conservative: worst %.2f%% (mean %.4f%% over %d random-walk positions)\n",
-              100 * worst, 100 * sum / walk, walk);
+  // The worst position (the eye in scene edges, the heading in degrees), to look at what the cells
+  // left out there.
+  std::printf(
+      "conservative: worst %.2f%% (mean %.4f%% over %d random-walk positions; %zu above 0.1%%; "
+      "worst at eye %.4f,%.4f,%.4f, yaw %.1f, pitch %.1f)\n",
+      100 * worst, 100 * sum / walk, walk, above,
+      std::ldexp(static_cast<double>(worst_pose.eye.x), -kPerspectiveUnitBits),
+      std::ldexp(static_cast<double>(worst_pose.eye.y), -kPerspectiveUnitBits),
+      std::ldexp(static_cast<double>(worst_pose.eye.z), -kPerspectiveUnitBits), worst_pose.yaw,
+      worst_pose.pitch);
   std::printf(
       "street frame: %.1f ms and %.0f points submitted without cells, %.1f ms and %.0f with "
       "(320x240, means of %d; wall clock)\n",

@@ -1,6 +1,7 @@
 #include "renderer/scene_renderer.h"
 
 #include <algorithm>
+#include <optional>
 
 #include "renderer/scene_view.h"
 
@@ -117,7 +118,18 @@ bool SceneRenderer::draw(const PerspectiveView& view, FrameView& frame, SceneDra
     tiles_width_ = frame.width();
     tiles_height_ = frame.height();
   }
-  OcclusionTiles occlusion(frame, tiles_, kOcclusionTileShift);
+  // The pixel winners: the instances draw into a frame over the same words whose rectangle is
+  // forgotten after each, so only what that instance may have written is compared with before.
+  const std::size_t pixels =
+      static_cast<std::size_t>(frame.width()) * static_cast<std::size_t>(frame.height());
+  std::optional<RectFrame> winning;
+  if (!winners_.empty() && winners_.size() == pixels && frame.payload() == PixelPayload::kColour) {
+    winning.emplace(frame.pixelData(), frame.width(), frame.height());
+    winning->forgetDrawn();
+    before_.assign(frame.pixels().begin(), frame.pixels().end());
+  }
+  FrameView& target = winning ? *winning : frame;
+  OcclusionTiles occlusion(target, tiles_, kOcclusionTileShift);
   occlusion.reset();
   for (std::size_t k = 0; k < count; ++k) {
     const SceneInstance& instance = instances_[order_[k].instance];
@@ -135,12 +147,13 @@ bool SceneRenderer::draw(const PerspectiveView& view, FrameView& frame, SceneDra
     }
     if (layers.count == 0) continue;  // a model with no depth this build draws
     const std::uint64_t before = counted.points.leaves;
-    if (!drawPerspectiveLayers(layers.layers(), &layers.detail, model_view, frame, &occlusion,
+    if (!drawPerspectiveLayers(layers.layers(), &layers.detail, model_view, target, &occlusion,
                                &counted.points, nullptr, abort)) {
       return false;
     }
     ++counted.instances_drawn;
     const std::uint32_t drawn = order_[k].instance;
+    if (winning) takeWinners(*winning, drawn);
     if (counted.points.leaves != before && drawn < marks_.size()) marks_[drawn] = 1;
   }
   return true;

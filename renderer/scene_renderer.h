@@ -80,6 +80,13 @@ class SceneRenderer {
   // instance i that submitted a point, its subtrees not all passed over by the frustum or the
   // occlusion tiles (the caller's memory, at least instanceCount() bytes); empty to stop.
   void setSubmittedMarks(std::span<std::uint8_t> marks);
+  // For computing the cells by who wins each pixel (tools/cell_build.h): from now on draw sets
+  // winners[p] to i for each pixel p of a kColour frame whose word instance i wrote last (the word
+  // the frame keeps); the other pixels keep what the caller put there. `winners` is the caller's
+  // memory, the frame's size, row-major (another size: ignored); empty to stop. The frame drawn is
+  // the same bit for bit (it then counts as wholly drawn until its next clear); it costs a copy of
+  // the frame's words and a scan of each instance's written rectangle.
+  void setPixelWinners(std::span<std::uint32_t> winners);
   // For computing the cells from an occlusion depth map (tools/cell_occlusion.h): sets marks[i]
   // to 1 for each instance i in view with a point that writes a pixel of a z-buffer holding
   // `depth_map` (words of a PixelPayload::kColour frame of the view's size, row-major): a word
@@ -93,6 +100,17 @@ class SceneRenderer {
                           std::span<std::uint32_t> work, std::span<std::uint8_t> marks);
 
  private:
+  // A frame over another's words whose drawn rectangle can be forgotten: after each instance,
+  // drawnRect() is what that instance may have written (markWriters, the pixel winners).
+  class RectFrame : public FrameView {
+   public:
+    using FrameView::FrameView;
+    void forgetDrawn() { drawn_ = {}; }
+  };
+  // The pixels of `frame`'s drawn rectangle whose words differ from before_: instance `id` wrote
+  // them (winners_), and before_ takes their words. Then the rectangle is forgotten.
+  void takeWinners(RectFrame& frame, std::uint32_t id);
+
   struct Slot {
     std::int64_t nearest = 0;  // the box's nearest camera-space depth, scene units (sort key)
     std::uint32_t instance = 0;
@@ -119,6 +137,8 @@ class SceneRenderer {
   bool restricted_ = false;                 // only visible_ is drawn
   std::span<const std::uint32_t> visible_;  // setVisibleSet's ids
   std::span<std::uint8_t> marks_;           // setSubmittedMarks's
+  std::span<std::uint32_t> winners_;        // setPixelWinners's
+  std::vector<std::uint32_t> before_;       // the frame's words before the instance being drawn
 };
 
 }  // namespace octopoint

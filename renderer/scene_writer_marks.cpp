@@ -1,25 +1,14 @@
 // SceneRenderer::markWriters: which instances would write a pixel of a z-buffer that holds a given
 // depth map (the visibility cells' occlusion map, tools/cell_occlusion.h). Each instance is drawn
 // alone into the map and the pixels it wrote are put back before the next, so a nearer instance
-// never hides a farther one: only the map occludes.
+// never hides a farther one: only the map occludes. And the pixel winners (setPixelWinners): which
+// instance wrote the word each pixel keeps.
 #include <algorithm>
 
 #include "renderer/scene_renderer.h"
 #include "renderer/scene_view.h"
 
 namespace octopoint {
-namespace {
-
-// A frame over the work buffer whose drawn rectangle can be emptied without clearing it: after
-// each instance, drawnRect() is what that instance may have written (the decoders widen it by
-// their set-up's bounds), the only pixels to compare with the map and put back.
-class MapFrame : public FrameView {
- public:
-  using FrameView::FrameView;
-  void forgetDrawn() { drawn_ = {}; }
-};
-
-}  // namespace
 
 std::size_t SceneRenderer::markWriters(const PerspectiveView& view,
                                        std::span<const std::uint32_t> depth_map,
@@ -29,7 +18,7 @@ std::size_t SceneRenderer::markWriters(const PerspectiveView& view,
   const std::size_t pixels = static_cast<std::size_t>(width) * static_cast<std::size_t>(height);
   if (!valid_ || depth_map.size() != pixels || work.size() != pixels) return 0;
   std::copy(depth_map.begin(), depth_map.end(), work.begin());
-  MapFrame frame(work.data(), width, height);
+  RectFrame frame(work.data(), width, height);
   frame.forgetDrawn();
   if (width != tiles_width_ || height != tiles_height_) {
     tiles_.assign(occlusionTileCount(width, height, kOcclusionTileShift), {});
@@ -76,6 +65,24 @@ std::size_t SceneRenderer::markWriters(const PerspectiveView& view,
     if (wrote && id < marks.size()) marks[id] = 1;
   }
   return drawn;
+}
+
+void SceneRenderer::setPixelWinners(std::span<std::uint32_t> winners) { winners_ = winners; }
+
+void SceneRenderer::takeWinners(RectFrame& frame, std::uint32_t id) {
+  const PixelRect rect = frame.drawnRect();
+  const std::span<const std::uint32_t> words = frame.pixels();
+  const std::size_t width = static_cast<std::size_t>(frame.width());
+  for (std::int32_t y = rect.y_begin; y < rect.y_end; ++y) {
+    for (std::int32_t x = rect.x_begin; x < rect.x_end; ++x) {
+      const std::size_t i = static_cast<std::size_t>(y) * width + static_cast<std::size_t>(x);
+      if (words[i] != before_[i]) {
+        before_[i] = words[i];
+        winners_[i] = id;
+      }
+    }
+  }
+  frame.forgetDrawn();
 }
 
 }  // namespace octopoint

@@ -58,11 +58,21 @@ bool gridOf(std::span<const SceneInstance> instances, const CellBuildOptions& op
 
 class SampleViews {
  public:
-  SampleViews(SceneRenderer& renderer, int face, std::size_t instances)
+  // `winners`: an instance is seen when it wins a pixel (SceneRenderer::setPixelWinners) rather
+  // than when it submits a point.
+  SampleViews(SceneRenderer& renderer, int face, std::size_t instances, bool winners)
       : renderer_(renderer), face_(face), frame_(face, face), marks_(instances) {
-    renderer_.setSubmittedMarks(marks_);
+    if (winners) {
+      winners_.resize(static_cast<std::size_t>(face) * static_cast<std::size_t>(face));
+      renderer_.setPixelWinners(winners_);
+    } else {
+      renderer_.setSubmittedMarks(marks_);
+    }
   }
-  ~SampleViews() { renderer_.setSubmittedMarks({}); }
+  ~SampleViews() {
+    renderer_.setSubmittedMarks({});
+    renderer_.setPixelWinners({});
+  }
   SampleViews(const SampleViews&) = delete;
   SampleViews& operator=(const SampleViews&) = delete;
 
@@ -82,17 +92,22 @@ class SampleViews {
       if (buildPerspectiveView(camera, kDefaultFractionBits, &view) != PerspectiveError::kNone)
         continue;  // an eye beyond the camera's reach: the margin's instances stand for it
       frame_.clear();
+      std::fill(winners_.begin(), winners_.end(), kNoWinner);
       static_cast<void>(renderer_.draw(view, frame_));
+      for (const std::uint32_t id : winners_)
+        if (id < marks_.size()) marks_[id] = 1;
       ++*frames;
     }
   }
   std::span<const std::uint8_t> marks() const { return marks_; }
 
  private:
+  static constexpr std::uint32_t kNoWinner = 0xFFFFFFFFu;
   SceneRenderer& renderer_;
   int face_;
   Framebuffer frame_;
   std::vector<std::uint8_t> marks_;
+  std::vector<std::uint32_t> winners_;  // per pixel of a face: the instance whose word it keeps
 };
 
 void orInto(std::span<std::uint8_t> into, std::span<const std::uint8_t> marks) {
@@ -169,7 +184,7 @@ void sampleLattice(const CellGrid& g, const CellBuildOptions& options, SceneRend
   const auto cellIndex = [&](std::int64_t x, std::int64_t z, std::int64_t layer) {
     return static_cast<std::size_t>((layer * g.nz + z) * g.nx + x);
   };
-  SampleViews views(renderer, options.face, n);
+  SampleViews views(renderer, options.face, n, options.winners);
   build->side = options.face;
   // The lattice on the layers' bounds: the cells' corners, each every touching cell's, and their
   // centres.
@@ -216,6 +231,45 @@ void sampleLattice(const CellGrid& g, const CellBuildOptions& options, SceneRend
     }
   }
 }
+// Samples on a lattice over the grid on every layer bound (spacing[k] on bound k); each cell takes
+// what every sample within `reach` of its box (in x and z, on its layer's bounds) saw.
+void sampleSpaced(const CellGrid& g, const CellBuildOptions& options, SceneRenderer& renderer,
+                  std::vector<std::uint8_t>& seen, CellBuild* build) {
+  const std::size_t n = g.instances;
+  SampleViews views(renderer, options.face, n, options.winners);
+  build->side = options.face;
+  const auto span = [&](std::int64_t at, std::int64_t origin, std::int64_t count) {
+    // The cells along one axis whose box (its bounds included) widened by reach holds `at`.
+    const std::int64_t first = -floorDiv(origin + options.reach - at, g.edge) - 1;
+    const std::int64_t last = floorDiv(at + options.reach - origin, g.edge);
+    return std::pair{std::max<std::int64_t>(first, 0), std::min<std::int64_t>(last, count - 1)};
+  };
+  for (std::int64_t k = 0; k <= g.ny; ++k) {
+    const std::int64_t y = g.y[static_cast<std::size_t>(k)];
+    const std::int64_t spacing =
+        options.spacing[options.spacing.size() == 1 ? 0 : static_cast<std::size_t>(k)];
+    const std::int64_t steps_x = (g.nx * g.edge + spacing - 1) / spacing;
+    const std::int64_t steps_z = (g.nz * g.edge + spacing - 1) / spacing;
+    for (std::int64_t j = 0; j <= steps_z; ++j) {
+      for (std::int64_t i = 0; i <= steps_x; ++i) {
+        const Point3<std::int64_t> eye{g.origin_x + i * spacing, y, g.origin_z + j * spacing};
+        views.look(eye, &build->frames);
+        ++build->samples;
+        const auto [x0, x1] = span(eye.x, g.origin_x, g.nx);
+        const auto [z0, z1] = span(eye.z, g.origin_z, g.nz);
+        for (std::int64_t layer = k - 1; layer <= k; ++layer) {
+          if (layer < 0 || layer >= g.ny) continue;
+          for (std::int64_t z = z0; z <= z1; ++z) {
+            for (std::int64_t x = x0; x <= x1; ++x) {
+              const std::size_t cell = static_cast<std::size_t>((layer * g.nz + z) * g.nx + x);
+              orInto(std::span<std::uint8_t>(seen).subspan(cell * n, n), views.marks());
+            }
+          }
+        }
+      }
+    }
+  }
+}
 }  // namespace
 
 CellBuild buildCells(std::span<const ModelView* const> models,
@@ -227,6 +281,11 @@ CellBuild buildCells(std::span<const ModelView* const> models,
   OcclusionSampling fitting{options.eps, options.near_occluder, options.face};
   fitting.depth_windows = options.depth_windows;
   if (options.eps > 0 && !erosionFits(fitting)) return {};
+  if (!options.spacing.empty() &&
+      ((options.spacing.size() != 1 && options.spacing.size() != options.y.size()) ||
+       *std::min_element(options.spacing.begin(), options.spacing.end()) <= 0)) {
+    return {};
+  }
   const CellGrid& g = build.grid;
   const std::size_t n = instances.size(), cells = g.cellCount();
   std::vector<std::uint8_t> seen(cells * n);  // per cell, per instance
@@ -238,6 +297,8 @@ CellBuild buildCells(std::span<const ModelView* const> models,
   };
   if (options.eps > 0) {
     sampleCovering(g, options, renderer, seen, &build);
+  } else if (!options.spacing.empty()) {
+    sampleSpaced(g, options, renderer, seen, &build);
   } else {
     sampleLattice(g, options, renderer, seen, &build);
   }
@@ -267,7 +328,8 @@ CellBuild buildCells(std::span<const ModelView* const> models,
     const std::int64_t z = static_cast<std::int64_t>(cell / g.nx % g.nz);
     const std::int64_t layer = static_cast<std::int64_t>(cell / (std::size_t{g.nx} * g.nz));
     std::copy(row(cell).begin(), row(cell).end(), widened.begin());
-    for (std::int64_t dz = -1; options.neighbours && options.eps == 0 && dz <= 1; ++dz) {
+    for (std::int64_t dz = -1;
+         options.neighbours && options.eps == 0 && options.spacing.empty() && dz <= 1; ++dz) {
       for (std::int64_t dx = -1; dx <= 1; ++dx) {
         if (x + dx < 0 || x + dx >= g.nx || z + dz < 0 || z + dz >= g.nz) continue;
         orInto(widened, row(cellIndex(x + dx, z + dz, layer)));

@@ -12,6 +12,8 @@
 //  - widened: instances whose cube lies within `margin` of the cell (so what stands next to the eye
 //    is never lost to a sample inside it), then the union of the cell and its eight neighbours in
 //    its layer (what a point between samples sees, one of them saw).
+// With CellBuildOptions::spacing the samples are a denser lattice and the widening is by distance;
+// with CellBuildOptions::winners an instance is seen only where it wins a pixel.
 // Cost: (samples) x 6 frames of face x face pixels; memory a byte per cell and instance. Host side.
 // With CellBuildOptions::eps above 0 the sets come from eroded occlusion maps instead
 // (tools/cell_occlusion.h): conservative for every eye in the cell by construction, without the
@@ -40,6 +42,15 @@ struct CellBuildOptions {
   std::uint32_t seed = 1;
   std::int64_t margin = kPerspectiveUnit / 2;  // Q.24 scene edges
   bool neighbours = true;                      // widen by the eight neighbours' sets
+  // An instance is seen when it wins a pixel of a sample's face (the word the frame keeps), not
+  // when it submits a point: far tighter, and no longer conservative by the tiles' slack.
+  bool winners = false;
+  // Not empty (Q.24 scene edges, each above 0): the samples are a lattice over the whole grid in x
+  // and z on every layer bound, of spacing[k] on bound k (one value: every bound's), with no
+  // corners, centres or seeded points; a cell takes what every sample within `reach` of its box
+  // saw on its layer's bounds: a widening by distance instead of the neighbours' union.
+  std::vector<std::int64_t> spacing;
+  std::int64_t reach = 0;
   // Above 0: the eroded occlusion maps instead (tools/cell_occlusion.h): samples covering each
   // cell's layer box so that every point of it lies within `eps` (Q.24 scene edges) of one, each
   // standing for the eyes within eps of it; surfaces nearer than `near_occluder` do not occlude;

@@ -1,11 +1,13 @@
 // octopoint-pvs: a scene's visibility cells (docs/city.md, "Visibility cells"): per view cell, the
 // instances seen from anywhere in it (tools/cell_build.h), written beside the scene in the cell
 // table format (renderer/cell_table.h) that octopoint-render --cells reads.
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <string>
+#include <vector>
 
 #include "cli/arguments.h"
 #include "cli/error.h"
@@ -46,6 +48,14 @@ sets. octopoint-render --city SCENE.json --cells CELLS draws only the eye's cell
   --seed N           their seed, 0..10^9 (default 1)
   --margin EDGES     instances whose cube comes this near a cell are in its set (default 0.5)
   --no-neighbours    do not widen a set by its neighbours' (for measuring what that buys)
+  --winners          an instance is seen when it wins a pixel of a face (the word the frame
+                     keeps), not when it submits a point: tighter sets
+  --spacing S,...    samples on a lattice over the whole grid on every layer bound, of spacing
+                     S scene edges (one per bound, from the top, or one for all), instead of
+                     the corners, centres and seeded points, and no neighbours' union: a cell
+                     takes what every sample within --reach of it saw
+  --reach EDGES      with --spacing: how far from a cell's box its samples may stand (default 0:
+                     those in it and on its bounds)
 
 Eroded occlusion maps (conservative by construction, tighter; docs/city.md):
   --eps EDGES        sample each cell's layer box so that every point of it lies within EDGES
@@ -82,6 +92,18 @@ std::int64_t edgesOption(const std::string& option, const std::string& text, dou
   return std::llround(std::ldexp(value, kPerspectiveUnitBits));
 }
 
+// A comma-separated list of edgesOption's numbers.
+std::vector<std::int64_t> edgesList(const std::string& option, const std::string& list,
+                                    double limit) {
+  std::vector<std::int64_t> values;
+  for (std::size_t at = 0; at <= list.size();) {
+    const std::size_t comma = std::min(list.find(',', at), list.size());
+    values.push_back(edgesOption(option, list.substr(at, comma - at), limit));
+    at = comma + 1;
+  }
+  return values;
+}
+
 int run(int argc, char** argv) {
   cli::ArgumentReader args(argc, argv);
   std::string scene_path, output;
@@ -96,13 +118,7 @@ int run(int argc, char** argv) {
       options.edge = edgesOption("--cell", args.value(), 4096);
       if (options.edge < kPerspectiveUnit / 64) throw cli::Error("--cell: below 1/64 scene edge");
     } else if (args.is("--layers")) {
-      options.y.clear();
-      const std::string list = args.value();
-      for (std::size_t at = 0; at <= list.size();) {
-        const std::size_t comma = std::min(list.find(',', at), list.size());
-        options.y.push_back(edgesOption("--layers", list.substr(at, comma - at), 128));
-        at = comma + 1;
-      }
+      options.y = edgesList("--layers", args.value(), 128);
       if (options.y.size() < 2 || options.y.size() > kMaxCellLayers + 1)
         throw cli::Error("--layers: give 2 to 65 bounds");
       for (std::size_t k = 1; k < options.y.size(); ++k)
@@ -133,6 +149,16 @@ int run(int argc, char** argv) {
     } else if (args.is("--depth-windows")) {
       args.noValue();
       options.depth_windows = true;
+    } else if (args.is("--winners")) {
+      args.noValue();
+      options.winners = true;
+    } else if (args.is("--spacing")) {
+      options.spacing = edgesList("--spacing", args.value(), 64);
+      for (const std::int64_t spacing : options.spacing)
+        if (spacing < kPerspectiveUnit / 256) throw cli::Error("--spacing: below 1/256 scene edge");
+    } else if (args.is("--reach")) {
+      options.reach = edgesOption("--reach", args.value(), 64);
+      if (options.reach < 0) throw cli::Error("--reach: negative");
     } else if (args.is("--no-neighbours")) {
       args.noValue();
       options.neighbours = false;
@@ -146,6 +172,11 @@ int run(int argc, char** argv) {
   if (output.empty()) throw cli::Error("no output given: use -o CELLS");
   if ((options.eps > 0) != (options.near_occluder != 0))
     throw cli::Error("--eps and --near-occluder go together");
+  if (options.reach > 0 && options.spacing.empty()) throw cli::Error("--reach: needs --spacing");
+  if (options.spacing.size() > 1 && options.spacing.size() != options.y.size())
+    throw cli::Error("--spacing: give one value or one per layer bound");
+  if ((!options.spacing.empty() || options.winners) && options.eps > 0)
+    throw cli::Error("--spacing and --winners: not with --eps");
   if (options.ground && options.eps == 0) throw cli::Error("--ground: needs --eps");
   if (options.radii && options.eps == 0) throw cli::Error("--radii: needs --eps");
   if (options.depth_windows && options.eps == 0) throw cli::Error("--depth-windows: needs --eps");
