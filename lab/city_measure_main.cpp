@@ -175,15 +175,7 @@ class Frames {
   };
 
   Result draw(const Pose& pose) {
-    PerspectiveCamera camera;
-    camera.eye = pose.eye;
-    camera.yaw = Angle::fromMilliDegrees(std::llround(pose.yaw * 1000));
-    camera.pitch = Angle::fromMilliDegrees(std::llround(pose.pitch * 1000));
-    camera.width = 320;
-    camera.height = 240;
-    PerspectiveView view;
-    if (buildPerspectiveView(camera, kDefaultFractionBits, &view) != PerspectiveError::kNone)
-      throw cli::Error("an eye beyond the camera's reach");
+    const PerspectiveView view = viewOf(pose);
     Result result;
     renderer_->clearVisibleSet();
     drawOne(view, all_, &result.passed_all, &result.points_all, &result.seconds_all);
@@ -201,7 +193,44 @@ class Frames {
     return result;
   }
 
+  // The instances that win pixels of the frame drawing everything at `pose` and are not in the
+  // eye's cell's set (what the cells left out there): id and pixels won, most pixels first.
+  std::vector<std::pair<std::uint32_t, std::size_t>> missing(const Pose& pose) {
+    const PerspectiveView view = viewOf(pose);
+    std::vector<std::uint32_t> winners(all_.pixels().size(), 0xFFFFFFFFu);
+    renderer_->clearVisibleSet();
+    renderer_->setPixelWinners(winners);
+    all_.clear();
+    static_cast<void>(renderer_->draw(view, all_));
+    renderer_->setPixelWinners({});
+    const std::int64_t cell = cells_.cellAt(pose.eye);
+    const std::size_t count =
+        cell < 0 ? 0 : cells_.decode(static_cast<std::uint32_t>(cell), visible_, scratch_);
+    std::vector<std::uint8_t> in_set(scene_.instances.size());
+    for (std::size_t k = 0; k < count; ++k) in_set[visible_[k]] = 1;
+    std::map<std::uint32_t, std::size_t> won;
+    for (const std::uint32_t id : winners)
+      if (id < in_set.size() && in_set[id] == 0 && cell >= 0) ++won[id];
+    std::vector<std::pair<std::uint32_t, std::size_t>> list(won.begin(), won.end());
+    std::sort(list.begin(), list.end(), [](const auto& a, const auto& b) {
+      return a.second != b.second ? a.second > b.second : a.first < b.first;
+    });
+    return list;
+  }
+
  private:
+  static PerspectiveView viewOf(const Pose& pose) {
+    PerspectiveCamera camera;
+    camera.eye = pose.eye;
+    camera.yaw = Angle::fromMilliDegrees(std::llround(pose.yaw * 1000));
+    camera.pitch = Angle::fromMilliDegrees(std::llround(pose.pitch * 1000));
+    camera.width = 320;
+    camera.height = 240;
+    PerspectiveView view;
+    if (buildPerspectiveView(camera, kDefaultFractionBits, &view) != PerspectiveError::kNone)
+      throw cli::Error("an eye beyond the camera's reach");
+    return view;
+  }
   void drawOne(const PerspectiveView& view, Framebuffer& frame, std::uint64_t* passed,
                std::uint64_t* points, double* seconds) {
     frame.clear();
@@ -319,6 +348,23 @@ int run(int argc, char** argv) {
       std::ldexp(static_cast<double>(worst_pose.eye.y), -kPerspectiveUnitBits),
       std::ldexp(static_cast<double>(worst_pose.eye.z), -kPerspectiveUnitBits), worst_pose.yaw,
       worst_pose.pitch);
+  if (worst > 0) {
+    // What the worst position's cell left out: the model, the pixels it wins, its distance.
+    std::printf("left out there:");
+    int shown = 0;
+    for (const auto& [id, pixels] : frames.missing(worst_pose)) {
+      if (++shown > 6) break;
+      const SceneInstance& instance = scene->instances[id];
+      const double metres =
+          std::hypot(static_cast<double>(instance.transform.at.x - worst_pose.eye.x),
+                     static_cast<double>(instance.transform.at.z - worst_pose.eye.z)) /
+          static_cast<double>(kEdge) / kMetre;
+      std::printf(" %s %zu px at %.0f m;",
+                  std::filesystem::path(text.models[instance.model]).stem().c_str(), pixels,
+                  metres);
+    }
+    std::printf("\n");
+  }
   std::printf(
       "street frame: %.1f ms and %.0f points submitted without cells, %.1f ms and %.0f with "
       "(320x240, means of %d; wall clock)\n",

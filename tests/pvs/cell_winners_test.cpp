@@ -77,10 +77,10 @@ TEST(CellWinners, EachPixelNamesItsWinnerAndTheWinnersAloneDrawTheSameFrame) {
   for (const int yaw : {0, 30, 90, 180, 215}) {
     for (const std::int64_t z : {-kEdge, 2 * kEdge, 5 * kEdge / 2}) {
       PerspectiveView view;
-      ASSERT_EQ(buildPerspectiveView(perspectiveCameraOf({kEdge / 8, -kEdge / 16, z}, yaw, 5, 60,
-                                                         96, 72),
-                                     kDefaultFractionBits, &view),
-                PerspectiveError::kNone);
+      ASSERT_EQ(
+          buildPerspectiveView(perspectiveCameraOf({kEdge / 8, -kEdge / 16, z}, yaw, 5, 60, 96, 72),
+                               kDefaultFractionBits, &view),
+          PerspectiveError::kNone);
       renderer.clearVisibleSet();
       const Drawn plain = drawWith(renderer, view, false);
       const Drawn with = drawWith(renderer, view, true);
@@ -154,7 +154,7 @@ TEST(CellWinners, SpacedSamplesReachFartherWithReach) {
   options.face = 32;
   options.margin = 0;
   options.winners = true;
-  options.spacing = {kEdge / 2};
+  options.spacing = {kEdge};
   const CellBuild near = buildCells(models, instances, options);
   options.reach = kEdge;
   const CellBuild far = buildCells(models, instances, options);
