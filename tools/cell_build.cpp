@@ -231,6 +231,7 @@ void sampleLattice(const CellGrid& g, const CellBuildOptions& options, SceneRend
     }
   }
 }
+
 // Samples on a lattice over the grid on every layer bound (spacing[k] on bound k); each cell takes
 // what every sample within `reach` of its box (in x and z, on its layer's bounds) saw.
 void sampleSpaced(const CellGrid& g, const CellBuildOptions& options, SceneRenderer& renderer,
@@ -270,6 +271,7 @@ void sampleSpaced(const CellGrid& g, const CellBuildOptions& options, SceneRende
     }
   }
 }
+
 }  // namespace
 
 CellBuild buildCells(std::span<const ModelView* const> models,
