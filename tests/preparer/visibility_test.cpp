@@ -110,14 +110,19 @@ TEST(VisibilityPruning, EverySampledViewDrawsPixelIdenticalToTheUnprunedModel) {
   }
 }
 
+// The frontal scene zoomed in to 2..3, every 15 degrees: a depth-7 voxel covers 2 to 3 pixels.
+std::vector<Camera> zoomedInCameras() {
+  prepare::Scene scene = frontalScene();
+  scene.angle_step_deg = 15;
+  scene.zoom = {2, 3};
+  return prepare::sceneCameras(scene);
+}
+
 // Zoomed in, a depth-7 voxel covers 2 to 3 pixels: the pruned model drawn with footprint splats
 // (the default variant) is still the unpruned model's frame at every sampled view, so it is as
 // hole-free; drawn one pixel per leaf (fixed_baseline), too.
 TEST(VisibilityPruning, ZoomedInSampledViewsDrawTheUnprunedFrameWithSplatsAndWithout) {
-  prepare::Scene scene = frontalScene();
-  scene.angle_step_deg = 15;
-  scene.zoom = {2, 3};
-  const std::vector<Camera> cameras = prepare::sceneCameras(scene);
+  const std::vector<Camera> cameras = zoomedInCameras();
   const ModelPair pair = prepareBoth(testing::faceLikeHeightField(300), cameras);
   ASSERT_LT(pair.pruned_image.size(), pair.unpruned_image.size());
   for (const Variant variant : {defaultVariant(), Variant::kFixedBaseline}) {
@@ -140,10 +145,7 @@ TEST(VisibilityPruning, ZoomedInSampledViewsDrawTheUnprunedFrameWithSplatsAndWit
 // smooth frame at every sampled view is the unpruned model's, colour for colour. Judged by the box
 // frame's winners alone it was not (the leaves just behind the surface's front were pruned).
 TEST(VisibilityPruning, ZoomedInSampledViewsDrawTheUnprunedSmoothFrame) {
-  prepare::Scene scene = frontalScene();
-  scene.angle_step_deg = 15;
-  scene.zoom = {2, 3};
-  const std::vector<Camera> cameras = prepare::sceneCameras(scene);
+  const std::vector<Camera> cameras = zoomedInCameras();
   const ModelPair pair = prepareBoth(testing::faceLikeHeightField(300), cameras);
   ASSERT_LT(pair.pruned_image.size(), pair.unpruned_image.size());
   const auto smooth_rgb = [](const ModelView& model, const Camera& camera) {
