@@ -3,6 +3,8 @@
 // shrinks, grows, moves, changes size and follows another style must still be, pixel for pixel,
 // octopoint-render's frame of the same view (RgbRenderer: the frame resolved whole on the same
 // background) with an opaque alpha byte.
+#include "web/web_canvas.h"
+
 #include <gtest/gtest.h>
 
 #include <cstdint>
@@ -12,7 +14,6 @@
 #include "octopoint/models.h"
 #include "octopoint/rgb_renderer.h"
 #include "web/octopoint_web.h"
-#include "web/web_canvas.h"
 
 namespace octopoint {
 namespace {
@@ -62,8 +63,8 @@ TEST(WebCanvas, EveryColourFrameIsOctopointRendersWhateverWasDrawnBefore) {
       {30000, 10000, kOne / 4, 200, 300},   // another size: no pixel of the last one stays
   };
   for (const View& view : sequence) {
-    SCOPED_TRACE(testing::Message() << "zoom " << view.zoom_q16 << " at " << view.width << "x"
-                                    << view.height);
+    SCOPED_TRACE(testing::Message()
+                 << "zoom " << view.zoom_q16 << " at " << view.width << "x" << view.height);
     EXPECT_EQ(pageRgba(view), nativeRgba(view));
   }
   // After a frame in another style (written whole through RGB), the colour style's again.
