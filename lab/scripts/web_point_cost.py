@@ -207,6 +207,26 @@ def served_port(log):
     sys.exit("web_point_cost: octopoint-serve did not say its port")
 
 
+def serve_page(work, site, servers, logs, width, height):
+    """Serves `site` by octopoint-serve on a free port (its process and log appended to `servers`
+    and `logs`, for stop_serving) and returns the address of its page at yaw 30, pitch 10 and
+    width x height, bare."""
+    log = open(os.path.join(work, "serve%d.log" % len(logs)), "w+")
+    logs.append(log)
+    servers.append(subprocess.Popen([os.path.join(TOOLS, "octopoint-serve"), site, "--port", "0"],
+                                    stdout=log, stderr=subprocess.STDOUT))
+    return "http://127.0.0.1:%d/index.html?yaw=30&pitch=10&w=%d&h=%d&bare=1" % (
+        served_port(log), width, height)
+
+
+def stop_serving(servers, logs):
+    for server in servers:
+        server.terminate()
+        server.wait()
+    for log in logs:
+        log.close()
+
+
 def median(values):
     ordered = sorted(values)
     return ordered[len(ordered) // 2] if len(ordered) % 2 else \
@@ -256,13 +276,7 @@ def main():
                 shutil.copytree(folder, site)
                 for fraction, model in models.items():
                     shutil.copy(model, os.path.join(site, "thin%g.oct" % fraction))
-                log = open(os.path.join(work, "serve%d.log" % i), "w+")
-                logs.append(log)
-                servers.append(subprocess.Popen(
-                    [os.path.join(TOOLS, "octopoint-serve"), site, "--port", "0"],
-                    stdout=log, stderr=subprocess.STDOUT))
-                pages.append("http://127.0.0.1:%d/index.html?yaw=30&pitch=10&w=1280&h=960&bare=1" %
-                             served_port(log))
+                pages.append(serve_page(work, site, servers, logs, 1280, 960))
             tools = DevTools(os.path.join(work, "profile"), UNTHROTTLED)
             tab = tools.open("about:blank")
             native = []
@@ -288,11 +302,7 @@ def main():
         finally:
             if tools:
                 tools.close()
-            for server in servers:
-                server.terminate()
-                server.wait()
-            for log in logs:
-                log.close()
+            stop_serving(servers, logs)
     for i, folder in enumerate(dirs):
         print("Page %s: %s" % ("AB"[i] if len(dirs) <= 2 else str(i + 1), folder))
     print("Embedded model (62,502 points), yaw 30, pitch 10, zoom 1; ms a frame (the fastest "
