@@ -20,10 +20,11 @@ footprint (wider splats), is left out. ROUNDS times (default 3), each
 round: the native benchmark (the fastest of 10 repetitions); in one tab of headless Chromium
 (web/test/devtools.py, the DevTools pipe), for each page, the page from octopoint-serve, its
 embedded model drawn at 320x240 and 1280x960 (and the page's putImageData of the frame to its
-canvas timed alone, with and without a copy into an ImageData of its own first); then each thinned model streamed into the same tab until
-its view is complete and drawn at 640x480 and 1280x960. Each page time is the fastest of 10 batches of DRAWS
-draws (default 20) after 20 to warm up, yaw 30, pitch 10, zoom 1 (performance.now() in the page;
-the draw: frame clear, draw, resolve and RGBA copy, not the canvas's putImageData). The fastest, on
+canvas timed alone, with and without a copy into an ImageData of its own first); then each thinned
+model streamed into the same tab until its view is complete and drawn at 640x480 and 1280x960.
+Each page time is the fastest of 10 batches of DRAWS draws (default 20) after 20 to warm up, yaw
+30, pitch 10, zoom 1 (performance.now() in the page; the draw: frame clear, draw and the resolve
+into RGBA, not the canvas's putImageData). The fastest, on
 both sides: on a shared machine the others' load only ever adds time. The fit
 time = fixed + per_point * points is least squares over every round's sample, printed with its
 residuals (root mean square and largest), each round's own fit and the fit of each model's fastest
@@ -80,9 +81,9 @@ TIMING = """(() => {
 
 
 # The rest of the page's frame (web/octopoint.js's draw), at the size of the last draw: the
-# module's RGBA put into the page's canvas (putImageData) from an ImageData over the module's memory,
-# as the page does, and, as it did before, copied into an ImageData of its own first; the fastest
-# batch's mean ms of each.
+# module's RGBA put into the page's canvas (putImageData) from an ImageData over the module's
+# memory, as the page does, and, as it did before, copied into an ImageData of its own first; the
+# fastest batch's mean ms of each.
 CANVAS_COPY = """(() => {
   const w = %(w)d, h = %(h)d;
   const canvas = document.querySelector('canvas');
@@ -307,7 +308,8 @@ def main():
         print("Page %s: %s" % ("AB"[i] if len(dirs) <= 2 else str(i + 1), folder))
     print("Embedded model (62,502 points), yaw 30, pitch 10, zoom 1; ms a frame (the fastest "
           "batch), median of %d rounds (each round's in brackets); wasm in Chromium over native "
-          "fixed_fast per round; putImageData to the canvas alone (without and with a copy first):" % rounds)
+          "fixed_fast per round; putImageData to the canvas alone (without and with a copy "
+          "first):" % rounds)
     for w, h in EMBEDDED_SIZES:
         fast = [n[("fixed_fast", w, h)] for n in native]
         simd = [n[("fixed_simd", w, h)] for n in native]
