@@ -1,0 +1,39 @@
+# ctest city.stream_walk (docs/city.md, "Walking over a slow link"): a small generated city (2 x 2
+# blocks, make_city and octopoint-prepare --chunked as scripts/make-city --chunked runs them,
+# depths 5..8), then octopoint-city-walk: a street walk while the models stream from a real
+# octopoint-serve over a shaped link (--check: no frame has a hole where a model had arrived, and
+# the last frame, once everything its view needs has arrived, is the complete city's, colour for
+# colour).
+# usage: cmake -DMAKE_CITY=... -DPREPARE=... -DWALK=... -DSERVE=... -DOUT=DIR -P this
+file(REMOVE_RECURSE ${OUT})
+file(MAKE_DIRECTORY ${OUT})
+execute_process(COMMAND ${MAKE_CITY} --blocks 2 --spacing 6 --seed 4 -o ${OUT}
+                RESULT_VARIABLE result OUTPUT_VARIABLE output ERROR_VARIABLE output)
+if(NOT result EQUAL 0)
+  message(FATAL_ERROR "make_city failed:\n${output}")
+endif()
+file(GLOB plys ${OUT}/*.ply)
+foreach(ply ${plys})
+  get_filename_component(name ${ply} NAME_WE)
+  execute_process(COMMAND ${PREPARE} ${ply} -o ${OUT}/prepared --name ${name} --depths 5..8
+                          --colours 24 --single-source --chunked
+                  RESULT_VARIABLE result OUTPUT_VARIABLE output ERROR_VARIABLE output)
+  if(NOT result EQUAL 0)
+    message(FATAL_ERROR "octopoint-prepare ${ply} failed:\n${output}")
+  endif()
+  file(RENAME ${OUT}/prepared/${name}.oct ${OUT}/${name}.oct)
+  file(REMOVE ${ply})
+endforeach()
+execute_process(COMMAND ${WALK} ${OUT}/city.json --serve ${SERVE} --rate 100000 --latency 50
+                        --seconds 8 --seed 3 --truth-scale 1 --settle 240 --check
+                RESULT_VARIABLE result OUTPUT_VARIABLE output ERROR_VARIABLE output)
+message("${output}")
+if(NOT result EQUAL 0)
+  message(FATAL_ERROR "octopoint-city-walk --check failed")
+endif()
+foreach(line "holes: 0 frames with a hole" "the complete city's, colour for colour")
+  string(FIND "${output}" "${line}" at)
+  if(at EQUAL -1)
+    message(FATAL_ERROR "no '${line}' in octopoint-city-walk's output")
+  endif()
+endforeach()
