@@ -21,7 +21,9 @@ namespace octopoint::city_streets {
 constexpr std::int64_t kEdge = kPerspectiveUnit;  // one scene edge, Q.24
 constexpr double kMetre = 1.0 / 32;               // the generated city's scene edge is 32 m
 
-inline std::int64_t q24(double edges) { return std::llround(std::ldexp(edges, kPerspectiveUnitBits)); }
+inline std::int64_t q24(double edges) {
+  return std::llround(std::ldexp(edges, kPerspectiveUnitBits));
+}
 
 struct Pose {
   Point3<std::int64_t> eye;

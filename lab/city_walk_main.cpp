@@ -26,6 +26,7 @@
 #include "net/scene_stream.h"
 #include "renderer/held_scene.h"
 #include "tools/camera_path.h"
+#include "tools/png_file.h"
 
 namespace {
 
@@ -51,7 +52,10 @@ the same eye (docs/city.md, "Walking over a slow link").
   --settle S         after the walk, wait up to S seconds for the last view's every chunk, then
                      compare the last frame with the complete city's
   --check            exit 1 unless the settled last frame is the complete city's, colour for
-                     colour, and no frame has a hole where a model had arrived
+                     colour, and no frame has a hole (inside a surface the complete city's frame
+                     of the models that had arrived covers)
+  --worst-hole PNG   writes the frame missing most pixels, the holes and outline pixels in red,
+                     and the complete city's frame of the models that had arrived beside it
   --serve PATH       octopoint-serve (default: build/release/tools/ beside this tool)
 )";
 
@@ -59,7 +63,7 @@ constexpr int kPosesPerSecond = 20;
 constexpr double kWalkSpeed = 1.4;  // metres a second
 
 struct Options {
-  std::string scene, path, cells, serve;
+  std::string scene, path, cells, serve, worst_png;
   std::uint64_t rate = 50000;
   std::uint32_t latency = 100;
   int connections = 2, seed = 1, truth_scale = 4;
@@ -257,9 +261,11 @@ Options parseOptions(int argc, char** argv, bool* help) {
       *help = true;
       return options;
     } else if (args.is("--rate")) {
-      options.rate = static_cast<std::uint64_t>(cli::parseInt(args.name(), args.value(), 1, 1 << 30));
+      options.rate =
+          static_cast<std::uint64_t>(cli::parseInt(args.name(), args.value(), 1, 1 << 30));
     } else if (args.is("--latency")) {
-      options.latency = static_cast<std::uint32_t>(cli::parseInt(args.name(), args.value(), 0, 60000));
+      options.latency =
+          static_cast<std::uint32_t>(cli::parseInt(args.name(), args.value(), 0, 60000));
     } else if (args.is("--connections")) {
       options.connections = cli::parseInt(args.name(), args.value(), 1, 8);
     } else if (args.is("--seconds")) {
@@ -274,6 +280,8 @@ Options parseOptions(int argc, char** argv, bool* help) {
       options.seed = cli::parseInt(args.name(), args.value(), 0, 1'000'000'000);
     } else if (args.is("--path")) {
       options.path = args.value();
+    } else if (args.is("--worst-hole")) {
+      options.worst_png = args.value();
     } else if (args.is("--cells")) {
       options.cells = args.value();
     } else if (args.is("--serve")) {
@@ -314,9 +322,9 @@ int run(int argc, char** argv) {
   const std::string folder = std::filesystem::path(options.scene).parent_path().string();
   const std::uint64_t per_connection =
       std::max<std::uint64_t>(1, options.rate / static_cast<std::uint64_t>(options.connections));
-  const Link link{std::to_string(options.rate) + " B/s + " + std::to_string(options.latency) +
-                      " ms",
-                  per_connection, options.latency};
+  const Link link{
+      std::to_string(options.rate) + " B/s + " + std::to_string(options.latency) + " ms",
+      per_connection, options.latency};
   ServeProcess server(options.serve, folder.empty() ? "." : folder, link);
   net::SceneStreamOptions stream_options;
   stream_options.connections = options.connections;
@@ -350,9 +358,9 @@ int run(int argc, char** argv) {
     frames.push_back(held.draw(viewOf(poses[k]), t, stream.bytesReceived()));
     last = t;
     const std::vector<std::uint8_t>& colours = frames.back().colours;
-    if (first_picture < 0 &&
-        std::find_if(colours.begin(), colours.end(), [](std::uint8_t c) { return c != 255; }) !=
-            colours.end()) {
+    if (first_picture < 0 && std::find_if(colours.begin(), colours.end(), [](std::uint8_t c) {
+                               return c != 255;
+                             }) != colours.end()) {
       first_picture = t;
     }
   }
@@ -368,7 +376,8 @@ int run(int argc, char** argv) {
     const net::SceneStreamStatus status = stream.waitUntilSettled(
         std::chrono::milliseconds(static_cast<std::int64_t>(options.settle * 1000)));
     settle_seconds = std::chrono::duration<double>(Clock::now() - before).count();
-    if (!status.settled) std::printf("the last view did not settle within %.0f s\n", options.settle);
+    if (!status.settled)
+      std::printf("the last view did not settle within %.0f s\n", options.settle);
     held.update(stream);
     settled = held.draw(last_view, length + settle_seconds, status.bytes_received);
   }
@@ -379,39 +388,58 @@ int run(int argc, char** argv) {
               scene->label.c_str(), link.name.c_str(), options.connections,
               static_cast<unsigned long long>(per_connection), length, frames.size());
   std::printf("first picture: %.2f s\n", first_picture);
-  std::printf("bytes received: %llu during the walk, %llu in all (the models' files: %llu), "
-              "%u requests (%u failed)\n",
-              static_cast<unsigned long long>(frames.empty() ? 0 : frames.back().bytes),
-              static_cast<unsigned long long>(status.bytes_received),
-              static_cast<unsigned long long>(file_bytes), status.requests,
-              status.failed_requests);
+  std::printf(
+      "bytes received: %llu during the walk, %llu in all (the models' files: %llu), "
+      "%u requests (%u failed)\n",
+      static_cast<unsigned long long>(frames.empty() ? 0 : frames.back().bytes),
+      static_cast<unsigned long long>(status.bytes_received),
+      static_cast<unsigned long long>(file_bytes), status.requests, status.failed_requests);
   WalkScorer scorer(*scene, table, options.truth_scale);
-  std::size_t within = 0, identical = 0, holey = 0;
-  std::uint64_t worst_holes = 0;
+  std::size_t within = 0, identical = 0, holey = 0, outlined = 0;
+  std::uint64_t worst_missing = 0, worst_holes = 0, worst_outline = 0;
+  WalkScore worst;
+  double worst_at = 0;
   std::vector<double> against_complete, complete_truth;
   for (const WalkFrame& frame : frames) {
     const WalkScore score = scorer.score(frame, held.palette());
     within += score.within_1db ? 1 : 0;
     identical += std::isinf(score.psnr_complete) ? 1 : 0;
     holey += score.holes > 0 ? 1 : 0;
+    outlined += score.outline > 0 ? 1 : 0;
     worst_holes = std::max(worst_holes, score.holes);
+    worst_outline = std::max(worst_outline, score.outline);
+    if (score.holes + score.outline > worst_missing) {
+      worst_missing = score.holes + score.outline;
+      worst = score;
+      worst_at = frame.seconds;
+      if (!options.worst_png.empty())
+        writePng(options.worst_png, scorer.holes(frame, held.palette()));
+    }
     against_complete.push_back(score.psnr_complete);
     complete_truth.push_back(score.complete_truth);
   }
   const auto median = [](std::vector<double> values) {
     if (values.empty()) return 0.0;
-    std::nth_element(values.begin(), values.begin() + static_cast<std::ptrdiff_t>(values.size() / 2),
-                     values.end());
+    std::nth_element(values.begin(),
+                     values.begin() + static_cast<std::ptrdiff_t>(values.size() / 2), values.end());
     return values[values.size() / 2];
   };
   const double count = std::max<double>(1, static_cast<double>(frames.size()));
-  std::printf("within 1 dB: %.1f%% of frames (PSNR against the truth drawn %dx wider and higher, "
-              "averaged down; the complete frames' median %.1f dB)\n",
-              100 * static_cast<double>(within) / count, options.truth_scale, median(complete_truth));
+  std::printf(
+      "within 1 dB: %.1f%% of frames (PSNR against the truth drawn %dx wider and higher, "
+      "averaged down; the complete frames' median %.1f dB)\n",
+      100 * static_cast<double>(within) / count, options.truth_scale, median(complete_truth));
   std::printf("against the complete city's frame: median %.1f dB, %.1f%% identical\n",
               median(against_complete), 100 * static_cast<double>(identical) / count);
-  std::printf("holes: %zu frames with a hole, worst %llu pixels\n", holey,
-              static_cast<unsigned long long>(worst_holes));
+  std::printf(
+      "holes: %zu frames with a hole inside a surface (worst %llu pixels); %zu with outline "
+      "pixels missed (worst %llu)",
+      holey, static_cast<unsigned long long>(worst_holes), outlined,
+      static_cast<unsigned long long>(worst_outline));
+  if (worst_missing > 0)
+    std::printf("; the worst frame at %.1f s, rows %d to %d", worst_at, worst.hole_top,
+                worst.hole_bottom);
+  std::printf("\n");
   bool same = true;
   if (settled) {
     const cv::Mat whole = scorer.complete(last_view);
@@ -422,8 +450,9 @@ int run(int argc, char** argv) {
     const int pixels = cv::countNonZero(any);
     same = pixels == 0;
     std::printf("last frame, settled after %.1f s more: %s\n", settle_seconds,
-                same ? "the complete city's, colour for colour"
-                     : (std::to_string(pixels) + " pixels differ from the complete city's").c_str());
+                same
+                    ? "the complete city's, colour for colour"
+                    : (std::to_string(pixels) + " pixels differ from the complete city's").c_str());
   }
   return options.check && (!same || holey > 0) ? 1 : 0;
 }

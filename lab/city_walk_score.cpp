@@ -31,11 +31,23 @@ cv::Mat WalkScorer::draw(const PerspectiveView& view, const std::vector<std::uin
   static_cast<void>(renderer_->draw(view, frame));
   cv::Mat rgb(view.camera.height, view.camera.width, CV_8UC3);
   // Every model holds the scene's palette (tools/scene_file.h): the first one's resolves.
-  static_cast<void>(resolveToRgb(frame, *scene_.models.front(), kWalkBackground,
-                                 {rgb.data, rgb.total() * 3}));
+  static_cast<void>(
+      resolveToRgb(frame, *scene_.models.front(), kWalkBackground, {rgb.data, rgb.total() * 3}));
   cv::Mat bgr;
   cv::cvtColor(rgb, bgr, cv::COLOR_RGB2BGR);
   return bgr;
+}
+
+cv::Mat WalkScorer::holes(const WalkFrame& walk, std::span<const std::uint8_t> palette) {
+  cv::Mat image = streamed(walk, palette);
+  const std::span<const std::uint32_t> words = frame_.pixels();
+  for (std::size_t i = 0; i < words.size() && i < walk.colours.size(); ++i) {
+    if (words[i] != FrameView::kEmpty && walk.colours[i] == 255)
+      image.at<cv::Vec3b>(static_cast<int>(i)) = cv::Vec3b{0, 0, 255};
+  }
+  cv::Mat both;
+  cv::hconcat(image, only_frame_, both);
+  return both;
 }
 
 cv::Mat WalkScorer::complete(const PerspectiveView& view) { return draw(view, nullptr, frame_); }
@@ -75,13 +87,23 @@ WalkScore WalkScorer::score(const WalkFrame& walk, std::span<const std::uint8_t>
   for (std::size_t i = 0; i < scene_.instances.size(); ++i)
     if (walk.models[scene_.instances[i].model] != 0) only_.push_back(static_cast<std::uint32_t>(i));
   if (only_.size() != scene_.instances.size() || cells_) {
-    static_cast<void>(draw(walk.view, &only_, frame_));
+    only_frame_ = draw(walk.view, &only_, frame_);
   } else {
-    static_cast<void>(complete(walk.view));
+    only_frame_ = complete(walk.view);
   }
   const std::span<const std::uint32_t> words = frame_.pixels();
-  for (std::size_t i = 0; i < words.size() && i < walk.colours.size(); ++i)
-    score.holes += words[i] != FrameView::kEmpty && walk.colours[i] == 255 ? 1 : 0;
+  const std::int32_t width = frame_.width(), height = frame_.height();
+  for (std::size_t i = 0; i < words.size() && i < walk.colours.size(); ++i) {
+    if (words[i] == FrameView::kEmpty || walk.colours[i] != 255) continue;
+    const auto x = static_cast<std::int32_t>(i % static_cast<std::size_t>(width));
+    const auto y = static_cast<std::int32_t>(i / static_cast<std::size_t>(width));
+    const bool inside = x > 0 && y > 0 && x + 1 < width && y + 1 < height &&
+                        frame_.covered(x - 1, y) && frame_.covered(x + 1, y) &&
+                        frame_.covered(x, y - 1) && frame_.covered(x, y + 1);
+    ++(inside ? score.holes : score.outline);
+    score.hole_top = score.hole_top < 0 ? y : std::min(score.hole_top, y);
+    score.hole_bottom = std::max(score.hole_bottom, y);
+  }
   return score;
 }
 

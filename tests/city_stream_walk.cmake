@@ -1,9 +1,9 @@
 # ctest city.stream_walk (docs/city.md, "Walking over a slow link"): a small generated city (2 x 2
 # blocks, make_city and octopoint-prepare --chunked as scripts/make-city --chunked runs them,
 # depths 5..8), then octopoint-city-walk: a street walk while the models stream from a real
-# octopoint-serve over a shaped link (--check: no frame has a hole where a model had arrived, and
-# the last frame, once everything its view needs has arrived, is the complete city's, colour for
-# colour).
+# octopoint-serve over a shaped link (--check: no frame has a hole inside a surface the complete
+# city's frame of the models that had arrived covers, and the last frame, once everything its view
+# needs has arrived, is the complete city's, colour for colour).
 # usage: cmake -DMAKE_CITY=... -DPREPARE=... -DWALK=... -DSERVE=... -DOUT=DIR -P this
 file(REMOVE_RECURSE ${OUT})
 file(MAKE_DIRECTORY ${OUT})
