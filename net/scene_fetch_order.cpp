@@ -25,8 +25,8 @@ std::uint64_t itemId(std::uint32_t model, bool head, const FetchItem& item) {
 }  // namespace
 
 void SceneFetchOrder::want(const SceneFetchEntry& entry) {
-  const auto [found, added] = at_.try_emplace(itemId(entry.model, entry.head, entry.item),
-                                              wanted_.size());
+  const auto [found, added] =
+      at_.try_emplace(itemId(entry.model, entry.head, entry.item), wanted_.size());
   if (added) {
     wanted_.push_back(entry);
   } else if (entry.key < wanted_[found->second].key) {
@@ -71,7 +71,8 @@ void SceneFetchOrder::addInstance(std::span<ProgressiveModel* const> models,
                                                      items_, nullptr, nearest_);
   for (std::size_t k = 0; k < count; ++k) {
     const FetchItem& item = items_[k];
-    const int region_level = model->head().levels[static_cast<std::size_t>(item.level)].region_level;
+    const int region_level =
+        model->head().levels[static_cast<std::size_t>(item.level)].region_level;
     const bool table = item.kind == FetchItem::Kind::kRecordTable;
     want({instance.model, false, item,
           key(item.level, table ? box_nearest : nearest_[k], region_level, k)});

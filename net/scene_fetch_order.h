@@ -54,8 +54,8 @@ class SceneFetchOrder {
   void want(const SceneFetchEntry& entry);
 
   PerspectiveFetchOrder perspective_order_;
-  std::vector<FetchItem> items_;                        // one instance's order
-  std::vector<std::uint32_t> nearest_;                  // its chunks' nearest depths
+  std::vector<FetchItem> items_;                       // one instance's order
+  std::vector<std::uint32_t> nearest_;                 // its chunks' nearest depths
   std::unordered_map<std::uint64_t, std::size_t> at_;  // an item's entry in wanted_
   std::vector<SceneFetchEntry> wanted_;
 };

@@ -42,8 +42,8 @@ class SceneStream::Impl {
       Streamed streamed;
       streamed.url = folder;
       streamed.url.path += file;
-      streamed.planner.emplace(FetchPlanOptions{options.max_request_bytes,
-                                                options.merge_gap_bytes, false});
+      streamed.planner.emplace(
+          FetchPlanOptions{options.max_request_bytes, options.merge_gap_bytes, false});
       models_.push_back(std::move(streamed));
     }
     pointers_.assign(models_.size(), nullptr);
@@ -139,8 +139,8 @@ class SceneStream::Impl {
       if (!streamed.model) {
         if (streamed.head_in_flight) continue;
         // Until the fixed header is in, ask for the first bytes; then for the rest of the head.
-        std::uint64_t want = streamed.head_bytes > 0 ? streamed.head_bytes
-                                                     : options_.first_request_bytes;
+        std::uint64_t want =
+            streamed.head_bytes > 0 ? streamed.head_bytes : options_.first_request_bytes;
         want = std::max<std::uint64_t>(want, chunked::kFixedHeaderBytes);
         if (want <= streamed.head.size()) want = streamed.head.size() + 1;
         plan.head = true;
@@ -171,8 +171,7 @@ class SceneStream::Impl {
       if (!size) return fail(streamed.url.text() + ": " + describe(issue.error));
       streamed.head_bytes = *size;
     }
-    if (!streamed.model && streamed.head_bytes > 0 &&
-        streamed.head.size() >= streamed.head_bytes) {
+    if (!streamed.model && streamed.head_bytes > 0 && streamed.head.size() >= streamed.head_bytes) {
       std::optional<ProgressiveModel> model = ProgressiveModel::fromHead(streamed.head, &issue);
       if (!model) return fail(streamed.url.text() + ": " + describe(issue.error));
       streamed.model = std::move(model);

@@ -59,10 +59,10 @@ class HeldScene {
 
  private:
   struct Held {
-    bool known = false;                    // its head has arrived
-    std::array<std::uint8_t, 256> map{};   // its palette into the scene's
-    HeldParts parts;                       // its leaves in the scene's palette
-    std::vector<int> detail;               // parts.detailDepths()
+    bool known = false;                   // its head has arrived
+    std::array<std::uint8_t, 256> map{};  // its palette into the scene's
+    HeldParts parts;                      // its leaves in the scene's palette
+    std::vector<int> detail;              // parts.detailDepths()
   };
   std::vector<SceneInstance> instances_;
   std::vector<Held> models_;
