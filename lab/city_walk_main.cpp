@@ -400,9 +400,15 @@ int run(int argc, char** argv) {
   WalkScore worst;
   double worst_at = 0;
   std::vector<double> against_complete, complete_truth;
+  std::vector<std::size_t> window_frames, window_within;  // per 10 s of the walk
   for (const WalkFrame& frame : frames) {
     const WalkScore score = scorer.score(frame, held.palette());
     within += score.within_1db ? 1 : 0;
+    const auto window = static_cast<std::size_t>(frame.seconds / 10);
+    window_frames.resize(std::max(window_frames.size(), window + 1), 0);
+    window_within.resize(window_frames.size(), 0);
+    ++window_frames[window];
+    window_within[window] += score.within_1db ? 1 : 0;
     identical += std::isinf(score.psnr_complete) ? 1 : 0;
     holey += score.holes > 0 ? 1 : 0;
     outlined += score.outline > 0 ? 1 : 0;
@@ -429,6 +435,12 @@ int run(int argc, char** argv) {
       "within 1 dB: %.1f%% of frames (PSNR against the truth drawn %dx wider and higher, "
       "averaged down; the complete frames' median %.1f dB)\n",
       100 * static_cast<double>(within) / count, options.truth_scale, median(complete_truth));
+  std::printf("within 1 dB per 10 s of the walk:");
+  for (std::size_t w = 0; w < window_frames.size(); ++w) {
+    std::printf(" %.0f%%", 100 * static_cast<double>(window_within[w]) /
+                               static_cast<double>(std::max<std::size_t>(1, window_frames[w])));
+  }
+  std::printf("\n");
   std::printf("against the complete city's frame: median %.1f dB, %.1f%% identical\n",
               median(against_complete), 100 * static_cast<double>(identical) / count);
   std::printf(

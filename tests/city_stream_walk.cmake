@@ -5,25 +5,8 @@
 # city's frame of the models that had arrived covers, and the last frame, once everything its view
 # needs has arrived, is the complete city's, colour for colour).
 # usage: cmake -DMAKE_CITY=... -DPREPARE=... -DWALK=... -DSERVE=... -DOUT=DIR -P this
-file(REMOVE_RECURSE ${OUT})
-file(MAKE_DIRECTORY ${OUT})
-execute_process(COMMAND ${MAKE_CITY} --blocks 2 --spacing 6 --seed 4 -o ${OUT}
-                RESULT_VARIABLE result OUTPUT_VARIABLE output ERROR_VARIABLE output)
-if(NOT result EQUAL 0)
-  message(FATAL_ERROR "make_city failed:\n${output}")
-endif()
-file(GLOB plys ${OUT}/*.ply)
-foreach(ply ${plys})
-  get_filename_component(name ${ply} NAME_WE)
-  execute_process(COMMAND ${PREPARE} ${ply} -o ${OUT}/prepared --name ${name} --depths 5..8
-                          --colours 24 --single-source --chunked
-                  RESULT_VARIABLE result OUTPUT_VARIABLE output ERROR_VARIABLE output)
-  if(NOT result EQUAL 0)
-    message(FATAL_ERROR "octopoint-prepare ${ply} failed:\n${output}")
-  endif()
-  file(RENAME ${OUT}/prepared/${name}.oct ${OUT}/${name}.oct)
-  file(REMOVE ${ply})
-endforeach()
+set(CITY_PREPARE_OPTIONS --chunked)
+include(${CMAKE_CURRENT_LIST_DIR}/small_city.cmake)
 execute_process(COMMAND ${WALK} ${OUT}/city.json --serve ${SERVE} --rate 100000 --latency 50
                         --seconds 8 --seed 3 --truth-scale 1 --settle 240 --check
                 RESULT_VARIABLE result OUTPUT_VARIABLE output ERROR_VARIABLE output)
