@@ -9,9 +9,7 @@
 #include <set>
 #include <tuple>
 
-#include "codegen/chunked_writer.h"
-#include "octopoint/models.h"
-#include "tests/support/model_images.h"
+#include "tests/support/net_test_support.h"
 
 namespace octopoint {
 namespace {
@@ -19,21 +17,18 @@ namespace {
 constexpr std::int64_t kSceneEdge = kPerspectiveUnit;
 
 struct SceneFixture {
-  prepare::PreparedModel prepared =
-      fuzzing::preparedModel(*models::defaultModel(), {4, 5, 6, 7, 8});
-  std::vector<std::uint8_t> image = prepare::serializeChunkedModel(prepared, {64, 600});
   // Model 1 two scene edges ahead of the eye, model 0 six ahead and four behind it.
   std::vector<SceneInstance> instances = {
       {1, {{0, 0, 2 * kSceneEdge}, Angle{}, 0}},
       {0, {{0, 0, 6 * kSceneEdge}, Angle{}, 0}},
       {0, {{0, 0, -4 * kSceneEdge}, Angle{}, 0}},
   };
-  // The head and every record table, no chunk.
+  // The default model's chunked file with its head and every record table, no chunk.
   ProgressiveModel tablesOnly() const {
+    const std::vector<std::uint8_t>& image = testing::streamedModelImage();
     ChunkedIssue issue;
-    std::optional<ProgressiveModel> whole = progressiveModelFromPrefix(image, &issue);
-    EXPECT_TRUE(whole.has_value());
-    const std::size_t tables_end = whole->head().levels[1].chunks_offset;
+    const std::size_t tables_end =
+        progressiveModelFromPrefix(image, &issue)->head().levels[1].chunks_offset;
     std::optional<ProgressiveModel> model =
         progressiveModelFromPrefix(std::span(image).first(tables_end), &issue);
     EXPECT_TRUE(model.has_value());
@@ -46,7 +41,8 @@ net::SceneFetchTier tierAtOrigin(bool around) {
   camera.width = 320;
   camera.height = 240;
   net::SceneFetchTier tier;
-  EXPECT_EQ(buildPerspectiveView(camera, kDefaultFractionBits, &tier.view), PerspectiveError::kNone);
+  EXPECT_EQ(buildPerspectiveView(camera, kDefaultFractionBits, &tier.view),
+            PerspectiveError::kNone);
   tier.include_invisible = around;
   return tier;
 }
