@@ -3,12 +3,14 @@
 #include <algorithm>
 #include <limits>
 #include <thread>
+#include <utility>
 
 #include "codegen/octree_encoder.h"
 #include "codegen/parallel.h"
 #include "codegen/prepare_error.h"
 #include "codegen/progress.h"
 #include "renderer/decode_baseline.h"
+#include "renderer/smooth_reach.h"
 
 namespace octopoint::prepare {
 namespace {
@@ -69,6 +71,52 @@ struct MarkNearestSink {
   }
 };
 
+// Third pass, for smooth frames (octopoint/smooth.h) that blend: every leaf whose kernel reaches a
+// pixel whose nearest key (the box frame's, with splats) lies within the depth tolerance of its
+// own adds to that pixel's blend, so it is kept, whether or not it wins a pixel. The tolerance is
+// padded by 512 key units, because the blend of normals compares keys rounded to 256ths: a leaf
+// either comparison lets in is kept (keeping a loser changes no frame: it sets no nearest key).
+struct MarkBlendedSink {
+  std::int32_t width;
+  std::int32_t height;
+  const FrameSetup& setup;
+  SmoothReach reach;
+  const std::vector<std::uint32_t>& nearest;
+  std::vector<std::uint8_t>& visible;
+  std::uint32_t next_leaf = 0;
+
+  // The pixels whose centre lies strictly within the radius of `at` (Q(32-F).F), clipped to
+  // [0, size): [begin, end), as SmoothSplats weighs them.
+  std::pair<std::int32_t, std::int32_t> within(std::int32_t at, std::int32_t size) const {
+    const int f = setup.fraction_bits;
+    const std::int64_t half = std::int64_t{1} << (f - 1);
+    const std::int64_t first = ((at - reach.radius - half) >> f) + 1;
+    const std::int64_t last = (at + reach.radius - half - 1) >> f;
+    return {static_cast<std::int32_t>(std::max<std::int64_t>(first, 0)),
+            static_cast<std::int32_t>(std::min<std::int64_t>(last + 1, size))};
+  }
+
+  void operator()(std::int32_t x, std::int32_t y, std::int32_t z, std::uint8_t) {
+    const std::uint32_t index = next_leaf++;
+    if (visible[index] != 0) return;
+    const std::int64_t key = setup.depthKey(z);
+    const std::int64_t tolerance = std::int64_t{reach.tolerance} + 512;
+    const auto [x_begin, x_end] = within(x, width);
+    const auto [y_begin, y_end] = within(y, height);
+    for (std::int32_t py = y_begin; py < y_end; ++py) {
+      const std::size_t row = static_cast<std::size_t>(py) * static_cast<std::size_t>(width);
+      for (std::int32_t px = x_begin; px < x_end; ++px) {
+        const std::uint32_t there = nearest[row + static_cast<std::size_t>(px)];
+        if (there == std::numeric_limits<std::uint32_t>::max()) continue;  // nothing drawn
+        if (key - there <= tolerance && there - key <= tolerance) {
+          visible[index] = 1;
+          return;
+        }
+      }
+    }
+  }
+};
+
 void markWinners(const LevelView& level, const FrameSetup& setup,
                  std::vector<std::uint32_t>& nearest, std::vector<std::uint8_t>& visible) {
   for (const bool splat : {false, true}) {
@@ -82,6 +130,11 @@ void markWinners(const LevelView& level, const FrameSetup& setup,
     MarkNearestSink second{pixels_of, nearest, visible};
     BaselineWalk<MarkNearestSink>(level, setup, second).run();
   }
+  // `nearest` is now the box frame's with splats (the frame a smooth frame blends over).
+  const SmoothReach reach = smoothReachOf(setup);
+  if (!reach.blends) return;
+  MarkBlendedSink third{setup.width, setup.height, setup, reach, nearest, visible};
+  BaselineWalk<MarkBlendedSink>(level, setup, third).run();
 }
 
 }  // namespace

@@ -5,6 +5,8 @@
 // per pixel the nearest leaf with Framebuffer::plot's rule (the first strictly nearest wins). A
 // leaf's screen position depends only on its own path in the tree, so removing losers leaves every
 // winner where it was: at each of these cameras the pruned level draws the very same pixels.
+// Where a view magnifies its voxels, every leaf a smooth frame (octopoint/smooth.h) blends into a
+// pixel is kept too, so that the smooth frames are the same as well.
 
 #include <cstdint>
 #include <span>

@@ -61,7 +61,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     if (!renderer.draw(view, frame)) std::abort();
   }
   if (scene.models.size() <= 4) {  // each model indexed for collision: few, for speed
-    const SceneCollision collision(models, scene.instances, &error);
+    SceneCollision collision(models, scene.instances, &error);
     if (error != SceneError::kNone || collision.unindexedModel()) std::abort();
     for (const SceneInstance& instance : scene.instances) {
       for (const std::int64_t radius :
@@ -74,6 +74,15 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     const ModelPoint from = scene.instances.front().transform.at;
     static_cast<void>(moveWithCollision(collision, body, from,
                                         {from.x + kPerspectiveUnit, from.y, from.z - 12345}));
+    // Every other instance moved (out of the grid): still met exactly where it is now.
+    for (std::size_t i = 0; i < scene.instances.size(); i += 2) {
+      InstanceTransform moved = scene.instances[i].transform;
+      moved.at.z = moved.at.z / 2 - kPerspectiveUnit;
+      moved.turn = moved.turn + Angle::fromDegrees(71);
+      if (collision.place(i, moved) != SceneError::kNone) std::abort();
+      const CollisionSphere sphere{moved.at, kPerspectiveUnit / 128};
+      if (collision.meets(sphere) != sphereMeets(collision.instances(), sphere)) std::abort();
+    }
   }
   for (std::size_t i = 0; i < scene.instances.size(); ++i) {
     InstanceTransform moved = scene.instances[i].transform;

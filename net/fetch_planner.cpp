@@ -40,6 +40,13 @@ FetchPlanner::Outcome FetchPlanner::next(ProgressiveModel& model, const Perspect
       budget, range);
 }
 
+FetchPlanner::Outcome FetchPlanner::next(std::span<const FetchItem> priority, std::uint64_t budget,
+                                         FetchRange& range) {
+  priority_.assign(priority.begin(), priority.end());
+  priority_.resize(std::max(priority_.size(), kPriorityWindow));  // the other orders' room
+  return plan([&](bool) { return priority.size(); }, budget, range);
+}
+
 template <typename Priority>
 FetchPlanner::Outcome FetchPlanner::plan(const Priority& priority, std::uint64_t budget,
                                          FetchRange& range) {

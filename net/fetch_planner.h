@@ -53,6 +53,9 @@ class FetchPlanner {
   // largest on screen first, each region only as fine as its distance asks).
   Outcome next(ProgressiveModel& model, const PerspectiveView& view, std::uint64_t budget,
                FetchRange& range);
+  // The same for an order the caller made (a scene's, merged over the instances of the model:
+  // net/scene_fetch_order.h), most urgent first; every item in it counts as wanted.
+  Outcome next(std::span<const FetchItem> priority, std::uint64_t budget, FetchRange& range);
 
   // Hands `model` every item of `range` from index `next` on whose bytes have all arrived
   // (`arrived` holds the range's first bytes), in order, and takes each out of flight; `taken`

@@ -63,6 +63,24 @@ inline std::int64_t mulShiftRoundSmall(std::int64_t a, std::int64_t b, int shift
   return mulShiftRound(a, b, shift);
 }
 
+// 2^(62 - significantBits(b)), 0 where b takes more than 62 bits: a factor a with |a| below it
+// meets mulShiftRoundSmall's condition significantBits(a) + significantBits(b) <= 62. Made once
+// for a factor that many products share, so that each product compares instead of counting a's
+// bits (a library call per count on a Cortex-M0+, which has no CLZ instruction).
+inline std::int64_t smallProductLimit(std::int64_t b) {
+  const int bits = significantBits(b);
+  return bits > 62 ? 0 : std::int64_t{1} << (62 - bits);
+}
+
+// mulShiftRoundQuick(a, b, shift) for a b whose smallProductLimit is `limit`: the same bits.
+[[nodiscard]] inline std::optional<std::int64_t> mulShiftRoundLimited(std::int64_t a,
+                                                                      std::int64_t b,
+                                                                      std::int64_t limit,
+                                                                      int shift) {
+  if (shift >= 1 && shift <= 62 && a > -limit && a < limit) return mulShiftRoundSmall(a, b, shift);
+  return mulShiftRound(a, b, shift);
+}
+
 using ModelPoint = Point3<std::int64_t>;   // Q.24 cube edges, model space
 using CameraPoint = Point3<std::int64_t>;  // Q.24 cube edges, camera space
 

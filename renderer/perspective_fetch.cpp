@@ -27,7 +27,7 @@ ModelPoint regionCentre(std::uint32_t code, int region_level) {
 
 std::size_t PerspectiveFetchOrder::order(const ProgressiveModel& model, const PerspectiveView& view,
                                          bool include_invisible, std::span<FetchItem> out,
-                                         std::size_t* total) {
+                                         std::size_t* total, std::span<std::uint32_t> nearest_out) {
   if (total != nullptr) *total = 0;
   scratch_.clear();
   // Detail by distance over the model's depths (the base's included), as many as a frame draws.
@@ -89,6 +89,8 @@ std::size_t PerspectiveFetchOrder::order(const ProgressiveModel& model, const Pe
   std::partial_sort(scratch_.begin(), scratch_.begin() + static_cast<std::ptrdiff_t>(count),
                     scratch_.end(), [](const Entry& a, const Entry& b) { return a.key < b.key; });
   for (std::size_t i = 0; i < count; ++i) out[i] = scratch_[i].item;
+  for (std::size_t i = 0; i < count && i < nearest_out.size(); ++i)
+    nearest_out[i] = static_cast<std::uint32_t>(scratch_[i].key >> 27);  // the key's near_key bits
   return count;
 }
 

@@ -25,9 +25,13 @@ namespace octopoint {
 class PerspectiveFetchOrder {
  public:
   // Writes up to out.size() items, most urgent first, and returns how many; `total`, when given,
-  // gets how many there are in all. Invisible chunks only with `include_invisible`.
+  // gets how many there are in all. Invisible chunks only with `include_invisible`. `nearest_out`,
+  // when given (at least as long as `out`), gets each chunk's region's nearest depth in 1/2^20
+  // cube edge (0 for a record table): a scene merges its instances' orders by it
+  // (net/scene_fetch_order.h).
   std::size_t order(const ProgressiveModel& model, const PerspectiveView& view,
-                    bool include_invisible, std::span<FetchItem> out, std::size_t* total = nullptr);
+                    bool include_invisible, std::span<FetchItem> out, std::size_t* total = nullptr,
+                    std::span<std::uint32_t> nearest_out = {});
 
  private:
   struct Entry {

@@ -127,10 +127,10 @@ PerspectiveWalkTables perspectiveWalkTables(const PerspectiveView& view, int dep
   tables.right_q30 = slope(width - view.centre_x);
   tables.top_q30 = slope(view.centre_y);
   tables.bottom_q30 = slope(height - view.centre_y);
-  tables.left_bits = significantBits(tables.left_q30);
-  tables.right_bits = significantBits(tables.right_q30);
-  tables.top_bits = significantBits(tables.top_q30);
-  tables.bottom_bits = significantBits(tables.bottom_q30);
+  tables.left_limit = smallProductLimit(tables.left_q30);
+  tables.right_limit = smallProductLimit(tables.right_q30);
+  tables.top_limit = smallProductLimit(tables.top_q30);
+  tables.bottom_limit = smallProductLimit(tables.bottom_q30);
   const auto widest = [](std::int64_t a, std::int64_t b) {
     if (a == INT64_MAX || b == INT64_MAX) return INT64_MAX;
     return std::max(a < 0 ? -a : a, b < 0 ? -b : b);

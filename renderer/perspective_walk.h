@@ -49,7 +49,12 @@ class PerspectiveWalk {
         abort_(abort),
         parts_(parts),
         nodes_(level.nodes.data()),
-        node_(level.nodes.data()) {}
+        node_(level.nodes.data()) {
+    if (parts_.band != nullptr) {
+      band_top_limit_ = smallProductLimit(parts_.band->top_q30);
+      band_bottom_limit_ = smallProductLimit(parts_.band->bottom_q30);
+    }
+  }
 
   bool run() {
     // The root's centre is the model's origin. The walk's centres are Q.(24 + walk_bits) (fine);
@@ -250,9 +255,9 @@ class PerspectiveWalk {
   bool outsideBand(const CameraPoint& c, std::int64_t reach) const {
     const std::int64_t top = parts_.band->top_q30, bottom = parts_.band->bottom_q30;
     const std::optional<std::int64_t> above =
-        mulShiftRoundQuick(top >= 0 ? c.z - reach : c.z + reach, top, 30);
-    const std::optional<std::int64_t> below =
-        mulShiftRoundQuick(bottom >= 0 ? c.z + reach : c.z - reach, bottom, 30);
+        mulShiftRoundLimited(top >= 0 ? c.z - reach : c.z + reach, top, band_top_limit_, 30);
+    const std::optional<std::int64_t> below = mulShiftRoundLimited(
+        bottom >= 0 ? c.z + reach : c.z - reach, bottom, band_bottom_limit_, 30);
     // Rounded to nearest: one unit more keeps the test conservative.
     return (above && c.y + reach < *above - 1) || (below && c.y - reach > *below + 1);
   }
@@ -313,37 +318,16 @@ class PerspectiveWalk {
     if constexpr (kSinkNarrows) {
       narrow = sink_.narrowAffine();
       if (narrow) {
-        fillScreenOffsets(level, sums, narrow_offset_);
+        fillScreenOffsets(level, tables_.depth, sums, narrow_offset_);
         walkAffine<std::int32_t>(level, mask, indexed, subtree, model_centre);
       }
     }
     if (!narrow) {
-      fillScreenOffsets(level, sums, screen_offset_);
+      fillScreenOffsets(level, tables_.depth, sums, screen_offset_);
       walkAffine<std::int64_t>(level, mask, indexed, subtree, model_centre);
     }
     if constexpr (requires { sink_.leaveAffine(); }) sink_.leaveAffine();
     return true;
-  }
-
-  // Per level m from `level` down, the eight screen vectors of drawAffine: each sum rounded once
-  // (roundShiftRight, with the half added once per level: the sums are far below 2^62), into
-  // `offsets`: int64, or int32 where the sink said every position of the subtree fits (then
-  // each vector does too: it is the difference of two of them, both in [0, 2^31)).
-  template <typename Int>
-  void fillScreenOffsets(int level, const Point3<std::int64_t> (&sums)[4],
-                         std::array<std::array<Point3<Int>, 8>, kMaxRenderDepth>& offsets) {
-    for (int m = level; m < tables_.depth; ++m) {
-      const int shift = m + 2;
-      const std::int64_t round = std::int64_t{1} << (shift - 1);
-      auto& level_offsets = offsets[static_cast<std::size_t>(m)];
-      for (unsigned k = 0; k < 4; ++k) {
-        const auto x = static_cast<Int>((sums[k].x + round) >> shift);
-        const auto y = static_cast<Int>((sums[k].y + round) >> shift);
-        const auto z = static_cast<Int>((sums[k].z + round) >> shift);
-        level_offsets[k] = {x, y, z};
-        level_offsets[7 - k] = {static_cast<Int>(-x), static_cast<Int>(-y), static_cast<Int>(-z)};
-      }
-    }
   }
 
   // The walk below drawAffine's node, its positions in Int (int64, or int32 where they fit:
@@ -523,6 +507,8 @@ class PerspectiveWalk {
   const std::uint8_t* node_;
   std::size_t leaf_ = 0;
   bool aborted_ = false;
+  // The band's slopes' smallProductLimit (outsideBand): made once a walk, not per node.
+  std::int64_t band_top_limit_ = 0, band_bottom_limit_ = 0;
   // The screen vectors of the subtree drawn from its affine map: Q(32-F).F, depth in Q.24; int64,
   // or int32 where the sink says the subtree's positions fit (narrowAffine). One storage: a
   // walk lives on a device's stack.

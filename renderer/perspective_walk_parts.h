@@ -3,6 +3,7 @@
 // drawn from one affine map, a band's rows and the walk's optional parts; in a header of their own
 // so that the walk's stays small.
 
+#include <array>
 #include <cstddef>
 #include <cstdint>
 
@@ -64,5 +65,54 @@ struct PerspectiveWalkParts {
   // the whole frame.
   const PerspectiveBand* band = nullptr;
 };
+
+// fillScreenOffsets' roundings, in Sum (int32 or int64).
+template <typename Sum, typename Int>
+void roundScreenOffsets(int level, int depth, const Point3<std::int64_t> (&sums)[4],
+                        std::array<std::array<Point3<Int>, 8>, kMaxRenderDepth>& offsets) {
+  for (int m = level; m < depth; ++m) {
+    const int shift = m + 2;
+    const Sum round = Sum{1} << (shift - 1);
+    auto& level_offsets = offsets[static_cast<std::size_t>(m)];
+    for (unsigned k = 0; k < 4; ++k) {
+      const auto x = static_cast<Int>((static_cast<Sum>(sums[k].x) + round) >> shift);
+      const auto y = static_cast<Int>((static_cast<Sum>(sums[k].y) + round) >> shift);
+      const auto z = static_cast<Int>((static_cast<Sum>(sums[k].z) + round) >> shift);
+      level_offsets[k] = {x, y, z};
+      level_offsets[7 - k] = {static_cast<Int>(-x), static_cast<Int>(-y), static_cast<Int>(-z)};
+    }
+  }
+}
+
+// The screen vectors of a subtree of a level-depth tree drawn from one affine map
+// (PerspectiveWalk::drawAffine), per level m from `level` down: each sum of the map's axis vectors
+// with child k's signs (`sums`: children 0 to 3; child 7 - k is child k mirrored) times
+// 2^-(m+2), rounded once (roundShiftRight, with the half added once per level: the sums are far
+// below 2^62), into `offsets`: int64, or int32 where the walk's sink said every position of the
+// subtree fits (then each vector does too: it is the difference of two of them, both in
+// [0, 2^31)). On 32-bit ARM, where every sum lies within +-2^30 (a subtree of up to 2^(30-F)
+// pixels a cube edge: most) the roundings are made in 32 bits, which cannot overflow (the half
+// added is at most 2^16): the same values, and there a 64-bit shift by a variable is several
+// instructions (a dozen on a Cortex-M0+); on a 64-bit host it is one, and the test cost more
+// than it saved (callgrind: 0.7% of a 320x240 frame at 60 degrees).
+template <typename Int>
+void fillScreenOffsets(int level, int depth, const Point3<std::int64_t> (&sums)[4],
+                       std::array<std::array<Point3<Int>, 8>, kMaxRenderDepth>& offsets) {
+#if defined(__arm__)
+  constexpr std::int64_t kNarrowSum = std::int64_t{1} << 30;
+  bool narrow = true;
+  for (const Point3<std::int64_t>& sum : sums) {
+    for (const std::int64_t v : {sum.x, sum.y, sum.z})
+      narrow = narrow && v > -kNarrowSum && v < kNarrowSum;
+  }
+  if (narrow) {
+    roundScreenOffsets<std::int32_t>(level, depth, sums, offsets);
+  } else {
+    roundScreenOffsets<std::int64_t>(level, depth, sums, offsets);
+  }
+#else
+  roundScreenOffsets<std::int64_t>(level, depth, sums, offsets);
+#endif
+}
 
 }  // namespace octopoint

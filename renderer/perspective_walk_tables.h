@@ -23,10 +23,11 @@ struct PerspectiveWalkTables {
   // pan moves the principal point, so they differ, and one is negative when it leaves the
   // screen); INT64_MAX where a slope does not fit (that side is not tested).
   std::int64_t left_q30 = 0, right_q30 = 0, top_q30 = 0, bottom_q30 = 0;
-  // Their significantBits (63 for INT64_MAX), so that the frustum test counts only the depth's
-  // bits per node (counting is most of a product's cost where the product itself is one
-  // instruction: callgrind).
-  int left_bits = 0, right_bits = 0, top_bits = 0, bottom_bits = 0;
+  // Their smallProductLimit: a depth below it times the slope is one product, so that the
+  // frustum test compares instead of counting bits per node (counting was most of a product's cost
+  // where the product itself is one instruction, callgrind; on a Cortex-M0+ each count is a
+  // library call).
+  std::int64_t left_limit = 0, right_limit = 0, top_limit = 0, bottom_limit = 0;
   // The largest |x / z| and |y / z| on the screen (for the affine error bound).
   std::int64_t slope_x_q30 = 0;
   std::int64_t slope_y_q30 = 0;
@@ -64,19 +65,15 @@ inline bool outsideFrustumSides(const PerspectiveWalkTables& tables, const Camer
   const std::int64_t far_z = c.z + reach;
   if (far_z < near) return true;
   const std::int64_t near_z = c.z - reach > near ? c.z - reach : near;
-  const int far_bits = significantBits(far_z), near_bits = significantBits(near_z);
   // mulShiftRoundQuick(slope >= 0 ? far_z : near_z, slope, 30), the slope's bits counted once a
   // frame: the same bits.
-  const auto extent = [&](std::int64_t slope_q30, int slope_bits) -> std::optional<std::int64_t> {
-    const std::int64_t z = slope_q30 >= 0 ? far_z : near_z;
-    if ((slope_q30 >= 0 ? far_bits : near_bits) + slope_bits <= 62)
-      return mulShiftRoundSmall(z, slope_q30, 30);
-    return mulShiftRound(z, slope_q30, 30);
+  const auto extent = [&](std::int64_t slope_q30, std::int64_t limit) {
+    return mulShiftRoundLimited(slope_q30 >= 0 ? far_z : near_z, slope_q30, limit, 30);
   };
-  const std::optional<std::int64_t> left = extent(tables.left_q30, tables.left_bits);
-  const std::optional<std::int64_t> right = extent(tables.right_q30, tables.right_bits);
-  const std::optional<std::int64_t> top = extent(tables.top_q30, tables.top_bits);
-  const std::optional<std::int64_t> bottom = extent(tables.bottom_q30, tables.bottom_bits);
+  const std::optional<std::int64_t> left = extent(tables.left_q30, tables.left_limit);
+  const std::optional<std::int64_t> right = extent(tables.right_q30, tables.right_limit);
+  const std::optional<std::int64_t> top = extent(tables.top_q30, tables.top_limit);
+  const std::optional<std::int64_t> bottom = extent(tables.bottom_q30, tables.bottom_limit);
   return (right && c.x - reach > *right + 1) || (left && c.x + reach < -*left - 1) ||
          (bottom && c.y - reach > *bottom + 1) || (top && c.y + reach < -*top - 1);
 }

@@ -88,7 +88,20 @@ SceneCollision::SceneCollision(std::span<const ModelView* const> models,
     cellsOf(instances_[i].transform,
             [&](std::size_t cell) { cell_items_[filled[cell]++] = static_cast<std::uint32_t>(i); });
   }
+  moved_.assign(instances_.size(), 0);
+  moving_.reserve(instances_.size());
   valid_ = true;
+}
+
+SceneError SceneCollision::place(std::size_t i, const InstanceTransform& transform) {
+  if (!valid_ || i >= instances_.size()) return SceneError::kBadInstanceIndex;
+  if (const SceneError error = checkTransform(transform); error != SceneError::kNone) return error;
+  instances_[i].transform = transform;
+  if (moved_[i] == 0) {
+    moved_[i] = 1;
+    moving_.push_back(static_cast<std::uint32_t>(i));  // within the reserved capacity
+  }
+  return SceneError::kNone;
 }
 
 bool SceneCollision::meets(const CollisionSphere& sphere, CollisionStats* stats) const {
@@ -104,10 +117,16 @@ bool SceneCollision::meets(const CollisionSphere& sphere, CollisionStats* stats)
     for (std::int64_t z = z0; z <= z1; ++z) {
       const auto cell = static_cast<std::size_t>(x * cells_z_ + z);
       for (std::uint32_t k = cell_start_[cell]; k < cell_start_[cell + 1]; ++k) {
+        const std::uint32_t i = cell_items_[k];
+        if (moved_[i] != 0) continue;  // tested below, where it is now
         if (stats != nullptr) ++stats->instances_tested;
-        if (instanceMeets(instances_[cell_items_[k]], sphere, stats)) return true;
+        if (instanceMeets(instances_[i], sphere, stats)) return true;
       }
     }
+  }
+  for (const std::uint32_t i : moving_) {
+    if (stats != nullptr) ++stats->instances_tested;
+    if (instanceMeets(instances_[i], sphere, stats)) return true;
   }
   return false;
 }

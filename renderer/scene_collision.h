@@ -7,6 +7,8 @@
 // widest instance box, so each instance is listed in at most 2 x 2 cells, and at most 4 cells per
 // instance (or 4,096) in all. A query looks at the few cells its sphere's box covers: its cost
 // follows the instances near the eye, not the scene; it allocates nothing. Integer only.
+// Instances that move (containers, cranes: place) leave the grid and are tested by every query:
+// a query's cost grows by the moving ones, which are few; the grid is never rebuilt.
 
 #include <cstdint>
 #include <optional>
@@ -35,6 +37,11 @@ class SceneCollision final : public CollisionWorld {
   bool meets(const CollisionSphere& sphere) const override { return meets(sphere, nullptr); }
   bool meets(const CollisionSphere& sphere, CollisionStats* stats) const;
 
+  // Moves instance `i` for collision, as SceneRenderer::place moves it for drawing: later queries
+  // meet it there. Refused (the instance left where it was) for an unknown instance, a bad
+  // transform (checkTransform) or a scene that was refused. Allocates nothing.
+  SceneError place(std::size_t i, const InstanceTransform& transform);
+
   std::span<const CollisionInstance> instances() const { return instances_; }
   int cellShift() const { return cell_shift_; }  // the grid's cell edge: 2^cellShift Q.24 units
 
@@ -48,6 +55,10 @@ class SceneCollision final : public CollisionWorld {
   int cell_shift_ = 0;
   std::vector<std::uint32_t> cell_start_;
   std::vector<std::uint32_t> cell_items_;
+  // Per instance, 1 once it was moved: the grid's entries for it are passed over, and it is in
+  // moving_ (sized with the scene), tested by every query.
+  std::vector<std::uint8_t> moved_;
+  std::vector<std::uint32_t> moving_;
   std::optional<std::size_t> unindexed_model_;
   bool valid_ = false;
 };

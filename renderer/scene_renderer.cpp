@@ -8,7 +8,8 @@
 namespace octopoint {
 
 SceneRenderer::SceneRenderer(std::span<const ModelView* const> models,
-                             std::span<const SceneInstance> instances, SceneError* error) {
+                             std::span<const SceneInstance> instances, SceneError* error,
+                             std::span<const std::vector<int>> detail_depths) {
   *error = SceneError::kNone;
   if (models.empty() || models.size() > kMaxSceneModels) {
     *error = SceneError::kNoModels;
@@ -24,8 +25,11 @@ SceneRenderer::SceneRenderer(std::span<const ModelView* const> models,
   }
   if (*error != SceneError::kNone) return;
   models_.assign(models.begin(), models.end());
-  for (const ModelView* model : models_)
-    renderers_.push_back(std::make_unique<PerspectiveRenderer>(*model));
+  detail_depths_.resize(models_.size());
+  for (std::size_t m = 0; m < models_.size() && m < detail_depths.size(); ++m)
+    detail_depths_[m] = detail_depths[m];
+  for (std::size_t m = 0; m < models_.size(); ++m)
+    renderers_.push_back(std::make_unique<PerspectiveRenderer>(*models_[m], detail_depths_[m]));
   instances_.assign(instances.begin(), instances.end());
   for (const SceneInstance& instance : instances_)
     largest_scale_ = std::max(largest_scale_, instance.transform.scale);
@@ -89,7 +93,8 @@ bool SceneRenderer::layersOf(const PerspectiveView& view, const SceneInstance& i
   if (instanceView(view, instance.transform, depth_shift_, model_view) != PerspectiveError::kNone)
     return false;  // turned, its eye lies beyond the camera's reach
   *layers = perspectiveLayers(*models_[instance.model], *model_view, 0,
-                              renderers_[instance.model]->upperTreeIndexes(), tables_, coarser_);
+                              renderers_[instance.model]->upperTreeIndexes(), tables_, coarser_,
+                              detail_depths_[instance.model]);
   return true;
 }
 

@@ -42,9 +42,13 @@ struct SceneDrawStats {
 class SceneRenderer {
  public:
   // `models` (each must outlive the renderer) and the instances; `*error` says why a scene is
-  // refused (then nothing is drawn).
+  // refused (then nothing is drawn). `detail_depths`, when given, one list per model (ascending;
+  // an empty list: the model's densely sampled depths): the depths detail by distance chooses
+  // among for that model, as PerspectiveRenderer's (a part of a partly held chunked model,
+  // renderer/chunked_assembly.h, holds only the first of them: a scene streaming in,
+  // renderer/held_scene.h).
   SceneRenderer(std::span<const ModelView* const> models, std::span<const SceneInstance> instances,
-                SceneError* error);
+                SceneError* error, std::span<const std::vector<int>> detail_depths = {});
 
   std::size_t instanceCount() const { return instances_.size(); }
   const SceneInstance& instance(std::size_t i) const { return instances_[i]; }
@@ -119,6 +123,7 @@ class SceneRenderer {
 
   std::vector<const ModelView*> models_;
   std::vector<std::unique_ptr<PerspectiveRenderer>> renderers_;  // per model: its indexes
+  std::vector<std::vector<int>> detail_depths_;  // per model: the constructor's (empty: its own)
   // The instances in view, nearest first, in order_: their count.
   std::size_t orderInView(const PerspectiveView& view, SceneDrawStats& counted);
   // Instance `instance`'s model view and layers; false when the camera cannot reach it.

@@ -14,6 +14,7 @@
 #include "renderer/decode_algorithms.h"
 #include "renderer/smooth_normalise.h"
 #include "renderer/smooth_normals.h"
+#include "renderer/smooth_reach.h"
 #include "renderer/subtree_clip.h"
 
 namespace octopoint {
@@ -82,7 +83,7 @@ class BlendWalk {
         column_weight_(column_weight),
         row_weight_(row_weight),
         abort_(abort),
-        radius_x_(radiusOf(setup)),
+        radius_x_(smoothReachOf(setup).radius),
         radius_y_(radius_x_),
         // divideUnsigned: no libgcc division on a Cortex-M0+ (docs/device.md), the same bits.
         inverse_x_(
@@ -91,9 +92,7 @@ class BlendWalk {
         inverse_y_(
             divideUnsigned(std::uint64_t{kKernelSteps} << 32, static_cast<std::uint64_t>(radius_y_))
                 .quotient),
-        tolerance_(static_cast<std::uint32_t>(std::min<std::uint64_t>(
-            (voxelEdgeOnScreen(setup) * kDepthToleranceVoxelEdges) >> setup.depth_shift,
-            FrameView::kMaxDepthKey))),
+        tolerance_(smoothReachOf(setup).tolerance),
         clip_(setup, kernelReach()) {}
 
   bool run() {
@@ -102,16 +101,6 @@ class BlendWalk {
   }
 
  private:
-  // Q(32-F).F; at least one pixel, so that a leaf always reaches the pixel it lies in.
-  static std::int64_t radiusOf(const FrameSetup& setup) {
-    const auto edge = static_cast<std::int64_t>(voxelEdgeOnScreen(setup));
-    const std::int64_t edge_or_pixel =
-        std::max<std::int64_t>(edge, std::int64_t{1} << setup.fraction_bits);
-    // Widened by the level's sample reach (Q4; 16 leaves it as it was): neighbouring samples are
-    // that much farther apart than the voxels (docs/splats.md, "Samples coarser than the voxel").
-    return std::max<std::int64_t>(edge_or_pixel * kRadiusSixteenths * setup.sample_reach / 256, 1);
-  }
-
   // The pixels a leaf reaches, as a footprint for SubtreeClip: p - R .. p + R per axis.
   SplatFootprint kernelReach() const {
     SplatFootprint reach;
@@ -418,6 +407,23 @@ std::size_t pixelCount(std::int32_t width, std::int32_t height) {
 
 }  // namespace
 
+SmoothReach smoothReachOf(const FrameSetup& setup) {
+  SmoothReach reach;
+  const std::uint64_t edge = voxelEdgeOnScreen(setup);  // Q(32-F).F pixels
+  const std::uint64_t pixel = std::uint64_t{1} << setup.fraction_bits;
+  reach.blends = setup.splat.active() &&
+                 ((edge * static_cast<std::uint64_t>(setup.sample_reach)) >> 4) > pixel;
+  // At least one pixel, so that a leaf always reaches the pixel it lies in; widened by the
+  // level's sample reach (Q4; 16 leaves it as it was): neighbouring samples are that much farther
+  // apart than the voxels (docs/splats.md, "Samples coarser than the voxel").
+  const auto edge_or_pixel = static_cast<std::int64_t>(std::max(edge, pixel));
+  reach.radius =
+      std::max<std::int64_t>(edge_or_pixel * kRadiusSixteenths * setup.sample_reach / 256, 1);
+  reach.tolerance = static_cast<std::uint32_t>(std::min<std::uint64_t>(
+      (edge * kDepthToleranceVoxelEdges) >> setup.depth_shift, FrameView::kMaxDepthKey));
+  return reach;
+}
+
 SmoothSplats::SmoothSplats(std::int32_t width, std::int32_t height)
     : width_(validSize(width, height) ? width : 0),
       height_(validSize(width, height) ? height : 0),
@@ -466,9 +472,7 @@ bool SmoothSplats::begin(const FrameSetup& setup, const FrameView& frame) {
   // a pixel wide, and blending it cost 4 to 8 times the box frame (docs/splats.md).
   // A level whose samples lie farther apart than its voxels (setup.sample_reach, Q4) is blended
   // where the samples' spacing is over a pixel.
-  blended_ = setup.splat.active() &&
-             ((voxelEdgeOnScreen(setup) * static_cast<std::uint64_t>(setup.sample_reach)) >> 4) >
-                 (std::uint64_t{1} << setup.fraction_bits);
+  blended_ = smoothReachOf(setup).blends;
   blends_normals_ = blended_ && frame.payload() == PixelPayload::kColourNormal;
   blended_rect_ = blended_ ? frame.drawnRect() : PixelRect{};
   if (blended_rect_.empty()) return true;

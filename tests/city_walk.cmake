@@ -5,25 +5,7 @@
 # octopoint-render --city --path --collide: a path from a street into a slab stops at its wall
 # (frames stopped, the last frame not the one drawn without --collide).
 # usage: cmake -DMAKE_CITY=... -DPREPARE=... -DCITY_WALK=... -DRENDER=... -DOUT=DIR -P this
-file(REMOVE_RECURSE ${OUT})
-file(MAKE_DIRECTORY ${OUT})
-execute_process(COMMAND ${MAKE_CITY} --blocks 2 --spacing 6 --seed 4 -o ${OUT}
-                RESULT_VARIABLE result OUTPUT_VARIABLE output ERROR_VARIABLE output)
-if(NOT result EQUAL 0)
-  message(FATAL_ERROR "make_city failed:\n${output}")
-endif()
-file(GLOB plys ${OUT}/*.ply)
-foreach(ply ${plys})
-  get_filename_component(name ${ply} NAME_WE)
-  execute_process(COMMAND ${PREPARE} ${ply} -o ${OUT}/prepared --name ${name} --depths 5..8
-                          --colours 24 --single-source
-                  RESULT_VARIABLE result OUTPUT_VARIABLE output ERROR_VARIABLE output)
-  if(NOT result EQUAL 0)
-    message(FATAL_ERROR "octopoint-prepare ${ply} failed:\n${output}")
-  endif()
-  file(RENAME ${OUT}/prepared/${name}.oct ${OUT}/${name}.oct)
-  file(REMOVE ${ply})
-endforeach()
+include(${CMAKE_CURRENT_LIST_DIR}/small_city.cmake)
 execute_process(COMMAND ${CITY_WALK} ${OUT}/city.json --steps 10000 --seed 33
                         --solid tower.oct,slab.oct,hall.oct,house.oct
                         --ground street.oct,pavement.oct

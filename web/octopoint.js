@@ -93,7 +93,7 @@
 
   let api = null;
   let pending = false;
-  let image = null;  // the last frame's pixels, reused while the size stays
+  let image = null;  // the last frame's pixels in the module's memory, reused while they stay
   let stream = null;  // the chunked model's fetching (web/octopoint_stream.js), once one is open
   let streamProblem = '';  // what its server did wrong, kept in the overlay
   let walk = null;  // walk mode (web/octopoint_walk.js), where the module has it
@@ -177,11 +177,15 @@
       return;
     }
     const bytes = size.width * size.height * 4;
-    // Copied into an image kept between frames of the same size (the module's memory may grow,
-    // and move, at a draw of another size).
-    if (image === null || image.width !== size.width || image.height !== size.height)
-      image = new ImageData(size.width, size.height);
-    image.data.set(new Uint8Array(Module.HEAPU8.buffer, api.pixels(), bytes));
+    // An image over the module's own pixels (putImageData copies them: no copy of our own), made
+    // anew when they move: another size, or the module's memory grown (a new buffer).
+    const at = api.pixels();
+    if (image === null || image.data.buffer !== Module.HEAPU8.buffer ||
+        image.data.byteOffset !== at || image.width !== size.width ||
+        image.height !== size.height) {
+      image = new ImageData(new Uint8ClampedArray(Module.HEAPU8.buffer, at, bytes), size.width,
+                            size.height);
+    }
     if (canvas.width !== size.width) canvas.width = size.width;
     if (canvas.height !== size.height) canvas.height = size.height;
     if (size.css !== null) {

@@ -80,7 +80,9 @@ int octopoint_web_draw(std::int32_t yaw_millidegrees, std::int32_t pitch_millide
 }
 
 const std::uint8_t* octopoint_web_pixels(void) {
-  return web::canvas().rgba.empty() ? nullptr : web::canvas().rgba.data();
+  const std::vector<std::uint32_t>& rgba = web::canvas().rgba;
+  // The words' bytes, R, G, B, A a pixel in memory order (web/web_canvas.h).
+  return rgba.empty() ? nullptr : reinterpret_cast<const std::uint8_t*>(rgba.data());
 }
 
 int octopoint_web_set_style(const char* name) {
@@ -144,8 +146,14 @@ int drawWith(Variant variant, std::int32_t yaw_millidegrees, std::int32_t pitch_
   Framebuffer& frame = out.sized(camera.width, camera.height);
   frame.clear(web.styler.payload());
   if (!renderLevel(variant, *level, setup, frame)) return fail("the draw was refused");
+  if (web.styler.options().style == Style::kColour) {
+    // The palette's colours on the background (the styler's colour style): straight into RGBA.
+    out.resolveColour(web.model, web.styler.options().background);
+    return succeed();
+  }
   web.styler.beginFrame(setup);
-  if (web.styler.resolve(frame, out.rgb) != StyleError::kNone) return fail("the style refused");
+  if (web.styler.resolve(frame, out.rgbToWrite()) != StyleError::kNone)
+    return fail("the style refused");
   out.toRgba();
   return succeed();
 #endif

@@ -5,7 +5,8 @@
 // tables and each chunk before it is drawn, and refuses a damaged chunk so that it is asked for
 // again (at most ProgressiveModel::kMaxChunkAttempts times). The draw is octopoint-render's of a
 // chunked file (tools/chunked_render.cpp: the frame cleared, the progressive draw, resolveToRgb on
-// its background), so that the page's frame of a complete view is its PNG, pixel for pixel.
+// its background, here straight into RGBA), so that the page's frame of a complete view is its PNG,
+// pixel for pixel.
 #include <algorithm>
 #include <array>
 #include <cstdint>
@@ -144,9 +145,7 @@ int drawStream(Variant variant, const Camera& camera) {
   ProgressiveDrawStats stats;
   if (!s.model->draw(camera, variant, frame, &stats)) return fail(describe(CameraError::kOverflow));
   s.drawn_points = stats.points;
-  if (!resolveToRgb(frame, s.model->baseModel(), kBackground, out.rgb))
-    return fail("the frame could not be resolved");
-  out.toRgba();
+  out.resolveColour(s.model->baseModel(), kBackground);
   return succeed();
 }
 

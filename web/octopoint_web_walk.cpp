@@ -276,8 +276,7 @@ int octopoint_web_walk_draw(std::int32_t width, std::int32_t height, std::int32_
       return fail("the walk's draw failed");
   }
 #endif
-  if (!resolveToRgb(frame, *model, web::kBackground, out.rgb)) return fail("the resolve failed");
-  out.toRgba();
+  out.resolveColour(*model, web::kBackground);
   publishPoints(stats);
   return succeed();
 }

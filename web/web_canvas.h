@@ -5,6 +5,7 @@
 
 #include <cstdint>
 #include <optional>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -20,16 +21,32 @@ namespace octopoint::web {
 inline constexpr Rgb kBackground{236, 236, 240};
 
 struct Canvas {
-  std::vector<std::uint8_t> rgb;   // what the styler or resolveToRgb writes, 3 bytes a pixel
-  std::vector<std::uint8_t> rgba;  // what the page copies into its canvas, 4 bytes a pixel
+  // What the styler writes for the styles other than colour, 3 bytes a pixel.
+  std::vector<std::uint8_t> rgb;
+  // What the page copies into its canvas: each word a pixel's R, G, B and A bytes in memory order
+  // (the layout of a canvas's ImageData), row after row.
+  std::vector<std::uint32_t> rgba;
   // Kept between draws and made anew only when the size changes: no allocation per frame (the
   // vectors above keep their capacity too).
   std::optional<Framebuffer> frame;
 
-  // The frame at this size (not cleared) and rgb sized to match.
+  // The frame at this size (not cleared) and rgba sized to match.
   Framebuffer& sized(std::int32_t width, std::int32_t height);
-  // Widens rgb into opaque RGBA, the layout of a canvas's ImageData.
+  // The colour style (octopoint-render's resolveToRgb: a covered pixel's palette colour, an empty
+  // one `background`) of the drawn frame, straight into rgba: one pass and one table load a
+  // pixel. Only the pixels that may differ from the last frame's are written: those in the
+  // frame's drawnRect() or in the last frame's (every other pixel of rgba already holds the
+  // background, and the frame is empty there).
+  void resolveColour(const ModelView& model, Rgb background);
+  // rgb (sized here to the frame) for a styler to write, then widened into opaque RGBA.
+  std::span<std::uint8_t> rgbToWrite();
   void toRgba();
+
+ private:
+  // Outside this rectangle rgba holds background_ (the RGBA word of the last resolveColour's
+  // background); the whole frame when that is not known.
+  PixelRect stale_;
+  std::uint32_t background_ = 0;
 };
 
 Canvas& canvas();

@@ -15,13 +15,13 @@ not) and the ratio of the fastest rounds (the others' load only ever adds time).
 """
 import hashlib
 import os
-import subprocess
 import sys
 import tempfile
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, HERE)
-from web_point_cost import TOOLS, UNTHROTTLED, DevTools, median, served_port, show, timed  # noqa: E402
+from web_point_cost import (UNTHROTTLED, DevTools, median, serve_page, show,  # noqa: E402
+                            stop_serving, timed)
 
 SIZES = ((320, 240), (640, 480), (1280, 960))
 
@@ -46,14 +46,8 @@ def main():
     with tempfile.TemporaryDirectory(ignore_cleanup_errors=True) as work:
         tools = None
         try:
-            for i, site in enumerate(dirs):
-                log = open(os.path.join(work, "serve%d.log" % i), "w+")
-                logs.append(log)
-                servers.append(subprocess.Popen(
-                    [os.path.join(TOOLS, "octopoint-serve"), site, "--port", "0"],
-                    stdout=log, stderr=subprocess.STDOUT))
-                pages.append("http://127.0.0.1:%d/index.html?yaw=30&pitch=10&w=320&h=240&bare=1" %
-                             served_port(log))
+            for site in dirs:
+                pages.append(serve_page(work, site, servers, logs, 320, 240))
             tools = DevTools(os.path.join(work, "profile"), UNTHROTTLED)
             tab = tools.open("about:blank")
             digests = []
@@ -73,11 +67,7 @@ def main():
         finally:
             if tools:
                 tools.close()
-            for server in servers:
-                server.terminate()
-                server.wait()
-            for log in logs:
-                log.close()
+            stop_serving(servers, logs)
     print("A: %s\nB: %s" % tuple(dirs))
     print("frames at 320x240: %s" % ("identical" if digests[0] == digests[1] else
                                      "DIFFERENT (%s, %s)" % tuple(digests)))

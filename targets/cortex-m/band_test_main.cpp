@@ -154,9 +154,16 @@ int drawPerspectiveCases() {
     return 1;
   }
   int failures = 0;
-  for (int i = 0; i < kPerspectiveCaseCount; ++i) {
+#ifdef OCTOPOINT_MCU_PROFILE
+  constexpr int kCasesDrawn = 1;
+  constexpr std::array<bool, 1> kCullings{false};
+#else
+  constexpr int kCasesDrawn = kPerspectiveCaseCount;
+  constexpr std::array<bool, 2> kCullings{false, true};
+#endif
+  for (int i = 0; i < kCasesDrawn; ++i) {
     const PerspectiveCase& c = kPerspectiveCases[static_cast<std::size_t>(i)];
-    for (const bool cull : {false, true}) {
+    for (const bool cull : kCullings) {
       GoldenSink golden(kGoldenPerspectiveBands + kGoldenPerspectiveFirst[i], c.band_rows,
                         c.camera.width, c.camera.height);
       PerspectiveDrawStats stats;
@@ -236,6 +243,10 @@ int octopoint::mcu::programMain() {
   }
   int failures = 0;
   std::uint64_t instructions = 0;
+#ifdef OCTOPOINT_MCU_PROFILE
+  // mcu_perspective_profile: the first perspective case alone (lab/scripts/mcu-profile).
+  return drawPerspectiveCases();
+#endif
 
   for (const VariantName& v : kCaseVariants) {
     for (int i = 0; i < kCaseCount; ++i) {

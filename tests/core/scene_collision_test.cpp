@@ -104,6 +104,68 @@ TEST(SceneCollision, AWalkAmongTheInstancesIsTheWalkTestingEveryInstance) {
   }
 }
 
+// Containers moved between frames (place): a query meets each moved instance where it is now, far
+// from where the grid was built, and nowhere it was: the answers are those of testing every
+// instance at its new place; a bad move is refused and leaves the instance where it was.
+TEST(SceneCollision, MovedInstancesAreMetWhereTheyAreNow) {
+  const ModelView model = sceneCollisionModel();
+  const ModelView* models[] = {&model};
+  std::vector<SceneInstance> instances = scatteredInstances(37);
+  SceneError error;
+  SceneCollision scene(models, instances, &error);
+  ASSERT_EQ(error, SceneError::kNone);
+  // The reference: every instance at its place now, each tested in turn.
+  const auto every_instance = [&scene](const std::vector<SceneInstance>& at) {
+    std::vector<CollisionInstance> list;
+    for (const SceneInstance& instance : at)
+      list.push_back({scene.instances()[instance.model].model, instance.transform});
+    return list;
+  };
+  std::mt19937_64 random(38);
+  // Every tenth instance moves three times, once well outside the grid's extent.
+  for (int round = 0; round < 3; ++round) {
+    for (std::size_t i = 0; i < instances.size(); i += 10) {
+      InstanceTransform& t = instances[i].transform;
+      t.at.x += (round == 1 ? std::int64_t{40} : std::int64_t{3}) << 24;
+      t.at.z -= std::int64_t{2} << 24;
+      t.turn = Angle::fromTurns16(static_cast<std::int64_t>(random() % 65536));
+      ASSERT_EQ(scene.place(i, t), SceneError::kNone);
+    }
+    const std::vector<CollisionInstance> now = every_instance(instances);
+    const CollisionInstances every(now);
+    int met_moved = 0;
+    for (int q = 0; q < 600; ++q) {
+      const bool about_moved = q % 2 == 0;
+      const std::size_t which = (random() % (instances.size() / 10)) * 10 + (about_moved ? 0 : 5);
+      const InstanceTransform& near = instances[which].transform;
+      const auto jitter = [&random](int bits) {
+        return static_cast<std::int64_t>(random() % (std::uint64_t{2} << bits)) -
+               (std::int64_t{1} << bits);
+      };
+      const CollisionSphere sphere{
+          {near.at.x + jitter(22), near.at.y + jitter(21), near.at.z + jitter(22)},
+          std::int64_t{1} << (14 + static_cast<int>(random() % 9))};
+      const bool answer = scene.meets(sphere);
+      ASSERT_EQ(answer, every.meets(sphere)) << "round " << round << " query " << q;
+      met_moved += about_moved && answer ? 1 : 0;
+    }
+    EXPECT_GT(met_moved, 30) << round;
+  }
+  // Where a moved instance stood when the grid was built, it is met no more (unless another
+  // instance stands there): the first instance's old place, tested against every instance now.
+  const InstanceTransform before = scatteredInstances(37)[0].transform;
+  const CollisionSphere old_place{before.at, std::int64_t{1} << 18};
+  EXPECT_EQ(scene.meets(old_place), sphereMeets(every_instance(instances), old_place));
+  // Refused moves leave the instance where it was.
+  const InstanceTransform kept = scene.instances()[10].transform;
+  EXPECT_EQ(scene.place(instances.size(), kept), SceneError::kBadInstanceIndex);
+  EXPECT_EQ(scene.place(10, {.at = {0, 0, 0}, .turn = Angle{}, .scale = 9}), SceneError::kBadScale);
+  EXPECT_EQ(scene.place(10, {{kMaxSceneCoordinate * 2, 0, 0}, {}, 0}),
+            SceneError::kCoordinateTooLarge);
+  EXPECT_EQ(scene.instances()[10].transform.at.x, kept.at.x);
+  EXPECT_EQ(scene.instances()[10].transform.at.z, kept.at.z);
+}
+
 TEST(SceneCollision, RefusesWhatTheRendererRefuses) {
   const ModelView model = sceneCollisionModel();
   const ModelView* models[] = {&model};
