@@ -4,7 +4,8 @@
 // positions of four classes (street, crossing, above the roofs, sky), the frame with the eye's
 // cell's set and the frame with everything, and prints the share of instances culled by the
 // cells and the frustum together per class, the worst share of pixels by which the two frames
-// differ along random walks through the streets, the street-level frame time and points with and
+// differ along random walks through the streets (and at the worst position, the instances its cell
+// left out that win pixels of the whole frame), the street-level frame time and points with and
 // without cells, and the cell table's bytes against the city's.
 #include <algorithm>
 #include <chrono>
