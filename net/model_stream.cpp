@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "net/fetch_planner.h"
+#include "net/head_read.h"
 #include "octopoint/http.h"
 
 namespace octopoint::net {
@@ -150,16 +151,12 @@ class ModelStream::Impl {
     const std::uint64_t budget = budgetLeft();
     if (budget == 0) return false;
     if (!model_) {
-      if (head_in_flight_) return false;
-      // Until the fixed header is in, ask for the first bytes; then for the rest of the head.
-      std::uint64_t want = options_.first_request_bytes;
-      if (head_bytes_ > 0) want = head_bytes_;
-      want = std::max<std::uint64_t>(want, chunked::kFixedHeaderBytes);
-      if (want <= head_.size()) want = head_.size() + 1;
+      if (head_.in_flight) return false;
+      const HeadRead::Range range = head_.nextRange(options_.first_request_bytes);
       plan.head = true;
-      plan.offset = head_.size();
-      plan.size = std::min(want - head_.size(), budget);
-      head_in_flight_ = true;
+      plan.offset = range.offset;
+      plan.size = std::min(range.size, budget);
+      head_.in_flight = true;
       return true;
     }
     if (std::holds_alternative<std::monostate>(view_)) return false;
@@ -179,29 +176,16 @@ class ModelStream::Impl {
         budget_spent_ = true;
         return false;
     }
-    if (plan.offset < head_.size()) {
-      const std::uint64_t known = std::min<std::uint64_t>(head_.size() - plan.offset, plan.size);
-      plan.known.assign(head_.begin() + static_cast<std::ptrdiff_t>(plan.offset),
-                        head_.begin() + static_cast<std::ptrdiff_t>(plan.offset + known));
-    }
+    plan.known = head_.known(plan.offset, plan.size);
     return true;
   }
 
-  // Under the lock: the head's bytes so far; makes the model once they hold the whole head.
-  void takeHead() {
+  // Under the lock: the head request's next bytes; makes the model once they hold the whole head.
+  void takeHead(std::span<const std::uint8_t> piece) {
     ChunkedIssue issue;
-    if (head_bytes_ == 0 && head_.size() >= chunked::kFixedHeaderBytes) {
-      const std::optional<std::uint64_t> size = chunkedHeadBytes(head_, &issue);
-      if (!size)
-        return fail(url_.text() + ": " + describe(issue.error) + " (byte " +
-                    std::to_string(issue.offset) + ")");
-      head_bytes_ = *size;
-    }
-    if (!model_ && head_bytes_ > 0 && head_.size() >= head_bytes_) {
-      std::optional<ProgressiveModel> model = ProgressiveModel::fromHead(head_, &issue);
-      if (!model)
-        return fail(url_.text() + ": " + describe(issue.error) + " (byte " +
-                    std::to_string(issue.offset) + ")");
+    std::optional<ProgressiveModel> model = head_.take(piece, &issue);
+    if (head_.failed()) return fail(describeAt(url_.text(), issue));
+    if (model) {
       model_ = std::move(model);
       if (on_accepted_) on_accepted_(*model_, received_);
     }
@@ -210,7 +194,7 @@ class ModelStream::Impl {
       const std::uint32_t before = model_->chunksIn(ChunkState::kHeld);
       // A part refused here is fetched again later as an item of its own: where it stopped and
       // why are not needed.
-      static_cast<void>(model_->acceptBytes(0, head_, &issue));
+      static_cast<void>(model_->acceptBytes(0, head_.bytes(), &issue));
       if (on_accepted_ && model_->chunksIn(ChunkState::kHeld) != before)
         on_accepted_(*model_, received_);
     }
@@ -263,8 +247,7 @@ class ModelStream::Impl {
             received_ += piece.size();
             outstanding_ -= piece.size();
             if (plan.head) {
-              head_.insert(head_.end(), piece.begin(), piece.end());
-              takeHead();
+              takeHead(piece);
             } else {
               buffer.insert(buffer.end(), piece.begin(), piece.end());
               deliver(plan, buffer, next);
@@ -276,15 +259,15 @@ class ModelStream::Impl {
       outstanding_ -= fetch_size - result.bytes;
       --busy_;
       planner_.abandon(plan, next);
-      if (plan.head) head_in_flight_ = false;
+      if (plan.head) head_.in_flight = false;
       if (result.status == FetchStatus::kOk) {
         backoff_ = std::chrono::milliseconds(0);
         failures_in_a_row_ = 0;
       } else if (!stopping_ && !failed_) {
         ++failed_requests_;
         error_ = url_.text() + ": " + result.message;
-        if (plan.head && result.status == FetchStatus::kHttpStatus && result.http_status >= 400 &&
-            result.http_status < 500 && result.http_status != 408 && result.http_status != 429) {
+        if (plan.head && result.status == FetchStatus::kHttpStatus &&
+            headMissing(result.http_status)) {
           fail(error_);
         }
         // Slowness is the --timeout's to judge; anything else is the server's answer.
@@ -316,9 +299,7 @@ class ModelStream::Impl {
   // Under mutex_:
   std::vector<RangeClient*> clients_;
   std::optional<ProgressiveModel> model_;
-  std::vector<std::uint8_t> head_;  // the file's first bytes, while the head is being read
-  std::uint64_t head_bytes_ = 0;
-  bool head_in_flight_ = false;
+  HeadRead head_;  // the file's first bytes
   StreamView view_ = Camera{};
   FetchPlanner planner_;
   PerspectiveFetchOrder status_order_;  // statusLocked's count of a perspective view's items

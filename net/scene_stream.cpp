@@ -7,6 +7,7 @@
 #include <thread>
 
 #include "net/fetch_planner.h"
+#include "net/head_read.h"
 
 namespace octopoint::net {
 namespace {
@@ -24,9 +25,7 @@ struct Plan : FetchRange {
 // One model's stream: its head's bytes while they come, then its model and its requests in flight.
 struct Streamed {
   HttpUrl url;
-  std::vector<std::uint8_t> head;  // the file's first bytes (kept: later ranges may start in them)
-  std::uint64_t head_bytes = 0;    // the head's size, once its fixed header is in
-  bool head_in_flight = false;
+  HeadRead head;  // the file's first bytes
   std::optional<ProgressiveModel> model;
   std::optional<FetchPlanner> planner;
 };
@@ -137,50 +136,36 @@ class SceneStream::Impl {
       Streamed& streamed = models_[m];
       plan.model = m;
       if (!streamed.model) {
-        if (streamed.head_in_flight) continue;
-        // Until the fixed header is in, ask for the first bytes; then for the rest of the head.
-        std::uint64_t want =
-            streamed.head_bytes > 0 ? streamed.head_bytes : options_.first_request_bytes;
-        want = std::max<std::uint64_t>(want, chunked::kFixedHeaderBytes);
-        if (want <= streamed.head.size()) want = streamed.head.size() + 1;
+        if (streamed.head.in_flight) continue;
+        const HeadRead::Range range = streamed.head.nextRange(options_.first_request_bytes);
         plan.head = true;
-        plan.offset = streamed.head.size();
-        plan.size = want - streamed.head.size();
-        streamed.head_in_flight = true;
+        plan.offset = range.offset;
+        plan.size = range.size;
+        streamed.head.in_flight = true;
         return true;
       }
       if (streamed.planner->next(per_model_[m], UINT64_MAX, plan) != FetchPlanner::Outcome::kRange)
         continue;  // every item it wants is in flight
-      if (plan.offset < streamed.head.size()) {
-        const std::uint64_t known =
-            std::min<std::uint64_t>(streamed.head.size() - plan.offset, plan.size);
-        plan.known.assign(streamed.head.begin() + static_cast<std::ptrdiff_t>(plan.offset),
-                          streamed.head.begin() + static_cast<std::ptrdiff_t>(plan.offset + known));
-      }
+      plan.known = streamed.head.known(plan.offset, plan.size);
       return true;
     }
     return false;
   }
 
-  // Under the lock: model m's head bytes so far; makes its model once they hold the whole head.
-  void takeHead(std::uint32_t m) {
+  // Under the lock: model m's head request's next bytes; makes its model once they hold the
+  // whole head.
+  void takeHead(std::uint32_t m, std::span<const std::uint8_t> piece) {
     Streamed& streamed = models_[m];
     ChunkedIssue issue;
-    if (streamed.head_bytes == 0 && streamed.head.size() >= chunked::kFixedHeaderBytes) {
-      const std::optional<std::uint64_t> size = chunkedHeadBytes(streamed.head, &issue);
-      if (!size) return fail(streamed.url.text() + ": " + describe(issue.error));
-      streamed.head_bytes = *size;
-    }
-    if (!streamed.model && streamed.head_bytes > 0 && streamed.head.size() >= streamed.head_bytes) {
-      std::optional<ProgressiveModel> model = ProgressiveModel::fromHead(streamed.head, &issue);
-      if (!model) return fail(streamed.url.text() + ": " + describe(issue.error));
-      streamed.model = std::move(model);
-      pointers_[m] = &*streamed.model;
-      // Whatever followed the head in its request: tables and chunks lying whole in it (a part
-      // refused here is fetched again later as an item of its own).
-      static_cast<void>(streamed.model->acceptBytes(0, streamed.head, &issue));
-      accepted();
-    }
+    std::optional<ProgressiveModel> model = streamed.head.take(piece, &issue);
+    if (streamed.head.failed()) return fail(describeAt(streamed.url.text(), issue));
+    if (!model) return;
+    streamed.model = std::move(model);
+    pointers_[m] = &*streamed.model;
+    // Whatever followed the head in its request: tables and chunks lying whole in it (a part
+    // refused here is fetched again later as an item of its own).
+    static_cast<void>(streamed.model->acceptBytes(0, streamed.head.bytes(), &issue));
+    accepted();
   }
 
   void fail(const std::string& why) {
@@ -236,8 +221,7 @@ class SceneStream::Impl {
             std::lock_guard<std::mutex> guard(mutex_);
             received_ += piece.size();
             if (plan.head) {
-              streamed.head.insert(streamed.head.end(), piece.begin(), piece.end());
-              takeHead(plan.model);
+              takeHead(plan.model, piece);
             } else {
               buffer.insert(buffer.end(), piece.begin(), piece.end());
               deliver();
@@ -248,15 +232,15 @@ class SceneStream::Impl {
       lock.lock();
       --busy_;
       if (plan.head) {
-        streamed.head_in_flight = false;
+        streamed.head.in_flight = false;
       } else {
         streamed.planner->abandon(plan, next);
       }
       if (result.status != FetchStatus::kOk && !stopping_ && !failed_) {
         ++failed_requests_;
         error_ = streamed.url.text() + ": " + result.message;
-        if (plan.head && result.status == FetchStatus::kHttpStatus && result.http_status >= 400 &&
-            result.http_status < 500) {
+        if (plan.head && result.status == FetchStatus::kHttpStatus &&
+            headMissing(result.http_status)) {
           fail(error_);  // no such model: nothing will come
         }
         retry_after_ = Clock::now() + std::chrono::milliseconds(200);
