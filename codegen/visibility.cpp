@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <limits>
 #include <thread>
-#include <utility>
 
 #include "codegen/octree_encoder.h"
 #include "codegen/parallel.h"
@@ -85,24 +84,14 @@ struct MarkBlendedSink {
   std::vector<std::uint8_t>& visible;
   std::uint32_t next_leaf = 0;
 
-  // The pixels whose centre lies strictly within the radius of `at` (Q(32-F).F), clipped to
-  // [0, size): [begin, end), as SmoothSplats weighs them.
-  std::pair<std::int32_t, std::int32_t> within(std::int32_t at, std::int32_t size) const {
-    const int f = setup.fraction_bits;
-    const std::int64_t half = std::int64_t{1} << (f - 1);
-    const std::int64_t first = ((at - reach.radius - half) >> f) + 1;
-    const std::int64_t last = (at + reach.radius - half - 1) >> f;
-    return {static_cast<std::int32_t>(std::max<std::int64_t>(first, 0)),
-            static_cast<std::int32_t>(std::min<std::int64_t>(last + 1, size))};
-  }
-
   void operator()(std::int32_t x, std::int32_t y, std::int32_t z, std::uint8_t) {
     const std::uint32_t index = next_leaf++;
     if (visible[index] != 0) return;
     const std::int64_t key = setup.depthKey(z);
     const std::int64_t tolerance = std::int64_t{reach.tolerance} + 512;
-    const auto [x_begin, x_end] = within(x, width);
-    const auto [y_begin, y_end] = within(y, height);
+    const int f = setup.fraction_bits;
+    const auto [x_begin, x_end] = kernelSpan(x, reach.radius, f, width);
+    const auto [y_begin, y_end] = kernelSpan(y, reach.radius, f, height);
     for (std::int32_t py = y_begin; py < y_end; ++py) {
       const std::size_t row = static_cast<std::size_t>(py) * static_cast<std::size_t>(width);
       for (std::int32_t px = x_begin; px < x_end; ++px) {

@@ -24,4 +24,18 @@ struct SmoothReach {
 
 SmoothReach smoothReachOf(const FrameSetup& setup);
 
+// The pixels, along one axis, whose centre c = x 2^F + 2^(F-1) lies strictly within `radius` of
+// `at` (both Q(32-F).F), clipped to [0, size): [begin, end), empty when begin >= end.
+struct KernelSpan {
+  std::int32_t begin, end;
+};
+inline KernelSpan kernelSpan(std::int32_t at, std::int64_t radius, int fraction_bits,
+                             std::int32_t size) {
+  const std::int64_t half = std::int64_t{1} << (fraction_bits - 1);
+  const std::int64_t first = ((at - radius - half) >> fraction_bits) + 1;
+  const std::int64_t last = (at + radius - half - 1) >> fraction_bits;
+  return {static_cast<std::int32_t>(first > 0 ? first : 0),
+          static_cast<std::int32_t>(last + 1 < size ? last + 1 : size)};
+}
+
 }  // namespace octopoint

@@ -131,18 +131,12 @@ class BlendWalk {
 
   // The columns (or rows) whose pixel centre lies within `radius` of `at` (Q(32-F).F), clipped to
   // [0, size), with each one's weight into `weight`: [begin, end).
-  struct Span {
-    std::int32_t begin, end;
-  };
+  using Span = KernelSpan;
   Span weigh(std::int32_t at, std::int64_t radius, std::uint64_t inverse, std::int32_t size,
              std::uint16_t* weight) const {
     const int f = setup_.fraction_bits;
     const std::int64_t half = std::int64_t{1} << (f - 1);
-    // Centre c = x 2^F + half: inside where at - radius < c < at + radius.
-    const std::int64_t first = ((at - radius - half) >> f) + 1;
-    const std::int64_t last = (at + radius - half - 1) >> f;
-    const auto begin = static_cast<std::int32_t>(std::max<std::int64_t>(first, 0));
-    const auto end = static_cast<std::int32_t>(std::min<std::int64_t>(last + 1, size));
+    const auto [begin, end] = kernelSpan(at, radius, f, size);
     // |offset| inverse, offset = c - at (< radius), by one addition a column: offset inverse
     // grows by 2^F inverse (below 2^41 in magnitude: inverse <= 2^40 / radius, radius >= 2^F).
     const auto step = static_cast<std::int64_t>(inverse) << f;
