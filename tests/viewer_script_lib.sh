@@ -13,10 +13,15 @@ require_viewer_tools() {
 start_xvfb() {
   Xvfb -displayfd 3 -screen 0 800x600x24 -nolisten tcp 3>"$work/display" 2>"$work/xvfb.log" &
   xvfb_pid=$!
-  for _ in $(seq 100); do [ -s "$work/display" ] && break; sleep 0.05; done
-  [ -s "$work/display" ] || fail "Xvfb did not start: $(cat "$work/xvfb.log")"
-  DISPLAY=:$(cat "$work/display")
+  # The number is written, with its newline, once Xvfb listens; a client may still be refused for
+  # a moment on a loaded machine (a viewer once failed with "x11 not available"), so the display
+  # counts as up once xdotool can talk to it.
+  for _ in $(seq 100); do [ "$(wc -l <"$work/display")" -ge 1 ] && break; sleep 0.05; done
+  [ "$(wc -l <"$work/display")" -ge 1 ] || fail "Xvfb did not start: $(cat "$work/xvfb.log")"
+  DISPLAY=:$(head -1 "$work/display")
   export DISPLAY
+  for _ in $(seq 100); do xdotool getdisplaygeometry >/dev/null 2>&1 && return 0; sleep 0.05; done
+  fail "Xvfb on $DISPLAY did not answer: $(cat "$work/xvfb.log")"
 }
 
 # start_xvfb for a viewer of octopoint-serve $SERVE_PID (tests/net/net_script_lib.sh): on exit the
